@@ -1,0 +1,79 @@
+// The kit's geometry types: small structs on Eigen, shared by every lab, the oracle,
+// the tests and the viewer. Plain data with a few obvious helpers; no algorithms here.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+namespace labkit {
+
+using Vec2 = Eigen::Vector2d;
+using Vec3 = Eigen::Vector3d;
+using Vec4 = Eigen::Vector4d;
+using Mat3 = Eigen::Matrix3d;
+using Mat4 = Eigen::Matrix4d;
+
+// A rigid motion x -> R x + t (rotation and translation, no scale).
+using RigidTransform = Eigen::Isometry3d;
+
+// The closed segment from a to b; point(t) = a + t (b - a) for t in [0, 1].
+struct Segment {
+  Vec3 a = Vec3::Zero();
+  Vec3 b = Vec3::Zero();
+
+  Vec3 point(double t) const { return a + t * (b - a); }
+  Vec3 direction() const { return b - a; }
+};
+
+// A triangle with vertices v0, v1, v2. Its front side is the one its normal
+// (v1 - v0) x (v2 - v0) points to: counter-clockwise seen from the front.
+struct Triangle {
+  Vec3 v0 = Vec3::Zero();
+  Vec3 v1 = Vec3::Zero();
+  Vec3 v2 = Vec3::Zero();
+
+  const Vec3& operator[](int i) const { return i == 0 ? v0 : (i == 1 ? v1 : v2); }
+  Vec3& operator[](int i) { return i == 0 ? v0 : (i == 1 ? v1 : v2); }
+  // Not normalised: its length is twice the triangle's area.
+  Vec3 normal() const { return (v1 - v0).cross(v2 - v0); }
+  double area() const { return 0.5 * normal().norm(); }
+};
+
+// The plane normal . x + offset = 0. The value normal . x + offset is positive on the
+// side the normal points to; it is the signed distance when the normal has unit length.
+struct Plane {
+  Vec3 normal = Vec3::UnitZ();
+  double offset = 0.0;
+
+  double value(const Vec3& x) const { return normal.dot(x) + offset; }
+};
+
+// Six planes whose normals point into the frustum: a point is inside when it is on
+// the non-negative side of all six.
+struct Frustum {
+  enum Side { left, right, bottom, top, near, far };
+  std::array<Plane, 6> planes;
+};
+
+// An indexed triangle mesh.
+struct Mesh {
+  std::vector<Vec3> vertices;
+  std::vector<std::array<int, 3>> triangles;
+
+  std::size_t size() const { return triangles.size(); }
+  Triangle triangle(std::size_t i) const {
+    const auto& f = triangles[i];
+    return {vertices[f[0]], vertices[f[1]], vertices[f[2]]};
+  }
+};
+
+// The largest absolute coordinate among the given points: the length scale S that
+// every tolerance in the kit is relative to.
+double scale_of(std::initializer_list<Vec3> points);
+double scale_of(const Mesh& mesh);
+
+}  // namespace labkit

@@ -1,0 +1,261 @@
+#include "common/harness/check.h"
+#include "common/harness/report.h"
+
+#include <nlohmann/json.hpp>
+
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <deque>
+#include <fstream>
+#include <unistd.h>
+
+namespace labkit::check {
+
+namespace {
+
+std::uint64_t fnv1a(const std::string& text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) h = (h ^ c) * 1099511628211ull;
+  return h;
+}
+
+std::uint64_t splitmix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ull;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+  return x ^ (x >> 31);
+}
+
+// A seed may be a number or any text (an instructor's secret phrase).
+std::uint64_t parse_seed(const std::string& text) {
+  if (!text.empty() && text.find_first_not_of("0123456789") == std::string::npos && text.size() < 20)
+    return std::stoull(text);
+  return fnv1a(text);
+}
+
+Settings read_settings() {
+  Settings s;
+  if (const char* v = std::getenv("LABKIT_SEED"); v && *v) s.seed = parse_seed(v);
+  if (const char* v = std::getenv("LABKIT_CASES"); v && *v) {
+    const long n = std::strtol(v, nullptr, 10);
+    s.cases = n >= 1 ? int(std::min(n, 100000000L)) : 1;
+  }
+  if (const char* v = std::getenv("LABKIT_REPLAY")) s.replay = v;
+  if (const char* v = std::getenv("LABKIT_REPORT")) s.report = v;
+  if (const char* v = std::getenv("LABKIT_HIDE_SEED")) s.hide_seed = std::string(v) == "1";
+  return s;
+}
+
+// std::deque: entries keep their address while more are added.
+std::deque<detail::QueryReport>& queries() {
+  static std::deque<detail::QueryReport> all;
+  return all;
+}
+
+std::deque<report::TestCase>& test_cases() {
+  static std::deque<report::TestCase> all;
+  return all;
+}
+
+std::string current_test_name() {
+  if (Catch::IResultCapture* capture = &Catch::getResultCapture()) return capture->getCurrentTestName();
+  return {};
+}
+
+// The in-flight case, kept in static storage so that a signal handler can print it.
+char inflight[1 << 18];
+volatile std::size_t inflight_length = 0;
+
+}  // namespace
+
+const Settings& settings() {
+  static const Settings s = read_settings();
+  return s;
+}
+
+namespace detail {
+
+QueryReport& entry(const std::string& query, const std::string& kind) {
+  const std::string test = current_test_name();
+  for (QueryReport& q : queries())
+    if (q.test_case == test && q.query == query && q.kind == kind) return q;
+  queries().push_back({});
+  QueryReport& q = queries().back();
+  q.test_case = test;
+  q.query = query;
+  q.kind = kind;
+  return q;
+}
+
+std::uint64_t seed_for(const std::string& query) { return splitmix(settings().seed ^ fnv1a(query)); }
+
+std::string current_lab() {
+  const std::string name = current_test_name();
+  for (const Catch::TestCase& t : Catch::getRegistryHub().getTestCaseRegistry().getAllTests())
+    if (t.name == name)
+      for (const std::string& tag : t.tags)
+        if (tag.rfind("lab", 0) == 0 && tag.size() == 5) return tag.substr(3);
+  return "NN";
+}
+
+void set_inflight(const std::string& token) {
+  const std::size_t n = std::min(token.size(), sizeof inflight - 1);
+  inflight_length = 0;
+  std::memcpy(inflight, token.data(), n);
+  inflight_length = n;
+}
+
+void clear_inflight() { inflight_length = 0; }
+
+void save_report() {
+  const std::string& path = settings().report;
+  if (path.empty()) return;
+  nlohmann::json j;
+  j["seed"] = settings().hide_seed ? nlohmann::json("hidden") : nlohmann::json(settings().seed);
+  j["cases_per_query"] = settings().cases;
+  j["test_cases"] = nlohmann::json::array();
+  for (const report::TestCase& t : test_cases()) j["test_cases"].push_back(report::to_json(t));
+  j["queries"] = nlohmann::json::array();
+  for (const QueryReport& q : queries()) {
+    nlohmann::json e = {{"test_case", q.test_case}, {"query", q.query},     {"kind", q.kind},
+                        {"cases", q.cases},         {"passed", q.passed},   {"ambiguous", q.ambiguous},
+                        {"failed", q.failed},       {"not_implemented", q.not_implemented},
+                        {"error", q.error}};
+    if (q.failure)
+      e["failure"] = {{"title", q.failure->title},   {"input", q.failure->input}, {"expected", q.failure->expected},
+                      {"got", q.failure->got},       {"why", q.failure->why},     {"replay", q.failure->replay},
+                      {"shrinks", q.failure->shrinks}};
+    j["queries"].push_back(e);
+  }
+  // Written beside and renamed: a crash mid-write leaves the previous report whole.
+  const std::string partial = path + ".partial";
+  {
+    std::ofstream out(partial);
+    out << j.dump(1) << '\n';
+  }
+  std::rename(partial.c_str(), path.c_str());
+}
+
+void report_to_catch(const QueryReport& q, bool announce_not_implemented) {
+  if (!q.error.empty()) {
+    FAIL_CHECK(q.query << ": " << q.error);
+  } else if (q.failure) {
+    const Failure& f = *q.failure;
+    std::string text = q.query + ": " + f.title;
+    if (f.shrinks > 0) text += " (shrunk " + std::to_string(f.shrinks) + " times)";
+    text += "\n  input:\n    " + report::indent(f.input, "    ");
+    text += "\n  expected: " + f.expected + "\n  got:      " + f.got + "\n  why:      " + f.why;
+    if (!settings().hide_seed) text += "\n  seed:     " + std::to_string(settings().seed);
+    text += "\n  replay:   ./labkit check " + current_lab() + " --case '" + f.replay + "'";
+    FAIL_CHECK(text);
+  } else if (!q.not_implemented.empty()) {
+    if (announce_not_implemented) FAIL_CHECK(q.query << ": " << q.not_implemented);
+  } else {
+    SUCCEED(q.query << ": " << q.cases << " cases, " << q.ambiguous << " ambiguous");
+  }
+}
+
+}  // namespace detail
+
+namespace report {
+
+std::string indent(const std::string& text, const std::string& prefix) {
+  std::string out;
+  for (char c : text) {
+    out += c;
+    if (c == '\n') out += prefix;
+  }
+  return out;
+}
+
+nlohmann::json to_json(const TestCase& t) {
+  return {{"name", t.name}, {"tags", t.tags}, {"passed", t.passed}, {"failures", t.failures},
+          {"not_implemented", t.not_implemented}};
+}
+
+void test_case_started(const std::string& name, const std::vector<std::string>& tags) {
+  test_cases().push_back({name, tags, false, {}, {}});
+  detail::save_report();
+}
+
+void assertion_failed(const std::string& message) {
+  if (test_cases().empty()) return;
+  TestCase& t = test_cases().back();
+  if (message.find("not implemented yet (") != std::string::npos) {
+    if (t.not_implemented.empty()) t.not_implemented = message;
+  } else if (t.failures.size() < 5) {
+    t.failures.push_back(message);
+  }
+}
+
+void test_case_ended(bool passed) {
+  if (test_cases().empty()) return;
+  test_cases().back().passed = passed;
+  detail::save_report();
+}
+
+// Fatal signals and the runner's SIGTERM on a time-out: name the input, then die as asked.
+extern "C" void on_fatal_signal(int signal) {
+  static const char head[] = "\nLABKIT-INFLIGHT ";
+  if (inflight_length > 0) {
+    ssize_t ignored = write(2, head, sizeof head - 1);
+    ignored = write(2, inflight, inflight_length);
+    ignored = write(2, "\n", 1);
+    (void)ignored;
+  }
+  std::signal(signal, SIG_DFL);
+  std::raise(signal);
+}
+
+void install_signal_handlers() {
+  // Its own stack, so that a stack overflow can still be reported.
+  static char alternate_stack[1 << 16];
+  stack_t stack{};
+  stack.ss_sp = alternate_stack;
+  stack.ss_size = sizeof alternate_stack;
+  sigaltstack(&stack, nullptr);
+  for (int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTERM, SIGXCPU}) {
+    struct sigaction action {};
+    action.sa_handler = on_fatal_signal;
+    action.sa_flags = SA_ONSTACK;
+    sigemptyset(&action.sa_mask);
+    sigaction(s, &action, nullptr);
+  }
+}
+
+}  // namespace report
+
+}  // namespace labkit::check
+
+namespace labkit::check {
+
+void Expect::add(const std::string& field, const std::string& got, const std::string& expected, bool ok,
+                 const std::string& why) {
+  expected_ += (expected_.empty() ? "" : ", ") + field + " = " + expected;
+  got_ += (got_.empty() ? "" : ", ") + field + " = " + got;
+  if (ok) return;
+  if (!failed_) why_ = why.empty() ? field + " differs" : why;
+  failed_ = true;
+}
+
+void Expect::near(const std::string& field, double got, double expected, double tolerance) {
+  const bool ok = std::abs(got - expected) <= tolerance;
+  add(field, fmt(got), fmt(expected), ok,
+      field + " is off by " + fmt(std::abs(got - expected)) + " (tolerance " + fmt(tolerance) + ")");
+}
+
+void Expect::near(const std::string& field, const Vec3& got, const Vec3& expected, double tolerance) {
+  const double off = (got - expected).norm();
+  add(field, fmt(got), fmt(expected), off <= tolerance,
+      field + " is off by " + fmt(off) + " (tolerance " + fmt(tolerance) + ")");
+}
+
+void Expect::that(const std::string& field, bool ok, const std::string& got, const std::string& expected,
+                  const std::string& why) {
+  add(field, got, expected, ok, why);
+}
+
+Outcome Expect::outcome() const { return failed_ ? fail(expected_, got_, why_) : pass(); }
+
+}  // namespace labkit::check

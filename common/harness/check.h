@@ -1,0 +1,329 @@
+// The verdict harness every lab's tests use (LABS.md, "How a lab is checked").
+//
+//   check::example("find_segment_triangle", "through the middle", input, judge);
+//   check::random_cases("find_segment_triangle", gen::segment_triangle(), judge);
+//
+// A judge takes an input, runs the code under test on it, and returns an Outcome: pass,
+// fail (with the expected answer, the answer it got and why they differ), or ambiguous
+// (the exact answer flips under a tiny perturbation of the input, so any answer is
+// accepted and the case is counted apart). The harness counts, shrinks a failing random
+// case to the smallest one RapidCheck finds, writes a machine-readable report for
+// `./labkit check`, and turns a stub's NotImplemented into "not implemented yet".
+#pragma once
+
+#include "common/harness/codec.h"
+#include "common/not_implemented.h"
+
+#include <catch2/catch.hpp>
+#include <rapidcheck.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <exception>
+#include <functional>
+#include <optional>
+#include <random>
+#include <string>
+#include <utility>
+
+namespace labkit::check {
+
+// Everything a run can be told, read once from the environment (the runner sets them):
+//   LABKIT_SEED    seed of the random cases (default: the public seed 1)
+//   LABKIT_CASES   random cases per query (default 10000)
+//   LABKIT_REPLAY  a replay token: run that one case and nothing else
+//   LABKIT_REPORT  where to write the JSON report
+//   LABKIT_HIDE_SEED=1  graded runs: reports never show the seed
+struct Settings {
+  std::uint64_t seed = 1;
+  int cases = 10000;
+  std::string replay;
+  std::string report;
+  bool hide_seed = false;
+};
+const Settings& settings();
+
+struct Outcome {
+  enum class Verdict { pass, fail, ambiguous };
+  Verdict verdict = Verdict::pass;
+  std::string expected;  // the exact answer, as a person reads it
+  std::string got;       // the answer under test
+  std::string why;       // the rule it broke, with the numbers
+};
+
+inline Outcome pass() { return {}; }
+inline Outcome ambiguous() { return {Outcome::Verdict::ambiguous, {}, {}, {}}; }
+inline Outcome fail(std::string expected, std::string got, std::string why) {
+  return {Outcome::Verdict::fail, std::move(expected), std::move(got), std::move(why)};
+}
+
+// Collects the differences between an answer and the expected one, field by field,
+// for hand-worked examples:
+//   Expect e;
+//   e.equal("crosses", got.crosses, true);
+//   e.near("t", got.t, 0.25, 1e-12);
+//   return e.outcome();
+class Expect {
+ public:
+  template <class T>
+  void equal(const std::string& field, const T& got, const T& expected) {
+    add(field, describe(got), describe(expected), got == expected, "");
+  }
+  void near(const std::string& field, double got, double expected, double tolerance);
+  void near(const std::string& field, const Vec3& got, const Vec3& expected, double tolerance);
+  // A condition with its own wording, for rules that are not a comparison.
+  void that(const std::string& field, bool ok, const std::string& got, const std::string& expected,
+            const std::string& why);
+  Outcome outcome() const;
+
+ private:
+  void add(const std::string& field, const std::string& got, const std::string& expected, bool ok,
+           const std::string& why);
+  std::string expected_, got_, why_;
+  bool failed_ = false;
+};
+
+// The input's length scale S: its largest absolute coordinate (never below 1e-300).
+template <class Input>
+double scale_of_input(const Input& input) {
+  const codec::Values v = values_of(input);
+  double s = 0.0;
+  for (std::size_t i = 0; i < v.numbers.size(); ++i)
+    if (v.kinds[i] == codec::Kind::length && std::isfinite(v.numbers[i])) s = std::max(s, std::abs(v.numbers[i]));
+  return std::max(s, 1e-300);
+}
+
+// The relative size of the perturbation that decides ambiguity (LABS.md: "about 1e-9").
+constexpr double kAmbiguity = 1e-9;
+
+// True when the exact answer changes for some input within kAmbiguity * S of this one,
+// S being the input's largest absolute coordinate (unit-free numbers such as rotation
+// entries move by kAmbiguity). It tries seeded perturbations, never of counts or indices:
+// each number alone, both ways, then `samples` moves of all of them together. Sampling
+// can miss a flip that needs several numbers to move in step; a judge adds its query's
+// own conservative test for those (see oracle::segment_triangle_in_doubt).
+template <class Input, class ExactAnswer>
+bool flips_under_perturbation(const Input& input, ExactAnswer&& exact, int samples = 16);
+
+// One hand-worked case from the handout.
+template <class Input, class Judge>
+void example(const std::string& query, const std::string& title, const Input& input, Judge&& judge);
+
+// `settings().cases` random cases from `gen`, shrunk on failure.
+template <class Input, class Judge>
+void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& judge);
+
+// Everything below is the machinery behind these three.
+namespace detail {
+
+struct Failure {
+  std::string title;
+  std::string input;
+  std::string expected;
+  std::string got;
+  std::string why;
+  std::string replay;
+  int shrinks = 0;
+};
+
+struct QueryReport {
+  std::string test_case;
+  std::string query;
+  std::string kind;  // "examples" or "random"
+  int cases = 0;
+  int passed = 0;
+  int ambiguous = 0;
+  int failed = 0;
+  std::string not_implemented;  // the stub's message, when a stub was hit
+  std::string error;            // a failure of the harness itself
+  std::optional<Failure> failure;
+};
+
+QueryReport& entry(const std::string& query, const std::string& kind);
+void save_report();
+void report_to_catch(const QueryReport& report, bool announce_not_implemented);
+std::string current_lab();
+std::uint64_t seed_for(const std::string& query);
+// Remembered so that a crash or a time-out can still name the input it died on.
+void set_inflight(const std::string& token);
+void clear_inflight();
+
+// RapidCheck's own listener prints a banner and a hint about RC_PARAMS; our reports say
+// how to replay instead.
+struct QuietListener : rc::detail::TestListener {
+  void onTestCaseFinished(const rc::detail::CaseDescription&) override {}
+  void onShrinkTried(const rc::detail::CaseDescription&, bool) override {}
+  void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
+};
+
+// Runs the judge, turning stubs and stray exceptions into outcomes.
+template <class Input, class Judge>
+Outcome run_judge(Judge& judge, const Input& input, QueryReport& report) {
+  try {
+    return judge(input);
+  } catch (const NotImplemented& e) {
+    report.not_implemented = e.what();
+    return fail("an answer", "a stub", e.what());
+  } catch (const std::exception& e) {
+    return fail("an answer", std::string("an exception: ") + e.what(), "the code under test threw an exception");
+  } catch (...) {
+    return fail("an answer", "an exception of unknown type", "the code under test threw something not derived from std::exception");
+  }
+}
+
+template <class Input>
+Failure failure_of(const std::string& title, const std::string& query, const Input& input, const Outcome& o) {
+  return {title, describe(input), o.expected, o.got, o.why, replay_token(query, input), 0};
+}
+
+inline void tally(QueryReport& report, const Outcome& o) {
+  ++report.cases;
+  if (o.verdict == Outcome::Verdict::pass) ++report.passed;
+  if (o.verdict == Outcome::Verdict::ambiguous) ++report.ambiguous;
+  if (o.verdict == Outcome::Verdict::fail) ++report.failed;
+}
+
+template <class Input, class Judge>
+void replay_one(const std::string& query, Judge& judge, QueryReport& report) {
+  const ParsedToken token = parse_token(settings().replay);
+  const Input input = input_from_token<Input>(token);
+  set_inflight(settings().replay);
+  const Outcome o = run_judge(judge, input, report);
+  clear_inflight();
+  tally(report, o);
+  if (o.verdict == Outcome::Verdict::fail) report.failure = failure_of("the replayed case", query, input, o);
+}
+
+}  // namespace detail
+
+template <class Input, class ExactAnswer>
+bool flips_under_perturbation(const Input& input, ExactAnswer&& exact, int samples) {
+  const codec::Values base = values_of(input);
+  std::vector<std::size_t> movable;
+  std::uint64_t hash = 1469598103934665603ull;
+  for (std::size_t i = 0; i < base.numbers.size(); ++i) {
+    if (base.kinds[i] != codec::Kind::count) movable.push_back(i);
+    std::uint64_t bits;
+    std::memcpy(&bits, &base.numbers[i], sizeof bits);
+    hash = (hash ^ bits) * 1099511628211ull;
+  }
+  const double length_step = kAmbiguity * scale_of_input(input);
+  const auto step = [&](std::size_t i) { return base.kinds[i] == codec::Kind::unit ? kAmbiguity : length_step; };
+  const auto answer = exact(input);
+  const auto differs = [&](const std::vector<double>& numbers) { return !(exact(from_numbers<Input>(numbers)) == answer); };
+  std::mt19937_64 random(hash);
+
+  // Each number alone, both ways: this flips every exactly-zero predicate that depends
+  // on it (an end exactly on a plane, a point exactly on an edge). Large inputs get a
+  // seeded subset; their judges check ambiguity piece by piece instead.
+  std::vector<std::size_t> single = movable;
+  if (single.size() > 48) {
+    std::shuffle(single.begin(), single.end(), random);
+    single.resize(48);
+  }
+  for (std::size_t i : single)
+    for (double direction : {1.0, -1.0}) {
+      std::vector<double> numbers = base.numbers;
+      numbers[i] += direction * step(i);
+      if (differs(numbers)) return true;
+    }
+  // Then every number at once: corners of the box, and random points inside it, which
+  // reach predicates that are near zero but need several numbers to move together.
+  for (int k = 0; k < samples; ++k) {
+    std::vector<double> numbers = base.numbers;
+    for (std::size_t i : movable) {
+      const double u = std::uniform_real_distribution<double>(-1.0, 1.0)(random);
+      numbers[i] += step(i) * (k % 2 == 0 ? (u < 0 ? -1.0 : 1.0) : u);
+    }
+    if (differs(numbers)) return true;
+  }
+  return false;
+}
+
+template <class Input, class Judge>
+void example(const std::string& query, const std::string& title, const Input& input, Judge&& judge) {
+  // A replay runs the one case it names; the examples stay quiet.
+  if (!settings().replay.empty()) return;
+  detail::QueryReport& report = detail::entry(query, "examples");
+  const bool stub_seen_before = !report.not_implemented.empty();
+  detail::set_inflight(replay_token(query, input));
+  const Outcome o = detail::run_judge(judge, input, report);
+  detail::clear_inflight();
+  detail::tally(report, o);
+  const bool first_failure = o.verdict == Outcome::Verdict::fail && !report.failure;
+  if (first_failure) report.failure = detail::failure_of("example \"" + title + "\"", query, input, o);
+  detail::save_report();
+  if (first_failure || (!report.not_implemented.empty() && !stub_seen_before))
+    detail::report_to_catch(report, !stub_seen_before);
+  else
+    SUCCEED();
+}
+
+template <class Input, class Judge>
+void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& judge) {
+  detail::QueryReport& report = detail::entry(query, "random");
+  const Settings& s = settings();
+  if (!s.replay.empty()) {
+    if (parse_token(s.replay).query != query) return;
+    detail::replay_one<Input>(query, judge, report);
+    detail::save_report();
+    detail::report_to_catch(report, true);
+    return;
+  }
+
+  // One probe first: a stub is reported as "not implemented yet" instead of being shrunk.
+  {
+    const Input probe = gen(rc::Random(detail::seed_for(query)), 0).value();
+    detail::QueryReport scratch;
+    detail::run_judge(judge, probe, scratch);
+    if (!scratch.not_implemented.empty()) {
+      report.not_implemented = scratch.not_implemented;
+      detail::save_report();
+      detail::report_to_catch(report, true);
+      return;
+    }
+  }
+
+  // After the first failure RapidCheck only shrinks: those runs are not counted as cases.
+  bool shrinking = false;
+  int shrinks = -1;
+  std::optional<detail::Failure> smallest;
+  const auto property = [&] {
+    const Input input = *gen;
+    const std::string token = replay_token(query, input);
+    detail::set_inflight(token);
+    const Outcome o = detail::run_judge(judge, input, report);
+    detail::clear_inflight();
+    if (!shrinking) detail::tally(report, o);
+    if (o.verdict != Outcome::Verdict::fail) return;
+    shrinking = true;
+    ++shrinks;
+    smallest = detail::failure_of("", query, input, o);
+    RC_FAIL(o.why);
+  };
+
+  rc::detail::TestParams params;
+  params.seed = detail::seed_for(query);
+  params.maxSuccess = s.cases;
+  params.maxSize = 100;
+  rc::detail::TestMetadata metadata;
+  metadata.id = metadata.description = query;
+  detail::QuietListener listener;
+  const auto result = rc::detail::checkProperty(rc::detail::toProperty(property), metadata, params, listener, {});
+
+  if (result.template is<rc::detail::FailureResult>() && smallest) {
+    smallest->shrinks = shrinks;
+    smallest->title = "random case " + std::to_string(report.cases) + " of " + std::to_string(s.cases);
+    report.failure = smallest;
+  } else if (result.template is<rc::detail::GaveUpResult>()) {
+    report.error = "the generator gave up: " + result.template get<rc::detail::GaveUpResult>().description;
+  } else if (result.template is<rc::detail::Error>()) {
+    report.error = "RapidCheck failed: " + result.template get<rc::detail::Error>().description;
+  }
+  detail::save_report();
+  detail::report_to_catch(report, true);
+}
+
+}  // namespace labkit::check

@@ -1,0 +1,165 @@
+#include "common/harness/codec.h"
+
+#include <charconv>
+#include <cmath>
+#include <cstdlib>
+
+namespace labkit {
+
+std::string fmt(double x) {
+  if (std::isnan(x)) return "nan";
+  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, x).ptr;
+  return std::string(buffer, end);
+}
+
+std::string fmt(const Vec2& v) { return "(" + fmt(v.x()) + ", " + fmt(v.y()) + ")"; }
+std::string fmt(const Vec3& v) { return "(" + fmt(v.x()) + ", " + fmt(v.y()) + ", " + fmt(v.z()) + ")"; }
+
+namespace codec {
+
+double Reader::real() {
+  if (next_ >= numbers_.size())
+    throw BadToken("it ends after " + std::to_string(numbers_.size()) + " numbers; more are needed");
+  return numbers_[next_++];
+}
+
+std::size_t Reader::count(std::size_t limit) {
+  const double x = real();
+  if (!(x >= 0) || x != std::floor(x) || x > double(limit))
+    throw BadToken("number " + std::to_string(next_) + " (" + fmt(x) + ") should be a count from 0 to " +
+                   std::to_string(limit));
+  return std::size_t(x);
+}
+
+void encode(Writer& w, const Vec3& v) { w.real(v.x()); w.real(v.y()); w.real(v.z()); }
+void decode(Reader& r, Vec3& v) { v.x() = r.real(); v.y() = r.real(); v.z() = r.real(); }
+void encode(Writer& w, const Vec2& v) { w.real(v.x()); w.real(v.y()); }
+void decode(Reader& r, Vec2& v) { v.x() = r.real(); v.y() = r.real(); }
+void encode(Writer& w, const Segment& s) { encode(w, s.a); encode(w, s.b); }
+void decode(Reader& r, Segment& s) { decode(r, s.a); decode(r, s.b); }
+void encode(Writer& w, const Triangle& t) { encode(w, t.v0); encode(w, t.v1); encode(w, t.v2); }
+void decode(Reader& r, Triangle& t) { decode(r, t.v0); decode(r, t.v1); decode(r, t.v2); }
+void encode(Writer& w, const Plane& p) { encode(w, p.normal); w.real(p.offset); }
+void decode(Reader& r, Plane& p) { decode(r, p.normal); p.offset = r.real(); }
+void encode(Writer& w, const Frustum& f) { for (const Plane& p : f.planes) encode(w, p); }
+void decode(Reader& r, Frustum& f) { for (Plane& p : f.planes) decode(r, p); }
+
+void encode(Writer& w, const Mesh& m) {
+  w.count(m.vertices.size());
+  for (const Vec3& v : m.vertices) encode(w, v);
+  w.count(m.triangles.size());
+  for (const auto& f : m.triangles)
+    for (int i : f) w.count(std::size_t(i));
+}
+
+void decode(Reader& r, Mesh& m) {
+  m.vertices.resize(r.count());
+  for (Vec3& v : m.vertices) decode(r, v);
+  m.triangles.resize(r.count());
+  const std::size_t last = m.vertices.empty() ? 0 : m.vertices.size() - 1;
+  for (auto& f : m.triangles)
+    for (int& i : f) i = int(r.count(last));
+}
+
+// The 3x4 matrix [R | t], row by row: exact, where a quaternion would round.
+void encode(Writer& w, const RigidTransform& m) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) {
+      if (j < 3) w.unit(m.matrix()(i, j));
+      else w.real(m.matrix()(i, j));
+    }
+}
+void decode(Reader& r, RigidTransform& m) {
+  m.setIdentity();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 4; ++j) m.matrix()(i, j) = r.real();
+}
+
+// A projection matrix mixes lengths and unit-free entries; all are perturbed relative to 1.
+void encode(Writer& w, const Mat4& m) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) w.unit(m(i, j));
+}
+void decode(Reader& r, Mat4& m) {
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) m(i, j) = r.real();
+}
+
+}  // namespace codec
+
+std::string describe(double x) { return fmt(x); }
+std::string describe(int x) { return std::to_string(x); }
+std::string describe(bool x) { return x ? "true" : "false"; }
+std::string describe(const Vec2& v) { return fmt(v); }
+std::string describe(const Vec3& v) { return fmt(v); }
+std::string describe(const Segment& s) { return "a=" + fmt(s.a) + " b=" + fmt(s.b); }
+std::string describe(const Triangle& t) {
+  return "v0=" + fmt(t.v0) + " v1=" + fmt(t.v1) + " v2=" + fmt(t.v2);
+}
+std::string describe(const Plane& p) { return "normal=" + fmt(p.normal) + " offset=" + fmt(p.offset); }
+
+std::string describe(const Frustum& f) {
+  static const char* names[6] = {"left", "right", "bottom", "top", "near", "far"};
+  std::string s;
+  for (int i = 0; i < 6; ++i) s += std::string(i ? "; " : "") + names[i] + " " + describe(f.planes[i]);
+  return s;
+}
+
+std::string describe(const Mesh& m) {
+  std::string s = std::to_string(m.vertices.size()) + " vertices, " + std::to_string(m.triangles.size()) + " triangles";
+  const std::size_t shown = m.size() <= 12 ? m.size() : 6;
+  for (std::size_t i = 0; i < shown; ++i) s += "\n    triangle " + std::to_string(i) + ": " + describe(m.triangle(i));
+  if (shown < m.size()) s += "\n    ... (the replay token holds all of them)";
+  return s;
+}
+
+std::string describe(const RigidTransform& m) {
+  std::string s = "[";
+  for (int i = 0; i < 3; ++i) {
+    s += i ? "; " : "";
+    for (int j = 0; j < 4; ++j) s += (j ? " " : "") + fmt(m.matrix()(i, j));
+  }
+  return s + "]";
+}
+
+std::string describe(const Mat4& m) {
+  std::string s = "[";
+  for (int i = 0; i < 4; ++i) {
+    s += i ? "; " : "";
+    for (int j = 0; j < 4; ++j) s += (j ? " " : "") + fmt(m(i, j));
+  }
+  return s + "]";
+}
+
+ParsedToken parse_token(const std::string& token) {
+  const auto colon = token.find(':');
+  if (colon == std::string::npos || colon == 0)
+    throw BadToken("a replay case looks like 'query:1,2,3', and '" + token.substr(0, 40) + "' has no 'query:' in front");
+  ParsedToken parsed;
+  parsed.query = token.substr(0, colon);
+  const std::string rest = token.substr(colon + 1);
+  std::size_t begin = 0;
+  while (begin <= rest.size() && !rest.empty()) {
+    std::size_t end = rest.find(',', begin);
+    if (end == std::string::npos) end = rest.size();
+    const std::string item = rest.substr(begin, end - begin);
+    double x = 0;
+    const auto result = std::from_chars(item.data(), item.data() + item.size(), x);
+    if (item.empty() || result.ec != std::errc() || result.ptr != item.data() + item.size()) {
+      // from_chars does not read "inf"/"nan" in every library; accept them by hand.
+      if (item == "inf") x = INFINITY;
+      else if (item == "-inf") x = -INFINITY;
+      else if (item == "nan") x = NAN;
+      else
+        throw BadToken("number " + std::to_string(parsed.numbers.size() + 1) + " of the replay case, '" +
+                       item.substr(0, 30) + "', is not a number");
+    }
+    parsed.numbers.push_back(x);
+    begin = end + 1;
+  }
+  return parsed;
+}
+
+}  // namespace labkit

@@ -1,0 +1,32 @@
+// The machine-readable side of a test run: the listener in catch_main.cpp tells it when
+// test cases start and end, check.h adds each query's counts, and the JSON file named by
+// LABKIT_REPORT is rewritten after each of them, so that `./labkit check` still knows
+// how far a run got when the code under test crashes or hangs.
+#pragma once
+
+#include <nlohmann/json_fwd.hpp>
+
+#include <string>
+#include <vector>
+
+namespace labkit::check::report {
+
+struct TestCase {
+  std::string name;
+  std::vector<std::string> tags;
+  bool passed = false;
+  std::vector<std::string> failures;  // the first few failed assertions, as Catch words them
+  std::string not_implemented;        // set when a stub was reached
+};
+
+nlohmann::json to_json(const TestCase& t);
+std::string indent(const std::string& text, const std::string& prefix);
+
+void test_case_started(const std::string& name, const std::vector<std::string>& tags);
+void assertion_failed(const std::string& message);
+void test_case_ended(bool passed);
+
+// Prints the in-flight case on a crash or a time-out (SIGTERM) before the process dies.
+void install_signal_handlers();
+
+}  // namespace labkit::check::report

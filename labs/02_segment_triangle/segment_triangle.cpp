@@ -1,0 +1,83 @@
+// Lab 02: segment against triangle and mesh. Your file: replace each stub below.
+// The contract is segment_triangle.h; the steps are in handouts/02_segment_triangle.md.
+// Check your work with:  ./labkit check 02        (one step: ./labkit check 02 --step 1)
+#include "segment_triangle.h"
+
+#include "common/not_implemented.h"
+
+namespace labkit::lab02 {
+
+// L02S1: signed distances of a and b, and the crossing point.
+PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
+  (void)segment;
+  (void)triangle;
+  not_implemented("L02S1");
+}
+
+// L02S2: the three edge tests.
+bool point_in_triangle_edges(const Vec3& x, const Triangle& triangle) {
+  (void)x;
+  (void)triangle;
+  not_implemented("L02S2");
+}
+
+// L02S3: alpha and beta in the plane with one coordinate dropped.
+Barycentric barycentric(const Vec3& x, const Triangle& triangle) {
+  (void)x;
+  (void)triangle;
+  not_implemented("L02S3");
+}
+
+// L02S3: the containment test from alpha and beta.
+bool point_in_triangle_barycentric(const Vec3& x, const Triangle& triangle) {
+  (void)x;
+  (void)triangle;
+  not_implemented("L02S3");
+}
+
+// L02S4: yes or no.
+bool test_segment_triangle(const Segment& segment, const Triangle& triangle) {
+  (void)segment;
+  (void)triangle;
+  not_implemented("L02S4");
+}
+
+// L02S4: where and when.
+SegmentTriangleHit find_segment_triangle(const Segment& segment, const Triangle& triangle) {
+  (void)segment;
+  (void)triangle;
+  not_implemented("L02S4");
+}
+
+// L02S5: the nearest hit along the segment.
+MeshHit first_hit(const Segment& segment, const Mesh& mesh) {
+  (void)segment;
+  (void)mesh;
+  not_implemented("L02S5");
+}
+
+// L02S5: any hit at all.
+bool any_hit(const Segment& segment, const Mesh& mesh) {
+  (void)segment;
+  (void)mesh;
+  not_implemented("L02S5");
+}
+
+// L02S5: every hit, sorted by t.
+std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
+  (void)segment;
+  (void)mesh;
+  not_implemented("L02S5");
+}
+
+// L02S6: the delta matrix.
+MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0,
+                         const RigidTransform& m1) {
+  (void)segment;
+  (void)mesh;
+  (void)m0;
+  (void)m1;
+  not_implemented("L02S6");
+}
+
+}  // namespace labkit::lab02

@@ -1,0 +1,123 @@
+// Lab 02: segment against triangle, and against a mesh.
+// Handout: handouts/02_segment_triangle.md. Lectures 000 and 004 (collision detection:
+// segment vs. triangle, faster point containment, segment vs. mesh, moving mesh).
+//
+// You write labs/02_segment_triangle/segment_triangle.cpp; this header is the contract.
+//
+//                 a
+//                 |  d_a > 0            The segment a-b against the triangle v0 v1 v2,
+//        v2       |                     normal n = (v1 - v0) x (v2 - v0).
+//        | \      |                     Signed distances d_a, d_b to its plane; if they
+//        |   \    x  <- crossing        differ in sign the segment crosses the plane at
+//        |     \  |                     x = (d_a b - d_b a) / (d_a - d_b),
+//        v0 ---- v1                     and hits the triangle when x is inside it.
+//                 |
+//                 b  d_b < 0
+//
+// Sets are closed. Touching counts as a hit: an end on the triangle, a segment through
+// an edge or a vertex. A segment lying in the triangle's plane hits it where the two
+// meet, and "first" is the first such point from a. A zero-length segment (a == b)
+// hits when a is on the closed triangle. A zero-area triangle (collinear or coincident
+// vertices) has no plane and is never hit.
+//
+// Tolerances. S is the largest absolute coordinate of the input (every point of it,
+// including mesh vertices and transform translations), and tol = 1e-9 * S.
+//  - Yes/no answers must equal the exact answer, except on ambiguous inputs, whose
+//    exact answer changes under a perturbation of tol: there either answer passes.
+//  - Distances: within tol. Points: within tol of the exact point, or, for a reported
+//    hit, within tol of both the segment and the closed triangle.
+//  - The parameter t of a crossing: within tol / |d_a - d_b| of the exact one (a segment
+//    almost parallel to the plane fixes t only loosely).
+//  - t, and the barycentric weights, must reproduce the reported point within tol.
+#pragma once
+
+#include "common/geometry.h"
+
+#include <vector>
+
+namespace labkit::lab02 {
+
+// ---- Step 1 (L02S1): signed distances and the crossing point -----------------------
+
+struct PlaneCrossing {
+  double d_a = 0.0;           // signed distance of a to the triangle's plane (unit normal)
+  double d_b = 0.0;           // signed distance of b
+  bool crosses = false;       // the segment meets the plane in exactly one point
+  double t = 0.0;             // that point is a + t (b - a), 0 <= t <= 1
+  Vec3 point = Vec3::Zero();  // that point
+};
+
+// d_a, d_b always (both 0 for a zero-area triangle); t and point only when `crosses`,
+// which is false when both ends are strictly on one side, and when both are on the
+// plane (the segment lies in it: step 7).
+PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle);
+
+// ---- Step 2 (L02S2): point in triangle by edge tests -------------------------------
+
+// For a point in the triangle's plane: is it inside the closed triangle? Use the three
+// edge tests (x - v_i) . ((v_{i+1} - v_i) x n). False for a zero-area triangle.
+bool point_in_triangle_edges(const Vec3& x, const Triangle& triangle);
+
+// ---- Step 3 (L02S3): barycentric coordinates in the dropped-axis plane -------------
+
+struct Barycentric {
+  int dropped_axis = -1;  // 0, 1 or 2: the largest |component| of the normal (ties: the
+                          // lower index); -1 for a zero-area triangle
+  double alpha = 0.0;     // x = v0 + alpha (v1 - v0) + beta (v2 - v0)
+  double beta = 0.0;
+};
+
+// For a point in the triangle's plane, solved in 2D after dropping one coordinate.
+Barycentric barycentric(const Vec3& x, const Triangle& triangle);
+
+// Inside the closed triangle when alpha >= 0, beta >= 0 and alpha + beta <= 1.
+bool point_in_triangle_barycentric(const Vec3& x, const Triangle& triangle);
+
+// ---- Step 4 (L02S4): the test query and the find query -----------------------------
+
+bool test_segment_triangle(const Segment& segment, const Triangle& triangle);
+
+struct SegmentTriangleHit {
+  bool hit = false;                 // false: no common point; the other fields mean nothing
+  double t = 0.0;                   // the first common point from a is a + t (b - a)
+  Vec3 point = Vec3::Zero();        // that point
+  Vec3 barycentric = Vec3::Zero();  // its weights (w0, w1, w2) of v0, v1, v2, summing to 1
+  Vec3 normal = Vec3::Zero();       // the triangle's unit normal, as it is wound
+};
+
+SegmentTriangleHit find_segment_triangle(const Segment& segment, const Triangle& triangle);
+
+// ---- Step 5 (L02S5): segment against a mesh ----------------------------------------
+
+struct MeshHit {
+  bool hit = false;
+  int triangle = -1;                // which triangle: an index into mesh.triangles
+  double t = 0.0;
+  Vec3 point = Vec3::Zero();
+  Vec3 barycentric = Vec3::Zero();
+  Vec3 normal = Vec3::Zero();
+};
+
+// The hit with the smallest t (when two triangles tie, either).
+MeshHit first_hit(const Segment& segment, const Mesh& mesh);
+// Whether any triangle is hit; may stop at the first one found.
+bool any_hit(const Segment& segment, const Mesh& mesh);
+// Every triangle the segment meets, once each, sorted by t (ties: lower index first).
+// A segment through an edge shared by two triangles meets both.
+std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh);
+
+// ---- Step 6 (L02S6): segment against a moving mesh ---------------------------------
+
+// The mesh (vertices in its own frame) moves from pose m0 to pose m1 while the particle
+// moves from segment.a to segment.b. Use the delta-matrix idea of the lecture: in the
+// mesh's frame the particle goes from m0^-1 a to m1^-1 b. Report the first hit with
+// the mesh at m1: point and normal in world coordinates, t along the particle's path.
+MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0,
+                         const RigidTransform& m1);
+
+// ---- Step 7 (L02S7): robustness ----------------------------------------------------
+// No new function: steps 1 to 6 must follow the rules at the top of this file on exact
+// degenerate input (ends on the triangle, through edges and vertices, coplanar
+// segments, zero-length segments, zero-area triangles, edges shared in a mesh).
+
+}  // namespace labkit::lab02

@@ -1,0 +1,74 @@
+// Lab 02's verdicts: each judge compares one answer with the exact oracle, following
+// the tolerances and degenerate rules of labs/02_segment_triangle/segment_triangle.h.
+// The tests and the viewer both use them, so a red mark in the viewer and a failing
+// case in `./labkit check` always agree.
+#pragma once
+
+#include "segment_triangle.h"
+
+#include "common/generators/generators.h"
+#include "common/harness/check.h"
+
+#include <vector>
+
+namespace labkit::lab02 {
+
+// Answers and inputs list their fields, so that reports can print them.
+template <class V> void fields(PlaneCrossing& c, V&& v) {
+  v("d_a", c.d_a); v("d_b", c.d_b); v("crosses", c.crosses); v("t", c.t); v("point", c.point);
+}
+template <class V> void fields(Barycentric& b, V&& v) {
+  v("dropped_axis", b.dropped_axis); v("alpha", b.alpha); v("beta", b.beta);
+}
+template <class V> void fields(SegmentTriangleHit& h, V&& v) {
+  v("hit", h.hit); v("t", h.t); v("point", h.point); v("barycentric", h.barycentric); v("normal", h.normal);
+}
+template <class V> void fields(MeshHit& h, V&& v) {
+  v("hit", h.hit); v("triangle", h.triangle); v("t", h.t); v("point", h.point);
+  v("barycentric", h.barycentric); v("normal", h.normal);
+}
+
+struct PointTriangle {
+  Vec3 x = Vec3::Zero();
+  Triangle triangle;
+};
+template <class V> void fields(PointTriangle& p, V&& v) { v("x", p.x); v("triangle", p.triangle); }
+
+struct MovingMesh {
+  Segment segment;
+  Mesh mesh;
+  RigidTransform m0 = RigidTransform::Identity();
+  RigidTransform m1 = RigidTransform::Identity();
+};
+template <class V> void fields(MovingMesh& m, V&& v) {
+  v("segment", m.segment); v("mesh", m.mesh); v("m0", m.m0); v("m1", m.m1);
+}
+
+namespace judge {
+
+using check::Outcome;
+
+// Random cases accept any answer on ambiguous input; the robustness step's exact
+// degenerate input must follow the header's rules exactly.
+enum class Rules { random, exact };
+
+Outcome segment_plane(const SegmentTrianglePair& in, const PlaneCrossing& got, Rules rules = Rules::random);
+Outcome point_in_triangle(const PointTriangle& in, bool got, Rules rules = Rules::random);
+Outcome barycentric(const PointTriangle& in, const Barycentric& got);
+Outcome test_segment_triangle(const SegmentTrianglePair& in, bool got, Rules rules = Rules::random);
+Outcome find_segment_triangle(const SegmentTrianglePair& in, const SegmentTriangleHit& got,
+                              Rules rules = Rules::random);
+Outcome any_hit(const SegmentMeshPair& in, bool got, Rules rules = Rules::random);
+Outcome first_hit(const SegmentMeshPair& in, const MeshHit& got, Rules rules = Rules::random);
+Outcome all_hits(const SegmentMeshPair& in, const std::vector<MeshHit>& got, Rules rules = Rules::random);
+Outcome first_hit_moving(const MovingMesh& in, const MeshHit& got);
+
+// Inputs for the point-in-triangle steps: points exactly in the triangle's plane, many
+// of them exactly on an edge or a vertex, or a tiny step inside or outside one.
+rc::Gen<PointTriangle> point_triangle();
+// The same on integer coordinates: exact input for the robustness step.
+rc::Gen<PointTriangle> exact_point_triangle();
+rc::Gen<MovingMesh> moving_mesh();
+
+}  // namespace judge
+}  // namespace labkit::lab02
