@@ -5,6 +5,8 @@
 #   tests/NN_name.judge.cpp       -> labNN_judge       (verdicts against the oracle; the viewer shares it)
 #   tests/NN_name.test.cpp        -> compiled once, linked twice:
 #                                    test_NN_name_student and test_NN_name_reference
+#   tests/NN_name.mutants.cmake   -> the reference with one classic mistake each; ctest
+#                                    expects the step each one breaks to fail
 #   viewer/scenes/NN_name.cpp     -> the lab's viewer scene (see viewer/CMakeLists.txt)
 #
 # ctest runs each step of the reference as its own test, "labNN.stepK", with the steps
@@ -51,6 +53,11 @@ function(labkit_add_lab number name)
     endforeach()
   endif()
 
+  # The classic mistakes, each of which the tests must catch.
+  if(TARGET ${lab}_reference AND EXISTS "${PROJECT_SOURCE_DIR}/tests/${stem}.mutants.cmake")
+    include("${PROJECT_SOURCE_DIR}/tests/${stem}.mutants.cmake")
+  endif()
+
   set_property(GLOBAL APPEND PROPERTY LABKIT_LABS ${stem})
 endfunction()
 
@@ -81,4 +88,48 @@ function(labkit_manifest_steps number out)
     message(FATAL_ERROR "grading/manifest.json has no steps for lab ${number}")
   endif()
   set(${out} ${result} PARENT_SCOPE)
+endfunction()
+
+# labkit_mutant(NN name NAME id STEP k FIND "text" REPLACE "text" [FILE solution.cpp])
+#
+# A mutant is the reference solution with one classic mistake written in (the handout's
+# "classic mistake" of that step): the text FIND replaced by REPLACE. ctest then expects
+# step k of the lab to FAIL against it: this is how the kit shows that its tests can
+# fail, and fail for the mistakes students actually make. Mutants live beside the
+# lab's tests, in tests/NN_name.mutants.cmake.
+function(labkit_mutant number name)
+  # PARSE_ARGV keeps the semicolons of C++ code inside FIND and REPLACE.
+  cmake_parse_arguments(PARSE_ARGV 2 M "" "NAME;STEP;FILE;FIND;REPLACE" "")
+  set(stem ${number}_${name})
+  if(NOT M_FILE)
+    set(M_FILE ${name}.cpp)
+  endif()
+  set(source "${PROJECT_SOURCE_DIR}/solutions/${stem}/${M_FILE}")
+  file(READ "${source}" text)
+  string(FIND "${text}" "${M_FIND}" at)
+  if(at EQUAL -1)
+    message(FATAL_ERROR "mutant '${M_NAME}' of lab ${number}: its FIND text no longer appears in "
+                        "solutions/${stem}/${M_FILE}; update tests/${stem}.mutants.cmake")
+  endif()
+  string(REPLACE "${M_FIND}" "${M_REPLACE}" mutated "${text}")
+  set(output "${PROJECT_BINARY_DIR}/mutants/${stem}/${M_NAME}.cpp")
+  # Rewritten only when it changes, so that a reconfigure does not rebuild every mutant.
+  set(old "")
+  if(EXISTS "${output}")
+    file(READ "${output}" old)
+  endif()
+  if(NOT old STREQUAL mutated)
+    file(WRITE "${output}" "${mutated}")
+  endif()
+  set_property(DIRECTORY "${PROJECT_SOURCE_DIR}" APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${source}")
+
+  set(library lab${number}_mutant_${M_NAME})
+  add_library(${library} STATIC "${output}")
+  target_include_directories(${library} PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
+  target_link_libraries(${library} PUBLIC labkit_geometry)
+  target_compile_options(${library} PRIVATE -w)  # a mistake may well leave a variable unused
+  set_target_properties(${library} PROPERTIES EXCLUDE_FROM_ALL FALSE)
+  labkit_add_test_binary(${number} ${name} mutant_${M_NAME} ${library})
+  add_test(NAME lab${number}.mutant.${M_NAME} COMMAND test_${stem}_mutant_${M_NAME} "[lab${number}][step${M_STEP}]")
+  set_tests_properties(lab${number}.mutant.${M_NAME} PROPERTIES WILL_FAIL TRUE LABELS "mutant;lab${number}")
 endfunction()

@@ -60,6 +60,20 @@ rc::Gen<SegmentTrianglePair> crossing(bool exact) {
   });
 }
 
+// A small triangle (edges of one or two units of the scale, so about 1e-6 at the smallest
+// scale) crossed near its middle: areas near 1e-12 catch fuzzy zero tests.
+rc::Gen<SegmentTrianglePair> small_crossing() {
+  return rc::gen::exec([] {
+    const double s = *scale();
+    const Triangle t = *rc::gen::suchThat(
+        rc::gen::exec([s] { return Triangle{*lattice_point(s, 1), *lattice_point(s, 1), *lattice_point(s, 1)}; }),
+        [](const Triangle& tri) { return tri.normal() != Vec3::Zero(); });
+    const Vec3 x = *point_in_triangle(t);
+    const Vec3 d = *direction(s, 2);
+    return SegmentTrianglePair{{x + d, x - d}, t};
+  });
+}
+
 // Exactly through a vertex, or exactly through a point of an edge.
 rc::Gen<SegmentTrianglePair> through_feature(bool exact) {
   return rc::gen::exec([exact] {
@@ -267,6 +281,7 @@ rc::Gen<SegmentTrianglePair> segment_triangle() {
   const rc::Gen<SegmentTrianglePair> families = rc::gen::weightedOneOf<SegmentTrianglePair>({
       {3, generic()},
       {3, crossing(false)},
+      {1, small_crossing()},
       {2, through_feature(false)},
       {1, touching(false)},
       {2, coplanar(false)},
