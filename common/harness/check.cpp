@@ -44,6 +44,7 @@ Settings read_settings() {
   if (const char* v = std::getenv("LABKIT_REPLAY")) s.replay = v;
   if (const char* v = std::getenv("LABKIT_REPORT")) s.report = v;
   if (const char* v = std::getenv("LABKIT_HIDE_SEED")) s.hide_seed = std::string(v) == "1";
+  if (const char* v = std::getenv("LABKIT_DESCRIBE")) s.describe_only = std::string(v) == "1";
   return s;
 }
 

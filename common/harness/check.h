@@ -36,12 +36,14 @@ namespace labkit::check {
 //   LABKIT_REPLAY  a replay token: run that one case and nothing else
 //   LABKIT_REPORT  where to write the JSON report
 //   LABKIT_HIDE_SEED=1  graded runs: reports never show the seed
+//   LABKIT_DESCRIBE=1   with LABKIT_REPLAY: only describe the case's input
 struct Settings {
   std::uint64_t seed = 1;
   int cases = 10000;
   std::string replay;
   std::string report;
   bool hide_seed = false;
+  bool describe_only = false;  // LABKIT_DESCRIBE=1: with a replay, describe its input, run nothing
 };
 const Settings& settings();
 
@@ -189,6 +191,10 @@ template <class Input, class Judge>
 void replay_one(const std::string& query, Judge& judge, QueryReport& report) {
   const ParsedToken token = parse_token(settings().replay);
   const Input input = input_from_token<Input>(token);
+  if (settings().describe_only) {
+    report.failure = failure_of("described", query, input, Outcome{});
+    return;
+  }
   set_inflight(settings().replay);
   const Outcome o = run_judge(judge, input, report);
   clear_inflight();
@@ -267,7 +273,11 @@ void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& j
   const Settings& s = settings();
   if (!s.replay.empty()) {
     if (parse_token(s.replay).query != query) return;
-    detail::replay_one<Input>(query, judge, report);
+    try {
+      detail::replay_one<Input>(query, judge, report);
+    } catch (const BadToken& e) {
+      report.error = e.what();
+    }
     detail::save_report();
     detail::report_to_catch(report, true);
     return;

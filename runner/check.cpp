@@ -1,0 +1,276 @@
+#include "check.h"
+#include "terminal.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <iostream>
+#include <sstream>
+#include <thread>
+
+namespace runner {
+
+namespace {
+
+using term::bold;
+using term::dim;
+using term::green;
+using term::red;
+using term::yellow;
+
+std::string lines_from(const std::string& text, std::size_t first, std::size_t count) {
+  std::istringstream in(text);
+  std::string line, out;
+  for (std::size_t i = 0; std::getline(in, line) && i < first + count; ++i)
+    if (i >= first) out += line + "\n";
+  return out;
+}
+
+// The first compiler errors of a build log, with paths relative to the kit's root.
+std::string first_errors(const std::string& log, const std::string& root) {
+  std::istringstream in(log);
+  std::string line;
+  std::size_t index = 0, first = std::string::npos;
+  while (std::getline(in, line)) {
+    if (first == std::string::npos && (line.find("error:") != std::string::npos || line.find("Error") == 0)) first = index;
+    ++index;
+  }
+  std::string excerpt = lines_from(log, first == std::string::npos ? 0 : first, 24);
+  for (std::size_t at; (at = excerpt.find(root + "/")) != std::string::npos;) excerpt.erase(at, root.size() + 1);
+  return excerpt;
+}
+
+std::string coloured_status(Status s) {
+  const std::string word = status_word(s);
+  switch (s) {
+    case Status::passed: return green(word);
+    case Status::not_implemented: return yellow(word);
+    default: return red(word);
+  }
+}
+
+std::string counts(const StepResult& r) {
+  if (r.status == Status::not_implemented || r.status == Status::not_built) return "";
+  std::string s;
+  if (r.examples) s += std::to_string(r.examples) + " examples";
+  if (r.random_cases) s += std::string(s.empty() ? "" : ", ") + std::to_string(r.random_cases) + " random";
+  if (r.ambiguous) s += " (" + std::to_string(r.ambiguous) + " ambiguous)";
+  return dim(s);
+}
+
+void print_failure(const Failure& f, const std::string& query, const Lab& lab, bool hide_seed_hint) {
+  std::cout << "  query     " << query << (f.title.empty() ? "" : ", " + f.title);
+  if (f.shrinks > 0) std::cout << " (shrunk " << f.shrinks << " times)";
+  std::cout << "\n  input     " << term::indent(f.input, "            ") << "\n";
+  std::cout << "  expected  " << term::indent(f.expected, "            ") << "\n";
+  std::cout << "  got       " << term::indent(f.got, "            ") << "\n";
+  std::cout << "  why       " << term::indent(f.why, "            ") << "\n";
+  if (!f.replay.empty()) std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case '" + f.replay + "'") << "\n";
+  (void)hide_seed_hint;
+}
+
+void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
+  const Step& step = *r.step;
+  std::cout << "\n" << bold("Lab " + lab.id + ", step " + std::to_string(step.number) + " (" + step.tag + ", " + step.title + "): ") +
+                         coloured_status(r.status)
+            << "\n";
+  if (r.status == Status::crashed || r.status == Status::timed_out || r.status == Status::flooded) {
+    std::cout << "  what      " << r.detail << "\n";
+    if (!r.inflight.empty()) {
+      const std::string binary = paths.build + "/" + lab.test_binary("student");
+      std::cout << "  on input  " << term::indent(describe_token(binary, lab, r.inflight), "            ") << "\n";
+      std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case '" + r.inflight + "'") << "\n";
+    }
+    std::cout << "  debug     gdb --args " << paths.build << "/" << lab.test_binary("student") << " '[lab" << lab.id
+              << "][step" << step.number << "]'\n";
+    const std::string tail = r.run.output.size() > 1200 ? r.run.output.substr(r.run.output.size() - 1200) : r.run.output;
+    if (!tail.empty()) std::cout << dim("  its last output:\n    " + term::indent(tail, "    ")) << "\n";
+    return;
+  }
+  for (const QueryResult& q : r.queries) {
+    if (!q.error.empty()) {
+      std::cout << "  " << q.query << ": " << q.error << "\n";
+      return;
+    }
+    if (q.failure && q.not_implemented.empty()) {
+      print_failure(*q.failure, q.query, lab, false);
+      return;
+    }
+  }
+  for (const TestCaseResult& t : r.test_cases)
+    if (!t.passed && !t.failures.empty()) {
+      std::cout << "  test      " << t.name << "\n  failure   " << term::indent(t.failures.front(), "            ") << "\n";
+      return;
+    }
+  if (r.status == Status::no_tests)
+    std::cout << "  The test binary has no test tagged [lab" << lab.id << "][step" << step.number
+              << "]: grading/manifest.json and the tests disagree.\n";
+}
+
+}  // namespace
+
+std::string build_target(const Paths& paths, const std::string& target, bool* ok) {
+  Limits limits;
+  limits.seconds = 3600;
+  limits.kept_bytes = 1 << 20;
+  const Run run = runner::run({"cmake", "--build", paths.build, "--target", target}, {}, limits);
+  *ok = run.ok();
+  return *ok ? "" : first_errors(run.output, paths.source);
+}
+
+std::vector<StepResult> run_steps(const std::string& binary, const Lab& lab, const std::vector<const Step*>& steps,
+                                  const StepOptions& options, int jobs) {
+  std::vector<StepResult> results(steps.size());
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t i; (i = next++) < steps.size();) results[i] = run_step(binary, lab, *steps[i], options);
+  };
+  std::vector<std::thread> pool;
+  for (int k = 0; k < std::max(1, jobs); ++k) pool.emplace_back(worker);
+  for (std::thread& t : pool) t.join();
+  return results;
+}
+
+std::string describe_token(const std::string& binary, const Lab& lab, const std::string& token) {
+  StepOptions options;
+  options.replay = token;
+  options.describe_only = true;
+  options.limits.seconds = 30;
+  for (const Step& step : lab.steps) {
+    const StepResult r = run_step(binary, lab, step, options);
+    for (const QueryResult& q : r.queries)
+      if (q.failure && !q.failure->input.empty()) return q.failure->input;
+  }
+  return token;
+}
+
+int check(const Paths& paths, const CheckOptions& options) {
+  const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
+  std::vector<const Lab*> labs;
+  for (const std::string& id : options.labs) {
+    const Lab* lab = manifest.find(id.size() == 1 ? "0" + id : id);
+    if (!lab) {
+      std::string known;
+      for (const Lab& l : manifest.labs) known += (known.empty() ? "" : ", ") + l.id;
+      std::cerr << "labkit check: there is no lab '" << id << "'; the labs are " << known << "\n";
+      return 2;
+    }
+    labs.push_back(lab);
+  }
+  if (labs.empty())
+    for (const Lab& l : manifest.labs) labs.push_back(&l);
+  if (!options.replay.empty() && labs.size() != 1) {
+    std::cerr << "labkit check: --case replays one lab's case; name the lab, e.g. ./labkit check 02 --case '...'\n";
+    return 2;
+  }
+  if (!options.replay.empty()) {
+    const auto colon = options.replay.find(':');
+    const bool numbers = colon != std::string::npos &&
+                         options.replay.find_first_not_of("0123456789.,-+eEinfa", colon + 1) == std::string::npos;
+    if (colon == std::string::npos || colon == 0 || !numbers) {
+      std::cerr << "labkit check: a case looks like 'query:1,2,3' (copy it from a failure report); got '"
+                << options.replay.substr(0, 60) << "'\n";
+      return 2;
+    }
+  }
+
+  StepOptions step_options;
+  step_options.seed = options.seed;
+  step_options.cases = options.cases;
+  step_options.replay = options.replay;
+  step_options.limits.seconds = options.timeout;
+  step_options.limits.memory_bytes = std::size_t(4) << 30;
+  const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+
+  const auto start = std::chrono::steady_clock::now();
+  int total = 0, passing = 0;
+  std::string next_step;
+  std::vector<std::pair<const Lab*, StepResult>> to_explain;
+  const bool replaying = !options.replay.empty();
+  std::vector<std::vector<const Step*>> selected;
+  for (const Lab* lab : labs) {
+    selected.emplace_back();
+    for (const Step& s : lab->steps)
+      if (options.step == 0 || s.number == options.step) selected.back().push_back(&s);
+    if (selected.back().empty()) {
+      std::cerr << "labkit check: lab " << lab->id << " has no step " << options.step << "\n";
+      return 2;
+    }
+  }
+  if (!replaying)
+    std::cout << bold("labkit check") << dim(": " + std::string(options.cases ? std::to_string(options.cases) : "the default") +
+                                             " random cases per query, seed " + (options.seed.empty() ? "public" : options.seed))
+              << "\n";
+
+  for (std::size_t l = 0; l < labs.size(); ++l) {
+    const Lab* lab = labs[l];
+    const std::vector<const Step*>& steps = selected[l];
+    const std::string target = lab->test_binary(options.implementation);
+    bool built = false;
+    const std::string errors = build_target(paths, target, &built);
+    if (!replaying || !built) std::cout << "\n" << bold("Lab " + lab->id + "  " + lab->title) << dim("   " + lab->handout()) << "\n";
+    if (!built) {
+      std::cout << "  " << red("does not compile") << ": every step of this lab fails until it does.\n\n    "
+                << term::indent(errors, "    ") << "\n";
+      total += int(steps.size());
+      if (next_step.empty()) next_step = "make lab " + lab->id + " compile (the errors above)";
+      continue;
+    }
+    const std::vector<StepResult> results =
+        run_steps(paths.build + "/" + target, *lab, steps, step_options, jobs);
+
+    if (replaying) {
+      for (const StepResult& r : results)
+        for (const QueryResult& q : r.queries) {
+          if (!q.error.empty()) {
+            std::cerr << "labkit check: " << q.error << "\n";
+            return 2;
+          }
+          if (q.cases == 0) continue;
+          std::cout << "  replayed " << q.query << " (step " << r.step->number << ", " << r.step->tag << "): ";
+          if (q.failure) {
+            std::cout << red("fails") << "\n";
+            print_failure(*q.failure, q.query, *lab, true);
+          } else {
+            std::cout << green(q.ambiguous ? "passes (an ambiguous case: any answer is accepted)" : "passes") << "\n";
+          }
+          return q.failure ? 1 : 0;
+        }
+      for (const StepResult& r : results)
+        if (r.status != Status::passed && r.status != Status::failing) {
+          print_details(r, *lab, paths);
+          return 1;
+        }
+      std::cerr << "labkit check: no step of lab " << lab->id << " has the query '"
+                << options.replay.substr(0, options.replay.find(':')) << "'\n";
+      return 2;
+    }
+
+    for (const StepResult& r : results) {
+      ++total;
+      const Step& s = *r.step;
+      std::cout << "  " << term::pad(std::to_string(s.number), 3) << term::pad(s.tag, 7) << term::pad(s.title, 40)
+                << term::pad(coloured_status(r.status), 22) << counts(r) << "\n";
+      if (r.status == Status::passed) {
+        ++passing;
+        continue;
+      }
+      if (r.status != Status::not_implemented) to_explain.push_back({lab, r});
+      if (next_step.empty())
+        next_step = "lab " + lab->id + " step " + std::to_string(s.number) + " (" + s.tag + "): " + lab->handout() +
+                    ", \"Step " + std::to_string(s.number) + "\"";
+    }
+  }
+
+  for (const auto& [lab, r] : to_explain) print_details(r, *lab, paths);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::ostringstream took;
+  took.precision(2);
+  took << std::fixed << seconds;
+  std::cout << "\n" << bold(std::to_string(passing) + " of " + std::to_string(total) + " steps pass") << dim(" (" + took.str() + " s)");
+  if (!next_step.empty()) std::cout << ". Next: " << next_step;
+  std::cout << "\n";
+  return passing == total ? 0 : 1;
+}
+
+}  // namespace runner

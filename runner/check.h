@@ -1,0 +1,42 @@
+// `./labkit check`: the student's command. Builds the labs as they stand, runs every
+// step in its own process, prints a table, and for each step that does not pass, its
+// first failure with a command that replays exactly that case.
+#pragma once
+
+#include "manifest.h"
+#include "step.h"
+
+#include <string>
+#include <vector>
+
+namespace runner {
+
+struct Paths {
+  std::string source;  // the kit's root
+  std::string build;   // its CMake build tree
+};
+
+struct CheckOptions {
+  std::vector<std::string> labs;  // empty: all
+  int step = 0;                   // 0: all
+  std::string replay;             // a replay token: that one case
+  int cases = 0;                  // random cases per query (0: the default)
+  std::string seed;
+  int jobs = 0;                   // parallel steps (0: one per core)
+  double timeout = 120;           // seconds per step
+  std::string implementation = "student";
+};
+
+int check(const Paths& paths, const CheckOptions& options);
+
+// Builds one target; on failure returns the first compiler errors, else "".
+std::string build_target(const Paths& paths, const std::string& target, bool* ok);
+
+// Runs the given steps of a lab, `jobs` at a time, in the order given.
+std::vector<StepResult> run_steps(const std::string& binary, const Lab& lab, const std::vector<const Step*>& steps,
+                                  const StepOptions& options, int jobs);
+
+// The readable input behind a replay token (runs no code under test).
+std::string describe_token(const std::string& binary, const Lab& lab, const std::string& token);
+
+}  // namespace runner

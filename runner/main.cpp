@@ -1,0 +1,48 @@
+// labkit-runner: the commands behind ./labkit. Run it through ./labkit, which installs
+// what is missing, configures and builds first.
+#include "check.h"
+
+#include <CLI/CLI.hpp>
+
+#include <cstdlib>
+#include <iostream>
+
+int main(int argc, char** argv) {
+  CLI::App app{"The collision-detection lab kit"};
+  app.require_subcommand(1);
+  runner::Paths paths{LABKIT_SOURCE_DIR, LABKIT_BINARY_DIR};
+  if (const char* b = std::getenv("LABKIT_BUILD_DIR"); b && *b) paths.build = b;
+
+  runner::CheckOptions check;
+  CLI::App* check_command = app.add_subcommand("check", "Build the labs as they stand and check every step");
+  check_command->add_option("labs", check.labs, "Which labs (default: all), e.g. 02");
+  check_command->add_option("--step", check.step, "Only this step")->check(CLI::PositiveNumber);
+  check_command->add_option("--case", check.replay, "Replay exactly one case, as a failure report prints it");
+  check_command->add_option("--cases", check.cases, "Random cases per query")->check(CLI::Range(1, 100000000));
+  check_command->add_option("--seed", check.seed, "Seed of the random cases (default: the public one)");
+  check_command->add_option("--jobs", check.jobs, "Steps run at once (default: one per core)")->check(CLI::PositiveNumber);
+  check_command->add_option("--timeout", check.timeout, "Seconds allowed per step")->check(CLI::PositiveNumber);
+  check_command
+      ->add_option("--implementation", check.implementation,
+                   "Which code to check: student (your files), reference, or mutant_NAME (a classic mistake)")
+      ->check(CLI::Validator(
+          [](std::string& s) {
+            return s == "student" || s == "reference" || s.rfind("mutant_", 0) == 0
+                       ? std::string()
+                       : std::string("must be student, reference or mutant_NAME");
+          },
+          "IMPLEMENTATION"));
+
+  CLI11_PARSE(app, argc, argv);
+  try {
+    if (check_command->parsed()) {
+      if (const char* n = std::getenv("LABKIT_CASES"); n && check.cases == 0) check.cases = std::atoi(n);
+      if (const char* s = std::getenv("LABKIT_SEED"); s && check.seed.empty()) check.seed = s;
+      return runner::check(paths, check);
+    }
+  } catch (const std::exception& e) {
+    std::cerr << "labkit: " << e.what() << "\n";
+    return 2;
+  }
+  return 0;
+}

@@ -1,0 +1,40 @@
+#include "manifest.h"
+
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+#include <stdexcept>
+
+namespace runner {
+
+const Lab* Manifest::find(const std::string& id) const {
+  for (const Lab& lab : labs)
+    if (lab.id == id || lab.stem() == id || lab.name == id) return &lab;
+  return nullptr;
+}
+
+Manifest load_manifest(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  nlohmann::json j;
+  try {
+    in >> j;
+    Manifest m;
+    for (const auto& l : j.at("labs")) {
+      Lab lab;
+      lab.id = l.at("id").get<std::string>();
+      lab.name = l.at("name").get<std::string>();
+      lab.title = l.value("title", lab.name);
+      lab.student_files = l.at("student_files").get<std::vector<std::string>>();
+      for (const auto& s : l.at("steps"))
+        lab.steps.push_back({s.at("step").get<int>(), s.at("tag").get<std::string>(), s.at("title").get<std::string>(),
+                             s.value("points", 0.0), s.value("partial", false)});
+      m.labs.push_back(lab);
+    }
+    return m;
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(path + " is not a valid manifest: " + e.what());
+  }
+}
+
+}  // namespace runner

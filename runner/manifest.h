@@ -1,0 +1,37 @@
+// grading/manifest.json: the labs, their steps, points, and the files a student edits.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace runner {
+
+struct Step {
+  int number = 0;
+  std::string tag;    // "L02S3": the tag in the stub, the handout and the test names
+  std::string title;
+  double points = 0;
+  bool partial = false;  // partial credit by the fraction of cases passed
+};
+
+struct Lab {
+  std::string id;    // "02"
+  std::string name;  // "segment_triangle"
+  std::string title;
+  std::vector<std::string> student_files;
+  std::vector<Step> steps;
+
+  std::string stem() const { return id + "_" + name; }
+  std::string test_binary(const std::string& implementation) const { return "test_" + stem() + "_" + implementation; }
+  std::string handout() const { return "handouts/" + stem() + ".md"; }
+};
+
+struct Manifest {
+  std::vector<Lab> labs;
+  const Lab* find(const std::string& id) const;
+};
+
+// Throws std::runtime_error with a one-line reason.
+Manifest load_manifest(const std::string& path);
+
+}  // namespace runner

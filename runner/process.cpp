@@ -1,0 +1,167 @@
+#include "process.h"
+
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace runner {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// Keeps the head and the tail of a stream: a crash report is printed last.
+class Capture {
+ public:
+  explicit Capture(std::size_t kept) : half_(kept / 2) {}
+  void add(const char* data, std::size_t n) {
+    total_ += n;
+    const std::size_t into_head = head_.size() < half_ ? std::min(n, half_ - head_.size()) : 0;
+    head_.append(data, into_head);
+    tail_.append(data + into_head, n - into_head);
+    if (tail_.size() > 2 * half_) tail_.erase(0, tail_.size() - half_);
+  }
+  std::size_t total() const { return total_; }
+  std::string text() const {
+    std::string tail = tail_.size() > half_ ? tail_.substr(tail_.size() - half_) : tail_;
+    if (total_ > head_.size() + tail.size())
+      return head_ + "\n[... " + std::to_string(total_ - head_.size() - tail.size()) + " bytes of output left out ...]\n" + tail;
+    return head_ + tail;
+  }
+
+ private:
+  std::size_t half_;
+  std::size_t total_ = 0;
+  std::string head_, tail_;
+};
+
+[[noreturn]] void exec_child(const std::vector<std::string>& argv, const Environment& env, const Limits& limits,
+                             const std::string& directory, int output) {
+  setpgid(0, 0);  // its own group: a time-out kills everything it started
+  dup2(output, 1);
+  dup2(output, 2);
+  close(output);
+  const int null = open("/dev/null", O_RDONLY);
+  if (null >= 0) dup2(null, 0);
+  rlimit no_core{0, 0};
+  setrlimit(RLIMIT_CORE, &no_core);
+  if (limits.memory_bytes > 0) {
+    rlimit memory{limits.memory_bytes, limits.memory_bytes};
+    setrlimit(RLIMIT_AS, &memory);
+  }
+  for (const auto& [name, value] : env) setenv(name.c_str(), value.c_str(), 1);
+  if (!directory.empty() && chdir(directory.c_str()) != 0) {
+    dprintf(2, "labkit: cannot enter %s: %s\n", directory.c_str(), strerror(errno));
+    _exit(126);
+  }
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  execvp(args[0], args.data());
+  dprintf(2, "labkit: cannot run %s: %s\n", argv[0].c_str(), strerror(errno));
+  _exit(127);
+}
+
+}  // namespace
+
+Run run(const std::vector<std::string>& argv, const Environment& env, const Limits& limits, const std::string& directory) {
+  Run result;
+  int pipe_fds[2];
+  if (argv.empty() || pipe2(pipe_fds, O_CLOEXEC) != 0) {
+    result.started = false;
+    return result;
+  }
+  const auto start = Clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(pipe_fds[0]);
+    close(pipe_fds[1]);
+    result.started = false;
+    result.output = std::string("fork failed: ") + strerror(errno);
+    return result;
+  }
+  if (pid == 0) {
+    close(pipe_fds[0]);
+    exec_child(argv, env, limits, directory, pipe_fds[1]);
+  }
+  close(pipe_fds[1]);
+  setpgid(pid, pid);  // also here, so there is no race with the child's own call
+
+  Capture capture(limits.kept_bytes);
+  const auto deadline = start + std::chrono::duration<double>(limits.seconds);
+  Clock::time_point kill_at{};
+  bool open = true;
+  char buffer[1 << 16];
+  while (open) {
+    const auto now = Clock::now();
+    if (!result.timed_out && now >= deadline) {
+      result.timed_out = true;
+      kill(-pid, SIGTERM);  // lets the harness name the case it was running
+      kill_at = now + std::chrono::seconds(2);
+    }
+    if (kill_at != Clock::time_point{} && now >= kill_at) kill(-pid, SIGKILL);
+    const auto until = kill_at != Clock::time_point{} ? kill_at : deadline;
+    const int wait_ms = int(std::max<long long>(
+        10, std::chrono::duration_cast<std::chrono::milliseconds>(until - now).count()));
+    pollfd p{pipe_fds[0], POLLIN, 0};
+    const int ready = poll(&p, 1, std::min(wait_ms, 1000));
+    if (ready < 0 && errno != EINTR) break;
+    if (ready <= 0) continue;
+    const ssize_t n = read(pipe_fds[0], buffer, sizeof buffer);
+    if (n <= 0) {
+      open = n < 0 && (errno == EINTR || errno == EAGAIN);
+      continue;
+    }
+    capture.add(buffer, std::size_t(n));
+    if (!result.flooded && capture.total() > limits.flood_bytes) {
+      result.flooded = true;
+      kill(-pid, SIGKILL);
+    }
+  }
+  close(pipe_fds[0]);
+
+  // The pipe closed: the child is gone or closed its output. Wait, still within limits.
+  int status = 0;
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, WNOHANG);
+    if (done == pid) break;
+    const auto now = Clock::now();
+    if (!result.timed_out && now >= deadline) {
+      result.timed_out = true;
+      kill(-pid, SIGTERM);
+      kill_at = now + std::chrono::seconds(2);
+    }
+    if (kill_at != Clock::time_point{} && now >= kill_at) kill(-pid, SIGKILL);
+    usleep(10000);
+  }
+  kill(-pid, SIGKILL);  // anything it left behind in its group
+  result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+  result.output_size = capture.total();
+  result.output = capture.text();
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
+  if (result.exit_code == 127 && result.output.find("labkit: cannot run") != std::string::npos) result.started = false;
+  return result;
+}
+
+std::string signal_name(int signal) {
+  switch (signal) {
+    case SIGSEGV: return "segmentation fault (SIGSEGV)";
+    case SIGBUS: return "bus error (SIGBUS)";
+    case SIGFPE: return "arithmetic exception (SIGFPE)";
+    case SIGILL: return "illegal instruction (SIGILL)";
+    case SIGABRT: return "aborted (SIGABRT)";
+    case SIGKILL: return "killed (SIGKILL)";
+    case SIGTERM: return "terminated (SIGTERM)";
+    case SIGXCPU: return "CPU time limit (SIGXCPU)";
+    default: return std::string("signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
+  }
+}
+
+}  // namespace runner

@@ -1,0 +1,41 @@
+// Runs one child process under limits, with its output captured. Whatever the child
+// does (crash, loop, allocate without end, flood its output, exit early), the caller
+// gets a Run back and goes on.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace runner {
+
+struct Limits {
+  double seconds = 120;                   // wall clock; then SIGTERM, and SIGKILL 2 s later
+  std::size_t memory_bytes = 0;           // address space (RLIMIT_AS); 0: no limit
+  std::size_t kept_bytes = 256 * 1024;    // output kept: the first half and the last half
+  std::size_t flood_bytes = 64u << 20;    // output beyond this kills the process
+};
+
+struct Run {
+  int exit_code = -1;   // when it exited normally
+  int signal = 0;       // when a signal ended it
+  bool timed_out = false;
+  bool flooded = false;
+  bool started = true;  // false when the program could not be run at all
+  std::size_t output_size = 0;
+  std::string output;   // stdout and stderr together, head and tail
+  double seconds = 0;
+
+  bool ok() const { return started && !timed_out && !flooded && signal == 0 && exit_code == 0; }
+};
+
+using Environment = std::vector<std::pair<std::string, std::string>>;
+
+Run run(const std::vector<std::string>& argv, const Environment& extra_environment = {}, const Limits& limits = {},
+        const std::string& directory = "");
+
+// "segmentation fault", "aborted", ...
+std::string signal_name(int signal);
+
+}  // namespace runner

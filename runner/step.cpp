@@ -1,0 +1,140 @@
+#include "step.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+namespace runner {
+
+namespace fs = std::filesystem;
+
+std::string status_word(Status s) {
+  switch (s) {
+    case Status::passed: return "passed";
+    case Status::failing: return "failing";
+    case Status::not_implemented: return "not implemented yet";
+    case Status::crashed: return "crashed";
+    case Status::timed_out: return "timed out";
+    case Status::flooded: return "too much output";
+    case Status::no_tests: return "no tests (kit error)";
+    case Status::not_built: return "does not compile";
+  }
+  return "?";
+}
+
+namespace {
+
+void read_report(const fs::path& path, StepResult& r) {
+  std::ifstream in(path);
+  if (!in) return;
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::exception&) {
+    return;  // cut short by a crash: what the run printed says more
+  }
+  for (const auto& t : j.value("test_cases", nlohmann::json::array()))
+    r.test_cases.push_back({t.value("name", ""), t.value("passed", false),
+                            t.value("failures", std::vector<std::string>{}), t.value("not_implemented", "")});
+  for (const auto& q : j.value("queries", nlohmann::json::array())) {
+    QueryResult qr;
+    qr.test_case = q.value("test_case", "");
+    qr.query = q.value("query", "");
+    qr.kind = q.value("kind", "");
+    qr.cases = q.value("cases", 0);
+    qr.passed = q.value("passed", 0);
+    qr.ambiguous = q.value("ambiguous", 0);
+    qr.failed = q.value("failed", 0);
+    qr.not_implemented = q.value("not_implemented", "");
+    qr.error = q.value("error", "");
+    if (q.contains("failure")) {
+      const auto& f = q["failure"];
+      qr.failure = Failure{f.value("title", ""), f.value("input", ""),  f.value("expected", ""), f.value("got", ""),
+                           f.value("why", ""),   f.value("replay", ""), f.value("shrinks", 0)};
+    }
+    r.queries.push_back(qr);
+  }
+}
+
+std::string inflight_token(const std::string& output) {
+  const std::string mark = "LABKIT-INFLIGHT ";
+  const auto at = output.rfind(mark);
+  if (at == std::string::npos) return "";
+  const auto end = output.find('\n', at);
+  return output.substr(at + mark.size(), end == std::string::npos ? std::string::npos : end - at - mark.size());
+}
+
+Status decide(const StepResult& r) {
+  if (r.run.flooded) return Status::flooded;
+  if (r.run.timed_out) return Status::timed_out;
+  if (r.run.signal != 0 || !r.run.started) return Status::crashed;
+  if (r.run.output.find("No test cases matched") != std::string::npos) return Status::no_tests;
+  bool failing = false, stub = false;
+  for (const QueryResult& q : r.queries) {
+    if (!q.not_implemented.empty()) stub = true;
+    if ((q.failure && q.not_implemented.empty()) || !q.error.empty()) failing = true;
+  }
+  for (const TestCaseResult& t : r.test_cases) {
+    if (!t.not_implemented.empty()) stub = true;
+    if (!t.passed && !t.failures.empty()) failing = true;
+  }
+  if (failing) return Status::failing;
+  if (stub) return Status::not_implemented;
+  if (r.run.exit_code != 0) {
+    // It ended with an error and no report explains it: it left early (exit() in the
+    // code under test) or died in a way the harness never saw.
+    return r.test_cases.empty() || r.test_cases.back().passed ? Status::crashed : Status::failing;
+  }
+  return Status::passed;
+}
+
+}  // namespace
+
+StepResult run_step(const std::string& binary, const Lab& lab, const Step& step, const StepOptions& options) {
+  StepResult r;
+  r.step = &step;
+  char scratch_template[] = "/tmp/labkit.XXXXXX";
+  const char* scratch = mkdtemp(scratch_template);
+  const fs::path report = fs::path(scratch ? scratch : "/tmp") / "report.json";
+
+  Environment env = {{"LABKIT_REPORT", report.string()}};
+  if (!options.seed.empty()) env.push_back({"LABKIT_SEED", options.seed});
+  if (options.cases > 0) env.push_back({"LABKIT_CASES", std::to_string(options.cases)});
+  if (!options.replay.empty()) env.push_back({"LABKIT_REPLAY", options.replay});
+  if (options.hide_seed) env.push_back({"LABKIT_HIDE_SEED", "1"});
+  if (options.describe_only) env.push_back({"LABKIT_DESCRIBE", "1"});
+  const std::string filter = "[lab" + lab.id + "][step" + std::to_string(step.number) + "]";
+  r.run = run({binary, filter}, env, options.limits, scratch ? scratch : "");
+  read_report(report, r);
+  if (scratch) fs::remove_all(scratch);
+
+  r.inflight = inflight_token(r.run.output);
+  r.status = decide(r);
+  if (r.status == Status::crashed) {
+    if (r.run.signal) r.detail = "the test process was killed by " + signal_name(r.run.signal);
+    else if (!r.run.started) r.detail = "the test binary could not be run";
+    else r.detail = "the test process ended early with exit status " + std::to_string(r.run.exit_code) +
+                    " (does the code call exit() or abort()?)";
+    if (r.run.output.find("bad_alloc") != std::string::npos) r.detail += "; it ran out of memory (std::bad_alloc)";
+  }
+  if (r.status == Status::timed_out)
+    r.detail = "it did not finish within " + std::to_string(int(options.limits.seconds)) + " s (an endless loop?)";
+  if (r.status == Status::flooded)
+    r.detail = "it printed more than " + std::to_string(options.limits.flood_bytes >> 20) + " MB and was stopped";
+
+  int cases = 0, passed = 0;
+  for (const QueryResult& q : r.queries) {
+    if (q.kind == "examples") r.examples += q.cases;
+    else r.random_cases += q.cases;
+    r.ambiguous += q.ambiguous;
+    cases += q.cases;
+    passed += q.passed + q.ambiguous;
+  }
+  r.fraction_passed = r.status == Status::passed ? 1.0 : (cases > 0 ? double(passed) / cases : 0.0);
+  return r;
+}
+
+}  // namespace runner

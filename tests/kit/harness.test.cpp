@@ -1,0 +1,77 @@
+// The harness's own guarantees: exact replay tokens, clear errors on bad tokens, and
+// the ambiguity test on cases whose answer is known.
+#include "common/generators/generators.h"
+#include "common/harness/check.h"
+#include "common/oracle/oracle.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+using namespace labkit;
+
+TEST_CASE("replay tokens rebuild the input bit for bit", "[kit]") {
+  const double awkward[] = {0.1, -0.0, 1e-310, std::numeric_limits<double>::max(), -3.0, 1.0 / 3.0,
+                            std::numeric_limits<double>::infinity()};
+  for (double x : awkward) {
+    const SegmentTrianglePair in{{{x, 1, 2}, {3, x, 5}}, {{x, x, x}, {0, 1, 0}, {0, 0, 1}}};
+    const SegmentTrianglePair back = input_from_token<SegmentTrianglePair>(parse_token(replay_token("q", in)));
+    CHECK(std::memcmp(&back.segment.a.x(), &in.segment.a.x(), sizeof(double)) == 0);
+    CHECK(back.triangle.v0 == in.triangle.v0);
+    CHECK(back.segment.b == in.segment.b);
+  }
+  Mesh m;
+  m.vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  m.triangles = {{0, 1, 2}};
+  const SegmentMeshPair in{{{0.25, 0.25, 1}, {0.25, 0.25, -1}}, m};
+  const SegmentMeshPair back = input_from_token<SegmentMeshPair>(parse_token(replay_token("first_hit", in)));
+  CHECK(back.mesh.vertices == m.vertices);
+  CHECK(back.mesh.triangles == m.triangles);
+}
+
+TEST_CASE("malformed replay tokens give one clear reason", "[kit]") {
+  CHECK_THROWS_WITH(parse_token("nonsense"), Catch::Contains("query:"));
+  CHECK_THROWS_WITH(parse_token("q:1,2,x"), Catch::Contains("is not a number"));
+  CHECK_THROWS_WITH(input_from_token<SegmentTrianglePair>(parse_token("q:1,2,3")), Catch::Contains("numbers"));
+  // A mesh whose triangle names a vertex it does not have.
+  CHECK_THROWS_WITH(input_from_token<SegmentMeshPair>(parse_token("q:0,0,0,1,1,1,3,0,0,0,1,0,0,0,1,0,1,0,1,7")),
+                    Catch::Contains("count from 0 to 2"));
+}
+
+TEST_CASE("ambiguity: exact degeneracies flip, clear cases do not", "[kit]") {
+  const Triangle floor{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}};
+  const auto hit = [](const SegmentTrianglePair& p) { return oracle::segment_hits_triangle(p.segment, p.triangle); };
+  // Through the middle: stays a hit. Far beside it: stays a miss.
+  CHECK_FALSE(check::flips_under_perturbation(SegmentTrianglePair{{{1, 1, 1}, {1, 1, -1}}, floor}, hit));
+  CHECK_FALSE(check::flips_under_perturbation(SegmentTrianglePair{{{9, 9, 1}, {9, 9, -1}}, floor}, hit));
+  // Exactly through an edge, or ending exactly on the plane: either answer is fair.
+  CHECK(check::flips_under_perturbation(SegmentTrianglePair{{{2, 0, 1}, {2, 0, -1}}, floor}, hit));
+  CHECK(check::flips_under_perturbation(SegmentTrianglePair{{{1, 1, 1}, {1, 1, 0}}, floor}, hit));
+  // In the plane but far away: a stable miss, however the rounding of d goes.
+  CHECK_FALSE(check::flips_under_perturbation(SegmentTrianglePair{{{9, 9, 0}, {12, 9, 0}}, floor}, hit));
+  CHECK_FALSE(oracle::segment_triangle_in_doubt({{9, 9, 0}, {12, 9, 0}}, floor, 1e-8));
+  // An end 1e-11 from a vertex, the other end on the plane: the conservative test doubts it.
+  CHECK(oracle::segment_triangle_in_doubt({{1e-11, 1e-11, 1e-11}, {-5, -3, 0}}, floor, 1e-8));
+}
+
+TEST_CASE("the oracle's orientation follows the right-hand rule", "[kit]") {
+  CHECK(oracle::orientation({0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}) == 1);
+  CHECK(oracle::side(Plane{{0, 0, 2}, -2}, {5, 5, 1}) == 0);
+  CHECK(oracle::side(Plane{{0, 0, 2}, -2}, {5, 5, 1.0000001}) == 1);
+  const oracle::SegmentHit h = oracle::segment_triangle({{1, 1, 3}, {1, 1, -1}}, {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}});
+  CHECK(h.hit);
+  CHECK(h.t == 0.75);
+  CHECK(h.point == Vec3(1, 1, 0));
+}
+
+TEST_CASE("Expect words a mismatch field by field", "[kit]") {
+  check::Expect e;
+  e.near("t", 0.5, 0.75, 1e-12);
+  e.equal("hit", true, true);
+  const check::Outcome o = e.outcome();
+  CHECK(o.verdict == check::Outcome::Verdict::fail);
+  CHECK_THAT(o.why, Catch::Contains("t is off by 0.25"));
+  CHECK_THAT(o.expected, Catch::Contains("t = 0.75"));
+  CHECK_THAT(o.got, Catch::Contains("t = 0.5"));
+}

@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# ./labkit check as students meet it, run against the kit's own build.
+#   runner.test.sh RUNNER ROOT
+set -uo pipefail
+runner="$1"
+root="$2"
+cases=200
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+
+steps=$(grep -c '"step":' "$root/grading/manifest.json")
+
+echo "--- 1. the stubs: every step 'not implemented yet', nothing crashes, exit 1"
+out=$("$runner" check --cases $cases 2>&1); code=$?
+echo "$out"
+[ $code -eq 1 ] || fail "check on the stubs exits $code, not 1"
+grep -qE "crashed|timed out|does not compile|too much output|kit error" <<<"$out" && fail "a stub step did not say 'not implemented yet'"
+n=$(grep -c "not implemented yet" <<<"$out")
+[ "$n" -eq "$steps" ] || fail "$n steps say 'not implemented yet'; the manifest has $steps"
+
+echo "--- 2. the reference: every step passes, exit 0"
+out=$("$runner" check --cases $cases --implementation reference 2>&1); code=$?
+echo "$out"
+[ $code -eq 0 ] || fail "check on the reference exits $code"
+n=$(grep -c " passed " <<<"$out")
+[ "$n" -eq "$steps" ] || fail "$n steps pass on the reference; the manifest has $steps"
+
+echo "--- 3. a classic mistake: the report names the case, and its replay fails again"
+out=$("$runner" check 02 --step 3 --cases 500 --implementation mutant_beta_sign 2>&1); code=$?
+echo "$out"
+[ $code -eq 1 ] || fail "the beta-sign mutant passes step 3"
+for field in "query " "input " "expected " "got " "why " "replay "; do
+  grep -q "  $field" <<<"$out" || fail "the failure report has no '$field' line"
+done
+token=$(grep -o -- "--case '[^']*'" <<<"$out" | head -n 1 | sed "s/^--case '//; s/'\$//")
+if [ -z "$token" ]; then
+  fail "no replay command in the failure report"
+else
+  out=$("$runner" check 02 --case "$token" --implementation mutant_beta_sign 2>&1); code=$?
+  echo "$out"
+  [ $code -eq 1 ] && grep -q "fails" <<<"$out" || fail "replaying the case on the mutant does not fail again"
+  out=$("$runner" check 02 --case "$token" --implementation reference 2>&1); code=$?
+  echo "$out"
+  [ $code -eq 0 ] && grep -q "passes" <<<"$out" || fail "replaying the case on the reference does not pass"
+fi
+
+echo "--- 4. bad input: one clear line, exit 2, never a crash"
+for args in "check 99" "check 02 --case nonsense" "check 02 --case no_such_query:1,2,3" "check 02 --case segment_plane:1,2,3" "check 02 --step 42"; do
+  out=$("$runner" $args 2>&1); code=$?
+  echo "\$ labkit $args -> exit $code: $out"
+  [ $code -eq 2 ] || fail "'$args' exits $code, not 2"
+  [ "$(wc -l <<<"$out")" -le 2 ] || fail "'$args' says more than one line"
+done
+
+[ $failures -eq 0 ] && echo "all runner checks passed"
+exit $((failures > 0))
