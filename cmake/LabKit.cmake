@@ -44,12 +44,15 @@ function(labkit_add_lab number name)
     labkit_add_test_binary(${number} ${name} ${impl} ${lab}_${impl})
   endforeach()
 
-  # ctest: one test per step of the reference.
+  # ctest: one test per step of the reference. Each leaves its harness report in
+  # build/reports/, which `labkit-runner report` sums up after the suite.
   if(TARGET ${lab}_reference)
     labkit_manifest_steps(${number} steps)
+    file(MAKE_DIRECTORY "${PROJECT_BINARY_DIR}/reports")
     foreach(step IN LISTS steps)
       add_test(NAME ${lab}.step${step} COMMAND test_${stem}_reference "[${lab}][step${step}]")
-      set_tests_properties(${lab}.step${step} PROPERTIES LABELS "reference;${lab}")
+      set_tests_properties(${lab}.step${step} PROPERTIES LABELS "reference;${lab}"
+        ENVIRONMENT "LABKIT_REPORT=${PROJECT_BINARY_DIR}/reports/${lab}.step${step}.json")
     endforeach()
   endif()
 

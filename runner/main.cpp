@@ -1,6 +1,7 @@
 // labkit-runner: the commands behind ./labkit. Run it through ./labkit, which installs
 // what is missing, configures and builds first.
 #include "check.h"
+#include "report.h"
 
 #include <CLI/CLI.hpp>
 
@@ -33,6 +34,10 @@ int main(int argc, char** argv) {
           },
           "IMPLEMENTATION"));
 
+  std::string reports;
+  CLI::App* report_command = app.add_subcommand("report", "Sum up the case counts a suite run left behind");
+  report_command->add_option("directory", reports, "Where the reports are (default: build/reports)");
+
   CLI11_PARSE(app, argc, argv);
   try {
     if (check_command->parsed()) {
@@ -40,6 +45,7 @@ int main(int argc, char** argv) {
       if (const char* s = std::getenv("LABKIT_SEED"); s && check.seed.empty()) check.seed = s;
       return runner::check(paths, check);
     }
+    if (report_command->parsed()) return runner::report(reports.empty() ? paths.build + "/reports" : reports);
   } catch (const std::exception& e) {
     std::cerr << "labkit: " << e.what() << "\n";
     return 2;

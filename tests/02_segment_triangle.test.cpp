@@ -3,6 +3,8 @@
 #include "02_segment_triangle.judge.h"
 #include "segment_triangle.h"
 
+#include <cmath>
+
 using namespace labkit;
 using namespace labkit::lab02;
 using check::Expect;
@@ -193,6 +195,18 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
   check::example("find_segment_triangle", "crosses the plane beside the triangle", pair({3, 3, 1}, {3, 3, -1}), miss);
   check::example("find_segment_triangle", "parallel, above", pair({1, 1, 1}, {2, 1, 1}), miss);
   check::example("find_segment_triangle", "stops short of the plane", pair({1, 1, 3}, {1, 1, 1}), miss);
+  // The floor triangle shrunk by 2^-20: its normal is about 1e-11 long, and still not zero.
+  const double tiny = std::ldexp(1.0, -20);
+  check::example("find_segment_triangle", "a triangle a millionth the size",
+                 pair(Vec3(1, 1, 3) * tiny, Vec3(1, 1, -1) * tiny, {{0, 0, 0}, Vec3(4 * tiny, 0, 0), Vec3(0, 4 * tiny, 0)}),
+                 [tiny](const SegmentTrianglePair& in) {
+                   const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
+                   Expect e;
+                   e.equal("hit", got.hit, true);
+                   e.near("t", got.t, 0.75, 1e-12);
+                   e.near("point", got.point, Vec3(tiny, tiny, 0), 1e-18);
+                   return e.outcome();
+                 });
   check::example("test_segment_triangle", "through the inside", pair({1, 1, 3}, {1, 1, -1}), [](const SegmentTrianglePair& in) {
     Expect e;
     e.equal("test", test_segment_triangle(in.segment, in.triangle), true);
@@ -326,6 +340,9 @@ TEST_CASE("L02S7 robustness: touching, edges, vertices, coplanar, zero size", "[
   check::example(q, "through vertex v0 at t = 1/3", pair({0, 0, 1}, {0, 0, -2}, kSmall), expect_hit(1.0 / 3));
   check::example(q, "through the edge v0 v1 at t = 1/3", pair({1, 0, 1}, {1, 0, -2}, kSmall), expect_hit(1.0 / 3));
   check::example(q, "through the long edge at t = 1/3", pair({1, 2, 1}, {1, 2, -2}, kSmall), expect_hit(1.0 / 3));
+  // Slanted: the crossing point (4/3, 5/3, 0) is not a double, so a test on the rounded
+  // point may land outside the edge; a test on signs of input products cannot.
+  check::example(q, "slanted through the long edge at t = 1/3", pair({2, 2, 1}, {0, 1, -2}, kSmall), expect_hit(1.0 / 3));
   check::example(q, "in the plane, entering at t = 1/6", pair({-1, 1, 0}, {5, 1, 0}, kSmall), expect_hit(1.0 / 6));
   check::example(q, "in the plane, starting inside", pair({1, 1, 0}, {5, 1, 0}, kSmall), expect_hit(0));
   check::example(q, "in the plane, touching only v1", pair({3, -1, 0}, {3, 1, 0}, kSmall), expect_hit(0.5));

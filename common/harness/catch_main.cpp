@@ -2,6 +2,8 @@
 // Catch's own signal handlers are off: ours (report.h) name the input a crash died on.
 #define CATCH_CONFIG_RUNNER
 #define CATCH_CONFIG_NO_POSIX_SIGNALS
+// Wide enough that a replay token is never wrapped (it must be copied in one piece).
+#define CATCH_CONFIG_CONSOLE_WIDTH 100000
 #include <catch2/catch.hpp>
 
 #include "common/harness/report.h"

@@ -55,7 +55,9 @@ PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle);
 // ---- Step 2 (L02S2): point in triangle by edge tests -------------------------------
 
 // For a point in the triangle's plane: is it inside the closed triangle? Use the three
-// edge tests (x - v_i) . ((v_{i+1} - v_i) x n). False for a zero-area triangle.
+// edge tests: x is inside when (x - v_i) . (n x (v_{i+1} - v_i)) >= 0 for i = 0, 1, 2
+// (n x (v_{i+1} - v_i) lies in the plane and points into the triangle). False for a
+// zero-area triangle.
 bool point_in_triangle_edges(const Vec3& x, const Triangle& triangle);
 
 // ---- Step 3 (L02S3): barycentric coordinates in the dropped-axis plane -------------
