@@ -195,8 +195,9 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
   check::example("find_segment_triangle", "crosses the plane beside the triangle", pair({3, 3, 1}, {3, 3, -1}), miss);
   check::example("find_segment_triangle", "parallel, above", pair({1, 1, 1}, {2, 1, 1}), miss);
   check::example("find_segment_triangle", "stops short of the plane", pair({1, 1, 3}, {1, 1, 1}), miss);
-  // The floor triangle shrunk by 2^-20: its normal is about 1e-11 long, and still not zero.
-  const double tiny = std::ldexp(1.0, -20);
+  // The floor triangle shrunk by 2^-22 (legs of 9.5e-7): its normal is 9.1e-13 long, below
+  // the 1e-12 of Eigen's fuzzy isZero(), and still not zero.
+  const double tiny = std::ldexp(1.0, -22);
   check::example("find_segment_triangle", "a triangle a millionth the size",
                  pair(Vec3(1, 1, 3) * tiny, Vec3(1, 1, -1) * tiny, {{0, 0, 0}, Vec3(4 * tiny, 0, 0), Vec3(0, 4 * tiny, 0)}),
                  [tiny](const SegmentTrianglePair& in) {
