@@ -71,6 +71,58 @@ struct Mesh {
   }
 };
 
+// ---- Shapes shared by the later labs (03 separating axes, 04 bisection, 05 sphere
+// sweeps, 06 trees, 07 particles). Lab-specific types live in the lab's own header.
+
+// The closed ball of points within `radius` of `center`.
+struct Sphere {
+  Vec3 center = Vec3::Zero();
+  double radius = 0.0;
+};
+
+// A sphere swept along a segment: points within `radius` of `axis`.
+struct Capsule {
+  Segment axis;
+  double radius = 0.0;
+};
+
+// The closed rectangle center + s u + t v, |s| <= half_u, |t| <= half_v, with u and v
+// unit length and perpendicular (Eberly's center, axes and extents).
+struct Rectangle {
+  Vec3 center = Vec3::Zero();
+  Vec3 u = Vec3::UnitX();
+  Vec3 v = Vec3::UnitY();
+  double half_u = 0.0;
+  double half_v = 0.0;
+};
+
+// A sphere swept over a rectangle: points within `radius` of it.
+struct Lozenge {
+  Rectangle rectangle;
+  double radius = 0.0;
+};
+
+// An oriented box: center + sum_i s_i axes.col(i), |s_i| <= half_extents[i]. The columns
+// of `axes` are meant to be orthonormal; the oracle reads the box as the exact
+// parallelepiped its numbers describe.
+struct Box {
+  Vec3 center = Vec3::Zero();
+  Mat3 axes = Mat3::Identity();
+  Vec3 half_extents = Vec3::Zero();
+
+  Vec3 corner(int i) const {  // corner i: bit k of i picks the sign along axis k
+    Vec3 p = center;
+    for (int k = 0; k < 3; ++k) p += ((i >> k) & 1 ? 1.0 : -1.0) * half_extents[k] * axes.col(k);
+    return p;
+  }
+};
+
+// An axis-aligned box [min, max].
+struct Aabb {
+  Vec3 min = Vec3::Zero();
+  Vec3 max = Vec3::Zero();
+};
+
 // The largest absolute coordinate among the given points: the length scale S that
 // every tolerance in the kit is relative to.
 double scale_of(std::initializer_list<Vec3> points);

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <thread>
@@ -157,8 +158,10 @@ int check(const Paths& paths, const CheckOptions& options) {
     }
     labs.push_back(lab);
   }
+  // All labs: those the kit has (the manifest may list labs still being written).
   if (labs.empty())
-    for (const Lab& l : manifest.labs) labs.push_back(&l);
+    for (const Lab& l : manifest.labs)
+      if (std::filesystem::is_directory(paths.source + "/labs/" + l.stem())) labs.push_back(&l);
   if (!options.replay.empty() && labs.size() != 1) {
     std::cerr << "labkit check: --case replays one lab's case; name the lab, e.g. ./labkit check 02 --case '...'\n";
     return 2;

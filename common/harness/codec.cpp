@@ -87,6 +87,39 @@ void decode(Reader& r, Mat4& m) {
     for (int j = 0; j < 4; ++j) m(i, j) = r.real();
 }
 
+void encode(Writer& w, const Mat3& m) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) w.unit(m(i, j));
+}
+void decode(Reader& r, Mat3& m) {
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) m(i, j) = r.real();
+}
+void encode(Writer& w, const Sphere& s) { encode(w, s.center); w.real(s.radius); }
+void decode(Reader& r, Sphere& s) { decode(r, s.center); s.radius = r.real(); }
+void encode(Writer& w, const Capsule& c) { encode(w, c.axis); w.real(c.radius); }
+void decode(Reader& r, Capsule& c) { decode(r, c.axis); c.radius = r.real(); }
+void encode(Writer& w, const Rectangle& rect) {
+  encode(w, rect.center);
+  for (int i = 0; i < 3; ++i) w.unit(rect.u[i]);
+  for (int i = 0; i < 3; ++i) w.unit(rect.v[i]);
+  w.real(rect.half_u);
+  w.real(rect.half_v);
+}
+void decode(Reader& r, Rectangle& rect) {
+  decode(r, rect.center);
+  decode(r, rect.u);
+  decode(r, rect.v);
+  rect.half_u = r.real();
+  rect.half_v = r.real();
+}
+void encode(Writer& w, const Lozenge& l) { encode(w, l.rectangle); w.real(l.radius); }
+void decode(Reader& r, Lozenge& l) { decode(r, l.rectangle); l.radius = r.real(); }
+void encode(Writer& w, const Box& b) { encode(w, b.center); encode(w, b.axes); encode(w, b.half_extents); }
+void decode(Reader& r, Box& b) { decode(r, b.center); decode(r, b.axes); decode(r, b.half_extents); }
+void encode(Writer& w, const Aabb& b) { encode(w, b.min); encode(w, b.max); }
+void decode(Reader& r, Aabb& b) { decode(r, b.min); decode(r, b.max); }
+
 }  // namespace codec
 
 std::string describe(double x) { return fmt(x); }
@@ -132,6 +165,26 @@ std::string describe(const Mat4& m) {
   }
   return s + "]";
 }
+
+std::string describe(const Mat3& m) {
+  std::string s = "[";
+  for (int i = 0; i < 3; ++i) {
+    s += i ? "; " : "";
+    for (int j = 0; j < 3; ++j) s += (j ? " " : "") + fmt(m(i, j));
+  }
+  return s + "]";
+}
+std::string describe(const Sphere& s) { return "center=" + fmt(s.center) + " radius=" + fmt(s.radius); }
+std::string describe(const Capsule& c) { return describe(c.axis) + " radius=" + fmt(c.radius); }
+std::string describe(const Rectangle& r) {
+  return "center=" + fmt(r.center) + " u=" + fmt(r.u) + " v=" + fmt(r.v) + " half_u=" + fmt(r.half_u) +
+         " half_v=" + fmt(r.half_v);
+}
+std::string describe(const Lozenge& l) { return describe(l.rectangle) + " radius=" + fmt(l.radius); }
+std::string describe(const Box& b) {
+  return "center=" + fmt(b.center) + " axes=" + describe(b.axes) + " half_extents=" + fmt(b.half_extents);
+}
+std::string describe(const Aabb& b) { return "min=" + fmt(b.min) + " max=" + fmt(b.max); }
 
 ParsedToken parse_token(const std::string& token) {
   const auto colon = token.find(':');

@@ -114,6 +114,20 @@ void encode(Writer& w, const RigidTransform& m);
 void decode(Reader& r, RigidTransform& m);
 void encode(Writer& w, const Mat4& m);
 void decode(Reader& r, Mat4& m);
+void encode(Writer& w, const Mat3& m);  // unit-free entries (rotations)
+void decode(Reader& r, Mat3& m);
+void encode(Writer& w, const Sphere& s);
+void decode(Reader& r, Sphere& s);
+void encode(Writer& w, const Capsule& c);
+void decode(Reader& r, Capsule& c);
+void encode(Writer& w, const Rectangle& r);
+void decode(Reader& r, Rectangle& rect);
+void encode(Writer& w, const Lozenge& l);
+void decode(Reader& r, Lozenge& l);
+void encode(Writer& w, const Box& b);
+void decode(Reader& r, Box& b);
+void encode(Writer& w, const Aabb& b);
+void decode(Reader& r, Aabb& b);
 
 template <class T, std::size_t N>
 void encode(Writer& w, const std::array<T, N>& xs) {
@@ -162,6 +176,13 @@ std::string describe(const Frustum& f);
 std::string describe(const Mesh& m);
 std::string describe(const RigidTransform& m);
 std::string describe(const Mat4& m);
+std::string describe(const Mat3& m);
+std::string describe(const Sphere& s);
+std::string describe(const Capsule& c);
+std::string describe(const Rectangle& r);
+std::string describe(const Lozenge& l);
+std::string describe(const Box& b);
+std::string describe(const Aabb& b);
 
 template <class T, std::size_t N>
 std::string describe(const std::array<T, N>& xs) {
