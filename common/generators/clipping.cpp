@@ -1,0 +1,594 @@
+#include "common/generators/clipping.h"
+#include "common/generators/generators.h"
+
+#include <cmath>
+
+namespace labkit {
+
+namespace {
+
+using Long3 = Eigen::Matrix<long double, 3, 1>;
+
+Long3 widen(const Vec3& v) { return v.cast<long double>(); }
+Vec3 narrow(const Long3& v) { return v.cast<double>(); }
+
+struct LongFrustum {
+  std::array<Long3, 8> corners;
+  Long3 eye, forward;
+};
+
+LongFrustum long_frustum(const CameraParameters& c) {
+  LongFrustum out;
+  const Long3 f = widen(c.forward).normalized();
+  const Long3 r = f.cross(widen(c.up)).normalized();
+  const Long3 u = r.cross(f);
+  const long double ty = std::tan(static_cast<long double>(c.fov_y) / 2);
+  const long double tx = static_cast<long double>(c.aspect) * ty;
+  out.eye = widen(c.eye);
+  out.forward = f;
+  for (int i = 0; i < 8; ++i) {
+    const long double d = (i & 4) ? c.far : c.near;
+    const long double sx = (i & 1) ? 1 : -1, sy = (i & 2) ? 1 : -1;
+    out.corners[std::size_t(i)] = out.eye + d * (f + sx * tx * r + sy * ty * u);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::array<Vec3, 8> frustum_corners(const CameraParameters& camera) {
+  const LongFrustum lf = long_frustum(camera);
+  std::array<Vec3, 8> out;
+  for (int i = 0; i < 8; ++i) out[std::size_t(i)] = narrow(lf.corners[std::size_t(i)]);
+  return out;
+}
+
+Frustum frustum_of(const CameraParameters& camera) {
+  const LongFrustum lf = long_frustum(camera);
+  const auto& k = lf.corners;
+  const Long3 center = lf.eye + lf.forward * ((static_cast<long double>(camera.near) + camera.far) / 2);
+  // Three points of each plane: the eye and two far corners for the sides.
+  const std::array<std::array<Long3, 3>, 6> points = {{
+      {lf.eye, k[4], k[6]},  // left
+      {lf.eye, k[5], k[7]},  // right
+      {lf.eye, k[4], k[5]},  // bottom
+      {lf.eye, k[6], k[7]},  // top
+      {k[0], k[1], k[2]},    // near
+      {k[4], k[5], k[6]},    // far
+  }};
+  Frustum f;
+  for (std::size_t i = 0; i < 6; ++i) {
+    const auto& p = points[i];
+    Long3 n = (p[1] - p[0]).cross(p[2] - p[0]).normalized();
+    if (n.dot(center - p[0]) < 0) n = -n;
+    f.planes[i] = Plane{narrow(n), static_cast<double>(-n.dot(p[0]))};
+  }
+  return f;
+}
+
+namespace {
+
+// gluLookAt(eye, eye + forward, up).
+Mat4 view_matrix(const CameraParameters& c) {
+  const Vec3 f = c.forward.normalized();
+  const Vec3 s = f.cross(c.up).normalized();
+  const Vec3 u = s.cross(f);
+  Mat4 view = Mat4::Identity();
+  view.row(0) << s.transpose(), -s.dot(c.eye);
+  view.row(1) << u.transpose(), -u.dot(c.eye);
+  view.row(2) << -f.transpose(), f.dot(c.eye);
+  return view;
+}
+
+}  // namespace
+
+Mat4 view_projection(const CameraParameters& c) {
+  const double cot = 1.0 / std::tan(c.fov_y / 2);
+  Mat4 projection = Mat4::Zero();
+  projection(0, 0) = cot / c.aspect;
+  projection(1, 1) = cot;
+  projection(2, 2) = (c.far + c.near) / (c.near - c.far);
+  projection(2, 3) = 2 * c.far * c.near / (c.near - c.far);
+  projection(3, 2) = -1;
+  return projection * view_matrix(c);
+}
+
+}  // namespace labkit
+
+namespace labkit::gen {
+
+namespace {
+
+// ---- One plane ---------------------------------------------------------------------
+// A plane with an integer normal n through a lattice point o, and two lattice vectors
+// u, w spanning it: every o + i u + j w with dyadic i, j lies exactly on it, and
+// o + i u + j w + h n is h |n|^2 away in value.
+struct PlaneFrame {
+  Plane plane;
+  Vec3 origin, u, w, n;
+};
+
+rc::Gen<PlaneFrame> plane_frame(double s, bool exact) {
+  return rc::gen::exec([s, exact] {
+    const Vec3 n = *direction(1, exact ? 2 : 8);
+    const Vec3 a = *rc::gen::suchThat(direction(1, exact ? 2 : 4), [n](const Vec3& v) { return n.cross(v) != Vec3::Zero(); });
+    const Vec3 u = n.cross(a), w = n.cross(u);
+    const Vec3 origin = exact ? *lattice_point(8 * s, 16) : *point(s);
+    return PlaneFrame{Plane{n, -n.dot(origin)}, origin, u * s, w * s, n * s};
+  });
+}
+
+// A coefficient: small integers for exact input, integers plus a 20-bit fraction else.
+rc::Gen<double> coefficient(bool exact, int magnitude) {
+  if (exact) return rc::gen::map(integer(magnitude), [](int k) { return double(k); });
+  return rc::gen::exec([magnitude] {
+    return *integer(magnitude) + std::ldexp(double(*rc::gen::inRange(0, 1 << 20)), -20);
+  });
+}
+
+// How far each vertex sits off the plane, in units of |n|^2 s: exactly 0 for the
+// degenerate families, a tiny amount for their near-degenerate twins.
+enum class Heights { generic, one_on, two_on, all_on, touch_vertex, touch_edge };
+
+rc::Gen<TrianglePlane> plane_case(bool exact, Heights kind, bool nudge) {
+  return rc::gen::exec([=] {
+    const double s = *scale();
+    const PlaneFrame f = *plane_frame(s, exact);
+    const auto off = [&] { return double(*rc::gen::suchThat(integer(8), [](int k) { return k != 0; })); };
+    const double side = *rc::gen::element(-1.0, 1.0);
+    std::array<double, 3> h{};
+    switch (kind) {
+      case Heights::generic: h = {*coefficient(exact, 4), *coefficient(exact, 4), *coefficient(exact, 4)}; break;
+      case Heights::one_on: h = {0, off(), off()}; break;
+      case Heights::two_on: h = {0, 0, off()}; break;
+      case Heights::all_on: h = {0, 0, 0}; break;
+      case Heights::touch_vertex: h = {0, side * std::abs(off()), side * std::abs(off())}; break;
+      case Heights::touch_edge: h = {0, 0, side * std::abs(off())}; break;
+    }
+    if (nudge)
+      for (double& x : h)
+        if (x == 0) x = *integer(4) * *tiny(20, 50) * 16;
+    Triangle t;
+    for (int i = 0; i < 3; ++i)
+      t[i] = f.origin + *coefficient(exact, 3) * f.u + *coefficient(exact, 3) * f.w + h[std::size_t(i)] * f.n;
+    // Which vertex is special, and both windings.
+    const int turn = *rc::gen::inRange(0, 3);
+    Triangle r{t[turn], t[(turn + 1) % 3], t[(turn + 2) % 3]};
+    if (*rc::gen::element(false, true)) std::swap(r.v1, r.v2);
+    return TrianglePlane{r, f.plane};
+  });
+}
+
+// The same plane with a rounded unit normal: vertices "on" it are only near it.
+TrianglePlane unit_normal(TrianglePlane c) {
+  const double length = c.plane.normal.norm();
+  c.plane.normal /= length;
+  c.plane.offset /= length;
+  return c;
+}
+
+// Moved far from the origin, the plane with it (exactly: its normal is an integer one).
+rc::Gen<TrianglePlane> far_away(rc::Gen<TrianglePlane> base) {
+  return rc::gen::exec([base] {
+    TrianglePlane c = *base;
+    const double size = std::max(1.0, scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2}));
+    const Vec3 offset = *lattice_point(size * 1024.0, 64);
+    for (int i = 0; i < 3; ++i) c.triangle[i] += offset;
+    c.plane.offset -= c.plane.normal.dot(offset);
+    return c;
+  });
+}
+
+rc::Gen<TrianglePlane> zero_area_plane_case() {
+  return rc::gen::exec([] {
+    TrianglePlane c = *plane_case(false, Heights::generic, false);
+    c.triangle.v2 = c.triangle.v0 + (*rc::gen::inRange(-8, 17) / 8.0) * (c.triangle.v1 - c.triangle.v0);
+    return c;
+  });
+}
+
+// Exact degenerate families; random input mixes in more generic triangles.
+rc::Gen<TrianglePlane> plane_families(bool exact) {
+  return rc::gen::weightedOneOf<TrianglePlane>({
+      {exact ? 1 : 8, plane_case(exact, Heights::generic, false)},
+      {2, plane_case(exact, Heights::one_on, false)},
+      {2, plane_case(exact, Heights::two_on, false)},
+      {1, plane_case(exact, Heights::all_on, false)},
+      {1, plane_case(exact, Heights::touch_vertex, false)},
+      {1, plane_case(exact, Heights::touch_edge, false)},
+  });
+}
+
+// ---- Frustums -------------------------------------------------------------------------
+// An exact frustum in its own frame: X right, Y up, Z forward (depth), all integers
+// times a power of two. At depth Z its half-width is wx + tx Z and its half-height
+// wy + ty Z (tx = px / qx, ty = py / qy): a box when tx = ty = 0, a pyramid from the
+// eye when wx = wy = 0. The frame's axes are signed world axes, so world points and
+// planes stay integers.
+struct ExactFrustum {
+  Vec3 eye, right, up, forward;
+  double px, qx, py, qy, wx, wy;  // integers
+  double near, far;
+  double s;                      // the lattice unit
+
+  Vec3 world(double x, double y, double z) const { return eye + x * right + y * up + z * forward; }
+  double half_width(double z) const { return wx + px / qx * z; }
+  double half_height(double z) const { return wy + py / qy * z; }
+  // Plane i (left, right, bottom, top, near, far) as a local normal and offset.
+  Plane local_plane(int i) const {
+    switch (i) {
+      case 0: return {Vec3(qx, 0, px), qx * wx};   // qx (X + wx) + px Z >= 0
+      case 1: return {Vec3(-qx, 0, px), qx * wx};
+      case 2: return {Vec3(0, qy, py), qy * wy};
+      case 3: return {Vec3(0, -qy, py), qy * wy};
+      case 4: return {Vec3(0, 0, 1), -near};
+      default: return {Vec3(0, 0, -1), far};
+    }
+  }
+  Plane plane(int i) const {
+    const Plane p = local_plane(i);
+    const Vec3 n = p.normal.x() * right + p.normal.y() * up + p.normal.z() * forward;
+    return {n, p.offset - n.dot(eye)};
+  }
+  Frustum frustum() const {
+    Frustum f;
+    for (int i = 0; i < 6; ++i) f.planes[std::size_t(i)] = plane(i);
+    return f;
+  }
+};
+
+rc::Gen<ExactFrustum> exact_frustum() {
+  return rc::gen::exec([] {
+    ExactFrustum f;
+    f.s = *scale();
+    const int axis = *rc::gen::inRange(0, 3);
+    const double sign_f = *rc::gen::element(-1.0, 1.0), sign_r = *rc::gen::element(-1.0, 1.0);
+    f.forward = sign_f * Vec3::Unit(axis);
+    f.right = sign_r * Vec3::Unit((axis + 1 + *rc::gen::inRange(0, 2)) % 3);
+    f.up = f.right.cross(f.forward);
+    f.eye = *lattice_point(8 * f.s, 8);
+    const bool box = *rc::gen::inRange(0, 3) == 0;
+    f.px = box ? 0 : *rc::gen::inRange(1, 3);
+    f.qx = box ? 1 : *rc::gen::inRange(1, 3);
+    f.py = box ? 0 : *rc::gen::inRange(1, 3);
+    f.qy = box ? 1 : *rc::gen::inRange(1, 3);
+    f.wx = box ? 8 * f.s * *rc::gen::inRange(1, 5) : 0;
+    f.wy = box ? 8 * f.s * *rc::gen::inRange(1, 5) : 0;
+    f.near = 8 * f.s * *rc::gen::inRange(box ? -4 : 1, 3);
+    f.far = f.near + 8 * f.s * *rc::gen::inRange(1, 5);
+    return f;
+  });
+}
+
+// A point exactly on some feature of an exact frustum: a corner, an edge line, or a face
+// plane (inside the face or beyond it). Depths are multiples of 8 s and the widths'
+// slopes have denominators 1 or 2, so every coordinate stays an integer times s.
+enum class Feature { corner, edge, face };
+
+struct FeaturePoint {
+  Vec3 point;
+  std::array<int, 2> planes;      // the planes it lies on (-1: none)
+  Vec3 along = Vec3::Zero();      // on an edge line: a lattice step along it
+};
+
+FeaturePoint feature_point(const ExactFrustum& f, Feature kind, bool side_edge = false) {
+  const double unit = 8 * f.s;
+  const int steps = int((f.far - f.near) / unit);
+  const auto depth = [&] { return f.near + unit * *rc::gen::inRange(-1, steps + 2); };
+  const auto across = [&](double half) {
+    const int reach = int(1.5 * std::abs(half) / f.s) + 1;
+    return f.s * *rc::gen::inRange(-reach, reach + 1);
+  };
+  const double sx = *rc::gen::element(-1.0, 1.0), sy = *rc::gen::element(-1.0, 1.0);
+  const int side_x = sx < 0 ? 0 : 1, side_y = sy < 0 ? 2 : 3;
+  if (kind == Feature::corner) {
+    const bool far = *rc::gen::element(false, true);
+    const double z = far ? f.far : f.near;
+    return {f.world(sx * f.half_width(z), sy * f.half_height(z), z), {side_x, far ? 5 : 4}};
+  }
+  const int which = side_edge ? 0 : *rc::gen::inRange(0, 3);
+  if (kind == Feature::edge) {
+    if (which == 0) {  // a side edge: two side planes meet along it
+      const double z = depth();
+      const Vec3 along = f.s * (sx * f.px * f.qy * f.right + sy * f.py * f.qx * f.up + f.qx * f.qy * f.forward);
+      return {f.world(sx * f.half_width(z), sy * f.half_height(z), z), {side_x, side_y}, along};
+    }
+    const bool far = which == 2;
+    const double z = far ? f.far : f.near;
+    if (*rc::gen::element(false, true))
+      return {f.world(sx * f.half_width(z), across(f.half_height(z)), z), {side_x, far ? 5 : 4}, f.s * f.up};
+    return {f.world(across(f.half_width(z)), sy * f.half_height(z), z), {side_y, far ? 5 : 4}, f.s * f.right};
+  }
+  if (which == 0) {
+    const double z = depth();
+    return {f.world(sx * f.half_width(z), across(f.half_height(z)), z), {side_x, -1}};
+  }
+  if (which == 1) {
+    const double z = depth();
+    return {f.world(across(f.half_width(z)), sy * f.half_height(z), z), {side_y, -1}};
+  }
+  const bool far = *rc::gen::element(false, true);
+  const double z = far ? f.far : f.near;
+  return {f.world(across(f.half_width(z)), across(f.half_height(z)), z), {far ? 5 : 4, -1}};
+}
+
+// Any lattice point in a box somewhat larger than the frustum.
+Vec3 around(const ExactFrustum& f) {
+  const double z = f.near + 8 * f.s * *rc::gen::inRange(-2, int((f.far - f.near) / (8 * f.s)) + 3);
+  const double hw = f.half_width(std::max(std::abs(f.near), std::abs(f.far))) + 8 * f.s;
+  const double hh = f.half_height(std::max(std::abs(f.near), std::abs(f.far))) + 8 * f.s;
+  const auto coordinate = [&](double half) { return f.s * *rc::gen::inRange(-int(half / f.s), int(half / f.s) + 1); };
+  return f.world(coordinate(hw), coordinate(hh), z);
+}
+
+// A lattice vector that points strictly out of both planes a and b (b may be -1).
+Vec3 outward(const ExactFrustum& f, int a, int b) {
+  const Vec3 na = f.plane(a).normal, nb = b < 0 ? Vec3::Zero() : f.plane(b).normal;
+  for (const Vec3& d : {Vec3(-na - nb), Vec3(-2 * na - nb), Vec3(-na - 2 * nb), Vec3(-na)})
+    if (d.dot(na) < 0 && (b < 0 || d.dot(nb) < 0)) return d * *rc::gen::inRange(1, 4);
+  return -na;
+}
+
+// A lattice vector along both planes a and b (along a alone when b is -1): moving by it
+// changes neither value.
+Vec3 sideways(const ExactFrustum& f, int a, int b) {
+  const Vec3 na = f.plane(a).normal;
+  const Vec3 other = b < 0 ? *rc::gen::suchThat(direction(1, 2), [na](const Vec3& d) { return na.cross(d) != Vec3::Zero(); })
+                           : f.plane(b).normal;
+  return na.cross(other) * (f.s * *rc::gen::inRange(1, 3));
+}
+
+Triangle wound(Triangle t) {
+  if (*rc::gen::element(false, true)) std::swap(t.v1, t.v2);
+  const int turn = *rc::gen::inRange(0, 3);
+  return {t[turn], t[(turn + 1) % 3], t[(turn + 2) % 3]};
+}
+
+rc::Gen<TriangleFrustum> exact_case() {
+  return rc::gen::exec([] {
+    const ExactFrustum f = *exact_frustum();
+    const auto feature = [&] { return feature_point(f, *rc::gen::element(Feature::corner, Feature::edge, Feature::face)); };
+    Triangle t;
+    switch (*rc::gen::inRange(0, 11)) {
+      case 0: {  // a vertex on a feature, the others anywhere around
+        t = {feature().point, around(f), around(f)};
+        break;
+      }
+      case 1: {  // an edge in a face plane, the third vertex anywhere
+        const FeaturePoint p = feature_point(f, Feature::face);
+        FeaturePoint q = feature_point(f, Feature::face);
+        for (int tries = 0; tries < 8 && q.planes[0] != p.planes[0]; ++tries) q = feature_point(f, Feature::face);
+        if (q.planes[0] != p.planes[0]) q = p;
+        t = {p.point, q.point, around(f)};
+        break;
+      }
+      case 2: {  // lying in a face plane
+        const FeaturePoint p = feature_point(f, Feature::face);
+        std::array<Vec3, 3> v{p.point, p.point, p.point};
+        for (int i = 1; i < 3; ++i)
+          for (int tries = 0; tries < 16; ++tries) {
+            const FeaturePoint q = feature_point(f, Feature::face);
+            if (q.planes[0] == p.planes[0]) {
+              v[std::size_t(i)] = q.point;
+              break;
+            }
+          }
+        t = {v[0], v[1], v[2]};
+        break;
+      }
+      case 3: {  // touching a face, an edge or a corner from outside at one vertex
+        const FeaturePoint p = feature();
+        const Vec3 out = outward(f, p.planes[0], p.planes[1]) * f.s;
+        t = {p.point, p.point + out, p.point + 2 * out + sideways(f, p.planes[0], p.planes[1])};
+        break;
+      }
+      case 4: {  // an edge through an edge line (or a corner) of the frustum
+        const FeaturePoint p = feature_point(f, *rc::gen::element(Feature::corner, Feature::edge));
+        const Vec3 d = *direction(8 * f.s, 4);
+        t = {p.point + d, p.point - *rc::gen::inRange(1, 4) * d, around(f)};
+        break;
+      }
+      case 5: {  // touching along an edge line from outside
+        const FeaturePoint p = feature_point(f, Feature::edge);
+        FeaturePoint q = p;
+        for (int tries = 0; tries < 8 && (q.point == p.point || q.planes != p.planes); ++tries) q = feature_point(f, Feature::edge);
+        t = {p.point, q.point, p.point + outward(f, p.planes[0], p.planes[1]) * f.s};
+        break;
+      }
+      case 6: {  // a zero-area triangle through a feature
+        const Vec3 a = feature().point, b = around(f);
+        t = {a, b, a + *rc::gen::inRange(-2, 3) * (b - a)};
+        break;
+      }
+      case 7: {  // an edge through a side edge line a third of the way along: a cut point
+                 // that no double can hold, exactly on a second plane (for a pyramid)
+        const FeaturePoint p = feature_point(f, Feature::edge, true);
+        const Vec3 v0 = around(f);
+        const double m = *rc::gen::element(1.0, 2.0, 4.0, 5.0);
+        t = {v0, 3 * p.point + m * p.along - 2 * v0, around(f)};  // crosses p + m/3 along at t = 1/3
+        break;
+      }
+      case 8: {  // in a plane through a side edge line, outside the frustum on both sides of
+                 // it: only a segment of the line is left, and the crossings are at t = 1/3
+        const FeaturePoint p = feature_point(f, Feature::edge, true);
+        // e points out of the first plane and into the second; -e the other way round.
+        const Vec3 e = f.s * (f.plane(p.planes[1]).normal - f.plane(p.planes[0]).normal);
+        const auto on_line = [&] { return p.point + double(*integer(2)) * p.along; };
+        t = {on_line() + e, on_line() - 2 * e, on_line() + e};
+        break;
+      }
+      default:
+        t = {around(f), around(f), around(f)};
+    }
+    return TriangleFrustum{wound(t), f.frustum()};
+  });
+}
+
+// ---- Frustums from cameras ------------------------------------------------------------
+
+struct CameraFrustum {
+  CameraParameters camera;
+  Frustum frustum;
+  std::array<Vec3, 8> corners;
+  Vec3 center;
+  double size;  // the distance from the center to the farthest corner
+};
+
+CameraFrustum camera_frustum(const CameraParameters& c) {
+  CameraFrustum cf{c, frustum_of(c), frustum_corners(c), Vec3::Zero(), 0.0};
+  cf.center = c.eye + c.forward.normalized() * ((c.near + c.far) / 2);
+  for (const Vec3& k : cf.corners) cf.size = std::max(cf.size, (k - cf.center).norm());
+  return cf;
+}
+
+// A point of interest of the frustum: a corner, the center, the eye, the middle of an
+// edge or of a face (the last ones only near the planes, after rounding).
+Vec3 anchor(const CameraFrustum& cf) {
+  const auto& k = cf.corners;
+  const int i = *rc::gen::inRange(0, 8), j = *rc::gen::inRange(0, 8), l = *rc::gen::inRange(0, 8);
+  switch (*rc::gen::inRange(0, 5)) {
+    case 0: return k[std::size_t(i)];
+    case 1: return cf.center;
+    case 2: return cf.camera.eye;
+    case 3: return (k[std::size_t(i)] + k[std::size_t(i ^ (1 << (j % 3)))]) / 2;  // an edge's middle
+    default: return (k[std::size_t(i)] + k[std::size_t(i ^ (1 << (j % 3)))] + k[std::size_t(i ^ (1 << (l % 3)))] +
+                     k[std::size_t(i ^ (1 << (j % 3)) ^ (1 << (l % 3)))]) / 4;
+  }
+}
+
+// An offset of the frustum's size, a lattice direction times a dyadic length.
+Vec3 jitter(const CameraFrustum& cf) {
+  const double unit = std::ldexp(1.0, std::ilogb(cf.size) - 3);
+  return *lattice_point(unit, 12);
+}
+
+rc::Gen<TriangleFrustum> camera_case() {
+  return rc::gen::exec([] {
+    const CameraFrustum cf = camera_frustum(*camera());
+    Triangle t;
+    switch (*rc::gen::inRange(0, 5)) {
+      case 0:  // anchored at points of interest, spread by the frustum's size
+        t = {anchor(cf) + jitter(cf), anchor(cf) + jitter(cf), anchor(cf) + jitter(cf)};
+        break;
+      case 1: {  // one vertex at (or a hair off) a point of interest
+        const Vec3 a = anchor(cf);
+        const double hair = *integer(4) * *tiny(25, 52) * std::max(cf.size, scale_of({a}));
+        t = {a + hair * Vec3(*integer(2), *integer(2), *integer(2)), anchor(cf) + jitter(cf), anchor(cf) + jitter(cf)};
+        break;
+      }
+      case 2: {  // a big triangle across the view at some depth: cut by all four sides
+        const CameraParameters& c = cf.camera;
+        const Vec3 f = c.forward.normalized(), r = f.cross(c.up).normalized(), u = r.cross(f);
+        const double depth = c.near + (c.far - c.near) * *rc::gen::inRange(-1, 10) / 8.0;
+        const Vec3 middle = c.eye + depth * f;
+        const double reach = 4 * cf.size;
+        t = {middle - reach * (r + u) + jitter(cf) / 8, middle + reach * (r - u) + jitter(cf) / 8, middle + reach * u + jitter(cf) / 8};
+        break;
+      }
+      case 3: {  // through the eye: where every side plane meets
+        t = {cf.camera.eye, anchor(cf) + jitter(cf), anchor(cf) + jitter(cf)};
+        break;
+      }
+      default:  // anything in a box around the frustum
+        t = {cf.center + 2 * jitter(cf), cf.center + 2 * jitter(cf), cf.center + 2 * jitter(cf)};
+    }
+    return TriangleFrustum{wound(t), cf.frustum};
+  });
+}
+
+}  // namespace
+
+rc::Gen<TrianglePlane> triangle_plane() {
+  const rc::Gen<TrianglePlane> exactly = plane_families(false);
+  const rc::Gen<TrianglePlane> nearly = rc::gen::weightedOneOf<TrianglePlane>({
+      {2, plane_case(false, Heights::one_on, true)},
+      {1, plane_case(false, Heights::two_on, true)},
+      {1, plane_case(false, Heights::all_on, true)},
+      {1, plane_case(false, Heights::touch_vertex, true)},
+  });
+  const rc::Gen<TrianglePlane> families = rc::gen::weightedOneOf<TrianglePlane>({
+      {6, exactly}, {3, nearly}, {1, zero_area_plane_case()}, {2, rc::gen::map(exactly, unit_normal)}});
+  return rc::gen::weightedOneOf<TrianglePlane>({{7, families}, {1, far_away(families)}});
+}
+
+rc::Gen<TrianglePlane> exact_triangle_plane() { return plane_families(true); }
+
+rc::Gen<CameraParameters> camera() {
+  return rc::gen::exec([] {
+    CameraParameters c;
+    const double s = *scale();
+    c.eye = *point(s);
+    if (*rc::gen::inRange(0, 8) == 0) c.eye += *lattice_point(s * 1024.0, 64);
+    c.forward = *direction(1, 8);
+    const Vec3 f = c.forward;
+    c.up = *rc::gen::suchThat(direction(1, 8), [f](const Vec3& u) {
+      return f.cross(u).norm() >= std::sin(15 * M_PI / 180) * f.norm() * u.norm();
+    });
+    c.fov_y = *rc::gen::inRange(20, 121) * M_PI / 180;
+    c.aspect = *rc::gen::element(0.5, 0.75, 1.0, 4.0 / 3.0, 16.0 / 9.0, 2.0);
+    c.near = s * std::ldexp(1.0, *rc::gen::inRange(-3, 2));
+    c.far = c.near * *rc::gen::inRange(2, 65);
+    return c;
+  });
+}
+
+rc::Gen<Mat4> view_projection_matrix() {
+  return rc::gen::exec([] {
+    const CameraParameters c = *camera();
+    Mat4 m = view_projection(c);
+    if (*rc::gen::inRange(0, 3) == 0) {
+      // An orthographic view instead: glOrtho(l, r, b, t, near, far) times the same view.
+      const double half = c.far * std::tan(c.fov_y / 2);
+      const double l = -half * c.aspect * *rc::gen::inRange(1, 5) / 4, r = half * c.aspect * *rc::gen::inRange(1, 5) / 4;
+      const double b = -half * *rc::gen::inRange(1, 5) / 4, t = half * *rc::gen::inRange(1, 5) / 4;
+      Mat4 ortho = Mat4::Identity();
+      ortho(0, 0) = 2 / (r - l);
+      ortho(0, 3) = -(r + l) / (r - l);
+      ortho(1, 1) = 2 / (t - b);
+      ortho(1, 3) = -(t + b) / (t - b);
+      ortho(2, 2) = -2 / (c.far - c.near);
+      ortho(2, 3) = -(c.far + c.near) / (c.far - c.near);
+      m = ortho * view_matrix(c);
+    }
+    if (*rc::gen::inRange(0, 3) == 0) m *= std::ldexp(1.0, *rc::gen::inRange(-4, 5));
+    return m;
+  });
+}
+
+rc::Gen<TriangleFrustum> triangle_frustum() {
+  return rc::gen::weightedOneOf<TriangleFrustum>({{3, camera_case()}, {1, exact_case()}});
+}
+
+rc::Gen<TriangleFrustum> exact_triangle_frustum() { return exact_case(); }
+
+rc::Gen<MeshFrustum> mesh_frustum() {
+  return rc::gen::exec([] {
+    MeshFrustum out;
+    double unit = 1;
+    Vec3 center = Vec3::Zero();
+    if (*rc::gen::inRange(0, 4) == 0) {
+      const ExactFrustum f = *exact_frustum();
+      out.frustum = f.frustum();
+      unit = f.s;
+      center = f.world(0, 0, f.near);
+    } else {
+      const CameraFrustum cf = camera_frustum(*camera());
+      out.frustum = cf.frustum;
+      unit = std::ldexp(1.0, std::ilogb(cf.size) - 3);
+      center = cf.center;
+    }
+    out.mesh = *mesh(unit);
+    // Centre the mesh's box on the frustum (by a lattice step: exact input stays exact).
+    Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
+    for (const Vec3& v : out.mesh.vertices) {
+      low = low.cwiseMin(v);
+      high = high.cwiseMax(v);
+    }
+    const Vec3 shift = ((center - (low + high) / 2) / unit).array().round().matrix() * unit;
+    for (Vec3& v : out.mesh.vertices) v += shift;
+    for (std::size_t i = 0; i < out.mesh.vertices.size(); ++i) out.colors.push_back(*lattice_point(1.0 / 16, 16));
+    return out;
+  });
+}
+
+}  // namespace labkit::gen
