@@ -1,0 +1,366 @@
+#include "01_frustum_split.judge.h"
+
+#include "common/oracle/oracle.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace labkit::lab01 {
+
+std::string describe(Side s) { return s == Side::in ? "in" : (s == Side::out ? "out" : "on"); }
+
+CameraParameters parameters_of(const Camera& c) {
+  return {c.eye, c.forward, c.up, c.fov_y, c.aspect, c.near, c.far};
+}
+
+namespace judge {
+
+namespace {
+
+using check::ambiguous;
+using check::Expect;
+using check::fail;
+using check::pass;
+
+constexpr double kRelative = 1e-9;  // tol = 1e-9 S (the header's tolerances)
+constexpr double kMargin = 8;       // ambiguous within 8 tol of a plane
+
+using Long3 = Eigen::Matrix<long double, 3, 1>;
+Long3 widen(const Vec3& v) { return v.cast<long double>(); }
+
+std::vector<Plane> planes_of(const Frustum& f) { return {f.planes.begin(), f.planes.end()}; }
+
+// S: the largest |coordinate| of the points, and the planes' distances from the origin.
+double scale_of_input(std::initializer_list<Vec3> points, const std::vector<Plane>& planes) {
+  double s = scale_of(points);
+  for (const Plane& p : planes) {
+    const double length = p.normal.norm();
+    if (length > 0) s = std::max(s, std::abs(p.offset) / length);
+  }
+  return std::max(s, 1e-300);
+}
+
+double longest_edge(const Triangle& t) {
+  return std::max({(t.v1 - t.v0).norm(), (t.v2 - t.v1).norm(), (t.v0 - t.v2).norm()});
+}
+
+std::string count_of(std::size_t n, const std::string& what) {
+  return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+}
+
+std::string describe_pieces(const std::vector<Triangle>& pieces) {
+  double area = 0;
+  for (const Triangle& p : pieces) area += p.area();
+  std::string s = count_of(pieces.size(), "triangle") + ", area " + fmt(area);
+  for (std::size_t i = 0; i < pieces.size() && i < 8; ++i) s += "\n    " + describe(pieces[i]);
+  return s;
+}
+
+std::string describe_polygon(const oracle::ClippedPolygon& p) {
+  std::string s = count_of(std::size_t(p.triangles()), "triangle") + ", area " + fmt(p.area) + " (a polygon with " +
+                  count_of(p.corners.size(), "corner") + ")";
+  for (const Vec3& c : p.corners) s += "\n    " + fmt(c);
+  return s;
+}
+
+std::vector<Plane> shifted(const std::vector<Plane>& planes, double by) {
+  std::vector<Plane> out = planes;
+  for (Plane& p : out) p.offset += by * p.normal.norm();
+  return out;
+}
+
+// Is the triangle clear of the planes by more than 8 tol (wholly inside all of them, or
+// wholly outside one)? Then the exact answer is the triangle or nothing, for certain.
+enum class Clear { inside, outside, no };
+Clear clearance(const Triangle& t, const std::vector<Plane>& planes, double tol) {
+  bool inside = true;
+  for (const Plane& p : planes) {
+    const double margin = 2 * kMargin * tol * p.normal.norm();
+    const double a = p.value(t.v0), b = p.value(t.v1), c = p.value(t.v2);
+    if (a < -margin && b < -margin && c < -margin) return Clear::outside;
+    inside = inside && a > margin && b > margin && c > margin;
+  }
+  return inside ? Clear::inside : Clear::no;
+}
+
+// Certainly within tol of the closed triangle? A double computation, conservative: its
+// rounding error (some 1e-16 S) is far below the tol / 2 it is held to. false: ask the
+// exact oracle. Corners near an edge (vertices and cut points) and corners well inside a
+// triangle that is not thin (where two planes cross it) are settled here.
+bool surely_near(const Vec3& p, const Triangle& t, double tol) {
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& a = t[i];
+    const Vec3 d = t[(i + 1) % 3] - a;
+    const double length2 = d.squaredNorm();
+    const double s = length2 > 0 ? std::clamp((p - a).dot(d) / length2, 0.0, 1.0) : 0.0;
+    if ((a + s * d - p).norm() <= tol / 2) return true;
+  }
+  const Vec3 n = t.normal();
+  const double n2 = n.squaredNorm(), longest = longest_edge(t);
+  if (!(std::sqrt(n2) >= 1e-6 * longest * longest)) return false;
+  for (int i = 0; i < 3; ++i)
+    if (!((t[(i + 1) % 3] - p).cross(t[(i + 2) % 3] - p).dot(n) / n2 >= 1e-6)) return false;
+  return std::abs((p - t.v0).dot(n)) / std::sqrt(n2) <= tol / 2;
+}
+
+bool same_triangle(const Triangle& a, const Triangle& b) {
+  for (int turn = 0; turn < 3; ++turn)
+    if (a.v0 == b[turn] && a.v1 == b[(turn + 1) % 3] && a.v2 == b[(turn + 2) % 3]) return true;
+  return false;
+}
+
+// The checks every answer made of pieces of one triangle must pass: the header's
+// "Pieces" rules. S comes from the caller (a mesh's S covers all of its vertices).
+Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::vector<Triangle>& got, double S,
+               Rules rules) {
+  const double tol = kRelative * S;
+  // The usual cases, settled without exact arithmetic.
+  const Clear clear = clearance(t, planes, tol);
+  if (clear == Clear::inside && got.size() == 1 && same_triangle(got[0], t)) return pass();
+  if (clear == Clear::outside && got.empty()) return pass();
+
+  const oracle::ClippedPolygon exact = oracle::clip(t, planes);
+  const std::string expected = describe_polygon(exact), answer = describe_pieces(got);
+  const bool flat = oracle::is_degenerate(t);
+  const double area_tol = kRelative * S * longest_edge(t);
+
+  // How many pieces: exact, unless a small change of the input could change it.
+  const bool doubt = rules == Rules::random && !flat && oracle::clip_in_doubt(t, planes, tol);
+  if (!flat && int(got.size()) != exact.triangles() && !doubt)
+    return fail(expected, answer,
+                (exact.has_area ? "the polygon triangle ∩ planes has " + count_of(exact.corners.size(), "corner") + ", so " +
+                                      count_of(std::size_t(exact.triangles()), "triangle") + " are expected, not "
+                                : std::string("triangle ∩ planes has no area, so no triangle is expected, not ")) +
+                    std::to_string(got.size()) +
+                    (rules == Rules::exact ? " (this input is exact: the header's rules decide)" : ""));
+
+  // Where the corners are.
+  for (std::size_t i = 0; i < got.size(); ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Vec3& p = got[i][j];
+      if (!oracle::inside_all(p, planes, tol))
+        return fail(expected, answer, "corner " + fmt(p) + " of triangle " + std::to_string(i) +
+                                          " is outside a plane by more than tol = " + fmt(tol));
+      if (!surely_near(p, t, tol) && !oracle::within(p, t, tol))
+        return fail(expected, answer, "corner " + fmt(p) + " of triangle " + std::to_string(i) + " is " +
+                                          fmt(oracle::distance(p, t)) + " from the input triangle (tolerance " + fmt(tol) + ")");
+    }
+
+  // How much they cover.
+  double area = 0;
+  for (const Triangle& p : got) area += p.area();
+  if (!(std::abs(area - exact.area) <= area_tol)) {
+    bool within_shifts = false;
+    if (rules == Rules::random) {
+      const double out = oracle::clip(t, shifted(planes, kMargin * tol)).area;
+      const double in = oracle::clip(t, shifted(planes, -kMargin * tol)).area;
+      within_shifts = area >= in - area_tol && area <= out + area_tol;
+    }
+    if (!within_shifts)
+      return fail(expected, answer, "the pieces' areas sum to " + fmt(area) + ", the exact area is " + fmt(exact.area) +
+                                        " (tolerance " + fmt(area_tol) + ")");
+  }
+
+  // No overlaps, and the input's winding.
+  const Vec3 normal = t.normal();
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    if (!flat && got[i].area() > area_tol && !(got[i].normal().dot(normal) > 0))
+      return fail(expected, answer, "triangle " + std::to_string(i) + " winds the other way: its normal " +
+                                        fmt(got[i].normal()) + " points away from the input's " + fmt(normal));
+    for (std::size_t j = 0; j < i; ++j) {
+      const double overlap = oracle::overlap_area(got[i], got[j], t);
+      if (!(overlap <= area_tol))
+        return fail(expected, answer, "triangles " + std::to_string(j) + " and " + std::to_string(i) + " overlap by an area of " +
+                                          fmt(overlap) + " (tolerance " + fmt(area_tol) + ")");
+    }
+  }
+  return doubt ? ambiguous() : pass();
+}
+
+// The colour that linear interpolation over t gives at x (its projection onto t's
+// plane), and how fast a colour component can change across t: long double is far
+// below the tolerance 1e-9 (C + G S), whose G S term covers the rounding of x itself.
+struct Interpolation {
+  bool defined = false;
+  Vec3 value = Vec3::Zero();
+  double slope = 0;  // G
+};
+
+Interpolation interpolate(const Triangle& t, const std::array<Vec3, 3>& colors, const Vec3& x) {
+  const Long3 v[3] = {widen(t.v0), widen(t.v1), widen(t.v2)};
+  const Long3 n = (v[1] - v[0]).cross(v[2] - v[0]);
+  const long double n2 = n.squaredNorm();
+  Interpolation out;
+  if (oracle::is_degenerate(t) || !(n2 > 0)) return out;
+  const Long3 p = widen(x);
+  Eigen::Matrix<long double, 3, 1> value = Long3::Zero(), gradient[3] = {Long3::Zero(), Long3::Zero(), Long3::Zero()};
+  for (int i = 0; i < 3; ++i) {
+    const Long3& a = v[(i + 1) % 3];
+    const Long3& b = v[(i + 2) % 3];
+    const long double lambda = (a - p).cross(b - p).dot(n) / n2;
+    const Long3 grad = n.cross(b - a) / n2;  // the gradient of lambda_i in the plane
+    const Long3 c = widen(colors[std::size_t(i)]);
+    value += lambda * c;
+    for (int k = 0; k < 3; ++k) gradient[k] += c[k] * grad;
+  }
+  out.defined = true;
+  out.value = value.cast<double>();
+  for (const Long3& g : gradient) out.slope = std::max(out.slope, double(g.norm()));
+  return out;
+}
+
+// Long double plane value, for corners.
+long double value_at(const Plane& p, const Vec3& x) { return widen(p.normal).dot(widen(x)) + p.offset; }
+
+}  // namespace
+
+Outcome signed_distance(const TrianglePlane& in, const std::array<double, 3>& got) {
+  const double tol = kRelative * scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, {in.plane});
+  Expect e;
+  for (int i = 0; i < 3; ++i)
+    e.near("distance of v" + std::to_string(i), got[std::size_t(i)], oracle::signed_distance(in.plane, in.triangle[i]), tol);
+  return e.outcome();
+}
+
+Outcome classify(const TrianglePlane& in, const std::array<Side, 3>& got, Rules rules) {
+  const double tol = kRelative * scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, {in.plane});
+  std::array<Side, 3> expected{};
+  bool doubt = false;
+  for (int i = 0; i < 3; ++i) {
+    expected[std::size_t(i)] = Side(oracle::side(in.plane, in.triangle[i]));
+    doubt = doubt || (rules == Rules::random && oracle::within(in.triangle[i], in.plane, kMargin * tol));
+  }
+  for (int i = 0; i < 3; ++i) {
+    if (got[std::size_t(i)] == expected[std::size_t(i)]) continue;
+    const bool near = rules == Rules::random && oracle::within(in.triangle[i], in.plane, kMargin * tol);
+    if (near) continue;
+    return fail(labkit::describe(expected), labkit::describe(got),
+                "v" + std::to_string(i) + " is " + describe(expected[std::size_t(i)]) + ": its value is exactly " +
+                    (expected[std::size_t(i)] == Side::on ? "0" : (expected[std::size_t(i)] == Side::in ? "> 0" : "< 0")) +
+                    (rules == Rules::exact ? " (this input is exact)" : ", and no vertex within 8 tol of the plane decides it"));
+  }
+  return doubt ? ambiguous() : pass();
+}
+
+Outcome split_triangle(const TrianglePlane& in, const std::vector<Triangle>& got, Rules rules) {
+  const std::vector<Plane> planes = {in.plane};
+  return pieces(in.triangle, planes, got, scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, planes), rules);
+}
+
+Outcome clip_triangle(const TriangleFrustum& in, const std::vector<Triangle>& got, Rules rules) {
+  const std::vector<Plane> planes = planes_of(in.frustum);
+  return pieces(in.triangle, planes, got, scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, planes), rules);
+}
+
+Outcome frustum_from_camera(const Camera& in, const Frustum& got) {
+  const CameraParameters c = parameters_of(in);
+  const std::array<Vec3, 8> corners = frustum_corners(c);
+  double S = scale_of({in.eye});
+  for (const Vec3& k : corners) S = std::max(S, scale_of({k}));
+  const double tol = kRelative * S;
+  const Frustum expected = frustum_of(c);
+  const Vec3 center = in.eye + in.forward.normalized() * ((in.near + in.far) / 2);
+  static const char* names[6] = {"left", "right", "bottom", "top", "near", "far"};
+  // The corners on each plane: bit 0 of a corner's index is right, bit 1 top, bit 2 far.
+  static const int bit[6] = {0, 0, 1, 1, 2, 2}, set[6] = {0, 1, 0, 1, 0, 1};
+  for (int i = 0; i < 6; ++i) {
+    const Plane& p = got.planes[std::size_t(i)];
+    const std::string name = names[i];
+    const std::string want = describe(expected.planes[std::size_t(i)]), have = describe(p);
+    if (!(std::abs(p.normal.norm() - 1) <= kRelative))
+      return fail(name + ": " + want, name + ": " + have, "the " + name + " plane's normal has length " + fmt(p.normal.norm()) + ", not 1");
+    if (!(value_at(p, center) > tol))
+      return fail(name + ": " + want, name + ": " + have,
+                  "the " + name + " plane's normal points out: the point eye + forward (near + far) / 2 is behind it");
+    for (int k = 0; k < 8; ++k) {
+      if (((k >> bit[i]) & 1) != set[i]) continue;
+      const long double v = value_at(p, corners[std::size_t(k)]);
+      if (!(std::abs(v) <= tol))
+        return fail(name + ": " + want, name + ": " + have,
+                    "the frustum's corner " + fmt(corners[std::size_t(k)]) + " should lie on the " + name + " plane, and is " +
+                        fmt(double(v)) + " from it (tolerance " + fmt(tol) + ")");
+    }
+  }
+  return pass();
+}
+
+Outcome frustum_from_matrix(const Mat4& in, const Frustum& got) {
+  const std::array<Plane, 6> exact = oracle::frustum_planes(in);
+  const double a = in.leftCols<3>().cwiseAbs().maxCoeff(), b = in.col(3).cwiseAbs().maxCoeff();
+  static const char* names[6] = {"left", "right", "bottom", "top", "near", "far"};
+  for (int i = 0; i < 6; ++i) {
+    const Plane& p = got.planes[std::size_t(i)];
+    const Plane& e = exact[std::size_t(i)];
+    const Vec4 raw = (in.row(3) + (i % 2 == 0 ? 1.0 : -1.0) * in.row(i / 2)).transpose();
+    const double length = raw.head<3>().norm();
+    if (!(length > 0)) continue;  // no plane to compare with
+    const double normal_tol = kRelative * a / length;
+    const double offset_tol = kRelative * (b + a * std::abs(raw[3]) / length) / length;
+    const std::string name = names[i];
+    Expect x;
+    x.near(name + " normal", p.normal, e.normal, normal_tol);
+    x.near(name + " offset", p.offset, e.offset, offset_tol);
+    const Outcome o = x.outcome();
+    if (o.verdict == Outcome::Verdict::fail) return o;
+  }
+  return pass();
+}
+
+Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules) {
+  const std::vector<Plane> planes = planes_of(in.frustum);
+  double S = scale_of(in.mesh);
+  S = std::max(S, scale_of_input({}, planes));
+  const std::size_t n = got.mesh.vertices.size(), count = got.mesh.size();
+  const std::string sizes = std::to_string(n) + " vertices, " + std::to_string(got.colors.size()) + " colours, " +
+                            std::to_string(count) + " triangles, " + std::to_string(got.source.size()) + " sources";
+  if (got.colors.size() != n) return fail("one colour per vertex", sizes, "colors must have one entry per vertex");
+  if (got.source.size() != count) return fail("one source per triangle", sizes, "source must have one entry per triangle");
+  std::vector<std::vector<Triangle>> pieces_of(in.mesh.size());
+  std::vector<std::vector<std::size_t>> indices_of(in.mesh.size());
+  for (std::size_t k = 0; k < count; ++k) {
+    for (int i : got.mesh.triangles[k])
+      if (i < 0 || std::size_t(i) >= n)
+        return fail("indices into the vertices", "index " + std::to_string(i), "triangle " + std::to_string(k) + " has an index out of range");
+    const int s = got.source[k];
+    if (s < 0 || std::size_t(s) >= in.mesh.size())
+      return fail("an input triangle's index", "source " + std::to_string(s), "triangle " + std::to_string(k) + " has a source out of range");
+    pieces_of[std::size_t(s)].push_back(got.mesh.triangle(k));
+    indices_of[std::size_t(s)].push_back(k);
+  }
+  bool doubt = false;
+  for (std::size_t s = 0; s < in.mesh.size(); ++s) {
+    const Triangle t = in.mesh.triangle(s);
+    const Outcome o = pieces(t, planes, pieces_of[s], S, rules);
+    if (o.verdict == Outcome::Verdict::fail)
+      return fail(o.expected, o.got, "input triangle " + std::to_string(s) + ": " + o.why);
+    doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
+
+    // Colours at every corner of its pieces.
+    const auto& face = in.mesh.triangles[s];
+    const std::array<Vec3, 3> colors = {in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])],
+                                        in.colors[std::size_t(face[2])]};
+    const double C = std::max({colors[0].cwiseAbs().maxCoeff(), colors[1].cwiseAbs().maxCoeff(), colors[2].cwiseAbs().maxCoeff()});
+    for (std::size_t k : indices_of[s])
+      for (int i : got.mesh.triangles[k]) {
+        const Vec3& x = got.mesh.vertices[std::size_t(i)];
+        const Interpolation f = interpolate(t, colors, x);
+        if (!f.defined) continue;  // a zero-area triangle has no plane to interpolate over
+        const double color_tol = kRelative * (C + f.slope * S);
+        const Vec3& c = got.colors[std::size_t(i)];
+        if (!((c - f.value).norm() <= color_tol))
+          return fail("colour " + fmt(f.value), "colour " + fmt(c),
+                      "vertex " + std::to_string(i) + " at " + fmt(x) + " of a piece of input triangle " + std::to_string(s) +
+                          ": linear interpolation there gives " + fmt(f.value) + " (tolerance " + fmt(color_tol) + ")");
+      }
+  }
+  return doubt ? ambiguous() : pass();
+}
+
+rc::Gen<Camera> camera() {
+  return rc::gen::map(gen::camera(), [](const CameraParameters& p) {
+    return Camera{p.eye, p.forward, p.up, p.fov_y, p.aspect, p.near, p.far};
+  });
+}
+
+}  // namespace judge
+}  // namespace labkit::lab01

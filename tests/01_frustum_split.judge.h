@@ -1,0 +1,49 @@
+// Lab 01's verdicts: each judge compares one answer with the exact oracle, following
+// the tolerances and degenerate rules of labs/01_frustum_split/frustum_split.h.
+// The tests and the viewer both use them, so a red mark in the viewer and a failing
+// case in `./labkit check` always agree.
+#pragma once
+
+#include "frustum_split.h"
+
+#include "common/generators/clipping.h"
+#include "common/harness/check.h"
+
+#include <array>
+#include <vector>
+
+namespace labkit::lab01 {
+
+// Answers and inputs list their fields, so that reports can print them.
+template <class V> void fields(Camera& c, V&& v) {
+  v("eye", c.eye); v("forward", c.forward); v("up", c.up); v("fov_y", c.fov_y); v("aspect", c.aspect);
+  v("near", c.near); v("far", c.far);
+}
+template <class V> void fields(ClippedMesh& m, V&& v) { v("mesh", m.mesh); v("colors", m.colors); v("source", m.source); }
+
+std::string describe(Side s);
+
+// The kit's camera type, for its generators and corners.
+CameraParameters parameters_of(const Camera& camera);
+
+namespace judge {
+
+using check::Outcome;
+
+// Random cases accept any answer on ambiguous input; the robustness step's exact
+// degenerate input must follow the header's rules exactly.
+enum class Rules { random, exact };
+
+// got[i] is the signed distance of vertex i to the plane.
+Outcome signed_distance(const TrianglePlane& in, const std::array<double, 3>& got);
+Outcome classify(const TrianglePlane& in, const std::array<Side, 3>& got, Rules rules = Rules::random);
+Outcome split_triangle(const TrianglePlane& in, const std::vector<Triangle>& got, Rules rules = Rules::random);
+Outcome frustum_from_camera(const Camera& in, const Frustum& got);
+Outcome frustum_from_matrix(const Mat4& in, const Frustum& got);
+Outcome clip_triangle(const TriangleFrustum& in, const std::vector<Triangle>& got, Rules rules = Rules::random);
+Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules = Rules::random);
+
+rc::Gen<Camera> camera();
+
+}  // namespace judge
+}  // namespace labkit::lab01
