@@ -93,6 +93,9 @@ Step judged(std::string tag, std::string title, const Attempt<T>& a, Judge&& jud
   if (!a) {
     s.verdict = a.stub ? Verdict::stub : Verdict::disagree;
     s.note = a.problem;
+    const std::size_t open = a.problem.find('('), close = a.problem.find(')');
+    if (a.stub && open != std::string::npos && close > open)
+      s.note = "write the step marked " + a.problem.substr(open + 1, close - open - 1) + " in your file";
     return s;
   }
   const labkit::check::Outcome o = judge(*a);
