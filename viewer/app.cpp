@@ -180,6 +180,7 @@ void App::steps_table() {
       focus_ = focus_ == number ? 0 : number;
     if (s.verdict != Verdict::none) {
       ImGui::SameLine();
+      if (ImGui::CalcTextSize(word(s.verdict)).x > ImGui::GetContentRegionAvail().x) ImGui::NewLine();
       ImGui::TextColored(im(colour(s.verdict)), "%s", word(s.verdict));
     }
     if (!s.rows.empty() && ImGui::BeginTable("rows", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {

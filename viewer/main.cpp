@@ -115,7 +115,7 @@ int main(int argc, char** argv) {
   if (list) {
     for (const viewer::SceneInfo& info : viewer::kScenes)
       for (const viewer::Preset& p : info.presets())
-        std::cout << info.lab << " " << p.name << (p.figure ? " figure " : " - ") << p.description << "\n";
+        std::cout << info.stem << " " << p.name << (p.figure ? " figure " : " - ") << p.description << "\n";
     return 0;
   }
   if (!lab.empty()) {

@@ -420,6 +420,8 @@ void SegmentTriangleScene::draw(Frame& f) {
   } else {
     if (mode_ == Mode::moving) {  // the mesh at m0, faint; the particle's path in the mesh's frame
       draw_mesh(r, mesh_, m0_, palette::muted.with_alpha(0.6f), false);
+      if (!mesh_.vertices.empty()) r.label(m0_ * mesh_.vertices[0], "the mesh at m0", palette::muted);
+      if (!mesh_.vertices.empty()) r.label(m1_ * mesh_.vertices[0], "at m1", palette::surface);
       const Vec3 a = m1_ * (m0_.inverse() * segment_.a);
       r.dashed(a, segment_.b, palette::muted, 1.5f);
       r.label(a, "a seen from the mesh", palette::muted);
