@@ -1,9 +1,10 @@
-// labkit-bench-report BENCH.json TARGETS.json NOTES.md OUT.md
+// labkit-bench-report BENCH.json TARGETS.json OUT.md [MORE.md...]
 //
 // Turns one run of labkit-bench into bench/RESULTS.md: a table per kernel (throughput,
 // time per item, the reference's speed relative to each peer, disagreements with the
 // exact answer), the targets met or missed, size scaling where a kernel was run at
-// several sizes, and the hand-written notes that explain the misses.
+// several sizes, then the other markdown files given (the student loop's timings, the
+// hand-written notes that explain the misses), in order.
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -44,10 +45,24 @@ std::string read_file(const std::string& path) {
   return s.str();
 }
 
-// "group/implementation" or "group/implementation/size".
+// "group/implementation" or "group/implementation/variant": the variant is a size
+// (a number: the table shows the scaling) or the name of an input mix.
 struct Name {
   std::string group, implementation, size;
 };
+
+bool is_number(const std::string& s) {
+  return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
+}
+
+// Rows of one group by variant, in the order the benchmarks ran.
+using Variants = std::vector<std::pair<std::string, std::vector<Row>>>;
+
+std::vector<Row>& rows_of(Variants& variants, const std::string& size) {
+  for (auto& [s, rows] : variants)
+    if (s == size) return rows;
+  return variants.emplace_back(size, std::vector<Row>{}).second;
+}
 Name split(const std::string& name) {
   Name n;
   const auto a = name.find('/');
@@ -62,8 +77,8 @@ Name split(const std::string& name) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    std::cerr << "usage: labkit-bench-report BENCH.json TARGETS.json NOTES.md OUT.md\n";
+  if (argc < 4) {
+    std::cerr << "usage: labkit-bench-report BENCH.json TARGETS.json OUT.md [MORE.md...]\n";
     return 2;
   }
   json run, targets;
@@ -77,7 +92,7 @@ int main(int argc, char** argv) {
 
   // group -> size -> rows, in the order the benchmarks ran.
   std::vector<std::string> group_order;
-  std::map<std::string, std::map<std::string, std::vector<Row>>> groups;
+  std::map<std::string, Variants> groups;
   for (const json& b : run.value("benchmarks", json::array())) {
     if (b.value("run_type", "iteration") != "iteration") continue;
     const Name n = split(b.value("name", ""));
@@ -90,7 +105,7 @@ int main(int argc, char** argv) {
           it.key() == "tests_per_query")
         r.counters[it.key()] = it.value();
     if (!groups.count(n.group)) group_order.push_back(n.group);
-    groups[n.group][n.size].push_back(r);
+    rows_of(groups[n.group], n.size).push_back(r);
   }
 
   std::ostringstream md;
@@ -112,7 +127,8 @@ int main(int argc, char** argv) {
   for (const std::string& group : group_order) {
     md << "\n## " << group << "\n";
     for (const auto& [size, rows] : groups[group]) {
-      if (!size.empty()) md << "\n" << size << " triangles or items:\n";
+      if (is_number(size)) md << "\n" << number(std::stod(size)) << " triangles or items:\n";
+      else if (!size.empty()) md << "\nOn the " << size << " inputs:\n";
       const Row* reference = nullptr;
       for (const Row& r : rows)
         if (r.implementation == "reference") reference = &r;
@@ -130,11 +146,12 @@ int main(int argc, char** argv) {
       }
     }
     // Scaling: time per item against size, fitted as size^k between the extremes.
-    if (groups[group].size() >= 2 && !groups[group].begin()->first.empty()) {
+    const Variants& variants = groups[group];
+    if (variants.size() >= 2 && is_number(variants.front().first) && is_number(variants.back().first)) {
       md << "\nScaling of the time per item from the smallest to the largest size (exponent k in size^k):\n\n";
-      const auto& first = groups[group].begin()->second;
-      const auto& last = groups[group].rbegin()->second;
-      const double n0 = std::stod(groups[group].begin()->first), n1 = std::stod(groups[group].rbegin()->first);
+      const auto& first = variants.front().second;
+      const auto& last = variants.back().second;
+      const double n0 = std::stod(variants.front().first), n1 = std::stod(variants.back().first);
       for (const Row& r0 : first)
         for (const Row& r1 : last)
           if (r0.implementation == r1.implementation && r0.nanoseconds_per_item > 0 && r1.nanoseconds_per_item > 0)
@@ -149,8 +166,8 @@ int main(int argc, char** argv) {
     const double at_least = t.value("at_least", 0.0);
     const Row* ref = nullptr;
     const Row* other = nullptr;
-    if (groups.count(group) && groups[group].count(size))
-      for (const Row& r : groups[group][size]) {
+    if (groups.count(group))
+      for (const Row& r : rows_of(groups[group], size)) {
         if (r.implementation == "reference") ref = &r;
         if (r.implementation == peer) other = &r;
       }
@@ -165,10 +182,16 @@ int main(int argc, char** argv) {
        << " | " << met << " |\n";
   }
 
-  const std::string notes = read_file(argv[3]);
-  if (!notes.empty()) md << "\n" << notes;
-  std::ofstream out(argv[4]);
+  for (int i = 4; i < argc; ++i) {
+    const std::string more = read_file(argv[i]);
+    if (!more.empty()) md << "\n" << more;
+  }
+  std::ofstream out(argv[3]);
   out << md.str();
-  std::cout << "wrote " << argv[4] << "\n";
+  if (!out) {
+    std::cerr << "labkit-bench-report: cannot write " << argv[3] << "\n";
+    return 1;
+  }
+  std::cout << "wrote " << argv[3] << "\n";
   return 0;
 }

@@ -75,7 +75,8 @@ double first_contact_2d(const Vec2& a, const Vec2& b, const Vec2& p, const Vec2&
 struct Decision {
   bool hit = false;
   double t = 0.0;
-  Vec3 n = Vec3::Zero();  // the triangle's normal, unnormalised (when hit)
+  Vec3 n = Vec3::Zero();        // the triangle's normal, unnormalised (when hit)
+  Vec3 weights = Vec3::Zero();  // barycentric weights of the crossing (zero: not known)
 };
 
 // The segment lies in the triangle's plane: a 2D problem. The first point is a itself
@@ -95,7 +96,7 @@ Decision decide_coplanar(const Segment& s, const Triangle& tri, const Vec3& n) {
   d.hit = true;
   d.t = t;
   d.n = n;
-  return d;
+  return d;  // no weights: hit_from measures them on the point
 }
 
 // Both ends on the plane, to within the rounding error of d_a and d_b: then the volumes
@@ -120,7 +121,9 @@ bool in_plane(double d_a, double d_b, const Vec3& a_to_v0, const Vec3& b_to_v0, 
 //   so x is inside exactly when every V_i has the sign opposite to (d_a - d_b) (or is
 //   zero). V_i uses input points only: no rounded x enters any decision. Summed over
 //   the three edges, the E_i make |n|^2, so V_0 + V_1 + V_2 = d_b - d_a: the third
-//   volume costs one subtraction, and on integer input it is still exact.
+//   volume costs one subtraction, and on integer input it is still exact. The other
+//   two share one cross product: a triple product may be rotated, so with
+//   m = (b - a) x (v0 - a), V_0 = m . (v1 - a) and V_2 = -m . (v2 - a).
 //
 //          v2
 //         /  \        V_0 belongs to edge v0 -> v1,
@@ -141,27 +144,40 @@ Decision decide(const Segment& s, const Triangle& tri) {
   if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);
 
   const double side = d_a > d_b ? 1.0 : -1.0;
-  const double v0 = direction.dot(p0.cross(p1));
+  const Vec3 m = direction.cross(p0);
+  const double v0 = m.dot(p1);
   if (side * v0 > 0) return {};  // x is outside edge v0 -> v1
-  const double v1 = direction.dot(p1.cross(p2));
-  if (side * v1 > 0) return {};  // outside edge v1 -> v2
-  const double v2 = (d_b - d_a) - v0 - v1;
+  const double v2 = -m.dot(p2);
   if (side * v2 > 0) return {};  // outside edge v2 -> v0
+  const double v1 = (d_b - d_a) - v0 - v2;
+  if (side * v1 > 0) return {};  // outside edge v1 -> v2
   // A segment in the plane up to rounding passes the volume test by chance: in 2D.
   if (in_plane(d_a, d_b, p0, p0 - direction, e1, e2)) return decide_coplanar(s, tri, n);
-  return {true, d_a / (d_a - d_b), n};
+  // The volumes are the crossing's barycentric weights, up to their sum: V_1 belongs to
+  // the edge facing v0, and so weighs v0; V_2 weighs v1, V_0 weighs v2. Each V_i is
+  // rounded by about 1e-16 |b - a| |p|^2 (p the longest v_i - a), so the weights are
+  // good to 1e-11 while the sum is at least 1e-5 |b - a| |p|^2; a segment closer to
+  // parallel than that leaves the weights to be measured on the point.
+  const double sum = d_b - d_a;
+  const double reach = std::max({p0.squaredNorm(), p1.squaredNorm(), p2.squaredNorm()});
+  const bool steep = sum * sum >= 1e-10 * direction.squaredNorm() * reach * reach;
+  return {true, d_a / (d_a - d_b), n, steep ? Vec3(Vec3(v1, v2, v0) / sum) : Vec3(Vec3::Zero())};
 }
 
-// Only now build the point, and describe that very point by its barycentric weights
-// (step 3), so that t and the weights always tell the same story.
+// Only now build the point. Its weights come with the decision, unless the segment
+// is in or nearly along the plane: then they are measured on the point itself (step 3).
 SegmentTriangleHit hit_from(const Decision& d, const Segment& s, const Triangle& tri) {
   if (!d.hit) return {};
   SegmentTriangleHit h;
   h.hit = true;
   h.t = d.t;
   h.point = s.point(d.t);
-  const Barycentric b = barycentric(h.point, tri);
-  h.barycentric = Vec3(1 - b.alpha - b.beta, b.alpha, b.beta);
+  if (d.weights != Vec3::Zero()) {
+    h.barycentric = d.weights;
+  } else {
+    const Barycentric b = barycentric(h.point, tri);
+    h.barycentric = Vec3(1 - b.alpha - b.beta, b.alpha, b.beta);
+  }
   h.normal = d.n.normalized();
   return h;
 }
