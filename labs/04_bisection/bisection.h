@@ -204,6 +204,8 @@ TimeOfImpact advance(const MovingPair& pair, double t0, double t1, double max_cl
 // No new function: steps 1 to 4 must follow the rules at the top of this file on exact
 // input (integer coordinates, times that are short binary fractions): bodies that touch
 // at t0, at t1, at a midpoint or at a sample time, that only graze each other for one
-// instant, zero radii and zero half extents, a speed bound that is exactly tight.
+// instant, zero radii and zero half extents, a speed bound that is exactly tight. (The
+// times an advancement reaches come from a division, so the poses there are rounded: a
+// touch within rounding of such a time stays ambiguous.)
 
 }  // namespace labkit::lab04
