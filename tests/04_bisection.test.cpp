@@ -3,7 +3,10 @@
 #include "04_bisection.judge.h"
 #include "bisection.h"
 
+#include <algorithm>
 #include <cmath>
+#include <memory>
+#include <vector>
 
 using namespace labkit;
 using namespace labkit::lab04;
@@ -209,6 +212,28 @@ TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][st
   // The lecture's iterations: 0.5 (overlap), 0.25, 0.375 (clear), 0.4375 (overlap), 0.40625 (clear).
   check::example("bisect", "the lecture's five iterations", ball_and_wall(0, 1, 1.0 / 32),
                  both<MovingPairCase>(run_bisect, judge_bisect, expect_hit(0.40625, 0.4375, 0, 5)));
+  // Any callable is a motion: this one writes down every time it is asked for a pose.
+  // After the two ends, the times asked are the lecture's midpoints, in its order.
+  check::example("bisect", "the lecture's midpoints, seen by a recording motion", ball_and_wall(0, 1, 1.0 / 32),
+                 [](const MovingPairCase& in) {
+                   MovingPair pair = pair_of(in);
+                   auto asked = std::make_shared<std::vector<double>>();
+                   pair.motion_a = [asked, standard = motion_of(in.a.motion)](double t) {
+                     if (std::find(asked->begin(), asked->end(), t) == asked->end()) asked->push_back(t);
+                     return standard(t);
+                   };
+                   const TimeOfImpact got = bisect(pair, in.times.t0, in.times.t1, in.times.tolerance);
+                   std::vector<double> midpoints;
+                   for (double t : *asked)
+                     if (t != in.times.t0 && t != in.times.t1) midpoints.push_back(t);
+                   Expect e;
+                   e.equal("times asked besides t0 and t1", int(midpoints.size()), 5);
+                   const double lecture[] = {0.5, 0.25, 0.375, 0.4375, 0.40625};
+                   for (std::size_t k = 0; k < std::min<std::size_t>(5, midpoints.size()); ++k)
+                     e.near("midpoint " + std::to_string(k + 1), midpoints[k], lecture[k], 0);
+                   e.near("t", got.t, 0.40625, 0);
+                   return e.outcome();
+                 });
   check::example("bisect", "a coarse tolerance: two iterations", ball_and_wall(0, 1, 0.25),
                  both<MovingPairCase>(run_bisect, judge_bisect, expect_hit(0.25, 0.5, 0, 2)));
   check::example("bisect", "already overlapping at t0", ball_and_wall(0.5, 1, 1.0 / 32),
