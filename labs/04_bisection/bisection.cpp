@@ -1,0 +1,116 @@
+// Lab 04: time of impact by bisection. Your file: replace each stub below.
+// The contract is bisection.h; the steps are in handouts/04_bisection.md.
+// Check your work with:  ./labkit check 04        (one step: ./labkit check 04 --step 1)
+#include "bisection.h"
+
+#include "common/not_implemented.h"
+
+namespace labkit::lab04 {
+
+// L04S1: move the centre by the pose.
+Sphere placed(const Sphere& sphere, const RigidTransform& pose) {
+  (void)sphere;
+  (void)pose;
+  not_implemented("L04S1");
+}
+
+// L04S1: move the centre, turn the axes.
+Box placed(const Box& box, const RigidTransform& pose) {
+  (void)box;
+  (void)pose;
+  not_implemented("L04S1");
+}
+
+// L04S1: two spheres.
+bool overlap(const Sphere& a, const Sphere& b) {
+  (void)a;
+  (void)b;
+  not_implemented("L04S1");
+}
+
+// L04S1: clamp in the box's own coordinates.
+Vec3 closest_point(const Box& box, const Vec3& p) {
+  (void)box;
+  (void)p;
+  not_implemented("L04S1");
+}
+
+// L04S1: a sphere and a box.
+bool overlap(const Sphere& a, const Box& b) {
+  (void)a;
+  (void)b;
+  not_implemented("L04S1");
+}
+
+// L04S1: pose both bodies at time t, then test.
+bool overlap_at(const MovingPair& pair, double t) {
+  (void)pair;
+  (void)t;
+  not_implemented("L04S1");
+}
+
+// L04S2: the ends, then halve the bracket.
+TimeOfImpact bisect(const MovingPair& pair, double t0, double t1, double tolerance) {
+  (void)pair;
+  (void)t0;
+  (void)t1;
+  (void)tolerance;
+  not_implemented("L04S2");
+}
+
+// L04S3: the thinnest dimension.
+double smallest_size(const Shape& shape) {
+  (void)shape;
+  not_implemented("L04S3");
+}
+
+// L04S3: speed x (step / n) < smallest size.
+int substeps_for(double max_speed, double step, double smallest_size) {
+  (void)max_speed;
+  (void)step;
+  (void)smallest_size;
+  not_implemented("L04S3");
+}
+
+// L04S3: sample, then bisect the first bracket.
+TimeOfImpact sample_then_bisect(const MovingPair& pair, double t0, double t1, int substeps, double tolerance) {
+  (void)pair;
+  (void)t0;
+  (void)t1;
+  (void)substeps;
+  (void)tolerance;
+  not_implemented("L04S3");
+}
+
+// L04S4: two spheres.
+double distance(const Sphere& a, const Sphere& b) {
+  (void)a;
+  (void)b;
+  not_implemented("L04S4");
+}
+
+// L04S4: a sphere and a box.
+double distance(const Sphere& a, const Box& b) {
+  (void)a;
+  (void)b;
+  not_implemented("L04S4");
+}
+
+// L04S4: pose both bodies at time t, then measure.
+double distance_at(const MovingPair& pair, double t) {
+  (void)pair;
+  (void)t;
+  not_implemented("L04S4");
+}
+
+// L04S4: advance by distance / speed, at least the tolerance.
+TimeOfImpact advance(const MovingPair& pair, double t0, double t1, double max_closing_speed, double tolerance) {
+  (void)pair;
+  (void)t0;
+  (void)t1;
+  (void)max_closing_speed;
+  (void)tolerance;
+  not_implemented("L04S4");
+}
+
+}  // namespace labkit::lab04

@@ -1,0 +1,426 @@
+// Lab 04 tests. Each step: the hand-worked examples of handouts/04_bisection.md, then
+// random cases against the exact oracle (tests/04_bisection.judge.cpp).
+#include "04_bisection.judge.h"
+#include "bisection.h"
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
+
+using namespace labkit;
+using namespace labkit::lab04;
+using check::Expect;
+using check::Outcome;
+using judge::Rules;
+
+namespace {
+
+// ---- The handout's scenes ------------------------------------------------------------------
+
+MotionParameters resting_at(const Vec3& p) {
+  MotionParameters m;
+  m.start = p;
+  return m;
+}
+MotionParameters moving(const Vec3& start, const Vec3& velocity) {
+  MotionParameters m;
+  m.start = start;
+  m.velocity = velocity;
+  return m;
+}
+MovingBody ball(double radius, const MotionParameters& m) { return {false, Sphere{Vec3::Zero(), radius}, Box{}, m}; }
+MovingBody block(const Vec3& half_extents, const MotionParameters& m) {
+  return {true, Sphere{}, Box{Vec3::Zero(), Mat3::Identity(), half_extents}, m};
+}
+MovingPairCase scene(const MovingBody& a, const MovingBody& b, double t0, double t1, double tolerance) {
+  return {a, b, SearchTimes{t0, t1, tolerance}};
+}
+
+// The wall: the box [0, 8] x [-4, 4] x [-4, 4], at rest. The ball: radius 1, centre
+// x(t) = -6 + 12 t on the x axis. It touches the wall's face x = 0 when x = -1: t = 5/12.
+const MovingBody kWall = block({4, 4, 4}, resting_at({4, 0, 0}));
+const MovingBody kBall = ball(1, moving({-6, 0, 0}, {12, 0, 0}));
+MovingPairCase ball_and_wall(double t0, double t1, double tolerance) { return scene(kBall, kWall, t0, t1, tolerance); }
+
+// The window: |x| <= 1/4, |y|, |z| <= 2, at rest. The bullet: radius 1/8, centre
+// x(t) = -3 + 6 t. In contact while |x| <= 3/8: t in [7/16, 9/16].
+const MovingBody kWindow = block({0.25, 2, 2}, resting_at(Vec3::Zero()));
+const MovingBody kBullet = ball(0.125, moving({-3, 0, 0}, {6, 0, 0}));
+MovingPairCase bullet_and_window(double tolerance) { return scene(kBullet, kWindow, 0, 1, tolerance); }
+
+// A quarter turn about z, then a shift: exact numbers, no trigonometry.
+RigidTransform quarter_turn_then(const Vec3& shift) {
+  RigidTransform m = RigidTransform::Identity();
+  m.linear() << 0, -1, 0, 1, 0, 0, 0, 0, 1;
+  m.translation() = shift;
+  return m;
+}
+
+// Expectations of a search's answer.
+auto expect_hit(double t, double t_contact, int steps, int iterations) {
+  return [=](const TimeOfImpact& got) {
+    Expect e;
+    e.equal("hit", got.hit, true);
+    e.equal("overlapping_at_start", got.overlapping_at_start, false);
+    e.near("t", got.t, t, 1e-12);
+    e.near("t_contact", got.t_contact, t_contact, 1e-12);
+    e.equal("steps", got.steps, steps);
+    e.equal("iterations", got.iterations, iterations);
+    return e.outcome();
+  };
+}
+auto expect_no_hit(double t1, int steps) {
+  return [=](const TimeOfImpact& got) {
+    Expect e;
+    e.equal("hit", got.hit, false);
+    e.near("t", got.t, t1, 0);
+    e.equal("steps", got.steps, steps);
+    return e.outcome();
+  };
+}
+auto expect_start(double t0) {
+  return [=](const TimeOfImpact& got) {
+    Expect e;
+    e.equal("hit", got.hit, true);
+    e.equal("overlapping_at_start", got.overlapping_at_start, true);
+    e.near("t", got.t, t0, 0);
+    e.near("t_contact", got.t_contact, t0, 0);
+    return e.outcome();
+  };
+}
+
+// The searches on a case, by query name.
+TimeOfImpact run_bisect(const MovingPairCase& in) {
+  return bisect(pair_of(in), in.times.t0, in.times.t1, in.times.tolerance);
+}
+TimeOfImpact run_sampled(const SampledPair& in) {
+  return sample_then_bisect(pair_of(in.pair), in.pair.times.t0, in.pair.times.t1, in.substeps, in.pair.times.tolerance);
+}
+TimeOfImpact run_advance(const AdvancedPair& in) {
+  return advance(pair_of(in.pair), in.pair.times.t0, in.pair.times.t1, judge::closing_speed_of(in),
+                 in.pair.times.tolerance);
+}
+
+// Both the hand-worked numbers and the exact judge.
+template <class Input, class Run, class Judge, class Expectation>
+auto both(Run run, Judge judge_it, Expectation expectation) {
+  return [=](const Input& in) {
+    const TimeOfImpact got = run(in);
+    const Outcome o = expectation(got);
+    return o.verdict == Outcome::Verdict::fail ? o : judge_it(in, got);
+  };
+}
+
+Outcome judge_bisect(const MovingPairCase& in, const TimeOfImpact& got) { return judge::bisect(in, got); }
+Outcome judge_sampled(const SampledPair& in, const TimeOfImpact& got) { return judge::sample_then_bisect(in, got); }
+Outcome judge_advance(const AdvancedPair& in, const TimeOfImpact& got) { return judge::advance(in, got); }
+// The robustness step's exact input: the header's rules, with nothing in doubt.
+Outcome exact_bisect(const MovingPairCase& in, const TimeOfImpact& got) { return judge::bisect(in, got, Rules::exact); }
+Outcome exact_sampled(const SampledPair& in, const TimeOfImpact& got) {
+  return judge::sample_then_bisect(in, got, Rules::exact);
+}
+Outcome exact_advance(const AdvancedPair& in, const TimeOfImpact& got) { return judge::advance(in, got, Rules::exact); }
+
+}  // namespace
+
+// ---- Step 1 ------------------------------------------------------------------------------------
+
+TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
+  const RigidTransform pose = quarter_turn_then({5, 0, 0});
+  check::example("placed", "a quarter turn, then 5 along x", Sphere{{1, 0, 0}, 2}, [&](const Sphere& in) {
+    const Sphere s = placed(in, pose);
+    const Box b = placed(Box{in.center, Mat3::Identity(), {2, 1, 1}}, pose);
+    Expect e;
+    e.near("sphere centre", s.center, Vec3(5, 1, 0), 1e-12);
+    e.near("sphere radius", s.radius, 2, 0);
+    e.near("box centre", b.center, Vec3(5, 1, 0), 1e-12);
+    e.near("box axis 0", Vec3(b.axes.col(0)), Vec3(0, 1, 0), 1e-12);
+    e.near("box axis 1", Vec3(b.axes.col(1)), Vec3(-1, 0, 0), 1e-12);
+    e.near("box half extents", b.half_extents, Vec3(2, 1, 1), 0);
+    return e.outcome();
+  });
+
+  const auto spheres = [](bool expected) {
+    return [expected](const Sphere& b) {
+      Expect e;
+      e.equal("overlap", overlap(Sphere{Vec3::Zero(), 1}, b), expected);
+      return e.outcome();
+    };
+  };
+  check::example("overlap spheres", "5 apart, radii 1 and 3: clear", Sphere{{3, 4, 0}, 3}, spheres(false));
+  check::example("overlap spheres", "5 apart, radii 1 and 4: touching counts", Sphere{{3, 4, 0}, 4}, spheres(true));
+  check::example("overlap spheres", "5 apart, radii 1 and 5: overlap", Sphere{{3, 4, 0}, 5}, spheres(true));
+
+  const Box wall{{4, 0, 0}, Mat3::Identity(), {4, 4, 4}};
+  const auto nearest = [](const Vec3& expected) {
+    return [expected](const PointBox& in) {
+      Expect e;
+      e.near("closest point", closest_point(in.box, in.point), expected, 1e-12);
+      return e.outcome();
+    };
+  };
+  check::example("closest_point", "beyond a face and an edge", PointBox{{-3, 2, 5}, wall}, nearest({0, 2, 4}));
+  check::example("closest_point", "inside: the point itself", PointBox{{1, 2, 3}, wall}, nearest({1, 2, 3}));
+  // A box turned a quarter turn: long along y. Clamping world coordinates would give (3, 1, 0).
+  const Box turned{Vec3::Zero(), quarter_turn_then(Vec3::Zero()).linear(), {4, 1, 1}};
+  check::example("closest_point", "a turned box: clamp in its own axes", PointBox{{3, 2, 0}, turned}, nearest({1, 2, 0}));
+
+  const auto sphere_box = [wall](bool expected) {
+    return [wall, expected](const Sphere& a) {
+      Expect e;
+      e.equal("overlap", overlap(a, wall), expected);
+      return e.outcome();
+    };
+  };
+  check::example("overlap sphere box", "squared distance 10, radius 3: clear", Sphere{{-3, 2, 5}, 3}, sphere_box(false));
+  check::example("overlap sphere box", "squared distance 10, radius 4: overlap", Sphere{{-3, 2, 5}, 4}, sphere_box(true));
+  check::example("overlap sphere box", "touching the face x = 0", Sphere{{-2, 0, 0}, 2}, sphere_box(true));
+
+  const auto at = [](bool at_t0, bool at_t1) {
+    return [=](const MovingPairCase& in) {
+      const MovingPair pair = pair_of(in);
+      Expect e;
+      e.equal("overlap_at(t0)", overlap_at(pair, in.times.t0), at_t0);
+      e.equal("overlap_at(t1)", overlap_at(pair, in.times.t1), at_t1);
+      const Outcome o = e.outcome();
+      return o.verdict == Outcome::Verdict::fail ? o : judge::overlap_at(in, at_t0, at_t1);
+    };
+  };
+  check::example("overlap_at", "the ball at x = -1.125, then at x = -0.75", ball_and_wall(0.40625, 0.4375, 1), at(false, true));
+  // A bar 8 long spins a quarter turn about z in one unit of time, and sweeps into a
+  // resting ball 3 from its middle.
+  MovingBody bar = block({4, 1, 1}, resting_at(Vec3::Zero()));
+  bar.motion.spin = std::acos(-1.0) / 2;
+  check::example("overlap_at", "a spinning bar reaches the ball", scene(ball(1, resting_at({0, 3, 0})), bar, 0, 1, 1),
+                 at(false, true));
+}
+
+TEST_CASE("L04S1 overlap at time t: random cases", "[lab04][step1][oracle]") {
+  check::random_cases("closest_point", gen::point_box(), [](const PointBox& in) {
+    return judge::closest_point(in, closest_point(in.box, in.point));
+  });
+  check::random_cases("overlap_at", gen::moving_pair(), [](const MovingPairCase& in) {
+    const MovingPair pair = pair_of(in);
+    return judge::overlap_at(in, overlap_at(pair, in.times.t0), overlap_at(pair, in.times.t1));
+  });
+}
+
+// ---- Step 2 ------------------------------------------------------------------------------------
+
+TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][step2]") {
+  // The lecture's iterations: 0.5 (overlap), 0.25, 0.375 (clear), 0.4375 (overlap), 0.40625 (clear).
+  check::example("bisect", "the lecture's five iterations", ball_and_wall(0, 1, 1.0 / 32),
+                 both<MovingPairCase>(run_bisect, judge_bisect, expect_hit(0.40625, 0.4375, 0, 5)));
+  // Any callable is a motion: this one writes down every time it is asked for a pose.
+  // After the two ends, the times asked are the lecture's midpoints, in its order.
+  check::example("bisect", "the lecture's midpoints, seen by a recording motion", ball_and_wall(0, 1, 1.0 / 32),
+                 [](const MovingPairCase& in) {
+                   MovingPair pair = pair_of(in);
+                   auto asked = std::make_shared<std::vector<double>>();
+                   pair.motion_a = [asked, standard = motion_of(in.a.motion)](double t) {
+                     if (std::find(asked->begin(), asked->end(), t) == asked->end()) asked->push_back(t);
+                     return standard(t);
+                   };
+                   const TimeOfImpact got = bisect(pair, in.times.t0, in.times.t1, in.times.tolerance);
+                   std::vector<double> midpoints;
+                   for (double t : *asked)
+                     if (t != in.times.t0 && t != in.times.t1) midpoints.push_back(t);
+                   Expect e;
+                   e.equal("times asked besides t0 and t1", int(midpoints.size()), 5);
+                   const double lecture[] = {0.5, 0.25, 0.375, 0.4375, 0.40625};
+                   for (std::size_t k = 0; k < std::min<std::size_t>(5, midpoints.size()); ++k)
+                     e.near("midpoint " + std::to_string(k + 1), midpoints[k], lecture[k], 0);
+                   e.near("t", got.t, 0.40625, 0);
+                   return e.outcome();
+                 });
+  check::example("bisect", "a coarse tolerance: two iterations", ball_and_wall(0, 1, 0.25),
+                 both<MovingPairCase>(run_bisect, judge_bisect, expect_hit(0.25, 0.5, 0, 2)));
+  check::example("bisect", "already overlapping at t0", ball_and_wall(0.5, 1, 1.0 / 32),
+                 both<MovingPairCase>(run_bisect, judge_bisect, expect_start(0.5)));
+  check::example("bisect", "still clear at t1: no hit", ball_and_wall(0, 0.25, 1.0 / 32),
+                 both<MovingPairCase>(run_bisect, judge_bisect, expect_no_hit(0.25, 0)));
+}
+
+TEST_CASE("L04S2 bisection to the last clear time: random cases", "[lab04][step2][oracle]") {
+  check::random_cases("bisect", gen::moving_pair(),
+                      [](const MovingPairCase& in) { return judge::bisect(in, run_bisect(in)); });
+}
+
+// ---- Step 3 ------------------------------------------------------------------------------------
+
+TEST_CASE("L04S3 tunnelling and sub-steps: worked examples", "[lab04][step3]") {
+  check::example("smallest_size", "a sphere's diameter, a box's thinnest extent", bullet_and_window(1.0 / 64),
+                 [](const MovingPairCase& in) {
+                   Expect e;
+                   e.near("bullet", smallest_size(shape_of(in.a)), 0.25, 0);
+                   e.near("window", smallest_size(shape_of(in.b)), 0.5, 0);
+                   return e.outcome();
+                 });
+  const auto rule = [](int expected) {
+    return [expected](const SubstepRule& in) {
+      Expect e;
+      e.equal("substeps", substeps_for(in.max_speed, in.step, in.smallest_size), expected);
+      return e.outcome();
+    };
+  };
+  check::example("substeps_for", "6 per unit, size 1/4: 24 is not enough, 25", SubstepRule{6, 1, 0.25}, rule(25));
+  check::example("substeps_for", "6 per unit, size 0.3: 21", SubstepRule{6, 1, 0.3}, rule(21));
+  check::example("substeps_for", "a step of 1/64 at 30 per unit, size 1/8: 3.75, so 4", SubstepRule{30, 1.0 / 64, 0.125}, rule(4));
+  check::example("substeps_for", "not moving: 1", SubstepRule{0, 1, 0.25}, rule(1));
+  check::example("substeps_for", "a point can always be missed: 0", SubstepRule{6, 1, 0}, rule(0));
+  check::example("substeps_for", "more than 2^20 sub-steps: 0", SubstepRule{1e9, 1, 1e-3}, rule(0));
+
+  check::example("sample_then_bisect", "the frame's ends only: the bullet tunnels", SampledPair{bullet_and_window(1.0 / 64), 1},
+                 both<SampledPair>(run_sampled, judge_sampled, expect_no_hit(1, 1)));
+  check::example("sample_then_bisect", "25 sub-steps: sample 11 at t = 0.44 overlaps", SampledPair{bullet_and_window(1.0 / 64), 25},
+                 both<SampledPair>(run_sampled, judge_sampled, expect_hit(0.43, 0.44, 11, 2)));
+  check::example("tunnelling", "the bullet and the window", bullet_and_window(1.0 / 64), [](const MovingPairCase& in) {
+    const MovingPair pair = pair_of(in);
+    const int n = substeps_for(closing_speed_of(in), in.times.t1 - in.times.t0, smallest_size_of(in));
+    return judge::tunnelling(in, n, sample_then_bisect(pair, 0, 1, 1, in.times.tolerance),
+                             sample_then_bisect(pair, 0, 1, n, in.times.tolerance));
+  });
+}
+
+TEST_CASE("L04S3 tunnelling and sub-steps: random cases", "[lab04][step3][oracle]") {
+  check::random_cases("substeps_for", gen::substep_rule(), [](const SubstepRule& in) {
+    return judge::substeps_for(in, substeps_for(in.max_speed, in.step, in.smallest_size));
+  });
+  check::random_cases("sample_then_bisect", gen::sampled_pair(),
+                      [](const SampledPair& in) { return judge::sample_then_bisect(in, run_sampled(in)); });
+  check::random_cases("tunnelling", gen::tunnelling_pair(), [](const MovingPairCase& in) {
+    const MovingPair pair = pair_of(in);
+    const SearchTimes& T = in.times;
+    const int n = substeps_for(closing_speed_of(in), T.t1 - T.t0, smallest_size_of(in));
+    return judge::tunnelling(in, n, sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
+                             sample_then_bisect(pair, T.t0, T.t1, n < 1 ? 1 : n, T.tolerance));
+  });
+}
+
+// ---- Step 4 ------------------------------------------------------------------------------------
+
+TEST_CASE("L04S4 conservative advancement: worked examples", "[lab04][step4]") {
+  const auto spheres = [](double expected) {
+    return [expected](const Sphere& b) {
+      Expect e;
+      e.near("distance", distance(Sphere{Vec3::Zero(), 1}, b), expected, 1e-12);
+      return e.outcome();
+    };
+  };
+  check::example("distance spheres", "5 apart, radii 1 and 3: 1", Sphere{{3, 4, 0}, 3}, spheres(1));
+  check::example("distance spheres", "overlapping: 0", Sphere{{3, 4, 0}, 5}, spheres(0));
+  const Box wall{{4, 0, 0}, Mat3::Identity(), {4, 4, 4}};
+  const auto sphere_box = [wall](double expected) {
+    return [wall, expected](const Sphere& a) {
+      Expect e;
+      e.near("distance", distance(a, wall), expected, 1e-12);
+      return e.outcome();
+    };
+  };
+  check::example("distance sphere box", "sqrt(10) - 3", Sphere{{-3, 2, 5}, 3}, sphere_box(std::sqrt(10.0) - 3));
+  check::example("distance sphere box", "overlapping: 0", Sphere{{-3, 2, 5}, 4}, sphere_box(0));
+  check::example("distance_at", "the ball at t = 0 and at t = 0.3125", ball_and_wall(0, 0.3125, 1), [](const MovingPairCase& in) {
+    const MovingPair pair = pair_of(in);
+    Expect e;
+    e.near("distance_at(0)", distance_at(pair, 0), 5, 1e-12);
+    e.near("distance_at(0.3125)", distance_at(pair, 0.3125), 1.25, 1e-12);
+    return e.outcome();
+  });
+
+  // The ball closes at 12; advancing with the bound 16 leaves 1/4 of the gap each step.
+  check::example("advance", "the ball, bound 16: gaps 5, 1.25, 0.3125, ...", AdvancedPair{ball_and_wall(0, 1, 1.0 / 256), 16.0 / 12},
+                 both<AdvancedPair>(run_advance, judge_advance, expect_hit(0.4150390625, 0.4189453125, 5, 0)));
+  // The exact bound 6 lands on the first touch, t = 7/16; bisection finishes.
+  check::example("advance", "the bullet, exact bound 6: no tunnelling", AdvancedPair{bullet_and_window(1.0 / 64), 1},
+                 both<AdvancedPair>(run_advance, judge_advance, expect_hit(0.423828125, 0.4375, 1, 5)));
+}
+
+TEST_CASE("L04S4 conservative advancement: random cases", "[lab04][step4][oracle]") {
+  check::random_cases("distance_at", gen::moving_pair(), [](const MovingPairCase& in) {
+    const MovingPair pair = pair_of(in);
+    return judge::distance_at(in, distance_at(pair, in.times.t0), distance_at(pair, in.times.t1));
+  });
+  check::random_cases("advance", gen::advanced_pair(),
+                      [](const AdvancedPair& in) { return judge::advance(in, run_advance(in)); });
+}
+
+// ---- Step 5: robustness ---------------------------------------------------------------------------
+// Exact input: the header's rules hold exactly, nothing is ambiguous.
+
+TEST_CASE("L04S5 robustness: touching, grazing, zero sizes", "[lab04][step5]") {
+  // Bodies at rest, tested at t = 0.
+  const auto still = [](const MovingBody& a, const MovingBody& b) { return scene(a, b, 0, 0, 1); };
+  const auto overlapping = [](bool expected) {
+    return [expected](const MovingPairCase& in) {
+      const bool got = overlap_at(pair_of(in), 0);
+      Expect e;
+      e.equal("overlap_at(0)", got, expected);
+      const Outcome o = e.outcome();
+      return o.verdict == Outcome::Verdict::fail ? o : judge::overlap_at(in, got, got, Rules::exact);
+    };
+  };
+  const MovingBody cube = block({2, 2, 2}, resting_at(Vec3::Zero()));
+  const MovingBody square = block({0, 2, 2}, resting_at(Vec3::Zero()));  // a flat box
+  const std::string o = "robust.overlap_at";
+  check::example(o, "a sphere touching an edge, (3, 4) / 5 from it", still(ball(5, resting_at({5, 6, 0})), cube), overlapping(true));
+  check::example(o, "the same sphere, radius 4", still(ball(4, resting_at({5, 6, 0})), cube), overlapping(false));
+  check::example(o, "a sphere touching a corner, (2, 3, 6) / 7 from it", still(ball(7, resting_at({4, 5, 8})), cube), overlapping(true));
+  check::example(o, "a point on a face", still(ball(0, resting_at({2, 1, -1})), cube), overlapping(true));
+  check::example(o, "a point on a flat box", still(ball(0, resting_at({0, 1, 1})), square), overlapping(true));
+  check::example(o, "a sphere touching a flat box", still(ball(1, resting_at({1, 1, 1})), square), overlapping(true));
+  // A box 2^-19 wide and a point 2^-20 beyond its face: the squared gap is 2^-40, far
+  // below a fuzzy 1e-9, and still not zero.
+  const double tiny = std::ldexp(1.0, -20);
+  check::example(o, "a near miss at the scale 1e-6", still(ball(0, resting_at({2 * tiny, 0, 0})), block({tiny, tiny, tiny}, resting_at(Vec3::Zero()))),
+                 overlapping(false));
+  check::example(o, "spheres (3, 4, 0) apart, radii 2 and 3: touching", still(ball(2, resting_at(Vec3::Zero())), ball(3, resting_at({3, 4, 0}))),
+                 [&](const MovingPairCase& in) {
+                   const Outcome touch = overlapping(true)(in);
+                   if (touch.verdict == Outcome::Verdict::fail) return touch;
+                   Expect e;
+                   e.near("distance_at(0)", distance_at(pair_of(in), 0), 0, 0);
+                   return e.outcome();
+                 });
+
+  const std::string q = "robust.bisect";
+  // x(t) = -4 + 3 t touches the wall's face (x = -1) exactly at t1 = 1, and only there.
+  check::example(q, "touching only at t1", scene(ball(1, moving({-4, 0, 0}, {3, 0, 0})), kWall, 0, 1, 0.125),
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.875, 1, 0, 3)));
+  // x(t) = -2 + 2 t touches at the first midpoint, t = 1/2: touching is a contact.
+  check::example(q, "touching at the midpoint", scene(ball(1, moving({-2, 0, 0}, {2, 0, 0})), kWall, 0, 1, 0.125),
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.375, 0.5, 0, 3)));
+  check::example(q, "touching at t0", scene(ball(1, moving({-1, 0, 0}, {2, 0, 0})), kWall, 0, 1, 0.125),
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_start(0)));
+  // A ball along y = 2 grazes a ball of radius 1 at the origin: they touch only at t = 1/2.
+  const MovingPairCase graze = scene(ball(1, moving({-4, 2, 0}, {8, 0, 0})), ball(1, resting_at(Vec3::Zero())), 0, 1, 0.0625);
+  check::example(q, "a graze between the ends is not seen", graze,
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_no_hit(1, 0)));
+  check::example("robust.sample_then_bisect", "a graze at a sample time is a contact", SampledPair{graze, 2},
+                 both<SampledPair>(run_sampled, exact_sampled, expect_hit(0.4375, 0.5, 1, 3)));
+  check::example("robust.advance", "touching at t0: nothing to advance", AdvancedPair{scene(ball(1, moving({-1, 0, 0}, {2, 0, 0})), kWall, 0, 1, 0.125), 1},
+                 both<AdvancedPair>(run_advance, exact_advance, expect_start(0)));
+  check::example("robust.advance", "nothing moves: one advance to t1",
+                 AdvancedPair{scene(ball(1, resting_at({-3, 0, 0})), kWall, 0, 1, 0.125), 1},
+                 both<AdvancedPair>(run_advance, exact_advance, expect_no_hit(1, 1)));
+}
+
+TEST_CASE("L04S5 robustness: random exact cases", "[lab04][step5][oracle]") {
+  check::random_cases("robust.closest_point", gen::exact_point_box(), [](const PointBox& in) {
+    return judge::closest_point(in, closest_point(in.box, in.point), Rules::exact);
+  });
+  check::random_cases("robust.substeps_for", gen::exact_substep_rule(), [](const SubstepRule& in) {
+    return judge::substeps_for(in, substeps_for(in.max_speed, in.step, in.smallest_size), Rules::exact);
+  });
+  check::random_cases("robust.overlap_at", gen::exact_moving_pair(), [](const MovingPairCase& in) {
+    const MovingPair pair = pair_of(in);
+    return judge::overlap_at(in, overlap_at(pair, in.times.t0), overlap_at(pair, in.times.t1), Rules::exact);
+  });
+  check::random_cases("robust.bisect", gen::exact_moving_pair(),
+                      [](const MovingPairCase& in) { return judge::bisect(in, run_bisect(in), Rules::exact); });
+  check::random_cases("robust.sample_then_bisect", gen::exact_sampled_pair(), [](const SampledPair& in) {
+    return judge::sample_then_bisect(in, run_sampled(in), Rules::exact);
+  });
+  check::random_cases("robust.advance", gen::exact_advanced_pair(),
+                      [](const AdvancedPair& in) { return judge::advance(in, run_advance(in), Rules::exact); });
+}
