@@ -323,12 +323,12 @@ Outcome sweep_box_plane(const BoxPlaneMotion& in, const Sweep& got, Rules rules)
 namespace {
 
 // Radii around the cores' exact distance d: exactly d (touching when d is a double),
-// a hair inside or outside (2^-20 to 2^-50 of d), clearly apart or overlapping, or a
+// a hair inside or outside (2^-10 to 2^-50 of d), clearly apart or overlapping, or a
 // plain lattice length.
 double radius_total(double d, double size) {
-  switch (*rc::gen::weightedElement<int>({{2, 0}, {3, 1}, {1, 2}, {1, 3}})) {
+  switch (*rc::gen::weightedElement<int>({{1, 0}, {3, 1}, {2, 2}, {2, 3}})) {
     case 0: return d;
-    case 1: return std::max(0.0, d * (1 + *rc::gen::element(-1.0, 1.0) * *gen::tiny(20, 50)));
+    case 1: return std::max(0.0, d * (1 + *rc::gen::element(-1.0, 1.0) * *gen::tiny(10, 50)));
     case 2: return d * *rc::gen::element(0.5, 0.875, 1.125, 2.0);
     default: return *rc::gen::inRange(0, 9) / 4.0 * std::max(size, 1e-300);
   }
@@ -435,7 +435,7 @@ rc::Gen<Pair> pair_generator(const rc::Gen<Cores>& cores, bool exact, FromCores 
     const Canonical k = canonical();
     return with_radii(canon(k), k.h);
   });
-  return rc::gen::weightedOneOf<Pair>({{exact ? 1 : 4, around}, {1, touching}});
+  return rc::gen::weightedOneOf<Pair>({{exact ? 1 : 6, around}, {1, touching}});
 }
 
 }  // namespace

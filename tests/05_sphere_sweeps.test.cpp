@@ -396,3 +396,4 @@ TEST_CASE("L05S7 robustness: random exact degenerate cases", "[lab05][step7][ora
   check::random_cases("robust.sweep_box_plane", gen::box_plane_motion(true),
                       [](const BP& in) { return run_sweep(in, Rules::exact); });
 }
+

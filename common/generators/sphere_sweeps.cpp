@@ -39,8 +39,8 @@ Vec3 along(const Grid& g, const Vec3& x, const Vec3& d) {
 // A multiplier in (0, 1]: k / 8 on the fine lattice, 1 on the exact one.
 double fraction(const Grid& g) { return g.exact ? 1.0 : *rc::gen::inRange(1, 9) / 8.0; }
 
-// A tiny length: 2^-k (k in [20, 50]) of `size`, times a small integer (may be 0).
-double hair(double size) { return *integer(4) * *tiny(20, 50) * size; }
+// A tiny length: 2^-k (k in [10, 50]) of `size`, times a small integer (may be 0).
+double hair(double size) { return *integer(4) * *tiny(10, 50) * size; }
 
 double largest(std::initializer_list<Vec3> points) { return std::max(1e-300, scale_of(points)); }
 
@@ -283,7 +283,7 @@ rc::Gen<SpherePlaneMotion> sphere_plane_families(bool exact) {
     const double T = duration(g);
     const double side = *rc::gen::element(-1.0, 1.0);
     Vec3 center = grid_point(g);
-    switch (*rc::gen::weightedElement<int>({{3, 0}, {2, 1}, {2, 2}, {2, 3}})) {
+    switch (*rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}})) {
       case 0: break;  // anywhere
       case 1: {  // touching at t = 0 (exactly, on the exact lattice), beside x
         Vec3 beside = plane.normal.cross(grid_direction(g));
@@ -327,7 +327,7 @@ rc::Gen<SphereSphereMotion> sphere_sphere_families(bool exact) {
   return rc::gen::exec([exact] {
     const Grid g = *grid(exact);
     const double T = duration(g);
-    switch (*rc::gen::weightedElement<int>({{3, 0}, {2, 1}, {2, 2}, {1, 3}, {2, 4}})) {
+    switch (*rc::gen::weightedElement<int>({{exact ? 3 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {1, 3}, {2, 4}})) {
       case 0: {  // anywhere, moving anyhow
         const Vec3 c0 = grid_point(g), c1 = grid_point(g);
         return SphereSphereMotion{{c0, grid_length(g)}, grid_direction(g), {c1, grid_length(g)}, grid_direction(g), T};
@@ -382,7 +382,7 @@ rc::Gen<BoxPlaneMotion> box_plane_families(bool exact) {
     double reach = 0;
     for (int i = 0; i < 3; ++i) reach += box.half_extents[i] * std::abs(unit.dot(box.axes.col(i)));
     const double side = *rc::gen::element(-1.0, 1.0);
-    switch (*rc::gen::weightedElement<int>({{3, 0}, {2, 1}, {2, 2}, {2, 3}})) {
+    switch (*rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}})) {
       case 0: break;
       case 1:  // resting on the plane at t = 0 (exactly, on the exact lattice)
         box.center = x + side * reach * unit;
@@ -428,8 +428,8 @@ rc::Gen<SphereSphereMotion> grazing_spheres() {
     if (B == Vec3::Zero()) return SphereSphereMotion{{P * s, n * s}, {}, {}, {}, 1.0};
     const double tc = *rc::gen::inRange(1, 16) / 16.0;
     const Vec3 A = P - tc * B;
-    const int k = *rc::gen::inRange(20, 53);
-    const double e = *rc::gen::element(-1.0, 0.0, 1.0) * std::ldexp(1.0, -k);
+    const int k = *rc::gen::inRange(10, 53);
+    const double e = *rc::gen::weightedElement<double>({{1, 0.0}, {3, -1.0}, {3, 1.0}}) * std::ldexp(1.0, -k);
     const double R = n * (1 + e);
     const Grid g{s, false};
     return place(g, A * s, B * s, R * s, *rc::gen::element(1.0, 1.0, 2.0));

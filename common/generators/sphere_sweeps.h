@@ -7,7 +7,7 @@
 // or lying in a rectangle's plane, stacked and crossing rectangles; for moving shapes:
 // approaching, moving apart, moving sideways or not at all, touching at t = 0, contact
 // exactly at the end of the step, and a nearly-grazing family whose closest approach is
-// within a tiny relative amount (2^-20 to 2^-52) of r0 + r1, inside and outside, at
+// within a tiny relative amount (2^-10 to 2^-52) of r0 + r1, inside and outside, at
 // every scale and from far away. Exact families (for the robustness step) use integers
 // |x| <= 64 times a power of two and axis-aligned rectangles and boxes.
 #pragma once
@@ -96,7 +96,7 @@ rc::Gen<SphereSphereMotion> sphere_sphere_motion(bool exact = false);
 rc::Gen<BoxPlaneMotion> box_plane_motion(bool exact = false);
 
 // The nearly-grazing spheres alone: closest approach (r0 + r1)(1 + e), |e| = 2^-k for k
-// in [20, 52] or e = 0, both signs, at every scale, the spheres' size from 2^-12 to 1 of
+// in [10, 52] or e = 0, both signs, at every scale, the spheres' size from 2^-12 to 1 of
 // their distance at t = 0.
 rc::Gen<SphereSphereMotion> grazing_spheres();
 // Spheres a hair apart at t = 0 (gap 2^-k of their size) that approach at a clear angle:

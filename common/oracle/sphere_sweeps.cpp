@@ -1,38 +1,67 @@
 #include "common/oracle/sphere_sweeps.h"
 #include "common/oracle/kernel.h"
 
+#include <CGAL/Interval_nt.h>
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Simple_cartesian.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
+#include <limits>
+#include <optional>
+#include <vector>
 
 namespace oracle {
 
 using namespace kernel;
 
+// The exact squared distance, computed only when needed: a certified interval around it
+// (interval arithmetic, filled when every comparison on the way was certain) settles
+// most questions; the exact number is built from `compute` otherwise.
 struct SquaredDistance::Exact {
-  FT value;
+  bool bounded = false;
+  double low = 0.0, high = 0.0;
+  std::function<FT()> compute;
+  mutable std::optional<FT> value;
+  const FT& exact() const {
+    if (!value) value = compute();
+    return *value;
+  }
 };
 
 namespace {
 
 using Point = Epeck::Point_3;
 using Vector = Epeck::Vector_3;
-using ExactSegment = Epeck::Segment_3;
-using ExactTriangle = Epeck::Triangle_3;
-
-SquaredDistance make(const FT& value) { return SquaredDistance(std::make_shared<SquaredDistance::Exact>(SquaredDistance::Exact{value})); }
+using Interval = CGAL::Interval_nt<false>;
+using IK = CGAL::Simple_cartesian<Interval>;  // interval arithmetic: certified bounds, or an exception
 
 Vector exact_vector(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 
 FT squared(const FT& x) { return x * x; }
 
-FT distance2(const Point& p, const ExactSegment& s) {
-  return s.is_degenerate() ? CGAL::squared_distance(p, s.source()) : CGAL::squared_distance(p, s);
+template <class K> typename K::Point_3 point_of(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+template <class K> typename K::Vector_3 vector_of(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+template <class K> typename K::Segment_3 segment_of(const Segment& s) { return {point_of<K>(s.a), point_of<K>(s.b)}; }
+
+// The smaller of two squared distances; for intervals, an interval holding it.
+FT lower(const FT& a, const FT& b) { return CGAL::min(a, b); }
+Interval lower(const Interval& a, const Interval& b) {
+  return Interval(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup()));
 }
 
-FT distance2(const ExactSegment& s0, const ExactSegment& s1) {
-  if (s0.is_degenerate()) return distance2(s0.source(), s1);
-  if (s1.is_degenerate()) return distance2(s1.source(), s0);
+template <class K>
+typename K::FT distance2(const typename K::Point_3& p, const typename K::Segment_3& s) {
+  if (s.is_degenerate()) return CGAL::squared_distance(p, s.source());
+  return CGAL::squared_distance(p, s);
+}
+
+template <class K>
+typename K::FT distance2(const typename K::Segment_3& s0, const typename K::Segment_3& s1) {
+  if (s0.is_degenerate()) return distance2<K>(s0.source(), s1);
+  if (s1.is_degenerate()) return distance2<K>(s1.source(), s0);
   return CGAL::squared_distance(s0, s1);
 }
 
@@ -43,52 +72,229 @@ FT distance2(const ExactSegment& s0, const ExactSegment& s1) {
 //    |     v ^   |        triangles: c0 c1 c3 and c0 c3 c2
 //    |       +-> u
 //    c0 ------- c1
-struct ExactRectangle {
-  std::array<Point, 4> corner;
+template <class K>
+struct RectangleOf {
+  using P = typename K::Point_3;
+  std::array<P, 4> corner;
   bool flat = false;  // half_u == 0 or half_v == 0: a segment (or a point)
 
-  explicit ExactRectangle(const Rectangle& r) {
-    const Point c = exact(r.center);
-    const Vector u = exact_vector(r.u) * FT(r.half_u), v = exact_vector(r.v) * FT(r.half_v);
+  explicit RectangleOf(const Rectangle& r) {
+    const P c = point_of<K>(r.center);
+    const typename K::Vector_3 u = vector_of<K>(r.u) * typename K::FT(r.half_u), v = vector_of<K>(r.v) * typename K::FT(r.half_v);
     for (int k = 0; k < 4; ++k) corner[k] = c + (k & 1 ? u : -u) + (k & 2 ? v : -v);
     flat = r.half_u == 0 || r.half_v == 0;
   }
   // A flat rectangle is the segment between opposite corners.
-  ExactSegment diagonal() const { return {corner[0], corner[3]}; }
-  ExactSegment side(int i) const {
+  typename K::Segment_3 diagonal() const { return {corner[0], corner[3]}; }
+  typename K::Segment_3 side(int i) const {
     static const int from[4] = {0, 1, 3, 2}, to[4] = {1, 3, 2, 0};
     return {corner[from[i]], corner[to[i]]};
   }
-  ExactTriangle triangle(int i) const {
-    return i == 0 ? ExactTriangle(corner[0], corner[1], corner[3]) : ExactTriangle(corner[0], corner[3], corner[2]);
+  typename K::Triangle_3 triangle(int i) const {
+    return i == 0 ? typename K::Triangle_3(corner[0], corner[1], corner[3]) : typename K::Triangle_3(corner[0], corner[3], corner[2]);
   }
 };
 
-FT distance2(const Point& p, const ExactRectangle& r) {
-  if (r.flat) return distance2(p, r.diagonal());
-  return CGAL::min(CGAL::squared_distance(p, r.triangle(0)), CGAL::squared_distance(p, r.triangle(1)));
+// The smallest of several squared distances ("items"), found by branch and bound so
+// that exact arithmetic is rarely needed:
+//  1. each item comes with a certified lower bound (the squared gap between the two
+//     objects' bounding boxes) and upper bound (the squared distance between a vertex of
+//     each);
+//  2. items are visited by lower bound; one whose lower bound is above the best upper
+//     bound so far cannot be the minimum and is dropped unevaluated;
+//  3. the others are evaluated in interval arithmetic, or, when that meets an uncertain
+//     comparison (degenerate input: a point exactly on an edge, parallel segments),
+//     exactly at once;
+//  4. the exact minimum of the survivors is computed only if a comparison needs it.
+class Minimum {
+ public:
+  // a, b: the two objects in interval arithmetic (for their boxes and a vertex each);
+  // bound(): the squared distance in interval arithmetic (may throw); exact(): exactly.
+  template <class A, class B, class Bound, class Exact>
+  void add(const A& a, const B& b, Bound&& bound, Exact&& exact) {
+    CGAL::Protect_FPU_rounding<true> rounding;
+    Item item;
+    item.lower = box_gap2(a.bbox(), b.bbox());
+    item.upper = CGAL::squared_distance(vertex(a), vertex(b)).sup();
+    item.bound = std::forward<Bound>(bound);
+    item.exact = std::forward<Exact>(exact);
+    items_.push_back(std::move(item));
+  }
+  // An intersection test of a segment and a triangle: meeting makes the distance 0.
+  template <class A, class B, class Bound, class Exact>
+  void meets(const A& a, const B& b, Bound&& bound, Exact&& exact) {
+    if (zero_) return;
+    bool certain = false, meet = false;
+    {
+      CGAL::Protect_FPU_rounding<true> rounding;
+      if (box_gap2(a.bbox(), b.bbox()) > 0) return;  // their boxes are apart
+      try {
+        meet = bound();
+        certain = true;
+      } catch (const CGAL::Uncertain_conversion_exception&) {
+      }
+    }
+    if (!certain) meet = exact();
+    zero_ = zero_ || meet;
+  }
+  bool zero() const { return zero_; }
+
+  SquaredDistance result() {
+    auto e = std::make_shared<SquaredDistance::Exact>();
+    e->bounded = true;
+    if (zero_) {
+      e->compute = [] { return FT(0); };
+      return SquaredDistance(std::move(e));
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (const Item& i : items_) best = std::min(best, i.upper);
+    std::sort(items_.begin(), items_.end(), [](const Item& x, const Item& y) { return x.lower < y.lower; });
+    std::vector<Item> kept;
+    for (Item& i : items_) {
+      if (i.lower > best) break;  // this one and every later one: above an upper bound
+      evaluate(i);
+      best = std::min(best, i.interval.sup());
+      kept.push_back(std::move(i));
+    }
+    double low = std::numeric_limits<double>::infinity();
+    std::vector<Item> survivors;
+    for (Item& i : kept)
+      if (i.interval.inf() <= best) {
+        low = std::min(low, i.interval.inf());
+        survivors.push_back(std::move(i));
+      }
+    e->low = low;
+    e->high = best;
+    e->compute = [survivors = std::move(survivors)]() mutable {
+      FT m = survivors[0].value ? *survivors[0].value : survivors[0].exact();
+      for (std::size_t k = 1; k < survivors.size(); ++k)
+        m = CGAL::min(m, survivors[k].value ? *survivors[k].value : survivors[k].exact());
+      return m;
+    };
+    return SquaredDistance(std::move(e));
+  }
+
+ private:
+  struct Item {
+    double lower = 0.0, upper = 0.0;
+    std::function<Interval()> bound;
+    std::function<FT()> exact;
+    Interval interval = Interval(0);
+    std::optional<FT> value;
+  };
+  static IK::Point_3 vertex(const IK::Point_3& p) { return p; }
+  static IK::Point_3 vertex(const IK::Segment_3& s) { return s.source(); }
+  static IK::Point_3 vertex(const IK::Triangle_3& t) { return t[0]; }
+  // A lower bound of the squared distance between two boxes (rounding upward: the
+  // gaps' lower ends are taken from -(lower - upper)).
+  static double box_gap2(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b) {
+    Interval sum(0);
+    for (int k = 0; k < 3; ++k) {
+      const double gap = std::max({0.0, -(Interval(a.max(k)) - Interval(b.min(k))).sup(), -(Interval(b.max(k)) - Interval(a.min(k))).sup()});
+      sum += CGAL::square(Interval(gap));
+    }
+    return sum.inf();
+  }
+  static void evaluate(Item& i) {
+    {
+      CGAL::Protect_FPU_rounding<true> rounding;
+      try {
+        i.interval = i.bound();
+        return;
+      } catch (const CGAL::Uncertain_conversion_exception&) {
+      }
+    }
+    i.value = i.exact();
+    i.interval = CGAL::to_interval(*i.value);
+  }
+  std::vector<Item> items_;
+  bool zero_ = false;
+};
+
+// A point or a segment of the input: given by doubles, or a corner or side of a
+// rectangle (exact rationals). Copied by value: exact items may be computed later.
+struct PointSource {
+  Vec3 p = Vec3::Zero();
+  Rectangle rect;
+  int corner = -1;  // -1: p itself
+  template <class K> typename K::Point_3 get() const { return corner < 0 ? point_of<K>(p) : RectangleOf<K>(rect).corner[corner]; }
+};
+struct SegmentSource {
+  Segment s;
+  Rectangle rect;
+  int side = -1;  // -1: s itself
+  template <class K> typename K::Segment_3 get() const { return side < 0 ? segment_of<K>(s) : RectangleOf<K>(rect).side(side); }
+  PointSource end(int k) const {
+    static const int from[4] = {0, 1, 3, 2}, to[4] = {1, 3, 2, 0};
+    if (side < 0) return {k == 0 ? s.a : s.b, {}, -1};
+    return {Vec3::Zero(), rect, k == 0 ? from[side] : to[side]};
+  }
+  // Exactly zero length: a == b, or a side along a zero half-size.
+  bool degenerate() const { return side < 0 ? s.a == s.b : (side % 2 == 0 ? rect.half_u == 0 : rect.half_v == 0); }
+};
+
+bool flat(const Rectangle& r) { return r.half_u == 0 || r.half_v == 0; }
+
+// The point against the closed rectangle: its two triangles (a flat one is a segment).
+void add_point_rectangle(Minimum& m, const PointSource& p, const Rectangle& r) {
+  CGAL::Protect_FPU_rounding<true> rounding;  // interval arithmetic below
+  const IK::Point_3 pi = p.get<IK>();
+  const RectangleOf<IK> ri(r);
+  if (flat(r)) {
+    const IK::Segment_3 d = ri.diagonal();
+    m.add(pi, d, [pi, d] { return distance2<IK>(pi, d); },
+          [p, r] { return distance2<Epeck>(p.get<Epeck>(), RectangleOf<Epeck>(r).diagonal()); });
+    return;
+  }
+  for (int i = 0; i < 2; ++i) {
+    const IK::Triangle_3 t = ri.triangle(i);
+    m.add(pi, t, [pi, t] { return CGAL::squared_distance(pi, t); },
+          [p, r, i] { return CGAL::squared_distance(p.get<Epeck>(), RectangleOf<Epeck>(r).triangle(i)); });
+  }
 }
 
-// A segment and a rectangle that do not meet: a closest pair has an end of the segment
-// or a point of the rectangle's border in it (both are convex), so the ends against the
-// two triangles and the segment against the four sides cover it.
-FT distance2(const ExactSegment& s, const ExactRectangle& r) {
-  if (s.is_degenerate()) return distance2(s.source(), r);
-  if (r.flat) return distance2(s, r.diagonal());
-  if (CGAL::do_intersect(s, r.triangle(0)) || CGAL::do_intersect(s, r.triangle(1))) return FT(0);
-  FT best = CGAL::min(distance2(s.source(), r), distance2(s.target(), r));
-  for (int i = 0; i < 4; ++i) best = CGAL::min(best, distance2(s, r.side(i)));
-  return best;
+// A segment against a closed rectangle. If they meet, 0. Otherwise a closest pair has an
+// end of the segment or a point of the rectangle's border in it (both are convex): the
+// ends against the rectangle, the segment against the four sides. With `ends` = false
+// the caller covers the ends itself.
+void add_segment_rectangle(Minimum& m, const SegmentSource& s, const Rectangle& r, bool ends = true) {
+  if (s.degenerate()) {
+    if (ends) add_point_rectangle(m, s.end(0), r);
+    return;
+  }
+  CGAL::Protect_FPU_rounding<true> rounding;  // interval arithmetic below
+  const IK::Segment_3 si = s.get<IK>();
+  const RectangleOf<IK> ri(r);
+  if (flat(r)) {
+    const IK::Segment_3 d = ri.diagonal();
+    m.add(si, d, [si, d] { return distance2<IK>(si, d); },
+          [s, r] { return distance2<Epeck>(s.get<Epeck>(), RectangleOf<Epeck>(r).diagonal()); });
+    return;
+  }
+  for (int i = 0; i < 2; ++i) {
+    const IK::Triangle_3 t = ri.triangle(i);
+    m.meets(si, t, [&] { return bool(CGAL::do_intersect(si, t)); },
+            [&] { return bool(CGAL::do_intersect(s.get<Epeck>(), RectangleOf<Epeck>(r).triangle(i))); });
+  }
+  if (m.zero()) return;
+  if (ends) {
+    add_point_rectangle(m, s.end(0), r);
+    add_point_rectangle(m, s.end(1), r);
+  }
+  for (int i = 0; i < 4; ++i) {
+    const IK::Segment_3 side = ri.side(i);
+    m.add(si, side, [si, side] { return distance2<IK>(si, side); },
+          [s, r, i] { return distance2<Epeck>(s.get<Epeck>(), RectangleOf<Epeck>(r).side(i)); });
+  }
 }
 
-// Two rectangles: a closest pair has a point of some side of one of them (if both points
-// were inside, the rectangles would be parallel there, and a side gets as close), and a
-// side that meets the other rectangle has distance 0. So: eight sides.
-FT distance2(const ExactRectangle& r0, const ExactRectangle& r1) {
-  FT best = distance2(r0.side(0), r1);
-  for (int i = 1; i < 4; ++i) best = CGAL::min(best, distance2(r0.side(i), r1));
-  for (int i = 0; i < 4; ++i) best = CGAL::min(best, distance2(r1.side(i), r0));
-  return best;
+// `bound` computes the distance in interval arithmetic (it may throw when a comparison
+// is uncertain: then there is no bound); `exact` in exact arithmetic, when asked.
+template <class A, class B, class Bound>
+SquaredDistance make(const A& a, const B& b, Bound&& bound, std::function<FT()> exact) {
+  Minimum m;
+  m.add(a, b, std::forward<Bound>(bound), std::move(exact));
+  return m.result();
 }
 
 int sign_of_compare(const FT& a, const FT& b) { return CGAL::compare(a, b) == CGAL::SMALLER ? -1 : (a == b ? 0 : 1); }
@@ -174,17 +380,62 @@ bool dot_exact(const Vec3& x, const Vec3& y) {
 
 // ---- Distances --------------------------------------------------------------------------
 
-double SquaredDistance::value() const { return rounded(exact_->value); }
-double SquaredDistance::distance() const { return std::sqrt(value()); }
-int SquaredDistance::compare(double l0, double l1, double l2) const { return distance_sign(exact_->value, sum(l0, l1, l2)); }
+double SquaredDistance::value() const {
+  if (exact_->bounded && exact_->high <= 0) return 0.0;
+  if (exact_->bounded && exact_->high - exact_->low <= 1e-13 * exact_->high) return 0.5 * (exact_->low + exact_->high);
+  return rounded(exact_->exact());
+}
 
-SquaredDistance squared_distance(const Vec3& p, const Vec3& q) { return make(CGAL::squared_distance(exact(p), exact(q))); }
-SquaredDistance squared_distance(const Vec3& p, const Segment& s) { return make(distance2(exact(p), exact(s))); }
-SquaredDistance squared_distance(const Segment& s0, const Segment& s1) { return make(distance2(exact(s0), exact(s1))); }
-SquaredDistance squared_distance(const Vec3& p, const Rectangle& r) { return make(distance2(exact(p), ExactRectangle(r))); }
-SquaredDistance squared_distance(const Segment& s, const Rectangle& r) { return make(distance2(exact(s), ExactRectangle(r))); }
+double SquaredDistance::distance() const { return std::sqrt(value()); }
+
+int SquaredDistance::compare(double l0, double l1, double l2) const {
+  if (exact_->bounded) {
+    CGAL::Protect_FPU_rounding<true> upward;
+    const Interval length = Interval(l0) + Interval(l1) + Interval(l2);
+    if (length.sup() < 0) return 1;
+    if (length.inf() >= 0) {
+      const Interval length2 = CGAL::square(length);
+      if (exact_->high < length2.inf()) return -1;
+      if (exact_->low > length2.sup()) return 1;
+    }
+  }
+  return distance_sign(exact_->exact(), sum(l0, l1, l2));
+}
+
+SquaredDistance squared_distance(const Vec3& p, const Vec3& q) {
+  const IK::Point_3 a = point_of<IK>(p), b = point_of<IK>(q);
+  return make(a, b, [a, b] { return CGAL::squared_distance(a, b); }, [p, q] { return CGAL::squared_distance(exact(p), exact(q)); });
+}
+SquaredDistance squared_distance(const Vec3& p, const Segment& s) {
+  const IK::Point_3 a = point_of<IK>(p);
+  const IK::Segment_3 b = segment_of<IK>(s);
+  return make(a, b, [a, b] { return distance2<IK>(a, b); }, [p, s] { return distance2<Epeck>(exact(p), exact(s)); });
+}
+SquaredDistance squared_distance(const Segment& s0, const Segment& s1) {
+  const IK::Segment_3 a = segment_of<IK>(s0), b = segment_of<IK>(s1);
+  return make(a, b, [a, b] { return distance2<IK>(a, b); }, [s0, s1] { return distance2<Epeck>(exact(s0), exact(s1)); });
+}
+SquaredDistance squared_distance(const Vec3& p, const Rectangle& r) {
+  Minimum m;
+  add_point_rectangle(m, {p, {}, -1}, r);
+  return m.result();
+}
+SquaredDistance squared_distance(const Segment& s, const Rectangle& r) {
+  Minimum m;
+  add_segment_rectangle(m, {s, {}, -1}, r);
+  return m.result();
+}
+// Two rectangles: a closest pair has a point of some side of one of them (if both points
+// were inside, the rectangles would be parallel there, and a side gets as close), and a
+// side that meets the other rectangle has distance 0. So: the eight sides, each against
+// the other rectangle (the corners once each rather than twice, as sides' ends).
 SquaredDistance squared_distance(const Rectangle& r0, const Rectangle& r1) {
-  return make(distance2(ExactRectangle(r0), ExactRectangle(r1)));
+  Minimum m;
+  for (int k = 0; k < 4; ++k) add_point_rectangle(m, {Vec3::Zero(), r0, k}, r1);
+  for (int k = 0; k < 4; ++k) add_point_rectangle(m, {Vec3::Zero(), r1, k}, r0);
+  for (int i = 0; i < 4 && !m.zero(); ++i) add_segment_rectangle(m, {{}, r0, i}, r1, false);
+  for (int i = 0; i < 4 && !m.zero(); ++i) add_segment_rectangle(m, {{}, r1, i}, r0, false);
+  return m.result();
 }
 
 bool rectangle_point_reproduces(const Rectangle& r, double s, double t, const Vec3& x, double tolerance) {
