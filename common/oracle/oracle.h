@@ -9,3 +9,4 @@
 #include "common/oracle/posed_shapes.h"
 #include "common/oracle/predicates.h"
 #include "common/oracle/segment_triangle.h"
+#include "common/oracle/sphere_sweeps.h"

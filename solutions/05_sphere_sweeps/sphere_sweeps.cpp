@@ -1,0 +1,388 @@
+// Lab 05 reference: sphere-swept volumes, static and moving.
+//
+// Two ideas carry the lab.
+//  - Table 6.1: two sphere-swept volumes meet exactly when their cores (point, segment,
+//    rectangle) are within r0 + r1. So the work is distances between cores, and each
+//    distance is a small convex minimisation whose minimum sits at a few candidate
+//    places: the interior critical point when it is inside, else on the border.
+//  - Decide, then construct (as in lab 02). A yes/no is decided by comparing a squared
+//    distance written as num / den without dividing (num <= R^2 den): on small-integer
+//    input every such product is exact, so "exactly touching" comes out exactly. Points
+//    and times are built afterwards and carry the rounding.
+// For moving spheres the quadratic's roots are taken in the form that never subtracts
+// nearly equal numbers, and the closest approach in the form that never subtracts two
+// big squares (the cross product), so nearly-grazing cases keep their accuracy.
+#include "sphere_sweeps.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+namespace labkit::lab05 {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+double square(double x) { return x * x; }
+
+// a + t (b - a), landing exactly on b at t = 1.
+Vec3 point_at(const Segment& s, double t) { return t == 1.0 ? s.b : Vec3(s.a + t * (s.b - s.a)); }
+
+// ---- Division-free "within" tests (the decisions of step 3) ----------------------------
+
+// Is p within sqrt(r2) of the closed segment? The regions of point_segment, compared
+// without dividing: the squared distance to the line is |w x d|^2 / |d|^2.
+bool point_segment_within(const Vec3& p, const Segment& s, double r2) {
+  const Vec3 d = s.b - s.a, w = p - s.a;
+  const double wd = w.dot(d);
+  if (wd <= 0) return w.squaredNorm() <= r2;  // a is nearest (also when a == b)
+  const double dd = d.squaredNorm();
+  if (wd >= dd) return (p - s.b).squaredNorm() <= r2;  // b is nearest
+  return w.cross(d).squaredNorm() <= r2 * dd;
+}
+
+// Are the segments within sqrt(r2)? Either an end is (the border of the (s, t) square),
+// or the lines' closest points lie inside both segments and the lines are that close:
+// with n = d0 x d1, the lines' distance is |w . n| / |n|, and the closest points have
+// s = ((w x d1) . n) / |n|^2, t = ((w x d0) . n) / |n|^2.
+bool segment_segment_within(const Segment& s0, const Segment& s1, double r2) {
+  if (point_segment_within(s0.a, s1, r2) || point_segment_within(s0.b, s1, r2) ||
+      point_segment_within(s1.a, s0, r2) || point_segment_within(s1.b, s0, r2))
+    return true;
+  const Vec3 d0 = s0.b - s0.a, d1 = s1.b - s1.a, w = s1.a - s0.a;
+  const Vec3 n = d0.cross(d1);
+  const double nn = n.squaredNorm();
+  if (nn == 0) return false;  // parallel (or a zero-length segment): the ends decided
+  const double s = w.cross(d1).dot(n), t = w.cross(d0).dot(n);
+  if (s < 0 || s > nn || t < 0 || t > nn) return false;  // the lines meet nearest outside: the ends decided
+  return square(w.dot(n)) <= r2 * nn;
+}
+
+// The rectangle's corner k: signs (k & 1 ? + : -) along u and (k & 2 ? + : -) along v.
+//
+//    c2 ------- c3        side 0: c0 c1, side 1: c1 c3,
+//    |     v ^   |        side 2: c3 c2, side 3: c2 c0
+//    |       +-> u
+//    c0 ------- c1
+Vec3 corner(const Rectangle& r, int k) {
+  return r.center + (k & 1 ? r.half_u : -r.half_u) * r.u + (k & 2 ? r.half_v : -r.half_v) * r.v;
+}
+Segment side(const Rectangle& r, int i) {
+  static const int from[4] = {0, 1, 3, 2}, to[4] = {1, 3, 2, 0};
+  return {corner(r, from[i]), corner(r, to[i])};
+}
+// Rectangle coordinates (s, t) of the point `tau` of the way along side i.
+Vec2 side_coordinates(const Rectangle& r, int i, double tau) {
+  static const int from[4] = {0, 1, 3, 2}, to[4] = {1, 3, 2, 0};
+  const auto at = [&](int k) { return Vec2(k & 1 ? r.half_u : -r.half_u, k & 2 ? r.half_v : -r.half_v); };
+  return at(from[i]) + tau * (at(to[i]) - at(from[i]));
+}
+
+// Where the segment crosses the rectangle's plane, as a fraction num / den of the way
+// from a to b, if that point is inside the closed rectangle. With f = (x - c) . (u x v)
+// the heights of the ends, the crossing is (f_a b - f_b a) / (f_a - f_b); its rectangle
+// coordinates times (f_a - f_b) are f_a s_b - f_b s_a and f_a t_b - f_b t_a, compared
+// with the half-sizes times |f_a - f_b|: no division.
+struct Crossing {
+  bool inside = false;
+  double num = 0.0, den = 1.0;  // the crossing is a + (num / den) (b - a)
+};
+Crossing crossing(const Segment& seg, const Rectangle& r) {
+  const Vec3 n = r.u.cross(r.v);
+  const Vec3 wa = seg.a - r.center, wb = seg.b - r.center;
+  const double fa = wa.dot(n), fb = wb.dot(n);
+  if ((fa > 0 && fb > 0) || (fa < 0 && fb < 0)) return {};  // both ends strictly on one side
+  if (fa == 0 && fb == 0) return {};  // in the plane: the ends and the sides decide
+  const double den = fa - fb;
+  const double s = fa * wb.dot(r.u) - fb * wa.dot(r.u), t = fa * wb.dot(r.v) - fb * wa.dot(r.v);
+  if (std::abs(s) > r.half_u * std::abs(den) || std::abs(t) > r.half_v * std::abs(den)) return {};  // beside it
+  return {true, fa, den};
+}
+
+bool point_rectangle_within(const Vec3& p, const Rectangle& r, double r2) {
+  return point_rectangle(p, r).squared_distance <= r2;  // no division: exact on small integers
+}
+
+// The segment meets the rectangle, or an end is within reach of it, or the segment is
+// within reach of one of its sides: the same candidates as segment_rectangle.
+bool segment_rectangle_within(const Segment& seg, const Rectangle& r, double r2) {
+  if (crossing(seg, r).inside) return true;
+  if (point_rectangle_within(seg.a, r, r2) || point_rectangle_within(seg.b, r, r2)) return true;
+  for (int i = 0; i < 4; ++i)
+    if (segment_segment_within(seg, side(r, i), r2)) return true;
+  return false;
+}
+
+// ---- Sweeps -----------------------------------------------------------------------------
+
+Sweep overlapping() { return {SweepStatus::overlapping, 0.0, Vec3::Zero()}; }
+
+// A shape whose value f(t) = f0 + g t against the plane (|normal| times the signed
+// distance of its centre) must come within `reach` (|normal| times its radius):
+// the lecture's |N . C(t) - d| = r, solved from the side it starts on.
+struct PlaneApproach {
+  bool contact = false;
+  double side = 1.0;  // the side the centre starts on: sign(f0)
+  double time = 0.0;
+};
+PlaneApproach approach_plane(double f0, double g, double reach, double reach2, double duration) {
+  PlaneApproach a;
+  a.side = f0 > 0 ? 1.0 : -1.0;
+  // Moving away from the plane, or along it (the lecture's "T < 0"): never.
+  if (a.side * g >= 0) return a;
+  // Still clear at the end of the step: |f(T)| > reach on the starting side.
+  const double end = a.side * (f0 + g * duration);
+  if (end > 0 && square(end) > reach2) return a;
+  a.contact = true;
+  // side * f(t) falls from side * f0 to reach at t = (side f0 - reach) / (-side g).
+  a.time = std::clamp((a.side * f0 - reach) / (-a.side * g), 0.0, duration);
+  return a;
+}
+
+}  // namespace
+
+// ---- Step 1 --------------------------------------------------------------------------------
+
+PointSegmentDistance point_segment(const Vec3& p, const Segment& segment) {
+  // Minimise |a + t d - p|^2 over t: the derivative vanishes at t = (p - a) . d / (d . d);
+  // the function is a parabola, so outside [0, 1] the nearer end wins.
+  const Vec3 d = segment.b - segment.a;
+  const double wd = (p - segment.a).dot(d), dd = d.squaredNorm();
+  PointSegmentDistance r;
+  if (wd <= 0 || dd == 0) r.t = 0.0;  // behind a, or a zero-length segment
+  else if (wd >= dd) r.t = 1.0;       // beyond b
+  else r.t = wd / dd;
+  r.closest = point_at(segment, r.t);
+  r.squared_distance = (p - r.closest).squaredNorm();
+  return r;
+}
+
+//   Derivation. F(s, t) = |a0 + s d0 - a1 - t d1|^2 is a convex quadratic on the square
+//   [0, 1]^2. Its minimum is the lines' closest pair when that pair lies inside the
+//   square; otherwise it is on the square's border, where one parameter is 0 or 1: an
+//   end against the other segment, which point_segment solves exactly. The lines'
+//   pair, with w = a1 - a0 and n = d0 x d1 (crossing a0 + s d0 + h n = a1 + t d1 with
+//   d1, then d0, and dotting with n):
+//
+//       s = ((w x d1) . n) / |n|^2,   t = ((w x d0) . n) / |n|^2.
+//
+//   The textbook form s = (b e - c d) / (a c - b^2) divides by a c - b^2, which cancels
+//   catastrophically for nearly parallel segments; |n|^2 is the same number (Lagrange's
+//   identity) computed without that cancellation.
+//
+//   Parallel segments (n = 0) have no single lines' pair: the border candidates hold a
+//   closest pair, and we return the first minimal one.
+SegmentSegmentDistance segment_segment(const Segment& first, const Segment& second) {
+  SegmentSegmentDistance best;
+  best.squared_distance = kInfinity;
+  const auto consider = [&](double s, double t, const Vec3& p, const Vec3& q) {
+    const double d2 = (p - q).squaredNorm();
+    if (d2 < best.squared_distance) best = {d2, s, t, p, q};
+  };
+
+  const Vec3 d0 = first.b - first.a, d1 = second.b - second.a;
+  const Vec3 n = d0.cross(d1);
+  const double nn = n.squaredNorm();
+  if (nn > 0) {
+    const Vec3 w = second.a - first.a;
+    const double s = w.cross(d1).dot(n) / nn, t = w.cross(d0).dot(n) / nn;
+    if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
+      consider(s, t, point_at(first, s), point_at(second, t));
+      // Clearly not parallel (sin^2 of the angle above 1e-4): this pair is accurate and,
+      // being the unconstrained minimum, no border point beats it.
+      if (nn > 1e-4 * d0.squaredNorm() * d1.squaredNorm()) return best;
+    }
+  }
+  // The border: each end against the other segment.
+  for (double s : {0.0, 1.0}) {
+    const Vec3 p = s == 0 ? first.a : first.b;
+    const PointSegmentDistance e = point_segment(p, second);
+    consider(s, e.t, p, e.closest);
+  }
+  for (double t : {0.0, 1.0}) {
+    const Vec3 q = t == 0 ? second.a : second.b;
+    const PointSegmentDistance e = point_segment(q, first);
+    consider(e.t, t, e.closest, q);
+  }
+  return best;
+}
+
+// ---- Step 2 --------------------------------------------------------------------------------
+
+PointRectangleDistance point_rectangle(const Vec3& p, const Rectangle& rectangle) {
+  // In the rectangle's frame the squared distance is (s - s_p)^2 + (t - t_p)^2 + h^2,
+  // with s_p = (p - c) . u, t_p = (p - c) . v: each coordinate is minimised on its own,
+  // by clamping to the half-size. h, the height above the plane, is whatever it is.
+  const Vec3 w = p - rectangle.center;
+  PointRectangleDistance r;
+  r.s = std::clamp(w.dot(rectangle.u), -rectangle.half_u, rectangle.half_u);
+  r.t = std::clamp(w.dot(rectangle.v), -rectangle.half_v, rectangle.half_v);
+  r.closest = rectangle.center + r.s * rectangle.u + r.t * rectangle.v;
+  r.squared_distance = (p - r.closest).squaredNorm();
+  return r;
+}
+
+//   Both shapes are convex. If the segment pierces the rectangle the distance is 0, at
+//   the crossing. Otherwise a closest pair has an end of the segment in it, or a point of
+//   the rectangle's border (if both points were interior, the segment would run parallel
+//   to the rectangle there and could slide to an end or the border without getting
+//   farther). So: two ends against the rectangle, the segment against four sides.
+SegmentRectangleDistance segment_rectangle(const Segment& segment, const Rectangle& rectangle) {
+  SegmentRectangleDistance best;
+  const Crossing x = crossing(segment, rectangle);
+  if (x.inside) {
+    best.r = std::clamp(x.num / x.den, 0.0, 1.0);
+    best.closest0 = point_at(segment, best.r);
+    const PointRectangleDistance on = point_rectangle(best.closest0, rectangle);
+    best.s = on.s;
+    best.t = on.t;
+    best.closest1 = on.closest;
+    best.squared_distance = on.squared_distance;
+    return best;
+  }
+  best.squared_distance = kInfinity;
+  for (double r : {0.0, 1.0}) {
+    const Vec3 p = r == 0 ? segment.a : segment.b;
+    const PointRectangleDistance e = point_rectangle(p, rectangle);
+    if (e.squared_distance < best.squared_distance) best = {e.squared_distance, r, e.s, e.t, p, e.closest};
+  }
+  for (int i = 0; i < 4; ++i) {
+    const SegmentSegmentDistance e = segment_segment(segment, side(rectangle, i));
+    if (e.squared_distance >= best.squared_distance) continue;  // not nearer
+    const Vec2 st = side_coordinates(rectangle, i, e.t);
+    best = {e.squared_distance, e.s, st.x(), st.y(), e.closest0, e.closest1};
+  }
+  return best;
+}
+
+//   The same argument once more: a closest pair of two rectangles has a point of some
+//   side of one of them, and a side that meets the other rectangle is at distance 0. So
+//   the nearest of the eight sides, each against the other rectangle.
+RectangleRectangleDistance rectangle_rectangle(const Rectangle& first, const Rectangle& second) {
+  RectangleRectangleDistance best;
+  best.squared_distance = kInfinity;
+  for (int i = 0; i < 4; ++i) {
+    const SegmentRectangleDistance e = segment_rectangle(side(first, i), second);
+    if (e.squared_distance < best.squared_distance) best = {e.squared_distance, e.closest0, e.closest1};
+  }
+  for (int i = 0; i < 4; ++i) {
+    const SegmentRectangleDistance e = segment_rectangle(side(second, i), first);
+    if (e.squared_distance < best.squared_distance) best = {e.squared_distance, e.closest1, e.closest0};
+  }
+  return best;
+}
+
+// ---- Step 3 --------------------------------------------------------------------------------
+// Table 6.1: the distance between the cores against r0 + r1, squared, decided without
+// dividing. (Comparing the constructed squared_distance with R^2 would round: exactly
+// touching capsules could come out a hair apart.)
+
+bool test_sphere_sphere(const Sphere& a, const Sphere& b) {
+  return (a.center - b.center).squaredNorm() <= square(a.radius + b.radius);
+}
+
+bool test_sphere_capsule(const Sphere& a, const Capsule& b) {
+  return point_segment_within(a.center, b.axis, square(a.radius + b.radius));
+}
+
+bool test_sphere_lozenge(const Sphere& a, const Lozenge& b) {
+  return point_rectangle_within(a.center, b.rectangle, square(a.radius + b.radius));
+}
+
+bool test_capsule_capsule(const Capsule& a, const Capsule& b) {
+  return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));
+}
+
+bool test_capsule_lozenge(const Capsule& a, const Lozenge& b) {
+  return segment_rectangle_within(a.axis, b.rectangle, square(a.radius + b.radius));
+}
+
+bool test_lozenge_lozenge(const Lozenge& a, const Lozenge& b) {
+  const double r2 = square(a.radius + b.radius);
+  for (int i = 0; i < 4; ++i)
+    if (segment_rectangle_within(side(a.rectangle, i), b.rectangle, r2)) return true;
+  for (int i = 0; i < 4; ++i)
+    if (segment_rectangle_within(side(b.rectangle, i), a.rectangle, r2)) return true;
+  return false;
+}
+
+// ---- Step 4 --------------------------------------------------------------------------------
+
+Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane& plane, double duration) {
+  // With f(t) = normal . c(t) + offset = f0 + g t, the signed distance is f / |normal|:
+  // compare f with r |normal| rather than normalising (the normal need not be unit).
+  const double f0 = plane.value(sphere.center), g = plane.normal.dot(velocity);
+  const double nn = plane.normal.squaredNorm(), r = sphere.radius;
+  if (square(f0) <= square(r) * nn) return overlapping();  // touching or cutting it now
+  const PlaneApproach a = approach_plane(f0, g, r * std::sqrt(nn), square(r) * nn, duration);
+  if (!a.contact) return {};  // moving away, along it, or not there yet at T
+  const Vec3 center = sphere.center + a.time * velocity;
+  return {SweepStatus::contact, a.time, center - a.side * r * plane.normal / std::sqrt(nn)};
+}
+
+// ---- Step 5 --------------------------------------------------------------------------------
+
+//   Derivation (lecture 002). In relative motion sphere 1 stands still and the centre of
+//   sphere 0 moves along A + t B, A = c0 - c1, B = v0 - v1. They touch when
+//   |A + t B| = R = r0 + r1:
+//
+//       a t^2 + 2 b t + c = 0,   a = B.B,  b = A.B,  c = A.A - R^2,
+//       t = (-b -+ sqrt(b^2 - a c)) / a.
+//
+//   Special cases first: c <= 0 (touching now); a = 0 (no relative motion: the distance
+//   never changes); b >= 0 (the distance grows from the start); b^2 - a c < 0 (the
+//   closest approach, d^2 = A.A - b^2 / a, stays above R). b^2 - a c = a R^2 - |A x B|^2
+//   (Lagrange's identity): the cross product gives it without subtracting two large
+//   squares when the spheres start far apart compared with their size.
+//
+//   The first root, stably. With b < 0, -b + sqrt(b^2 - ac) adds two positive numbers:
+//   q = -b + sqrt(b^2 - ac) is accurate, and the two roots are c / q (the first) and q / a.
+//   The textbook (-b - sqrt(b^2 - ac)) / a subtracts two nearly equal numbers when a c is
+//   small against b^2 (the spheres start a hair apart): its time is then mostly noise.
+Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, const Vec3& v1, double duration) {
+  const Vec3 A = s0.center - s1.center, B = v0 - v1;
+  const double R = s0.radius + s1.radius;
+  const double c = A.squaredNorm() - R * R;
+  if (c <= 0) return overlapping();  // touching or overlapping at t = 0
+  const double a = B.squaredNorm();
+  if (a == 0) return {};  // no relative motion: the gap stays what it is
+  const double b = A.dot(B);
+  if (b >= 0) return {};  // moving apart or sideways: the gap only grows
+  const double disc = a * R * R - A.cross(B).squaredNorm();
+  if (disc < 0) return {};  // the closest approach misses
+  // The distance falls until t = -b / a. If that is after T, contact needs |A + T B| <= R.
+  if (-b > a * duration && (A + duration * B).squaredNorm() > R * R) return {};  // not there yet at T
+  const double q = -b + std::sqrt(disc);
+  const double t = std::min(c / q, duration);
+  // The point of contact: on the segment between the centres, r0 / R of the way.
+  const Vec3 p = s0.center + t * v0, relative = A + t * B;
+  return {SweepStatus::contact, t, R > 0 ? Vec3(p - (s0.radius / R) * relative) : p};
+}
+
+// ---- Step 6 --------------------------------------------------------------------------------
+
+Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& plane, double duration) {
+  // The box reaches sum_i h_i |n . axis_i| / |n| from its centre along the unit normal
+  // (project each half-size on the normal line; the corner that reaches farthest takes
+  // every term with its own sign). Multiply through by |n|: then f and the reach are
+  // compared without a square root.
+  double reach = 0.0;
+  for (int i = 0; i < 3; ++i) reach += box.half_extents[i] * std::abs(plane.normal.dot(box.axes.col(i)));
+  const double f0 = plane.value(box.center), g = plane.normal.dot(velocity);
+  if (std::abs(f0) <= reach) return overlapping();  // resting on it or cutting it now
+  const PlaneApproach a = approach_plane(f0, g, reach, square(reach), duration);
+  if (!a.contact) return {};
+  // The point: the corner nearest the plane, on the side the box comes from; an axis
+  // parallel to the plane (n . axis = 0) keeps the middle of that face or edge.
+  Vec3 point = box.center + a.time * velocity;
+  for (int i = 0; i < 3; ++i) {
+    const double along = plane.normal.dot(box.axes.col(i));
+    const double sign = along > 0 ? 1.0 : (along < 0 ? -1.0 : 0.0);
+    point -= a.side * sign * box.half_extents[i] * box.axes.col(i);
+  }
+  return {SweepStatus::contact, a.time, point};
+}
+
+}  // namespace labkit::lab05

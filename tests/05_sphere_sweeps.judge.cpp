@@ -1,0 +1,477 @@
+#include "05_sphere_sweeps.judge.h"
+
+#include "common/generators/generators.h"
+#include "common/oracle/oracle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <initializer_list>
+#include <vector>
+
+namespace labkit::lab05 {
+
+std::string describe(SweepStatus s) {
+  switch (s) {
+    case SweepStatus::none: return "none";
+    case SweepStatus::overlapping: return "overlapping";
+    case SweepStatus::contact: return "contact";
+  }
+  return "an invalid status";
+}
+
+namespace judge {
+
+namespace {
+
+using check::ambiguous;
+using check::Expect;
+using check::fail;
+using check::pass;
+
+constexpr double kRelative = 1e-9;  // tol = 1e-9 S (the header's tolerances)
+
+// How far the exact answer of a test can move when every length moves by tol and every
+// direction component by 1e-9. A point of a rectangle c + s u + t v moves by at most
+// sqrt(3) tol (c) + |s| sqrt(3) 1e-9 + |t| sqrt(3) 1e-9 (u, v; |s|, |t| <= S) + 2 tol
+// (the half-sizes) < 7.3 tol; a segment's end or a centre by sqrt(3) tol; each radius
+// by tol. So the distance minus r0 - r1 moves by less than 2 * 7.3 + 2 = 16.6 tol:
+// 20 tol is a conservative bound (never too small, so no student is failed on a case
+// that a perturbation could flip; a bug smaller than 20 tol may pass).
+constexpr double kTestDoubt = 20.0;
+// The same for a sweep: a centre at time t moves by sqrt(3) tol (itself) + sqrt(3) tol
+// (the displacement v t, |v T| <= S) + sqrt(3) tol (T itself, relative 1e-9), a box's
+// corner by 3 sqrt(3) tol + 3 tol more (axes, half-sizes), a plane near the shapes by
+// tol (offset) + 1e-9 |x| sqrt(3) (normal, |x| <= 2 sqrt(3) S) < 7 tol. Sphere-sphere
+// 2 (5.2 + 1) = 12.4 tol, sphere-plane 5.2 + 1 + 7 = 13.2 tol, box-plane 5.2 + 8.2 + 7
+// = 20.4 tol: 24 tol bounds them all.
+constexpr double kSweepDoubt = 24.0;
+
+double largest(std::initializer_list<Vec3> points, std::initializer_list<double> lengths = {}) {
+  double s = scale_of(points);
+  for (double x : lengths) s = std::max(s, std::abs(x));
+  return std::max(s, 1e-300);
+}
+
+double plane_distance(const Plane& p) {
+  const double n = p.normal.norm();
+  return n > 0 ? std::abs(p.offset) / n : 0.0;
+}
+
+std::string parameter_range_problem(double t, double low, double high, const char* name) {
+  if (std::isfinite(t) && t >= low && t <= high) return "";
+  return std::string(name) + " = " + fmt(t) + " is outside [" + fmt(low) + ", " + fmt(high) + "]";
+}
+
+// The checks every distance answer must pass: the reported distance within tol of the
+// exact one, each point on its shape and reproduced by its parameters (the caller's
+// `shape_checks`), and the pair as far apart as the exact distance, within tol.
+template <class ShapeChecks>
+Outcome distance_verdict(const oracle::SquaredDistance& exact, double got_squared, const Vec3& p0, const Vec3& p1,
+                         double tol, ShapeChecks&& shape_checks) {
+  const double d = exact.distance();
+  const std::string expected = "distance " + fmt(d) + " (squared " + fmt(exact.value()) + ")";
+  if (!(got_squared >= 0) || !std::isfinite(got_squared))
+    return fail(expected, "squared_distance = " + fmt(got_squared), "the squared distance must be a finite number >= 0");
+  const double got = std::sqrt(got_squared);
+  if (exact.compare(got, tol) > 0 || exact.compare(got, -tol) < 0)
+    return fail(expected, "distance " + fmt(got) + " (squared " + fmt(got_squared) + ")",
+                "the distance is off by " + fmt(std::abs(got - d)) + " (tolerance " + fmt(tol) + ")");
+  Expect e;
+  shape_checks(e);
+  const oracle::SquaredDistance pair = oracle::squared_distance(p0, p1);
+  e.that("closest pair", pair.compare(d, tol) <= 0, fmt(p0) + " and " + fmt(p1) + ", " + fmt(pair.distance()) + " apart",
+         "a pair " + fmt(d) + " apart",
+         "your closest points are " + fmt(pair.distance()) + " apart, the shapes only " + fmt(d) + " (tolerance " +
+             fmt(tol) + ")");
+  return e.outcome();
+}
+
+void check_segment_point(Expect& e, const char* name, const Segment& s, double t, const char* t_name, const Vec3& p,
+                         double tol) {
+  const std::string range = parameter_range_problem(t, 0.0, 1.0, t_name);
+  e.that(t_name, range.empty(), fmt(t), "a parameter in [0, 1]", range);
+  e.that(name, oracle::parameter_reproduces(s, t, p, tol), fmt(p), std::string("a + ") + t_name + " (b - a)",
+         std::string("a + ") + t_name + " (b - a) is " + fmt((s.point(t) - p).norm()) + " away from " + name);
+}
+
+void check_rectangle_point(Expect& e, const char* name, const Rectangle& r, double s, double t, const Vec3& p, double tol) {
+  const std::string range = parameter_range_problem(s, -r.half_u, r.half_u, "s") + parameter_range_problem(t, -r.half_v, r.half_v, "t");
+  e.that("s, t", range.empty(), fmt(s) + ", " + fmt(t), "|s| <= half_u and |t| <= half_v", range);
+  e.that(name, oracle::rectangle_point_reproduces(r, s, t, p, tol), fmt(p), "center + s u + t v",
+         "center + s u + t v is " + fmt((r.center + s * r.u + t * r.v - p).norm()) + " away from " + name);
+}
+
+void check_on_rectangle(Expect& e, const char* name, const Rectangle& r, const Vec3& p, double tol) {
+  const oracle::SquaredDistance d = oracle::squared_distance(p, r);
+  e.that(name, d.compare(tol) <= 0, fmt(p), "a point of the rectangle",
+         std::string(name) + " is " + fmt(d.distance()) + " from the rectangle (tolerance " + fmt(tol) + ")");
+}
+
+// The verdict on a yes/no answer whose exact value is `expected`.
+Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no) {
+  if (rules == Rules::exact) doubt = false;
+  if (got == expected) return doubt ? ambiguous() : pass();
+  if (doubt) return ambiguous();
+  return fail(expected ? yes : no, got ? yes : no,
+              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
+                                    : "the exact answer is stable here: no input within 1e-9 S answers otherwise");
+}
+
+// A test of table 6.1: the cores' exact distance against r0 + r1.
+Outcome test_verdict(const oracle::SquaredDistance& cores, double r0, double r1, double tol, bool got, Rules rules) {
+  const bool expected = cores.compare(r0, r1) <= 0;
+  const double margin = kTestDoubt * tol;
+  const bool doubt = cores.compare(r0, r1, margin) <= 0 && cores.compare(r0, r1, -margin) >= 0;
+  const Outcome o = verdict(got, expected, doubt, rules, "they meet", "they do not meet");
+  if (o.verdict != Outcome::Verdict::fail) return o;
+  return fail(o.expected + " (the cores are " + fmt(cores.distance()) + " apart, r0 + r1 = " + fmt(r0 + r1) + ")", o.got, o.why);
+}
+
+double scale_of_shapes(const Sphere& s) { return largest({s.center}, {s.radius}); }
+double scale_of_shapes(const Capsule& c) { return largest({c.axis.a, c.axis.b}, {c.radius}); }
+double scale_of_shapes(const Lozenge& l) {
+  return largest({l.rectangle.center}, {l.rectangle.half_u, l.rectangle.half_v, l.radius});
+}
+
+// The exact distance between the cores of a pair (table 6.1's distance calculator).
+oracle::SquaredDistance core_distance(const SpherePair& p) { return oracle::squared_distance(p.a.center, p.b.center); }
+oracle::SquaredDistance core_distance(const SphereCapsule& p) { return oracle::squared_distance(p.a.center, p.b.axis); }
+oracle::SquaredDistance core_distance(const SphereLozenge& p) { return oracle::squared_distance(p.a.center, p.b.rectangle); }
+oracle::SquaredDistance core_distance(const CapsulePair& p) { return oracle::squared_distance(p.a.axis, p.b.axis); }
+oracle::SquaredDistance core_distance(const CapsuleLozenge& p) { return oracle::squared_distance(p.a.axis, p.b.rectangle); }
+oracle::SquaredDistance core_distance(const LozengePair& p) {
+  return oracle::squared_distance(p.a.rectangle, p.b.rectangle);
+}
+
+template <class Pair>
+Outcome test_pair_verdict(const Pair& p, bool got, Rules rules) {
+  const double tol = kRelative * std::max(scale_of_shapes(p.a), scale_of_shapes(p.b));
+  return test_verdict(core_distance(p), p.a.radius, p.b.radius, tol, got, rules);
+}
+
+// ---- Sweeps -----------------------------------------------------------------------------
+
+template <class Motion>
+std::string expected_sweep(const Motion& m, double duration) {
+  const double t = oracle::first_contact(m, duration);
+  if (t < 0) return "none";
+  if (oracle::gap_sign(m, 0.0, 0.0) <= 0) return "overlapping (at t = 0)";
+  return "contact at t = " + fmt(t) + " (rounded)";
+}
+
+std::string describe_sweep(const Sweep& s) {
+  if (s.status != SweepStatus::contact) return describe(s.status);
+  return "contact at t = " + fmt(s.time) + ", point " + fmt(s.point);
+}
+
+// The status against the exact one, then a reported contact certified exactly: at its
+// time the gap is at most tol, before it never below -tol, and its point within tol of
+// both shapes. Ambiguous statuses get the slack of the doubt margin in those checks.
+template <class Motion, class PointCheck>
+Outcome sweep_verdict(const Motion& m, double duration, const Sweep& got, double tol, Rules rules, PointCheck&& point_ok) {
+  const bool overlapping_now = oracle::gap_sign(m, 0.0, 0.0) <= 0;
+  const bool touches = oracle::min_gap_sign(m, duration, 0.0) <= 0;
+  const SweepStatus exact = overlapping_now ? SweepStatus::overlapping : (touches ? SweepStatus::contact : SweepStatus::none);
+  const double margin = kSweepDoubt * tol;
+  bool doubt_now = false, doubt_ever = false;
+  if (rules == Rules::random) {
+    doubt_now = oracle::gap_sign(m, 0.0, margin) <= 0 && oracle::gap_sign(m, 0.0, -margin) >= 0;
+    doubt_ever = oracle::min_gap_sign(m, duration, margin) <= 0 && oracle::min_gap_sign(m, duration, -margin) >= 0;
+  }
+  const bool doubt = doubt_now || doubt_ever;
+  const std::string expected = expected_sweep(m, duration);
+  const bool accepted = got.status == exact ||
+                        (doubt_now && (got.status == SweepStatus::overlapping || got.status == SweepStatus::contact)) ||
+                        (doubt_ever && (got.status == SweepStatus::contact || got.status == SweepStatus::none));
+  if (!accepted) {
+    if (got.status != SweepStatus::none && got.status != SweepStatus::overlapping && got.status != SweepStatus::contact)
+      return fail(expected, describe_sweep(got), "the status is not one of none, overlapping, contact");
+    return fail(expected, describe_sweep(got),
+                rules == Rules::exact ? "this degenerate input has an exact status (see the header's rules)"
+                                      : "the exact status is stable here: no input within 1e-9 S has another");
+  }
+  if (got.status == SweepStatus::contact) {
+    const double slack = doubt ? margin : tol;
+    const double t = got.time;
+    if (!(std::isfinite(t) && t >= 0 && t <= duration))
+      return fail(expected, describe_sweep(got), "the time of contact must be in [0, T], T = " + fmt(duration));
+    if (oracle::gap_sign(m, t, slack) > 0)
+      return fail(expected, describe_sweep(got),
+                  "at your time they are still more than " + fmt(slack) + " apart: that is not contact yet");
+    if (oracle::min_gap_sign(m, t, -slack) < 0)
+      return fail(expected, describe_sweep(got),
+                  "before your time they already overlap by more than " + fmt(slack) + ": contact came earlier");
+    if (!point_ok(t, got.point, slack))
+      return fail(expected, describe_sweep(got),
+                  "the point is not within " + fmt(slack) + " of both shapes at your time of contact");
+  }
+  return doubt ? ambiguous() : pass();
+}
+
+}  // namespace
+
+// ---- Scales -------------------------------------------------------------------------------
+
+double scale(const PointSegmentPair& in) { return largest({in.p, in.segment.a, in.segment.b}); }
+double scale(const SegmentPair& in) { return largest({in.first.a, in.first.b, in.second.a, in.second.b}); }
+double scale(const PointRectanglePair& in) {
+  return largest({in.p, in.rectangle.center}, {in.rectangle.half_u, in.rectangle.half_v});
+}
+double scale(const SegmentRectanglePair& in) {
+  return largest({in.segment.a, in.segment.b, in.rectangle.center}, {in.rectangle.half_u, in.rectangle.half_v});
+}
+double scale(const RectanglePair& in) {
+  return largest({in.first.center, in.second.center},
+                 {in.first.half_u, in.first.half_v, in.second.half_u, in.second.half_v});
+}
+double scale(const SpherePlaneMotion& in) {
+  return largest({in.sphere.center, in.velocity * in.duration}, {in.sphere.radius, plane_distance(in.plane)});
+}
+double scale(const SphereSphereMotion& in) {
+  return largest({in.s0.center, in.s1.center, in.v0 * in.duration, in.v1 * in.duration}, {in.s0.radius, in.s1.radius});
+}
+double scale(const BoxPlaneMotion& in) {
+  return largest({in.box.center, in.velocity * in.duration, in.box.half_extents}, {plane_distance(in.plane)});
+}
+
+// ---- Step 1 -------------------------------------------------------------------------------
+
+Outcome point_segment(const PointSegmentPair& in, const PointSegmentDistance& got) {
+  const double tol = kRelative * scale(in);
+  return distance_verdict(oracle::squared_distance(in.p, in.segment), got.squared_distance, in.p, got.closest, tol,
+                          [&](Expect& e) { check_segment_point(e, "closest", in.segment, got.t, "t", got.closest, tol); });
+}
+
+Outcome segment_segment(const SegmentPair& in, const SegmentSegmentDistance& got) {
+  const double tol = kRelative * scale(in);
+  return distance_verdict(oracle::squared_distance(in.first, in.second), got.squared_distance, got.closest0, got.closest1,
+                          tol, [&](Expect& e) {
+                            check_segment_point(e, "closest0", in.first, got.s, "s", got.closest0, tol);
+                            check_segment_point(e, "closest1", in.second, got.t, "t", got.closest1, tol);
+                          });
+}
+
+// ---- Step 2 -------------------------------------------------------------------------------
+
+Outcome point_rectangle(const PointRectanglePair& in, const PointRectangleDistance& got) {
+  const double tol = kRelative * scale(in);
+  return distance_verdict(oracle::squared_distance(in.p, in.rectangle), got.squared_distance, in.p, got.closest, tol,
+                          [&](Expect& e) { check_rectangle_point(e, "closest", in.rectangle, got.s, got.t, got.closest, tol); });
+}
+
+Outcome segment_rectangle(const SegmentRectanglePair& in, const SegmentRectangleDistance& got) {
+  const double tol = kRelative * scale(in);
+  return distance_verdict(oracle::squared_distance(in.segment, in.rectangle), got.squared_distance, got.closest0,
+                          got.closest1, tol, [&](Expect& e) {
+                            check_segment_point(e, "closest0", in.segment, got.r, "r", got.closest0, tol);
+                            check_rectangle_point(e, "closest1", in.rectangle, got.s, got.t, got.closest1, tol);
+                          });
+}
+
+Outcome rectangle_rectangle(const RectanglePair& in, const RectangleRectangleDistance& got) {
+  const double tol = kRelative * scale(in);
+  return distance_verdict(oracle::squared_distance(in.first, in.second), got.squared_distance, got.closest0,
+                          got.closest1, tol, [&](Expect& e) {
+                            check_on_rectangle(e, "closest0", in.first, got.closest0, tol);
+                            check_on_rectangle(e, "closest1", in.second, got.closest1, tol);
+                          });
+}
+
+// ---- Step 3 -------------------------------------------------------------------------------
+
+Outcome test_pair(const SpherePair& in, bool got, Rules rules) { return test_pair_verdict(in, got, rules); }
+Outcome test_pair(const SphereCapsule& in, bool got, Rules rules) { return test_pair_verdict(in, got, rules); }
+Outcome test_pair(const SphereLozenge& in, bool got, Rules rules) { return test_pair_verdict(in, got, rules); }
+Outcome test_pair(const CapsulePair& in, bool got, Rules rules) { return test_pair_verdict(in, got, rules); }
+Outcome test_pair(const CapsuleLozenge& in, bool got, Rules rules) { return test_pair_verdict(in, got, rules); }
+Outcome test_pair(const LozengePair& in, bool got, Rules rules) { return test_pair_verdict(in, got, rules); }
+
+// ---- Steps 4 to 6 -------------------------------------------------------------------------
+
+Outcome sweep_sphere_plane(const SpherePlaneMotion& in, const Sweep& got, Rules rules) {
+  const oracle::SpherePlaneSweep m{in.sphere, in.velocity, in.plane};
+  return sweep_verdict(m, in.duration, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
+    return oracle::within_moving_sphere(in.sphere, in.velocity, t, p, slack) && oracle::within_plane(in.plane, p, slack);
+  });
+}
+
+Outcome sweep_sphere_sphere(const SphereSphereMotion& in, const Sweep& got, Rules rules) {
+  const oracle::SphereSphereSweep m{in.s0, in.s1, in.v0, in.v1};
+  const Outcome o = sweep_verdict(m, in.duration, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
+    return oracle::within_moving_sphere(in.s0, in.v0, t, p, slack) && oracle::within_moving_sphere(in.s1, in.v1, t, p, slack);
+  });
+  if (o.verdict != Outcome::Verdict::pass || got.status != SweepStatus::contact) return o;
+  // Exact coefficients and a steep approach: the time must be right relative to itself,
+  // t_exact in [t (1 - 1e-9), t (1 + 1e-9)] (the header's rule for stable roots).
+  if (!oracle::sphere_sweep_exact_and_steep(m)) return o;
+  const double low = got.time * (1 - kRelative), high = std::min(got.time * (1 + kRelative), in.duration);
+  if (oracle::min_gap_sign(m, low, 0.0) > 0 && oracle::min_gap_sign(m, high, 0.0) <= 0) return o;
+  return fail(expected_sweep(m, in.duration), describe_sweep(got),
+              "the coefficients are exact and the approach steep, so the first root must be within a relative 1e-9 "
+              "of the exact one (a root formula that cancels loses it when contact comes very soon)");
+}
+
+Outcome sweep_box_plane(const BoxPlaneMotion& in, const Sweep& got, Rules rules) {
+  const oracle::BoxPlaneSweep m{in.box, in.velocity, in.plane};
+  return sweep_verdict(m, in.duration, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
+    return oracle::within_moving_box(in.box, in.velocity, t, p, slack) && oracle::within_plane(in.plane, p, slack);
+  });
+}
+
+// ---- Step 3's generators --------------------------------------------------------------------
+
+namespace {
+
+// Radii around the cores' exact distance d: exactly d (touching when d is a double),
+// a hair inside or outside (2^-10 to 2^-50 of d), clearly apart or overlapping, or a
+// plain lattice length.
+double radius_total(double d, double size) {
+  switch (*rc::gen::weightedElement<int>({{1, 0}, {3, 1}, {2, 2}, {2, 3}})) {
+    case 0: return d;
+    case 1: return std::max(0.0, d * (1 + *rc::gen::element(-1.0, 1.0) * *gen::tiny(10, 50)));
+    case 2: return d * *rc::gen::element(0.5, 0.875, 1.125, 2.0);
+    default: return *rc::gen::inRange(0, 9) / 4.0 * std::max(size, 1e-300);
+  }
+}
+
+// Exact families: radii that sum to an integer (times the scale) at or next to d.
+double exact_radius_total(double d, double unit) {
+  const double k = std::floor(d / unit);
+  return std::max(0.0, *rc::gen::element(k - 1, k, k + 1, k + 2) * unit);
+}
+
+// The unit of an exact family's lattice: the largest power of two dividing every
+// coordinate (so integers times it).
+double lattice_unit(const std::vector<double>& numbers) {
+  double unit = std::ldexp(1.0, 30);
+  for (double x : numbers) {
+    if (x == 0) continue;
+    int e = 0;
+    std::frexp(x, &e);
+    double low = std::ldexp(1.0, e);  // halve until it divides x: x's lowest set bit
+    while (std::fmod(std::abs(x), low) != 0) low /= 2;
+    unit = std::min(unit, low);
+  }
+  return unit;
+}
+
+// Exactly touching cores: both in parallel planes h apart (z = 0 and z = h in a
+// canonical frame), each through a common point P of the xy-plane, so their distance is
+// exactly h; then a signed permutation of the axes and an integer shift.
+struct Canonical {
+  Mat3 frame = Mat3::Identity();
+  Vec3 shift = Vec3::Zero();
+  double s = 1.0, h = 1.0;
+  Vec3 P = Vec3::Zero();
+  Vec3 at(const Vec3& x) const { return frame * x + shift; }
+};
+
+Canonical canonical() {
+  Canonical c;
+  c.s = *gen::scale();
+  c.h = *rc::gen::inRange(0, 5) * c.s;
+  c.P = Vec3(*gen::integer(8), *gen::integer(8), 0) * c.s;
+  std::array<int, 3> order{0, 1, 2};
+  std::rotate(order.begin(), order.begin() + *rc::gen::inRange(0, 3), order.end());
+  c.frame = Mat3::Zero();
+  for (int i = 0; i < 3; ++i) c.frame(order[i], i) = *rc::gen::element(-1.0, 1.0);
+  c.shift = *gen::lattice_point(c.s, 16);
+  return c;
+}
+
+Vec3 in_plane(const Canonical& c, double z) { return Vec3(*gen::integer(4), *gen::integer(4), 0) * c.s + Vec3(0, 0, z); }
+
+Vec3 canonical_point(const Canonical& c, double z) { return c.at(c.P + Vec3(0, 0, z)); }
+Segment canonical_segment(const Canonical& c, double z) {
+  const Vec3 d = in_plane(c, 0);
+  const int k = *rc::gen::inRange(0, 3);
+  return {c.at(c.P + Vec3(0, 0, z) + k * d), c.at(c.P + Vec3(0, 0, z) - d)};
+}
+Rectangle canonical_rectangle(const Canonical& c, double z) {
+  const double hu = *rc::gen::inRange(0, 5) * c.s, hv = *rc::gen::inRange(0, 5) * c.s;
+  const Vec3 offset(*rc::gen::inRange(-int(hu / c.s), int(hu / c.s) + 1) * c.s,
+                    *rc::gen::inRange(-int(hv / c.s), int(hv / c.s) + 1) * c.s, 0);
+  return {c.at(c.P + Vec3(0, 0, z) + offset), c.frame.col(0) * *rc::gen::element(-1.0, 1.0),
+          c.frame.col(1) * *rc::gen::element(-1.0, 1.0), hu, hv};
+}
+
+template <class Pair>
+Pair with_radii(Pair p, double total) {
+  const auto [r0, r1] = *gen::split_radius(total);
+  p.a.radius = r0;
+  p.b.radius = r1;
+  return p;
+}
+
+// The numbers of a shape's core (coordinates and half-sizes), for the exact families'
+// lattice unit and for the scale of the near-touching radii.
+void core_numbers(const Sphere& x, std::vector<double>& out) { out.insert(out.end(), x.center.data(), x.center.data() + 3); }
+void core_numbers(const Capsule& x, std::vector<double>& out) {
+  out.insert(out.end(), x.axis.a.data(), x.axis.a.data() + 3);
+  out.insert(out.end(), x.axis.b.data(), x.axis.b.data() + 3);
+}
+void core_numbers(const Lozenge& x, std::vector<double>& out) {
+  out.insert(out.end(), x.rectangle.center.data(), x.rectangle.center.data() + 3);
+  out.push_back(x.rectangle.half_u);
+  out.push_back(x.rectangle.half_v);
+}
+
+// One generator per pair type: the distance steps' cores with radii around their exact
+// distance, or (more often in the exact families) canonical cores exactly h apart with
+// radii summing to h.
+template <class Pair, class Cores, class FromCores, class Canon>
+rc::Gen<Pair> pair_generator(const rc::Gen<Cores>& cores, bool exact, FromCores from_cores, Canon canon) {
+  const rc::Gen<Pair> around = rc::gen::exec([=] {
+    const Pair p = from_cores(*cores);
+    std::vector<double> numbers;
+    core_numbers(p.a, numbers);
+    core_numbers(p.b, numbers);
+    double size = 0;
+    for (double x : numbers) size = std::max(size, std::abs(x));
+    const double d = core_distance(p).distance();
+    return with_radii(p, exact ? exact_radius_total(d, lattice_unit(numbers)) : radius_total(d, size));
+  });
+  const rc::Gen<Pair> touching = rc::gen::exec([=] {
+    const Canonical k = canonical();
+    return with_radii(canon(k), k.h);
+  });
+  return rc::gen::weightedOneOf<Pair>({{exact ? 1 : 6, around}, {1, touching}});
+}
+
+}  // namespace
+
+rc::Gen<SpherePair> sphere_pair(bool exact) {
+  return pair_generator<SpherePair>(
+      gen::point_segment(exact), exact, [](const PointSegmentPair& c) { return SpherePair{{c.p, 0}, {c.segment.b, 0}}; },
+      [](const Canonical& k) { return SpherePair{{canonical_point(k, 0), 0}, {canonical_point(k, k.h), 0}}; });
+}
+rc::Gen<SphereCapsule> sphere_capsule(bool exact) {
+  return pair_generator<SphereCapsule>(
+      gen::point_segment(exact), exact, [](const PointSegmentPair& c) { return SphereCapsule{{c.p, 0}, {c.segment, 0}}; },
+      [](const Canonical& k) { return SphereCapsule{{canonical_point(k, k.h), 0}, {canonical_segment(k, 0), 0}}; });
+}
+rc::Gen<SphereLozenge> sphere_lozenge(bool exact) {
+  return pair_generator<SphereLozenge>(
+      gen::point_rectangle(exact), exact,
+      [](const PointRectanglePair& c) { return SphereLozenge{{c.p, 0}, {c.rectangle, 0}}; },
+      [](const Canonical& k) { return SphereLozenge{{canonical_point(k, k.h), 0}, {canonical_rectangle(k, 0), 0}}; });
+}
+rc::Gen<CapsulePair> capsule_pair(bool exact) {
+  return pair_generator<CapsulePair>(
+      gen::segment_pair(exact), exact, [](const SegmentPair& c) { return CapsulePair{{c.first, 0}, {c.second, 0}}; },
+      [](const Canonical& k) { return CapsulePair{{canonical_segment(k, 0), 0}, {canonical_segment(k, k.h), 0}}; });
+}
+rc::Gen<CapsuleLozenge> capsule_lozenge(bool exact) {
+  return pair_generator<CapsuleLozenge>(
+      gen::segment_rectangle(exact), exact,
+      [](const SegmentRectanglePair& c) { return CapsuleLozenge{{c.segment, 0}, {c.rectangle, 0}}; },
+      [](const Canonical& k) { return CapsuleLozenge{{canonical_segment(k, k.h), 0}, {canonical_rectangle(k, 0), 0}}; });
+}
+rc::Gen<LozengePair> lozenge_pair(bool exact) {
+  return pair_generator<LozengePair>(
+      gen::rectangle_pair(exact), exact, [](const RectanglePair& c) { return LozengePair{{c.first, 0}, {c.second, 0}}; },
+      [](const Canonical& k) { return LozengePair{{canonical_rectangle(k, 0), 0}, {canonical_rectangle(k, k.h), 0}}; });
+}
+
+}  // namespace judge
+}  // namespace labkit::lab05

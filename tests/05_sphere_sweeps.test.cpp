@@ -1,0 +1,399 @@
+// Lab 05 tests. Each step: the hand-worked examples of handouts/05_sphere_sweeps.md,
+// then random cases against the exact oracle (tests/05_sphere_sweeps.judge.cpp).
+#include "05_sphere_sweeps.judge.h"
+#include "sphere_sweeps.h"
+
+#include <cmath>
+
+using namespace labkit;
+using namespace labkit::lab05;
+using check::Expect;
+using check::Outcome;
+using judge::Rules;
+
+namespace {
+
+constexpr double kExample = 1e-12;  // worked examples: hand arithmetic, to rounding
+
+// The handout's segment: 4 along the x axis.
+const Segment kAxis{{0, 0, 0}, {4, 0, 0}};
+// The handout's rectangle: 4 by 2 in the plane z = 0, centred at the origin.
+const Rectangle kFloor{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2, 1};
+// A 2 by 2 rectangle standing on the x axis, from z = 1 to z = 3.
+const Rectangle kStanding{{0, 0, 2}, {0, 0, 1}, {1, 0, 0}, 1, 1};
+
+// Chains an example's own expectations with the judge's rules: both must hold.
+Outcome both(const Expect& e, const Outcome& rules) {
+  const Outcome o = e.outcome();
+  return o.verdict == Outcome::Verdict::fail ? o : rules;
+}
+
+Outcome run_point_segment(const PointSegmentPair& in) { return judge::point_segment(in, point_segment(in.p, in.segment)); }
+Outcome run_segment_segment(const SegmentPair& in) { return judge::segment_segment(in, segment_segment(in.first, in.second)); }
+Outcome run_point_rectangle(const PointRectanglePair& in) {
+  return judge::point_rectangle(in, point_rectangle(in.p, in.rectangle));
+}
+Outcome run_segment_rectangle(const SegmentRectanglePair& in) {
+  return judge::segment_rectangle(in, segment_rectangle(in.segment, in.rectangle));
+}
+Outcome run_rectangle_rectangle(const RectanglePair& in) {
+  return judge::rectangle_rectangle(in, rectangle_rectangle(in.first, in.second));
+}
+
+Sweep run(const SpherePlaneMotion& in) { return sweep_sphere_plane(in.sphere, in.velocity, in.plane, in.duration); }
+Sweep run(const SphereSphereMotion& in) { return sweep_sphere_sphere(in.s0, in.v0, in.s1, in.v1, in.duration); }
+Sweep run(const BoxPlaneMotion& in) { return sweep_box_plane(in.box, in.velocity, in.plane, in.duration); }
+Outcome run_sweep(const SpherePlaneMotion& in, Rules rules = Rules::random) {
+  return judge::sweep_sphere_plane(in, run(in), rules);
+}
+Outcome run_sweep(const SphereSphereMotion& in, Rules rules = Rules::random) {
+  return judge::sweep_sphere_sphere(in, run(in), rules);
+}
+Outcome run_sweep(const BoxPlaneMotion& in, Rules rules = Rules::random) { return judge::sweep_box_plane(in, run(in), rules); }
+
+// A sweep example: the status, and for a contact its time and point; then the judge.
+template <class Motion>
+auto expect_sweep(SweepStatus status, double time = 0.0, Vec3 point = Vec3::Zero(), double time_tolerance = kExample) {
+  return [=](const Motion& in) {
+    const Sweep got = run(in);
+    Expect e;
+    e.equal("status", got.status, status);
+    if (status == SweepStatus::contact && got.status == status) {
+      e.near("time", got.time, time, time_tolerance);
+      e.near("point", got.point, point, kExample);
+    }
+    return both(e, run_sweep(in, Rules::exact));
+  };
+}
+
+bool test(const SpherePair& p) { return test_sphere_sphere(p.a, p.b); }
+bool test(const SphereCapsule& p) { return test_sphere_capsule(p.a, p.b); }
+bool test(const SphereLozenge& p) { return test_sphere_lozenge(p.a, p.b); }
+bool test(const CapsulePair& p) { return test_capsule_capsule(p.a, p.b); }
+bool test(const CapsuleLozenge& p) { return test_capsule_lozenge(p.a, p.b); }
+bool test(const LozengePair& p) { return test_lozenge_lozenge(p.a, p.b); }
+
+template <class Pair>
+auto expect_test(bool meet) {
+  return [meet](const Pair& in) {
+    Expect e;
+    e.equal("meet", test(in), meet);
+    return both(e, judge::test_pair(in, test(in), Rules::exact));
+  };
+}
+
+template <class Pair>
+Outcome run_test(const Pair& in) { return judge::test_pair(in, test(in)); }
+template <class Pair>
+Outcome run_exact_test(const Pair& in) { return judge::test_pair(in, test(in), Rules::exact); }
+
+}  // namespace
+
+// ---- Step 1 ------------------------------------------------------------------------
+
+TEST_CASE("L05S1 point-segment and segment-segment distance: worked examples", "[lab05][step1]") {
+  const auto point = [](double t, Vec3 closest, double d2) {
+    return [=](const PointSegmentPair& in) {
+      const PointSegmentDistance got = point_segment(in.p, in.segment);
+      Expect e;
+      e.near("t", got.t, t, kExample);
+      e.near("closest", got.closest, closest, kExample);
+      e.near("squared_distance", got.squared_distance, d2, kExample);
+      return both(e, run_point_segment(in));
+    };
+  };
+  check::example("point_segment", "projects inside: t = 1/4", PointSegmentPair{{1, 2, 0}, kAxis}, point(0.25, {1, 0, 0}, 4));
+  check::example("point_segment", "beyond b: clamp to t = 1", PointSegmentPair{{6, 1, 0}, kAxis}, point(1, {4, 0, 0}, 5));
+  check::example("point_segment", "behind a: clamp to t = 0", PointSegmentPair{{-3, 0, 4}, kAxis}, point(0, {0, 0, 0}, 25));
+  check::example("point_segment", "a zero-length segment", PointSegmentPair{{1, 1, 3}, {{1, 1, 1}, {1, 1, 1}}},
+                 point(0, {1, 1, 1}, 4));
+
+  const auto pair = [](double s, double t, double d2) {
+    return [=](const SegmentPair& in) {
+      const SegmentSegmentDistance got = segment_segment(in.first, in.second);
+      Expect e;
+      e.near("squared_distance", got.squared_distance, d2, kExample);
+      e.near("s", got.s, s, kExample);
+      e.near("t", got.t, t, kExample);
+      return both(e, run_segment_segment(in));
+    };
+  };
+  check::example("segment_segment", "skew, crossing over: s = t = 1/4", SegmentPair{kAxis, {{1, -1, 2}, {1, 3, 2}}},
+                 pair(0.25, 0.25, 4));
+  check::example("segment_segment", "an end against the middle", SegmentPair{kAxis, {{2, 1, 0}, {2, 5, 0}}}, pair(0.5, 0, 1));
+  check::example("segment_segment", "the lines' pair is outside: re-project, do not just clamp",
+                 SegmentPair{kAxis, {{5, -2, 1}, {7, 2, 1}}}, pair(1, 0.3, 4.2));
+  check::example("segment_segment", "collinear, a gap of 2", SegmentPair{kAxis, {{6, 0, 0}, {9, 0, 0}}}, pair(1, 0, 4));
+  // Parallel and overlapping: every x in [2, 4] gives a closest pair; the judge checks
+  // the distance and that the pair is a closest one, not which one.
+  check::example("segment_segment", "parallel, overlapping: any closest pair", SegmentPair{kAxis, {{2, 3, 0}, {6, 3, 0}}},
+                 [](const SegmentPair& in) {
+                   Expect e;
+                   e.near("squared_distance", segment_segment(in.first, in.second).squared_distance, 9, kExample);
+                   return both(e, run_segment_segment(in));
+                 });
+  check::example("segment_segment", "both zero length", SegmentPair{{{1, 2, 3}, {1, 2, 3}}, {{1, 2, 5}, {1, 2, 5}}},
+                 pair(0, 0, 4));
+}
+
+TEST_CASE("L05S1 point-segment and segment-segment distance: random cases", "[lab05][step1][oracle]") {
+  check::random_cases("point_segment", gen::point_segment(), run_point_segment);
+  check::random_cases("segment_segment", gen::segment_pair(), run_segment_segment);
+}
+
+// ---- Step 2 ------------------------------------------------------------------------
+
+TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: worked examples", "[lab05][step2]") {
+  const auto point = [](double s, double t, double d2) {
+    return [=](const PointRectanglePair& in) {
+      const PointRectangleDistance got = point_rectangle(in.p, in.rectangle);
+      Expect e;
+      e.near("s", got.s, s, kExample);
+      e.near("t", got.t, t, kExample);
+      e.near("squared_distance", got.squared_distance, d2, kExample);
+      return both(e, run_point_rectangle(in));
+    };
+  };
+  check::example("point_rectangle", "above the inside", PointRectanglePair{{1, 0.5, 3}, kFloor}, point(1, 0.5, 9));
+  check::example("point_rectangle", "beyond a corner: clamp both", PointRectanglePair{{5, 3, 4}, kFloor}, point(2, 1, 29));
+  check::example("point_rectangle", "beside a side, in the plane", PointRectanglePair{{3, 0, 0}, kFloor}, point(2, 0, 1));
+  check::example("point_rectangle", "a rectangle of zero width is a segment",
+                 PointRectanglePair{{1, 2, 0}, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2, 0}}, point(1, 0, 4));
+
+  const auto segment = [](double d2) {
+    return [=](const SegmentRectanglePair& in) {
+      Expect e;
+      e.near("squared_distance", segment_rectangle(in.segment, in.rectangle).squared_distance, d2, kExample);
+      return both(e, run_segment_rectangle(in));
+    };
+  };
+  check::example("segment_rectangle", "piercing it: distance 0 at r = 1/4",
+                 SegmentRectanglePair{{{1, 0, -1}, {1, 0, 3}}, kFloor}, [](const SegmentRectanglePair& in) {
+                   const SegmentRectangleDistance got = segment_rectangle(in.segment, in.rectangle);
+                   Expect e;
+                   e.near("squared_distance", got.squared_distance, 0, kExample);
+                   e.near("r", got.r, 0.25, kExample);
+                   e.near("closest1", got.closest1, Vec3(1, 0, 0), kExample);
+                   return both(e, run_segment_rectangle(in));
+                 });
+  check::example("segment_rectangle", "parallel, 2 above", SegmentRectanglePair{{{-5, 0.5, 2}, {5, 0.5, 2}}, kFloor}, segment(4));
+  check::example("segment_rectangle", "across a side, 1 out and 1 up", SegmentRectanglePair{{{3, -3, 1}, {3, 3, 1}}, kFloor},
+                 segment(2));
+  check::example("segment_rectangle", "through the plane beside it", SegmentRectanglePair{{{3, 0, -1}, {3, 0, 1}}, kFloor},
+                 segment(1));
+
+  const auto rectangles = [](double d2) {
+    return [=](const RectanglePair& in) {
+      Expect e;
+      e.near("squared_distance", rectangle_rectangle(in.first, in.second).squared_distance, d2, kExample);
+      return both(e, run_rectangle_rectangle(in));
+    };
+  };
+  check::example("rectangle_rectangle", "standing 1 above the floor", RectanglePair{kFloor, kStanding}, rectangles(1));
+  check::example("rectangle_rectangle", "standing through the floor",
+                 RectanglePair{kFloor, {{0, 0, 0.5}, {0, 0, 1}, {1, 0, 0}, 1, 1}}, rectangles(0));
+  check::example("rectangle_rectangle", "stacked, 3 apart", RectanglePair{kFloor, {{1, 0, 3}, {1, 0, 0}, {0, 1, 0}, 2, 1}},
+                 rectangles(9));
+}
+
+TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: random cases", "[lab05][step2][oracle]") {
+  check::random_cases("point_rectangle", gen::point_rectangle(), run_point_rectangle);
+  check::random_cases("segment_rectangle", gen::segment_rectangle(), run_segment_rectangle);
+  check::random_cases("rectangle_rectangle", gen::rectangle_pair(), run_rectangle_rectangle);
+}
+
+// ---- Step 3 ------------------------------------------------------------------------
+
+TEST_CASE("L05S3 sphere, capsule and lozenge pairs: worked examples", "[lab05][step3]") {
+  check::example("test_sphere_sphere", "5 apart, radii 2 + 3: touching counts", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 3}},
+                 expect_test<SpherePair>(true));
+  check::example("test_sphere_sphere", "5 apart, radii 2 + 2.5", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 2.5}},
+                 expect_test<SpherePair>(false));
+  check::example("test_sphere_capsule", "3 from the axis, radii 1 + 2", SphereCapsule{{{2, 3, 0}, 1}, {kAxis, 2}},
+                 expect_test<SphereCapsule>(true));
+  check::example("test_sphere_capsule", "beyond the end: 5 from b", SphereCapsule{{{7, 4, 0}, 1}, {kAxis, 3.5}},
+                 expect_test<SphereCapsule>(false));
+  check::example("test_sphere_lozenge", "above a corner: sqrt(29) away", SphereLozenge{{{5, 3, 4}, 2}, {kFloor, 3.5}},
+                 expect_test<SphereLozenge>(true));
+  check::example("test_capsule_capsule", "crossing 2 apart, radii 1 + 1: compare d^2 with (r0 + r1)^2",
+                 CapsulePair{{kAxis, 1}, {{{1, -1, 2}, {1, 3, 2}}, 1}}, expect_test<CapsulePair>(true));
+  check::example("test_capsule_capsule", "crossing 2 apart, radii 0.5 + 1", CapsulePair{{kAxis, 0.5}, {{{1, -1, 2}, {1, 3, 2}}, 1}},
+                 expect_test<CapsulePair>(false));
+  check::example("test_capsule_lozenge", "parallel 2 above, radii 0.5 + 1",
+                 CapsuleLozenge{{{{-5, 0.5, 2}, {5, 0.5, 2}}, 0.5}, {kFloor, 1}}, expect_test<CapsuleLozenge>(false));
+  check::example("test_capsule_lozenge", "piercing it, radius 0", CapsuleLozenge{{{{1, 0, -1}, {1, 0, 3}}, 0}, {kFloor, 0}},
+                 expect_test<CapsuleLozenge>(true));
+  check::example("test_lozenge_lozenge", "standing 1 above, radii 0.25 + 0.75", LozengePair{{kFloor, 0.25}, {kStanding, 0.75}},
+                 expect_test<LozengePair>(true));
+  check::example("test_lozenge_lozenge", "standing 1 above, radii 0.25 + 0.5", LozengePair{{kFloor, 0.25}, {kStanding, 0.5}},
+                 expect_test<LozengePair>(false));
+}
+
+TEST_CASE("L05S3 sphere, capsule and lozenge pairs: random cases", "[lab05][step3][oracle]") {
+  check::random_cases("test_sphere_sphere", judge::sphere_pair(), run_test<SpherePair>);
+  check::random_cases("test_sphere_capsule", judge::sphere_capsule(), run_test<SphereCapsule>);
+  check::random_cases("test_sphere_lozenge", judge::sphere_lozenge(), run_test<SphereLozenge>);
+  check::random_cases("test_capsule_capsule", judge::capsule_pair(), run_test<CapsulePair>);
+  check::random_cases("test_capsule_lozenge", judge::capsule_lozenge(), run_test<CapsuleLozenge>);
+  check::random_cases("test_lozenge_lozenge", judge::lozenge_pair(), run_test<LozengePair>);
+}
+
+// ---- Step 4 ------------------------------------------------------------------------
+
+namespace {
+// The plane z = 1, written with a normal of length 2: 2 z - 2 = 0.
+const Plane kShelf{{0, 0, 2}, -2};
+using SP = SpherePlaneMotion;
+}  // namespace
+
+TEST_CASE("L05S4 moving sphere against a plane: worked examples", "[lab05][step4]") {
+  const std::string q = "sweep_sphere_plane";
+  check::example(q, "falling from z = 5: contact at t = 1.5", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 4},
+                 expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
+  check::example(q, "rising from below: contact at t = 1.5", SP{{{0, 0, -3}, 1}, {0, 0, 2}, kShelf, 4},
+                 expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
+  check::example(q, "a slanted fall: contact at t = 1.5", SP{{{1, 2, 5}, 1}, {2, 0, -2}, kShelf, 4},
+                 expect_sweep<SP>(SweepStatus::contact, 1.5, {4, 2, 1}));
+  check::example(q, "not there by T = 1", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 1}, expect_sweep<SP>(SweepStatus::none));
+  check::example(q, "moving away (the lecture's T < 0)", SP{{{0, 0, 5}, 1}, {0, 0, 1}, kShelf, 4},
+                 expect_sweep<SP>(SweepStatus::none));
+  check::example(q, "moving along it", SP{{{0, 0, 5}, 1}, {1, 0, 0}, kShelf, 4}, expect_sweep<SP>(SweepStatus::none));
+  check::example(q, "touching at t = 0", SP{{{0, 0, 2}, 1}, {0, 0, 1}, kShelf, 4}, expect_sweep<SP>(SweepStatus::overlapping));
+  check::example(q, "cutting it at t = 0", SP{{{0, 0, 1.5}, 1}, {0, 0, -1}, kShelf, 4},
+                 expect_sweep<SP>(SweepStatus::overlapping));
+}
+
+TEST_CASE("L05S4 moving sphere against a plane: random cases", "[lab05][step4][oracle]") {
+  check::random_cases("sweep_sphere_plane", gen::sphere_plane_motion(), [](const SP& in) { return run_sweep(in); });
+}
+
+// ---- Step 5 ------------------------------------------------------------------------
+
+namespace {
+using SS = SphereSphereMotion;
+// A = c0 - c1 = (X, Y, Z) / 2^20 with X^2 + Y^2 + Z^2 = 9 * 2^40 + 1: |A|^2 = 9 + 2^-40,
+// exact in double, so with R = 3 the spheres start 2^-40 / 6 apart; they close at speed 3.
+const Vec3 kHair = Vec3(1049919, 2096632, 2097000) * std::ldexp(1.0, -20);
+// The exact first root c / (-b + sqrt(b^2 - ac)), a = 9, b = -9437183 / 2^20, c = 2^-40.
+const double kHairTime = 5.0527488785915993e-14;
+}  // namespace
+
+TEST_CASE("L05S5 moving sphere against a sphere: worked examples", "[lab05][step5]") {
+  const std::string q = "sweep_sphere_sphere";
+  check::example(q, "head-on: contact at t = 7/3", SS{{{0, 0, 0}, 1}, {1, 0, 0}, {{10, 0, 0}, 2}, {-2, 0, 0}, 5},
+                 expect_sweep<SS>(SweepStatus::contact, 7.0 / 3, {10.0 / 3, 0, 0}));
+  check::example(q, "passing by: t = 3 - sqrt(3)/2", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 1, 0}, 1}, {-2, 0, 0}, 4},
+                 expect_sweep<SS>(SweepStatus::contact, 3 - std::sqrt(3.0) / 2, {std::sqrt(3.0) / 2, 0.5, 0}));
+  check::example(q, "an exact graze: d^2 = A^2 - (A.B)^2 / B^2 = R^2, contact at t = 3",
+                 SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 2, 0}, 1}, {-2, 0, 0}, 4}, expect_sweep<SS>(SweepStatus::contact, 3, {0, 1, 0}));
+  check::example(q, "passing by, 3 off: misses", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 3, 0}, 1}, {-2, 0, 0}, 4},
+                 expect_sweep<SS>(SweepStatus::none));
+  check::example(q, "moving apart", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 1, 0}, 1}, {2, 0, 0}, 4},
+                 expect_sweep<SS>(SweepStatus::none));
+  check::example(q, "no relative motion (B^2 = 0)", SS{{{0, 0, 0}, 1}, {1, 1, 1}, {{6, 1, 0}, 1}, {1, 1, 1}, 4},
+                 expect_sweep<SS>(SweepStatus::none));
+  check::example(q, "touching at t = 0 and moving apart", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{2, 0, 0}, 1}, {1, 0, 0}, 4},
+                 expect_sweep<SS>(SweepStatus::overlapping));
+  check::example(q, "not there by T = 2", SS{{{0, 0, 0}, 1}, {1, 0, 0}, {{10, 0, 0}, 2}, {-2, 0, 0}, 2},
+                 expect_sweep<SS>(SweepStatus::none));
+  // The stable root: c / q keeps every digit; (-b - sqrt(b^2 - ac)) / a loses about half.
+  check::example(q, "a hair apart, closing fast: contact very soon", SS{{kHair, 1}, {-1, -2, -2}, {{0, 0, 0}, 2}, {0, 0, 0}, 1},
+                 [](const SS& in) {
+                   const Sweep got = run(in);
+                   Expect e;
+                   e.equal("status", got.status, SweepStatus::contact);
+                   e.near("time", got.time, kHairTime, 1e-9 * kHairTime);
+                   return both(e, run_sweep(in, Rules::exact));
+                 });
+}
+
+TEST_CASE("L05S5 moving sphere against a sphere: random cases", "[lab05][step5][oracle]") {
+  check::random_cases("sweep_sphere_sphere", gen::sphere_sphere_motion(), [](const SS& in) { return run_sweep(in); });
+  check::random_cases("sweep_sphere_sphere.grazing", gen::grazing_spheres(), [](const SS& in) { return run_sweep(in); });
+  check::random_cases("sweep_sphere_sphere.soon", gen::soon_spheres(), [](const SS& in) { return run_sweep(in); });
+}
+
+// ---- Step 6 ------------------------------------------------------------------------
+
+namespace {
+using BP = BoxPlaneMotion;
+const Plane kGround{{0, 0, 1}, 0};
+// Turned about x: the axes (1, 0, 0), (0, 0.6, -0.8), (0, 0.8, 0.6).
+Mat3 tilted() {
+  Mat3 m;
+  m << 1, 0, 0, 0, 0.6, 0.8, 0, -0.8, 0.6;
+  return m;
+}
+}  // namespace
+
+TEST_CASE("L05S6 moving box against a plane: worked examples", "[lab05][step6]") {
+  const std::string q = "sweep_box_plane";
+  check::example(q, "an upright box falls: reach 3, contact at t = 2",
+                 BP{{{0, 0, 5}, Mat3::Identity(), {1, 2, 3}}, {0, 0, -1}, kGround, 4},
+                 expect_sweep<BP>(SweepStatus::contact, 2, {0, 0, 0}));
+  check::example(q, "a tilted box: reach 1 * 0.8 + 2 * 0.6 = 2, contact at t = 1",
+                 BP{{{0, 0, 4}, tilted(), {1, 1, 2}}, {0, 0, -2}, kGround, 2},
+                 expect_sweep<BP>(SweepStatus::contact, 1, {0, -1, 0}));
+  check::example(q, "a normal of length 2 (the plane z = 2)",
+                 BP{{{0, 0, 10}, Mat3::Identity(), {1, 1, 1}}, {0, 0, -1}, {{0, 0, 2}, -4}, 8},
+                 expect_sweep<BP>(SweepStatus::contact, 7, {0, 0, 2}));
+  check::example(q, "resting on the ground at t = 0", BP{{{0, 0, 3}, Mat3::Identity(), {1, 2, 3}}, {0, 0, 1}, kGround, 4},
+                 expect_sweep<BP>(SweepStatus::overlapping));
+  check::example(q, "rising away", BP{{{0, 0, 5}, Mat3::Identity(), {1, 2, 3}}, {0, 0, 1}, kGround, 4},
+                 expect_sweep<BP>(SweepStatus::none));
+}
+
+TEST_CASE("L05S6 moving box against a plane: random cases", "[lab05][step6][oracle]") {
+  check::random_cases("sweep_box_plane", gen::box_plane_motion(), [](const BP& in) { return run_sweep(in); });
+}
+
+// ---- Step 7: robustness --------------------------------------------------------------
+// Exact degenerate input on small integers: the header's rules hold exactly.
+
+TEST_CASE("L05S7 robustness: parallel, touching, grazing: worked examples", "[lab05][step7]") {
+  const std::string q = "robust.segment_segment";
+  check::example(q, "collinear and overlapping: distance 0", SegmentPair{kAxis, {{2, 0, 0}, {7, 0, 0}}},
+                 [](const SegmentPair& in) {
+                   Expect e;
+                   e.near("squared_distance", segment_segment(in.first, in.second).squared_distance, 0, kExample);
+                   return both(e, run_segment_segment(in));
+                 });
+  check::example("robust.test_capsule_capsule", "crossing at 1/3 and 2/3, exactly touching",
+                 CapsulePair{{{{0, 0, 0}, {3, 0, 0}}, 1}, {{{1, -2, 2}, {1, 1, 2}}, 1}}, expect_test<CapsulePair>(true));
+  check::example("robust.test_capsule_lozenge", "resting exactly on the floor",
+                 CapsuleLozenge{{{{-1, 0, 3}, {1, 0, 3}}, 1}, {kFloor, 2}}, expect_test<CapsuleLozenge>(true));
+  check::example("robust.test_lozenge_lozenge", "a zero-size lozenge touching a corner",
+                 LozengePair{{kFloor, 0}, {{{3, 1, 0}, {1, 0, 0}, {0, 1, 0}, 0, 0}, 1}}, expect_test<LozengePair>(true));
+
+  const std::string s = "robust.sweep_sphere_sphere";
+  check::example(s, "touching at t = 0, moving apart", SS{{{0, 0, 0}, 2}, {0, 0, 0}, {{0, 3, 4}, 3}, {0, 3, 4}, 1},
+                 expect_sweep<SS>(SweepStatus::overlapping));
+  check::example(s, "head-on, contact exactly at T = 1.75", SS{{{0, 0, 0}, 1}, {1, 0, 0}, {{10, 0, 0}, 2}, {-3, 0, 0}, 1.75},
+                 expect_sweep<SS>(SweepStatus::contact, 1.75, {2.75, 0, 0}));
+  check::example(s, "an exact graze at T", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 2, 0}, 1}, {-2, 0, 0}, 3},
+                 expect_sweep<SS>(SweepStatus::contact, 3, {0, 1, 0}));
+  check::example(s, "a hair apart, closing fast", SS{{kHair, 1}, {-1, -2, -2}, {{0, 0, 0}, 2}, {0, 0, 0}, 1},
+                 expect_sweep<SS>(SweepStatus::contact, kHairTime, kHair * (2.0 / 3), 1e-9 * kHairTime));
+  check::example("robust.sweep_sphere_plane", "touching the plane, moving along it",
+                 SP{{{0, 0, 2}, 1}, {1, 0, 0}, kShelf, 4}, expect_sweep<SP>(SweepStatus::overlapping));
+  check::example("robust.sweep_sphere_plane", "reaching it exactly at T", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 1.5},
+                 expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
+  check::example("robust.sweep_box_plane", "a point box resting on the ground",
+                 BP{{{0, 0, 0}, Mat3::Identity(), {0, 0, 0}}, {0, 0, -1}, kGround, 1}, expect_sweep<BP>(SweepStatus::overlapping));
+}
+
+TEST_CASE("L05S7 robustness: random exact degenerate cases", "[lab05][step7][oracle]") {
+  check::random_cases("robust.segment_segment", gen::segment_pair(true), run_segment_segment);
+  check::random_cases("robust.segment_rectangle", gen::segment_rectangle(true), run_segment_rectangle);
+  check::random_cases("robust.test_sphere_capsule", judge::sphere_capsule(true), run_exact_test<SphereCapsule>);
+  check::random_cases("robust.test_capsule_capsule", judge::capsule_pair(true), run_exact_test<CapsulePair>);
+  check::random_cases("robust.test_capsule_lozenge", judge::capsule_lozenge(true), run_exact_test<CapsuleLozenge>);
+  check::random_cases("robust.test_lozenge_lozenge", judge::lozenge_pair(true), run_exact_test<LozengePair>);
+  check::random_cases("robust.sweep_sphere_plane", gen::sphere_plane_motion(true),
+                      [](const SP& in) { return run_sweep(in, Rules::exact); });
+  check::random_cases("robust.sweep_sphere_sphere", gen::sphere_sphere_motion(true),
+                      [](const SS& in) { return run_sweep(in, Rules::exact); });
+  check::random_cases("robust.sweep_box_plane", gen::box_plane_motion(true),
+                      [](const BP& in) { return run_sweep(in, Rules::exact); });
+}
+
