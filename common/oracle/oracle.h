@@ -6,5 +6,6 @@
 #pragma once
 
 #include "common/oracle/clipping.h"
+#include "common/oracle/particles.h"
 #include "common/oracle/predicates.h"
 #include "common/oracle/segment_triangle.h"
