@@ -142,9 +142,14 @@ bool plane_value_in_doubt(const Plane& p, const Vec3& x, double scale) {
   return std::abs(p.value(x)) <= 2 * reach;
 }
 
+// The hit is value(a) >= 0 and value(b) < 0. When b is clearly in front (value(b) > 0
+// beyond doubt), no perturbation makes it a hit, whatever a does: a piece leaving the
+// plane it just bounced off, with a a hair off it, is not in doubt. Otherwise a doubt on
+// either end can flip it.
 bool plane_unstable(const Segment& s, const Plane& p, double scale, Rules rules) {
   if (rules == Rules::exact) return false;
-  return plane_value_in_doubt(p, s.a, scale) || plane_value_in_doubt(p, s.b, scale);
+  if (plane_value_in_doubt(p, s.b, scale)) return true;
+  return p.value(s.b) < 0 && plane_value_in_doubt(p, s.a, scale);
 }
 
 bool sheet_hit(const SegmentTrianglePair& p) { return oracle::sheet_hit(p.segment, p.triangle); }
