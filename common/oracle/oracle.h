@@ -7,6 +7,7 @@
 
 #include "common/oracle/clipping.h"
 #include "common/oracle/posed_shapes.h"
+#include "common/oracle/particles.h"
 #include "common/oracle/predicates.h"
 #include "common/oracle/segment_triangle.h"
 #include "common/oracle/sphere_sweeps.h"

@@ -27,12 +27,15 @@ std::unique_ptr<Scene> make_bisection(const Setup& setup);
 const std::vector<Preset>& bisection_presets();
 std::unique_ptr<Scene> make_sphere_sweeps(const Setup& setup);
 const std::vector<Preset>& sphere_sweeps_presets();
+std::unique_ptr<Scene> make_particles(const Setup& setup);
+const std::vector<Preset>& particles_presets();
 
 inline const SceneInfo kScenes[] = {
     {"01", "01_frustum_split", "View-frustum clipping by triangle splitting", make_frustum_split, frustum_split_presets},
     {"02", "02_segment_triangle", "Segment against triangle and mesh", make_segment_triangle, segment_triangle_presets},
     {"04", "04_bisection", "Time of impact by bisection", make_bisection, bisection_presets},
     {"05", "05_sphere_sweeps", "Sphere-swept volumes, static and moving", make_sphere_sweeps, sphere_sweeps_presets},
+    {"07", "07_particles", "Particle systems that bounce", make_particles, particles_presets},
 };
 
 }  // namespace viewer
