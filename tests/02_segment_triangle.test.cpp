@@ -216,6 +216,16 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
 }
 
 TEST_CASE("L02S4 test and find segment-triangle: random cases", "[lab02][step4][oracle]") {
+  // Found by a class run: a starts exactly on the plane, near an edge, and b is 5e-8
+  // off it, so the rounding of d_a alone moves the crossing 2.5e-7 along the plane and
+  // off the triangle. The judge allows what the tolerance of t allows.
+  check::example("find_segment_triangle", "almost in the plane, from a point on it",
+                 pair({-1.383425235748291, 4.109798431396484, 6.50537109375},
+                      {-6.671734802378595, -8.144360497256555, -16.96777346270255},
+                      {{-2, 0.01881122589111328, -0.9892578125},
+                       {-0.766850471496582, 8.200785636901855, 14},
+                       {1.4385852813720703, 8.58306884765625e-06, 0}}),
+                 run_find);
   check::random_cases("test_segment_triangle", gen::segment_triangle(), run_test);
   check::random_cases("find_segment_triangle", gen::segment_triangle(), run_find);
 }

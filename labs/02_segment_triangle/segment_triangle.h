@@ -25,9 +25,10 @@
 //  - Yes/no answers must equal the exact answer, except on ambiguous inputs, whose
 //    exact answer changes under a perturbation of tol: there either answer passes.
 //  - Distances: within tol. Points: within tol of the exact point, or, for a reported
-//    hit, within tol of both the segment and the closed triangle.
+//    hit, within tol of the segment and within tol + |b - a| * (t's tolerance below) of
+//    the closed triangle.
 //  - The parameter t of a crossing: within tol / |d_a - d_b| of the exact one (a segment
-//    almost parallel to the plane fixes t only loosely).
+//    almost parallel to the plane fixes t, and so its crossing point, only loosely).
 //  - t, and the barycentric weights, must reproduce the reported point within tol.
 #pragma once
 
