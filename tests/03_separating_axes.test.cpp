@@ -146,6 +146,11 @@ TEST_CASE("L03S2 the 15 axes of two boxes: worked examples", "[lab03][step2]") {
   // above, hides it.
   check::example("test_boxes", "a gap of 2^-23 is a gap", BoxPair{cube({0, 0, 0}), cube({2 + std::ldexp(1.0, -23), 0, 0})},
                  expect(false));
+  // The turned box's corner (12 - 11, 1 - 1, -5 + 5) = (1, 0, 0) sits at the middle of A's
+  // face x = 1, lifted by 2^-23: only A_0 separates (the handout's table), so an epsilon
+  // on the face axes alone is caught too.
+  check::example("test_boxes", "a corner 2^-23 above the middle of a face",
+                 BoxPair{cube({0, 0, 0}), box({12 + std::ldexp(1.0, -23), 1, -5}, {7, 7, 7}, sevenths())}, expect(false));
 }
 
 TEST_CASE("L03S2 the 15 axes of two boxes: random cases", "[lab03][step2][oracle]") {
