@@ -23,10 +23,14 @@ std::unique_ptr<Scene> make_frustum_split(const Setup& setup);
 const std::vector<Preset>& frustum_split_presets();
 std::unique_ptr<Scene> make_segment_triangle(const Setup& setup);
 const std::vector<Preset>& segment_triangle_presets();
+std::unique_ptr<Scene> make_separating_axes(const Setup& setup);
+const std::vector<Preset>& separating_axes_presets();
 
 inline const SceneInfo kScenes[] = {
     {"01", "01_frustum_split", "View-frustum clipping by triangle splitting", make_frustum_split, frustum_split_presets},
     {"02", "02_segment_triangle", "Segment against triangle and mesh", make_segment_triangle, segment_triangle_presets},
+    {"03", "03_separating_axes", "Separating axes: oriented boxes, triangle pairs, moving boxes", make_separating_axes,
+     separating_axes_presets},
 };
 
 }  // namespace viewer
