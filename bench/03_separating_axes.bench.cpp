@@ -18,6 +18,7 @@
 #include "inputs.h"
 
 #include "common/generators/separating_axes.h"
+#include "common/harness/check.h"
 #include "common/oracle/oracle.h"
 #include "separating_axes.h"
 
@@ -102,7 +103,7 @@ Exact exact_triangles(const std::vector<TrianglePair>& pairs) {
   for (const TrianglePair& p : pairs) {
     e.hit.push_back(hit(p));
     e.doubt.push_back(oracle::triangle_pair_in_doubt(p.t0, p.t1, 1e-9 * scale_of(p)) ||
-                      check::flips_under_perturbation(p, hit));
+                      labkit::check::flips_under_perturbation(p, hit));
   }
   return e;
 }
