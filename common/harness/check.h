@@ -327,6 +327,9 @@ void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& j
     smallest->shrinks = shrinks;
     smallest->title = "random case " + std::to_string(report.cases) + " of " + std::to_string(s.cases);
     report.failure = smallest;
+  } else if (result.template is<rc::detail::FailureResult>()) {
+    // The property failed without a judge's verdict: the generator itself threw.
+    report.error = "a random case could not be generated: " + result.template get<rc::detail::FailureResult>().description;
   } else if (result.template is<rc::detail::GaveUpResult>()) {
     report.error = "the generator gave up: " + result.template get<rc::detail::GaveUpResult>().description;
   } else if (result.template is<rc::detail::Error>()) {

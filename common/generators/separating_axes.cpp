@@ -1,0 +1,466 @@
+#include "common/generators/separating_axes.h"
+#include "common/generators/generators.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace labkit {
+
+namespace {
+double box_scale(const Box& b) { return std::max(b.center.cwiseAbs().maxCoeff(), b.half_extents.cwiseAbs().maxCoeff()); }
+}  // namespace
+
+double scale_of(const BoxOnAxis& in) { return box_scale(in.box); }
+double scale_of(const BoxPair& in) { return std::max(box_scale(in.a), box_scale(in.b)); }
+double scale_of(const BoxPairOnAxis& in) { return std::max(box_scale(in.a), box_scale(in.b)); }
+double scale_of(const TrianglePair& in) {
+  return scale_of({in.t0.v0, in.t0.v1, in.t0.v2, in.t1.v0, in.t1.v1, in.t1.v2});
+}
+double scale_of(const MovingBoxes& in) {
+  const Vec3 end_a = in.a.center + in.duration * in.velocity_a, end_b = in.b.center + in.duration * in.velocity_b;
+  return std::max({box_scale(in.a), box_scale(in.b), end_a.cwiseAbs().maxCoeff(), end_b.cwiseAbs().maxCoeff()});
+}
+
+}  // namespace labkit
+
+namespace labkit::gen {
+
+namespace {
+
+constexpr double kFraction = 1.0 / (1 << 20);
+
+// Where a family draws its numbers: the fine dyadic lattice with rounded rotations, or
+// (exact) multiples of 8 units with |x| <= 1024 units and signed-permutation axes.
+struct Grid {
+  double s = 1.0;
+  bool exact = false;
+};
+rc::Gen<Grid> grid(bool exact) {
+  return rc::gen::map(scale(), [exact](double s) { return Grid{s, exact}; });
+}
+
+// A number of units with a 20-bit fraction, or (exact) a multiple of 8 units.
+double length(Grid g, int low, int high) {
+  const int n = *rc::gen::inRange(low, high + 1);
+  if (g.exact) return 8 * n * g.s;
+  return (n + kFraction * *rc::gen::resize(rc::kNominalSize, rc::gen::inRange(0, 1 << 20))) * g.s;
+}
+
+Mat3 permutation(int order, int signs) {
+  static const int orders[6][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {2, 1, 0}, {1, 0, 2}};
+  Mat3 m = Mat3::Zero();
+  for (int k = 0; k < 3; ++k) m(orders[order][k], k) = (signs >> k) & 1 ? -1.0 : 1.0;
+  return m;
+}
+
+rc::Gen<Mat3> signed_permutation() {
+  return rc::gen::exec([] { return permutation(*rc::gen::inRange(0, 6), *rc::gen::inRange(0, 8)); });
+}
+
+rc::Gen<Mat3> quaternion_rotation() {
+  return rc::gen::exec([] {
+    Eigen::Quaterniond q(*integer(4), *integer(4), *integer(4), *integer(4));
+    if (q.squaredNorm() == 0) q = Eigen::Quaterniond(1, 0, 0, 0);
+    return Mat3(q.normalized().toRotationMatrix());
+  });
+}
+
+// B's axes, related to A's on purpose: independent; a signed permutation of A's (every
+// edge exactly parallel to one of A's); A's turned by 2^-k about some axis (nearly
+// parallel); or sharing one axis exactly with A, turned about it.
+Mat3 related_axes(const Mat3& a, bool exact) {
+  if (exact) return a * *signed_permutation();
+  switch (*rc::gen::inRange(0, 4)) {
+    case 0:
+      return *rotation();
+    case 1:
+      return a * *signed_permutation();
+    case 2: {
+      const Vec3 axis = Vec3(*direction(1.0, 4)).normalized();
+      const double angle = (*rc::gen::element(-1.0, 1.0)) * std::ldexp(1.0, -*rc::gen::inRange(4, 53));
+      return Mat3(a * Eigen::AngleAxisd(angle, axis).toRotationMatrix() * *signed_permutation());
+    }
+    default: {
+      const int k = *rc::gen::inRange(0, 3);
+      Vec3 turn(*integer(4), *integer(4), 0);
+      if (turn.isZero()) turn = Vec3(1, 1, 0);
+      turn.normalize();
+      Mat3 b;
+      b.col(k) = a.col(k);
+      b.col((k + 1) % 3) = turn.x() * a.col((k + 1) % 3) + turn.y() * a.col((k + 2) % 3);
+      b.col((k + 2) % 3) = -turn.y() * a.col((k + 1) % 3) + turn.x() * a.col((k + 2) % 3);
+      return Mat3(b * *signed_permutation());
+    }
+  }
+}
+
+Vec3 half_extents(Grid g) {
+  Vec3 h;
+  for (int k = 0; k < 3; ++k) h[k] = length(g, 0, 8) / (g.exact ? 1 : 2);
+  // Sometimes flat: a rectangle, a segment or a point.
+  const int flat = *rc::gen::weightedElement<int>({{8, 0}, {1, 1}, {1, 2}, {1, 3}});
+  for (int k = 0; k < flat; ++k) h[*rc::gen::inRange(0, 3)] = 0.0;
+  return h;
+}
+
+Box grid_box(Grid g) {
+  Box b;
+  b.center = g.exact ? Vec3(*lattice_point(8 * g.s, 16)) : Vec3(*point(g.s));
+  b.axes = g.exact ? *signed_permutation() : *rotation();
+  b.half_extents = half_extents(g);
+  return b;
+}
+
+// A dyadic fraction in [-1, 1] (in eighths) of each of the box's half extents.
+Vec3 local_point(Grid g, const Box& box, int bound = 8) {
+  (void)g;
+  Vec3 p = box.center;
+  for (int k = 0; k < 3; ++k) p += (*rc::gen::inRange(-bound, bound + 1) / 8.0) * box.half_extents[k] * box.axes.col(k);
+  return p;
+}
+
+double radius_along(const Box& box, const Vec3& n) {
+  double r = 0;
+  for (int k = 0; k < 3; ++k) r += box.half_extents[k] * std::abs(box.axes.col(k).dot(n));
+  return r;
+}
+
+// A gap between the boxes: zero (touching, up to the rounding of rotated axes), or a
+// power of two of the pair's size either way, from clearly apart to far below tol.
+double gap(Grid g, double size) {
+  if (g.exact) return *rc::gen::weightedElement<double>({{4, 0.0}, {1, 8 * g.s}, {1, -8 * g.s}});
+  const int k = *rc::gen::weightedOneOf<int>({{1, rc::gen::just(0)}, {4, rc::gen::inRange(4, 27)}, {1, rc::gen::inRange(27, 61)}});
+  if (k == 0) return 0.0;
+  return *rc::gen::element(-1.0, 1.0) * size * std::ldexp(1.0, -k);
+}
+
+// The corner offset of `box` that is extreme along -n (the point of B that reaches
+// toward A), on the box's axes other than `free_axis` (-1: all three).
+Vec3 extreme_toward(const Box& box, const Vec3& n, int free_axis = -1) {
+  Vec3 p = Vec3::Zero();
+  for (int k = 0; k < 3; ++k)
+    if (k != free_axis) p -= (box.axes.col(k).dot(n) >= 0 ? 1.0 : -1.0) * box.half_extents[k] * box.axes.col(k);
+  return p;
+}
+
+// B against a face of A (or A against a face of B), shifted sideways within the face.
+BoxPair face_contact(Grid g) {
+  Box a = grid_box(g), b = grid_box(g);
+  b.axes = related_axes(a.axes, g.exact);
+  const bool on_b = *rc::gen::inRange(0, 3) == 0;
+  const Box& owner = on_b ? b : a;
+  const int k = *rc::gen::inRange(0, 3);
+  Vec3 n = (*rc::gen::element(-1.0, 1.0)) * owner.axes.col(k);
+  const double size = std::max(a.half_extents.maxCoeff(), b.half_extents.maxCoeff()) + g.s;
+  const double along = radius_along(a, n) + radius_along(b, n) + gap(g, size);
+  Vec3 lateral = Vec3::Zero();
+  for (int m = 0; m < 3; ++m)
+    if (m != k) lateral += (*rc::gen::inRange(-10, 11) / 8.0) * owner.half_extents[m] * owner.axes.col(m);
+  b.center = a.center + along * n + lateral;
+  return {a, b};
+}
+
+// An edge of A across an edge of B: n = A_i x B_j is the axis between them.
+BoxPair edge_contact(Grid g) {
+  Box a = grid_box(g), b = grid_box(g);
+  b.axes = related_axes(a.axes, g.exact);
+  const int i = *rc::gen::inRange(0, 3), j = *rc::gen::inRange(0, 3);
+  Vec3 n = a.axes.col(i).cross(b.axes.col(j));
+  if (n.squaredNorm() < 1e-6) return face_contact(g);
+  n.normalize();
+  const double size = std::max(a.half_extents.maxCoeff(), b.half_extents.maxCoeff()) + g.s;
+  // A's edge along A_i farthest along n, at a point part way along it; B's edge along
+  // B_j farthest along -n, placed through that point plus the gap.
+  const Vec3 p = a.center - extreme_toward(a, n, i) +
+                 (*rc::gen::inRange(-8, 9) / 8.0) * a.half_extents[i] * a.axes.col(i);
+  const Vec3 q = extreme_toward(b, n, j) + (*rc::gen::inRange(-8, 9) / 8.0) * b.half_extents[j] * b.axes.col(j);
+  b.center = p + gap(g, size) * n - q;
+  return {a, b};
+}
+
+// A corner of B on a face of A.
+BoxPair corner_contact(Grid g) {
+  Box a = grid_box(g), b = grid_box(g);
+  b.axes = related_axes(a.axes, g.exact);
+  const int k = *rc::gen::inRange(0, 3);
+  const Vec3 n = (*rc::gen::element(-1.0, 1.0)) * a.axes.col(k);
+  Vec3 p = local_point(g, a);
+  p += (a.half_extents[k] - a.axes.col(k).dot(p - a.center) * n.dot(a.axes.col(k))) * n;  // onto the face
+  const double size = std::max(a.half_extents.maxCoeff(), b.half_extents.maxCoeff()) + g.s;
+  b.center = p + gap(g, size) * n - extreme_toward(b, n);
+  return {a, b};
+}
+
+// Near each other: overlapping deeply, a little, or apart, along A's axes.
+BoxPair nearby(Grid g) {
+  Box a = grid_box(g), b = grid_box(g);
+  b.axes = related_axes(a.axes, g.exact);
+  const double reach = b.half_extents.maxCoeff();
+  b.center = a.center;
+  for (int k = 0; k < 3; ++k) {
+    const double extent = a.half_extents[k] + reach + g.s;
+    b.center += (*rc::gen::inRange(-12, 13) / 8.0) * extent * a.axes.col(k);
+  }
+  return {a, b};
+}
+
+// One inside the other, or the same box twice.
+BoxPair nested(Grid g) {
+  Box a = grid_box(g);
+  Box b = a;
+  if (*rc::gen::inRange(0, 2) == 0) {
+    b.axes = related_axes(a.axes, g.exact);
+    for (int k = 0; k < 3; ++k) b.half_extents[k] = a.half_extents.minCoeff() / (g.exact ? 2 : 4);
+    b.center = local_point(g, a, 2);
+  }
+  return {a, b};
+}
+
+BoxPair far_away(BoxPair p) {
+  const double size = std::max(1.0, scale_of(p));
+  const Vec3 offset = *lattice_point(size * 1024.0, 64);
+  p.a.center += offset;
+  p.b.center += offset;
+  return p;
+}
+
+BoxPair pair_of(Grid g) {
+    switch (*rc::gen::weightedElement<int>({{4, 0}, {3, 1}, {3, 2}, {2, 3}, {1, 4}})) {
+      case 0:
+        return nearby(g);
+      case 1:
+        return face_contact(g);
+      case 2:
+        return edge_contact(g);
+      case 3:
+        return corner_contact(g);
+      default:
+        return nested(g);
+    }
+}
+
+rc::Gen<BoxPair> pair_family(bool exact) {
+  return rc::gen::exec([exact] { return pair_of(*grid(exact)); });
+}
+
+Vec3 rounded_unit(Grid g) {
+  (void)g;
+  return Vec3(*direction(1.0, 8)).normalized();
+}
+
+// ---- Triangles -------------------------------------------------------------------------
+
+Vec3 grid_point(Grid g) { return g.exact ? Vec3(*lattice_point(8 * g.s, 16)) : Vec3(*point(g.s)); }
+Vec3 grid_direction(Grid g) { return *direction(g.exact ? 8 * g.s : g.s, 8); }
+Triangle grid_triangle(Grid g) {
+  return *rc::gen::suchThat(rc::gen::exec([g] { return Triangle{grid_point(g), grid_point(g), grid_point(g)}; }),
+                            [](const Triangle& t) { return t.normal() != Vec3::Zero(); });
+}
+Vec3 eighths(const Vec3& origin, const Vec3& u, int p, const Vec3& v, int q) {
+  return origin + (p / 8.0) * u + (q / 8.0) * v;
+}
+
+// T1 through a point x of T0 (inside, on an edge, or a vertex): x is T1's centroid
+// (crossing), a vertex of T1 (touching), or a point of an edge of T1.
+TrianglePair through_point(Grid g) {
+  const Triangle t0 = grid_triangle(g);
+  const int i = *rc::gen::inRange(0, 3);
+  const Vec3 x = *rc::gen::oneOf(point_in_triangle(t0),
+                                 rc::gen::just(eighths(t0[i], t0[(i + 1) % 3] - t0[i], *rc::gen::inRange(0, 9), Vec3::Zero(), 0)));
+  const Vec3 d1 = grid_direction(g), d2 = grid_direction(g);
+  Triangle t1;
+  switch (*rc::gen::inRange(0, 3)) {
+    case 0: t1 = {x + d1, x + d2, x - d1 - d2}; break;
+    case 1: t1 = {x, x + d1, x + d2}; break;
+    default: t1 = {x + d1, x - (*rc::gen::inRange(1, 17) / 8.0) * d1, x + d2}; break;
+  }
+  return *rc::gen::element(TrianglePair{t0, t1}, TrianglePair{t1, t0});
+}
+
+// Both in T0's plane: overlapping, nested, touching at vertices or along edges, apart.
+TrianglePair coplanar(Grid g) {
+  const Triangle t0 = grid_triangle(g);
+  const Vec3 u = t0.v1 - t0.v0, v = t0.v2 - t0.v0;
+  Triangle t1;
+  for (int k = 0; k < 3; ++k) t1[k] = eighths(t0.v0, u, *rc::gen::inRange(-8, 17), v, *rc::gen::inRange(-8, 17));
+  return {t0, t1};
+}
+
+// Coplanar, then lifted off the plane by tiny amounts: the same at every vertex
+// (parallel planes) or differing (nearly parallel planes, often crossing).
+TrianglePair near_coplanar() {
+  TrianglePair p = coplanar(*grid(false));
+  const Vec3 n = p.t0.normal().normalized();
+  const double size = scale_of({p.t0.v0, p.t0.v1, p.t0.v2});
+  const bool parallel = *rc::gen::inRange(0, 2) == 0;
+  const double shift = *integer(4) * *tiny(10, 40) * size;
+  for (int k = 0; k < 3; ++k) p.t1[k] += (parallel ? shift : *integer(4) * *tiny(10, 40) * size) * n;
+  return p;
+}
+
+// Through a point of T0, then shifted a tiny amount: near a vertex or an edge.
+TrianglePair near_touching() {
+  TrianglePair p = through_point(*grid(false));
+  const double size = scale_of(p);
+  const Vec3 shift = *integer(4) * *tiny(20, 50) * size * Vec3(*direction(1.0, 4)).normalized();
+  for (int k = 0; k < 3; ++k) p.t1[k] += shift;
+  return p;
+}
+
+TrianglePair zero_area(Grid g) {
+  const Vec3 a = grid_point(g), b = grid_point(g);
+  const Triangle flat = *rc::gen::element(Triangle{a, b, eighths(a, b - a, *rc::gen::inRange(-8, 17), Vec3::Zero(), 0)},
+                                          Triangle{a, a, b}, Triangle{a, a, a});
+  TrianglePair p = through_point(g);
+  // The flat triangle through the same point, so that it would touch if it had area.
+  const Vec3 x = p.t0.v0;
+  Triangle moved = flat;
+  for (int k = 0; k < 3; ++k) moved[k] += x - flat.v0;
+  return *rc::gen::element(TrianglePair{p.t0, moved}, TrianglePair{moved, p.t1}, TrianglePair{moved, moved});
+}
+
+TrianglePair generic_triangles(Grid g) { return {grid_triangle(g), grid_triangle(g)}; }
+
+TrianglePair far_triangles(TrianglePair p) {
+  const double size = std::max(1.0, scale_of(p));
+  const Vec3 offset = *lattice_point(size * 1024.0, 64);
+  for (int k = 0; k < 3; ++k) {
+    p.t0[k] += offset;
+    p.t1[k] += offset;
+  }
+  return p;
+}
+
+// ---- Moving boxes ----------------------------------------------------------------------
+
+// A pair in contact (or a gap apart) at time t* = duration k / 8, moved back along
+// lattice velocities: head on, at an angle, grazing (W perpendicular to the contact
+// axis), or not moving relative to each other.
+MovingBoxes moving(bool exact) {
+  const Grid g = *grid(exact);
+  BoxPair at_contact = pair_of(g);
+  const double duration = *rc::gen::weightedElement<double>({{8, 1.0}, {2, 2.0}, {2, 0.5}, {1, 0.0}});
+  const double meet = duration * *rc::gen::inRange(-4, 13) / 8.0;
+  const double size = std::max({at_contact.a.half_extents.maxCoeff(), at_contact.b.half_extents.maxCoeff(), g.s});
+  // Speeds: displacements over one time unit of 1 to 16 units of the pair's size.
+  const double unit = exact ? 8 * g.s : std::ldexp(1.0, std::ilogb(size));
+  const Vec3 va = *rc::gen::weightedElement<int>({{2, 0}, {1, 1}}) ? Vec3(*lattice_point(unit, 8)) : Vec3::Zero();
+  Vec3 w;
+  switch (*rc::gen::inRange(0, 4)) {
+    case 0:  // at any angle
+      w = *direction(unit, 8);
+      break;
+    case 1: {  // head on: along the line between the centres (rounded to the lattice)
+      const Vec3 d = at_contact.a.center - at_contact.b.center;
+      w = d.isZero() ? Vec3(*direction(unit, 8)) : Vec3((d / unit * 4).array().round() * unit);
+      if (w.isZero()) w = *direction(unit, 8);
+      break;
+    }
+    case 2: {  // grazing: perpendicular to one of the boxes' axes, in exact arithmetic
+      const Box* owner = *rc::gen::element(&at_contact.a, &at_contact.b);
+      w = (*integer(8) + 0.5) * unit * owner->axes.col(*rc::gen::inRange(0, 3));
+      break;
+    }
+    default:  // moving together
+      w = Vec3::Zero();
+  }
+  MovingBoxes m;
+  m.a = at_contact.a;
+  m.b = at_contact.b;
+  m.velocity_a = va;
+  m.velocity_b = va + w;
+  m.duration = duration;
+  m.a.center -= meet * m.velocity_a;
+  m.b.center -= meet * m.velocity_b;
+  return m;
+}
+
+}  // namespace
+
+rc::Gen<Mat3> rotation() {
+  return rc::gen::weightedOneOf<Mat3>({{5, quaternion_rotation()}, {1, signed_permutation()}});
+}
+
+rc::Gen<Box> box(double s) {
+  return rc::gen::exec([s] { return grid_box(Grid{s, false}); });
+}
+
+rc::Gen<BoxOnAxis> box_on_axis() {
+  return rc::gen::exec([] {
+    const Grid g = *grid(false);
+    BoxOnAxis in{grid_box(g), Vec3::UnitX()};
+    switch (*rc::gen::inRange(0, 4)) {
+      case 0: in.axis = *direction(1.0, 8); break;  // a lattice direction, any length
+      case 1: in.axis = rounded_unit(g); break;
+      case 2: in.axis = in.box.axes.col(*rc::gen::inRange(0, 3)); break;  // its own axis
+      default:  // perpendicular to one of its axes, to rounding: |A_k . L| is noise
+        in.axis = in.box.axes.col(0).cross(in.box.axes.col(*rc::gen::inRange(1, 3)));
+    }
+    if (*rc::gen::inRange(0, 8) == 0) in.box.center += *lattice_point(1024.0 * std::max(1.0, scale_of(in)), 64);
+    return in;
+  });
+}
+
+rc::Gen<BoxPairOnAxis> box_pair_on_axis() {
+  return rc::gen::exec([] {
+    const BoxPair p = *box_pair();
+    Vec3 axis;
+    const int kind = *rc::gen::inRange(0, 3);
+    if (kind == 0) {
+      axis = *direction(1.0, 8);
+    } else if (kind == 1) {
+      const int index = *rc::gen::inRange(0, 15);
+      axis = index < 3 ? Vec3(p.a.axes.col(index))
+                       : (index < 6 ? Vec3(p.b.axes.col(index - 3))
+                                    : Vec3(p.a.axes.col((index - 6) / 3).cross(p.b.axes.col((index - 6) % 3))));
+    } else {
+      axis = p.b.center - p.a.center;
+    }
+    return BoxPairOnAxis{p.a, p.b, axis};
+  });
+}
+
+rc::Gen<BoxPair> box_pair() {
+  const rc::Gen<BoxPair> families = pair_family(false);
+  return rc::gen::weightedOneOf<BoxPair>({{7, families}, {1, rc::gen::exec([families] { return far_away(*families); })}});
+}
+
+rc::Gen<BoxPair> exact_box_pair() { return pair_family(true); }
+
+rc::Gen<TrianglePair> triangle_pair() {
+  const rc::Gen<TrianglePair> families = rc::gen::exec([] {
+    const Grid g = *grid(false);
+    switch (*rc::gen::weightedElement<int>({{6, 0}, {8, 1}, {3, 2}, {4, 3}, {4, 4}, {2, 5}})) {
+      case 0: return generic_triangles(g);
+      case 1: return through_point(g);
+      case 2: return coplanar(g);
+      case 3: return near_coplanar();
+      case 4: return near_touching();
+      default: return zero_area(g);
+    }
+  });
+  return rc::gen::weightedOneOf<TrianglePair>(
+      {{7, families}, {1, rc::gen::exec([families] { return far_triangles(*families); })}});
+}
+
+rc::Gen<TrianglePair> exact_triangle_pair() {
+  return rc::gen::exec([] {
+    const Grid g = *grid(true);
+    switch (*rc::gen::weightedElement<int>({{4, 0}, {3, 1}, {1, 2}})) {
+      case 0: return through_point(g);
+      case 1: return coplanar(g);
+      default: return zero_area(g);
+    }
+  });
+}
+
+rc::Gen<MovingBoxes> moving_boxes() {
+  return rc::gen::exec([] { return moving(false); });
+}
+
+rc::Gen<MovingBoxes> exact_moving_boxes() {
+  return rc::gen::exec([] { return moving(true); });
+}
+
+}  // namespace labkit::gen

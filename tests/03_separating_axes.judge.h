@@ -1,0 +1,49 @@
+// Lab 03's verdicts: each judge compares one answer with the exact oracle, following
+// the tolerances and degenerate rules of labs/03_separating_axes/separating_axes.h.
+// The tests and the viewer both use them, so a red mark in the viewer and a failing
+// case in `./labkit check` always agree.
+#pragma once
+
+#include "separating_axes.h"
+
+#include "common/generators/separating_axes.h"
+#include "common/harness/check.h"
+
+#include <algorithm>
+#include <array>
+
+namespace labkit::lab03 {
+
+// Answers list their fields, so that reports can print them.
+template <class V> void fields(Projection& p, V&& v) { v("center", p.center); v("radius", p.radius); }
+template <class V> void fields(BoxContact& c, V&& v) {
+  v("intersecting", c.intersecting); v("axis_index", c.axis_index); v("axis", c.axis); v("depth", c.depth);
+}
+template <class V> void fields(ContactInterval& c, V&& v) { v("contact", c.contact); v("first", c.first); v("last", c.last); }
+
+namespace judge {
+
+using check::Outcome;
+
+// Random cases accept any answer on ambiguous input; the robustness step's exact
+// degenerate input must follow the header's rules exactly.
+enum class Rules { random, exact };
+
+// tol = 1e-9 S, S the input's largest position coordinate (the header's tolerances).
+template <class Input>
+double tolerance_of(const Input& in) {
+  return 1e-9 * std::max(scale_of(in), 1e-300);
+}
+
+Outcome project_box(const BoxOnAxis& in, const Projection& got);
+Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules = Rules::random);
+// got[k] = box_axis(a, b, k) for k = 0..14.
+Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got);
+Outcome test_boxes(const BoxPair& in, bool got, Rules rules = Rules::random);
+Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules = Rules::random);
+Outcome test_triangles(const TrianglePair& in, bool got, Rules rules = Rules::random);
+Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules = Rules::random);
+Outcome find_moving_boxes(const MovingBoxes& in, const ContactInterval& got, Rules rules = Rules::random);
+
+}  // namespace judge
+}  // namespace labkit::lab03

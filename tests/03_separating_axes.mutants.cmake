@@ -1,0 +1,64 @@
+# Lab 03's classic mistakes (handouts/03_separating_axes.md); each must fail its step.
+
+labkit_mutant(03 separating_axes NAME radius_without_abs STEP 1
+  FIND "p.radius += box.half_extents[k] * std::abs(box.axes.col(k).dot(axis));"
+  REPLACE "p.radius += box.half_extents[k] * box.axes.col(k).dot(axis);")
+
+labkit_mutant(03 separating_axes NAME touching_intervals_separate STEP 1
+  FIND "return std::abs(s) > r;  // a zero axis gives 0 > 0: never separated"
+  REPLACE "return std::abs(s) >= r;")
+
+labkit_mutant(03 separating_axes NAME textbook_radius STEP 2
+  FIND "b[m] * std::abs(C(i, n)) + b[n] * std::abs(C(i, m))"
+  REPLACE "b[m] * std::abs(R(i, n)) + b[n] * std::abs(R(i, m))")
+
+labkit_mutant(03 separating_axes NAME epsilon_guard STEP 2
+  FIND "x.r = a[i] + b[0] * std::abs(R(i, 0)) + b[1] * std::abs(R(i, 1)) + b[2] * std::abs(R(i, 2));"
+  REPLACE "x.r = a[i] + b[0] * (std::abs(R(i, 0)) + 1e-6) + b[1] * (std::abs(R(i, 1)) + 1e-6) + b[2] * (std::abs(R(i, 2)) + 1e-6);")
+
+labkit_mutant(03 separating_axes NAME face_axes_only STEP 2
+  FIND "  p.cofactors();
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (separates(p.edge_axis(i, j))) return false;"
+  REPLACE "")
+
+labkit_mutant(03 separating_axes NAME depth_not_normalized STEP 3
+  FIND "c.depth = (x.r - std::abs(x.s)) / length;"
+  REPLACE "c.depth = x.r - std::abs(x.s);")
+
+labkit_mutant(03 separating_axes NAME axis_not_toward_b STEP 3
+  FIND "if (x.s < 0) c.axis = -c.axis;"
+  REPLACE "")
+
+labkit_mutant(03 separating_axes NAME coplanar_is_a_miss STEP 4
+  FIND "if (s1.coplanar || s0.coplanar) return coplanar_triangles_intersect(t0, t1);"
+  REPLACE "if (s1.coplanar || s0.coplanar) return false;")
+
+labkit_mutant(03 separating_axes NAME interval_ends_strict STEP 4
+  FIND "return orient(a.v0, a.v1, b.v0, b.v1) <= 0 && orient(a.v0, a.v2, b.v2, b.v0) <= 0;"
+  REPLACE "return orient(a.v0, a.v1, b.v0, b.v1) < 0 && orient(a.v0, a.v2, b.v2, b.v0) < 0;")
+
+labkit_mutant(03 separating_axes NAME coplanar_only_when_exactly_zero STEP 4
+  FIND "s.coplanar = s.coplanar && std::abs(d) <= 1e-14 * (of[i] - t.v0).norm() * edges;"
+  REPLACE "s.coplanar = s.coplanar && d == 0;")
+
+labkit_mutant(03 separating_axes NAME enter_leave_not_swapped STEP 5
+  FIND "if (x.ds < 0) std::swap(enter, leave);"
+  REPLACE "")
+
+labkit_mutant(03 separating_axes NAME no_motion_axes STEP 5
+  FIND "    if (std::abs(s) > r) return false;"
+  REPLACE "")
+
+labkit_mutant(03 separating_axes NAME an_instant_is_no_contact STEP 5
+  FIND "if (first - last > first_error + last_error) return {};"
+  REPLACE "return {};")
+
+labkit_mutant(03 separating_axes NAME times_from_rounding_noise STEP 5
+  FIND "if (std::abs(x.ds) * duration <= noise) {"
+  REPLACE "if (x.ds == 0) {")
+
+labkit_mutant(03 separating_axes NAME touching_boxes_separate STEP 6
+  FIND "bool separates(const AxisTest& x) { return std::abs(x.s) > x.r; }"
+  REPLACE "bool separates(const AxisTest& x) { return std::abs(x.s) >= x.r; }")
