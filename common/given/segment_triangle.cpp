@@ -4,11 +4,18 @@
 
 namespace labkit::given {
 
+namespace {
+thread_local std::uint64_t calls = 0;
+}  // namespace
+
+std::uint64_t segment_triangle_calls() { return calls; }
+
 // Work in "segment space": translate so a is the origin, then shear so the segment's
 // direction becomes the z axis. The question becomes 2D: does the origin lie inside the
 // sheared triangle's projection? Its three edge functions U, V, W (2D cross products of
 // vertex pairs) answer it, and they are the barycentric weights up to a common factor.
 SegmentHit segment_triangle(const Segment& segment, const Triangle& triangle) {
+  ++calls;
   const Vec3 d = segment.b - segment.a;
   int kz = 0;
   d.cwiseAbs().maxCoeff(&kz);
