@@ -8,3 +8,4 @@
 #include "common/oracle/clipping.h"
 #include "common/oracle/predicates.h"
 #include "common/oracle/segment_triangle.h"
+#include "common/oracle/spatial_trees.h"
