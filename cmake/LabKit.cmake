@@ -7,7 +7,8 @@
 #                                    test_NN_name_student and test_NN_name_reference
 #   tests/NN_name.mutants.cmake   -> the reference with one classic mistake each; ctest
 #                                    expects the step each one breaks to fail
-#   viewer/scenes/NN_name.cpp     -> the lab's viewer scene (see viewer/CMakeLists.txt)
+#   viewer/scenes/NN_name.cpp     -> the lab's viewer scene, compiled into both viewers
+#                                    (viewer/CMakeLists.txt; its line in viewer/scenes/scenes.h)
 #
 # ctest runs each step of the reference as its own test, "labNN.stepK", with the steps
 # read from grading/manifest.json.
@@ -62,6 +63,9 @@ function(labkit_add_lab number name)
   endif()
 
   set_property(GLOBAL APPEND PROPERTY LABKIT_LABS ${stem})
+  if(EXISTS "${PROJECT_SOURCE_DIR}/viewer/scenes/${stem}.cpp")
+    set_property(GLOBAL APPEND PROPERTY LABKIT_SCENES ${stem})
+  endif()
 endfunction()
 
 # A test binary of lab NN linked against one implementation (a library target).
