@@ -516,3 +516,40 @@ TEST_CASE("L06S7 robustness: random exact degenerate cases", "[lab06][step7][ora
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
   });
 }
+
+// ---- Figures (not a graded step) ----------------------------------------------------------------
+// Primitive tests per query on 10k, 100k and 1M triangles, against brute force (every
+// triangle once). Hidden: run it with
+//   build/test_06_spatial_trees_reference "[lab06-figures]"
+// It counts calls of given::segment_triangle; it times nothing.
+TEST_CASE("L06 figures: primitive tests per query", "[.][lab06-figures]") {
+  const int segments = 1000;
+  std::printf("%-8s %9s | %-24s | %-24s | %-24s | %-24s\n", "mesh", "triangles", "short first_hit mean/worst",
+              "short any_hit mean/worst", "long first_hit mean/worst", "long all_hits mean/worst");
+  for (int size : {10000, 100000, 1000000})
+    for (int kind = 0; kind < 4; ++kind) {
+      const Mesh mesh = gen::mesh_of_kind(gen::MeshKind(kind), size, 1);
+      const KdTree tree = build_kd_tree(mesh);
+      Tally tallies[4];
+      for (bool short_ones : {true, false})
+        for (const Segment& s : judge::efficiency_segments(mesh, segments, short_ones, 7 + short_ones)) {
+          if (short_ones) {
+            tallies[0].add(first_hit(tree, s).tests);
+            tallies[1].add(any_hit(tree, s).tests);
+          } else {
+            tallies[2].add(first_hit(tree, s).tests);
+            tallies[3].add(all_hits(tree, s).tests);
+          }
+        }
+      const auto cell = [](const Tally& t) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.1f / %d", t.mean(), t.worst);
+        return std::string(text);
+      };
+      std::printf("%-8s %9zu | %-24s | %-24s | %-24s | %-24s   (brute force: %zu per query; %zu nodes, %zu items)\n",
+                  gen::name_of(gen::MeshKind(kind)), mesh.size(), cell(tallies[0]).c_str(), cell(tallies[1]).c_str(),
+                  cell(tallies[2]).c_str(), cell(tallies[3]).c_str(), mesh.size(), tree.nodes.size(), tree.items.size());
+      std::fflush(stdout);
+    }
+  SUCCEED();
+}

@@ -154,7 +154,8 @@ KdHits all_hits(const KdTree& tree, const Segment& segment);
 // Build: every triangle of non-zero area enters the root as one piece. At a node, pick
 // one of its pieces; the plane of that piece's triangle is the node's plane. A piece
 // whose triangle lies in that plane (all three vertices on it) stays at the node, facing
-// either way. Any other piece goes front when no vertex is behind, back when no vertex
+// either way; the pieces of the plane's own triangle always do (rounding may put its
+// vertices a hair off its own plane: they stay anyway, or the build never ends). Any other piece goes front when no vertex is behind, back when no vertex
 // is in front (vertices on the plane go along), and is split in two when it has vertices
 // strictly on both sides: cut its edges at x = (d_p q - d_q p) / (d_p - d_q), where d is
 // n . (x - v0), and cut the front and back polygons into triangles wound like the

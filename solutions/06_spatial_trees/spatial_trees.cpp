@@ -438,7 +438,10 @@ BspTree build_bsp(const Mesh& mesh) {
     node.first = int(tree.pieces.size());
     for (const Work& w : job.pieces) {
       const Triangle& source = tree.triangles[std::size_t(w.piece.source)];
-      if (in_plane(p, source)) {  // its triangle lies in the plane: it stays here
+      // Its triangle lies in the plane: it stays here. The splitter's own triangle always
+      // does, even when rounding makes n . (v1 - v0) a hair off zero: otherwise it could be
+      // sent on, chosen again below, and the build would never end.
+      if (w.piece.source == plane || in_plane(p, source)) {
         tree.pieces.push_back(w.piece);
         continue;
       }
