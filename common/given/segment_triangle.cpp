@@ -36,6 +36,10 @@ SegmentHit segment_triangle(const Segment& segment, const Triangle& triangle) {
   if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return {};  // outside an edge
   const long double det = u + v + w;
   if (det == 0) return {};  // in the triangle's plane, or a zero-area triangle
+  // A zero-area triangle can also leave det a hair off zero after the shear's rounding:
+  // ask the triangle itself (exact for collinear vertices on a lattice). Only candidate
+  // hits get here, so the cost is small.
+  if ((triangle.v1 - triangle.v0).cross(triangle.v2 - triangle.v0) == Vec3::Zero()) return {};
 
   // The crossing's depth along the segment, as a weighted sum, still scaled by det.
   const long double depth = u * (sz * a[kz]) + v * (sz * b[kz]) + w * (sz * c[kz]);
