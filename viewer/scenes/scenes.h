@@ -23,10 +23,13 @@ std::unique_ptr<Scene> make_frustum_split(const Setup& setup);
 const std::vector<Preset>& frustum_split_presets();
 std::unique_ptr<Scene> make_segment_triangle(const Setup& setup);
 const std::vector<Preset>& segment_triangle_presets();
+std::unique_ptr<Scene> make_spatial_trees(const Setup& setup);
+const std::vector<Preset>& spatial_trees_presets();
 
 inline const SceneInfo kScenes[] = {
     {"01", "01_frustum_split", "View-frustum clipping by triangle splitting", make_frustum_split, frustum_split_presets},
     {"02", "02_segment_triangle", "Segment against triangle and mesh", make_segment_triangle, segment_triangle_presets},
+    {"06", "06_spatial_trees", "BSP and k-d trees, pair reduction", make_spatial_trees, spatial_trees_presets},
 };
 
 }  // namespace viewer
