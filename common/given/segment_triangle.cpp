@@ -4,11 +4,18 @@
 
 namespace labkit::given {
 
+namespace {
+thread_local std::uint64_t calls = 0;
+}  // namespace
+
+std::uint64_t segment_triangle_calls() { return calls; }
+
 // Work in "segment space": translate so a is the origin, then shear so the segment's
 // direction becomes the z axis. The question becomes 2D: does the origin lie inside the
 // sheared triangle's projection? Its three edge functions U, V, W (2D cross products of
 // vertex pairs) answer it, and they are the barycentric weights up to a common factor.
 SegmentHit segment_triangle(const Segment& segment, const Triangle& triangle) {
+  ++calls;
   const Vec3 d = segment.b - segment.a;
   int kz = 0;
   d.cwiseAbs().maxCoeff(&kz);
@@ -29,6 +36,10 @@ SegmentHit segment_triangle(const Segment& segment, const Triangle& triangle) {
   if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0)) return {};  // outside an edge
   const long double det = u + v + w;
   if (det == 0) return {};  // in the triangle's plane, or a zero-area triangle
+  // A zero-area triangle can also leave det a hair off zero after the shear's rounding:
+  // ask the triangle itself (exact for collinear vertices on a lattice). Only candidate
+  // hits get here, so the cost is small.
+  if ((triangle.v1 - triangle.v0).cross(triangle.v2 - triangle.v0) == Vec3::Zero()) return {};
 
   // The crossing's depth along the segment, as a weighted sum, still scaled by det.
   const long double depth = u * (sz * a[kz]) + v * (sz * b[kz]) + w * (sz * c[kz]);

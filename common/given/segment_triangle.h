@@ -12,6 +12,8 @@
 
 #include "common/geometry.h"
 
+#include <cstdint>
+
 namespace labkit::given {
 
 struct SegmentHit {
@@ -22,5 +24,10 @@ struct SegmentHit {
 };
 
 SegmentHit segment_triangle(const Segment& segment, const Triangle& triangle);
+
+// How many times segment_triangle has run on this thread. The labs measure a search
+// structure's efficiency by counting primitive tests, never by timing: a check reads
+// this before and after a query.
+std::uint64_t segment_triangle_calls();
 
 }  // namespace labkit::given

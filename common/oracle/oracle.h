@@ -13,3 +13,4 @@
 #include "common/oracle/segment_triangle.h"
 #include "common/oracle/sphere_sweeps.h"
 #include "common/oracle/triangle_pair.h"
+#include "common/oracle/spatial_trees.h"

@@ -31,6 +31,8 @@ std::unique_ptr<Scene> make_particles(const Setup& setup);
 const std::vector<Preset>& particles_presets();
 std::unique_ptr<Scene> make_separating_axes(const Setup& setup);
 const std::vector<Preset>& separating_axes_presets();
+std::unique_ptr<Scene> make_spatial_trees(const Setup& setup);
+const std::vector<Preset>& spatial_trees_presets();
 
 inline const SceneInfo kScenes[] = {
     {"01", "01_frustum_split", "View-frustum clipping by triangle splitting", make_frustum_split, frustum_split_presets},
@@ -40,6 +42,7 @@ inline const SceneInfo kScenes[] = {
     {"07", "07_particles", "Particle systems that bounce", make_particles, particles_presets},
     {"03", "03_separating_axes", "Separating axes: oriented boxes, triangle pairs, moving boxes", make_separating_axes,
      separating_axes_presets},
+    {"06", "06_spatial_trees", "BSP and k-d trees, pair reduction", make_spatial_trees, spatial_trees_presets},
 };
 
 }  // namespace viewer

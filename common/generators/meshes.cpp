@@ -1,0 +1,570 @@
+#include "common/generators/meshes.h"
+
+#include "common/generators/generators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+namespace labkit::gen {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// splitmix64: a tiny, portable stream of random numbers from a seed.
+struct Random {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t x = (state += 0x9e3779b97f4a7c15ull);
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  }
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }  // [0, 1)
+  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
+};
+
+// Adds vertices once each, so that faces of a closed surface share them.
+class Builder {
+ public:
+  int vertex(const Vec3& p) {
+    const auto [it, added] = index_.try_emplace({p.x(), p.y(), p.z()}, int(mesh_.vertices.size()));
+    if (added) mesh_.vertices.push_back(p);
+    return it->second;
+  }
+  void triangle(const Vec3& a, const Vec3& b, const Vec3& c) { mesh_.triangles.push_back({vertex(a), vertex(b), vertex(c)}); }
+  Mesh take() { return std::move(mesh_); }
+
+ private:
+  Mesh mesh_;
+  std::map<std::array<double, 3>, int> index_;
+};
+
+Vec3 unit(int axis) { return Vec3::Unit(axis); }
+
+// The square face of the cube at `corner` (its lowest corner, side `s`) on axis k, on the
+// high side (+1) or the low side (-1). With u, v the next two axes, u x v = e_k: the quad
+// o, o + u, o + u + v, o + v winds around +e_k, and the low face is wound backwards.
+void add_cube_face(Builder& b, const Vec3& corner, double s, int k, int side) {
+  const Vec3 u = s * unit((k + 1) % 3), v = s * unit((k + 2) % 3);
+  const Vec3 o = side > 0 ? Vec3(corner + s * unit(k)) : corner;
+  if (side > 0) {
+    b.triangle(o, o + u, o + u + v);
+    b.triangle(o, o + u + v, o + v);
+  } else {
+    b.triangle(o, o + u + v, o + u);
+    b.triangle(o, o + v, o + u + v);
+  }
+}
+
+}  // namespace
+
+// ---- Builders of adjustable size ------------------------------------------------------
+
+// Rings of latitude k = 1 .. stacks - 1 between two poles, `slices` vertices each, with
+// slices = 2 stacks: 2 slices (stacks - 1) = 4 stacks (stacks - 1) triangles. A quad
+// (k, j) (k+1, j) (k+1, j+1) (k, j+1) runs down, then east: outward.
+Mesh sphere_mesh(int triangles, const Vec3& center, double radius) {
+  const int stacks = std::max(2, int(std::lround((1 + std::sqrt(1.0 + triangles)) / 2)));
+  const int slices = 2 * stacks;
+  Mesh m;
+  m.vertices.push_back(center + radius * Vec3::UnitZ());
+  for (int k = 1; k < stacks; ++k)
+    for (int j = 0; j < slices; ++j) {
+      const double theta = kPi * k / stacks, phi = 2 * kPi * j / slices;
+      m.vertices.push_back(center + radius * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
+    }
+  m.vertices.push_back(center - radius * Vec3::UnitZ());
+  const int south = int(m.vertices.size()) - 1;
+  const auto ring = [slices](int k, int j) { return 1 + (k - 1) * slices + (j % slices); };
+  for (int j = 0; j < slices; ++j) {
+    m.triangles.push_back({0, ring(1, j), ring(1, j + 1)});
+    for (int k = 1; k + 1 < stacks; ++k) {
+      m.triangles.push_back({ring(k, j), ring(k + 1, j), ring(k + 1, j + 1)});
+      m.triangles.push_back({ring(k, j), ring(k + 1, j + 1), ring(k, j + 1)});
+    }
+    m.triangles.push_back({ring(stacks - 1, j), south, ring(stacks - 1, j + 1)});
+  }
+  return m;
+}
+
+// p(alpha, beta) = ((R + r cos beta) cos alpha, (R + r cos beta) sin alpha, r sin beta):
+// dp/dalpha x dp/dbeta points out of the tube, so each quad runs alpha first.
+Mesh torus_mesh(int triangles, const Vec3& center, double major, double minor) {
+  const int around = std::max(3, int(std::lround(std::sqrt(triangles / 4.0))));  // tube cross-sections
+  const int ring = 2 * around;                                                    // around the main ring
+  Mesh m;
+  for (int i = 0; i < ring; ++i)
+    for (int j = 0; j < around; ++j) {
+      const double alpha = 2 * kPi * i / ring, beta = 2 * kPi * j / around;
+      const double w = major + minor * std::cos(beta);
+      m.vertices.push_back(center + Vec3(w * std::cos(alpha), w * std::sin(alpha), minor * std::sin(beta)));
+    }
+  const auto at = [=](int i, int j) { return (i % ring) * around + (j % around); };
+  for (int i = 0; i < ring; ++i)
+    for (int j = 0; j < around; ++j) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+// A few waves with random directions and phases: smooth hills, no two seeds alike.
+Mesh terrain_mesh(int triangles, std::uint64_t seed) {
+  const int n = std::max(1, int(std::lround(std::sqrt(triangles / 2.0))));
+  Random random{seed};
+  struct Wave {
+    double kx, ky, phase, amplitude;
+  };
+  std::vector<Wave> waves;
+  for (int i = 0; i < 6; ++i)
+    waves.push_back({random.uniform(-12, 12), random.uniform(-12, 12), random.uniform(0, 2 * kPi), 0.04 / (1 + i % 3)});
+  Mesh m;
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) {
+      const double x = double(i) / n, y = double(j) / n;
+      double z = 0;
+      for (const Wave& w : waves) z += w.amplitude * std::sin(w.kx * x + w.ky * y + w.phase);
+      m.vertices.push_back({x, y, z});
+    }
+  const auto at = [n](int i, int j) { return i * (n + 1) + j; };
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+    }
+  return m;
+}
+
+Mesh soup_mesh(int triangles, std::uint64_t seed) {
+  Random random{seed};
+  const double size = 1.0 / std::cbrt(std::max(1, triangles));
+  Mesh m;
+  for (int i = 0; i < triangles; ++i) {
+    const Vec3 c(random.uniform(), random.uniform(), random.uniform());
+    for (int k = 0; k < 3; ++k)
+      m.vertices.push_back(c + size * Vec3(random.uniform(-1, 1), random.uniform(-1, 1), random.uniform(-1, 1)));
+    m.triangles.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+  }
+  return m;
+}
+
+const char* name_of(MeshKind kind) {
+  switch (kind) {
+    case MeshKind::sphere: return "sphere";
+    case MeshKind::torus: return "torus";
+    case MeshKind::terrain: return "terrain";
+    case MeshKind::soup: return "soup";
+  }
+  return "?";
+}
+
+Mesh mesh_of_kind(MeshKind kind, int triangles, std::uint64_t seed) {
+  switch (kind) {
+    case MeshKind::sphere: return sphere_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.5);
+    case MeshKind::torus: return torus_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.35, 0.12);
+    case MeshKind::terrain: return terrain_mesh(triangles, seed);
+    case MeshKind::soup: return soup_mesh(triangles, seed);
+  }
+  return {};
+}
+
+// ---- Closed lattice solids ---------------------------------------------------------------
+
+Mesh box_mesh(const Aabb& box) {
+  // A box is one stretched cube: build the unit cube's faces, then move its corners.
+  Builder b;
+  for (int k = 0; k < 3; ++k)
+    for (int side : {-1, 1}) add_cube_face(b, Vec3::Zero(), 1.0, k, side);
+  Mesh m = b.take();
+  for (Vec3& p : m.vertices) p = box.min + p.cwiseProduct(box.max - box.min);
+  return m;
+}
+
+Mesh voxel_mesh(const std::vector<std::array<int, 3>>& cubes, const Vec3& origin, double scale) {
+  const std::map<std::array<int, 3>, bool> filled = [&] {
+    std::map<std::array<int, 3>, bool> f;
+    for (const auto& c : cubes) f[c] = true;
+    return f;
+  }();
+  Builder b;
+  for (const auto& [c, unused] : filled) {
+    (void)unused;
+    const Vec3 corner = origin + scale * Vec3(c[0], c[1], c[2]);
+    for (int k = 0; k < 3; ++k)
+      for (int side : {-1, 1}) {
+        std::array<int, 3> neighbour = c;
+        neighbour[std::size_t(k)] += side;
+        if (!filled.count(neighbour)) add_cube_face(b, corner, scale, k, side);
+      }
+  }
+  return b.take();
+}
+
+// ---- RapidCheck generators ---------------------------------------------------------------
+
+namespace {
+
+// Integer-times-power-of-two placement of a lattice solid: scale s, offset a lattice point
+// (far from the origin one time in eight).
+struct Placement {
+  double s = 1.0;
+  Vec3 offset = Vec3::Zero();
+};
+
+rc::Gen<Placement> placement() {
+  return rc::gen::exec([] {
+    const double s = *scale();
+    const bool far = *rc::gen::inRange(0, 8) == 0;
+    const Vec3 offset = far ? Vec3(*lattice_point(s * 64, 15)) : Vec3(*lattice_point(s, 4));
+    return Placement{s, offset};
+  });
+}
+
+Mesh moved(Mesh m, const Placement& p) {
+  for (Vec3& v : m.vertices) v = p.offset + p.s * v;
+  return m;
+}
+
+rc::Gen<Mesh> lattice_box() {
+  return rc::gen::exec([] {
+    const Placement p = *placement();
+    const Vec3 lo(*integer(4), *integer(4), *integer(4));
+    const Vec3 size(*rc::gen::inRange(1, 9), *rc::gen::inRange(1, 9), *rc::gen::inRange(1, 9));
+    return moved(box_mesh({lo, lo + size}), p);
+  });
+}
+
+rc::Gen<Mesh> lattice_octahedron() {
+  return rc::gen::exec([] {
+    const Placement p = *placement();
+    const double r = *rc::gen::inRange(1, 9);
+    Mesh m;
+    m.vertices = {{r, 0, 0}, {-r, 0, 0}, {0, r, 0}, {0, -r, 0}, {0, 0, r}, {0, 0, -r}};
+    m.triangles = {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}};
+    return moved(m, p);
+  });
+}
+
+// 1 to 8 cubes in a 3 x 3 x 2 block, grown from one cube so that most shapes are one
+// piece; edge-only contacts happen.
+rc::Gen<Mesh> lattice_voxels() {
+  return rc::gen::exec([] {
+    const Placement p = *placement();
+    const int count = *rc::gen::inRange(1, 9);
+    std::vector<std::array<int, 3>> cubes{{0, 0, 0}};
+    while (int(cubes.size()) < count) {
+      const std::array<int, 3> c{*rc::gen::inRange(0, 3), *rc::gen::inRange(0, 3), *rc::gen::inRange(0, 2)};
+      if (std::find(cubes.begin(), cubes.end(), c) == cubes.end()) cubes.push_back(c);
+    }
+    return moved(voxel_mesh(cubes, Vec3::Zero(), 1.0), p);
+  });
+}
+
+rc::Gen<Mesh> coarse_sphere() {
+  return rc::gen::exec([] {
+    const Placement p = *placement();
+    const int triangles = *rc::gen::element(8, 24, 48);
+    return moved(sphere_mesh(triangles, Vec3::Zero(), *rc::gen::inRange(1, 9)), p);
+  });
+}
+
+rc::Gen<Mesh> coarse_torus() {
+  return rc::gen::exec([] {
+    const Placement p = *placement();
+    const double minor = *rc::gen::inRange(1, 3);
+    return moved(torus_mesh(*rc::gen::element(18, 32, 72), Vec3::Zero(), minor + *rc::gen::inRange(1, 6), minor), p);
+  });
+}
+
+// A lattice terrain with flat stretches: heights from {0, 0, 1, 2}, so that whole faces lie
+// in the plane z = 0.
+rc::Gen<Mesh> flat_terrain() {
+  return rc::gen::exec([] {
+    const Placement p = *placement();
+    const int n = *rc::gen::inRange(1, 5);
+    Mesh m;
+    for (int i = 0; i <= n; ++i)
+      for (int j = 0; j <= n; ++j) m.vertices.push_back(Vec3(i, j, *rc::gen::element(0, 0, 1, 2)));
+    const auto at = [n](int i, int j) { return i * (n + 1) + j; };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) {
+        m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+        m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      }
+    return moved(m, p);
+  });
+}
+
+// The same triangle many times over: no split can ever separate them.
+rc::Gen<Mesh> pile() {
+  return rc::gen::exec([] {
+    const Triangle t = *triangle(*scale());
+    Mesh m;
+    m.vertices = {t.v0, t.v1, t.v2};
+    const int n = *rc::gen::inRange(2, 24);
+    for (int i = 0; i < n; ++i) m.triangles.push_back({0, 1, 2});
+    return m;
+  });
+}
+
+// The largest |coordinate| of a mesh: the scale S of its tolerances.
+double size_of(const Mesh& m) { return std::max(scale_of(m), 1e-300); }
+
+Aabb bounds_of(const Mesh& m) {
+  Aabb b{Vec3::Zero(), Vec3::Zero()};
+  if (m.vertices.empty()) return b;
+  b.min = b.max = m.vertices[0];
+  for (const Vec3& v : m.vertices) {
+    b.min = b.min.cwiseMin(v);
+    b.max = b.max.cwiseMax(v);
+  }
+  return b;
+}
+
+// A power of two near an eighth of the mesh's largest extent: the length unit of the
+// segments aimed at it, whatever its distance from the origin.
+double unit_of(const Mesh& m) {
+  const Aabb b = bounds_of(m);
+  const double extent = (b.max - b.min).maxCoeff();
+  return extent > 0 ? std::ldexp(1.0, std::ilogb(extent) - 3) : std::max(std::ldexp(1.0, std::ilogb(size_of(m)) - 3), 1e-300);
+}
+
+// The step of a lattice mesh: the largest power of two that divides all its coordinates,
+// or 0 when that step is far below the mesh's extent (the mesh is not on a lattice).
+double lattice_step(const Mesh& m) {
+  const double unit = unit_of(m);
+  double step = 64 * unit;
+  for (const Vec3& v : m.vertices)
+    for (int i = 0; i < 3; ++i)
+      while (step >= unit / 512 && std::fmod(v[i], step) != 0) step /= 2;
+  return step >= unit / 512 ? step : 0.0;
+}
+
+// A lattice point of the mesh's box, grown by one step: often on a face, an edge, a
+// vertex or the plane of a face.
+rc::Gen<Vec3> lattice_point_in(const Mesh& m, double step) {
+  const Aabb b = bounds_of(m);
+  return rc::gen::exec([b, step] {
+    Vec3 p;
+    for (int i = 0; i < 3; ++i) {
+      const double lo = std::floor(b.min[i] / step) - 1, hi = std::ceil(b.max[i] / step) + 1;
+      p[i] = step * (lo + *rc::gen::inRange(0, int(hi - lo) + 1));
+    }
+    return p;
+  });
+}
+
+rc::Gen<Triangle> face_of(const Mesh& m) {
+  return rc::gen::map(rc::gen::inRange(0, int(m.size())), [m](int i) { return m.triangle(std::size_t(i)); });
+}
+
+}  // namespace
+
+rc::Gen<Mesh> closed_mesh() {
+  return rc::gen::weightedOneOf<Mesh>({{2, lattice_box()}, {2, lattice_octahedron()}, {3, lattice_voxels()},
+                                       {2, coarse_sphere()}, {2, coarse_torus()}});
+}
+
+rc::Gen<Mesh> exact_closed_mesh() {
+  return rc::gen::weightedOneOf<Mesh>({{1, lattice_box()}, {1, lattice_octahedron()}, {3, lattice_voxels()}});
+}
+
+rc::Gen<Mesh> any_mesh() {
+  return rc::gen::weightedOneOf<Mesh>({{4, rc::gen::exec([] { return *mesh(*scale()); })},
+                                       {3, closed_mesh()},
+                                       {2, flat_terrain()},
+                                       {1, pile()}});
+}
+
+rc::Gen<Mesh> exact_mesh() {
+  return rc::gen::weightedOneOf<Mesh>({{1, lattice_box()}, {3, lattice_voxels()}, {2, flat_terrain()}});
+}
+
+rc::Gen<Vec3> point_near(const Mesh& m, bool exact) {
+  if (m.size() == 0) return rc::gen::just(Vec3(Vec3::Zero()));
+  const double step = lattice_step(m);
+  const rc::Gen<Vec3> on_face = rc::gen::mapcat(face_of(m), [](const Triangle& t) { return point_in_triangle(t); });
+  const rc::Gen<Vec3> vertex = rc::gen::elementOf(m.vertices);
+  const rc::Gen<Vec3> lattice = step > 0 ? lattice_point_in(m, step) : on_face;
+  if (exact) return rc::gen::weightedOneOf<Vec3>({{3, on_face}, {1, vertex}, {4, lattice}});
+  const Aabb b = bounds_of(m);
+  const double s = size_of(m);
+  const rc::Gen<Vec3> anywhere = rc::gen::exec([b] {
+    const Vec3 margin = 0.25 * (b.max - b.min);
+    Vec3 p;
+    for (int i = 0; i < 3; ++i)
+      p[i] = b.min[i] - margin[i] + (b.max[i] - b.min[i] + 2 * margin[i]) * *rc::gen::inRange(0, 1 << 20) / double(1 << 20);
+    return p;
+  });
+  // A point of a face moved off it by a tiny multiple of the mesh's scale.
+  const rc::Gen<Vec3> off_face = rc::gen::exec([m, s] {
+    const Triangle t = *face_of(m);
+    const Vec3 n = t.normal() == Vec3::Zero() ? Vec3(Vec3::UnitZ()) : Vec3(t.normal().normalized());
+    return Vec3(*point_in_triangle(t) + *integer(4) * *tiny(12, 45) * s * n);
+  });
+  return rc::gen::weightedOneOf<Vec3>({{2, on_face}, {1, vertex}, {2, lattice}, {4, anywhere}, {2, off_face}});
+}
+
+rc::Gen<Segment> segment_near(const Mesh& m) {
+  if (m.size() == 0) return rc::gen::exec([] { return Segment{*point(1.0), *point(1.0)}; });
+  const double s = size_of(m), unit = unit_of(m);
+  // Through a point of a face: from any side, at any length, sometimes aimed at a vertex
+  // of that face so that it runs along or across the face.
+  const rc::Gen<Segment> through = rc::gen::exec([m, unit] {
+    const Triangle t = *face_of(m);
+    const Vec3 x = *point_in_triangle(t);
+    Vec3 d = *direction(unit);
+    if (*rc::gen::inRange(0, 4) == 0) d = t[*rc::gen::inRange(0, 3)] - x + *integer(2) * unit * t.normal().cwiseSign();
+    if (d == Vec3::Zero()) d = unit * Vec3::UnitX();
+    const int k = *rc::gen::inRange(1, 17);
+    return Segment{x + d, x - (k / 8.0) * d};
+  });
+  const rc::Gen<Segment> between = rc::gen::exec([m] { return Segment{*point_near(m, false), *point_near(m, false)}; });
+  // Short segments a tiny distance off a face, along it or ending just before it.
+  const rc::Gen<Segment> grazing = rc::gen::exec([m, s, unit] {
+    const Triangle t = *face_of(m);
+    const Vec3 x = *point_in_triangle(t);
+    const Vec3 n = t.normal() == Vec3::Zero() ? Vec3(Vec3::UnitZ()) : Vec3(t.normal().normalized());
+    const double h = *integer(4) * *tiny(12, 45) * s;
+    const Vec3 d = *direction(unit / 2);
+    return *rc::gen::element(Segment{x + n * h, x + n * h + d}, Segment{x + n * (h + unit), x + n * h});
+  });
+  return rc::gen::weightedOneOf<Segment>({{4, through}, {3, between}, {2, grazing}});
+}
+
+rc::Gen<Segment> exact_segment_near(const Mesh& m) {
+  const double step = lattice_step(m) > 0 ? lattice_step(m) : unit_of(m);
+  return rc::gen::exec([m, step] {
+    // An anchor on the lattice, a vertex or a point of a face with eighths weights (the
+    // lattice of exact meshes is a multiple of 8 steps only for boxes and cubes; halves
+    // and quarters are safe everywhere).
+    Vec3 x = *lattice_point_in(m, step);
+    if (m.size() > 0 && *rc::gen::inRange(0, 2) == 0) {
+      const Triangle t = *face_of(m);
+      const int p = *rc::gen::inRange(0, 5), q = *rc::gen::inRange(0, 5 - p);
+      x = (p * t.v0 + q * t.v1 + (4 - p - q) * t.v2) / 4;
+    }
+    // A direction whose largest |component| is a power of two: along an axis, along a
+    // face diagonal, or slanted with small integer parts.
+    const int major = *rc::gen::inRange(0, 3);
+    Vec3 d = Vec3::Zero();
+    d[major] = (*rc::gen::element(1, -1)) * step * *rc::gen::element(1, 2, 4, 8);
+    const int kind = *rc::gen::inRange(0, 3);
+    if (kind >= 1) d[(major + 1) % 3] = step * *integer(int(std::abs(d[major]) / step));
+    if (kind == 2) d[(major + 2) % 3] = step * *integer(int(std::abs(d[major]) / step));
+    // Both ends, one end or neither on the anchor.
+    switch (*rc::gen::inRange(0, 3)) {
+      case 0: return Segment{x - d, x + d};
+      case 1: return Segment{x, x + d};
+      default: return Segment{x - d, x};
+    }
+  });
+}
+
+// ---- Spheres ---------------------------------------------------------------------------
+
+namespace {
+
+rc::Gen<Sphere> sphere_at(double s, int magnitude, int max_radius) {
+  return rc::gen::exec([=] { return Sphere{*lattice_point(s, magnitude), s * *rc::gen::inRange(0, max_radius + 1)}; });
+}
+
+// Spheres that touch in a chain, exactly: along an axis or along a lattice direction
+// of integer length L ((3, 4, 0): L = 5; (2, 3, 6): L = 7). Radii are multiples of s L
+// and each step between centres is (r + r') / L times the direction: exactly r + r'.
+rc::Gen<std::vector<Sphere>> touching_chain(double s) {
+  return rc::gen::exec([s] {
+    const Vec3 dir = *rc::gen::element(Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(3, 4, 0), Vec3(2, -3, 6));
+    const double length = dir.norm();
+    std::vector<Sphere> out;
+    Vec3 c = *lattice_point(s, 4);
+    const int n = *rc::gen::inRange(2, 9);
+    int k = *rc::gen::inRange(0, 4);
+    for (int i = 0; i < n; ++i) {
+      out.push_back({c, s * length * k});
+      const int next = *rc::gen::inRange(0, 4);
+      c += s * (k + next) * dir;
+      k = next;
+    }
+    return out;
+  });
+}
+
+}  // namespace
+
+rc::Gen<std::vector<Sphere>> sphere_set() {
+  return rc::gen::exec([] {
+    const double s = *scale();
+    const int kind = *rc::gen::inRange(0, 7);
+    std::vector<Sphere> out;
+    const int n = *rc::gen::inRange(0, 61);
+    switch (kind) {
+      case 0:  // spread out: few overlaps
+        for (int i = 0; i < n; ++i) out.push_back({*point(s * 4), s * *rc::gen::inRange(0, 1 << 20) / double(1 << 19)});
+        break;
+      case 1:  // clustered: many overlaps
+        for (int i = 0; i < n; ++i) out.push_back({*point(s / 4), s * *rc::gen::inRange(0, 1 << 20) / double(1 << 18)});
+        break;
+      case 2: {  // all on the plane x = const: a sweep along x sees every pair overlap
+        const double x = (*point(s)).x();
+        for (int i = 0; i < n; ++i) {
+          Vec3 c = *point(s);
+          c.x() = x;
+          out.push_back({c, s * *rc::gen::inRange(0, 1 << 20) / double(1 << 20)});
+        }
+        break;
+      }
+      case 3:  // exact chains, mixed with loose spheres
+        out = *touching_chain(s);
+        for (int i = 0; i < n / 4; ++i) out.push_back(*sphere_at(s, 8, 3));
+        break;
+      case 4:  // coincident centres and zero radii
+        for (int i = 0; i < n / 2; ++i) {
+          const Sphere a = *sphere_at(s, 4, 2);
+          out.push_back(a);
+          out.push_back({a.center, s * *rc::gen::inRange(0, 3)});
+        }
+        break;
+      case 5: {  // one huge sphere among small ones
+        for (int i = 0; i < n; ++i) out.push_back({*point(s * 4), s * *rc::gen::inRange(0, 1 << 20) / double(1 << 20)});
+        out.insert(out.begin() + *rc::gen::inRange(0, int(out.size()) + 1), Sphere{*point(s), s * *rc::gen::inRange(8, 40)});
+        break;
+      }
+      default:  // lattice spheres: touching and exactly tangent pairs happen often
+        for (int i = 0; i < n; ++i) out.push_back(*sphere_at(s, 6, 3));
+    }
+    if (*rc::gen::inRange(0, 8) == 0) {  // far from the origin
+      const Vec3 offset = *lattice_point(s * 1024, 64);
+      for (Sphere& sp : out) sp.center += offset;
+    }
+    return out;
+  });
+}
+
+rc::Gen<std::vector<Sphere>> exact_sphere_set() {
+  return rc::gen::exec([] {
+    const double s = *scale();
+    std::vector<Sphere> out = *touching_chain(s);
+    const std::vector<Sphere> more = *touching_chain(s);
+    out.insert(out.end(), more.begin(), more.end());
+    const int loose = *rc::gen::inRange(0, 20);
+    for (int i = 0; i < loose; ++i) out.push_back(*sphere_at(s, 6, 3));
+    std::vector<Sphere> shuffled;
+    for (const Sphere& sp : out) shuffled.insert(shuffled.begin() + *rc::gen::inRange(0, int(shuffled.size()) + 1), sp);
+    return shuffled;
+  });
+}
+
+std::vector<Sphere> spread_spheres(int n, double side, double r_min, double r_max, std::uint64_t seed) {
+  Random random{seed};
+  std::vector<Sphere> out;
+  for (int i = 0; i < n; ++i) {
+    const Vec3 c(random.uniform(0, side), random.uniform(0, side), random.uniform(0, side));
+    out.push_back({c, random.uniform(r_min, r_max)});
+  }
+  return out;
+}
+
+}  // namespace labkit::gen

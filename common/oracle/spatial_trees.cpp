@@ -1,0 +1,122 @@
+#include "common/oracle/spatial_trees.h"
+
+#include "common/oracle/kernel.h"
+#include "common/oracle/predicates.h"
+#include "common/oracle/segment_triangle.h"
+
+#include <CGAL/intersections.h>
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace oracle {
+
+using namespace kernel;
+
+bool segment_crosses_triangle(const Segment& s, const Triangle& t) {
+  if (is_degenerate(t)) return false;
+  if (orientation(t.v0, t.v1, t.v2, s.a) == 0 && orientation(t.v0, t.v1, t.v2, s.b) == 0) return false;
+  return segment_hits_triangle(s, t);
+}
+
+std::vector<Crossing> segment_mesh_crossings(const Segment& s, const Mesh& mesh) {
+  std::vector<Crossing> out;
+  for (const SegmentHit& h : segment_mesh_hits(s, mesh))
+    if (!h.coplanar) out.push_back({h.triangle, h.t});  // sorted by t, then index, already
+  return out;
+}
+
+bool triangle_meets_box(const Triangle& t, const Aabb& box) {
+  if (is_degenerate(t)) return false;
+  const Epick::Triangle_3 tri(fast(t.v0), fast(t.v1), fast(t.v2));
+  const Epick::Iso_cuboid_3 cuboid(fast(box.min), fast(box.max));
+  return CGAL::do_intersect(tri, cuboid);
+}
+
+namespace {
+
+bool on_triangle(const Triangle& t, const Vec3& p) {
+  return Epick::Triangle_3(fast(t.v0), fast(t.v1), fast(t.v2)).has_on(fast(p));
+}
+
+// Does the ray's segment p -> r cross the triangle properly (through its interior, the
+// ends off its plane)? `degenerate` is set when it passes through an edge's line or r
+// lies on the plane: then parity along this ray means nothing.
+bool crosses(const Vec3& p, const Vec3& r, const Triangle& t, bool& degenerate) {
+  const int side_p = orientation(t.v0, t.v1, t.v2, p), side_r = orientation(t.v0, t.v1, t.v2, r);
+  if (side_r == 0) {
+    degenerate = true;
+    return false;
+  }
+  if (side_p == side_r || side_p == 0) return false;  // one side, or p on the plane (and off the triangle)
+  int signs[3];
+  for (int i = 0; i < 3; ++i) signs[i] = orientation(p, r, t[i], t[(i + 1) % 3]);
+  if (signs[0] == 0 || signs[1] == 0 || signs[2] == 0) {
+    degenerate = true;
+    return false;
+  }
+  return signs[0] == signs[1] && signs[1] == signs[2];
+}
+
+}  // namespace
+
+int point_in_solid(const Vec3& p, const Mesh& closed) {
+  double reach = 1.0;
+  for (const Vec3& v : closed.vertices) reach = std::max(reach, (v - p).cwiseAbs().maxCoeff());
+  for (std::size_t i = 0; i < closed.size(); ++i) {
+    const Triangle t = closed.triangle(i);
+    if (!is_degenerate(t) && on_triangle(t, p)) return 0;
+  }
+  // Directions with unrelated dyadic components: a ray through an edge or a vertex is a
+  // coincidence that the next direction will not repeat.
+  static const Vec3 directions[] = {{1, 0.3134765625, 0.0712890625},   {-0.4482421875, 1, 0.1962890625},
+                                    {0.2548828125, -0.6728515625, 1},   {-1, -0.1103515625, 0.5830078125},
+                                    {0.8623046875, 0.4189453125, -1},   {0.0380859375, -1, -0.7451171875},
+                                    {1, -0.8935546875, 0.6611328125},   {-0.5322265625, 0.9716796875, -1}};
+  for (const Vec3& d : directions) {
+    // r: far enough to be outside the mesh's box (the rounding of r does not matter).
+    const Vec3 r = p + 4 * reach * d;
+    bool degenerate = false;
+    int count = 0;
+    for (std::size_t i = 0; i < closed.size() && !degenerate; ++i) {
+      const Triangle t = closed.triangle(i);
+      if (!is_degenerate(t) && crosses(p, r, t, degenerate)) ++count;
+    }
+    if (!degenerate) return count % 2 == 1 ? 1 : -1;
+  }
+  throw std::logic_error("point_in_solid: every ray direction passed through an edge");
+}
+
+bool side_in_doubt(const Triangle& t, const Vec3& x, double delta) {
+  const Vec3 n = t.normal();
+  const double twice_area = n.norm();
+  if (twice_area == 0) return true;
+  const Vec3 unit = n / twice_area;
+  const Vec3 lambda = Vec3((t.v1 - x).cross(t.v2 - x).dot(unit), (t.v2 - x).cross(t.v0 - x).dot(unit),
+                           (t.v0 - x).cross(t.v1 - x).dot(unit)) / twice_area;
+  const double eps = std::sqrt(3.0) * delta;
+  return std::abs((x - t.v0).dot(unit)) <= 2 * eps * (1 + lambda.cwiseAbs().sum());
+}
+
+bool balls_meet(const Sphere& a, const Sphere& b) {
+  // Decide in doubles when the answer is clear by far more than their rounding error
+  // (a relative 1e-12 of the sizes involved), exactly otherwise.
+  const double d2 = (a.center - b.center).squaredNorm(), sum = a.radius + b.radius, s2 = sum * sum;
+  const double margin = 1e-12 * (d2 + s2);
+  if (d2 > s2 + margin) return false;
+  if (d2 < s2 - margin) return true;
+  const Epeck::Point_3 ca = exact(a.center), cb = exact(b.center);
+  const FT r = FT(a.radius) + FT(b.radius);
+  return CGAL::squared_distance(ca, cb) <= r * r;
+}
+
+std::vector<std::array<int, 2>> meeting_pairs(const std::vector<Sphere>& spheres) {
+  std::vector<std::array<int, 2>> out;
+  for (int i = 0; i < int(spheres.size()); ++i)
+    for (int j = i + 1; j < int(spheres.size()); ++j)
+      if (balls_meet(spheres[std::size_t(i)], spheres[std::size_t(j)])) out.push_back({i, j});
+  return out;
+}
+
+}  // namespace oracle

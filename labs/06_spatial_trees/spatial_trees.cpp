@@ -1,0 +1,66 @@
+// Lab 06: BSP and k-d trees, pair reduction. Your file: replace each stub below.
+// The contract is spatial_trees.h; the steps are in handouts/06_spatial_trees.md.
+// Check your work with:  ./labkit check 06        (one step: ./labkit check 06 --step 1)
+//
+// The segment-triangle test is given: call labkit::given::segment_triangle(segment,
+// triangle) and count each call in your result's `tests`.
+#include "spatial_trees.h"
+
+#include "common/not_implemented.h"
+
+namespace labkit::lab06 {
+
+// L06S1: the k-d tree. Say here which split rule and which leaf size you chose.
+KdTree build_kd_tree(const Mesh& mesh) {
+  (void)mesh;
+  not_implemented("L06S1");
+}
+
+// L06S2: the nearest hit, front to back, with an early exit.
+KdHit first_hit(const KdTree& tree, const Segment& segment) {
+  (void)tree;
+  (void)segment;
+  not_implemented("L06S2");
+}
+
+// L06S2: any hit, stopping at the first one found.
+KdHit any_hit(const KdTree& tree, const Segment& segment) {
+  (void)tree;
+  (void)segment;
+  not_implemented("L06S2");
+}
+
+// L06S2: every hit, each triangle once, sorted by t.
+KdHits all_hits(const KdTree& tree, const Segment& segment) {
+  (void)tree;
+  (void)segment;
+  not_implemented("L06S2");
+}
+
+// L06S3: the BSP tree, cut along the mesh's triangles.
+BspTree build_bsp(const Mesh& mesh) {
+  (void)mesh;
+  not_implemented("L06S3");
+}
+
+// L06S3: inside, outside or on the surface.
+Where classify(const BspTree& tree, const Vec3& point) {
+  (void)tree;
+  (void)point;
+  not_implemented("L06S3");
+}
+
+// L06S4: the painter's order.
+std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) {
+  (void)tree;
+  (void)eye;
+  not_implemented("L06S4");
+}
+
+// L06S5: the overlapping pairs, without testing them all.
+SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
+  (void)spheres;
+  not_implemented("L06S5");
+}
+
+}  // namespace labkit::lab06

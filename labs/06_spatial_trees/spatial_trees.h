@@ -1,0 +1,247 @@
+// Lab 06: BSP and k-d trees, pair reduction.
+// Handout: handouts/06_spatial_trees.md. Lectures 000 and 001 (collision optimization:
+// BVHs, octrees, k-d trees, BSP trees, uniform grids, pair reduction), 002 (reducing the
+// number of detections: partitioning space, the plane sweep) and 004 (segment against a
+// mesh: first hit, any hit, all hits).
+//
+// You write labs/06_spatial_trees/spatial_trees.cpp; this header is the contract.
+//
+// Three structures that spare a search most of its tests:
+//  - a k-d tree over a mesh's triangles answers segment queries (steps 1, 2);
+//  - a BSP tree cut along the mesh's own triangles tells inside from outside and lists
+//    the triangles back to front (steps 3, 4);
+//  - a sweep (or a grid) finds the overlapping pairs among many spheres (step 5).
+// Step 6 counts their tests; step 7 feeds them exact degenerate input.
+//
+// The primitive is given. Whether a segment hits a triangle is decided by the watertight
+// test labkit::given::segment_triangle (common/given/segment_triangle.h), here and in
+// the reference: you write the trees, their traversal and the broad phase, not the
+// primitive. Its rules are this lab's rules for a hit: the triangle is closed (edges and
+// vertices count), but a segment lying in the triangle's plane, a zero-length segment
+// and a zero-area triangle never hit.
+//
+// Tolerances. S is the largest absolute coordinate of the input (mesh vertices, segment
+// ends, points, sphere centres and radii), and tol = 1e-9 S.
+//  - Yes/no answers (is this triangle hit, is this point inside, do these balls meet,
+//    which side of a plane is the eye on) must equal the exact answer, except on
+//    ambiguous input, whose exact answer changes under a perturbation of tol: there
+//    either answer passes. Only the answer's own geometry counts: a hit or a pair is
+//    never ambiguous because a tree's split plane passes near it.
+//  - Hit fields come from given::segment_triangle as it returns them: the point within
+//    tol of the segment and of the triangle, a + t (b - a) within tol of the point.
+//  - The k-d tree's completeness rule (step 1) is exact: no tolerance at all.
+//  - BSP pieces lie within tol of their triangle and of their node's cell; their areas
+//    add up to their triangle's within 1e-9 S L (L its longest edge) per piece.
+//  - Test counts are exact: the checker counts the calls of given::segment_triangle.
+// Step 7's input is on integers (|x| <= 1024 times a power of two; segments whose
+// b - a has a power of two as its largest |component|, where the given test is exact):
+// there nothing is ambiguous, and every rule below holds exactly.
+#pragma once
+
+#include "common/geometry.h"
+#include "common/given/segment_triangle.h"
+
+#include <array>
+#include <vector>
+
+namespace labkit::lab06 {
+
+// ---- Step 1 (L06S1): build a k-d tree over a mesh ----------------------------------------
+//
+// Every node owns a closed box, its cell; the root's is `bounds`. An interior node cuts
+// its cell by the plane x[axis] = split into two closed cells: below (x[axis] <= split)
+// and above (x[axis] >= split). A leaf lists triangles. Nodes sit in one array, depth
+// first, each interior node directly followed by its subtree below:
+//
+//    y                                     nodes                       items
+//    4 +-----------+-----------+           0: x = 4,  above: node 4    [0] 1   leaf 2
+//      |  leaf 3   |           |           1: y = 2,  above: node 3    [1] 7
+//    2 +-----------+  leaf 4   |           2: leaf, items from [0]     [2] 2   leaf 3
+//      |  leaf 2   | (empty)   |           3: leaf, items from [2]     [3] 5
+//    0 +-----------+-----------+--> x      4: leaf, items from [5]     [4] 7
+//      0           4           8                                       [5] 0   leaf 4
+//
+// Triangle 7 touches y = 2, so it is listed in both leaves it meets. A leaf's list is its
+// count followed by that many triangle indices.
+//
+// The rule a tree must keep (exactly): every triangle of non-zero area that meets the
+// closed cell of a leaf, even at one point, is listed in that leaf. Sending a triangle
+// below when its box's min[axis] <= split, and above when its max[axis] >= split (both,
+// when it straddles or touches the plane, or lies in it) keeps it. A leaf may list more
+// (triangles whose box, not themselves, meets the cell) but never an index twice.
+// Zero-area triangles are never hit and may be left out.
+//
+// Your choice, stated in your file: the split rule (spatial median, object median, or
+// the surface area heuristic of the handout), and when to stop (a leaf size, no more
+// progress). Any valid tree passes this step; step 6 measures how good it is.
+
+constexpr int kLeaf = 3;       // KdNode::axis of a leaf
+constexpr int kMaxDepth = 64;  // no root-to-leaf path has more interior nodes than this
+
+struct KdNode {
+  double split = 0.0;  // interior: the plane x[axis] = split, with cell.min[axis] <= split <= cell.max[axis]
+  int axis = kLeaf;    // 0, 1, 2 (x, y, z) for an interior node; kLeaf for a leaf
+  int index = 0;       // interior: the child above is nodes[index] (the child below is the next
+                       // node, this one's index + 1). Leaf: its list starts at items[index]
+};
+
+struct KdTree {
+  Aabb bounds;                      // the root's cell: a box around every triangle (the tightest one)
+  std::vector<KdNode> nodes;        // nodes[0] is the root
+  std::vector<int> items;           // the leaves' lists: a count, then that many triangle indices
+  std::vector<Triangle> triangles;  // triangles[i] = mesh.triangle(i): what the queries test
+};
+
+// A mesh without triangles gets a tree of one empty leaf (and bounds of zero size).
+KdTree build_kd_tree(const Mesh& mesh);
+
+// ---- Step 2 (L06S2): segment queries -------------------------------------------------------
+//
+// The tree is any valid tree (step 1's rule), not necessarily built by your step 1: the
+// checker also hands your queries trees of its own, with split planes through vertices,
+// on cell walls, and empty leaves.
+//
+// Walk the leaves the segment meets, front to back: clip the segment to `bounds`, then at
+// each interior node, with the segment's part in its cell running from t0 to t1 (a point
+// of the segment is a + t (b - a)):
+//
+//         a *-------------|------------* b       t_split = (split - a[axis]) / (b - a)[axis]
+//           t0   near     |     far    t1       near: the child on a's side of the plane
+//                       split                   (the side b - a leaves, when a is on it)
+//
+// visit the near child on [t0, min(t1, t_split)] and then, if t_split <= t1, the far
+// child on [max(t0, t_split), t1]. A segment parallel to the plane ((b - a)[axis] = 0)
+// stays in the near child: compute no t_split for it (0 / 0 is not a number).
+//
+// Tests. A query may call given::segment_triangle only on triangles listed in leaves
+// whose closed cell the segment meets, once per listing; first_hit and any_hit only in
+// leaves the segment enters no later than the hit they return (at t0 <= its t), or in all
+// of them when they return none. `tests` is how many calls the query made; the checker
+// counts the calls too, and the two must agree.
+
+struct KdHit {
+  bool hit = false;                 // false: no triangle is hit (then only `tests` means anything)
+  int triangle = -1;                // an index into the mesh's triangles
+  double t = 0.0;                   // the hit point is a + t (b - a), as given::segment_triangle says
+  Vec3 point = Vec3::Zero();        // that point
+  Vec3 barycentric = Vec3::Zero();  // its weights of v0, v1, v2
+  int tests = 0;                    // calls of given::segment_triangle this query made
+};
+
+struct KdHits {
+  std::vector<KdHit> hits;  // every triangle hit, once each, sorted by t (ties: lower index
+                            // first); their own `tests` fields are not read
+  int tests = 0;            // calls of given::segment_triangle this query made
+};
+
+// The hit with the smallest t (two triangles tied: either). Stop as soon as the best hit
+// so far is at or before the far end t1 of the leaf just searched; a hit beyond it may
+// still lose to a triangle in a later leaf.
+KdHit first_hit(const KdTree& tree, const Segment& segment);
+// Some hit, any: front to back as above, stopping at the first triangle found hit.
+KdHit any_hit(const KdTree& tree, const Segment& segment);
+// Every hit: each leaf the segment meets, each triangle reported once.
+KdHits all_hits(const KdTree& tree, const Segment& segment);
+
+// ---- Step 3 (L06S3): a BSP tree: build it, classify a point ---------------------------------
+//
+// An auto-partition: every node's plane is the plane of one of the mesh's triangles.
+//
+//                 front: n . (x - v0) > 0        n = (v1 - v0) x (v2 - v0) of mesh
+//      ---------*=====*------------------        triangle `plane`; the pieces lying in
+//                 back:  n . (x - v0) < 0        it (=====) stay at the node
+//
+// Build: every triangle of non-zero area enters the root as one piece. At a node, pick
+// one of its pieces; the plane of that piece's triangle is the node's plane. A piece
+// whose triangle lies in that plane (all three vertices on it) stays at the node, facing
+// either way; the pieces of the plane's own triangle always do (rounding may put its
+// vertices a hair off its own plane: they stay anyway, or the build never ends). Any other piece goes front when no vertex is behind, back when no vertex
+// is in front (vertices on the plane go along), and is split in two when it has vertices
+// strictly on both sides: cut its edges at x = (d_p q - d_q p) / (d_p - d_q), where d is
+// n . (x - v0), and cut the front and back polygons into triangles wound like the
+// triangle they come from. A piece whose vertices all lie on the plane (a sliver of zero
+// area, after rounding) may go either way. Build the front and back children from what
+// went there; no piece: no child (-1).
+//
+// Decide every side by the sign of n . (x - v0) computed in doubles: on integer input
+// with |x| <= 1024 it is exact. Zero-area triangles are left out altogether.
+//
+// Classify, for a closed mesh wound outward (every normal pointing out of the solid):
+// where is p? Descend from the root: strictly in front, go front; strictly behind, go
+// back. A missing front child means outside, a missing back child inside. On the plane:
+// p is on the surface if it is in the closed triangle of a piece at this node; otherwise
+// classify it in both subtrees: on if either says on or if they disagree, else what they
+// agree on. (A point with inside on one side and outside on the other is on the surface.)
+
+struct BspPiece {
+  Triangle triangle;  // the whole mesh triangle, or a part of it cut by planes above, wound like it
+  int source = -1;    // which mesh triangle it comes from
+};
+
+struct BspNode {
+  int plane = -1;  // the node's plane is the plane of mesh triangle `plane`, front where its normal points
+  int front = -1;  // the child in front, or -1: nothing there (outside, for a closed mesh)
+  int back = -1;   // the child behind, or -1: nothing there (inside, for a closed mesh)
+  int first = 0;   // its pieces, all in the plane, are pieces[first], ..., pieces[first + count - 1]
+  int count = 0;
+};
+
+struct BspTree {
+  std::vector<BspNode> nodes;       // nodes[0] is the root; none when the mesh has no triangle of non-zero area
+  std::vector<BspPiece> pieces;     // every piece once, each at the one node whose plane it lies in
+  std::vector<Triangle> triangles;  // triangles[i] = mesh.triangle(i): the planes' triangles
+};
+
+BspTree build_bsp(const Mesh& mesh);
+
+enum class Where { outside = -1, on = 0, inside = 1 };
+Where classify(const BspTree& tree, const Vec3& point);
+
+// ---- Step 4 (L06S4): back to front from an eye point --------------------------------------
+//
+// Every piece index once, in an order a painter can draw them in: at each node, the
+// subtree on the far side of the plane from the eye first, then the node's own pieces,
+// then the subtree on the eye's side. Then no piece hides any part of a piece listed
+// before it. An eye exactly on a node's plane sees the plane edge on: that node's two
+// subtrees and pieces may come in any order.
+std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye);
+
+// ---- Step 5 (L06S5): broad phase for many moving spheres ------------------------------------
+//
+// Every frame the spheres have moved, and the pairs that overlap must be found again. Two
+// closed balls meet when |c_i - c_j| <= r_i + r_j: touching counts, so does a ball of zero
+// radius (a point) on another's surface. Find them without testing all n (n - 1) / 2
+// pairs: sort and sweep (the lecture's plane sweep), or a uniform grid. Nothing is kept
+// from one call to the next.
+
+struct SpherePairs {
+  std::vector<std::array<int, 2>> pairs;  // every {i, j}, i < j, whose balls meet, once, sorted
+  long long tests = 0;                    // how many pairs you tested with |c_i - c_j| <= r_i + r_j
+};
+
+SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres);
+
+// ---- Step 6 (L06S6): efficiency, counted -------------------------------------------------------
+// No new function: steps 1, 2 and 5 must also be fast, measured by counting tests, never
+// by timing. On 10,000-triangle meshes (a sphere, a torus, a terrain and a soup, from
+// common/generators/meshes.h) with your own tree, over 1,000 random segments per mesh and
+// query:
+//  - short segments (a fiftieth of the mesh's size) at the surface: first_hit and any_hit
+//    test on average at most kShortMean triangles, and never more than kShortWorst;
+//  - long segments across the mesh: first_hit tests on average at most kLongFirstMean;
+//    all_hits at most kLongAllMean (whatever it tests, first_hit stops early).
+// Among 2,000 spheres spread over a cube of side 100, radii from 0.25 to 1,
+// overlapping_pairs makes at most kSphereTests tests (brute force: 1,999,000).
+constexpr double kShortMean = 40;
+constexpr int kShortWorst = 400;
+constexpr double kLongFirstMean = 150;
+constexpr double kLongAllMean = 600;
+constexpr long long kSphereTests = 100000;
+
+// ---- Step 7 (L06S7): robustness: splits through vertices ------------------------------------
+// No new function: steps 1 to 5 on exact degenerate input. Split planes through vertices
+// and along faces (a triangle in the plane goes to both sides), segments lying in a split
+// plane or on a wall of the root's cell, ending or starting exactly on one; points and
+// eyes exactly on planes, faces, edges and vertices; balls touching exactly, even along x.
+
+}  // namespace labkit::lab06

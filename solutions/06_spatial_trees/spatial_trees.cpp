@@ -1,0 +1,592 @@
+// Lab 06 reference: k-d tree, BSP tree, sweep and prune.
+//
+// The k-d tree is built for speed: the surface area heuristic picks each split among 32
+// binned candidates per axis (O(n) per level, O(n log n) in all), nodes are 16 bytes in
+// one array, depth first, so that a descent mostly reads the next node, and queries walk
+// it with a fixed stack and no allocation. The BSP tree and the sweep are written
+// plainly; the BSP tree avoids recursion only because a convex mesh makes it a chain as
+// deep as the mesh has triangles.
+#include "spatial_trees.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <utility>
+
+namespace labkit::lab06 {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// ---- k-d tree: build ------------------------------------------------------------------------
+
+// The surface area heuristic (SAH). A segment that crosses a cell crosses a child cell
+// with a probability close to the ratio of their surface areas, so a split of a cell
+// with n triangles into n_below and n_above is expected to cost
+//
+//   traversal + test (A_below n_below + A_above n_above) / A_cell,
+//
+// against test n for keeping the cell as a leaf. The costs are in units of one
+// segment-triangle test; a split that leaves one side empty cuts away empty space, which
+// lets a query skip it at once, and gets a bonus.
+constexpr double kTraversalCost = 0.35;
+constexpr double kTestCost = 1.0;
+constexpr double kEmptyBonus = 0.2;
+constexpr int kBins = 32;  // candidate planes per axis: the inner walls of 32 equal bins
+
+double surface_area(const Aabb& box) {
+  const Vec3 e = box.max - box.min;
+  return 2 * (e.x() * e.y() + e.y() * e.z() + e.z() * e.x());
+}
+
+struct Split {
+  int axis = -1;  // -1: a leaf is cheaper
+  double position = 0.0;
+  double cost = kInfinity;
+};
+
+class KdBuilder {
+ public:
+  // The depth limit grows with the number of triangles as in pbrt (8 + 1.3 log2 n): deep
+  // enough for any useful split, shallow enough that a bad case cannot run away.
+  KdBuilder(KdTree& tree, std::vector<Aabb> boxes)
+      : tree_(tree), boxes_(std::move(boxes)),
+        max_depth_(std::min(kMaxDepth, int(8 + 1.3 * std::log2(double(std::max<std::size_t>(boxes_.size(), 1)))))) {}
+
+  // Appends the subtree of `cell` holding `list` to the tree, depth first.
+  void build(const Aabb& cell, std::vector<int> list, int depth) {
+    const Split split = depth < max_depth_ ? best_split(cell, list) : Split{};
+    if (split.axis < 0) {
+      add_leaf(list);
+      return;
+    }
+    // Closed cells: a triangle touching the plane, or lying in it, goes to both sides.
+    std::vector<int> below, above;
+    for (int i : list) {
+      if (boxes_[std::size_t(i)].min[split.axis] <= split.position) below.push_back(i);
+      if (boxes_[std::size_t(i)].max[split.axis] >= split.position) above.push_back(i);
+    }
+    list = {};  // no longer needed: free it before going deeper
+    const std::size_t self = tree_.nodes.size();
+    tree_.nodes.push_back({split.position, split.axis, 0});
+    Aabb below_cell = cell, above_cell = cell;
+    below_cell.max[split.axis] = above_cell.min[split.axis] = split.position;
+    build(below_cell, std::move(below), depth + 1);  // lands at self + 1
+    tree_.nodes[self].index = int(tree_.nodes.size());
+    build(above_cell, std::move(above), depth + 1);
+  }
+
+ private:
+  void add_leaf(const std::vector<int>& list) {
+    tree_.nodes.push_back({0.0, kLeaf, int(tree_.items.size())});
+    tree_.items.push_back(int(list.size()));
+    tree_.items.insert(tree_.items.end(), list.begin(), list.end());
+  }
+
+  // The cheapest of the candidate planes, or no split when a leaf is cheaper. Each
+  // triangle's box, clipped to the cell, starts in one bin and ends in one; a sweep over
+  // the bin walls then counts the triangles on each side of every wall at once.
+  Split best_split(const Aabb& cell, const std::vector<int>& list) const {
+    const double n = double(list.size());
+    const double area = surface_area(cell);
+    Split best;
+    best.cost = kTestCost * n;  // the cost of a leaf
+    if (list.size() <= 1 || !(area > 0)) return best;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double lo = cell.min[axis], hi = cell.max[axis];
+      if (!(hi > lo)) continue;  // the cell is flat along this axis
+      const double bins_per_unit = kBins / (hi - lo);
+      const auto bin = [&](double x) { return std::clamp(int((x - lo) * bins_per_unit), 0, kBins - 1); };
+      int starts[kBins] = {}, ends[kBins] = {};
+      for (int i : list) {
+        const Aabb& box = boxes_[std::size_t(i)];
+        ++starts[bin(box.min[axis])];
+        ++ends[bin(box.max[axis])];
+      }
+      // Wall k lies between bins k - 1 and k. Below it: the triangles starting in a bin
+      // before it; above it: those ending in a bin after it.
+      int below = 0, above = int(list.size());
+      const Vec3 extent = cell.max - cell.min;
+      const double across = extent[(axis + 1) % 3] * extent[(axis + 2) % 3];  // one face of the cut
+      const double around = extent[(axis + 1) % 3] + extent[(axis + 2) % 3];
+      for (int k = 1; k < kBins; ++k) {
+        below += starts[k - 1];
+        above -= ends[k - 1];
+        const double position = lo + (hi - lo) * k / kBins;
+        const double area_below = 2 * (across + (position - lo) * around);
+        const double area_above = 2 * (across + (hi - position) * around);
+        // Progress: both sides hold fewer triangles, or one side is empty space. (A cut
+        // that keeps them all on one side and some on the other could be repeated on
+        // ever thinner slabs.)
+        const bool empty_side = below == 0 || above == 0;
+        if (!empty_side && (below == int(list.size()) || above == int(list.size()))) continue;
+        const double bonus = empty_side ? 1 - kEmptyBonus : 1.0;
+        const double cost = kTraversalCost + kTestCost * bonus * (area_below * below + area_above * above) / area;
+        if (cost < best.cost) best = {axis, position, cost};
+      }
+    }
+    return best;
+  }
+
+  KdTree& tree_;
+  std::vector<Aabb> boxes_;  // each triangle's bounding box
+  int max_depth_;
+};
+
+Aabb box_of(const Triangle& t) { return {t.v0.cwiseMin(t.v1).cwiseMin(t.v2), t.v0.cwiseMax(t.v1).cwiseMax(t.v2)}; }
+
+// ---- k-d tree: queries ----------------------------------------------------------------------
+
+// The part [t0, t1] of the segment a + t d, 0 <= t <= 1, inside a closed box, slab by
+// slab; empty when t0 > t1. A slab the segment runs parallel to either holds all of it
+// or none: it gets no division (0 / 0 is not a number).
+struct Span {
+  double t0 = 0.0, t1 = 1.0;
+  bool empty() const { return t0 > t1; }
+};
+
+Span clip(const Aabb& box, const Vec3& a, const Vec3& d) {
+  Span s;
+  for (int i = 0; i < 3 && !s.empty(); ++i) {
+    if (d[i] == 0) {
+      if (a[i] < box.min[i] || a[i] > box.max[i]) return {1.0, 0.0};  // beside the slab
+      continue;
+    }
+    double enter = (box.min[i] - a[i]) / d[i], leave = (box.max[i] - a[i]) / d[i];
+    if (enter > leave) std::swap(enter, leave);
+    s.t0 = std::max(s.t0, enter);
+    s.t1 = std::min(s.t1, leave);
+  }
+  return s;
+}
+
+// Visits the leaves the segment meets, front to back: leaf(node, t0, t1) searches one and
+// returns the t beyond which nothing more is wanted (+infinity: everything; the best hit
+// so far; -infinity: stop). A leaf that ends at or after that t ends the walk, since
+// every later leaf starts after it.
+template <class Leaf>
+void front_to_back(const KdTree& tree, const Segment& s, Leaf&& leaf) {
+  const Vec3 d = s.b - s.a;
+  Span span = clip(tree.bounds, s.a, d);
+  if (span.empty() || tree.nodes.empty()) return;
+  struct Todo {
+    int node;
+    Span span;
+  };
+  Todo stack[kMaxDepth];  // far children waiting; one per interior node on the path at most
+  int waiting = 0;
+  int node = 0;
+  for (;;) {
+    const KdNode& n = tree.nodes[std::size_t(node)];
+    if (n.axis != kLeaf) {
+      const int axis = n.axis;
+      // The near child is on a's side; from the plane itself, on the side d leaves to.
+      const bool below_first = s.a[axis] < n.split || (s.a[axis] == n.split && d[axis] <= 0);
+      const int near = below_first ? node + 1 : n.index, far = below_first ? n.index : node + 1;
+      if (d[axis] == 0) {  // parallel to the plane: never crosses it
+        node = near;
+        continue;
+      }
+      const double t_split = (n.split - s.a[axis]) / d[axis];
+      if (t_split > span.t1 || t_split <= 0) {  // crosses after this cell, or behind a
+        node = near;
+      } else if (t_split < span.t0) {  // crossed before entering this cell
+        node = far;
+      } else {  // both: the near part now, the far part later
+        stack[waiting++] = {far, {t_split, span.t1}};
+        node = near;
+        span.t1 = t_split;
+      }
+      continue;
+    }
+    const double wanted = leaf(n, span.t0, span.t1);
+    if (wanted <= span.t1 || waiting == 0) return;
+    const Todo next = stack[--waiting];
+    if (next.span.t0 > wanted) return;  // it, and everything after it, starts too late
+    node = next.node;
+    span = next.span;
+  }
+}
+
+// One leaf's triangles: calls test(triangle index) for each.
+template <class Test>
+void for_each_listed(const KdTree& tree, const KdNode& leaf, Test&& test) {
+  const int* list = &tree.items[std::size_t(leaf.index)];
+  const int count = list[0];
+  for (int k = 1; k <= count; ++k) test(list[k]);
+}
+
+KdHit hit_from(const given::SegmentHit& h, int triangle) {
+  KdHit r;
+  r.hit = true;
+  r.triangle = triangle;
+  r.t = h.t;
+  r.point = h.point;
+  r.barycentric = h.barycentric;
+  return r;
+}
+
+// ---- BSP tree ---------------------------------------------------------------------------------
+
+// n . (x - v0) for the plane of triangle t, n = (v1 - v0) x (v2 - v0): > 0 in front.
+double side_value(const Triangle& t, const Vec3& x) { return (t.v1 - t.v0).cross(t.v2 - t.v0).dot(x - t.v0); }
+
+bool in_plane(const Triangle& plane, const Triangle& t) {
+  return side_value(plane, t.v0) == 0 && side_value(plane, t.v1) == 0 && side_value(plane, t.v2) == 0;
+}
+
+// A piece while the tree is built: `whole` when it is still its source triangle.
+struct Work {
+  BspPiece piece;
+  bool whole = true;
+};
+
+// Cuts a piece crossing the plane (d = its vertices' values) into the part in front and
+// the part behind, as lab 01 clips a triangle: walk the corners in order; a corner with
+// d >= 0 belongs in front, with d <= 0 behind, and an edge whose ends have strictly
+// opposite signs is cut at its crossing x = (d_p q - d_q p) / (d_p - d_q), which belongs
+// to both. Each side is then a triangle or a quadrilateral, fanned from its first corner.
+//
+//             v2               d_2 < 0: behind
+//            /  \   x0 cuts edge v1 v2, x1 cuts edge v2 v0
+//   -------x1----x0-------     the plane
+//         /        \   front:  v0 v1 x0 x1, two triangles
+//       v0 -------- v1         behind: x0 v2 x1
+void split(const Work& w, const double (&d)[3], std::vector<Work>& front, std::vector<Work>& back) {
+  Vec3 in_front[4], behind[4];
+  int nf = 0, nb = 0;
+  const Triangle& t = w.piece.triangle;
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3;
+    if (d[i] >= 0) in_front[nf++] = t[i];
+    if (d[i] <= 0) behind[nb++] = t[i];
+    if ((d[i] > 0 && d[j] < 0) || (d[i] < 0 && d[j] > 0)) {
+      const Vec3 x = (d[i] * t[j] - d[j] * t[i]) / (d[i] - d[j]);
+      in_front[nf++] = x;
+      behind[nb++] = x;
+    }
+  }
+  for (int k = 1; k + 1 < nf; ++k) front.push_back({{{in_front[0], in_front[k], in_front[k + 1]}, w.piece.source}, false});
+  for (int k = 1; k + 1 < nb; ++k) back.push_back({{{behind[0], behind[k], behind[k + 1]}, w.piece.source}, false});
+}
+
+// The splitter: among a few evenly spaced candidates, the one whose plane cuts the fewest
+// pieces and balances the two sides best (a cut costs as much as an imbalance of 8),
+// judged on a sample of the pieces so that a node costs O(n), not O(n^2).
+std::size_t choose_splitter(const std::vector<Work>& pieces, const std::vector<Triangle>& triangles) {
+  constexpr std::size_t kCandidates = 5, kSample = 64;
+  const std::size_t n = pieces.size();
+  const std::size_t step = std::max<std::size_t>(1, n / kSample);
+  std::size_t best = 0;
+  long best_score = std::numeric_limits<long>::max();
+  for (std::size_t c = 0; c < std::min(n, kCandidates); ++c) {
+    const std::size_t candidate = c * n / std::min(n, kCandidates);
+    const Triangle& plane = triangles[std::size_t(pieces[candidate].piece.source)];
+    long cuts = 0, front = 0, back = 0;
+    for (std::size_t i = 0; i < n; i += step) {
+      const Triangle& t = pieces[i].piece.triangle;
+      bool any_front = false, any_back = false;
+      for (int k = 0; k < 3; ++k) {
+        const double v = side_value(plane, t[k]);
+        any_front = any_front || v > 0;
+        any_back = any_back || v < 0;
+      }
+      cuts += any_front && any_back;
+      front += any_front && !any_back;
+      back += any_back && !any_front;
+    }
+    const long score = 8 * cuts + std::abs(front - back);
+    if (score < best_score) {
+      best_score = score;
+      best = candidate;
+    }
+  }
+  return best;
+}
+
+// Is x (on the plane of `t`) in the closed triangle? Each edge function
+// ((v_{i+1} - v_i) x (x - v_i)) . n is >= 0 inside: input products only, exact on
+// small integers.
+bool in_closed_triangle(const Triangle& t, const Vec3& x) {
+  const Vec3 n = (t.v1 - t.v0).cross(t.v2 - t.v0);
+  for (int i = 0; i < 3; ++i)
+    if ((t[(i + 1) % 3] - t[i]).cross(x - t[i]).dot(n) < 0) return false;  // outside edge i
+  return true;
+}
+
+}  // namespace
+
+// ---- Step 1 ------------------------------------------------------------------------------------
+
+// Split rule: the surface area heuristic over 32 binned candidate planes per axis (see
+// KdBuilder). A cell becomes a leaf when no split is expected to be cheaper, when it
+// holds one triangle, or at depth 8 + 1.3 log2 n (n triangles).
+KdTree build_kd_tree(const Mesh& mesh) {
+  KdTree tree;
+  tree.triangles.reserve(mesh.size());
+  std::vector<Aabb> boxes;
+  std::vector<int> list;
+  boxes.reserve(mesh.size());
+  list.reserve(mesh.size());
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Triangle t = mesh.triangle(i);
+    tree.triangles.push_back(t);
+    boxes.push_back(box_of(t));
+    if (t.normal() != Vec3::Zero()) list.push_back(int(i));  // zero area: never hit, left out
+  }
+  if (mesh.size() > 0) {
+    tree.bounds = boxes[0];
+    for (const Aabb& b : boxes) {
+      tree.bounds.min = tree.bounds.min.cwiseMin(b.min);
+      tree.bounds.max = tree.bounds.max.cwiseMax(b.max);
+    }
+  }
+  tree.nodes.reserve(2 * mesh.size() + 1);
+  KdBuilder(tree, std::move(boxes)).build(tree.bounds, std::move(list), 0);
+  return tree;
+}
+
+// ---- Step 2 ------------------------------------------------------------------------------------
+
+KdHit first_hit(const KdTree& tree, const Segment& segment) {
+  KdHit best;
+  int tests = 0;
+  front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
+    for_each_listed(tree, leaf, [&](int i) {
+      ++tests;
+      const given::SegmentHit h = given::segment_triangle(segment, tree.triangles[std::size_t(i)]);
+      if (!h.hit) return;
+      if (best.hit && (h.t > best.t || (h.t == best.t && i >= best.triangle))) return;  // not nearer
+      best = hit_from(h, i);
+    });
+    // A hit within this leaf's stretch beats every later leaf; one beyond it may not.
+    return best.hit ? best.t : kInfinity;
+  });
+  best.tests = tests;
+  return best;
+}
+
+KdHit any_hit(const KdTree& tree, const Segment& segment) {
+  KdHit found;
+  int tests = 0;
+  front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
+    const int* list = &tree.items[std::size_t(leaf.index)];
+    for (int k = 1; k <= list[0]; ++k) {
+      ++tests;
+      const given::SegmentHit h = given::segment_triangle(segment, tree.triangles[std::size_t(list[k])]);
+      if (h.hit) {
+        found = hit_from(h, list[k]);
+        return -kInfinity;  // stop the walk
+      }
+    }
+    return kInfinity;
+  });
+  found.tests = tests;
+  return found;
+}
+
+KdHits all_hits(const KdTree& tree, const Segment& segment) {
+  KdHits out;
+  front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
+    for_each_listed(tree, leaf, [&](int i) {
+      ++out.tests;
+      const given::SegmentHit h = given::segment_triangle(segment, tree.triangles[std::size_t(i)]);
+      if (h.hit) out.hits.push_back(hit_from(h, i));
+    });
+    return kInfinity;
+  });
+  // A triangle listed in two leaves was tested twice, with the same answer: after sorting
+  // by t, then index, its two hits are neighbours.
+  std::sort(out.hits.begin(), out.hits.end(), [](const KdHit& x, const KdHit& y) {
+    return x.t != y.t ? x.t < y.t : x.triangle < y.triangle;
+  });
+  out.hits.erase(std::unique(out.hits.begin(), out.hits.end(),
+                             [](const KdHit& x, const KdHit& y) { return x.triangle == y.triangle; }),
+                 out.hits.end());
+  return out;
+}
+
+// ---- Step 3 ------------------------------------------------------------------------------------
+
+// Built with an explicit list of nodes still to fill, not by recursion: on a convex mesh
+// every plane has all the other triangles behind it, and the tree is a chain as long as
+// the mesh.
+BspTree build_bsp(const Mesh& mesh) {
+  BspTree tree;
+  std::vector<Work> all;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    tree.triangles.push_back(mesh.triangle(i));
+    if (tree.triangles.back().normal() != Vec3::Zero()) all.push_back({{tree.triangles.back(), int(i)}, true});
+  }
+  if (all.empty()) return tree;
+  struct Pending {
+    int node;
+    std::vector<Work> pieces;
+  };
+  std::vector<Pending> pending;
+  tree.nodes.push_back({});
+  pending.push_back({0, std::move(all)});
+  while (!pending.empty()) {
+    Pending job = std::move(pending.back());
+    pending.pop_back();
+    const int plane = job.pieces[choose_splitter(job.pieces, tree.triangles)].piece.source;
+    const Triangle& p = tree.triangles[std::size_t(plane)];
+    std::vector<Work> front, back;
+    BspNode node;
+    node.plane = plane;
+    node.first = int(tree.pieces.size());
+    for (const Work& w : job.pieces) {
+      const Triangle& source = tree.triangles[std::size_t(w.piece.source)];
+      // Its triangle lies in the plane: it stays here. The splitter's own triangle always
+      // does, even when rounding makes n . (v1 - v0) a hair off zero: otherwise it could be
+      // sent on, chosen again below, and the build would never end.
+      if (w.piece.source == plane || in_plane(p, source)) {
+        tree.pieces.push_back(w.piece);
+        continue;
+      }
+      const double d[3] = {side_value(p, w.piece.triangle.v0), side_value(p, w.piece.triangle.v1),
+                           side_value(p, w.piece.triangle.v2)};
+      const bool any_front = d[0] > 0 || d[1] > 0 || d[2] > 0, any_back = d[0] < 0 || d[1] < 0 || d[2] < 0;
+      if (any_front && any_back) split(w, d, front, back);
+      else if (any_back) back.push_back(w);
+      else front.push_back(w);  // in front, or a zero-area sliver lying on the plane
+    }
+    node.count = int(tree.pieces.size()) - node.first;
+    if (!front.empty()) {
+      node.front = int(tree.nodes.size());
+      tree.nodes.push_back({});
+      pending.push_back({node.front, std::move(front)});
+    }
+    if (!back.empty()) {
+      node.back = int(tree.nodes.size());
+      tree.nodes.push_back({});
+      pending.push_back({node.back, std::move(back)});
+    }
+    tree.nodes[std::size_t(job.node)] = node;
+  }
+  return tree;
+}
+
+// Descends with a list of subtrees still to look at: a point on a plane looks on both
+// sides. Every descent ends where a child is missing, which says inside or outside; a
+// point that ends up both inside and outside is on the surface.
+Where classify(const BspTree& tree, const Vec3& point) {
+  if (tree.nodes.empty()) return Where::outside;
+  bool inside = false, outside = false;
+  std::vector<int> pending{0};
+  while (!pending.empty()) {
+    int node = pending.back();
+    pending.pop_back();
+    for (;;) {
+      const BspNode& n = tree.nodes[std::size_t(node)];
+      const double side = side_value(tree.triangles[std::size_t(n.plane)], point);
+      if (side > 0) {
+        if (n.front < 0) {
+          outside = true;
+          break;
+        }
+        node = n.front;
+      } else if (side < 0) {
+        if (n.back < 0) {
+          inside = true;
+          break;
+        }
+        node = n.back;
+      } else {
+        // On the plane: on the surface if on a triangle lying here (the piece is that
+        // triangle within this cell, and the point is in the cell); else look both ways.
+        for (int k = n.first; k < n.first + n.count; ++k)
+          if (in_closed_triangle(tree.triangles[std::size_t(tree.pieces[std::size_t(k)].source)], point)) return Where::on;
+        if (n.front < 0) outside = true;
+        else pending.push_back(n.front);
+        if (n.back < 0) inside = true;
+        else pending.push_back(n.back);
+        break;
+      }
+    }
+    if (inside && outside) return Where::on;
+  }
+  return inside ? Where::inside : Where::outside;
+}
+
+// ---- Step 4 ------------------------------------------------------------------------------------
+
+// The painter's order with a stack in place of recursion: to draw a node, draw the far
+// subtree, then the node's pieces, then the near subtree; pushed in reverse.
+std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) {
+  std::vector<int> order;
+  order.reserve(tree.pieces.size());
+  if (tree.nodes.empty()) return order;
+  struct Step {
+    int node;
+    bool draw_pieces;  // false: the whole subtree still to order
+  };
+  std::vector<Step> stack{{0, false}};
+  while (!stack.empty()) {
+    const Step step = stack.back();
+    stack.pop_back();
+    const BspNode& n = tree.nodes[std::size_t(step.node)];
+    if (step.draw_pieces) {
+      for (int k = n.first; k < n.first + n.count; ++k) order.push_back(k);
+      continue;
+    }
+    // The eye in front: the back subtree is far. Behind: the front one. On the plane:
+    // either order works.
+    const bool eye_in_front = side_value(tree.triangles[std::size_t(n.plane)], eye) >= 0;
+    const int near = eye_in_front ? n.front : n.back, far = eye_in_front ? n.back : n.front;
+    if (near >= 0) stack.push_back({near, false});
+    stack.push_back({step.node, true});
+    if (far >= 0) stack.push_back({far, false});
+  }
+  return order;
+}
+
+// ---- Step 5 ------------------------------------------------------------------------------------
+
+// Sort and sweep (the lecture's plane sweep). Each ball covers the interval
+// [c - r, c + r] of one axis; two balls can meet only if their intervals overlap. Sort
+// the intervals by their low end; then the intervals overlapping interval i from later
+// in the order are exactly those that start before it ends: a run right after it. Only
+// those pairs get the full test.
+//
+//   A0---A1   R0------R1               sorted by low end: A R B C
+//                 B0-------------B1    R meets B (B0 <= R1); B meets C (C0 <= B1);
+//                       C0---C1        A meets nothing; R does not reach C
+SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
+  SpherePairs out;
+  if (spheres.empty()) return out;
+  // Sweep along the axis where the centres spread the most: the fewer intervals overlap
+  // there, the fewer pairs are tested.
+  Vec3 lo = spheres[0].center, hi = spheres[0].center;
+  for (const Sphere& s : spheres) {
+    lo = lo.cwiseMin(s.center);
+    hi = hi.cwiseMax(s.center);
+  }
+  int axis = 0;
+  (hi - lo).maxCoeff(&axis);
+  struct Interval {
+    double low, high;
+    int sphere;
+  };
+  std::vector<Interval> intervals;
+  intervals.reserve(spheres.size());
+  for (int i = 0; i < int(spheres.size()); ++i) {
+    const Sphere& s = spheres[std::size_t(i)];
+    intervals.push_back({s.center[axis] - s.radius, s.center[axis] + s.radius, i});
+  }
+  std::sort(intervals.begin(), intervals.end(), [](const Interval& x, const Interval& y) { return x.low < y.low; });
+  for (std::size_t i = 0; i < intervals.size(); ++i)
+    for (std::size_t j = i + 1; j < intervals.size() && intervals[j].low <= intervals[i].high; ++j) {
+      const Sphere& a = spheres[std::size_t(intervals[i].sphere)];
+      const Sphere& b = spheres[std::size_t(intervals[j].sphere)];
+      ++out.tests;
+      const double reach = a.radius + b.radius;
+      if ((a.center - b.center).squaredNorm() <= reach * reach)
+        out.pairs.push_back({std::min(intervals[i].sphere, intervals[j].sphere), std::max(intervals[i].sphere, intervals[j].sphere)});
+    }
+  std::sort(out.pairs.begin(), out.pairs.end());
+  return out;
+}
+
+}  // namespace labkit::lab06

@@ -1,0 +1,855 @@
+#include "06_spatial_trees.judge.h"
+
+#include "common/generators/generators.h"
+#include "common/oracle/oracle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace labkit::lab06 {
+
+std::string describe(Where w) { return w == Where::inside ? "inside" : (w == Where::outside ? "outside" : "on"); }
+
+namespace judge {
+
+namespace {
+
+using check::ambiguous;
+using check::Expect;
+using check::fail;
+using check::pass;
+
+constexpr double kRelative = 1e-9;  // tol = 1e-9 S (the header's tolerances)
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+template <class Input>
+double tolerance_of(const Input& in) {
+  return kRelative * check::scale_of_input(in);
+}
+
+std::string str(long long n) { return std::to_string(n); }
+std::string str(std::size_t n) { return std::to_string(n); }
+std::string str(int n) { return std::to_string(n); }
+
+bool is_finite(const Vec3& v) { return v.allFinite(); }
+
+Aabb box_of(const Triangle& t) { return {t.v0.cwiseMin(t.v1).cwiseMin(t.v2), t.v0.cwiseMax(t.v1).cwiseMax(t.v2)}; }
+
+bool boxes_meet(const Aabb& a, const Aabb& b) {
+  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+}
+
+// splitmix64, for the checker's trees and the efficiency segments.
+struct Random {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t x = (state += 0x9e3779b97f4a7c15ull);
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  }
+  int below(int n) { return int(next() % std::uint64_t(n)); }
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+};
+
+// ---- k-d trees: shape, cells, leaves ----------------------------------------------------------
+
+struct LeafCell {
+  int node = 0;
+  Aabb cell;
+};
+
+// Walks a k-d tree from the root, checking its shape; fills `leaves` with every leaf and
+// its cell. Returns what is wrong, or "".
+std::string walk_kd_tree(const KdTree& tree, std::vector<LeafCell>& leaves) {
+  leaves.clear();
+  const std::size_t n = tree.nodes.size();
+  if (n == 0) return "the tree has no nodes (even an empty mesh gets one empty leaf)";
+  struct Todo {
+    int node;
+    Aabb cell;
+    int depth;
+  };
+  std::vector<char> seen(n, 0);
+  std::vector<Todo> todo{{0, tree.bounds, 0}};
+  while (!todo.empty()) {
+    const Todo at = todo.back();
+    todo.pop_back();
+    const std::string name = "node " + str(at.node);
+    if (seen[std::size_t(at.node)]) return name + " is reached twice from the root: the nodes do not form a tree";
+    seen[std::size_t(at.node)] = 1;
+    const KdNode& node = tree.nodes[std::size_t(at.node)];
+    if (node.axis == kLeaf) {
+      if (node.index < 0 || std::size_t(node.index) >= tree.items.size())
+        return name + " is a leaf whose list starts at items[" + str(node.index) + "], outside items (size " +
+               str(tree.items.size()) + ")";
+      const int count = tree.items[std::size_t(node.index)];
+      if (count < 0 || std::size_t(node.index) + std::size_t(count) >= tree.items.size())
+        return name + " is a leaf listing " + str(count) + " triangles from items[" + str(node.index) +
+               "], past the end of items (size " + str(tree.items.size()) + ")";
+      std::set<int> listed;
+      for (int k = 1; k <= count; ++k) {
+        const int i = tree.items[std::size_t(node.index + k)];
+        if (i < 0 || std::size_t(i) >= tree.triangles.size())
+          return name + " lists triangle " + str(i) + ", which does not exist (" + str(tree.triangles.size()) + " triangles)";
+        if (!listed.insert(i).second) return name + " lists triangle " + str(i) + " twice";
+      }
+      leaves.push_back({at.node, at.cell});
+      continue;
+    }
+    if (node.axis < 0 || node.axis > 2) return name + " has axis " + str(node.axis) + " (0, 1, 2, or kLeaf = 3)";
+    if (at.depth >= kMaxDepth) return name + " is an interior node at depth " + str(at.depth) + ": deeper than kMaxDepth";
+    const int axis = node.axis;
+    if (!(node.split >= at.cell.min[axis] && node.split <= at.cell.max[axis]))
+      return name + " splits at " + fmt(node.split) + " on axis " + str(axis) + ", outside its cell [" +
+             fmt(at.cell.min[axis]) + ", " + fmt(at.cell.max[axis]) + "]";
+    if (std::size_t(at.node) + 1 >= n) return name + " is interior but is the last node: no child below";
+    if (node.index <= at.node || std::size_t(node.index) >= n)
+      return name + " has its child above at index " + str(node.index) + ", not a later node of the tree";
+    Aabb below = at.cell, above = at.cell;
+    below.max[axis] = above.min[axis] = node.split;
+    todo.push_back({node.index, above, at.depth + 1});
+    todo.push_back({at.node + 1, below, at.depth + 1});
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (!seen[i]) return "node " + str(i) + " is never reached from the root";
+  return "";
+}
+
+// The leaf's list, as a sorted vector.
+std::vector<int> listed(const KdTree& tree, int leaf) {
+  const int first = tree.nodes[std::size_t(leaf)].index;
+  std::vector<int> out(tree.items.begin() + first + 1, tree.items.begin() + first + 1 + tree.items[std::size_t(first)]);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// The part of the segment in the closed box grown by `pad`, as [t0, t1]; empty: t0 > t1.
+std::pair<double, double> clip(const Aabb& box, const Segment& s, double pad) {
+  double t0 = 0, t1 = 1;
+  const Vec3 d = s.b - s.a;
+  for (int i = 0; i < 3; ++i) {
+    const double lo = box.min[i] - pad, hi = box.max[i] + pad;
+    if (d[i] == 0) {
+      if (s.a[i] < lo || s.a[i] > hi) return {1, 0};
+      continue;
+    }
+    double enter = (lo - s.a[i]) / d[i], leave = (hi - s.a[i]) / d[i];
+    if (enter > leave) std::swap(enter, leave);
+    t0 = std::max(t0, enter);
+    t1 = std::min(t1, leave);
+  }
+  return {t0, t1};
+}
+
+// How many tests a query may make (the header's rule): the lists of the leaves whose
+// closed cell the segment meets, grown by tol against rounding; with `until`, only the
+// leaves it enters by that t.
+long long allowed_tests(const KdTree& tree, const std::vector<LeafCell>& leaves, const Segment& s, double tol,
+                        double until = kInfinity) {
+  const double length = (s.b - s.a).norm();
+  const double t_pad = length > 0 ? 4 * tol / length : 0.0;
+  long long total = 0;
+  for (const LeafCell& leaf : leaves) {
+    const auto [t0, t1] = clip(leaf.cell, s, tol);
+    if (t0 <= t1 && t0 <= until + t_pad) total += tree.items[std::size_t(tree.nodes[std::size_t(leaf.node)].index)];
+  }
+  return total;
+}
+
+// ---- Segment queries: the exact answer, triangle by triangle -----------------------------------
+
+bool crossing(const SegmentTrianglePair& p) { return oracle::segment_crosses_triangle(p.segment, p.triangle); }
+
+// Could a perturbation of tol change whether the segment crosses this triangle? Only a
+// triangle whose box comes within a few tol of the segment's can; near ones get the
+// oracle's conservative test, then sampling.
+bool unstable(const Segment& s, const Triangle& tri, double tol, Rules rules) {
+  if (rules == Rules::exact) return false;
+  const Aabb near{s.a.cwiseMin(s.b).array() - 8 * tol, s.a.cwiseMax(s.b).array() + 8 * tol};
+  if (!boxes_meet(near, box_of(tri))) return false;
+  return oracle::segment_triangle_in_doubt(s, tri, tol) || check::flips_under_perturbation(SegmentTrianglePair{s, tri}, crossing);
+}
+
+struct Status {
+  bool hit = false;
+  bool unstable = false;
+};
+
+std::vector<Status> statuses(const Segment& s, const Mesh& mesh, double tol, Rules rules) {
+  std::vector<Status> all(mesh.size());
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Triangle tri = mesh.triangle(i);
+    all[i] = {crossing({s, tri}), unstable(s, tri, tol, rules)};
+  }
+  return all;
+}
+
+// How loosely a crossing fixes t: tol / |d_a - d_b| (unit-normal distances of the ends).
+double t_tolerance(const Segment& s, const Triangle& tri, double tol) {
+  const oracle::PlaneCrossing c = oracle::segment_plane(s, tri);
+  const double change = std::abs(c.d_a - c.d_b);
+  return change > 0 ? tol / change : kInfinity;
+}
+
+std::string describe_crossings(const std::vector<oracle::Crossing>& hits) {
+  std::string s;
+  for (std::size_t k = 0; k < hits.size() && k < 12; ++k)
+    s += (s.empty() ? "" : ", ") + ("triangle " + str(hits[k].triangle) + " at t = " + fmt(hits[k].t));
+  if (hits.size() > 12) s += ", ... (" + str(hits.size()) + " in all)";
+  return s.empty() ? "no hit" : s;
+}
+
+std::string describe_hits(const std::vector<KdHit>& hits) {
+  std::string s;
+  for (std::size_t k = 0; k < hits.size() && k < 12; ++k)
+    s += (s.empty() ? "" : ", ") + ("triangle " + str(hits[k].triangle) + " at t = " + fmt(hits[k].t));
+  if (hits.size() > 12) s += ", ... (" + str(hits.size()) + " in all)";
+  return s.empty() ? "no hit" : s;
+}
+
+std::string describe_hit(const KdHit& h) { return h.hit ? "triangle " + str(h.triangle) + " at t = " + fmt(h.t) : "no hit"; }
+
+// A reported hit on a triangle: it is that triangle's crossing, as given::segment_triangle
+// reports it (point on the segment and the triangle, t and the weights reproduce it).
+std::string check_hit(const Segment& s, const Mesh& mesh, const KdHit& h, double tol) {
+  if (h.triangle < 0 || std::size_t(h.triangle) >= mesh.size()) return "triangle " + str(h.triangle) + " does not exist";
+  const Triangle tri = mesh.triangle(std::size_t(h.triangle));
+  if (!is_finite(h.point) || !oracle::within(h.point, tri, tol))
+    return "the point " + fmt(h.point) + " is not on triangle " + str(h.triangle) + " (tolerance " + fmt(tol) + ")";
+  if (!oracle::within(h.point, s, tol)) return "the point " + fmt(h.point) + " is not on the segment (tolerance " + fmt(tol) + ")";
+  if (!oracle::parameter_reproduces(s, h.t, h.point, tol)) return "a + t (b - a) with t = " + fmt(h.t) + " is not the point " + fmt(h.point);
+  if (!(std::abs(h.barycentric.sum() - 1) <= kRelative) || !oracle::weights_reproduce(tri, h.barycentric, h.point, tol))
+    return "the weights " + fmt(h.barycentric) + " do not describe the point (use given::segment_triangle's)";
+  return "";
+}
+
+// The verdict on "is any triangle hit": the exact answer stands when some hit is not in
+// doubt, or when no triangle is in doubt.
+Outcome mesh_yes_no(const std::vector<Status>& all, bool got, Rules rules) {
+  bool expected = false, stable_hit = false, doubt = false;
+  for (const Status& st : all) {
+    expected = expected || st.hit;
+    stable_hit = stable_hit || (st.hit && !st.unstable);
+    doubt = doubt || st.unstable;
+  }
+  if (got == expected) return !stable_hit && doubt ? ambiguous() : pass();
+  if (!stable_hit && doubt && rules == Rules::random) return ambiguous();
+  return fail(expected ? "a hit" : "no hit", got ? "a hit" : "no hit",
+              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
+                                    : "the exact answer is stable here: no input within 1e-9 S answers otherwise");
+}
+
+// The counts: equal to the calls, and within the header's bound.
+std::string check_tests(const TreeQuery& in, const KdTree& tree, int reported, std::uint64_t calls, double until) {
+  if (std::uint64_t(std::max(reported, 0)) != calls || reported < 0)
+    return "tests = " + str(reported) + ", but given::segment_triangle was called " + str(std::size_t(calls)) + " times";
+  std::vector<LeafCell> leaves;
+  if (!walk_kd_tree(tree, leaves).empty()) return "";  // a hand-made tree the example checks itself
+  const long long allowed = allowed_tests(tree, leaves, in.segment, tolerance_of(in), until);
+  if (reported > allowed)
+    return str(reported) + " tests, but the leaves the segment meets" +
+           (until < kInfinity ? " before the hit it returns (by t = " + fmt(until) + ")" : std::string()) + " list only " +
+           str(allowed) + " triangles";
+  return "";
+}
+
+}  // namespace
+
+// ---- The checker's trees -----------------------------------------------------------------------
+
+KdTree tree_of(const Mesh& mesh, const Aabb& bounds, std::vector<KdNode> nodes, std::vector<int> items) {
+  KdTree tree;
+  tree.bounds = bounds;
+  tree.nodes = std::move(nodes);
+  tree.items = std::move(items);
+  for (std::size_t i = 0; i < mesh.size(); ++i) tree.triangles.push_back(mesh.triangle(i));
+  return tree;
+}
+
+KdTree checker_tree(const Mesh& mesh, int seed) {
+  KdTree tree = tree_of(mesh, {}, {}, {});
+  std::vector<int> all;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Aabb b = box_of(tree.triangles[i]);
+    if (i == 0) tree.bounds = b;
+    tree.bounds.min = tree.bounds.min.cwiseMin(b.min);
+    tree.bounds.max = tree.bounds.max.cwiseMax(b.max);
+    all.push_back(int(i));  // zero-area triangles too: listing more is allowed
+  }
+  Random random{std::uint64_t(seed) * 0x2545f4914f6cdd1dull + 17};
+  // Depth first, below before above, as the header lays it out.
+  const auto build = [&](auto&& self, const Aabb& cell, const std::vector<int>& list, int depth) -> void {
+    const bool leaf = depth >= 10 || list.empty() || random.below(100) < (list.size() <= 2 ? 50 : 12);
+    if (leaf) {
+      tree.nodes.push_back({0.0, kLeaf, int(tree.items.size())});
+      tree.items.push_back(int(list.size()));
+      tree.items.insert(tree.items.end(), list.begin(), list.end());
+      return;
+    }
+    const int axis = random.below(3);
+    const double lo = cell.min[axis], hi = cell.max[axis];
+    double split = lo;
+    switch (random.below(5)) {
+      case 0:
+      case 1: {  // through a vertex of a listed triangle
+        const Triangle& t = tree.triangles[std::size_t(list[std::size_t(random.below(int(list.size())))])];
+        split = std::clamp(t[random.below(3)][axis], lo, hi);
+        break;
+      }
+      case 2: split = lo + (hi - lo) / 2; break;
+      case 3: split = random.below(2) ? lo : hi; break;  // on a wall of the cell: one side is flat
+      default: split = std::clamp(lo + (hi - lo) * random.uniform(), lo, hi);
+    }
+    std::vector<int> below, above;
+    for (int i : list) {
+      const Aabb b = box_of(tree.triangles[std::size_t(i)]);
+      if (b.min[axis] <= split) below.push_back(i);
+      if (b.max[axis] >= split) above.push_back(i);
+    }
+    const std::size_t self_index = tree.nodes.size();
+    tree.nodes.push_back({split, axis, 0});
+    Aabb below_cell = cell, above_cell = cell;
+    below_cell.max[axis] = above_cell.min[axis] = split;
+    self(self, below_cell, below, depth + 1);
+    tree.nodes[self_index].index = int(tree.nodes.size());
+    self(self, above_cell, above, depth + 1);
+  };
+  build(build, tree.bounds, all, 0);
+  return tree;
+}
+
+// ---- Step 1 ------------------------------------------------------------------------------------
+
+Outcome kd_tree(const Mesh& mesh, const KdTree& got) {
+  const std::string expected = "a valid k-d tree (the header's rule)";
+  if (got.triangles.size() != mesh.size())
+    return fail(expected, str(got.triangles.size()) + " triangles", "tree.triangles must hold the mesh's " + str(mesh.size()) + " triangles");
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Triangle t = mesh.triangle(i);
+    if (got.triangles[i].v0 != t.v0 || got.triangles[i].v1 != t.v1 || got.triangles[i].v2 != t.v2)
+      return fail(expected, "tree.triangles[" + str(i) + "] = " + labkit::describe(got.triangles[i]),
+                  "tree.triangles[i] must be mesh.triangle(i)");
+    if (t.normal() == Vec3::Zero()) continue;
+    const Aabb b = box_of(t);
+    if (!((b.min.array() >= got.bounds.min.array()).all() && (b.max.array() <= got.bounds.max.array()).all()))
+      return fail(expected, "bounds " + labkit::describe(got.bounds), "triangle " + str(i) + " is not inside the bounds");
+  }
+  std::vector<LeafCell> leaves;
+  const std::string shape = walk_kd_tree(got, leaves);
+  if (!shape.empty()) return fail(expected, str(got.nodes.size()) + " nodes", shape);
+  // Completeness, triangle by triangle: descend into every cell it meets (exactly); every
+  // leaf reached must list it.
+  std::map<int, std::vector<int>> lists;
+  for (const LeafCell& leaf : leaves) lists[leaf.node] = listed(got, leaf.node);
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Triangle t = mesh.triangle(i);
+    if (oracle::is_degenerate(t)) continue;
+    const Aabb box = box_of(t);
+    const auto meets = [&](const Aabb& cell) {
+      if (!boxes_meet(box, cell)) return false;
+      if ((box.min.array() >= cell.min.array()).all() && (box.max.array() <= cell.max.array()).all()) return true;
+      return oracle::triangle_meets_box(t, cell);
+    };
+    for (const LeafCell& leaf : leaves) {
+      if (!meets(leaf.cell)) continue;
+      const std::vector<int>& l = lists[leaf.node];
+      if (!std::binary_search(l.begin(), l.end(), int(i)))
+        return fail(expected, "leaf " + str(leaf.node) + " without triangle " + str(i),
+                    "triangle " + str(i) + " (" + labkit::describe(t) + ") meets the closed cell of leaf " + str(leaf.node) +
+                        " (" + labkit::describe(leaf.cell) + ") but is not listed in it");
+    }
+  }
+  return pass();
+}
+
+// ---- Step 2 ------------------------------------------------------------------------------------
+
+Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls, Rules rules) {
+  const double tol = tolerance_of(in);
+  const std::vector<Status> all = statuses(in.segment, in.mesh, tol, rules);
+  const std::vector<oracle::Crossing> hits = oracle::segment_mesh_crossings(in.segment, in.mesh);
+  const std::string expected = describe_crossings(hits);
+  const Outcome decision = mesh_yes_no(all, got.hit, rules);
+  if (decision.verdict == Outcome::Verdict::fail) return fail(expected, describe_hit(got), decision.why);
+  if (got.hit) {
+    // A hit on a triangle whose crossing is in doubt (nearly flat, grazed) is not checked
+    // for its geometry: there the given test's point may be far off, and any answer passes.
+    const bool doubtful = got.triangle >= 0 && std::size_t(got.triangle) < all.size() && all[std::size_t(got.triangle)].unstable;
+    const std::string problem = doubtful ? std::string() : check_hit(in.segment, in.mesh, got, tol);
+    if (!problem.empty()) return fail(expected, describe_hit(got), problem);
+    const Status& st = all[std::size_t(got.triangle)];
+    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "the segment does not hit triangle " + str(got.triangle));
+    // The first hit whose existence is not in doubt bounds t from above.
+    const Triangle mine = in.mesh.triangle(std::size_t(got.triangle));
+    for (const oracle::Crossing& h : hits) {
+      if (all[std::size_t(h.triangle)].unstable) continue;
+      const double slack = t_tolerance(in.segment, in.mesh.triangle(std::size_t(h.triangle)), tol) + t_tolerance(in.segment, mine, tol);
+      if (got.t > h.t + slack)
+        return fail(expected, describe_hit(got), "a nearer hit exists: triangle " + str(h.triangle) + " at t = " + fmt(h.t));
+      break;
+    }
+  }
+  const std::string counts = check_tests(in, tree, got.tests, calls, got.hit ? got.t : kInfinity);
+  if (!counts.empty()) return fail(expected, describe_hit(got) + ", tests = " + str(got.tests), counts);
+  return decision;
+}
+
+Outcome any_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls, Rules rules) {
+  const double tol = tolerance_of(in);
+  const std::vector<Status> all = statuses(in.segment, in.mesh, tol, rules);
+  const Outcome decision = mesh_yes_no(all, got.hit, rules);
+  const auto expected = [&] { return describe_crossings(oracle::segment_mesh_crossings(in.segment, in.mesh)); };
+  if (decision.verdict == Outcome::Verdict::fail) return fail(expected(), describe_hit(got), decision.why);
+  if (got.hit) {
+    const bool doubtful = got.triangle >= 0 && std::size_t(got.triangle) < all.size() && all[std::size_t(got.triangle)].unstable;
+    const std::string problem = doubtful ? std::string() : check_hit(in.segment, in.mesh, got, tol);
+    if (!problem.empty()) return fail(expected(), describe_hit(got), problem);
+    const Status& st = all[std::size_t(got.triangle)];
+    if (!st.hit && !st.unstable) return fail(expected(), describe_hit(got), "the segment does not hit triangle " + str(got.triangle));
+  }
+  const std::string counts = check_tests(in, tree, got.tests, calls, got.hit ? got.t : kInfinity);
+  if (!counts.empty()) return fail(expected(), describe_hit(got) + ", tests = " + str(got.tests), counts);
+  return decision;
+}
+
+Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std::uint64_t calls, Rules rules) {
+  const double tol = tolerance_of(in);
+  const std::vector<oracle::Crossing> hits = oracle::segment_mesh_crossings(in.segment, in.mesh);
+  const std::string expected = describe_crossings(hits), answer = describe_hits(got.hits);
+  bool doubt = false;
+  std::set<int> reported;
+  for (std::size_t k = 0; k < got.hits.size(); ++k) {
+    const KdHit& h = got.hits[k];
+    if (!h.hit) return fail(expected, answer, "entry " + str(k) + " has hit = false");
+    const bool known = h.triangle >= 0 && std::size_t(h.triangle) < in.mesh.size();
+    const bool doubtful = known && unstable(in.segment, in.mesh.triangle(std::size_t(h.triangle)), tol, rules);
+    const std::string problem = doubtful ? std::string() : check_hit(in.segment, in.mesh, h, tol);
+    if (!problem.empty()) return fail(expected, answer, problem);
+    if (!reported.insert(h.triangle).second) return fail(expected, answer, "triangle " + str(h.triangle) + " is reported twice");
+    const Triangle tri = in.mesh.triangle(std::size_t(h.triangle));
+    if (!crossing({in.segment, tri})) {
+      if (!unstable(in.segment, tri, tol, rules)) return fail(expected, answer, "the segment does not hit triangle " + str(h.triangle));
+      doubt = true;
+    }
+    if (k + 1 < got.hits.size()) {
+      const KdHit& next = got.hits[k + 1];
+      const bool ordered = h.t < next.t || (h.t == next.t && h.triangle < next.triangle);
+      if (!ordered) return fail(expected, answer, "the hits are not sorted by t (ties: lower index first)");
+    }
+  }
+  for (const oracle::Crossing& h : hits) {
+    if (reported.count(h.triangle)) continue;
+    if (unstable(in.segment, in.mesh.triangle(std::size_t(h.triangle)), tol, rules)) {
+      doubt = true;
+      continue;
+    }
+    return fail(expected, answer, "triangle " + str(h.triangle) + " (hit at t = " + fmt(h.t) + ") is missing");
+  }
+  const std::string counts = check_tests(in, tree, got.tests, calls, kInfinity);
+  if (!counts.empty()) return fail(expected, answer + ", tests = " + str(got.tests), counts);
+  return doubt ? ambiguous() : pass();
+}
+
+// ---- Step 3 ------------------------------------------------------------------------------------
+
+namespace {
+
+// Signed distance of x to the plane of t (unit normal), in doubles: its rounding error is
+// some 1e-15 S, far below every tolerance it is compared with.
+double plane_distance(const Triangle& t, const Vec3& x) {
+  const Vec3 n = t.normal();
+  return n.dot(x - t.v0) / n.norm();
+}
+
+// Within tol of the closed triangle: of its plane, and inside its three edges' walls.
+bool near_triangle(const Triangle& t, const Vec3& x, double tol) {
+  const Vec3 n = t.normal();
+  if (std::abs(plane_distance(t, x)) > tol) return false;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 inward = n.cross(t[(i + 1) % 3] - t[i]);
+    if (inward.dot(x - t[i]) < -tol * inward.norm()) return false;
+  }
+  return true;
+}
+
+double longest_edge(const Triangle& t) { return std::max({(t.v1 - t.v0).norm(), (t.v2 - t.v1).norm(), (t.v0 - t.v2).norm()}); }
+
+struct BspShape {
+  std::vector<int> owner;                                  // the node of each piece
+  std::vector<int> parent;                                 // -1 for the root
+  std::vector<std::vector<std::pair<int, int>>> path;      // per node: (ancestor, side +1 front / -1 back)
+  std::vector<int> post_order;                             // children before parents
+};
+
+std::string walk_bsp(const BspTree& tree, BspShape& shape) {
+  const std::size_t n = tree.nodes.size();
+  shape.owner.assign(tree.pieces.size(), -1);
+  shape.parent.assign(n, -1);
+  shape.path.assign(n, {});
+  shape.post_order.clear();
+  if (n == 0) return "";
+  std::vector<char> seen(n, 0);
+  std::vector<int> todo{0};
+  seen[0] = 1;
+  std::vector<int> pre_order;
+  while (!todo.empty()) {
+    const int at = todo.back();
+    todo.pop_back();
+    pre_order.push_back(at);
+    const BspNode& node = tree.nodes[std::size_t(at)];
+    const std::string name = "node " + str(at);
+    if (node.plane < 0 || std::size_t(node.plane) >= tree.triangles.size())
+      return name + " has plane " + str(node.plane) + ": no such triangle";
+    if (oracle::is_degenerate(tree.triangles[std::size_t(node.plane)]))
+      return name + " takes its plane from triangle " + str(node.plane) + ", which has zero area";
+    if (node.count < 0 || node.first < 0 || std::size_t(node.first) + std::size_t(node.count) > tree.pieces.size())
+      return name + " owns pieces " + str(node.first) + " to " + str(node.first + node.count - 1) + ", outside pieces (size " +
+             str(tree.pieces.size()) + ")";
+    for (int k = node.first; k < node.first + node.count; ++k) {
+      if (shape.owner[std::size_t(k)] >= 0) return "piece " + str(k) + " belongs to two nodes";
+      shape.owner[std::size_t(k)] = at;
+    }
+    for (const auto& [child, side] : {std::pair<int, int>{node.front, 1}, std::pair<int, int>{node.back, -1}}) {
+      if (child < 0) continue;
+      if (std::size_t(child) >= n) return name + " has child " + str(child) + ": no such node";
+      if (seen[std::size_t(child)]) return "node " + str(child) + " is reached twice from the root: the nodes do not form a tree";
+      seen[std::size_t(child)] = 1;
+      shape.parent[std::size_t(child)] = at;
+      shape.path[std::size_t(child)] = shape.path[std::size_t(at)];
+      shape.path[std::size_t(child)].push_back({at, side});
+      todo.push_back(child);
+    }
+  }
+  for (std::size_t i = 0; i < n; ++i)
+    if (!seen[i]) return "node " + str(i) + " is never reached from the root";
+  for (std::size_t k = 0; k < tree.pieces.size(); ++k)
+    if (shape.owner[k] < 0) return "piece " + str(k) + " belongs to no node";
+  shape.post_order.assign(pre_order.rbegin(), pre_order.rend());
+  return "";
+}
+
+std::string check_bsp(const Mesh& mesh, const BspTree& tree, BspShape& shape) {
+  if (tree.triangles.size() != mesh.size()) return "tree.triangles must hold the mesh's " + str(mesh.size()) + " triangles";
+  bool any_area = false;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Triangle t = mesh.triangle(i);
+    if (tree.triangles[i].v0 != t.v0 || tree.triangles[i].v1 != t.v1 || tree.triangles[i].v2 != t.v2)
+      return "tree.triangles[" + str(i) + "] is not mesh.triangle(" + str(i) + ")";
+    any_area = any_area || !oracle::is_degenerate(t);
+  }
+  if (!any_area && !(tree.nodes.empty() && tree.pieces.empty()))
+    return "the mesh has no triangle of non-zero area: the tree must have no nodes and no pieces";
+  if (any_area && tree.nodes.empty()) return "the tree has no nodes";
+  const std::string s = walk_bsp(tree, shape);
+  if (!s.empty()) return s;
+  const double tol = kRelative * std::max(scale_of(mesh), 1e-300);
+  std::vector<double> area(mesh.size(), 0.0);
+  std::vector<int> count(mesh.size(), 0);
+  for (std::size_t k = 0; k < tree.pieces.size(); ++k) {
+    const BspPiece& piece = tree.pieces[k];
+    const int node = shape.owner[k];
+    const std::string name = "piece " + str(k) + " (at node " + str(node) + ")";
+    if (piece.source < 0 || std::size_t(piece.source) >= mesh.size()) return name + " comes from triangle " + str(piece.source) + ": no such triangle";
+    const Triangle source = mesh.triangle(std::size_t(piece.source));
+    if (oracle::is_degenerate(source)) return name + " comes from triangle " + str(piece.source) + ", which has zero area";
+    const Triangle plane = mesh.triangle(std::size_t(tree.nodes[std::size_t(node)].plane));
+    // In the plane exactly, or within tol of it: the header decides sides in doubles, and
+    // rounding may call a triangle a hair off the plane coplanar.
+    for (int v = 0; v < 3; ++v)
+      if (oracle::orientation(plane.v0, plane.v1, plane.v2, source[v]) != 0 && !(std::abs(plane_distance(plane, source[v])) <= tol))
+        return name + ": its triangle " + str(piece.source) + " does not lie in the node's plane (that of triangle " +
+               str(tree.nodes[std::size_t(node)].plane) + ")";
+    for (int v = 0; v < 3; ++v) {
+      const Vec3& x = piece.triangle[v];
+      if (!is_finite(x) || !near_triangle(source, x, tol))
+        return name + ": its corner " + fmt(x) + " is not on triangle " + str(piece.source) + " (tolerance " + fmt(tol) + ")";
+      for (const auto& [ancestor, side] : shape.path[std::size_t(node)]) {
+        const Triangle& cut = mesh.triangle(std::size_t(tree.nodes[std::size_t(ancestor)].plane));
+        if (side * plane_distance(cut, x) < -tol)
+          return name + ": its corner " + fmt(x) + " is " + (side > 0 ? "behind" : "in front of") + " the plane of node " +
+                 str(ancestor) + " by " + fmt(std::abs(plane_distance(cut, x))) + ", but the node sent it " +
+                 (side > 0 ? "front" : "back");
+      }
+    }
+    const Vec3 n = piece.triangle.normal();
+    area[std::size_t(piece.source)] += 0.5 * n.norm();
+    ++count[std::size_t(piece.source)];
+    if (0.5 * n.norm() > tol * longest_edge(source) && n.dot(source.normal()) < 0)
+      return name + " is wound against its triangle " + str(piece.source);
+  }
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Triangle t = mesh.triangle(i);
+    if (oracle::is_degenerate(t)) continue;
+    const double exact = t.area(), slack = tol * longest_edge(t) * (count[i] + 1);
+    if (std::abs(area[i] - exact) > slack)
+      return "the pieces of triangle " + str(i) + " (" + str(count[i]) + " of them) cover an area of " + fmt(area[i]) +
+             ", not its " + fmt(exact);
+  }
+  return "";
+}
+
+}  // namespace
+
+Outcome bsp_tree(const Mesh& mesh, const BspTree& got) {
+  BspShape shape;
+  const std::string problem = check_bsp(mesh, got, shape);
+  if (!problem.empty())
+    return fail("a BSP tree of the mesh (the header's rules)", str(got.nodes.size()) + " nodes, " + str(got.pieces.size()) + " pieces", problem);
+  return pass();
+}
+
+Outcome classify(const PointQuery& in, Where got, Rules rules) {
+  const int exact = oracle::point_in_solid(in.point, in.mesh);
+  const Where expected = exact > 0 ? Where::inside : (exact < 0 ? Where::outside : Where::on);
+  bool doubt = false;
+  if (rules == Rules::random) {
+    // Within 8 tol of the surface, a perturbation may carry the point across it.
+    const double tol = tolerance_of(in);
+    const Aabb near{in.point.array() - 8 * tol, in.point.array() + 8 * tol};
+    for (std::size_t i = 0; i < in.mesh.size() && !doubt; ++i) {
+      const Triangle t = in.mesh.triangle(i);
+      doubt = boxes_meet(near, box_of(t)) && oracle::within(in.point, t, 8 * tol);
+    }
+  }
+  if (got == expected) return doubt ? ambiguous() : pass();
+  if (doubt) return ambiguous();
+  return fail(describe(expected), describe(got),
+              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
+                                    : "the point is farther than 8 tol from the surface: its answer is stable");
+}
+
+Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vector<int>& got, Rules rules) {
+  BspShape shape;
+  const std::string problem = check_bsp(in.mesh, tree, shape);
+  if (!problem.empty()) return fail("a valid BSP tree first (step 3)", "an invalid one", problem);
+  const std::size_t n = tree.pieces.size();
+  if (got.size() != n) return fail("all " + str(n) + " pieces", str(got.size()) + " entries", "list every piece exactly once");
+  std::vector<int> position(n, -1);
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    const int piece = got[k];
+    if (piece < 0 || std::size_t(piece) >= n) return fail("piece indices", "entry " + str(piece), "no such piece");
+    if (position[std::size_t(piece)] >= 0) return fail("each piece once", "piece " + str(piece) + " twice", "list every piece exactly once");
+    position[std::size_t(piece)] = int(k);
+  }
+  // Per node: the first and last positions of its own pieces, and of its whole subtree.
+  const std::size_t nodes = tree.nodes.size();
+  struct Range {
+    int lo = std::numeric_limits<int>::max(), hi = -1;
+    void add(const Range& r) { lo = std::min(lo, r.lo), hi = std::max(hi, r.hi); }
+  };
+  std::vector<Range> own(nodes), subtree(nodes);
+  for (std::size_t k = 0; k < n; ++k) {
+    Range& r = own[std::size_t(shape.owner[k])];
+    r.lo = std::min(r.lo, position[k]);
+    r.hi = std::max(r.hi, position[k]);
+  }
+  for (int node : shape.post_order) {
+    subtree[std::size_t(node)].add(own[std::size_t(node)]);
+    for (int child : {tree.nodes[std::size_t(node)].front, tree.nodes[std::size_t(node)].back})
+      if (child >= 0) subtree[std::size_t(node)].add(subtree[std::size_t(child)]);
+  }
+  const double tol = tolerance_of(in);
+  bool doubt = false;
+  for (std::size_t node = 0; node < nodes; ++node) {
+    const BspNode& b = tree.nodes[node];
+    const Triangle plane = in.mesh.triangle(std::size_t(b.plane));
+    const int side = oracle::orientation(plane.v0, plane.v1, plane.v2, in.point);
+    if (side == 0) continue;  // edge on: any order
+    const int far = side > 0 ? b.back : b.front, near = side > 0 ? b.front : b.back;
+    const Range none;
+    const Range& far_range = far >= 0 ? subtree[std::size_t(far)] : none;
+    const Range& near_range = near >= 0 ? subtree[std::size_t(near)] : none;
+    const Range& mine = own[node];
+    std::string why;
+    const std::string where = std::string(side > 0 ? "in front of" : "behind") + " the plane of node " + str(node) +
+                              " (triangle " + str(b.plane) + ")";
+    if (far_range.hi >= 0 && mine.hi >= 0 && far_range.hi > mine.lo)
+      why = "the eye is " + where + ", so its far subtree comes before its own pieces; yet a far piece is at position " +
+            str(far_range.hi) + " and the node's own at " + str(mine.lo);
+    else if (mine.hi >= 0 && near_range.hi >= 0 && mine.hi > near_range.lo)
+      why = "the eye is " + where + ", so its own pieces come before its near subtree; yet a near piece is at position " +
+            str(near_range.lo) + " and the node's own at " + str(mine.hi);
+    else if (far_range.hi >= 0 && near_range.hi >= 0 && far_range.hi > near_range.lo)
+      why = "the eye is " + where + ", so its far subtree comes before its near subtree; yet a near piece is at position " +
+            str(near_range.lo) + " and a far one at " + str(far_range.hi);
+    if (why.empty()) continue;
+    if (rules == Rules::random && oracle::side_in_doubt(plane, in.point, tol)) {
+      doubt = true;
+      continue;
+    }
+    return fail("far side first at every node", "a near piece before a far one", why);
+  }
+  return doubt ? ambiguous() : pass();
+}
+
+// ---- Step 5 ------------------------------------------------------------------------------------
+
+namespace {
+
+std::string describe_pairs(const std::vector<std::array<int, 2>>& pairs) {
+  std::string s;
+  for (std::size_t k = 0; k < pairs.size() && k < 16; ++k)
+    s += (s.empty() ? "" : ", ") + ("{" + str(pairs[k][0]) + ", " + str(pairs[k][1]) + "}");
+  if (pairs.size() > 16) s += ", ... (" + str(pairs.size()) + " in all)";
+  return s.empty() ? "no pair" : s;
+}
+
+}  // namespace
+
+Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rules) {
+  const std::vector<Sphere>& spheres = in.spheres;
+  const int n = int(spheres.size());
+  const std::vector<std::array<int, 2>> exact = oracle::meeting_pairs(spheres);
+  const std::string expected = describe_pairs(exact), answer = describe_pairs(got.pairs);
+  for (std::size_t k = 0; k < got.pairs.size(); ++k) {
+    const auto& p = got.pairs[k];
+    if (p[0] < 0 || p[1] >= n || p[0] >= p[1]) return fail(expected, answer, "{" + str(p[0]) + ", " + str(p[1]) + "} is not a pair i < j of spheres");
+    if (k > 0 && !(got.pairs[k - 1] < p)) return fail(expected, answer, "the pairs are not sorted, or a pair is reported twice");
+  }
+  const long long all = (long long)n * (n - 1) / 2;
+  if (got.tests < (long long)got.pairs.size() || got.tests > all)
+    return fail(expected, answer + ", tests = " + str(got.tests),
+                "tests must count the pairs you tested: at least the " + str(got.pairs.size()) + " you report, at most all " + str(all));
+  // Within 6 tol of touching, a perturbation may part them or make them meet: moving the
+  // centres by tol changes their distance by up to 2 sqrt(3) tol, the radii by 2 tol.
+  const double tol = tolerance_of(in);
+  const auto in_doubt = [&](const std::array<int, 2>& p) {
+    const Sphere& a = spheres[std::size_t(p[0])];
+    const Sphere& b = spheres[std::size_t(p[1])];
+    return rules == Rules::random && std::abs((a.center - b.center).norm() - (a.radius + b.radius)) <= 6 * tol;
+  };
+  const auto gap = [&](const std::array<int, 2>& p) {
+    const Sphere& a = spheres[std::size_t(p[0])];
+    const Sphere& b = spheres[std::size_t(p[1])];
+    return fmt((a.center - b.center).norm() - (a.radius + b.radius));
+  };
+  bool doubt = false;
+  std::size_t i = 0, j = 0;
+  while (i < exact.size() || j < got.pairs.size()) {
+    if (j == got.pairs.size() || (i < exact.size() && exact[i] < got.pairs[j])) {  // missing
+      if (!in_doubt(exact[i]))
+        return fail(expected, answer, "spheres " + str(exact[i][0]) + " and " + str(exact[i][1]) + " meet (|c_i - c_j| - (r_i + r_j) = " + gap(exact[i]) + ") but are missing");
+      doubt = true;
+      ++i;
+    } else if (i == exact.size() || got.pairs[j] < exact[i]) {  // extra
+      if (!in_doubt(got.pairs[j]))
+        return fail(expected, answer, "spheres " + str(got.pairs[j][0]) + " and " + str(got.pairs[j][1]) + " do not meet (|c_i - c_j| - (r_i + r_j) = " + gap(got.pairs[j]) + ")");
+      doubt = true;
+      ++j;
+    } else {
+      doubt = doubt || in_doubt(exact[i]);
+      ++i, ++j;
+    }
+  }
+  return doubt ? ambiguous() : pass();
+}
+
+// ---- Step 6 ------------------------------------------------------------------------------------
+
+std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short_ones, std::uint64_t seed) {
+  Random random{seed};
+  Aabb box{mesh.vertices[0], mesh.vertices[0]};
+  for (const Vec3& v : mesh.vertices) box = {box.min.cwiseMin(v), box.max.cwiseMax(v)};
+  const double size = (box.max - box.min).norm();
+  const auto in_ball = [&] {
+    for (;;) {
+      const Vec3 v(2 * random.uniform() - 1, 2 * random.uniform() - 1, 2 * random.uniform() - 1);
+      if (v.squaredNorm() <= 1 && v.squaredNorm() > 1e-6) return v;
+    }
+  };
+  std::vector<Segment> out;
+  while (int(out.size()) < count) {
+    if (short_ones) {
+      // Centred within size / 100 of a random point of a random triangle, size / 50 long.
+      const Triangle t = mesh.triangle(std::size_t(random.below(int(mesh.size()))));
+      double u = random.uniform(), v = random.uniform();
+      if (u + v > 1) u = 1 - u, v = 1 - v;
+      const Vec3 c = t.v0 + u * (t.v1 - t.v0) + v * (t.v2 - t.v0) + size / 100 * in_ball();
+      const Vec3 d = size / 100 * in_ball().normalized();
+      out.push_back({c - d, c + d});
+    } else {
+      // Two points of the box grown by a tenth, at least half its diagonal apart.
+      const auto any = [&] {
+        Vec3 p;
+        for (int i = 0; i < 3; ++i) p[i] = box.min[i] - 0.1 * size + (box.max[i] - box.min[i] + 0.2 * size) * random.uniform();
+        return p;
+      };
+      const Vec3 a = any(), b = any();
+      if ((b - a).norm() >= size / 2) out.push_back({a, b});
+    }
+  }
+  return out;
+}
+
+// ---- Inputs --------------------------------------------------------------------------------------
+
+rc::Gen<TreeQuery> tree_query() {
+  return rc::gen::exec([] {
+    TreeQuery q;
+    if (*rc::gen::inRange(0, 3) == 0) {
+      const SegmentMeshPair p = *gen::segment_mesh();  // lab 02's family: soups, terrains, octahedra
+      q.mesh = p.mesh;
+      q.segment = p.segment;
+    } else {
+      q.mesh = *gen::any_mesh();
+      q.segment = *gen::segment_near(q.mesh);
+    }
+    q.tree = *rc::gen::inRange(0, 1000000);
+    return q;
+  });
+}
+
+rc::Gen<TreeQuery> exact_tree_query() {
+  return rc::gen::exec([] {
+    TreeQuery q;
+    q.mesh = *gen::exact_mesh();
+    q.segment = *gen::exact_segment_near(q.mesh);
+    q.tree = *rc::gen::inRange(0, 1000000);
+    return q;
+  });
+}
+
+rc::Gen<Mesh> bsp_mesh() { return gen::any_mesh(); }
+
+rc::Gen<PointQuery> point_query() {
+  return rc::gen::exec([] {
+    const Mesh m = *gen::closed_mesh();
+    return PointQuery{m, *gen::point_near(m, false)};
+  });
+}
+
+rc::Gen<PointQuery> exact_point_query() {
+  return rc::gen::exec([] {
+    const Mesh m = *gen::exact_closed_mesh();
+    return PointQuery{m, *gen::point_near(m, true)};
+  });
+}
+
+rc::Gen<PointQuery> eye_query() {
+  return rc::gen::exec([] {
+    const Mesh m = *gen::any_mesh();
+    return PointQuery{m, *gen::point_near(m, false)};
+  });
+}
+
+rc::Gen<PointQuery> exact_eye_query() {
+  return rc::gen::exec([] {
+    const Mesh m = *rc::gen::oneOf(gen::exact_mesh(), gen::exact_closed_mesh());
+    return PointQuery{m, *gen::point_near(m, true)};
+  });
+}
+
+rc::Gen<SphereSet> sphere_set() {
+  return rc::gen::map(gen::sphere_set(), [](std::vector<Sphere> s) { return SphereSet{std::move(s)}; });
+}
+
+rc::Gen<SphereSet> exact_sphere_set() {
+  return rc::gen::map(gen::exact_sphere_set(), [](std::vector<Sphere> s) { return SphereSet{std::move(s)}; });
+}
+
+}  // namespace judge
+}  // namespace labkit::lab06

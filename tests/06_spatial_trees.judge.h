@@ -1,0 +1,106 @@
+// Lab 06's verdicts: each judge compares one answer with the exact oracle, following the
+// rules and tolerances of labs/06_spatial_trees/spatial_trees.h. The tests and the viewer
+// both use them.
+#pragma once
+
+#include "spatial_trees.h"
+
+#include "common/generators/meshes.h"
+#include "common/harness/check.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace labkit::lab06 {
+
+// A segment query: a mesh, a segment, and which of the checker's own trees over the mesh
+// to ask (a seed: the same number always makes the same tree).
+struct TreeQuery {
+  Mesh mesh;
+  Segment segment;
+  int tree = 0;
+};
+template <class V> void fields(TreeQuery& q, V&& v) { v("mesh", q.mesh); v("segment", q.segment); v("tree", q.tree); }
+
+// A point against the solid of a closed mesh (step 3), or an eye for the painter (step 4).
+struct PointQuery {
+  Mesh mesh;
+  Vec3 point = Vec3::Zero();
+};
+template <class V> void fields(PointQuery& q, V&& v) { v("mesh", q.mesh); v("point", q.point); }
+
+struct SphereSet {
+  std::vector<Sphere> spheres;
+};
+template <class V> void fields(SphereSet& s, V&& v) { v("spheres", s.spheres); }
+
+// Step 6: one of the four big meshes (gen::MeshKind), its size, and a seed for the mesh
+// (terrain, soup) and for the random segments.
+struct EfficiencyCase {
+  int kind = 0;
+  int triangles = 10000;
+  int segments = 1000;
+  int seed = 1;
+};
+template <class V> void fields(EfficiencyCase& c, V&& v) {
+  v("kind", c.kind); v("triangles", c.triangles); v("segments", c.segments); v("seed", c.seed);
+}
+
+// Step 6's spheres: n spread over a cube of side 100, radii from 0.25 to 1.
+struct SpreadSpheres {
+  int count = 2000;
+  int seed = 1;
+};
+template <class V> void fields(SpreadSpheres& s, V&& v) { v("count", s.count); v("seed", s.seed); }
+
+std::string describe(Where w);
+
+namespace judge {
+
+using check::Outcome;
+
+// Random cases accept any answer on ambiguous input; the robustness step's exact input
+// must follow the header's rules exactly.
+enum class Rules { random, exact };
+
+// The checker's own k-d trees: valid by step 1's rule, and awkward on purpose: splits
+// through vertices, on cell walls and at random places, empty leaves, zero-area
+// triangles listed. The same seed gives the same tree.
+KdTree checker_tree(const Mesh& mesh, int seed);
+// A tree by hand: bounds, nodes and items as given, triangles from the mesh.
+KdTree tree_of(const Mesh& mesh, const Aabb& bounds, std::vector<KdNode> nodes, std::vector<int> items);
+
+// Step 1: the tree is well formed and every leaf lists every triangle meeting its cell.
+Outcome kd_tree(const Mesh& mesh, const KdTree& got);
+
+// Step 2. `calls`: how many times given::segment_triangle ran during the query.
+Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls, Rules rules = Rules::random);
+Outcome any_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls, Rules rules = Rules::random);
+Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std::uint64_t calls, Rules rules = Rules::random);
+
+// Step 3: the tree is a BSP tree of the mesh (pieces in their planes, in their cells,
+// tiling their triangles); a point is classified like the exact oracle does.
+Outcome bsp_tree(const Mesh& mesh, const BspTree& got);
+Outcome classify(const PointQuery& in, Where got, Rules rules = Rules::random);
+// Step 4: `tree` must pass bsp_tree; the order obeys the painter's rule at every node.
+Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vector<int>& got, Rules rules = Rules::random);
+
+// Step 5.
+Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rules = Rules::random);
+
+// Step 6: the segments of an efficiency case, `short_ones` or long ones.
+std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short_ones, std::uint64_t seed);
+
+// Inputs.
+rc::Gen<TreeQuery> tree_query();
+rc::Gen<TreeQuery> exact_tree_query();
+rc::Gen<Mesh> bsp_mesh();
+rc::Gen<PointQuery> point_query();
+rc::Gen<PointQuery> exact_point_query();
+rc::Gen<PointQuery> eye_query();
+rc::Gen<PointQuery> exact_eye_query();
+rc::Gen<SphereSet> sphere_set();
+rc::Gen<SphereSet> exact_sphere_set();
+
+}  // namespace judge
+}  // namespace labkit::lab06

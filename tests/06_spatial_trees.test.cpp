@@ -1,0 +1,555 @@
+// Lab 06 tests. Each step: the hand-worked examples of handouts/06_spatial_trees.md, then
+// random cases against the exact oracle (tests/06_spatial_trees.judge.cpp).
+#include "06_spatial_trees.judge.h"
+#include "spatial_trees.h"
+
+#include "common/given/segment_triangle.h"
+#include "common/oracle/oracle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+using namespace labkit;
+using namespace labkit::lab06;
+using check::Expect;
+using check::Outcome;
+using judge::Rules;
+
+namespace {
+
+Mesh mesh_of(const std::vector<Triangle>& triangles) {
+  Mesh m;
+  for (const Triangle& t : triangles) {
+    const int base = int(m.vertices.size());
+    m.vertices.insert(m.vertices.end(), {t.v0, t.v1, t.v2});
+    m.triangles.push_back({base, base + 1, base + 2});
+  }
+  return m;
+}
+
+// Fails with the first problem of a or b (a first).
+Outcome both(const Outcome& a, const Outcome& b) { return a.verdict == Outcome::Verdict::fail ? a : b; }
+
+// ---- The k-d tree of the handout's step 2 --------------------------------------------------------
+//
+//   A (triangle 0) leans across x = 4: the segment y = z = 1 meets it at x = 6.
+//   B (triangle 1) stands in the plane x = 5.
+//   The root splits at x = 4: the leaf below lists A; the leaf above lists A and B.
+const Triangle kA{{8, -1, 0}, {8, 3, 0}, {2, 1, 3}};
+const Triangle kB{{5, 0, 0}, {5, 3, 0}, {5, 0, 3}};
+
+Mesh lean_and_stand() { return mesh_of({kA, kB}); }
+
+KdTree handout_tree() {
+  return judge::tree_of(lean_and_stand(), {{2, -1, 0}, {8, 3, 3}}, {{4, 0, 2}, {0, kLeaf, 0}, {0, kLeaf, 2}}, {1, 0, 2, 0, 1});
+}
+
+// Runs a query on a tree, counting the given test's calls, and judges it.
+template <class Query, class Judge>
+Outcome run_query(const TreeQuery& in, const KdTree& tree, Query&& query, Judge&& judge, Rules rules) {
+  const std::uint64_t before = given::segment_triangle_calls();
+  const auto got = query(tree, in.segment);
+  const std::uint64_t calls = given::segment_triangle_calls() - before;
+  return judge(in, tree, got, calls, rules);
+}
+
+Outcome judge_first(const TreeQuery& in, const KdTree& tree, Rules rules = Rules::random) {
+  return run_query(in, tree, first_hit, judge::first_hit, rules);
+}
+Outcome judge_any(const TreeQuery& in, const KdTree& tree, Rules rules = Rules::random) {
+  return run_query(in, tree, any_hit, judge::any_hit, rules);
+}
+Outcome judge_all(const TreeQuery& in, const KdTree& tree, Rules rules = Rules::random) {
+  return run_query(in, tree, all_hits, judge::all_hits, rules);
+}
+
+// The three queries on the checker's tree of a random case.
+Outcome all_three(const TreeQuery& in, Rules rules) {
+  const KdTree tree = judge::checker_tree(in.mesh, in.tree);
+  return both(judge_first(in, tree, rules), both(judge_any(in, tree, rules), judge_all(in, tree, rules)));
+}
+
+}  // namespace
+
+// ---- Step 1 --------------------------------------------------------------------------------------
+
+TEST_CASE("L06S1 build a k-d tree: worked examples", "[lab06][step1]") {
+  const auto valid = [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); };
+  check::example("build_kd_tree", "the two triangles of step 2", lean_and_stand(), valid);
+  // The picture in the header: triangle 7 touches y = 2, the others lie well inside
+  // their leaves.
+  check::example("build_kd_tree", "the header's picture",
+                 mesh_of({{{1, 0, 0}, {3, 0, 0}, {2, 1, 0}}, {{5, 1, 0}, {7, 1, 0}, {6, 3, 0}}, {{1, 2, 0}, {3, 2, 0}, {2, 4, 0}}}),
+                 valid);
+  // Whatever the split rule, the floor of a box lies in some plane z = 0 or touches it.
+  check::example("build_kd_tree", "a box: faces in the planes of the cells' walls", gen::box_mesh({{0, 0, 0}, {4, 2, 1}}), valid);
+  check::example("build_kd_tree", "twenty copies of one triangle: no split separates them",
+                 mesh_of(std::vector<Triangle>(20, Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})), valid);
+  check::example("build_kd_tree", "a sphere of 200 triangles", gen::sphere_mesh(200), valid);
+  check::example("build_kd_tree", "no triangles: one empty leaf", Mesh{}, [](const Mesh& m) {
+    const KdTree tree = build_kd_tree(m);
+    Expect e;
+    e.equal("nodes", int(tree.nodes.size()), 1);
+    if (tree.nodes.size() == 1) {
+      e.equal("axis", tree.nodes[0].axis, kLeaf);
+      e.that("items", tree.nodes[0].index >= 0 && std::size_t(tree.nodes[0].index) < tree.items.size() &&
+                          tree.items[std::size_t(tree.nodes[0].index)] == 0,
+             "a list of " + (tree.items.empty() ? std::string("nothing") : std::to_string(tree.items[0])), "a count of 0",
+             "the only leaf lists no triangle");
+    }
+    return e.outcome();
+  });
+  check::example("build_kd_tree", "a zero-area triangle alone", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}), valid);
+}
+
+TEST_CASE("L06S1 build a k-d tree: random cases", "[lab06][step1][oracle]") {
+  check::random_cases("build_kd_tree", gen::any_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+  // Lattice meshes with faces in the planes the splits use: triangles touch split planes.
+  check::random_cases("build_kd_tree.lattice", gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+}
+
+// ---- Step 2 --------------------------------------------------------------------------------------
+
+TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
+  const KdTree tree = handout_tree();
+  const Mesh mesh = lean_and_stand();
+  const auto expect_hit = [&tree](int triangle, double t, int max_tests) {
+    return [&tree, triangle, t, max_tests](const TreeQuery& in) {
+      const KdHit got = first_hit(tree, in.segment);
+      Expect e;
+      e.equal("hit", got.hit, true);
+      e.equal("triangle", got.triangle, triangle);
+      e.near("t", got.t, t, 1e-12);
+      e.that("tests", got.tests <= max_tests, std::to_string(got.tests), "at most " + std::to_string(max_tests),
+             "more tests than the leaves the segment enters before the hit list");
+      return both(e.outcome(), judge_first(in, tree, Rules::exact));
+    };
+  };
+  // A is found first, in the leaf below, at t = 3/4: beyond that leaf's far end t = 1/2.
+  // B, in the leaf above, is nearer: t = 5/8.
+  check::example("first_hit", "a hit beyond the leaf's end does not end the search", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
+                 expect_hit(1, 0.625, 3));
+  check::example("first_hit", "backwards: the leaf above first, A at t = 1/4", TreeQuery{mesh, {{8, 1, 1}, {0, 1, 1}}, 0},
+                 expect_hit(0, 0.25, 2));
+  check::example("first_hit", "in the split plane x = 4: no t_split, the leaf below", TreeQuery{mesh, {{4, 1, 4}, {4, 1, 0}}, 0},
+                 expect_hit(0, 0.5, 1));
+  check::example("all_hits", "B then A, A once though listed twice", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
+                 [&tree](const TreeQuery& in) {
+                   const KdHits got = all_hits(tree, in.segment);
+                   Expect e;
+                   e.equal("count", int(got.hits.size()), 2);
+                   if (got.hits.size() == 2) {
+                     e.equal("first", got.hits[0].triangle, 1);
+                     e.near("first t", got.hits[0].t, 0.625, 1e-12);
+                     e.equal("second", got.hits[1].triangle, 0);
+                     e.near("second t", got.hits[1].t, 0.75, 1e-12);
+                   }
+                   return both(e.outcome(), judge_all(in, tree, Rules::exact));
+                 });
+  check::example("any_hit", "A, in the first leaf: one test", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0}, [&tree](const TreeQuery& in) {
+    const KdHit got = any_hit(tree, in.segment);
+    Expect e;
+    e.equal("hit", got.hit, true);
+    e.equal("triangle", got.triangle, 0);
+    e.equal("tests", got.tests, 1);
+    return both(e.outcome(), judge_any(in, tree, Rules::exact));
+  });
+  check::example("first_hit", "above the bounds: no leaf, no test", TreeQuery{mesh, {{0, 1, 5}, {8, 1, 5}}, 0},
+                 [&tree](const TreeQuery& in) {
+                   Expect e;
+                   const KdHit first = first_hit(tree, in.segment), any = any_hit(tree, in.segment);
+                   const KdHits all = all_hits(tree, in.segment);
+                   e.equal("first_hit.hit", first.hit, false);
+                   e.equal("first_hit.tests", first.tests, 0);
+                   e.equal("any_hit.tests", any.tests, 0);
+                   e.equal("all_hits.tests", all.tests, 0);
+                   return e.outcome();
+                 });
+}
+
+TEST_CASE("L06S2 segment queries: random cases", "[lab06][step2][oracle]") {
+  const auto query = [](auto&& judge_one) {
+    return [judge_one](const TreeQuery& in) { return judge_one(in, judge::checker_tree(in.mesh, in.tree), Rules::random); };
+  };
+  check::random_cases("first_hit", judge::tree_query(), query(judge_first));
+  check::random_cases("any_hit", judge::tree_query(), query(judge_any));
+  check::random_cases("all_hits", judge::tree_query(), query(judge_all));
+}
+
+// ---- Step 3 --------------------------------------------------------------------------------------
+
+namespace {
+
+// The handout's tetrahedron: O X Y Z, faces wound outward.
+Mesh tetrahedron() {
+  Mesh m;
+  m.vertices = {{0, 0, 0}, {4, 0, 0}, {0, 4, 0}, {0, 0, 4}};
+  m.triangles = {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}};
+  return m;
+}
+
+// A floor and a wall standing across it: the wall's plane cuts the floor, or the
+// floor's plane cuts the wall.
+Mesh floor_and_wall() { return mesh_of({{{0, 0, 0}, {8, 0, 0}, {0, 8, 0}}, {{2, 0, -2}, {2, 0, 2}, {2, 4, 0}}}); }
+
+auto expect_where(Where where) {
+  return [where](const PointQuery& in) {
+    const BspTree tree = build_bsp(in.mesh);
+    const Outcome valid = judge::bsp_tree(in.mesh, tree);
+    if (valid.verdict == Outcome::Verdict::fail) return valid;
+    Expect e;
+    e.equal("where", classify(tree, in.point), where);
+    return e.outcome();
+  };
+}
+
+}  // namespace
+
+TEST_CASE("L06S3 BSP tree: worked examples", "[lab06][step3]") {
+  const auto valid = [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); };
+  check::example("build_bsp", "a tetrahedron: a chain, no cut", tetrahedron(), [](const Mesh& m) {
+    const BspTree tree = build_bsp(m);
+    Expect e;
+    e.equal("pieces", int(tree.pieces.size()), 4);
+    e.equal("nodes", int(tree.nodes.size()), 4);
+    return both(judge::bsp_tree(m, tree), e.outcome());
+  });
+  check::example("build_bsp", "a floor and a wall: one of them is cut", floor_and_wall(), [](const Mesh& m) {
+    const BspTree tree = build_bsp(m);
+    Expect e;
+    e.that("pieces", tree.pieces.size() == 3 || tree.pieces.size() == 4, std::to_string(tree.pieces.size()),
+           "3 (the wall cut in two) or 4 (the floor cut in three)", "exactly one triangle is cut by the other's plane");
+    return both(judge::bsp_tree(m, tree), e.outcome());
+  });
+  check::example("build_bsp", "two faces in one plane stay at one node", gen::box_mesh({{0, 0, 0}, {2, 2, 2}}), valid);
+  check::example("build_bsp", "a zero-area triangle is left out", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}), [](const Mesh& m) {
+    const BspTree tree = build_bsp(m);
+    Expect e;
+    e.equal("nodes", int(tree.nodes.size()), 0);
+    e.equal("pieces", int(tree.pieces.size()), 0);
+    return e.outcome();
+  });
+  const Mesh t = tetrahedron();
+  check::example("classify", "(1, 1, 1): inside", PointQuery{t, {1, 1, 1}}, expect_where(Where::inside));
+  check::example("classify", "(3, 3, 3): beyond the slanted face", PointQuery{t, {3, 3, 3}}, expect_where(Where::outside));
+  check::example("classify", "(1, 1, 2): on the slanted face", PointQuery{t, {1, 1, 2}}, expect_where(Where::on));
+  check::example("classify", "(2, 2, 0): on an edge", PointQuery{t, {2, 2, 0}}, expect_where(Where::on));
+  check::example("classify", "(0, 0, 0): a vertex", PointQuery{t, {0, 0, 0}}, expect_where(Where::on));
+  check::example("classify", "(6, 0, 0): on two planes, outside", PointQuery{t, {6, 0, 0}}, expect_where(Where::outside));
+  check::example("classify", "(-1, 1, 1): behind nothing", PointQuery{t, {-1, 1, 1}}, expect_where(Where::outside));
+}
+
+TEST_CASE("L06S3 BSP tree: random cases", "[lab06][step3][oracle]") {
+  check::random_cases("build_bsp", judge::bsp_mesh(), [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
+  check::random_cases("classify", judge::point_query(), [](const PointQuery& in) {
+    return judge::classify(in, classify(build_bsp(in.mesh), in.point));
+  });
+}
+
+// ---- Step 4 --------------------------------------------------------------------------------------
+
+namespace {
+
+// Three squares' worth of triangles stacked at z = 0, 1, 2, each hiding the one below it
+// from above.
+Mesh stack_of_three() {
+  return mesh_of({{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, {{0, 0, 1}, {4, 0, 1}, {0, 4, 1}}, {{0, 0, 2}, {4, 0, 2}, {0, 4, 2}}});
+}
+
+// Three long triangles, each lying over the next: no order of the whole triangles works,
+// so some triangle must be cut.
+Mesh pinwheel() {
+  return mesh_of({{{0, 0, 0}, {12, 1, 2}, {12, -1, 2}},
+                  {{12, 0, 1}, {-6, 10, 3}, {-6, 12, 3}},
+                  {{-6, 11, 2}, {0, -1, 4}, {0, 1, 4}}});
+}
+
+Outcome judge_order(const PointQuery& in, Rules rules = Rules::random) {
+  const BspTree tree = build_bsp(in.mesh);
+  return judge::back_to_front(in, tree, back_to_front(tree, in.point), rules);
+}
+
+}  // namespace
+
+TEST_CASE("L06S4 back to front: worked examples", "[lab06][step4]") {
+  const auto sources = [](std::vector<int> expected) {
+    return [expected](const PointQuery& in) {
+      const BspTree tree = build_bsp(in.mesh);
+      const std::vector<int> order = back_to_front(tree, in.point);
+      std::vector<int> got;
+      for (int k : order)
+        if (k >= 0 && std::size_t(k) < tree.pieces.size()) got.push_back(tree.pieces[std::size_t(k)].source);
+      Expect e;
+      e.equal("triangles in order", got, expected);
+      return both(e.outcome(), judge::back_to_front(in, tree, order, Rules::exact));
+    };
+  };
+  check::example("back_to_front", "from above: bottom first", PointQuery{stack_of_three(), {1, 1, 10}}, sources({0, 1, 2}));
+  check::example("back_to_front", "from below: top first", PointQuery{stack_of_three(), {1, 1, -10}}, sources({2, 1, 0}));
+  check::example("back_to_front", "level with the middle one", PointQuery{stack_of_three(), {1, 1, 1}}, [](const PointQuery& in) {
+    const BspTree tree = build_bsp(in.mesh);
+    return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
+  });
+  check::example("back_to_front", "a pinwheel: cut, then ordered", PointQuery{pinwheel(), {2, 3, 20}}, [](const PointQuery& in) {
+    const BspTree tree = build_bsp(in.mesh);
+    Expect e;
+    e.that("pieces", tree.pieces.size() > 3, std::to_string(tree.pieces.size()), "more than 3",
+           "three triangles that overlap in a cycle cannot be ordered whole");
+    return both(judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact), e.outcome());
+  });
+}
+
+TEST_CASE("L06S4 back to front: random cases", "[lab06][step4][oracle]") {
+  check::random_cases("back_to_front", judge::eye_query(), [](const PointQuery& in) {
+    const BspTree tree = build_bsp(in.mesh);
+    return judge::back_to_front(in, tree, back_to_front(tree, in.point));
+  });
+}
+
+// ---- Step 5 --------------------------------------------------------------------------------------
+
+namespace {
+
+auto expect_pairs(std::vector<std::array<int, 2>> pairs) {
+  return [pairs](const SphereSet& in) {
+    const SpherePairs got = overlapping_pairs(in.spheres);
+    Expect e;
+    e.equal("pairs", got.pairs, pairs);
+    return both(e.outcome(), judge::overlapping_pairs(in, got, Rules::exact));
+  };
+}
+
+}  // namespace
+
+TEST_CASE("L06S5 broad phase: worked examples", "[lab06][step5]") {
+  // The lecture's sweep: along x the intervals run A0 A1 R0 B0 R1 C0 C1 B1.
+  const SphereSet lecture{{{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}}};
+  check::example("overlapping_pairs", "the lecture's A R B C: only R and B meet", lecture, expect_pairs({{1, 2}}));
+  check::example("overlapping_pairs", "touching along x: intervals [-1, 1] and [1, 3]",
+                 SphereSet{{{{0, 0, 0}, 1}, {{2, 0, 0}, 1}}}, expect_pairs({{0, 1}}));
+  check::example("overlapping_pairs", "a point on a sphere", SphereSet{{{{3, 4, 0}, 5}, {{0, 0, 0}, 0}}}, expect_pairs({{0, 1}}));
+  check::example("overlapping_pairs", "a row along y: x tells nothing",
+                 SphereSet{{{{0, 0, 0}, 1}, {{0, 3, 0}, 1}, {{0, 6, 0}, 1.5}, {{0, 8, 0}, 1}}}, expect_pairs({{2, 3}}));
+  check::example("overlapping_pairs", "no spheres", SphereSet{}, expect_pairs({}));
+  check::example("overlapping_pairs", "one sphere inside another", SphereSet{{{{0, 0, 0}, 5}, {{1, 1, 1}, 1}, {{20, 0, 0}, 1}}},
+                 expect_pairs({{0, 1}}));
+}
+
+TEST_CASE("L06S5 broad phase: random cases", "[lab06][step5][oracle]") {
+  check::random_cases("overlapping_pairs", judge::sphere_set(), [](const SphereSet& in) {
+    return judge::overlapping_pairs(in, overlapping_pairs(in.spheres));
+  });
+}
+
+// ---- Step 6 --------------------------------------------------------------------------------------
+
+namespace {
+
+// Tests per query over a batch of segments.
+struct Tally {
+  long long total = 0;
+  int worst = 0, count = 0;
+  void add(int tests) {
+    total += tests;
+    worst = std::max(worst, tests);
+    ++count;
+  }
+  double mean() const { return count ? double(total) / count : 0.0; }
+  std::string text() const { return "mean " + fmt(std::round(mean() * 10) / 10) + ", worst " + std::to_string(worst); }
+};
+
+// The answers must also be right: the same as testing every triangle with the same given
+// test (the segments are random, nothing here is near a tie).
+Outcome run_efficiency(const EfficiencyCase& in) {
+  const auto kind = gen::MeshKind(in.kind);
+  const Mesh mesh = gen::mesh_of_kind(kind, in.triangles, std::uint64_t(in.seed));
+  const KdTree tree = build_kd_tree(mesh);
+  const Outcome valid = judge::kd_tree(mesh, tree);
+  if (valid.verdict == Outcome::Verdict::fail) return valid;
+  const auto brute_first = [&](const Segment& s) {
+    KdHit best;
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+      const given::SegmentHit h = given::segment_triangle(s, tree.triangles[i]);
+      if (h.hit && (!best.hit || h.t < best.t)) best = {true, int(i), h.t, h.point, h.barycentric, 0};
+    }
+    return best;
+  };
+  const std::string name = std::string(gen::name_of(kind)) + " of " + std::to_string(mesh.size()) + " triangles";
+  Tally short_first, short_any, long_first, long_all;
+  for (bool short_ones : {true, false}) {
+    const auto segments = judge::efficiency_segments(mesh, in.segments, short_ones, std::uint64_t(in.seed) * 7 + short_ones);
+    for (const Segment& s : segments) {
+      const KdHit expected = brute_first(s);
+      const std::uint64_t c0 = given::segment_triangle_calls();
+      const KdHit first = first_hit(tree, s);
+      const std::uint64_t c1 = given::segment_triangle_calls();
+      const KdHit any = any_hit(tree, s);
+      const std::uint64_t c2 = given::segment_triangle_calls();
+      if (first.tests != int(c1 - c0) || any.tests != int(c2 - c1))
+        return check::fail("tests = the calls of given::segment_triangle", "a different count", "count every call in `tests`");
+      if (first.hit != expected.hit || (expected.hit && first.t != expected.t))
+        return check::fail(expected.hit ? "a hit at t = " + fmt(expected.t) : "no hit",
+                           first.hit ? "a hit at t = " + fmt(first.t) : "no hit",
+                           "first_hit on the " + name + " disagrees with testing every triangle, for a=" + fmt(s.a) + " b=" + fmt(s.b));
+      if (any.hit != expected.hit) return check::fail(expected.hit ? "a hit" : "no hit", any.hit ? "a hit" : "no hit", "any_hit on the " + name);
+      if (short_ones) {
+        short_first.add(first.tests);
+        short_any.add(any.tests);
+      } else {
+        long_first.add(first.tests);
+        long_all.add(all_hits(tree, s).tests);
+      }
+    }
+  }
+  const std::string got = "short first_hit " + short_first.text() + "; short any_hit " + short_any.text() +
+                          "; long first_hit mean " + fmt(std::round(long_first.mean())) + "; long all_hits mean " +
+                          fmt(std::round(long_all.mean()));
+  const std::string expected = "short: mean <= " + fmt(kShortMean) + ", worst <= " + std::to_string(kShortWorst) +
+                               "; long first_hit mean <= " + fmt(kLongFirstMean) + "; long all_hits mean <= " + fmt(kLongAllMean);
+  for (const Tally* t : {&short_first, &short_any})
+    if (t->mean() > kShortMean || t->worst > kShortWorst)
+      return check::fail(expected, got, "short segments test too many triangles of the " + name);
+  if (long_first.mean() > kLongFirstMean) return check::fail(expected, got, "first_hit does not stop early enough on the " + name);
+  if (long_all.mean() > kLongAllMean) return check::fail(expected, got, "all_hits tests too many triangles of the " + name);
+  return check::pass();
+}
+
+}  // namespace
+
+TEST_CASE("L06S6 efficiency: tests counted on 10,000 triangles", "[lab06][step6]") {
+  const int seed = int(check::settings().seed % 1000000);
+  for (int kind = 0; kind < 4; ++kind)
+    check::example("efficiency.segments", gen::name_of(gen::MeshKind(kind)), EfficiencyCase{kind, 10000, 1000, seed}, run_efficiency);
+  check::example("efficiency.spheres", "2,000 spheres spread over a cube", SpreadSpheres{2000, seed}, [](const SpreadSpheres& in) {
+    const SphereSet set{gen::spread_spheres(in.count, 100, 0.25, 1, std::uint64_t(in.seed))};
+    const SpherePairs got = overlapping_pairs(set.spheres);
+    const Outcome right = judge::overlapping_pairs(set, got);
+    if (right.verdict == Outcome::Verdict::fail) return right;
+    Expect e;
+    e.that("tests", got.tests <= kSphereTests, std::to_string(got.tests), "at most " + std::to_string(kSphereTests),
+           "too many pair tests: the brute force makes " + std::to_string(in.count * (in.count - 1) / 2));
+    return e.outcome();
+  });
+}
+
+// ---- Step 7: robustness ----------------------------------------------------------------------------
+// Exact degenerate input on integers: the header's rules hold exactly.
+
+namespace {
+
+// A 2 x 1 x 1 block of two unit cubes, scaled by 2: its faces lie in the planes x = 0,
+// 2, 4, y = 0, 2, z = 0, 2.
+Mesh two_cubes() { return gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}}, Vec3::Zero(), 2.0); }
+
+// A tree over two_cubes() by hand: the root splits at x = 2, through the wall between
+// the cubes (it has no faces: only vertices and edges of the faces around it); its child
+// above splits at z = 2, along the top faces, on the wall of its cell: the child above
+// that is flat.
+KdTree cubes_tree() {
+  const Mesh m = two_cubes();
+  std::vector<int> below{0}, above_low{0}, above_high{0};
+  const auto add = [](std::vector<int>& list, int i) { list.push_back(i), ++list[0]; };
+  for (std::size_t i = 0; i < m.size(); ++i) {
+    const Triangle t = m.triangle(i);
+    const Vec3 lo = t.v0.cwiseMin(t.v1).cwiseMin(t.v2), hi = t.v0.cwiseMax(t.v1).cwiseMax(t.v2);
+    if (lo.x() <= 2) add(below, int(i));
+    if (hi.x() >= 2 && lo.z() <= 2) add(above_low, int(i));
+    if (hi.x() >= 2 && hi.z() >= 2) add(above_high, int(i));
+  }
+  std::vector<int> items = below;
+  const int low_at = int(items.size());
+  items.insert(items.end(), above_low.begin(), above_low.end());
+  const int high_at = int(items.size());
+  items.insert(items.end(), above_high.begin(), above_high.end());
+  return judge::tree_of(m, {{0, 0, 0}, {4, 2, 2}},
+                        {{2, 0, 2}, {0, kLeaf, 0}, {2, 2, 4}, {0, kLeaf, low_at}, {0, kLeaf, high_at}}, items);
+}
+
+}  // namespace
+
+TEST_CASE("L06S7 robustness: k-d trees on exact input", "[lab06][step7]") {
+  const KdTree tree = cubes_tree();
+  const Mesh mesh = two_cubes();
+  const auto exact_all = [&tree](const TreeQuery& in) {
+    return both(judge_all(in, tree, Rules::exact), both(judge_first(in, tree, Rules::exact), judge_any(in, tree, Rules::exact)));
+  };
+  const std::string q = "robust.segment_queries";
+  check::example(q, "down the split plane x = 2", TreeQuery{mesh, {{2, 1, 4}, {2, 1, -4}}, 0}, exact_all);
+  check::example(q, "along the top, in the plane z = 2", TreeQuery{mesh, {{-2, 1, 2}, {6, 1, 2}}, 0}, exact_all);
+  check::example(q, "along the wall y = 0 of the root's cell", TreeQuery{mesh, {{1, 0, 1}, {1, 0, -1}}, 0}, exact_all);
+  check::example(q, "ending exactly on the split plane", TreeQuery{mesh, {{-2, 1, 1}, {2, 1, 1}}, 0}, exact_all);
+  check::example(q, "starting on the split plane, through a shared edge", TreeQuery{mesh, {{2, 1, 4}, {2, 1, 2}}, 0}, exact_all);
+  check::example(q, "through the corner (2, 0, 2) of three cells", TreeQuery{mesh, {{0, -2, 0}, {4, 2, 4}}, 0}, exact_all);
+  check::example("robust.build_kd_tree", "two cubes: splits along their faces", mesh,
+                 [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+}
+
+TEST_CASE("L06S7 robustness: BSP trees and spheres on exact input", "[lab06][step7]") {
+  // An L of three cubes (scaled by 2): faces share planes, points lie on them.
+  const Mesh l = gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Vec3::Zero(), 2.0);
+  const std::string q = "robust.classify";
+  check::example(q, "in the notch of the L", PointQuery{l, {3, 3, 1}}, expect_where(Where::outside));
+  check::example(q, "beyond the notch, on two face planes", PointQuery{l, {4, 4, 1}}, expect_where(Where::outside));
+  check::example(q, "on the inner corner edge", PointQuery{l, {2, 2, 1}}, expect_where(Where::on));
+  check::example(q, "inside, on the plane between two cubes", PointQuery{l, {2, 1, 1}}, expect_where(Where::inside));
+  check::example(q, "on a top face, on a cube's edge line", PointQuery{l, {1, 2, 2}}, expect_where(Where::on));
+  check::example(q, "beyond the top, on a face's plane", PointQuery{l, {1, 5, 2}}, expect_where(Where::outside));
+  check::example("robust.back_to_front", "the eye in the plane of the top faces", PointQuery{l, {9, 9, 2}},
+                 [](const PointQuery& in) { return judge_order(in, Rules::exact); });
+  check::example("robust.overlapping_pairs", "a chain touching along x, listed backwards",
+                 SphereSet{{{{6, 0, 0}, 1}, {{3, 0, 0}, 2}, {{0, 0, 0}, 1}}}, expect_pairs({{0, 1}, {1, 2}}));
+}
+
+TEST_CASE("L06S7 robustness: random exact degenerate cases", "[lab06][step7][oracle]") {
+  check::random_cases("robust.segment_queries", judge::exact_tree_query(),
+                      [](const TreeQuery& in) { return all_three(in, Rules::exact); });
+  check::random_cases("robust.build_kd_tree", gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+  check::random_cases("robust.classify", judge::exact_point_query(), [](const PointQuery& in) {
+    return judge::classify(in, classify(build_bsp(in.mesh), in.point), Rules::exact);
+  });
+  check::random_cases("robust.back_to_front", judge::exact_eye_query(), [](const PointQuery& in) {
+    const BspTree tree = build_bsp(in.mesh);
+    return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
+  });
+  check::random_cases("robust.overlapping_pairs", judge::exact_sphere_set(), [](const SphereSet& in) {
+    return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
+  });
+}
+
+// ---- Figures (not a graded step) ----------------------------------------------------------------
+// Primitive tests per query on 10k, 100k and 1M triangles, against brute force (every
+// triangle once). Hidden: run it with
+//   build/test_06_spatial_trees_reference "[lab06-figures]"
+// It counts calls of given::segment_triangle; it times nothing.
+TEST_CASE("L06 figures: primitive tests per query", "[.][lab06-figures]") {
+  const int segments = 1000;
+  std::printf("%-8s %9s | %-24s | %-24s | %-24s | %-24s\n", "mesh", "triangles", "short first_hit mean/worst",
+              "short any_hit mean/worst", "long first_hit mean/worst", "long all_hits mean/worst");
+  for (int size : {10000, 100000, 1000000})
+    for (int kind = 0; kind < 4; ++kind) {
+      const Mesh mesh = gen::mesh_of_kind(gen::MeshKind(kind), size, 1);
+      const KdTree tree = build_kd_tree(mesh);
+      Tally tallies[4];
+      for (bool short_ones : {true, false})
+        for (const Segment& s : judge::efficiency_segments(mesh, segments, short_ones, 7 + short_ones)) {
+          if (short_ones) {
+            tallies[0].add(first_hit(tree, s).tests);
+            tallies[1].add(any_hit(tree, s).tests);
+          } else {
+            tallies[2].add(first_hit(tree, s).tests);
+            tallies[3].add(all_hits(tree, s).tests);
+          }
+        }
+      const auto cell = [](const Tally& t) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.1f / %d", t.mean(), t.worst);
+        return std::string(text);
+      };
+      std::printf("%-8s %9zu | %-24s | %-24s | %-24s | %-24s   (brute force: %zu per query; %zu nodes, %zu items)\n",
+                  gen::name_of(gen::MeshKind(kind)), mesh.size(), cell(tallies[0]).c_str(), cell(tallies[1]).c_str(),
+                  cell(tallies[2]).c_str(), cell(tallies[3]).c_str(), mesh.size(), tree.nodes.size(), tree.items.size());
+      std::fflush(stdout);
+    }
+  SUCCEED();
+}

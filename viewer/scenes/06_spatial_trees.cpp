@@ -1,0 +1,463 @@
+// Lab 06 scene: BSP and k-d trees, pair reduction (handouts/06_spatial_trees.md).
+//
+// A replay token's query picks the mode:
+//   k-d tree   build_kd_tree, first_hit, any_hit, all_hits (and robust.*)    steps 1-2
+//   BSP tree   build_bsp, classify, back_to_front (and robust.*)             steps 3-4
+//   spheres    overlapping_pairs (and robust.*)                              step 5
+// In the k-d tree mode the segment's ends are handles: the leaves whose cells it meets
+// are drawn as boxes, the student's first hit in its verdict's colour, the exact hits
+// (the toggle) as violet rings. When step 1 is still a stub, the queries run on the
+// checker's own tree, as the tests do.
+#include "viewer/scenes/scenes.h"
+
+#include "06_spatial_trees.judge.h"
+#include "common/generators/meshes.h"
+#include "common/given/segment_triangle.h"
+#include "common/oracle/oracle.h"
+#include "spatial_trees.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace viewer {
+namespace {
+
+using namespace labkit;
+using namespace labkit::lab06;
+
+enum class Mode { kd, bsp, spheres };
+
+const std::vector<Preset> kPresets = {
+    {"torus", "a k-d tree over a torus of 2,048 triangles: the leaves a segment visits, front to back", nullptr, true, -50, 35, 2},
+    {"handout", "step 2's example: a hit beyond the first leaf's end does not end the search", nullptr, false, -80, 20, 2},
+    {"terrain", "a terrain of 20,000 triangles, a long segment across it", nullptr, false, -40, 30, 2},
+    {"bsp", "a BSP tree of an L of three cubes: classify a point, paint back to front", nullptr, true, -35, 25, 3},
+    {"spheres", "sort and sweep: 60 spheres, the pairs that meet", nullptr, true, -60, 30, 5},
+};
+
+// The leaves of a k-d tree with their cells, or why the tree cannot be walked.
+struct LeafBox {
+  int node;
+  Aabb cell;
+};
+
+std::vector<LeafBox> leaves_of(const KdTree& tree) {
+  std::vector<LeafBox> out;
+  if (tree.nodes.empty()) return out;
+  struct Todo {
+    int node;
+    Aabb cell;
+    int depth;
+  };
+  std::vector<Todo> todo{{0, tree.bounds, 0}};
+  while (!todo.empty() && out.size() < 200000) {
+    const Todo t = todo.back();
+    todo.pop_back();
+    if (t.node < 0 || std::size_t(t.node) >= tree.nodes.size() || t.depth > kMaxDepth) continue;  // malformed: the judge says why
+    const KdNode& n = tree.nodes[std::size_t(t.node)];
+    if (n.axis == kLeaf || n.axis < 0 || n.axis > 2) {
+      out.push_back({t.node, t.cell});
+      continue;
+    }
+    Aabb below = t.cell, above = t.cell;
+    below.max[n.axis] = above.min[n.axis] = n.split;
+    todo.push_back({n.index, above, t.depth + 1});
+    todo.push_back({t.node + 1, below, t.depth + 1});
+  }
+  return out;
+}
+
+// Does the closed segment meet the closed box? Slab by slab, as the handout clips.
+bool segment_meets(const Aabb& box, const Segment& s) {
+  double t0 = 0, t1 = 1;
+  const Vec3 d = s.b - s.a;
+  for (int i = 0; i < 3; ++i) {
+    if (d[i] == 0) {
+      if (s.a[i] < box.min[i] || s.a[i] > box.max[i]) return false;
+      continue;
+    }
+    double enter = (box.min[i] - s.a[i]) / d[i], leave = (box.max[i] - s.a[i]) / d[i];
+    if (enter > leave) std::swap(enter, leave);
+    t0 = std::max(t0, enter), t1 = std::min(t1, leave);
+  }
+  return t0 <= t1;
+}
+
+void draw_box(Renderer& r, const Aabb& b, Color c, float width) {
+  for (int axis = 0; axis < 3; ++axis) {
+    const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+    for (int k = 0; k < 4; ++k) {
+      Vec3 p = b.min, q;
+      if (k & 1) p[u] = b.max[u];
+      if (k & 2) p[v] = b.max[v];
+      q = p;
+      q[axis] = b.max[axis];
+      r.line(p, q, c, width);
+    }
+  }
+}
+
+// A sphere as three great circles.
+void draw_sphere(Renderer& r, const Sphere& s, Color c, float width) {
+  constexpr int kSegments = 32;
+  for (int axis = 0; axis < 3; ++axis) {
+    const Vec3 u = Vec3::Unit((axis + 1) % 3), v = Vec3::Unit((axis + 2) % 3);
+    for (int k = 0; k < kSegments; ++k) {
+      const double a0 = 2 * M_PI * k / kSegments, a1 = 2 * M_PI * (k + 1) / kSegments;
+      r.line(s.center + s.radius * (std::cos(a0) * u + std::sin(a0) * v), s.center + s.radius * (std::cos(a1) * u + std::sin(a1) * v),
+             c, width);
+    }
+  }
+}
+
+std::string yes(bool b, const char* y = "yes", const char* n = "no") { return b ? y : n; }
+
+class SpatialTreesScene : public Scene {
+ public:
+  explicit SpatialTreesScene(const Setup& setup);
+  void update() override;
+  void draw(Frame& frame) override;
+  bool inputs() override;
+  std::vector<Handle> handles() override;
+  std::string token() const override;
+
+ private:
+  void frame_inputs();
+  void update_kd();
+  void update_bsp();
+  void update_spheres();
+  void draw_kd(Frame& f);
+  void draw_bsp(Frame& f);
+  void draw_spheres(Frame& f);
+
+  Mode mode_ = Mode::kd;
+  Mesh mesh_;
+  Segment segment_{{-0.2, 0.3, 0.8}, {1.2, 0.7, 0.3}};
+  Vec3 point_ = Vec3::Zero();
+  std::vector<Sphere> spheres_;
+  int tree_seed_ = 0;
+  std::optional<KdTree> given_tree_;  // a replayed example's hand-made tree: none here, the checker's otherwise
+
+  // Step 1 and 2: the tree the queries ran on, and the answers.
+  Attempt<KdTree> built_;
+  KdTree tree_;
+  bool tree_is_students_ = false;
+  std::vector<LeafBox> leaves_;
+  Attempt<KdHit> first_, any_;
+  Attempt<KdHits> all_;
+  std::vector<oracle::Crossing> exact_hits_;
+  // Steps 3 and 4.
+  Attempt<BspTree> bsp_;
+  Attempt<Where> where_;
+  Attempt<std::vector<int>> order_;
+  int exact_where_ = 0;
+  // Step 5.
+  Attempt<SpherePairs> pairs_;
+  std::vector<std::array<int, 2>> exact_pairs_;
+  Verdict verdict_[8] = {};
+};
+
+// ---- setup ---------------------------------------------------------------------------
+
+SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
+  const Preset* preset = find_preset(kPresets, setup.preset);
+  if (preset) yaw = preset->yaw, pitch = preset->pitch, focus = preset->focus;
+  if (setup.token.empty() && (!preset || !preset->token)) {
+    const std::string name = preset ? preset->name : "torus";
+    if (name == "handout") {  // A leans across x = 4, B stands in x = 5
+      mesh_.vertices = {{8, -1, 0}, {8, 3, 0}, {2, 1, 3}, {5, 0, 0}, {5, 3, 0}, {5, 0, 3}};
+      mesh_.triangles = {{0, 1, 2}, {3, 4, 5}};
+      segment_ = {{0, 1, 1}, {8, 1, 1}};
+    } else if (name == "terrain") {
+      mesh_ = gen::terrain_mesh(20000, 3);
+      segment_ = {{0.05, 0.1, 0.3}, {0.95, 0.85, -0.2}};
+    } else if (name == "bsp") {
+      mode_ = Mode::bsp;
+      mesh_ = gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Vec3::Zero(), 2.0);
+      point_ = {3, 3, 1};
+    } else if (name == "spheres") {
+      mode_ = Mode::spheres;
+      spheres_ = gen::spread_spheres(60, 10, 0.3, 1.2, 5);
+    } else {
+      mesh_ = gen::torus_mesh(2048, Vec3(0.5, 0.5, 0.5), 0.35, 0.12);
+    }
+    frame_inputs();
+    return;
+  }
+  const ParsedToken token = parse_token(starting_token(setup, kPresets, ""));
+  std::string q = token.query;
+  if (q.rfind("robust.", 0) == 0) q = q.substr(7);
+  if (q == "first_hit" || q == "any_hit" || q == "all_hits" || q == "segment_queries") {
+    const auto in = input_from_token<TreeQuery>(token);
+    mesh_ = in.mesh, segment_ = in.segment, tree_seed_ = in.tree;
+  } else if (q == "build_kd_tree" || q == "build_kd_tree.lattice") {
+    mesh_ = input_from_token<Mesh>(token);
+    if (mesh_.size() > 0) segment_ = {mesh_.vertices[0] - Vec3(1, 1, 1), mesh_.vertices.back() + Vec3(1, 1, 1)};
+  } else if (q == "build_bsp") {
+    mode_ = Mode::bsp;
+    mesh_ = input_from_token<Mesh>(token);
+    if (!mesh_.vertices.empty()) point_ = mesh_.vertices[0];
+  } else if (q == "classify" || q == "back_to_front") {
+    mode_ = Mode::bsp;
+    const auto in = input_from_token<PointQuery>(token);
+    mesh_ = in.mesh, point_ = in.point;
+  } else if (q == "overlapping_pairs") {
+    mode_ = Mode::spheres;
+    spheres_ = input_from_token<SphereSet>(token).spheres;
+  } else {
+    throw unknown_query("06", token.query, "build_kd_tree, first_hit, any_hit, all_hits, build_bsp, classify, back_to_front, "
+                                           "overlapping_pairs (and their robust. forms)");
+  }
+  frame_inputs();
+}
+
+void SpatialTreesScene::frame_inputs() {
+  const char* names[] = {"k-d tree and segment", "BSP tree and point", "spheres"};
+  mode = names[int(mode_)];
+  Eigen::AlignedBox3d box;
+  for (const Vec3& v : mesh_.vertices) box.extend(v);
+  if (mode_ == Mode::kd) box.extend(segment_.a), box.extend(segment_.b);
+  if (mode_ == Mode::bsp) box.extend(point_);
+  for (const Sphere& s : spheres_) box.extend(s.center + Vec3::Constant(s.radius)), box.extend(s.center - Vec3::Constant(s.radius));
+  if (box.isEmpty()) box.extend(Vec3::Zero()), box.extend(Vec3::Ones());
+  center = box.center();
+  radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
+}
+
+// ---- update --------------------------------------------------------------------------
+
+void SpatialTreesScene::update() {
+  steps.clear();
+  if (mode_ == Mode::kd) update_kd();
+  if (mode_ == Mode::bsp) update_bsp();
+  if (mode_ == Mode::spheres) update_spheres();
+}
+
+void SpatialTreesScene::update_kd() {
+  // Step 1: the student's tree, judged against the exact rule (only on small meshes: the
+  // judge tests every triangle against every leaf).
+  built_ = attempt([&] { return build_kd_tree(mesh_); });
+  Step s1 = judged("L06S1", "build_kd_tree", built_, [&](const KdTree& got) {
+    return mesh_.size() <= 5000 ? judge::kd_tree(mesh_, got) : check::pass();
+  });
+  if (built_) {
+    s1.rows = {{"nodes", std::to_string(built_->nodes.size()), ""},
+               {"items (counts and indices)", std::to_string(built_->items.size()), ""},
+               {"leaves", std::to_string(leaves_of(*built_).size()), ""}};
+    if (mesh_.size() > 5000) s1.note = "a big mesh: the tree's rule is checked only up to 5,000 triangles";
+  }
+  verdict_[1] = s1.verdict;
+  steps.push_back(s1);
+  tree_is_students_ = built_ && s1.verdict != Verdict::disagree;
+  tree_ = tree_is_students_ ? *built_ : judge::checker_tree(mesh_, tree_seed_);
+  leaves_ = leaves_of(tree_);
+
+  // Step 2: the three queries, with the given test's calls counted.
+  const TreeQuery in{mesh_, segment_, tree_seed_};
+  std::uint64_t calls[3] = {};
+  const auto counted = [&](int k, auto&& call) {
+    const std::uint64_t before = given::segment_triangle_calls();
+    auto a = attempt(call);
+    calls[k] = given::segment_triangle_calls() - before;
+    return a;
+  };
+  first_ = counted(0, [&] { return first_hit(tree_, segment_); });
+  any_ = counted(1, [&] { return any_hit(tree_, segment_); });
+  all_ = counted(2, [&] { return all_hits(tree_, segment_); });
+  exact_hits_ = oracle::segment_mesh_crossings(segment_, mesh_);
+  Step s2 = judged("L06S2", std::string("first_hit, any_hit, all_hits on ") + (tree_is_students_ ? "your tree" : "the checker's tree"),
+                   first_, [&](const KdHit& got) { return judge::first_hit(in, tree_, got, calls[0]); });
+  for (const Step& other : {judged("", "", any_, [&](const KdHit& got) { return judge::any_hit(in, tree_, got, calls[1]); }),
+                            judged("", "", all_, [&](const KdHits& got) { return judge::all_hits(in, tree_, got, calls[2]); })}) {
+    s2.verdict = worse(s2.verdict, other.verdict);
+    if (s2.note.empty()) s2.note = other.note;
+  }
+  int met = 0;
+  for (const LeafBox& l : leaves_) met += segment_meets(l.cell, segment_);
+  const auto hit_text = [](const Attempt<KdHit>& h) {
+    return h ? (h->hit ? std::to_string(h->triangle) + " at t = " + num(h->t) : std::string("none")) : std::string();
+  };
+  s2.rows = {{"first hit", hit_text(first_), exact_hits_.empty() ? "none" : std::to_string(exact_hits_[0].triangle) + " at t = " + num(exact_hits_[0].t)},
+             {"any hit", any_ ? yes(any_->hit) : "", yes(!exact_hits_.empty())},
+             {"all hits", all_ ? std::to_string(all_->hits.size()) : "", std::to_string(exact_hits_.size())},
+             {"tests: first / any / all", first_ && any_ && all_ ? std::to_string(first_->tests) + " / " + std::to_string(any_->tests) + " / " +
+                                                                       std::to_string(all_->tests)
+                                                                 : "",
+              "brute force: " + std::to_string(mesh_.size())},
+             {"leaves the segment meets", std::to_string(met), "of " + std::to_string(leaves_.size())}};
+  if (!tree_is_students_ && s2.note.empty()) s2.note = "step 1 is not done: the queries run on the checker's tree";
+  verdict_[2] = s2.verdict;
+  steps.push_back(s2);
+}
+
+void SpatialTreesScene::update_bsp() {
+  bsp_ = attempt([&] { return build_bsp(mesh_); });
+  const PointQuery in{mesh_, point_};
+  exact_where_ = oracle::point_in_solid(point_, mesh_);
+  const Where exact = exact_where_ > 0 ? Where::inside : (exact_where_ < 0 ? Where::outside : Where::on);
+  Step s3 = judged("L06S3", "build_bsp, classify", bsp_, [&](const BspTree& got) { return judge::bsp_tree(mesh_, got); });
+  if (bsp_) {
+    where_ = attempt([&] { return classify(*bsp_, point_); });
+    const Step c = judged("", "", where_, [&](Where got) { return judge::classify(in, got); });
+    s3.verdict = worse(s3.verdict, c.verdict);
+    if (s3.note.empty()) s3.note = c.note;
+    s3.rows = {{"nodes, pieces", std::to_string(bsp_->nodes.size()) + ", " + std::to_string(bsp_->pieces.size()), ""},
+               {"the point is", where_ ? describe(*where_) : "", describe(exact)}};
+  }
+  verdict_[3] = s3.verdict;
+  steps.push_back(s3);
+  if (!bsp_ || s3.verdict == Verdict::disagree || verdict_[3] == Verdict::stub) {
+    steps.push_back({"L06S4", "back_to_front", Verdict::none, {}, "needs a valid BSP tree (step 3) first"});
+    verdict_[4] = Verdict::none;
+    order_ = {};
+    return;
+  }
+  order_ = attempt([&] { return back_to_front(*bsp_, point_); });
+  Step s4 = judged("L06S4", "back_to_front from the point as eye", order_,
+                   [&](const std::vector<int>& got) { return judge::back_to_front(in, *bsp_, got); });
+  if (order_) s4.rows = {{"pieces listed", std::to_string(order_->size()), std::to_string(bsp_->pieces.size())}};
+  verdict_[4] = s4.verdict;
+  steps.push_back(s4);
+}
+
+void SpatialTreesScene::update_spheres() {
+  pairs_ = attempt([&] { return overlapping_pairs(spheres_); });
+  exact_pairs_ = oracle::meeting_pairs(spheres_);
+  const SphereSet in{spheres_};
+  Step s5 = judged("L06S5", "overlapping_pairs", pairs_, [&](const SpherePairs& got) { return judge::overlapping_pairs(in, got); });
+  const long long n = (long long)spheres_.size();
+  s5.rows = {{"pairs", pairs_ ? std::to_string(pairs_->pairs.size()) : "", std::to_string(exact_pairs_.size())},
+             {"pair tests", pairs_ ? std::to_string(pairs_->tests) : "", "brute force: " + std::to_string(n * (n - 1) / 2)}};
+  verdict_[5] = s5.verdict;
+  steps.push_back(s5);
+}
+
+// ---- draw ----------------------------------------------------------------------------
+
+void SpatialTreesScene::draw_kd(Frame& f) {
+  Renderer& r = f.render;
+  const bool edges = mesh_.size() <= 20000;
+  for (std::size_t i = 0; i < mesh_.size(); ++i) {
+    const Triangle t = mesh_.triangle(i);
+    r.triangle(t.v0, t.v1, t.v2, palette::surface.with_alpha(0.55f));
+    if (edges) r.line(t.v0, t.v1, {0.30f, 0.40f, 0.55f}, 1), r.line(t.v1, t.v2, {0.30f, 0.40f, 0.55f}, 1), r.line(t.v2, t.v0, {0.30f, 0.40f, 0.55f}, 1);
+  }
+  // The leaves the segment meets: the cells a front-to-back walk may visit.
+  const Color cells = f.shows(1) || f.shows(2) ? colour(tree_is_students_ ? verdict_[1] : Verdict::none) : palette::muted;
+  for (const LeafBox& l : leaves_)
+    if (segment_meets(l.cell, segment_)) draw_box(r, l.cell, cells.with_alpha(0.8f), 1.2f);
+  draw_box(r, tree_.bounds, palette::muted, 1);
+  if (f.shows(2)) {
+    const Color c = colour(verdict_[2]);
+    if (all_)
+      for (const KdHit& h : all_->hits) r.point(h.point, c, 4);
+    if (first_ && first_->hit) {
+      if (first_->triangle >= 0 && std::size_t(first_->triangle) < mesh_.size()) {
+        const Triangle t = mesh_.triangle(std::size_t(first_->triangle));
+        r.triangle(t.v0, t.v1, t.v2, c.with_alpha(0.7f));
+      }
+      r.ring(first_->point, c, 14, 2.5f);
+      r.label(first_->point, "first hit  t = " + num(first_->t) + "  (" + std::to_string(first_->tests) + " tests)", c, 18, -16);
+    }
+    if (f.show_exact) {
+      for (const oracle::Crossing& h : exact_hits_) r.ring(segment_.a + h.t * (segment_.b - segment_.a), palette::exact, 9);
+      if (!exact_hits_.empty()) {
+        const Triangle t = mesh_.triangle(std::size_t(exact_hits_[0].triangle));
+        for (int i = 0; i < 3; ++i) r.line(t[i], t[(i + 1) % 3], palette::exact, 2);
+      }
+    }
+  }
+  r.line(segment_.a, segment_.b, palette::input, 2.5f);
+  r.point(segment_.a, palette::input, 6), r.point(segment_.b, palette::input, 6);
+  r.label(segment_.a, "a", palette::input), r.label(segment_.b, "b", palette::input);
+}
+
+void SpatialTreesScene::draw_bsp(Frame& f) {
+  Renderer& r = f.render;
+  if (order_ && bsp_ && f.shows(4)) {  // pieces shaded by their place in the painter's order: dark first, light last
+    const std::size_t n = order_->size();
+    for (std::size_t k = 0; k < n; ++k) {
+      const int piece = (*order_)[k];
+      if (piece < 0 || std::size_t(piece) >= bsp_->pieces.size()) continue;
+      const float w = n > 1 ? float(k) / float(n - 1) : 1.0f;
+      const Triangle& t = bsp_->pieces[std::size_t(piece)].triangle;
+      r.triangle(t.v0, t.v1, t.v2, Color{0.20f + 0.6f * w, 0.30f + 0.5f * w, 0.55f + 0.4f * w, 0.75f});
+      r.line(t.v0, t.v1, palette::muted, 1), r.line(t.v1, t.v2, palette::muted, 1), r.line(t.v2, t.v0, palette::muted, 1);
+    }
+  } else {
+    for (std::size_t i = 0; i < mesh_.size(); ++i) {
+      const Triangle t = mesh_.triangle(i);
+      r.triangle(t.v0, t.v1, t.v2, palette::surface.with_alpha(0.45f));
+      r.line(t.v0, t.v1, palette::muted, 1), r.line(t.v1, t.v2, palette::muted, 1), r.line(t.v2, t.v0, palette::muted, 1);
+    }
+  }
+  const Color c = colour(verdict_[3]);
+  r.point(point_, palette::input, 6);
+  if (where_) r.label(point_, "p: " + describe(*where_), c, 12, -12);
+  if (f.show_exact) {
+    r.ring(point_, palette::exact, 10);
+    r.label(point_, "exact: " + std::string(exact_where_ > 0 ? "inside" : exact_where_ < 0 ? "outside" : "on"), palette::exact, 12, 8);
+  }
+}
+
+void SpatialTreesScene::draw_spheres(Frame& f) {
+  Renderer& r = f.render;
+  std::vector<char> paired(spheres_.size(), 0);
+  const Color c = colour(verdict_[5]);
+  if (pairs_)
+    for (const auto& p : pairs_->pairs)
+      if (p[0] >= 0 && p[1] >= 0 && std::size_t(p[0]) < spheres_.size() && std::size_t(p[1]) < spheres_.size()) {
+        paired[std::size_t(p[0])] = paired[std::size_t(p[1])] = 1;
+        r.line(spheres_[std::size_t(p[0])].center, spheres_[std::size_t(p[1])].center, c, 3);
+      }
+  for (std::size_t i = 0; i < spheres_.size(); ++i) draw_sphere(r, spheres_[i], paired[i] ? c : palette::surface, paired[i] ? 1.8f : 1.0f);
+  if (f.show_exact)
+    for (const auto& p : exact_pairs_) r.dashed(spheres_[std::size_t(p[0])].center, spheres_[std::size_t(p[1])].center, palette::exact, 1.5f);
+}
+
+void SpatialTreesScene::draw(Frame& f) {
+  Renderer& r = f.render;
+  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
+  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
+  r.axes();
+  if (mode_ == Mode::kd) draw_kd(f);
+  if (mode_ == Mode::bsp) draw_bsp(f);
+  if (mode_ == Mode::spheres) draw_spheres(f);
+}
+
+bool SpatialTreesScene::inputs() {
+  bool changed = false;
+  if (mode_ == Mode::kd) {
+    changed |= edit("a", segment_.a, 0.01f) | edit("b", segment_.b, 0.01f);
+    ImGui::TextDisabled("mesh: %zu triangles", mesh_.size());
+  }
+  if (mode_ == Mode::bsp) changed |= edit("point (and eye)", point_);
+  if (mode_ == Mode::spheres) ImGui::TextDisabled("%zu spheres", spheres_.size());
+  return changed;
+}
+
+std::vector<Handle> SpatialTreesScene::handles() {
+  if (mode_ == Mode::kd) return {{&segment_.a, "a"}, {&segment_.b, "b"}};
+  if (mode_ == Mode::bsp) return {{&point_, "p"}};
+  std::vector<Handle> h;
+  for (std::size_t i = 0; i < spheres_.size() && i < 64; ++i) h.push_back({&spheres_[i].center, "sphere " + std::to_string(i)});
+  return h;
+}
+
+std::string SpatialTreesScene::token() const {
+  switch (mode_) {
+    case Mode::kd: return replay_token("first_hit", TreeQuery{mesh_, segment_, tree_seed_});
+    case Mode::bsp: return replay_token("classify", PointQuery{mesh_, point_});
+    case Mode::spheres: break;
+  }
+  return replay_token("overlapping_pairs", SphereSet{spheres_});
+}
+
+}  // namespace
+
+std::unique_ptr<Scene> make_spatial_trees(const Setup& setup) { return std::make_unique<SpatialTreesScene>(setup); }
+const std::vector<Preset>& spatial_trees_presets() { return kPresets; }
+
+}  // namespace viewer
