@@ -49,5 +49,8 @@ CATCH_TRANSLATE_EXCEPTION(const labkit::NotImplemented& e) { return e.what(); }
 
 int main(int argc, char* argv[]) {
   labkit::check::report::install_signal_handlers();
-  return Catch::Session().run(argc, argv);
+  labkit::check::report::read_settings_first();
+  const int status = Catch::Session().run(argc, argv);
+  labkit::check::report::session_finished();
+  return status;
 }

@@ -1,0 +1,132 @@
+#include "sandbox.h"
+
+#include <bitset>
+#include <csignal>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace runner {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kFirstUid = 61000;
+constexpr int kUids = 64;
+constexpr long kProcesses = 256;  // per confined run (its own uid)
+
+std::mutex uid_mutex;
+std::bitset<kUids> uids_in_use;
+
+// Ends every process left under `uid` (a daemon that escaped its process group): a
+// process of that uid signals all the others with kill(-1).
+void kill_all_of(int uid) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (setresgid(uid, uid, uid) == 0 && setresuid(uid, uid, uid) == 0) kill(-1, SIGKILL);
+    _exit(0);
+  }
+  if (pid > 0) waitpid(pid, nullptr, 0);
+}
+
+std::shared_ptr<void> lease_uid(int* uid) {
+  std::lock_guard<std::mutex> lock(uid_mutex);
+  for (int i = 0; i < kUids; ++i)
+    if (!uids_in_use[i]) {
+      uids_in_use[i] = true;
+      *uid = kFirstUid + i;
+      return std::shared_ptr<void>(nullptr, [i](void*) {
+        kill_all_of(kFirstUid + i);
+        std::lock_guard<std::mutex> lock(uid_mutex);
+        uids_in_use[i] = false;
+      });
+    }
+  throw std::runtime_error("more than 64 confined runs at once");
+}
+
+void chown_all(const fs::path& root, int uid) {
+  std::error_code ignored;
+  if (chown(root.c_str(), uid, uid) != 0) return;
+  for (auto it = fs::recursive_directory_iterator(root, ignored); it != fs::recursive_directory_iterator(); it.increment(ignored))
+    if (lchown(it->path().c_str(), uid, uid) != 0) continue;
+}
+
+// The system a compiler and a test binary need, read-only: /usr and /etc, and the
+// top-level links or folders of a merged-/usr layout.
+void add_system(std::vector<std::string>& args) {
+  for (const char* path : {"/usr", "/etc", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
+    std::error_code e;
+    const fs::file_status s = fs::symlink_status(path, e);
+    if (e || !fs::exists(s)) continue;
+    if (fs::is_symlink(s)) args.insert(args.end(), {"--symlink", fs::read_symlink(path).string(), path});
+    else args.insert(args.end(), {"--ro-bind", path, path});
+  }
+}
+
+std::vector<std::string> bubblewrap(const std::vector<std::string>& argv, const std::string& writable,
+                                    const std::vector<std::string>& readable) {
+  std::vector<std::string> args = {"bwrap", "--unshare-all", "--die-with-parent"};
+  add_system(args);
+  args.insert(args.end(), {"--dev", "/dev", "--proc", "/proc", "--tmpfs", "/tmp"});
+  for (const std::string& path : readable)
+    if (fs::exists(path) && path.rfind("/usr/", 0) != 0) args.insert(args.end(), {"--ro-bind", path, path});
+  if (!writable.empty()) args.insert(args.end(), {"--bind", writable, writable, "--chdir", writable});
+  args.insert(args.end(), {"--setenv", "HOME", writable.empty() ? "/tmp" : writable, "--setenv", "TMPDIR", "/tmp", "--"});
+  args.insert(args.end(), argv.begin(), argv.end());
+  return args;
+}
+
+}  // namespace
+
+Sandbox Sandbox::make(const std::string& mode) {
+  Sandbox s;
+  s.drop_uid_ = geteuid() == 0;
+  if (mode == "none") {
+    s.why_ = "turned off (--sandbox none)";
+    return s;
+  }
+  // Probe: does bubblewrap run here, under the uid confined runs will have?
+  s.kind_ = Kind::bubblewrap;
+  Limits limits;
+  limits.seconds = 20;
+  const fs::path probe = fs::temp_directory_path() / ("labkit-probe." + std::to_string(getpid()));
+  fs::create_directories(probe);
+  const Confined c = s.confine({"/bin/sh", "-c", "echo probe > written"},
+                               probe.string(), {}, limits);
+  const Run r = run(c.argv, {}, c.limits, probe.string());
+  const bool works = r.ok() && fs::exists(probe / "written");
+  fs::remove_all(probe);
+  if (works) return s;
+  s.kind_ = Kind::none;
+  s.why_ = r.output.empty() ? "bubblewrap does not run here" : "bubblewrap does not run here: " + r.output.substr(0, 200);
+  while (!s.why_.empty() && (s.why_.back() == '\n' || s.why_.back() == ' ')) s.why_.pop_back();
+  if (mode == "bubblewrap") throw std::runtime_error(s.why_ + " (install bubblewrap, or use --sandbox none)");
+  return s;
+}
+
+std::string Sandbox::description() const {
+  std::string uid = drop_uid_ ? ", each run under its own unprivileged uid" : "";
+  if (kind_ == Kind::bubblewrap)
+    return "bubblewrap: no network, read-only system, only its own scratch folder writable" + uid;
+  return "none (" + why_ + "): time, memory, output and file-size limits only" + uid;
+}
+
+Confined Sandbox::confine(const std::vector<std::string>& argv, const std::string& writable,
+                          const std::vector<std::string>& readable, Limits limits) const {
+  Confined c;
+  if (drop_uid_) {
+    int uid = -1;
+    c.lease = lease_uid(&uid);
+    limits.uid = limits.gid = uid;
+    limits.processes = kProcesses;
+    if (!writable.empty()) chown_all(writable, uid);
+  }
+  c.limits = limits;
+  c.argv = kind_ == Kind::bubblewrap ? bubblewrap(argv, writable, readable) : argv;
+  return c;
+}
+
+}  // namespace runner
