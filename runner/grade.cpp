@@ -196,6 +196,7 @@ void write_results(const SubmissionGrade& g, const fs::path& folder, const Conte
   write_file(folder / "results.json", gradescope_results(g, c.run).dump(2) + "\n");
   write_file(folder / "junit.xml", junit_xml(g));
   write_file(folder / "report.txt", table(g, c.run));
+  write_file(folder / "steps.tsv", steps_tsv(g));
 }
 
 }  // namespace
@@ -206,7 +207,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
     return 2;
   }
   const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
-  Context c{paths, options, {}, {}, Sandbox::make(options.sandbox), {}, {}};
+  Context c{paths, options, {}, {}, Sandbox::make(options.sandbox, {paths.source + "/common", paths.build}), {}, {}};
   for (const Lab& lab : manifest.labs) {
     const bool wanted = options.labs.empty() ||
                         std::find_if(options.labs.begin(), options.labs.end(), [&](const std::string& id) {
@@ -272,7 +273,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
     std::cout << "\n" << term::bold("Class") << ": " << grades.size() << " submissions graded in " << points(seconds)
               << " s; " << (fs::path(options.out) / "class.csv").string() << "\n";
   } else {
-    std::cout << "\nResults: " << (fs::path(options.out) / "results.json").string() << ", junit.xml, report.txt\n";
+    std::cout << "\nResults: " << (fs::path(options.out) / "results.json").string() << ", junit.xml, report.txt, steps.tsv\n";
   }
   return 0;
 }

@@ -7,8 +7,8 @@
 // grading/manifest.json; a step marked "partial" earns its points in proportion to the
 // cases it passes (ambiguous cases count as passed).
 //
-// Results: OUT/results.json (Gradescope), OUT/junit.xml and OUT/report.txt for one
-// submission; OUT/<name>/... for each of several, and OUT/class.csv.
+// Results: OUT/results.json (Gradescope), OUT/junit.xml, OUT/report.txt (the table) and
+// OUT/steps.tsv for one submission; OUT/<name>/... for each of several, and OUT/class.csv.
 #pragma once
 
 #include "check.h"

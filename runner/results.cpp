@@ -72,7 +72,7 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
         << "\n";
     for (const StepGrade& g : l.steps)
       out << "    " << pad(std::to_string(g.step->number), 3) << pad(g.step->tag, 7) << pad(g.step->title, 44)
-          << pad(status_word(g.status), 20) << points(g.score) << " / " << points(g.step->points) << "\n";
+          << pad(l.state == LabGrade::State::graded ? status_word(g.status) : lab_state(l), 20) << points(g.score) << " / " << points(g.step->points) << "\n";
   }
   out << "\n  " << pad("Total", 76) << points(s.score) << " / " << points(s.max_score) << "   (" << seconds_text(s.seconds)
       << " s)\n";
@@ -156,6 +156,16 @@ std::string junit_xml(const SubmissionGrade& s) {
       << seconds_text(s.seconds) << "\">\n"
       << suites.str() << "</testsuites>\n";
   return out.str();
+}
+
+std::string steps_tsv(const SubmissionGrade& s) {
+  std::string out = "lab\tstep\ttag\tstatus\tscore\tmax\n";
+  for (const LabGrade& l : s.labs)
+    for (const StepGrade& g : l.steps)
+      out += l.lab->id + "\t" + std::to_string(g.step->number) + "\t" + g.step->tag + "\t" +
+             (l.state == LabGrade::State::graded ? status_word(g.status) : lab_state(l)) + "\t" + points(g.score) + "\t" +
+             points(g.step->points) + "\n";
+  return out;
 }
 
 std::string class_csv(const std::vector<SubmissionGrade>& all) {

@@ -31,6 +31,9 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
 // <failure> for a step that failed and <error> for one that crashed, timed out, ...
 std::string junit_xml(const SubmissionGrade& s);
 
+// One line per step, tab-separated, for scripts: lab, step, tag, status, score, max.
+std::string steps_tsv(const SubmissionGrade& s);
+
 // The class: one row per submission, one column per lab, then the total and the maximum.
 std::string class_csv(const std::vector<SubmissionGrade>& all);
 

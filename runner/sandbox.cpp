@@ -81,7 +81,7 @@ std::vector<std::string> bubblewrap(const std::vector<std::string>& argv, const 
 
 }  // namespace
 
-Sandbox Sandbox::make(const std::string& mode) {
+Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& needed) {
   Sandbox s;
   s.drop_uid_ = geteuid() == 0;
   if (mode == "none") {
@@ -94,14 +94,15 @@ Sandbox Sandbox::make(const std::string& mode) {
   limits.seconds = 20;
   const fs::path probe = fs::temp_directory_path() / ("labkit-probe." + std::to_string(getpid()));
   fs::create_directories(probe);
-  const Confined c = s.confine({"/bin/sh", "-c", "echo probe > written"},
-                               probe.string(), {}, limits);
+  const Confined c = s.confine({"/bin/sh", "-c", "echo probe > written"}, probe.string(), needed, limits);
   const Run r = run(c.argv, {}, c.limits, probe.string());
   const bool works = r.ok() && fs::exists(probe / "written");
   fs::remove_all(probe);
   if (works) return s;
   s.kind_ = Kind::none;
   s.why_ = r.output.empty() ? "bubblewrap does not run here" : "bubblewrap does not run here: " + r.output.substr(0, 200);
+  if (r.output.find("Permission denied") != std::string::npos && s.drop_uid_)
+    s.why_ += " (the kit's folders must be readable by other users: chmod o+rx on them and their parents)";
   while (!s.why_.empty() && (s.why_.back() == '\n' || s.why_.back() == ' ')) s.why_.pop_back();
   if (mode == "bubblewrap") throw std::runtime_error(s.why_ + " (install bubblewrap, or use --sandbox none)");
   return s;
@@ -112,6 +113,13 @@ std::string Sandbox::description() const {
   if (kind_ == Kind::bubblewrap)
     return "bubblewrap: no network, read-only system, only its own scratch folder writable" + uid;
   return "none (" + why_ + "): time, memory, output and file-size limits only" + uid;
+}
+
+void Sandbox::interpret(Run& run) const {
+  if (kind_ == Kind::bubblewrap && run.signal == 0 && run.exit_code > 128 && run.exit_code < 128 + 65) {
+    run.signal = run.exit_code - 128;
+    run.exit_code = -1;
+  }
 }
 
 Confined Sandbox::confine(const std::vector<std::string>& argv, const std::string& writable,

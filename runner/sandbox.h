@@ -36,8 +36,8 @@ class Sandbox {
   enum class Kind { bubblewrap, none };
 
   // mode: "auto" (bubblewrap when it works, else none), "bubblewrap" (throws when it
-  // cannot run here), "none".
-  static Sandbox make(const std::string& mode);
+  // cannot run here), "none". `needed`: folders confined runs must be able to see.
+  static Sandbox make(const std::string& mode, const std::vector<std::string>& needed);
 
   Kind kind() const { return kind_; }
   // One line for the instructor: what this run is protected by.
@@ -47,6 +47,9 @@ class Sandbox {
   // also seeing `readable` (files or folders), under `limits`.
   Confined confine(const std::vector<std::string>& argv, const std::string& writable,
                    const std::vector<std::string>& readable, Limits limits) const;
+
+  // bubblewrap reports a child killed by signal N as exit status 128 + N: turn it back.
+  void interpret(Run& run) const;
 
  private:
   Kind kind_ = Kind::none;

@@ -147,6 +147,7 @@ StepResult run_step(const std::string& binary, const Lab& lab, const Step& step,
     const Confined confined =
         options.sandbox->confine({binary, filter}, scratch, {fs::path(binary).parent_path().string()}, options.limits);
     r.run = run(confined.argv, env, confined.limits, scratch);
+    options.sandbox->interpret(r.run);
   } else {
     r.run = run({binary, filter}, env, options.limits, scratch);
   }
