@@ -103,7 +103,21 @@ std::string feedback(const StepResult& r, const Lab& lab, const std::string& bin
   return out.str();
 }
 
-LabGrade grade_lab(const Lab& lab, const Submission& sub, const std::string& folder, int jobs, const Context& c) {
+// Calls work(0) ... work(count - 1), `jobs` at a time.
+template <class Work>
+void parallel_for(std::size_t count, int jobs, Work&& work) {
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t i; (i = next++) < count;) work(i);
+  };
+  std::vector<std::thread> pool;
+  for (int k = 0; k < std::max(1, std::min<int>(jobs, int(count))); ++k) pool.emplace_back(worker);
+  for (std::thread& t : pool) t.join();
+}
+
+// The lab's files found and built; `binary` is its test binary when it built.
+LabGrade build_one_lab(const Lab& lab, const Submission& sub, const std::string& folder, const Context& c,
+                       std::string* binary) {
   LabGrade g;
   g.lab = &lab;
   for (const Step& s : lab.steps) {
@@ -132,7 +146,11 @@ LabGrade grade_lab(const Lab& lab, const Submission& sub, const std::string& fol
     for (StepGrade& s : g.steps) s.feedback = "does not compile: every step of this lab scores 0 until it does.";
     return g;
   }
+  *binary = build.binary;
+  return g;
+}
 
+StepOptions graded_step_options(const std::string& folder, const Context& c) {
   StepOptions options;
   options.seed = c.options.seed;
   options.cases = c.options.cases;
@@ -144,21 +162,11 @@ LabGrade grade_lab(const Lab& lab, const Submission& sub, const std::string& fol
   options.limits.flood_bytes = std::size_t(16) << 20;
   options.sandbox = &c.sandbox;
   options.scratch_parent = folder;
-  std::vector<const Step*> steps;
-  for (const Step& s : lab.steps) steps.push_back(&s);
-  const std::vector<StepResult> results = run_steps(build.binary, lab, steps, options, jobs);
-  for (std::size_t i = 0; i < results.size(); ++i) {
-    StepGrade& s = g.steps[i];
-    s.status = results[i].status;
-    s.score = step_score(*s.step, results[i]);
-    s.ambiguous = results[i].ambiguous;
-    for (const QueryResult& q : results[i].queries) s.cases += q.cases;
-    s.feedback = redact(feedback(results[i], lab, build.binary, c), c.options.seed);
-    g.score += s.score;
-  }
-  return g;
+  return options;
 }
 
+// Every lab built at once, then every step of every lab, `jobs` processes at a time:
+// a lab's build or step never waits for another lab's.
 SubmissionGrade grade_one(const std::string& path, const std::string& name, const std::string& work, int jobs,
                           const Context& c) {
   const auto start = std::chrono::steady_clock::now();
@@ -171,15 +179,39 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
   g.error = sub.error;
   g.notes = sub.notes;
   if (sub.files.empty() && sub.error.empty()) g.notes.push_back("the submission holds none of the files a student edits");
-  for (const Lab* lab : c.labs) {
-    const std::string folder = work + "/lab" + lab->id;
-    fs::create_directories(folder);
-    fs::permissions(folder, fs::perms(0711));
-    g.labs.push_back(grade_lab(*lab, sub, folder, jobs, c));
-    g.score += g.labs.back().score;
-    g.max_score += g.labs.back().max_score;
+
+  const std::size_t n = c.labs.size();
+  std::vector<std::string> folders(n), binaries(n);
+  g.labs.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    folders[i] = work + "/lab" + c.labs[i]->id;
+    fs::create_directories(folders[i]);
+    fs::permissions(folders[i], fs::perms(0711));
+  }
+  parallel_for(n, jobs, [&](std::size_t i) { g.labs[i] = build_one_lab(*c.labs[i], sub, folders[i], c, &binaries[i]); });
+
+  std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (lab, step)
+  for (std::size_t i = 0; i < n; ++i)
+    if (!binaries[i].empty())
+      for (std::size_t k = 0; k < g.labs[i].steps.size(); ++k) tasks.push_back({i, k});
+  parallel_for(tasks.size(), jobs, [&](std::size_t t) {
+    const auto [i, k] = tasks[t];
+    const Lab& lab = *c.labs[i];
+    StepGrade& s = g.labs[i].steps[k];
+    const StepResult r = run_step(binaries[i], lab, *s.step, graded_step_options(folders[i], c));
+    s.status = r.status;
+    s.score = step_score(*s.step, r);
+    s.ambiguous = r.ambiguous;
+    for (const QueryResult& q : r.queries) s.cases += q.cases;
+    s.feedback = redact(feedback(r, lab, binaries[i], c), c.options.seed);
+  });
+
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const StepGrade& s : g.labs[i].steps) g.labs[i].score += s.score;
+    g.score += g.labs[i].score;
+    g.max_score += g.labs[i].max_score;
     std::error_code ignored;
-    fs::remove_all(folder, ignored);  // its test binary is 50 MB
+    fs::remove_all(folders[i], ignored);  // its test binary is 50 MB
   }
   g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return g;
@@ -249,21 +281,15 @@ int grade(const Paths& paths, const GradeOptions& options) {
   const int inner = std::max(1, jobs / outer);
 
   std::vector<SubmissionGrade> grades(options.submissions.size());
-  std::atomic<std::size_t> next{0};
   std::mutex print;
   const auto start = std::chrono::steady_clock::now();
-  const auto worker = [&] {
-    for (std::size_t i; (i = next++) < options.submissions.size();) {
-      grades[i] = grade_one(options.submissions[i], names[i], c.work + "/" + std::to_string(i), inner, c);
-      const fs::path folder = single ? fs::path(options.out) : fs::path(options.out) / names[i];
-      write_results(grades[i], folder, c);
-      std::lock_guard<std::mutex> lock(print);
-      std::cout << (i == 0 && single ? "" : "\n") << table(grades[i], c.run) << std::flush;
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int k = 0; k < outer; ++k) pool.emplace_back(worker);
-  for (std::thread& t : pool) t.join();
+  parallel_for(options.submissions.size(), outer, [&](std::size_t i) {
+    grades[i] = grade_one(options.submissions[i], names[i], c.work + "/" + std::to_string(i), inner, c);
+    const fs::path folder = single ? fs::path(options.out) : fs::path(options.out) / names[i];
+    write_results(grades[i], folder, c);
+    std::lock_guard<std::mutex> lock(print);
+    std::cout << (single ? "" : "\n") << table(grades[i], c.run) << std::flush;
+  });
   std::error_code ignored;
   fs::remove_all(c.work, ignored);
 

@@ -129,6 +129,18 @@ std::string audit(const std::vector<Symbol>& symbols, const Lab& lab, const std:
          ", or helpers of its own), and use only the lab's header and common/:\n" + problems;
 }
 
+// Constructors with a priority run before the kit's own (the harness reads its settings
+// at priority 101): a student file has no use for them.
+std::string audit_sections(const std::string& object) {
+  Limits limits;
+  limits.seconds = 60;
+  const std::string sections = run({"objdump", "-h", object}, {}, limits).output;
+  static const std::regex prioritised(R"(\.(init_array|ctors|preinit_array)\.[0-9]+)");
+  if (!std::regex_search(sections, prioritised)) return "";
+  return "The lab's file uses a constructor priority (__attribute__((constructor(N))) or init_priority): "
+         "its code would run before the kit's own.\n";
+}
+
 std::string strip(std::string text, const std::vector<std::string>& prefixes) {
   for (const std::string& prefix : prefixes)
     for (std::size_t at; !prefix.empty() && (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
@@ -265,7 +277,7 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
       if (b.errors.empty()) b.errors = strip(r.output.substr(0, 2000), noise);
       return b;
     }
-    const std::string problems = audit(symbols_of(object), lab, recipe.kit_symbols);
+    const std::string problems = audit(symbols_of(object), lab, recipe.kit_symbols) + audit_sections(object);
     if (!problems.empty()) {
       b.errors = problems;
       return b;

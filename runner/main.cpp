@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include <cstdlib>
+#include <cstring>
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -53,6 +54,12 @@ int main(int argc, char** argv) {
   report_command->add_option("directory", reports, "Where the reports are (default: build/reports)");
 
   CLI11_PARSE(app, argc, argv);
+  // A seed given on the command line is wiped from it: /proc/PID/cmdline is world-readable.
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "--seed" && i + 1 < argc) std::memset(argv[i + 1], 'x', std::strlen(argv[i + 1]));
+    if (arg.rfind("--seed=", 0) == 0) std::memset(argv[i] + 7, 'x', arg.size() - 7);
+  }
   try {
     if (check_command->parsed()) {
       if (const char* n = std::getenv("LABKIT_CASES"); n && check.cases == 0) check.cases = std::atoi(n);

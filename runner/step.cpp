@@ -136,7 +136,16 @@ StepResult run_step(const std::string& binary, const Lab& lab, const Step& step,
   const fs::path report = fs::path(scratch) / "report.json";
 
   Environment env = {{"LABKIT_REPORT", report.string()}};
-  if (!options.seed.empty()) env.push_back({"LABKIT_SEED", options.seed});
+  if (!options.seed.empty() && options.hide_seed) {
+    // A secret seed never goes on a command line or in the environment (which other
+    // processes, the sandbox's own included, could show): a file the harness deletes.
+    const fs::path seed_file = fs::path(scratch) / ".seed";
+    std::ofstream(seed_file) << options.seed;
+    fs::permissions(seed_file, fs::perms::owner_read | fs::perms::owner_write);
+    env.push_back({"LABKIT_SEED_FILE", seed_file.string()});
+  } else if (!options.seed.empty()) {
+    env.push_back({"LABKIT_SEED", options.seed});
+  }
   if (options.cases > 0) env.push_back({"LABKIT_CASES", std::to_string(options.cases)});
   if (!options.replay.empty()) env.push_back({"LABKIT_REPLAY", options.replay});
   if (options.hide_seed) env.push_back({"LABKIT_HIDE_SEED", "1"});

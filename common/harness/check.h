@@ -31,7 +31,8 @@
 namespace labkit::check {
 
 // Everything a run can be told, read once from the environment (the runner sets them):
-//   LABKIT_SEED    seed of the random cases (default: the public seed 1)
+//   LABKIT_SEED    seed of the random cases (default: the public seed 1); any text
+//   LABKIT_SEED_FILE  graded runs: a file holding the seed, deleted once read
 //   LABKIT_CASES   random cases per query (default 10000)
 //   LABKIT_REPLAY  a replay token: run that one case and nothing else
 //   LABKIT_REPORT  where to write the JSON report

@@ -5,6 +5,10 @@
 #   LABKIT_AUTOGRADER_ROOT  the folder standing for /autograder (the kit's tests set it)
 set -euo pipefail
 ROOT="${LABKIT_AUTOGRADER_ROOT:-/autograder}"
-# Only the grader (root) reads the seed; the code under test runs under another uid.
+# The code under test runs under unprivileged uids: they may read the kit (it is the
+# student release: no solutions), but only the grader (root) reads the seed.
+chmod o+x "$ROOT"
+chmod -R o+rX "$ROOT/source"
 chmod 600 "$ROOT/source/secret_seed"
 "$ROOT/source/labkit" prepare-grading
+chmod -R o+rX "$ROOT/source/build"

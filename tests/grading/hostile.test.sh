@@ -65,6 +65,25 @@ inject escape test_segment_triangle '  { static bool tried = false; if (!tried) 
     kill(-1, SIGKILL);
     if (escaped) std::abort(); } }'
 sed -i "s|KIT/|$kit/|g" "$subs/escape/$lab02"
+# Stealing the secret seed before the tests start: the environment, the seed file, this
+# process's and the sandbox's and the grader's command lines and environments. If it
+# finds the seed, segment_plane aborts (and this suite fails).
+inject steal_seed segment_plane '  if (stolen) std::abort();'
+{ printf '#include <cstdio>\n#include <cstdlib>\n#include <cstring>\n#include <string>\n#include <unistd.h>\nnamespace {\nbool seed_stolen() {\n'
+  printf '  const char* marker = "hostile suite secret";\n'
+  printf '  auto holds = [&](const char* path) { std::FILE* f = std::fopen(path, "rb"); if (!f) return false; std::string text; char b[4096]; std::size_t n;\n'
+  printf '    while ((n = std::fread(b, 1, sizeof b, f)) > 0) text.append(b, n); std::fclose(f); return text.find(marker) != std::string::npos; };\n'
+  printf '  if (const char* v = std::getenv("LABKIT_SEED")) if (std::strstr(v, marker)) return true;\n'
+  printf '  if (const char* v = std::getenv("LABKIT_SEED_FILE")) if (holds(v)) return true;\n'
+  printf '  for (const char* p : {"/proc/self/environ", "/proc/self/cmdline", "/proc/1/environ", "/proc/1/cmdline"}) if (holds(p)) return true;\n'
+  printf '  for (int pid : {int(getppid()), 2, 3}) for (const char* what : {"cmdline", "environ"}) {\n'
+  printf '    char path[64]; std::snprintf(path, sizeof path, "/proc/%%d/%%s", pid, what); if (holds(path)) return true; }\n'
+  printf '  return false;\n}\nconst bool stolen = seed_stolen();\n}  // namespace\n'
+  cat "$subs/steal_seed/$lab02"; } >"$work/stolen.cpp" && mv "$work/stolen.cpp" "$subs/steal_seed/$lab02"
+# Code that would run before the harness reads its settings.
+reference "$subs/early_constructor" &&
+  printf '#include <cstdlib>\nvolatile bool early;\n__attribute__((constructor(101))) static void first() { early = std::getenv("LABKIT_SEED_FILE"); }\n' \
+    >>"$subs/early_constructor/$lab02"
 # Extra files that try to replace the tests, a header, the harness, the build and the points.
 mkdir -p "$work/extra" && reference "$work/extra"
 mkdir -p "$work/extra/tests" "$work/extra/common/harness" "$work/extra/grading"
@@ -121,6 +140,8 @@ expect escape graded
 expect compile_error "does not compile"
 expect include_reference "does not compile"
 expect own_main "does not compile"
+expect early_constructor "does not compile"
+expect steal_seed graded
 expect symlink "not submitted"
 # A fault costs the steps whose tests reach the function it is in (the reference calls
 # some of its functions from others): point_in_triangle_barycentric is steps 3 and 7's,
@@ -154,6 +175,7 @@ grep -q "ran out of memory" "$out/allocate_50gb/report.txt" || fail "allocate_50
 grep -q "printed more than" "$out/print_100mb/report.txt" || fail "print_100mb: the report does not say it printed too much"
 grep -q "exit()" "$out/exit_0/report.txt" || fail "exit_0: the report does not mention exit()"
 grep -q "defines main()" "$out/own_main/report.txt" || fail "own_main: the report does not say it defines main()"
+grep -q "constructor priority" "$out/early_constructor/report.txt" || fail "early_constructor: the report does not say why"
 grep -q "No such file" "$out/include_reference/report.txt" || fail "include_reference: the reference was visible to the compiler"
 
 # Nothing escaped.
@@ -162,6 +184,22 @@ for path in "$kit/HOSTILE_WAS_HERE" /tmp/labkit-hostile-was-here /root/.labkit-h
   [ -e "$path" ] && { fail "the escape submission wrote $path"; rm -f "$path"; }
 done
 [ -z "$(find /tmp -maxdepth 3 -name hostile-was-here 2>/dev/null)" ] || fail "the escape submission wrote a hostile-was-here under /tmp"
+
+# Without bubblewrap (--sandbox none, where it cannot run), what is still protected: as
+# root, each run's own uid cannot write to the kit's tree nor /root; but world-writable
+# /tmp is open to it, and so is reading the kit's files (the reference, where the kit
+# has it: the Gradescope zip does not).
+if [ "$(id -u)" = 0 ]; then
+  rm -f /tmp/labkit-hostile-was-here
+  "$runner" grade "$subs/escape" --out "$work/unsandboxed" --seed "$secret" --cases 50 --labs 02 --sandbox none \
+    >"$work/unsandboxed.log" 2>&1 || fail "grading with --sandbox none exits $?"
+  grep -q "sandbox: none" "$work/unsandboxed/report.txt" || fail "--sandbox none: the report does not say so"
+  [ -e "$kit/HOSTILE_WAS_HERE" ] && { fail "--sandbox none: the kit's tree was written"; rm -f "$kit/HOSTILE_WAS_HERE"; }
+  [ -e /root/.labkit-hostile ] && { fail "--sandbox none: /root was written"; rm -f /root/.labkit-hostile; }
+  [ -e /tmp/labkit-hostile-was-here ] || fail "--sandbox none: /tmp was not written (then this suite no longer shows the fallback's limits)"
+  grep -qP "^02\t4\t.*\tcrashed\t" "$work/unsandboxed/steps.tsv" || fail "--sandbox none: the reference was not readable (expected, without bubblewrap)"
+  rm -f /tmp/labkit-hostile-was-here
+fi
 
 # The outputs: every results.json matches Gradescope's schema; none holds the seed.
 "$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json >"$work/schema.log" ||
