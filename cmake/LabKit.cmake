@@ -9,7 +9,8 @@
 #                                    links a submission (see runner/lab_build.h)
 #   tests/NN_name.mutants.cmake   -> the reference with one classic mistake each; ctest
 #                                    expects the step each one breaks to fail
-#   viewer/scenes/NN_name.cpp     -> the lab's viewer scene (see viewer/CMakeLists.txt)
+#   viewer/scenes/NN_name.cpp     -> the lab's viewer scene, compiled into both viewers
+#                                    (viewer/CMakeLists.txt; its line in viewer/scenes/scenes.h)
 #
 # ctest runs each step of the reference as its own test, "labNN.stepK", with the steps
 # read from grading/manifest.json.
@@ -22,7 +23,7 @@ function(labkit_add_lab number name)
   file(GLOB student_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/labs/${stem}/*.cpp")
   add_library(${lab}_student STATIC ${student_sources})
   target_include_directories(${lab}_student PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
-  target_link_libraries(${lab}_student PUBLIC labkit_geometry)
+  target_link_libraries(${lab}_student PUBLIC labkit_geometry labkit_given)
   target_precompile_headers(${lab}_student REUSE_FROM labkit_geometry)
 
   set(implementations student)
@@ -30,7 +31,7 @@ function(labkit_add_lab number name)
     file(GLOB reference_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/solutions/${stem}/*.cpp")
     add_library(${lab}_reference STATIC ${reference_sources})
     target_include_directories(${lab}_reference PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
-    target_link_libraries(${lab}_reference PUBLIC labkit_geometry)
+    target_link_libraries(${lab}_reference PUBLIC labkit_geometry labkit_given)
     list(APPEND implementations reference)
   endif()
 
@@ -74,6 +75,9 @@ function(labkit_add_lab number name)
   endif()
 
   set_property(GLOBAL APPEND PROPERTY LABKIT_LABS ${stem})
+  if(EXISTS "${PROJECT_SOURCE_DIR}/viewer/scenes/${stem}.cpp")
+    set_property(GLOBAL APPEND PROPERTY LABKIT_SCENES ${stem})
+  endif()
 endfunction()
 
 # A test binary of lab NN linked against one implementation (a library target).
@@ -141,7 +145,7 @@ function(labkit_mutant number name)
   set(library lab${number}_mutant_${M_NAME})
   add_library(${library} STATIC "${output}")
   target_include_directories(${library} PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
-  target_link_libraries(${library} PUBLIC labkit_geometry)
+  target_link_libraries(${library} PUBLIC labkit_geometry labkit_given)
   target_compile_options(${library} PRIVATE -w)  # a mistake may well leave a variable unused
   set_target_properties(${library} PROPERTIES EXCLUDE_FROM_ALL FALSE)
   labkit_add_test_binary(${number} ${name} mutant_${M_NAME} ${library})

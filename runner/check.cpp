@@ -52,7 +52,10 @@ void print_failure(const Failure& f, const std::string& query, const Lab& lab, b
   std::cout << "  expected  " << term::indent(f.expected, "            ") << "\n";
   std::cout << "  got       " << term::indent(f.got, "            ") << "\n";
   std::cout << "  why       " << term::indent(f.why, "            ") << "\n";
-  if (!f.replay.empty()) std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case '" + f.replay + "'") << "\n";
+  if (!f.replay.empty()) {
+    std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case '" + f.replay + "'") << "\n";
+    std::cout << "  see it    ./labkit view " << lab.id << " --case '" << f.replay << "'\n";
+  }
   (void)hide_seed_hint;
 }
 
@@ -67,6 +70,7 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
       const std::string binary = paths.build + "/" + lab.test_binary("student");
       std::cout << "  on input  " << term::indent(describe_token(binary, lab, r.inflight), "            ") << "\n";
       std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case '" + r.inflight + "'") << "\n";
+      std::cout << "  see it    ./labkit view " << lab.id << " --case '" << r.inflight << "'\n";
     }
     std::cout << "  debug     gdb --args " << paths.build << "/" << lab.test_binary("student") << " '[lab" << lab.id
               << "][step" << step.number << "]'\n";

@@ -114,6 +114,11 @@ bool same_triangle(const Triangle& a, const Triangle& b) {
 Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::vector<Triangle>& got, double S,
                Rules rules) {
   const double tol = kRelative * S;
+  for (std::size_t i = 0; i < got.size(); ++i)
+    for (int j = 0; j < 3; ++j)
+      if (!got[i][j].allFinite())
+        return fail("finite corners", describe_pieces(got),
+                    "corner " + fmt(got[i][j]) + " of triangle " + std::to_string(i) + " is not a finite point");
   // The usual cases, settled without exact arithmetic.
   const Clear clear = clearance(t, planes, tol);
   if (clear == Clear::inside && got.size() == 1 && same_triangle(got[0], t)) return pass();
@@ -129,7 +134,8 @@ Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::v
   if (!flat && int(got.size()) != exact.triangles() && !doubt)
     return fail(expected, answer,
                 (exact.has_area ? "the polygon triangle ∩ planes has " + count_of(exact.corners.size(), "corner") + ", so " +
-                                      count_of(std::size_t(exact.triangles()), "triangle") + " are expected, not "
+                                      count_of(std::size_t(exact.triangles()), "triangle") +
+                                      (exact.triangles() == 1 ? " is" : " are") + " expected, not "
                                 : std::string("triangle ∩ planes has no area, so no triangle is expected, not ")) +
                     std::to_string(got.size()) +
                     (rules == Rules::exact ? " (this input is exact: the header's rules decide)" : ""));

@@ -259,7 +259,8 @@ TEST_CASE("L01S5 clip a mesh, interpolate colours: worked examples", "[lab01][st
     const ClippedMesh got = clip_mesh(colored(in), in.frustum);
     Expect e;
     e.equal("triangles", int(got.mesh.size()), 3);
-    e.equal("colours", int(got.colors.size()), int(got.mesh.vertices.size()));
+    e.that("colours", got.colors.size() == got.mesh.vertices.size(), std::to_string(got.colors.size()),
+           std::to_string(got.mesh.vertices.size()), "every vertex needs a colour, the new cut points included");
     double area = 0;
     for (std::size_t k = 0; k < got.mesh.size(); ++k) area += got.mesh.triangle(k).area();
     e.near("area", area, 4, 1e-12);
@@ -300,6 +301,9 @@ TEST_CASE("L01S6 robustness: vertices, edges and triangles on frustum planes", "
                  clip_gives({{0, 0, -1}, {1, 0, -1}, {1, 1, -1}, {0, 1, -1}}, 1));
   check::example(q, "in the near plane, beside the face: cull", TriangleFrustum{{{2, 2, -1}, {5, 2, -1}, {2, 5, -1}}, f},
                  clip_gives({}, 0));
+  check::example(q, "a cut point that no double holds, exactly on the bottom plane",
+                 TriangleFrustum{{{-2, -2, -1}, {0, 0, -2}, {0, 1, -3}}, f},
+                 clip_gives({{-4.0 / 3, -4.0 / 3, -4.0 / 3}, {0, 0, -2}, {0, 1, -3}, {-1.5, -1.25, -1.5}}, 1.375));
   check::example(q, "crossing the left plane a third of the way along, exactly on the near plane",
                  TriangleFrustum{{{-2, 0, 0}, {1, 0, -3}, {1, 1, -3}}, f},
                  clip_gives({{-1, 0, -1}, {1, 0, -3}, {1, 1, -3}, {-1, 1.0 / 3, -1}}, 4 * std::sqrt(2.0) / 3));
@@ -314,5 +318,8 @@ TEST_CASE("L01S6 robustness: random exact degenerate cases", "[lab01][step6][ora
   });
   check::random_cases("robust.clip_triangle", gen::exact_triangle_frustum(), [](const TriangleFrustum& in) {
     return judge::clip_triangle(in, run_clip(in), Rules::exact);
+  });
+  check::random_cases("robust.clip_mesh", gen::exact_mesh_frustum(), [](const MeshFrustum& in) {
+    return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum), Rules::exact);
   });
 }

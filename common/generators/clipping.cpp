@@ -561,34 +561,41 @@ rc::Gen<TriangleFrustum> triangle_frustum() {
 
 rc::Gen<TriangleFrustum> exact_triangle_frustum() { return exact_case(); }
 
+namespace {
+
+// A small mesh (gen::mesh) with lattice step `unit`, centred on `center` by a lattice
+// step, with colours. `exact`: every vertex snapped to the lattice (integer input).
+MeshFrustum mesh_across(const Frustum& frustum, const Vec3& center, double unit, bool exact) {
+  MeshFrustum out{*mesh(unit), {}, frustum};
+  Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
+  for (Vec3& v : out.mesh.vertices) {
+    if (exact) v = (v / unit).array().round().matrix() * unit;
+    low = low.cwiseMin(v);
+    high = high.cwiseMax(v);
+  }
+  const Vec3 shift = ((center - (low + high) / 2) / unit).array().round().matrix() * unit;
+  for (Vec3& v : out.mesh.vertices) v += shift;
+  for (std::size_t i = 0; i < out.mesh.vertices.size(); ++i) out.colors.push_back(*lattice_point(1.0 / 16, 16));
+  return out;
+}
+
+MeshFrustum exact_mesh_case() {
+  const ExactFrustum f = *exact_frustum();
+  return mesh_across(f.frustum(), f.world(0, 0, f.near), 4 * f.s, true);
+}
+
+}  // namespace
+
 rc::Gen<MeshFrustum> mesh_frustum() {
   return rc::gen::exec([] {
-    MeshFrustum out;
-    double unit = 1;
-    Vec3 center = Vec3::Zero();
-    if (*rc::gen::inRange(0, 4) == 0) {
-      const ExactFrustum f = *exact_frustum();
-      out.frustum = f.frustum();
-      unit = f.s;
-      center = f.world(0, 0, f.near);
-    } else {
-      const CameraFrustum cf = camera_frustum(*camera());
-      out.frustum = cf.frustum;
-      unit = std::ldexp(1.0, std::ilogb(cf.size) - 3);
-      center = cf.center;
-    }
-    out.mesh = *mesh(unit);
-    // Centre the mesh's box on the frustum (by a lattice step: exact input stays exact).
-    Vec3 low = Vec3::Constant(1e300), high = Vec3::Constant(-1e300);
-    for (const Vec3& v : out.mesh.vertices) {
-      low = low.cwiseMin(v);
-      high = high.cwiseMax(v);
-    }
-    const Vec3 shift = ((center - (low + high) / 2) / unit).array().round().matrix() * unit;
-    for (Vec3& v : out.mesh.vertices) v += shift;
-    for (std::size_t i = 0; i < out.mesh.vertices.size(); ++i) out.colors.push_back(*lattice_point(1.0 / 16, 16));
-    return out;
+    if (*rc::gen::inRange(0, 4) == 0) return exact_mesh_case();
+    const CameraFrustum cf = camera_frustum(*camera());
+    return mesh_across(cf.frustum, cf.center, std::ldexp(1.0, std::ilogb(cf.size) - 3), false);
   });
+}
+
+rc::Gen<MeshFrustum> exact_mesh_frustum() {
+  return rc::gen::exec([] { return exact_mesh_case(); });
 }
 
 }  // namespace labkit::gen

@@ -121,5 +121,7 @@ rc::Gen<TriangleFrustum> exact_triangle_frustum();
 
 // A small mesh (soup, terrain, octahedron) with colours, across a frustum.
 rc::Gen<MeshFrustum> mesh_frustum();
+// The same on integer coordinates, across exact frustums: the robustness step's input.
+rc::Gen<MeshFrustum> exact_mesh_frustum();
 
 }  // namespace labkit::gen

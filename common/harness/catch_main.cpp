@@ -1,10 +1,7 @@
-// The one translation unit with Catch2's implementation, compiled once for all labs.
-// Catch's own signal handlers are off: ours (report.h) name the input a crash died on.
-#define CATCH_CONFIG_RUNNER
-#define CATCH_CONFIG_NO_POSIX_SIGNALS
-// Wide enough that most replay tokens print on one line; `./labkit check` prints them
-// whole, from the JSON report, whatever their length.
-#define CATCH_CONFIG_CONSOLE_WIDTH 160
+// The test binaries' main(): our signal handlers, a listener that feeds the JSON report,
+// then Catch's session. Catch's implementation itself is in catch_implementation.cpp;
+// EXTERNAL_INTERFACES declares the listener types outside it.
+#define CATCH_CONFIG_EXTERNAL_INTERFACES
 #include <catch2/catch.hpp>
 
 #include "common/harness/report.h"
@@ -50,7 +47,7 @@ CATCH_TRANSLATE_EXCEPTION(const labkit::NotImplemented& e) { return e.what(); }
 int main(int argc, char* argv[]) {
   labkit::check::report::install_signal_handlers();
   labkit::check::report::read_settings_first();
-  const int status = Catch::Session().run(argc, argv);
+  const int status = labkit::check::report::run_catch_session(argc, argv);
   labkit::check::report::session_finished();
   return status;
 }

@@ -37,4 +37,7 @@ void read_settings_first();
 // Prints the in-flight case on a crash or a time-out (SIGTERM) before the process dies.
 void install_signal_handlers();
 
+// Catch's session (in catch_implementation.cpp, where Catch declares it).
+int run_catch_session(int argc, char* argv[]);
+
 }  // namespace labkit::check::report

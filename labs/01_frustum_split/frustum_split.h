@@ -138,9 +138,9 @@ struct ClippedMesh {
 ClippedMesh clip_mesh(const ColoredMesh& mesh, const Frustum& frustum);
 
 // ---- Step 6 (L01S6): robustness ----------------------------------------------------
-// No new function: steps 1 to 5 must follow the rules at the top of this file on exact
-// input (integer coordinates and plane coefficients): vertices exactly on planes, edges
-// along them, triangles lying in them or touching them at a point, and edges through
-// the lines where two planes of the frustum meet.
+// No new function: steps 1 to 5 must follow the rules at the top of this file exactly on
+// exact input (integer coordinates and plane coefficients up to about 1024, times a power
+// of two): vertices exactly on planes, edges along them, triangles lying in them or
+// touching them at a point, and edges through the lines where two planes meet.
 
 }  // namespace labkit::lab01

@@ -1,6 +1,7 @@
 // The harness's own guarantees: exact replay tokens, clear errors on bad tokens, and
 // the ambiguity test on cases whose answer is known.
 #include "common/generators/generators.h"
+#include "common/given/segment_triangle.h"
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
 
@@ -74,4 +75,27 @@ TEST_CASE("Expect words a mismatch field by field", "[kit]") {
   CHECK_THAT(o.why, Catch::Contains("t is off by 0.25"));
   CHECK_THAT(o.expected, Catch::Contains("t = 0.75"));
   CHECK_THAT(o.got, Catch::Contains("t = 0.5"));
+}
+
+TEST_CASE("the given segment-triangle test agrees with the oracle and is watertight", "[kit]") {
+  // Random cases away from doubt must agree with the exact answer.
+  int compared = 0;
+  rc::Random random(7);
+  const rc::Gen<SegmentTrianglePair> gen = gen::segment_triangle();
+  for (int i = 0; i < 4000; ++i) {
+    random = rc::Random(std::uint64_t(i) * 7919 + 1);
+    const SegmentTrianglePair p = gen(random, 100).value();
+    const double delta = 1e-9 * check::scale_of_input(p);
+    if (oracle::segment_triangle_in_doubt(p.segment, p.triangle, delta)) continue;
+    const given::SegmentHit h = given::segment_triangle(p.segment, p.triangle);
+    CHECK(h.hit == oracle::segment_hits_triangle(p.segment, p.triangle));
+    if (h.hit) CHECK(oracle::within(h.point, p.triangle, delta));
+    ++compared;
+  }
+  CHECK(compared > 1500);  // over half the cases are deliberately in doubt
+  // A segment through the shared diagonal of a square, or its shared corner, hits it.
+  const Triangle t0{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}}, t1{{0, 0, 0}, {4, 4, 0}, {0, 4, 0}};
+  for (const Segment& s : {Segment{{2, 2, 1}, {2, 2, -1}}, Segment{{1.3, 1.3, 0.7}, {1.1, 1.1, -0.3}},
+                          Segment{{4, 4, 3}, {4, 4, -3}}, Segment{{0.1, 0.1, 1}, {1.0 / 3, 1.0 / 3, -1}}})
+    CHECK((given::segment_triangle(s, t0).hit || given::segment_triangle(s, t1).hit));
 }

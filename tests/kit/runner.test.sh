@@ -32,7 +32,7 @@ echo "--- 3. a classic mistake: the report names the case, and its replay fails 
 out=$("$runner" check 02 --step 3 --cases 500 --implementation mutant_beta_sign 2>&1); code=$?
 echo "$out"
 [ $code -eq 1 ] || fail "the beta-sign mutant passes step 3"
-for field in "query " "input " "expected " "got " "why " "replay "; do
+for field in "query " "input " "expected " "got " "why " "replay " "see it "; do
   grep -q "  $field" <<<"$out" || fail "the failure report has no '$field' line"
 done
 token=$(grep -o -- "--case '[^']*'" <<<"$out" | head -n 1 | sed "s/^--case '//; s/'\$//")

@@ -1,0 +1,32 @@
+// The viewer's scenes: one per lab, one file each (viewer/scenes/NN_name.cpp), listed
+// in this one table. Number keys and the list in the window switch between them.
+// Adding lab 08's scene: write viewer/scenes/08_name.cpp with the same shape as the
+// others, and add its line here.
+#pragma once
+
+#include "viewer/scene.h"
+
+#include <memory>
+#include <vector>
+
+namespace viewer {
+
+struct SceneInfo {
+  const char* lab;    // "02": what `./labkit view 02` and the number keys select
+  const char* stem;   // "02_segment_triangle": the stem of the lab's files and figures
+  const char* title;
+  std::unique_ptr<Scene> (*make)(const Setup& setup);  // throws labkit::BadToken
+  const std::vector<Preset>& (*presets)();
+};
+
+std::unique_ptr<Scene> make_frustum_split(const Setup& setup);
+const std::vector<Preset>& frustum_split_presets();
+std::unique_ptr<Scene> make_segment_triangle(const Setup& setup);
+const std::vector<Preset>& segment_triangle_presets();
+
+inline const SceneInfo kScenes[] = {
+    {"01", "01_frustum_split", "View-frustum clipping by triangle splitting", make_frustum_split, frustum_split_presets},
+    {"02", "02_segment_triangle", "Segment against triangle and mesh", make_segment_triangle, segment_triangle_presets},
+};
+
+}  // namespace viewer
