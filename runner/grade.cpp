@@ -188,7 +188,16 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
     fs::create_directories(folders[i]);
     fs::permissions(folders[i], fs::perms(0711));
   }
-  parallel_for(n, jobs, [&](std::size_t i) { g.labs[i] = build_one_lab(*c.labs[i], sub, folders[i], c, &binaries[i]); });
+  parallel_for(n, jobs, [&](std::size_t i) {
+    try {
+      g.labs[i] = build_one_lab(*c.labs[i], sub, folders[i], c, &binaries[i]);
+    } catch (const std::exception& e) {  // the grader's own trouble (a file system error): this lab only
+      binaries[i].clear();
+      g.labs[i] = build_one_lab(*c.labs[i], Submission{}, folders[i], c, &binaries[i]);
+      g.labs[i].state = LabGrade::State::not_built;
+      g.labs[i].build_output = std::string("the grader could not build it: ") + e.what();
+    }
+  });
 
   std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (lab, step)
   for (std::size_t i = 0; i < n; ++i)
@@ -198,7 +207,14 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
     const auto [i, k] = tasks[t];
     const Lab& lab = *c.labs[i];
     StepGrade& s = g.labs[i].steps[k];
-    const StepResult r = run_step(binaries[i], lab, *s.step, graded_step_options(folders[i], c));
+    StepResult r;
+    try {
+      r = run_step(binaries[i], lab, *s.step, graded_step_options(folders[i], c));
+    } catch (const std::exception& e) {
+      r.step = s.step;
+      r.status = Status::crashed;
+      r.detail = std::string("the grader could not run it: ") + e.what();
+    }
     s.status = r.status;
     s.score = step_score(*s.step, r);
     s.ambiguous = r.ambiguous;

@@ -161,7 +161,8 @@ StepResult run_step(const std::string& binary, const Lab& lab, const Step& step,
     r.run = run({binary, filter}, env, options.limits, scratch);
   }
   read_report(report, r);
-  fs::remove_all(scratch);
+  std::error_code ignored;
+  fs::remove_all(scratch, ignored);
 
   r.inflight = inflight_token(r.run.output);
   r.status = decide(r);
