@@ -92,7 +92,7 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
   for (const LabGrade& l : s.labs) {
     const int lab_number = std::stoi(l.lab->id);
     const bool built = l.state == LabGrade::State::graded;
-    tests.push_back({{"name", lab_heading(l) + ": build"},
+    tests.push_back({{"name", "Lab " + l.lab->id + " " + l.lab->title + ": build"},
                      {"number", std::to_string(lab_number) + ".0"},
                      {"status", built ? "passed" : "failed"},
                      {"output", built ? "It compiles." : lab_state(l) + ".\n" + l.build_output},
@@ -106,16 +106,15 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
                        {"output", g.feedback},
                        {"tags", {"lab" + l.lab->id, g.step->tag}},
                        {"visibility", "visible"}});
-    summary += lab_heading(l) + ": " + points(l.score) + " / " + points(l.max_score) +
+    summary += "Lab " + l.lab->id + " " + l.lab->title + ": " + points(l.score) + " / " + points(l.max_score) +
                (built ? "" : " (" + lab_state(l) + ")") + "\n";
   }
   if (!s.error.empty()) summary = "The submission could not be read: " + s.error + "\n" + summary;
   for (const std::string& note : s.notes) summary += "Note: " + note + "\n";
-  return {{"score", s.score},
-          {"execution_time", int(std::ceil(s.seconds))},
-          {"output", summary},
-          {"tests", tests},
-          {"extra_data", {{"seed", run.seed_kind}, {"cases_per_query", run.cases}, {"sandbox", run.sandbox}}}};
+  nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}};
+  if (run.cases > 0) extra["cases_per_query"] = run.cases;
+  return {{"score", s.score}, {"execution_time", int(std::ceil(s.seconds))}, {"output", summary}, {"tests", tests},
+          {"extra_data", extra}};
 }
 
 std::string junit_xml(const SubmissionGrade& s) {
