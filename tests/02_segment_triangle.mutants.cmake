@@ -33,9 +33,9 @@ labkit_mutant(02 segment_triangle NAME moving_one_frame STEP 6
   REPLACE "const Segment local{m0.inverse() * segment.a, m0.inverse() * segment.b};")
 
 labkit_mutant(02 segment_triangle NAME crossing_point_edge_tests STEP 7
-  FIND "if (side * v0 > 0 || side * v1 > 0 || side * v2 > 0) return {};  // x is outside some edge"
-  REPLACE "if (!point_in_triangle_edges(s.point(d_a / (d_a - d_b)), tri)) return {};")
+  FIND "const double side = d_a > d_b ? 1.0 : -1.0;"
+  REPLACE "if (!point_in_triangle_edges(s.point(d_a / (d_a - d_b)), tri)) return {}; const double side = 0;")
 
 labkit_mutant(02 segment_triangle NAME coplanar_is_a_miss STEP 7
-  FIND "if (in_plane(s, tri, e1, e2, d_a, d_b)) return decide_coplanar(s, tri, n);"
-  REPLACE "if (in_plane(s, tri, e1, e2, d_a, d_b)) return {};")
+  FIND "if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);"
+  REPLACE "if (d_a == 0 && d_b == 0) return {};")

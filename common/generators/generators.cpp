@@ -293,6 +293,20 @@ rc::Gen<SegmentTrianglePair> segment_triangle() {
   return rc::gen::weightedOneOf<SegmentTrianglePair>({{7, families}, {1, far_away(families)}});
 }
 
+rc::Gen<SegmentTrianglePair> typical_segment_triangle() {
+  // Crossing through a random point inside (20-bit weights, never exactly on an edge).
+  const rc::Gen<SegmentTrianglePair> through = rc::gen::exec([] {
+    const double s = *scale();
+    const Triangle t = *triangle(s);
+    const int i = *rc::gen::inRange(1, (1 << 20) - 1);
+    const int j = *rc::gen::inRange(1, (1 << 20) - i);
+    const Vec3 x = t.v0 + std::ldexp(i, -20) * (t.v1 - t.v0) + std::ldexp(j, -20) * (t.v2 - t.v0);
+    const Vec3 d = *point(s);
+    return SegmentTrianglePair{{x + d, x - 0.5 * d}, t};
+  });
+  return rc::gen::weightedOneOf<SegmentTrianglePair>({{1, generic()}, {1, through}});
+}
+
 rc::Gen<SegmentTrianglePair> exact_segment_triangle() {
   return rc::gen::weightedOneOf<SegmentTrianglePair>({
       {2, crossing(true)},

@@ -63,6 +63,9 @@ rc::Gen<Triangle> triangle(double scale);
 rc::Gen<Triangle> degenerate_triangle(double scale);
 
 rc::Gen<SegmentTrianglePair> segment_triangle();
+// Random segments and triangles at one scale, about half of them crossing: no
+// deliberate degeneracy (for benchmarks of typical work).
+rc::Gen<SegmentTrianglePair> typical_segment_triangle();
 // Exactly degenerate cases only (through vertices and edges, touching, coplanar,
 // zero length, zero area) on integer coordinates |x| <= 1024 times a power of two:
 // the robustness steps' input, where the header's rules must hold exactly.

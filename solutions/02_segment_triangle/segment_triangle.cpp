@@ -29,13 +29,6 @@ Vec2 drop(const Vec3& p, int axis) { return {p[(axis + 1) % 3], p[(axis + 2) % 3
 
 double cross(const Vec2& u, const Vec2& v) { return u.x() * v.y() - u.y() * v.x(); }
 
-// Six times the signed volume of the tetrahedron a, b, p, q:
-//   (b - a) . ((p - a) x (q - a)).
-// Its sign says on which side of the directed line a -> b the edge p -> q passes.
-double volume(const Vec3& a, const Vec3& direction, const Vec3& p, const Vec3& q) {
-  return direction.dot((p - a).cross(q - a));
-}
-
 // In the plane with `axis` dropped: is X in the closed triangle P0 P1 P2, which turns
 // with sign `turn` (+1 counter-clockwise)? Each edge function is >= 0 inside.
 bool inside_2d(const Vec2& x, const Vec2 (&p)[3], double turn) {
@@ -82,6 +75,7 @@ double first_contact_2d(const Vec2& a, const Vec2& b, const Vec2& p, const Vec2&
 struct Decision {
   bool hit = false;
   double t = 0.0;
+  Vec3 n = Vec3::Zero();  // the triangle's normal, unnormalised (when hit)
 };
 
 // The segment lies in the triangle's plane: a 2D problem. The first point is a itself
@@ -100,22 +94,20 @@ Decision decide_coplanar(const Segment& s, const Triangle& tri, const Vec3& n) {
   if (!std::isfinite(t)) return d;  // the segment misses the triangle in its plane
   d.hit = true;
   d.t = t;
+  d.n = n;
   return d;
 }
 
-// Both ends on the plane, to within the rounding error of d_a and d_b. For a segment in
-// the plane the volumes below are all exactly zero, so their computed signs would be
-// pure noise; the 2D test decides instead. The rounding error of d = (p - v0) . n
-// grows with the coordinates' size S, with |e1| |e2|, and with |p - v0|; the bound
-// below is some thousand times that error, and still far below 1 for integer input
-// (|x| <= 1024), which is therefore only treated as coplanar when it is.
-bool in_plane(const Segment& s, const Triangle& tri, const Vec3& e1, const Vec3& e2, double d_a, double d_b) {
-  if (d_a == 0 && d_b == 0) return true;
-  const double size = std::max({s.a.cwiseAbs().maxCoeff(), s.b.cwiseAbs().maxCoeff(), tri.v0.cwiseAbs().maxCoeff(),
-                                tri.v1.cwiseAbs().maxCoeff(), tri.v2.cwiseAbs().maxCoeff()});
-  const double edges = e1.norm() + e2.norm();
-  const auto noise = [&](const Vec3& p) { return 1e-13 * size * (e1.norm() * e2.norm() + (p - tri.v0).norm() * edges); };
-  return std::abs(d_a) <= noise(s.a) && std::abs(d_b) <= noise(s.b);
+// Both ends on the plane, to within the rounding error of d_a and d_b: then the volumes
+// below are all zero up to that same rounding, and their signs are pure noise; the 2D
+// test decides instead. A subtraction of two doubles is rounded relative to its result,
+// so the error of d = (p - v0) . n stays below a few units of 1e-16 |p - v0| |e1| |e2|,
+// whatever the coordinates' size; the bound is a thousand times that (compared squared,
+// to spare the roots), and still far below 1 for integer input (|x| <= 1024), which is
+// therefore treated as coplanar only when it is.
+bool in_plane(double d_a, double d_b, const Vec3& a_to_v0, const Vec3& b_to_v0, const Vec3& e1, const Vec3& e2) {
+  const double edges = 1e-26 * e1.squaredNorm() * e2.squaredNorm();
+  return d_a * d_a <= edges * a_to_v0.squaredNorm() && d_b * d_b <= edges * b_to_v0.squaredNorm();
 }
 
 //   Derivation (lecture 000, "segment vs. triangle"): with n = (v1 - v0) x (v2 - v0),
@@ -126,7 +118,9 @@ bool in_plane(const Segment& s, const Triangle& tri, const Vec3& e1, const Vec3&
 //       (d_a - d_b) E_i = -|n|^2 V_i,   V_i = (b - a) . ((v_i - a) x (v_{i+1} - a)),
 //
 //   so x is inside exactly when every V_i has the sign opposite to (d_a - d_b) (or is
-//   zero). V_i uses input points only: no rounded x enters any decision.
+//   zero). V_i uses input points only: no rounded x enters any decision. Summed over
+//   the three edges, the E_i make |n|^2, so V_0 + V_1 + V_2 = d_b - d_a: the third
+//   volume costs one subtraction, and on integer input it is still exact.
 //
 //          v2
 //         /  \        V_0 belongs to edge v0 -> v1,
@@ -137,20 +131,25 @@ bool in_plane(const Segment& s, const Triangle& tri, const Vec3& e1, const Vec3&
 Decision decide(const Segment& s, const Triangle& tri) {
   const Vec3 e1 = tri.v1 - tri.v0, e2 = tri.v2 - tri.v0;
   const Vec3 n = e1.cross(e2);
-  if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit
-  const double d_a = (s.a - tri.v0).dot(n);
-  const double d_b = (s.b - tri.v0).dot(n);
-  if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side
-  if (in_plane(s, tri, e1, e2, d_a, d_b)) return decide_coplanar(s, tri, n);
-
+  // The vertices as seen from a, and where the segment goes.
+  const Vec3 p0 = tri.v0 - s.a, p1 = tri.v1 - s.a, p2 = tri.v2 - s.a;
   const Vec3 direction = s.b - s.a;
-  const double v0 = volume(s.a, direction, tri.v0, tri.v1);
-  const double v1 = volume(s.a, direction, tri.v1, tri.v2);
-  const double v2 = volume(s.a, direction, tri.v2, tri.v0);
-  const double side = d_a > d_b ? 1.0 : -1.0;
-  if (side * v0 > 0 || side * v1 > 0 || side * v2 > 0) return {};  // x is outside some edge
+  const double d_a = -p0.dot(n);               // (a - v0) . n
+  const double d_b = d_a + direction.dot(n);  // (b - v0) . n
+  if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side
+  if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit
+  if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);
 
-  return {true, d_a / (d_a - d_b)};
+  const double side = d_a > d_b ? 1.0 : -1.0;
+  const double v0 = direction.dot(p0.cross(p1));
+  if (side * v0 > 0) return {};  // x is outside edge v0 -> v1
+  const double v1 = direction.dot(p1.cross(p2));
+  if (side * v1 > 0) return {};  // outside edge v1 -> v2
+  const double v2 = (d_b - d_a) - v0 - v1;
+  if (side * v2 > 0) return {};  // outside edge v2 -> v0
+  // A segment in the plane up to rounding passes the volume test by chance: in 2D.
+  if (in_plane(d_a, d_b, p0, p0 - direction, e1, e2)) return decide_coplanar(s, tri, n);
+  return {true, d_a / (d_a - d_b), n};
 }
 
 // Only now build the point, and describe that very point by its barycentric weights
@@ -163,7 +162,7 @@ SegmentTriangleHit hit_from(const Decision& d, const Segment& s, const Triangle&
   h.point = s.point(d.t);
   const Barycentric b = barycentric(h.point, tri);
   h.barycentric = Vec3(1 - b.alpha - b.beta, b.alpha, b.beta);
-  h.normal = tri.normal().normalized();
+  h.normal = d.n.normalized();
   return h;
 }
 

@@ -1,0 +1,174 @@
+// labkit-bench-report BENCH.json TARGETS.json NOTES.md OUT.md
+//
+// Turns one run of labkit-bench into bench/RESULTS.md: a table per kernel (throughput,
+// time per item, the reference's speed relative to each peer, disagreements with the
+// exact answer), the targets met or missed, size scaling where a kernel was run at
+// several sizes, and the hand-written notes that explain the misses.
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using nlohmann::json;
+
+namespace {
+
+struct Row {
+  std::string implementation;
+  double items_per_second = 0;
+  double nanoseconds_per_item = 0;
+  json counters = json::object();
+};
+
+std::string number(double x, int digits = 3) {
+  if (!std::isfinite(x)) return "-";
+  char buffer[64];
+  const double a = std::abs(x);
+  if (a >= 1e9) std::snprintf(buffer, sizeof buffer, "%.*gG", digits, x / 1e9);
+  else if (a >= 1e6) std::snprintf(buffer, sizeof buffer, "%.*gM", digits, x / 1e6);
+  else if (a >= 1e3) std::snprintf(buffer, sizeof buffer, "%.*gk", digits, x / 1e3);
+  else std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+  return buffer;
+}
+
+std::string read_file(const std::string& path) {
+  std::ifstream in(path);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// "group/implementation" or "group/implementation/size".
+struct Name {
+  std::string group, implementation, size;
+};
+Name split(const std::string& name) {
+  Name n;
+  const auto a = name.find('/');
+  n.group = name.substr(0, a);
+  if (a == std::string::npos) return n;
+  const auto b = name.find('/', a + 1);
+  n.implementation = name.substr(a + 1, b == std::string::npos ? std::string::npos : b - a - 1);
+  if (b != std::string::npos) n.size = name.substr(b + 1);
+  return n;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 5) {
+    std::cerr << "usage: labkit-bench-report BENCH.json TARGETS.json NOTES.md OUT.md\n";
+    return 2;
+  }
+  json run, targets;
+  try {
+    run = json::parse(read_file(argv[1]));
+    targets = json::parse(read_file(argv[2]));
+  } catch (const json::exception& e) {
+    std::cerr << "labkit-bench-report: " << e.what() << "\n";
+    return 2;
+  }
+
+  // group -> size -> rows, in the order the benchmarks ran.
+  std::vector<std::string> group_order;
+  std::map<std::string, std::map<std::string, std::vector<Row>>> groups;
+  for (const json& b : run.value("benchmarks", json::array())) {
+    if (b.value("run_type", "iteration") != "iteration") continue;
+    const Name n = split(b.value("name", ""));
+    Row r;
+    r.implementation = n.implementation;
+    r.items_per_second = b.value("items_per_second", 0.0);
+    r.nanoseconds_per_item = r.items_per_second > 0 ? 1e9 / r.items_per_second : NAN;
+    for (auto it = b.begin(); it != b.end(); ++it)
+      if (it.key() == "disagree" || it.key() == "ambiguous" || it.key() == "bytes_per_triangle" ||
+          it.key() == "tests_per_query")
+        r.counters[it.key()] = it.value();
+    if (!groups.count(n.group)) group_order.push_back(n.group);
+    groups[n.group][n.size].push_back(r);
+  }
+
+  std::ostringstream md;
+  const json context = run.value("context", json::object());
+  md << "# Benchmark results\n\n"
+     << "Written by `./labkit bench` (run it again to regenerate this file). Every kernel\n"
+     << "runs on the same seeded inputs for every implementation, in one run.\n\n"
+     << "- Date: " << context.value("date", "?") << "\n"
+     << "- Machine: " << context.value("cores", std::string("?")) << " cores, "
+     << context.value("mhz_per_cpu", 0) << " MHz, host " << context.value("host_name", "?") << "\n"
+     << "- Compiler: " << context.value("compiler", "?") << "\n"
+     << "- Flags: `" << context.value("flags", "?") << "`\n"
+     << "- Google Benchmark " << context.value("library_build_type", "") << " library; CPU scaling "
+     << (context.value("cpu_scaling_enabled", false) ? "on (numbers are noisier)" : "off") << "\n\n"
+     << "\"vs\" columns give the reference's speed divided by the peer's: above 1, the\n"
+     << "reference is faster. \"disagree\" counts answers that differ from the exact one where\n"
+     << "the exact answer is not in doubt (the ambiguous cases are counted apart).\n";
+
+  for (const std::string& group : group_order) {
+    md << "\n## " << group << "\n";
+    for (const auto& [size, rows] : groups[group]) {
+      if (!size.empty()) md << "\n" << size << " triangles or items:\n";
+      const Row* reference = nullptr;
+      for (const Row& r : rows)
+        if (r.implementation == "reference") reference = &r;
+      md << "\n| implementation | items/s | ns/item |" << (reference ? " reference vs it |" : "")
+         << " disagree | ambiguous | other |\n|---|---|---|" << (reference ? "---|" : "") << "---|---|---|\n";
+      for (const Row& r : rows) {
+        md << "| " << r.implementation << " | " << number(r.items_per_second) << " | " << number(r.nanoseconds_per_item)
+           << " |";
+        if (reference) md << " " << (r.items_per_second > 0 ? number(reference->items_per_second / r.items_per_second) : "-") << " |";
+        md << " " << (r.counters.contains("disagree") ? number(r.counters["disagree"].get<double>()) : "-") << " | "
+           << (r.counters.contains("ambiguous") ? number(r.counters["ambiguous"].get<double>()) : "-") << " | ";
+        for (const char* key : {"tests_per_query", "bytes_per_triangle"})
+          if (r.counters.contains(key)) md << key << " " << number(r.counters[key].get<double>()) << " ";
+        md << "|\n";
+      }
+    }
+    // Scaling: time per item against size, fitted as size^k between the extremes.
+    if (groups[group].size() >= 2 && !groups[group].begin()->first.empty()) {
+      md << "\nScaling of the time per item from the smallest to the largest size (exponent k in size^k):\n\n";
+      const auto& first = groups[group].begin()->second;
+      const auto& last = groups[group].rbegin()->second;
+      const double n0 = std::stod(groups[group].begin()->first), n1 = std::stod(groups[group].rbegin()->first);
+      for (const Row& r0 : first)
+        for (const Row& r1 : last)
+          if (r0.implementation == r1.implementation && r0.nanoseconds_per_item > 0 && r1.nanoseconds_per_item > 0)
+            md << "- " << r0.implementation << ": k = "
+               << number(std::log(r1.nanoseconds_per_item / r0.nanoseconds_per_item) / std::log(n1 / n0), 2) << "\n";
+    }
+  }
+
+  md << "\n## Targets\n\n| kernel | target | measured | met |\n|---|---|---|---|\n";
+  for (const json& t : targets.value("targets", json::array())) {
+    const std::string group = t.value("group", ""), peer = t.value("peer", ""), size = t.value("size", "");
+    const double at_least = t.value("at_least", 0.0);
+    const Row* ref = nullptr;
+    const Row* other = nullptr;
+    if (groups.count(group) && groups[group].count(size))
+      for (const Row& r : groups[group][size]) {
+        if (r.implementation == "reference") ref = &r;
+        if (r.implementation == peer) other = &r;
+      }
+    std::string measured = "not measured", met = "-";
+    if (ref && other && other->items_per_second > 0) {
+      const double ratio = ref->items_per_second / other->items_per_second;
+      const double disagree = ref->counters.value("disagree", 0.0);
+      measured = number(ratio) + "x" + (ref->counters.contains("disagree") ? ", " + number(disagree) + " disagreements" : "");
+      met = ratio >= at_least && disagree == 0 ? "yes" : "**no**";
+    }
+    md << "| " << group << (size.empty() ? "" : " (" + size + ")") << " | " << t.value("text", "") << " | " << measured
+       << " | " << met << " |\n";
+  }
+
+  const std::string notes = read_file(argv[3]);
+  if (!notes.empty()) md << "\n" << notes;
+  std::ofstream out(argv[4]);
+  out << md.str();
+  std::cout << "wrote " << argv[4] << "\n";
+  return 0;
+}
