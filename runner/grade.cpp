@@ -139,7 +139,9 @@ LabGrade build_one_lab(const Lab& lab, const Submission& sub, const std::string&
     for (StepGrade& s : g.steps) s.feedback = "not graded: " + g.build_output;
     return g;
   }
+  const auto start = std::chrono::steady_clock::now();
   const LabBuild build = build_lab(c.paths, lab, c.recipes.at(&lab), files, folder, c.sandbox);
+  g.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!build.ok) {
     g.state = LabGrade::State::not_built;
     g.build_output = redact(build.errors, c.options.seed);
@@ -216,6 +218,7 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
       r.detail = std::string("the grader could not run it: ") + e.what();
     }
     s.status = r.status;
+    s.seconds = r.run.seconds;
     s.score = step_score(*s.step, r);
     s.ambiguous = r.ambiguous;
     for (const QueryResult& q : r.queries) s.cases += q.cases;
@@ -261,7 +264,15 @@ int grade(const Paths& paths, const GradeOptions& options) {
                         std::find_if(options.labs.begin(), options.labs.end(), [&](const std::string& id) {
                           return id == lab.id || "0" + id == lab.id || id == lab.stem();
                         }) != options.labs.end();
-    if (wanted && fs::is_directory(paths.source + "/labs/" + lab.stem())) c.labs.push_back(&lab);
+    if (!wanted || !fs::is_directory(paths.source + "/labs/" + lab.stem())) continue;  // a lab not written yet
+    // A lab whose folder exists but which the kit does not build yet (its labkit_add_lab
+    // line is still commented) cannot be graded: said once, and the others are.
+    if (!fs::exists(recipe_record(paths, lab))) {
+      std::cerr << "labkit grade: lab " << lab.id << " is in grading/manifest.json and labs/, but the kit's build has "
+                << "no record of it (is its labkit_add_lab line in CMakeLists.txt?): not graded\n";
+      continue;
+    }
+    c.labs.push_back(&lab);
   }
   if (c.labs.empty()) {
     std::cerr << "labkit grade: no lab to grade (the kit has none of those asked for)\n";
@@ -282,25 +293,39 @@ int grade(const Paths& paths, const GradeOptions& options) {
   c.work = work_template;
   fs::permissions(c.work, fs::perms(0711));
 
+  // A folder of submissions (a class) stands for each of them.
+  std::vector<std::string> submissions;
+  bool a_class = options.submissions.size() > 1;
+  for (const std::string& path : options.submissions) {
+    const std::vector<std::string> members = class_members(path, c.labs);
+    if (members.empty()) {
+      submissions.push_back(path);
+      continue;
+    }
+    std::cerr << "labkit grade: " << path << " holds " << members.size() << " submissions: graded one by one\n";
+    submissions.insert(submissions.end(), members.begin(), members.end());
+    a_class = true;
+  }
+
   // Names, made unique: results/<name>/ per submission.
   std::vector<std::string> names;
   std::map<std::string, int> seen;
-  for (const std::string& path : options.submissions) {
+  for (const std::string& path : submissions) {
     std::string name = submission_name(path);
     if (++seen[name] > 1) name += "-" + std::to_string(seen[name]);
     names.push_back(name);
   }
-  const bool single = options.submissions.size() == 1;
+  const bool single = !a_class;
   const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
   // Several submissions share the processes out one each; one submission uses them all.
-  const int outer = std::min<int>(jobs, int(options.submissions.size()));
+  const int outer = std::min<int>(jobs, int(submissions.size()));
   const int inner = std::max(1, jobs / outer);
 
-  std::vector<SubmissionGrade> grades(options.submissions.size());
+  std::vector<SubmissionGrade> grades(submissions.size());
   std::mutex print;
   const auto start = std::chrono::steady_clock::now();
-  parallel_for(options.submissions.size(), outer, [&](std::size_t i) {
-    grades[i] = grade_one(options.submissions[i], names[i], c.work + "/" + std::to_string(i), inner, c);
+  parallel_for(submissions.size(), outer, [&](std::size_t i) {
+    grades[i] = grade_one(submissions[i], names[i], c.work + "/" + std::to_string(i), inner, c);
     const fs::path folder = single ? fs::path(options.out) : fs::path(options.out) / names[i];
     write_results(grades[i], folder, c);
     std::lock_guard<std::mutex> lock(print);

@@ -37,6 +37,7 @@ struct StepGrade {
   Status status = Status::not_built;
   double score = 0;
   int cases = 0, ambiguous = 0;
+  double seconds = 0;    // the step's process, wall clock
   std::string feedback;  // what the student reads: never the seed
 };
 
@@ -44,6 +45,7 @@ struct LabGrade {
   const Lab* lab = nullptr;
   enum class State { graded, missing, not_built } state = State::graded;
   std::string build_output;  // compiler errors, or why the file is missing
+  double build_seconds = 0;  // compile, audit and link, wall clock
   std::vector<StepGrade> steps;
   double score = 0, max_score = 0;
 };

@@ -68,11 +68,13 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
   if (!s.error.empty()) out << "  could not be read: " << s.error << "\n";
   for (const std::string& note : s.notes) out << "  note: " << note << "\n";
   for (const LabGrade& l : s.labs) {
-    out << "\n  " << pad(lab_heading(l), 56) << pad(lab_state(l), 20) << points(l.score) << " / " << points(l.max_score)
-        << "\n";
+    out << "\n  " << pad(lab_heading(l), 56)
+        << pad(l.state == LabGrade::State::graded ? "built in " + seconds_text(l.build_seconds) + " s" : lab_state(l), 20)
+        << points(l.score) << " / " << points(l.max_score) << "\n";
     for (const StepGrade& g : l.steps)
       out << "    " << pad(std::to_string(g.step->number), 3) << pad(g.step->tag, 7) << pad(g.step->title, 44)
-          << pad(l.state == LabGrade::State::graded ? status_word(g.status) : lab_state(l), 20) << points(g.score) << " / " << points(g.step->points) << "\n";
+          << pad(l.state == LabGrade::State::graded ? status_word(g.status) : lab_state(l), 20) << pad(points(g.score) + " / " + points(g.step->points), 10)
+          << (l.state == LabGrade::State::graded ? seconds_text(g.seconds) + " s" : "") << "\n";
   }
   out << "\n  " << pad("Total", 76) << points(s.score) << " / " << points(s.max_score) << "   (" << seconds_text(s.seconds)
       << " s)\n";
@@ -158,12 +160,14 @@ std::string junit_xml(const SubmissionGrade& s) {
 }
 
 std::string steps_tsv(const SubmissionGrade& s) {
-  std::string out = "lab\tstep\ttag\tstatus\tscore\tmax\n";
-  for (const LabGrade& l : s.labs)
+  // seconds: the step's own process, wall clock.
+  std::string out = "lab\tstep\ttag\tstatus\tscore\tmax\tseconds\n";
+  for (const LabGrade& l : s.labs) {
     for (const StepGrade& g : l.steps)
       out += l.lab->id + "\t" + std::to_string(g.step->number) + "\t" + g.step->tag + "\t" +
              (l.state == LabGrade::State::graded ? status_word(g.status) : lab_state(l)) + "\t" + points(g.score) + "\t" +
-             points(g.step->points) + "\n";
+             points(g.step->points) + "\t" + seconds_text(g.seconds) + "\n";
+  }
   return out;
 }
 

@@ -99,6 +99,34 @@ std::string submission_name(const std::string& path) {
   return name.empty() || name[0] == '.' ? "submission" + name : name;
 }
 
+std::vector<std::string> class_members(const std::string& path, const std::vector<const Lab*>& labs) {
+  std::error_code e;
+  if (!fs::is_directory(path, e) || fs::exists(fs::path(path) / "labs", e)) return {};
+  std::vector<std::string> names;
+  for (const Lab* lab : labs)
+    for (const std::string& f : lab->student_files) names.push_back(fs::path(f).filename().string());
+  const auto is_student_file = [&](const fs::path& p) {
+    return std::find(names.begin(), names.end(), p.filename().string()) != names.end();
+  };
+  std::vector<std::string> archives, folders, all_folders;  // folders: those with a student file
+  for (const fs::directory_entry& entry : fs::directory_iterator(path, e)) {
+    const fs::file_status s = entry.symlink_status(e);
+    if (fs::is_regular_file(s) && is_student_file(entry.path())) return {};  // files uploaded one by one
+    if (fs::is_regular_file(s) && format_of(entry.path().string()) != Format::unknown) archives.push_back(entry.path().string());
+    if (!fs::is_directory(s) || entry.path().filename().string()[0] == '.') continue;
+    all_folders.push_back(entry.path().string());
+    const std::vector<std::string> inside = regular_files(entry.path());
+    if (std::any_of(inside.begin(), inside.end(), [&](const std::string& f) { return is_student_file(f); }))
+      folders.push_back(entry.path().string());
+  }
+  if (archives.empty() && folders.size() < 2) return {};
+  // A class: every archive and folder in it is a student's, an empty one too (it scores 0).
+  std::vector<std::string> members = archives;
+  members.insert(members.end(), all_folders.begin(), all_folders.end());
+  std::sort(members.begin(), members.end());
+  return members;
+}
+
 Submission read_submission(const std::string& path, const std::vector<const Lab*>& labs, const std::string& work,
                            const Sandbox& sandbox) {
   Submission s;

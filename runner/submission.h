@@ -26,6 +26,12 @@ struct Submission {
 // The name a submission's results are filed under.
 std::string submission_name(const std::string& path);
 
+// The submissions a folder holds when it is a class's folder (one sub-folder, .zip or
+// .tar.gz per student), sorted; empty when `path` is one submission. A folder is one
+// submission when a student file lies at its top or under its labs/; it is a class when
+// it holds archives, or two or more sub-folders with a student file in them.
+std::vector<std::string> class_members(const std::string& path, const std::vector<const Lab*>& labs);
+
 // Finds the student files of `labs` in the submission at `path`; an archive is unpacked
 // (only those files) into `work`, confined by `sandbox`.
 Submission read_submission(const std::string& path, const std::vector<const Lab*>& labs, const std::string& work,

@@ -119,29 +119,35 @@ echo "graded $(ls "$subs" | wc -l) submissions in $(($(date +%s) - started)) s (
 [ $code -eq 0 ] || { cat "$work/grade.log"; fail "labkit grade exits $code"; }
 
 # expect NAME LAB02 [STEP=STATUS ...]: lab 02 as LAB02 says (graded: each STEP has that
-# status and 0 points, any other step full points; or "does not compile", "not
-# submitted"); every other lab full marks.
+# status and 0 points; or "does not compile", "not submitted" for all of it); every
+# other row (each step of every other lab, each step of lab 02 the fault does not
+# reach) exactly as the reference's own grade has it: same status, same points.
 expect() {
   local name="$1" state="$2"
   shift 2
   local tsv="$out/$name/steps.tsv"
   [ -f "$tsv" ] || { fail "$name: no results"; return; }
-  local lab step tag status score max want
+  local lab step tag status score max want faulty
   while IFS=$'\t' read -r lab step tag status score max; do
     [ "$lab" = lab ] && continue
-    want="passed"
+    faulty=""
     if [ "$lab" = 02 ]; then
-      [ "$state" = graded ] || want="$state"
-      for rule in "$@"; do [ "${rule%%=*}" = "$step" ] && want="${rule#*=}"; done
+      [ "$state" = graded ] || faulty="$state"
+      for rule in "$@"; do [ "${rule%%=*}" = "$step" ] && faulty="${rule#*=}"; done
     fi
-    [ "$status" = "$want" ] || fail "$name: lab $lab step $step is '$status', expected '$want'"
-    if [ "$want" = passed ]; then
-      [ "$score" = "$max" ] || fail "$name: lab $lab step $step scores $score of $max"
-    elif [ "$want" != "failing (partial)" ]; then
+    if [ -n "$faulty" ]; then
+      [ "$status" = "$faulty" ] || fail "$name: lab $lab step $step is '$status', expected '$faulty'"
       [ "$score" = 0 ] || fail "$name: lab $lab step $step scores $score, expected 0"
+    else
+      want="$(awk -F'\t' -v l="$lab" -v s="$step" '$1 == l && $2 == s { print $4 "\t" $5 }' "$out/reference/steps.tsv")"
+      [ "$status"$'\t'"$score" = "$want" ] ||
+        fail "$name: lab $lab step $step is '$status' with $score points; without the fault: '${want/$'\t'/' with '} points"
     fi
   done <"$tsv"
 }
+# The reference itself: every step passed, full points.
+awk -F'\t' 'NR > 1 && ($4 != "passed" || $5 != $6) { print "FAIL: reference: lab " $1 " step " $2 " is " $4 " with " $5 " of " $6; bad = 1 }
+            END { exit bad }' "$out/reference/steps.tsv" || failures=$((failures + 1))
 expect reference graded
 expect extra_files graded
 expect escape graded
