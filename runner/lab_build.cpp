@@ -297,6 +297,9 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
     const std::string path = absolute_in(recipe.link.directory, word);
     if (path == recipe.student_library) {
       argv.insert(argv.end(), objects.begin(), objects.end());
+      // No debug sections: a graded binary is run, never debugged, and this makes it
+      // 4 MB instead of 50 (a class of twenty writes a gigabyte less) and links faster.
+      argv.push_back("-Wl,--strip-debug");
       continue;
     }
     const bool file = word[0] != '-' && fs::is_regular_file(path);

@@ -110,7 +110,7 @@ reference "$subs/all_or_nothing" && cp "$build/mutants/02_segment_triangle/cross
 # so that a loaded machine never turns a slow step into a time-out.
 mkdir -p "$work/loop" && mv "$subs/endless_loop" "$work/loop/"
 started=$(date +%s)
-"$runner" grade "$subs"/* --out "$out" --seed "$secret" --cases 300 --timeout 120 --jobs 2 >"$work/grade.log" 2>&1
+"$runner" grade "$subs" --out "$out" --seed "$secret" --cases 300 --timeout 120 --jobs 2 >"$work/grade.log" 2>&1
 code=$?
 "$runner" grade "$work/loop/endless_loop" --out "$out/endless_loop" --seed "$secret" --cases 100 --timeout 8 --jobs 2 \
   >>"$work/grade.log" 2>&1 || code=$?
@@ -227,6 +227,36 @@ grep -q "<error type=\"crashed\"" "$out/segfault/junit.xml" || fail "segfault: j
 [ "$(wc -l <"$out/class.csv")" = "$(ls "$subs" | wc -l)" ] || fail "class.csv: one row per submission (the endless loop is graded apart)"
 head -n 1 "$out/class.csv" | grep -qE "^submission,(lab[0-9]{2},)+total,max$" || fail "class.csv's header is $(head -n 1 "$out/class.csv")"
 
+# JUnit XML that a CI server can read.
+if command -v python3 >/dev/null; then
+  python3 -c 'import sys, xml.etree.ElementTree as T
+for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml || fail "a junit.xml is not well-formed XML"
+fi
+
+# The table: each fault, what the grader reported for it, and what it kept.
+declare -A fault=(
+  [reference]="none: the reference itself" [empty]="empty submission" [stubs]="the stubs, unchanged"
+  [compile_error]="compile error in lab 02" [segfault]="segfault (null write)" [endless_loop]="endless loop"
+  [allocate_50gb]="allocating 50 GB" [print_100mb]="printing 100 MB" [exit_0]="exit(0) in a test"
+  [escape]="writing outside its folder, kill(-1)" [extra_files]="extra files replacing a test, headers, CMake, manifest"
+  [steal_seed]="reading the secret seed" [early_constructor]="constructor before the harness"
+  [symlink]="lab file is a symlink to the reference" [include_reference]="#include of the reference"
+  [own_main]="its own main()" [partial]="classic mistake (beta sign), partial steps" [all_or_nothing]="classic mistake, all-or-nothing step")
+echo
+printf '%-44s | %-58s | %-9s | %s\n' "fault (in lab 02)" "what the grader reported for lab 02" "lab 02" "other labs kept"
+for name in reference empty stubs compile_error segfault endless_loop allocate_50gb print_100mb exit_0 escape extra_files \
+  steal_seed early_constructor symlink include_reference own_main partial all_or_nothing; do
+  [ -f "$out/$name/steps.tsv" ] || continue
+  awk -F'\t' -v f="${fault[$name]}" 'FNR == 1 { next }
+    FNR == NR { ref[$1 "/" $2] = $4; refscore[$1] += $5; next }
+    $1 == "02" { lab02 += $5; max02 += $6; if ($4 != ref["02/" $2]) said[$4] = said[$4] (said[$4] == "" ? "" : ",") $2 }
+    $1 != "02" { other += $5 }
+    END { for (r in refscore) if (r != "02") otherref += refscore[r]
+          for (s in said) reported = reported (reported == "" ? "" : "; ") s " (step " said[s] ")"
+          if (reported == "") reported = "as the reference"
+          printf "%-44s | %-58s | %4s/%-4s | %s of %s\n", f, reported, lab02, max02, other, otherref }' \
+    "$out/reference/steps.tsv" "$out/$name/steps.tsv"
+done
 echo
 cat "$out/class.csv"
 echo
