@@ -5,6 +5,9 @@
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -15,7 +18,7 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr int kFirstUid = 61000;
-constexpr int kUids = 64;
+constexpr int kUids = 1024;
 constexpr long kProcesses = 256;  // per confined run (its own uid)
 
 std::mutex uid_mutex;
@@ -32,19 +35,51 @@ void kill_all_of(int uid) {
   if (pid > 0) waitpid(pid, nullptr, 0);
 }
 
+// A uid is leased machine-wide, not only in this process: two graders at once (a class
+// and a resubmission) must never share one, or the end of one run's lease would kill
+// the other's processes and each could write the other's scratch folder. The lease is
+// an flock on /run/lock/labkit-uids/UID (or under /tmp), which the kernel drops when
+// this process dies, however it dies.
+int lock_uid_file(int uid) {
+  static const std::string folder = [] {
+    for (const char* parent : {"/run/lock", "/tmp"}) {
+      std::error_code e;
+      const fs::path f = fs::path(parent) / "labkit-uids";
+      fs::create_directories(f, e);
+      if (!e && access(f.c_str(), W_OK) == 0) {
+        chmod(f.c_str(), 0755);
+        return f.string();
+      }
+    }
+    throw std::runtime_error("cannot make a folder for uid leases in /run/lock or /tmp");
+  }();
+  const std::string path = folder + "/" + std::to_string(uid);
+  const int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (fd < 0) return -1;
+  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    close(fd);
+    return -1;
+  }
+  return fd;
+}
+
 std::shared_ptr<void> lease_uid(int* uid) {
   std::lock_guard<std::mutex> lock(uid_mutex);
-  for (int i = 0; i < kUids; ++i)
-    if (!uids_in_use[i]) {
-      uids_in_use[i] = true;
-      *uid = kFirstUid + i;
-      return std::shared_ptr<void>(nullptr, [i](void*) {
-        kill_all_of(kFirstUid + i);
-        std::lock_guard<std::mutex> lock(uid_mutex);
-        uids_in_use[i] = false;
-      });
-    }
-  throw std::runtime_error("more than 64 confined runs at once");
+  for (int i = 0; i < kUids; ++i) {
+    if (uids_in_use[i]) continue;
+    const int fd = lock_uid_file(kFirstUid + i);
+    if (fd < 0) continue;  // another grader holds it
+    uids_in_use[i] = true;
+    *uid = kFirstUid + i;
+    kill_all_of(*uid);  // whatever a crashed grader left running under it
+    return std::shared_ptr<void>(nullptr, [i, fd](void*) {
+      kill_all_of(kFirstUid + i);
+      std::lock_guard<std::mutex> lock(uid_mutex);
+      uids_in_use[i] = false;
+      close(fd);  // the lease ends after its processes do
+    });
+  }
+  throw std::runtime_error("no free uid among " + std::to_string(kUids) + " for a confined run");
 }
 
 void chown_all(const fs::path& root, int uid) {

@@ -11,7 +11,7 @@
 // and, when the grader runs as root, the unprivileged uid below protect the machine.
 //
 // Either way, when the grader runs as root, each confined run also runs under an
-// unprivileged uid of its own (one per concurrent run, 61000 and up), which owns its
+// unprivileged uid of its own (one per concurrent run, 61000 and up, leased machine-wide so that two graders never share one), which owns its
 // scratch folder and nothing else, with a cap on its processes: it can write nowhere
 // else, and a fork bomb starves only itself.
 #pragma once
