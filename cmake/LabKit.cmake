@@ -5,6 +5,8 @@
 #   tests/NN_name.judge.cpp       -> labNN_judge       (verdicts against the oracle; the viewer shares it)
 #   tests/NN_name.test.cpp        -> compiled once, linked twice:
 #                                    test_NN_name_student and test_NN_name_reference
+#   grading record                -> build/grading/NN_name.{json,link}: how ./labkit grade
+#                                    links a submission (see runner/lab_build.h)
 #   tests/NN_name.mutants.cmake   -> the reference with one classic mistake each; ctest
 #                                    expects the step each one breaks to fail
 #   viewer/scenes/NN_name.cpp     -> the lab's viewer scene, compiled into both viewers
@@ -45,6 +47,16 @@ function(labkit_add_lab number name)
   foreach(impl IN LISTS implementations)
     labkit_add_test_binary(${number} ${name} ${impl} ${lab}_${impl})
   endforeach()
+
+  # `./labkit grade` builds a submission's lab by compiling its file(s) as the stub is
+  # compiled (compile_commands.json) and linking them as the stub's test binary is
+  # linked: that link command is recorded each time the kit runs it.
+  set(link_record "${PROJECT_BINARY_DIR}/grading/${stem}.link")
+  set_target_properties(test_${stem}_student PROPERTIES
+    CXX_LINKER_LAUNCHER "${PROJECT_SOURCE_DIR}/cmake/record-command.sh;${link_record}")
+  file(GENERATE OUTPUT "${PROJECT_BINARY_DIR}/grading/${stem}.json" CONTENT
+    "{\"lab\": \"${number}\", \"student_library\": \"$<TARGET_FILE:${lab}_student>\", \"link_record\": \"${link_record}\"}\n")
+  set_property(GLOBAL APPEND PROPERTY LABKIT_GRADING_TARGETS test_${stem}_student)
 
   # ctest: one test per step of the reference. Each leaves its harness report in
   # build/reports/, which `labkit-runner report` sums up after the suite.

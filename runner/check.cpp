@@ -27,20 +27,6 @@ std::string lines_from(const std::string& text, std::size_t first, std::size_t c
   return out;
 }
 
-// The first compiler errors of a build log, with paths relative to the kit's root.
-std::string first_errors(const std::string& log, const std::string& root) {
-  std::istringstream in(log);
-  std::string line;
-  std::size_t index = 0, first = std::string::npos;
-  while (std::getline(in, line)) {
-    if (first == std::string::npos && (line.find("error:") != std::string::npos || line.find("Error") == 0)) first = index;
-    ++index;
-  }
-  std::string excerpt = lines_from(log, first == std::string::npos ? 0 : first, 24);
-  for (std::size_t at; (at = excerpt.find(root + "/")) != std::string::npos;) excerpt.erase(at, root.size() + 1);
-  return excerpt;
-}
-
 std::string coloured_status(Status s) {
   const std::string word = status_word(s);
   switch (s) {
@@ -78,7 +64,7 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
   std::cout << "\n" << bold("Lab " + lab.id + ", step " + std::to_string(step.number) + " (" + step.tag + ", " + step.title + "): ") +
                          coloured_status(r.status)
             << "\n";
-  if (r.status == Status::crashed || r.status == Status::timed_out || r.status == Status::flooded) {
+  if (abnormal(r.status)) {
     std::cout << "  what      " << r.detail << "\n";
     if (!r.inflight.empty()) {
       const std::string binary = paths.build + "/" + lab.test_binary("student");
@@ -113,6 +99,19 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
 }
 
 }  // namespace
+
+std::string first_errors(const std::string& log, const std::string& root) {
+  std::istringstream in(log);
+  std::string line;
+  std::size_t index = 0, first = std::string::npos;
+  while (std::getline(in, line)) {
+    if (first == std::string::npos && (line.find("error:") != std::string::npos || line.find("Error") == 0)) first = index;
+    ++index;
+  }
+  std::string excerpt = lines_from(log, first == std::string::npos ? 0 : first, 24);
+  for (std::size_t at; (at = excerpt.find(root + "/")) != std::string::npos;) excerpt.erase(at, root.size() + 1);
+  return excerpt;
+}
 
 std::string build_target(const Paths& paths, const std::string& target, bool* ok) {
   Limits limits;

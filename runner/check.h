@@ -29,6 +29,9 @@ struct CheckOptions {
 
 int check(const Paths& paths, const CheckOptions& options);
 
+// The first compiler errors of a build log (24 lines), with `root/` taken out of paths.
+std::string first_errors(const std::string& log, const std::string& root);
+
 // Builds one target; on failure returns the first compiler errors, else "".
 std::string build_target(const Paths& paths, const std::string& target, bool* ok);
 

@@ -5,6 +5,7 @@
 #include <csignal>
 #include <cstring>
 #include <fcntl.h>
+#include <grp.h>
 #include <poll.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
@@ -43,7 +44,7 @@ class Capture {
 
 [[noreturn]] void exec_child(const std::vector<std::string>& argv, const Environment& env, const Limits& limits,
                              const std::string& directory, int output) {
-  setpgid(0, 0);  // its own group: a time-out kills everything it started
+  setsid();  // its own session and group: a time-out kills everything it started; no terminal
   dup2(output, 1);
   dup2(output, 2);
   close(output);
@@ -55,10 +56,25 @@ class Capture {
     rlimit memory{limits.memory_bytes, limits.memory_bytes};
     setrlimit(RLIMIT_AS, &memory);
   }
+  if (limits.file_bytes > 0) {
+    rlimit file{limits.file_bytes, limits.file_bytes};
+    setrlimit(RLIMIT_FSIZE, &file);
+  }
+  if (limits.processes > 0) {
+    rlimit processes{rlim_t(limits.processes), rlim_t(limits.processes)};
+    setrlimit(RLIMIT_NPROC, &processes);
+  }
   for (const auto& [name, value] : env) setenv(name.c_str(), value.c_str(), 1);
   if (!directory.empty() && chdir(directory.c_str()) != 0) {
     dprintf(2, "labkit: cannot enter %s: %s\n", directory.c_str(), strerror(errno));
     _exit(126);
+  }
+  if (limits.uid >= 0) {
+    const gid_t gid = gid_t(limits.gid >= 0 ? limits.gid : limits.uid);
+    if (setgroups(0, nullptr) != 0 || setresgid(gid, gid, gid) != 0 || setresuid(uid_t(limits.uid), uid_t(limits.uid), uid_t(limits.uid)) != 0) {
+      dprintf(2, "labkit: cannot switch to uid %d: %s\n", limits.uid, strerror(errno));
+      _exit(126);
+    }
   }
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
@@ -91,7 +107,6 @@ Run run(const std::vector<std::string>& argv, const Environment& env, const Limi
     exec_child(argv, env, limits, directory, pipe_fds[1]);
   }
   close(pipe_fds[1]);
-  setpgid(pid, pid);  // also here, so there is no race with the child's own call
 
   Capture capture(limits.kept_bytes);
   const auto deadline = start + std::chrono::duration<double>(limits.seconds);

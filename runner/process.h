@@ -15,6 +15,9 @@ struct Limits {
   std::size_t memory_bytes = 0;           // address space (RLIMIT_AS); 0: no limit
   std::size_t kept_bytes = 256 * 1024;    // output kept: the first half and the last half
   std::size_t flood_bytes = 64u << 20;    // output beyond this kills the process
+  std::size_t file_bytes = 0;             // largest file it may write (RLIMIT_FSIZE); 0: no limit
+  long processes = 0;                     // processes of its uid (RLIMIT_NPROC); 0: no limit
+  int uid = -1, gid = -1;                 // run under this uid and gid (needs root); -1: as we are
 };
 
 struct Run {
@@ -32,6 +35,7 @@ struct Run {
 
 using Environment = std::vector<std::pair<std::string, std::string>>;
 
+// The child runs in its own session (so its own process group, and no terminal).
 Run run(const std::vector<std::string>& argv, const Environment& extra_environment = {}, const Limits& limits = {},
         const std::string& directory = "");
 

@@ -19,10 +19,17 @@ std::string status_word(Status s) {
     case Status::crashed: return "crashed";
     case Status::timed_out: return "timed out";
     case Status::flooded: return "too much output";
+    case Status::out_of_memory: return "out of memory";
+    case Status::exited_early: return "exited early";
     case Status::no_tests: return "no tests (kit error)";
     case Status::not_built: return "does not compile";
   }
   return "?";
+}
+
+bool abnormal(Status s) {
+  return s == Status::crashed || s == Status::timed_out || s == Status::flooded || s == Status::out_of_memory ||
+         s == Status::exited_early;
 }
 
 namespace {
@@ -36,6 +43,7 @@ void read_report(const fs::path& path, StepResult& r) {
   } catch (const nlohmann::json::exception&) {
     return;  // cut short by a crash: what the run printed says more
   }
+  r.finished = j.value("finished", false);
   for (const auto& t : j.value("test_cases", nlohmann::json::array()))
     r.test_cases.push_back({t.value("name", ""), t.value("passed", false),
                             t.value("failures", std::vector<std::string>{}), t.value("not_implemented", "")});
@@ -67,11 +75,23 @@ std::string inflight_token(const std::string& output) {
   return output.substr(at + mark.size(), end == std::string::npos ? std::string::npos : end - at - mark.size());
 }
 
+bool out_of_memory(const StepResult& r) {
+  if (r.run.output.find("std::bad_alloc") != std::string::npos) return true;
+  for (const QueryResult& q : r.queries)
+    if (q.failure && q.failure->got.find("std::bad_alloc") != std::string::npos) return true;
+  return false;
+}
+
 Status decide(const StepResult& r) {
   if (r.run.flooded) return Status::flooded;
   if (r.run.timed_out) return Status::timed_out;
-  if (r.run.signal != 0 || !r.run.started) return Status::crashed;
+  if (!r.run.started) return Status::crashed;
+  if (out_of_memory(r)) return Status::out_of_memory;
+  if (r.run.signal != 0) return Status::crashed;
   if (r.run.output.find("No test cases matched") != std::string::npos) return Status::no_tests;
+  // The session never returned: exit() in the code under test (even exit(0)), or a death
+  // the harness never saw. Its counts stop where it stopped, so they are not a verdict.
+  if (!r.finished) return Status::exited_early;
   bool failing = false, stub = false;
   for (const QueryResult& q : r.queries) {
     if (!q.not_implemented.empty()) stub = true;
@@ -83,12 +103,20 @@ Status decide(const StepResult& r) {
   }
   if (failing) return Status::failing;
   if (stub) return Status::not_implemented;
-  if (r.run.exit_code != 0) {
-    // It ended with an error and no report explains it: it left early (exit() in the
-    // code under test) or died in a way the harness never saw.
-    return r.test_cases.empty() || r.test_cases.back().passed ? Status::crashed : Status::failing;
-  }
+  if (r.run.exit_code != 0) return Status::failing;  // Catch failed something the harness did not see
   return Status::passed;
+}
+
+double fraction_passed(const StepResult& r) {
+  if (r.status == Status::passed) return 1.0;
+  if (r.status != Status::failing && r.status != Status::not_implemented) return 0.0;
+  double sum = 0;
+  int parts = 0;
+  for (const QueryResult& q : r.queries) {
+    ++parts;
+    if (q.cases > 0 && q.not_implemented.empty() && q.error.empty()) sum += double(q.passed + q.ambiguous) / q.cases;
+  }
+  return parts > 0 ? sum / parts : 0.0;
 }
 
 }  // namespace
@@ -96,44 +124,71 @@ Status decide(const StepResult& r) {
 StepResult run_step(const std::string& binary, const Lab& lab, const Step& step, const StepOptions& options) {
   StepResult r;
   r.step = &step;
-  char scratch_template[] = "/tmp/labkit.XXXXXX";
-  const char* scratch = mkdtemp(scratch_template);
-  const fs::path report = fs::path(scratch ? scratch : "/tmp") / "report.json";
+  std::string scratch_template = options.scratch_parent + "/labkit-step.XXXXXX";
+  const char* scratch = mkdtemp(scratch_template.data());
+  if (!scratch) {
+    r.run.started = false;
+    r.run.output = "cannot make a scratch folder in " + options.scratch_parent;
+    r.status = Status::crashed;
+    r.detail = r.run.output;
+    return r;
+  }
+  const fs::path report = fs::path(scratch) / "report.json";
 
   Environment env = {{"LABKIT_REPORT", report.string()}};
-  if (!options.seed.empty()) env.push_back({"LABKIT_SEED", options.seed});
+  if (!options.seed.empty() && options.hide_seed) {
+    // A secret seed never goes on a command line or in the environment (which other
+    // processes, the sandbox's own included, could show): a file the harness deletes.
+    const fs::path seed_file = fs::path(scratch) / ".seed";
+    std::ofstream(seed_file) << options.seed;
+    fs::permissions(seed_file, fs::perms::owner_read | fs::perms::owner_write);
+    env.push_back({"LABKIT_SEED_FILE", seed_file.string()});
+  } else if (!options.seed.empty()) {
+    env.push_back({"LABKIT_SEED", options.seed});
+  }
   if (options.cases > 0) env.push_back({"LABKIT_CASES", std::to_string(options.cases)});
   if (!options.replay.empty()) env.push_back({"LABKIT_REPLAY", options.replay});
   if (options.hide_seed) env.push_back({"LABKIT_HIDE_SEED", "1"});
+  if (options.count_all) env.push_back({"LABKIT_COUNT_ALL", "1"});
   if (options.describe_only) env.push_back({"LABKIT_DESCRIBE", "1"});
   const std::string filter = "[lab" + lab.id + "][step" + std::to_string(step.number) + "]";
-  r.run = run({binary, filter}, env, options.limits, scratch ? scratch : "");
+  if (options.sandbox) {
+    const Confined confined =
+        options.sandbox->confine({binary, filter}, scratch, {fs::path(binary).parent_path().string()}, options.limits);
+    r.run = run(confined.argv, env, confined.limits, scratch);
+    options.sandbox->interpret(r.run);
+  } else {
+    r.run = run({binary, filter}, env, options.limits, scratch);
+  }
   read_report(report, r);
-  if (scratch) fs::remove_all(scratch);
+  std::error_code ignored;
+  fs::remove_all(scratch, ignored);
 
   r.inflight = inflight_token(r.run.output);
   r.status = decide(r);
   if (r.status == Status::crashed) {
     if (r.run.signal) r.detail = "the test process was killed by " + signal_name(r.run.signal);
-    else if (!r.run.started) r.detail = "the test binary could not be run";
-    else r.detail = "the test process ended early with exit status " + std::to_string(r.run.exit_code) +
-                    " (does the code call exit() or abort()?)";
-    if (r.run.output.find("bad_alloc") != std::string::npos) r.detail += "; it ran out of memory (std::bad_alloc)";
+    else r.detail = "the test binary could not be run: " + r.run.output.substr(0, 300);
   }
+  if (r.status == Status::exited_early) {
+    r.detail = "the test process ended before its tests did, with exit status " + std::to_string(r.run.exit_code) +
+               " (does the code call exit(), quick_exit() or _exit()?)";
+  }
+  if (r.status == Status::out_of_memory)
+    r.detail = "it ran out of memory (std::bad_alloc" +
+               (options.limits.memory_bytes ? ", the limit is " + std::to_string(options.limits.memory_bytes >> 20) + " MB" : std::string()) +
+               ")";
   if (r.status == Status::timed_out)
     r.detail = "it did not finish within " + std::to_string(int(options.limits.seconds)) + " s (an endless loop?)";
   if (r.status == Status::flooded)
     r.detail = "it printed more than " + std::to_string(options.limits.flood_bytes >> 20) + " MB and was stopped";
 
-  int cases = 0, passed = 0;
   for (const QueryResult& q : r.queries) {
     if (q.kind == "examples") r.examples += q.cases;
     else r.random_cases += q.cases;
     r.ambiguous += q.ambiguous;
-    cases += q.cases;
-    passed += q.passed + q.ambiguous;
   }
-  r.fraction_passed = r.status == Status::passed ? 1.0 : (cases > 0 ? double(passed) / cases : 0.0);
+  r.fraction_passed = fraction_passed(r);
   return r;
 }
 

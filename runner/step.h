@@ -5,6 +5,7 @@
 
 #include "manifest.h"
 #include "process.h"
+#include "sandbox.h"
 
 #include <optional>
 #include <string>
@@ -19,6 +20,8 @@ enum class Status {
   crashed,
   timed_out,
   flooded,
+  out_of_memory,
+  exited_early,  // exit() or _exit() inside a test: the session never finished
   no_tests,   // the binary has no test for this step: a kit bug, never the student's
   not_built,  // the lab did not compile
 };
@@ -52,17 +55,27 @@ struct StepResult {
   std::string detail;    // why it crashed, timed out, ...
   std::string inflight;  // the replay token of the case a crash or time-out died on
   Run run;
+  bool finished = false; // the harness's report says the test session returned
   int examples = 0, random_cases = 0, ambiguous = 0;
-  double fraction_passed = 0;  // of cases, for partial credit
+  // For partial credit: the mean, over the step's queries (its examples of a query, its
+  // random cases of a query), of the fraction of cases passed; ambiguous cases pass.
+  // 1 when the step passes, 0 when it did not run to its end.
+  double fraction_passed = 0;
 };
+
+// True for the ways a step can end without a verdict on its cases.
+bool abnormal(Status s);
 
 struct StepOptions {
   std::string seed;           // "" = the harness's public default
   int cases = 0;              // 0 = the harness's default
   std::string replay;         // one case only
   bool hide_seed = false;
+  bool count_all = false;     // judge every random case (partial credit), LABKIT_COUNT_ALL
   bool describe_only = false; // with `replay`: describe the input, run no code under test
   Limits limits;
+  const Sandbox* sandbox = nullptr;  // graded runs: the step runs confined to its scratch folder
+  std::string scratch_parent = "/tmp";  // where each step's scratch folder is made
 };
 
 StepResult run_step(const std::string& binary, const Lab& lab, const Step& step, const StepOptions& options);

@@ -46,5 +46,8 @@ CATCH_TRANSLATE_EXCEPTION(const labkit::NotImplemented& e) { return e.what(); }
 
 int main(int argc, char* argv[]) {
   labkit::check::report::install_signal_handlers();
-  return labkit::check::report::run_catch_session(argc, argv);
+  labkit::check::report::read_settings_first();
+  const int status = labkit::check::report::run_catch_session(argc, argv);
+  labkit::check::report::session_finished();
+  return status;
 }

@@ -45,6 +45,20 @@ Settings read_settings() {
   if (const char* v = std::getenv("LABKIT_REPORT")) s.report = v;
   if (const char* v = std::getenv("LABKIT_HIDE_SEED")) s.hide_seed = std::string(v) == "1";
   if (const char* v = std::getenv("LABKIT_DESCRIBE")) s.describe_only = std::string(v) == "1";
+  if (const char* v = std::getenv("LABKIT_COUNT_ALL")) s.count_all = std::string(v) == "1";
+  // A graded run's seed is a secret: it comes in a file that is deleted once read, and
+  // is wiped from the environment (getenv, and /proc/self/environ, which shows the
+  // original bytes in place), before any code under test runs (see read_early below).
+  if (const char* v = std::getenv("LABKIT_SEED_FILE"); v && *v) {
+    std::ifstream in(v);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!text.empty()) s.seed = parse_seed(text);
+    std::remove(v);
+  }
+  if (char* v = std::getenv("LABKIT_SEED"); v && s.hide_seed) {
+    std::memset(v, 0, std::strlen(v));
+    unsetenv("LABKIT_SEED");
+  }
   return s;
 }
 
@@ -58,6 +72,8 @@ std::deque<report::TestCase>& test_cases() {
   static std::deque<report::TestCase> all;
   return all;
 }
+
+bool run_finished = false;  // the test session returned: the process did not end early
 
 std::string current_test_name() {
   if (Catch::IResultCapture* capture = &Catch::getResultCapture()) return capture->getCurrentTestName();
@@ -74,6 +90,10 @@ const Settings& settings() {
   static const Settings s = read_settings();
   return s;
 }
+
+// Before any other static initializer (a student file's included): the seed file is gone
+// and the environment wiped by the time code under test could look.
+__attribute__((constructor(101))) static void read_early() { settings(); }
 
 namespace detail {
 
@@ -115,6 +135,7 @@ void save_report() {
   nlohmann::json j;
   j["seed"] = settings().hide_seed ? nlohmann::json("hidden") : nlohmann::json(settings().seed);
   j["cases_per_query"] = settings().cases;
+  j["finished"] = run_finished;
   j["test_cases"] = nlohmann::json::array();
   for (const report::TestCase& t : test_cases()) j["test_cases"].push_back(report::to_json(t));
   j["queries"] = nlohmann::json::array();
@@ -171,12 +192,13 @@ std::string indent(const std::string& text, const std::string& prefix) {
 }
 
 nlohmann::json to_json(const TestCase& t) {
-  return {{"name", t.name}, {"tags", t.tags}, {"passed", t.passed}, {"failures", t.failures},
-          {"not_implemented", t.not_implemented}};
+  return {{"name", t.name},         {"tags", t.tags},
+          {"passed", t.passed},     {"ended", t.ended},
+          {"failures", t.failures}, {"not_implemented", t.not_implemented}};
 }
 
 void test_case_started(const std::string& name, const std::vector<std::string>& tags) {
-  test_cases().push_back({name, tags, false, {}, {}});
+  test_cases().push_back({name, tags, false, false, {}, {}});
   detail::save_report();
 }
 
@@ -193,6 +215,14 @@ void assertion_failed(const std::string& message) {
 void test_case_ended(bool passed) {
   if (test_cases().empty()) return;
   test_cases().back().passed = passed;
+  test_cases().back().ended = true;
+  detail::save_report();
+}
+
+void read_settings_first() { settings(); }
+
+void session_finished() {
+  run_finished = true;
   detail::save_report();
 }
 

@@ -31,12 +31,17 @@
 namespace labkit::check {
 
 // Everything a run can be told, read once from the environment (the runner sets them):
-//   LABKIT_SEED    seed of the random cases (default: the public seed 1)
+//   LABKIT_SEED    seed of the random cases (default: the public seed 1); any text
+//   LABKIT_SEED_FILE  graded runs: a file holding the seed, deleted once read
 //   LABKIT_CASES   random cases per query (default 10000)
 //   LABKIT_REPLAY  a replay token: run that one case and nothing else
 //   LABKIT_REPORT  where to write the JSON report
-//   LABKIT_HIDE_SEED=1  graded runs: reports never show the seed
+//   LABKIT_HIDE_SEED=1  graded runs: reports never show the seed, and the seed is wiped
+//                       from the environment before any code under test runs
 //   LABKIT_DESCRIBE=1   with LABKIT_REPLAY: only describe the case's input
+//   LABKIT_COUNT_ALL=1  graded runs: random_cases judges all its cases even after a
+//                       failure, so the report counts how many passed (partial credit);
+//                       the first failure is still shrunk and reported
 struct Settings {
   std::uint64_t seed = 1;
   int cases = 10000;
@@ -44,6 +49,7 @@ struct Settings {
   std::string report;
   bool hide_seed = false;
   bool describe_only = false;  // LABKIT_DESCRIBE=1: with a replay, describe its input, run nothing
+  bool count_all = false;
 };
 const Settings& settings();
 
@@ -296,8 +302,39 @@ void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& j
     }
   }
 
+  rc::detail::TestParams params;
+  params.seed = detail::seed_for(query);
+  params.maxSuccess = s.cases;
+  params.maxSize = 100;
+  rc::detail::TestMetadata metadata;
+  metadata.id = metadata.description = query;
+  detail::QuietListener listener;
+
+  // Counting mode: a first pass judges every case and never stops; the second pass below
+  // then only finds the first failure again (same seed, same cases) and shrinks it.
+  int first_failing_case = 0;
+  std::optional<detail::Failure> first_failure;
+  if (s.count_all) {
+    const auto count = [&] {
+      const Input input = *gen;
+      detail::set_inflight(replay_token(query, input));
+      const Outcome o = detail::run_judge(judge, input, report);
+      detail::clear_inflight();
+      detail::tally(report, o);
+      if (o.verdict != Outcome::Verdict::fail || first_failing_case != 0) return;
+      first_failing_case = report.cases;
+      first_failure = detail::failure_of("", query, input, o);
+    };
+    rc::detail::checkProperty(rc::detail::toProperty(count), metadata, params, listener, {});
+    detail::save_report();
+    if (first_failing_case == 0) {
+      detail::report_to_catch(report, true);
+      return;
+    }
+  }
+
   // After the first failure RapidCheck only shrinks: those runs are not counted as cases.
-  bool shrinking = false;
+  bool shrinking = s.count_all;  // counting mode has counted every case already
   int shrinks = -1;
   std::optional<detail::Failure> smallest;
   const auto property = [&] {
@@ -313,19 +350,12 @@ void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& j
     smallest = detail::failure_of("", query, input, o);
     RC_FAIL(o.why);
   };
-
-  rc::detail::TestParams params;
-  params.seed = detail::seed_for(query);
-  params.maxSuccess = s.cases;
-  params.maxSize = 100;
-  rc::detail::TestMetadata metadata;
-  metadata.id = metadata.description = query;
-  detail::QuietListener listener;
   const auto result = rc::detail::checkProperty(rc::detail::toProperty(property), metadata, params, listener, {});
 
   if (result.template is<rc::detail::FailureResult>() && smallest) {
     smallest->shrinks = shrinks;
-    smallest->title = "random case " + std::to_string(report.cases) + " of " + std::to_string(s.cases);
+    const int at = s.count_all ? first_failing_case : report.cases;
+    smallest->title = "random case " + std::to_string(at) + " of " + std::to_string(s.cases);
     report.failure = smallest;
   } else if (result.template is<rc::detail::FailureResult>()) {
     // The property failed without a judge's verdict: the generator itself threw.
@@ -334,6 +364,12 @@ void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& j
     report.error = "the generator gave up: " + result.template get<rc::detail::GaveUpResult>().description;
   } else if (result.template is<rc::detail::Error>()) {
     report.error = "RapidCheck failed: " + result.template get<rc::detail::Error>().description;
+  } else if (first_failure) {
+    // It failed in the counting pass but not when run again: the code under test is
+    // not deterministic. The case it failed on is still the one to show.
+    first_failure->title = "random case " + std::to_string(first_failing_case) + " of " + std::to_string(s.cases) +
+                           " (it passed when run again: is the code deterministic?)";
+    report.failure = first_failure;
   }
   detail::save_report();
   detail::report_to_catch(report, true);

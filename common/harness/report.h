@@ -15,6 +15,7 @@ struct TestCase {
   std::string name;
   std::vector<std::string> tags;
   bool passed = false;
+  bool ended = false;                 // false when the process died or exited inside it
   std::vector<std::string> failures;  // the first few failed assertions, as Catch words them
   std::string not_implemented;        // set when a stub was reached
 };
@@ -25,6 +26,13 @@ std::string indent(const std::string& text, const std::string& prefix);
 void test_case_started(const std::string& name, const std::vector<std::string>& tags);
 void assertion_failed(const std::string& message);
 void test_case_ended(bool passed);
+// The whole session returned. A report without it comes from a process that ended early
+// (exit() in the code under test, a crash), whatever its exit status.
+void session_finished();
+
+// Reads the LABKIT_* settings before any test runs, so that a graded run's seed is wiped
+// from the environment before the code under test could look for it.
+void read_settings_first();
 
 // Prints the in-flight case on a crash or a time-out (SIGTERM) before the process dies.
 void install_signal_handlers();

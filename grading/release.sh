@@ -1,0 +1,92 @@
+#!/usr/bin/env bash
+# What students and Gradescope get, and nothing more (run through ./labkit):
+#
+#   release OUT_DIR                            the students' repository
+#   package gradescope [--out FILE] [--seed S] the autograder zip: the release, plus
+#                                              setup.sh, run_autograder and secret_seed
+#
+# The release is a list of what to take, not of what to leave out, so that a file added
+# to the kit later never reaches students by default. It never holds solutions/, the
+# mutants (tests/*.mutants.cmake are reference code with one edit), the hostile
+# submissions of tests/grading/, .ci/ or anything of grading/ but the manifest.
+# tests/kit/release.test.sh checks that no reference function body appears in it.
+set -euo pipefail
+
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+say() { printf 'labkit: %s\n' "$*" >&2; }
+
+make_release() {
+  local out="$1"
+  if [ -e "$out" ] && [ -n "$(ls -A "$out" 2>/dev/null)" ]; then
+    say "$out exists and is not empty; name a new folder"
+    exit 2
+  fi
+  mkdir -p "$out"
+  out="$(cd "$out" && pwd)"
+  case "$out/" in "$ROOT"/*) say "the release cannot go inside the kit itself"; exit 2 ;; esac
+  cd "$ROOT"
+  cp -p CMakeLists.txt CMakePresets.json labkit .gitignore "$out/"
+  local folder
+  for folder in cmake common labs runner viewer handouts; do
+    [ -d "$folder" ] && cp -pR "$folder" "$out/"
+  done
+  mkdir -p "$out/tests" "$out/grading"
+  cp -p tests/CMakeLists.txt tests/*.test.cpp tests/*.judge.h tests/*.judge.cpp "$out/tests/"
+  cp -pR tests/kit "$out/tests/"
+  cp -p grading/manifest.json "$out/grading/"
+  cp -p grading/student-README.md "$out/README.md"
+
+  # A stub always has a step left to write; a lab file that has none is not a stub
+  # (the reference copied over it, as CI does for a moment): never ship that.
+  local file
+  for file in "$out"/labs/*/*.cpp; do
+    if ! grep -q "not_implemented(" "$file"; then
+      say "${file#$out/} has no 'not_implemented(' step left: it is not a stub; release stopped"
+      rm -rf "$out"
+      exit 1
+    fi
+  done
+  say "wrote the student release in $out"
+}
+
+command="${1:-}"
+shift || true
+case "$command" in
+  release)
+    [ $# -eq 1 ] || { say "usage: ./labkit release OUT_DIR"; exit 2; }
+    make_release "$1"
+    ;;
+  package)
+    [ "${1:-}" = gradescope ] || { say "usage: ./labkit package gradescope [--out FILE] [--seed S]"; exit 2; }
+    shift
+    zip_file="${LABKIT_BUILD_DIR:-$ROOT/build}/gradescope-autograder.zip"
+    seed="${LABKIT_GRADING_SEED:-}"
+    while [ $# -gt 0 ]; do
+      case "$1" in
+        --out) zip_file="$2"; shift 2 ;;
+        --seed) seed="$2"; shift 2 ;;
+        *) say "unknown option '$1'"; exit 2 ;;
+      esac
+    done
+    seed_note="the one you gave"
+    if [ -z "$seed" ]; then
+      seed="$(od -An -N24 -tx1 /dev/urandom | tr -d ' \n')"
+      seed_note="a new random one (unzip -p the zip secret_seed shows it)"
+    fi
+    staging="$(mktemp -d)"
+    trap 'rm -rf "$staging"' EXIT
+    make_release "$staging/source" 2>/dev/null
+    cp -p "$ROOT"/grading/gradescope/setup.sh "$ROOT"/grading/gradescope/run_autograder "$staging/source/"
+    (umask 077 && printf '%s' "$seed" >"$staging/source/secret_seed")
+    mkdir -p "$(dirname "$zip_file")"
+    zip_file="$(cd "$(dirname "$zip_file")" && pwd)/$(basename "$zip_file")"
+    rm -f "$zip_file"
+    (cd "$staging/source" && zip -qr -X "$zip_file" .)
+    say "wrote $zip_file: upload it as the Gradescope autograder"
+    say "its secret seed is $seed_note; it is in the zip only, never commit it"
+    ;;
+  *)
+    say "usage: release.sh release OUT_DIR | package gradescope [--out FILE] [--seed S]"
+    exit 2
+    ;;
+esac

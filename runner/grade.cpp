@@ -1,0 +1,348 @@
+#include "grade.h"
+#include "lab_build.h"
+#include "results.h"
+#include "sandbox.h"
+#include "submission.h"
+#include "terminal.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <mutex>
+#include <sstream>
+#include <thread>
+
+namespace runner {
+
+namespace fs = std::filesystem;
+
+double step_score(const Step& step, const StepResult& result) {
+  if (result.status == Status::passed) return step.points;
+  if (!step.partial || (result.status != Status::failing && result.status != Status::not_implemented)) return 0;
+  return std::max(0.0, std::min(step.points - 0.01, std::floor(step.points * result.fraction_passed * 100) / 100));
+}
+
+namespace {
+
+struct Context {
+  const Paths& paths;
+  const GradeOptions& options;
+  std::vector<const Lab*> labs;
+  std::map<const Lab*, LabRecipe> recipes;
+  Sandbox sandbox;
+  GradingRun run;
+  std::string work;  // scratch root, removed at the end
+};
+
+// The secret never appears in what is written, even if the code under test found it.
+std::string redact(std::string text, const std::string& secret) {
+  if (secret.size() < 6) return text;
+  for (std::size_t at; (at = text.find(secret)) != std::string::npos;) text.replace(at, secret.size(), "[secret]");
+  return text;
+}
+
+std::string tail(const std::string& text, std::size_t n) { return text.size() > n ? "..." + text.substr(text.size() - n) : text; }
+
+// What the student reads about one step: the verdict, the counts, the first failure and
+// how to replay it with the public kit.
+std::string feedback(const StepResult& r, const Lab& lab, const std::string& binary, const Context& c) {
+  std::ostringstream out;
+  int cases = 0, passed = 0;
+  for (const QueryResult& q : r.queries) {
+    cases += q.cases;
+    passed += q.passed + q.ambiguous;
+  }
+  out << status_word(r.status);
+  if (r.status == Status::passed || r.status == Status::failing)
+    out << ": " << passed << " of " << cases << " cases pass" << (r.ambiguous ? " (" + std::to_string(r.ambiguous) + " of them ambiguous: any answer is accepted there)" : "");
+  out << "\n";
+  if (abnormal(r.status)) {
+    out << "what      " << r.detail << "\n";
+    if (!r.inflight.empty()) {
+      StepOptions describe;
+      describe.replay = r.inflight;
+      describe.describe_only = true;
+      describe.limits.seconds = 30;
+      describe.sandbox = &c.sandbox;
+      describe.scratch_parent = fs::path(binary).parent_path().string();
+      std::string input = r.inflight;
+      const StepResult d = run_step(binary, lab, *r.step, describe);
+      for (const QueryResult& q : d.queries)
+        if (q.failure && !q.failure->input.empty()) input = q.failure->input;
+      out << "on input  " << term::indent(input, "          ") << "\n";
+      out << "replay    ./labkit check " << lab.id << " --case '" << r.inflight << "'\n";
+    }
+    if (r.status == Status::crashed || r.status == Status::exited_early || r.status == Status::out_of_memory) {
+      const std::string last = tail(r.run.output, 800);
+      if (!last.empty()) out << "its last output:\n" << last << "\n";
+    }
+    return out.str();
+  }
+  for (const QueryResult& q : r.queries) {
+    if (!q.error.empty()) {
+      out << q.query << ": " << q.error << "\n";
+      break;
+    }
+    if (q.failure && q.not_implemented.empty()) {
+      const Failure& f = *q.failure;
+      out << "query     " << q.query << (f.title.empty() ? "" : ", " + f.title);
+      if (f.shrinks > 0) out << " (shrunk " << f.shrinks << " times)";
+      out << "\ninput     " << term::indent(f.input, "          ") << "\n";
+      out << "expected  " << term::indent(f.expected, "          ") << "\n";
+      out << "got       " << term::indent(f.got, "          ") << "\n";
+      out << "why       " << term::indent(f.why, "          ") << "\n";
+      if (!f.replay.empty()) out << "replay    ./labkit check " << lab.id << " --case '" << f.replay << "'\n";
+      break;
+    }
+  }
+  return out.str();
+}
+
+// Calls work(0) ... work(count - 1), `jobs` at a time.
+template <class Work>
+void parallel_for(std::size_t count, int jobs, Work&& work) {
+  std::atomic<std::size_t> next{0};
+  const auto worker = [&] {
+    for (std::size_t i; (i = next++) < count;) work(i);
+  };
+  std::vector<std::thread> pool;
+  for (int k = 0; k < std::max(1, std::min<int>(jobs, int(count))); ++k) pool.emplace_back(worker);
+  for (std::thread& t : pool) t.join();
+}
+
+// The lab's files found and built; `binary` is its test binary when it built.
+LabGrade build_one_lab(const Lab& lab, const Submission& sub, const std::string& folder, const Context& c,
+                       std::string* binary) {
+  LabGrade g;
+  g.lab = &lab;
+  for (const Step& s : lab.steps) {
+    g.max_score += s.points;
+    StepGrade sg;
+    sg.step = &s;
+    g.steps.push_back(sg);
+  }
+  std::map<std::string, std::string> files;
+  std::string missing;
+  for (const std::string& f : lab.student_files) {
+    const auto found = sub.files.find(f);
+    if (found == sub.files.end()) missing += (missing.empty() ? "" : ", ") + f;
+    else files[f] = found->second;
+  }
+  if (!missing.empty()) {
+    g.state = LabGrade::State::missing;
+    g.build_output = "The submission has no " + missing + ".";
+    for (StepGrade& s : g.steps) s.feedback = "not graded: " + g.build_output;
+    return g;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const LabBuild build = build_lab(c.paths, lab, c.recipes.at(&lab), files, folder, c.sandbox);
+  g.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!build.ok) {
+    g.state = LabGrade::State::not_built;
+    g.build_output = redact(build.errors, c.options.seed);
+    for (StepGrade& s : g.steps) s.feedback = "does not compile: every step of this lab scores 0 until it does.";
+    return g;
+  }
+  *binary = build.binary;
+  return g;
+}
+
+StepOptions graded_step_options(const std::string& folder, const Context& c) {
+  StepOptions options;
+  options.seed = c.options.seed;
+  options.cases = c.options.cases;
+  options.hide_seed = true;
+  options.count_all = true;
+  options.limits.seconds = c.options.timeout;
+  options.limits.memory_bytes = c.options.memory_mb << 20;
+  options.limits.file_bytes = std::size_t(64) << 20;
+  options.limits.flood_bytes = std::size_t(16) << 20;
+  options.sandbox = &c.sandbox;
+  options.scratch_parent = folder;
+  return options;
+}
+
+// Every lab built at once, then every step of every lab, `jobs` processes at a time:
+// a lab's build or step never waits for another lab's.
+SubmissionGrade grade_one(const std::string& path, const std::string& name, const std::string& work, int jobs,
+                          const Context& c) {
+  const auto start = std::chrono::steady_clock::now();
+  SubmissionGrade g;
+  g.name = name;
+  g.source = path;
+  fs::create_directories(work);
+  fs::permissions(work, fs::perms(0711));
+  const Submission sub = read_submission(path, c.labs, work, c.sandbox);
+  g.error = sub.error;
+  g.notes = sub.notes;
+  if (sub.files.empty() && sub.error.empty()) g.notes.push_back("the submission holds none of the files a student edits");
+
+  const std::size_t n = c.labs.size();
+  std::vector<std::string> folders(n), binaries(n);
+  g.labs.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    folders[i] = work + "/lab" + c.labs[i]->id;
+    fs::create_directories(folders[i]);
+    fs::permissions(folders[i], fs::perms(0711));
+  }
+  parallel_for(n, jobs, [&](std::size_t i) {
+    try {
+      g.labs[i] = build_one_lab(*c.labs[i], sub, folders[i], c, &binaries[i]);
+    } catch (const std::exception& e) {  // the grader's own trouble (a file system error): this lab only
+      binaries[i].clear();
+      g.labs[i] = build_one_lab(*c.labs[i], Submission{}, folders[i], c, &binaries[i]);
+      g.labs[i].state = LabGrade::State::not_built;
+      g.labs[i].build_output = std::string("the grader could not build it: ") + e.what();
+    }
+  });
+
+  std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (lab, step)
+  for (std::size_t i = 0; i < n; ++i)
+    if (!binaries[i].empty())
+      for (std::size_t k = 0; k < g.labs[i].steps.size(); ++k) tasks.push_back({i, k});
+  parallel_for(tasks.size(), jobs, [&](std::size_t t) {
+    const auto [i, k] = tasks[t];
+    const Lab& lab = *c.labs[i];
+    StepGrade& s = g.labs[i].steps[k];
+    StepResult r;
+    try {
+      r = run_step(binaries[i], lab, *s.step, graded_step_options(folders[i], c));
+    } catch (const std::exception& e) {
+      r.step = s.step;
+      r.status = Status::crashed;
+      r.detail = std::string("the grader could not run it: ") + e.what();
+    }
+    s.status = r.status;
+    s.seconds = r.run.seconds;
+    s.score = step_score(*s.step, r);
+    s.ambiguous = r.ambiguous;
+    for (const QueryResult& q : r.queries) s.cases += q.cases;
+    s.feedback = redact(feedback(r, lab, binaries[i], c), c.options.seed);
+  });
+
+  for (std::size_t i = 0; i < n; ++i) {
+    for (const StepGrade& s : g.labs[i].steps) g.labs[i].score += s.score;
+    g.score += g.labs[i].score;
+    g.max_score += g.labs[i].max_score;
+    std::error_code ignored;
+    fs::remove_all(folders[i], ignored);  // its test binary is 50 MB
+  }
+  g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return g;
+}
+
+void write_file(const fs::path& path, const std::string& text) {
+  fs::create_directories(path.parent_path());
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+void write_results(const SubmissionGrade& g, const fs::path& folder, const Context& c) {
+  write_file(folder / "results.json", gradescope_results(g, c.run).dump(2) + "\n");
+  write_file(folder / "junit.xml", junit_xml(g));
+  write_file(folder / "report.txt", table(g, c.run));
+  write_file(folder / "steps.tsv", steps_tsv(g));
+}
+
+}  // namespace
+
+int grade(const Paths& paths, const GradeOptions& options) {
+  if (options.submissions.empty()) {
+    std::cerr << "labkit grade: name at least one submission (a folder, a .zip or a .tar.gz)\n";
+    return 2;
+  }
+  const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
+  Context c{paths, options, {}, {}, Sandbox::make(options.sandbox, {paths.source + "/common", paths.build}), {}, {}};
+  for (const Lab& lab : manifest.labs) {
+    const bool wanted = options.labs.empty() ||
+                        std::find_if(options.labs.begin(), options.labs.end(), [&](const std::string& id) {
+                          return id == lab.id || "0" + id == lab.id || id == lab.stem();
+                        }) != options.labs.end();
+    if (!wanted || !fs::is_directory(paths.source + "/labs/" + lab.stem())) continue;  // a lab not written yet
+    // A lab whose folder exists but which the kit does not build yet (its labkit_add_lab
+    // line is still commented) cannot be graded: said once, and the others are.
+    if (!fs::exists(recipe_record(paths, lab))) {
+      std::cerr << "labkit grade: lab " << lab.id << " is in grading/manifest.json and labs/, but the kit's build has "
+                << "no record of it (is its labkit_add_lab line in CMakeLists.txt?): not graded\n";
+      continue;
+    }
+    c.labs.push_back(&lab);
+  }
+  if (c.labs.empty()) {
+    std::cerr << "labkit grade: no lab to grade (the kit has none of those asked for)\n";
+    return 2;
+  }
+  for (const Lab* lab : c.labs) c.recipes[lab] = load_recipe(paths, *lab);
+  c.run.seed_kind = options.seed.empty() ? "public" : "secret";
+  c.run.cases = options.cases;
+  c.run.sandbox = c.sandbox.description();
+  if (options.seed.empty())
+    std::cerr << "labkit grade: no secret seed (--seed or LABKIT_GRADING_SEED): grading on the public cases, "
+                 "which students can see and hard-code\n";
+  else if (options.seed.size() < 8)
+    std::cerr << "labkit grade: a secret seed this short can be guessed; use a long phrase\n";
+
+  char work_template[] = "/tmp/labkit-grade.XXXXXX";
+  if (!mkdtemp(work_template)) throw std::runtime_error("cannot make a scratch folder in /tmp");
+  c.work = work_template;
+  fs::permissions(c.work, fs::perms(0711));
+
+  // A folder of submissions (a class) stands for each of them.
+  std::vector<std::string> submissions;
+  bool a_class = options.submissions.size() > 1;
+  for (const std::string& path : options.submissions) {
+    const std::vector<std::string> members = class_members(path, c.labs);
+    if (members.empty()) {
+      submissions.push_back(path);
+      continue;
+    }
+    std::cerr << "labkit grade: " << path << " holds " << members.size() << " submissions: graded one by one\n";
+    submissions.insert(submissions.end(), members.begin(), members.end());
+    a_class = true;
+  }
+
+  // Names, made unique: results/<name>/ per submission.
+  std::vector<std::string> names;
+  std::map<std::string, int> seen;
+  for (const std::string& path : submissions) {
+    std::string name = submission_name(path);
+    if (++seen[name] > 1) name += "-" + std::to_string(seen[name]);
+    names.push_back(name);
+  }
+  const bool single = !a_class;
+  const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+  // Several submissions share the processes out one each; one submission uses them all.
+  const int outer = std::min<int>(jobs, int(submissions.size()));
+  const int inner = std::max(1, jobs / outer);
+
+  std::vector<SubmissionGrade> grades(submissions.size());
+  std::mutex print;
+  const auto start = std::chrono::steady_clock::now();
+  parallel_for(submissions.size(), outer, [&](std::size_t i) {
+    grades[i] = grade_one(submissions[i], names[i], c.work + "/" + std::to_string(i), inner, c);
+    const fs::path folder = single ? fs::path(options.out) : fs::path(options.out) / names[i];
+    write_results(grades[i], folder, c);
+    std::lock_guard<std::mutex> lock(print);
+    std::cout << (single ? "" : "\n") << table(grades[i], c.run) << std::flush;
+  });
+  std::error_code ignored;
+  fs::remove_all(c.work, ignored);
+
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (!single) {
+    write_file(fs::path(options.out) / "class.csv", class_csv(grades));
+    std::cout << "\n" << term::bold("Class") << ": " << grades.size() << " submissions graded in " << points(seconds)
+              << " s; " << (fs::path(options.out) / "class.csv").string() << "\n";
+  } else {
+    std::cout << "\nResults: " << (fs::path(options.out) / "results.json").string() << ", junit.xml, report.txt, steps.tsv\n";
+  }
+  return 0;
+}
+
+}  // namespace runner

@@ -1,0 +1,67 @@
+// `./labkit grade SUBMISSION...`: the instructor's command.
+//
+// Each submission's labs are built on their own from the student's files alone (a
+// compile error costs that lab), each step runs in its own confined process under
+// limits (a crash, a time-out, running out of memory, a flood of output or an early
+// exit() costs that step), on cases drawn from a secret seed. Points come from
+// grading/manifest.json; a step marked "partial" earns its points in proportion to the
+// cases it passes (ambiguous cases count as passed).
+//
+// Results: OUT/results.json (Gradescope), OUT/junit.xml, OUT/report.txt (the table) and
+// OUT/steps.tsv for one submission; OUT/<name>/... for each of several, and OUT/class.csv.
+#pragma once
+
+#include "check.h"
+#include "manifest.h"
+#include "step.h"
+
+#include <string>
+#include <vector>
+
+namespace runner {
+
+struct GradeOptions {
+  std::vector<std::string> submissions;
+  std::string out = "grades";
+  std::string seed;           // the secret seed; "" grades with the public one (and says so)
+  std::vector<std::string> labs;  // empty: every lab the kit has
+  int jobs = 0;               // processes at once (0: one per core)
+  int cases = 0;              // random cases per query (0: the harness's default)
+  double timeout = 60;        // seconds per step
+  std::size_t memory_mb = 2048;  // address space per step
+  std::string sandbox = "auto";  // auto, bubblewrap or none
+};
+
+struct StepGrade {
+  const Step* step = nullptr;
+  Status status = Status::not_built;
+  double score = 0;
+  int cases = 0, ambiguous = 0;
+  double seconds = 0;    // the step's process, wall clock
+  std::string feedback;  // what the student reads: never the seed
+};
+
+struct LabGrade {
+  const Lab* lab = nullptr;
+  enum class State { graded, missing, not_built } state = State::graded;
+  std::string build_output;  // compiler errors, or why the file is missing
+  double build_seconds = 0;  // compile, audit and link, wall clock
+  std::vector<StepGrade> steps;
+  double score = 0, max_score = 0;
+};
+
+struct SubmissionGrade {
+  std::string name, source;
+  std::string error;  // the submission could not be read at all
+  std::vector<std::string> notes;
+  std::vector<LabGrade> labs;
+  double score = 0, max_score = 0, seconds = 0;
+};
+
+int grade(const Paths& paths, const GradeOptions& options);
+
+// Points for a step's result: all, none, or (partial steps) the fraction of cases
+// passed, rounded down to a hundredth so that a near miss never shows as full marks.
+double step_score(const Step& step, const StepResult& result);
+
+}  // namespace runner

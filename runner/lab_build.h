@@ -1,0 +1,55 @@
+// Builds one lab of one submission in seconds, without configuring anything: the
+// student's file(s) are compiled with exactly the command the kit's build uses for the
+// stub (from compile_commands.json), then linked with exactly the kit's own link command
+// for the lab's student test binary (recorded at build time by cmake/record-command.sh),
+// the stub's library swapped for the student's objects. Tests, judge, harness, oracle
+// and Catch's main are the kit's prebuilt pieces; nothing from the submission but its
+// own source files takes part.
+#pragma once
+
+#include "check.h"
+#include "manifest.h"
+#include "sandbox.h"
+
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace runner {
+
+struct Command {
+  std::string directory;
+  std::vector<std::string> argv;
+};
+
+// How the kit builds lab NN's student test binary.
+struct LabRecipe {
+  std::map<std::string, Command> compile;  // student file (manifest path) -> its compile command
+  Command link;
+  std::string student_library;             // the stub's library in `link`, replaced by the objects
+  std::set<std::string> kit_symbols;       // every symbol the kit's link inputs define
+};
+
+// Reads the recipe from the kit's build tree; throws with the reason when it is missing.
+LabRecipe load_recipe(const Paths& paths, const Lab& lab);
+
+// The paths ./labkit grade has the kit build before grading (the records need them).
+std::string recipe_record(const Paths& paths, const Lab& lab);
+
+struct LabBuild {
+  bool ok = false;
+  std::string binary;  // the test binary, when ok
+  std::string errors;  // the first compiler, linker or audit errors, when not
+  double seconds = 0;
+};
+
+// Compiles `files` (manifest path -> file) and links them into `folder`/test_binary,
+// each command confined by `sandbox`.
+LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
+                   const std::map<std::string, std::string>& files, const std::string& folder, const Sandbox& sandbox);
+
+// The defined symbols of a system's C and C++ runtime: a student file may not replace them.
+const std::set<std::string>& runtime_symbols();
+
+}  // namespace runner

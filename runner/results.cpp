@@ -1,0 +1,193 @@
+#include "results.h"
+#include "terminal.h"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace runner {
+
+namespace {
+
+std::string lab_state(const LabGrade& l) {
+  switch (l.state) {
+    case LabGrade::State::missing: return "not submitted";
+    case LabGrade::State::not_built: return "does not compile";
+    case LabGrade::State::graded: break;
+  }
+  return "";
+}
+
+std::string lab_heading(const LabGrade& l) { return "Lab " + l.lab->id + "  " + l.lab->title; }
+
+std::string step_name(const StepGrade& s) {
+  return "step " + std::to_string(s.step->number) + " (" + s.step->tag + "): " + s.step->title;
+}
+
+std::string xml_escape(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
+      case '\n': case '\t': case '\r': out += char(c); break;
+      default:
+        if (c < 0x20) out += "?";  // not allowed in XML 1.0, even escaped
+        else out += char(c);
+    }
+  }
+  return out;
+}
+
+std::string seconds_text(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f", s);
+  return buffer;
+}
+
+}  // namespace
+
+std::string points(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.2f", std::floor(x * 100 + 0.5) / 100);
+  std::string s = buffer;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s;
+}
+
+std::string table(const SubmissionGrade& s, const GradingRun& run) {
+  using term::pad;
+  std::ostringstream out;
+  out << "Submission " << s.name << "   (" << s.source << ")\n";
+  out << "  seed: " << run.seed_kind << ", " << (run.cases ? std::to_string(run.cases) : std::string("the default"))
+      << " random cases per query; sandbox: " << run.sandbox << "\n";
+  if (!s.error.empty()) out << "  could not be read: " << s.error << "\n";
+  for (const std::string& note : s.notes) out << "  note: " << note << "\n";
+  for (const LabGrade& l : s.labs) {
+    out << "\n  " << pad(lab_heading(l), 56)
+        << pad(l.state == LabGrade::State::graded ? "built in " + seconds_text(l.build_seconds) + " s" : lab_state(l), 20)
+        << points(l.score) << " / " << points(l.max_score) << "\n";
+    for (const StepGrade& g : l.steps)
+      out << "    " << pad(std::to_string(g.step->number), 3) << pad(g.step->tag, 7) << pad(g.step->title, 44)
+          << pad(l.state == LabGrade::State::graded ? status_word(g.status) : lab_state(l), 20) << pad(points(g.score) + " / " + points(g.step->points), 10)
+          << (l.state == LabGrade::State::graded ? seconds_text(g.seconds) + " s" : "") << "\n";
+  }
+  out << "\n  " << pad("Total", 76) << points(s.score) << " / " << points(s.max_score) << "   (" << seconds_text(s.seconds)
+      << " s)\n";
+  for (const LabGrade& l : s.labs) {
+    if (l.state != LabGrade::State::graded)
+      out << "\n" << lab_heading(l) << ": " << lab_state(l) << "\n  " << term::indent(l.build_output, "  ") << "\n";
+    for (const StepGrade& g : l.steps)
+      if (g.status != Status::passed && l.state == LabGrade::State::graded)
+        out << "\nLab " << l.lab->id << ", " << step_name(g) << "\n  " << term::indent(g.feedback, "  ") << "\n";
+  }
+  return out.str();
+}
+
+nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& run) {
+  nlohmann::json tests = nlohmann::json::array();
+  std::string summary;
+  for (const LabGrade& l : s.labs) {
+    const int lab_number = std::stoi(l.lab->id);
+    const bool built = l.state == LabGrade::State::graded;
+    tests.push_back({{"name", "Lab " + l.lab->id + " " + l.lab->title + ": build"},
+                     {"number", std::to_string(lab_number) + ".0"},
+                     {"status", built ? "passed" : "failed"},
+                     {"output", built ? "It compiles." : lab_state(l) + ".\n" + l.build_output},
+                     {"visibility", "visible"}});
+    for (const StepGrade& g : l.steps)
+      tests.push_back({{"name", "Lab " + l.lab->id + " " + step_name(g)},
+                       {"number", std::to_string(lab_number) + "." + std::to_string(g.step->number)},
+                       {"score", g.score},
+                       {"max_score", g.step->points},
+                       {"status", g.status == Status::passed ? "passed" : "failed"},
+                       {"output", g.feedback},
+                       {"tags", {"lab" + l.lab->id, g.step->tag}},
+                       {"visibility", "visible"}});
+    summary += "Lab " + l.lab->id + " " + l.lab->title + ": " + points(l.score) + " / " + points(l.max_score) +
+               (built ? "" : " (" + lab_state(l) + ")") + "\n";
+  }
+  if (!s.error.empty()) summary = "The submission could not be read: " + s.error + "\n" + summary;
+  for (const std::string& note : s.notes) summary += "Note: " + note + "\n";
+  nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}};
+  if (run.cases > 0) extra["cases_per_query"] = run.cases;
+  return {{"score", s.score}, {"execution_time", int(std::ceil(s.seconds))}, {"output", summary}, {"tests", tests},
+          {"extra_data", extra}};
+}
+
+std::string junit_xml(const SubmissionGrade& s) {
+  int tests = 0, failures = 0, errors = 0;
+  std::ostringstream suites;
+  for (const LabGrade& l : s.labs) {
+    int lab_failures = 0, lab_errors = 0;
+    std::ostringstream cases;
+    for (const StepGrade& g : l.steps) {
+      cases << "    <testcase classname=\"lab" << l.lab->id << "\" name=\"" << xml_escape(step_name(g)) << "\">\n";
+      const std::string message = status_word(g.status) + ": " + points(g.score) + " of " + points(g.step->points) + " points";
+      const std::string body = l.state == LabGrade::State::graded ? g.feedback : lab_state(l) + "\n" + l.build_output;
+      if (abnormal(g.status) || l.state == LabGrade::State::not_built) {
+        ++lab_errors;
+        cases << "      <error type=\"" << xml_escape(status_word(g.status)) << "\" message=\"" << xml_escape(message)
+              << "\">" << xml_escape(body) << "</error>\n";
+      } else if (g.status != Status::passed) {
+        ++lab_failures;
+        cases << "      <failure type=\"" << xml_escape(status_word(g.status)) << "\" message=\"" << xml_escape(message)
+              << "\">" << xml_escape(body) << "</failure>\n";
+      } else {
+        cases << "      <system-out>" << xml_escape(message + "\n" + g.feedback) << "</system-out>\n";
+      }
+      cases << "    </testcase>\n";
+    }
+    tests += int(l.steps.size());
+    failures += lab_failures;
+    errors += lab_errors;
+    suites << "  <testsuite name=\"lab" << l.lab->id << " " << xml_escape(l.lab->name) << "\" tests=\"" << l.steps.size()
+           << "\" failures=\"" << lab_failures << "\" errors=\"" << lab_errors << "\" skipped=\"0\">\n"
+           << "    <properties>\n      <property name=\"score\" value=\"" << points(l.score) << "\"/>\n"
+           << "      <property name=\"max_score\" value=\"" << points(l.max_score) << "\"/>\n    </properties>\n"
+           << cases.str() << "  </testsuite>\n";
+  }
+  std::ostringstream out;
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"labkit grade " << xml_escape(s.name)
+      << "\" tests=\"" << tests << "\" failures=\"" << failures << "\" errors=\"" << errors << "\" time=\""
+      << seconds_text(s.seconds) << "\">\n"
+      << suites.str() << "</testsuites>\n";
+  return out.str();
+}
+
+std::string steps_tsv(const SubmissionGrade& s) {
+  // seconds: the step's own process, wall clock.
+  std::string out = "lab\tstep\ttag\tstatus\tscore\tmax\tseconds\n";
+  for (const LabGrade& l : s.labs) {
+    for (const StepGrade& g : l.steps)
+      out += l.lab->id + "\t" + std::to_string(g.step->number) + "\t" + g.step->tag + "\t" +
+             (l.state == LabGrade::State::graded ? status_word(g.status) : lab_state(l)) + "\t" + points(g.score) + "\t" +
+             points(g.step->points) + "\t" + seconds_text(g.seconds) + "\n";
+  }
+  return out;
+}
+
+std::string class_csv(const std::vector<SubmissionGrade>& all) {
+  if (all.empty()) return "submission,total,max\n";
+  const auto csv_field = [](const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+  };
+  std::string out = "submission";
+  for (const LabGrade& l : all.front().labs) out += ",lab" + l.lab->id;
+  out += ",total,max\n";
+  for (const SubmissionGrade& s : all) {
+    out += csv_field(s.name);
+    for (const LabGrade& l : s.labs) out += "," + points(l.score);
+    out += "," + points(s.score) + "," + points(s.max_score) + "\n";
+  }
+  return out;
+}
+
+}  // namespace runner

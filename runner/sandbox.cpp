@@ -1,0 +1,175 @@
+#include "sandbox.h"
+
+#include <bitset>
+#include <csignal>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace runner {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kFirstUid = 61000;
+constexpr int kUids = 1024;
+constexpr long kProcesses = 256;  // per confined run (its own uid)
+
+std::mutex uid_mutex;
+std::bitset<kUids> uids_in_use;
+
+// Ends every process left under `uid` (a daemon that escaped its process group): a
+// process of that uid signals all the others with kill(-1).
+void kill_all_of(int uid) {
+  const pid_t pid = fork();
+  if (pid == 0) {
+    if (setresgid(uid, uid, uid) == 0 && setresuid(uid, uid, uid) == 0) kill(-1, SIGKILL);
+    _exit(0);
+  }
+  if (pid > 0) waitpid(pid, nullptr, 0);
+}
+
+// A uid is leased machine-wide, not only in this process: two graders at once (a class
+// and a resubmission) must never share one, or the end of one run's lease would kill
+// the other's processes and each could write the other's scratch folder. The lease is
+// an flock on /run/lock/labkit-uids/UID (or under /tmp), which the kernel drops when
+// this process dies, however it dies.
+int lock_uid_file(int uid) {
+  static const std::string folder = [] {
+    for (const char* parent : {"/run/lock", "/tmp"}) {
+      std::error_code e;
+      const fs::path f = fs::path(parent) / "labkit-uids";
+      fs::create_directories(f, e);
+      if (!e && access(f.c_str(), W_OK) == 0) {
+        chmod(f.c_str(), 0755);
+        return f.string();
+      }
+    }
+    throw std::runtime_error("cannot make a folder for uid leases in /run/lock or /tmp");
+  }();
+  const std::string path = folder + "/" + std::to_string(uid);
+  const int fd = open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+  if (fd < 0) return -1;
+  if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    close(fd);
+    return -1;
+  }
+  return fd;
+}
+
+std::shared_ptr<void> lease_uid(int* uid) {
+  std::lock_guard<std::mutex> lock(uid_mutex);
+  for (int i = 0; i < kUids; ++i) {
+    if (uids_in_use[i]) continue;
+    const int fd = lock_uid_file(kFirstUid + i);
+    if (fd < 0) continue;  // another grader holds it
+    uids_in_use[i] = true;
+    *uid = kFirstUid + i;
+    kill_all_of(*uid);  // whatever a crashed grader left running under it
+    return std::shared_ptr<void>(nullptr, [i, fd](void*) {
+      kill_all_of(kFirstUid + i);
+      std::lock_guard<std::mutex> lock(uid_mutex);
+      uids_in_use[i] = false;
+      close(fd);  // the lease ends after its processes do
+    });
+  }
+  throw std::runtime_error("no free uid among " + std::to_string(kUids) + " for a confined run");
+}
+
+void chown_all(const fs::path& root, int uid) {
+  std::error_code ignored;
+  if (chown(root.c_str(), uid, uid) != 0) return;
+  for (auto it = fs::recursive_directory_iterator(root, ignored); it != fs::recursive_directory_iterator(); it.increment(ignored))
+    if (lchown(it->path().c_str(), uid, uid) != 0) continue;
+}
+
+// The system a compiler and a test binary need, read-only: /usr and /etc, and the
+// top-level links or folders of a merged-/usr layout.
+void add_system(std::vector<std::string>& args) {
+  for (const char* path : {"/usr", "/etc", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {
+    std::error_code e;
+    const fs::file_status s = fs::symlink_status(path, e);
+    if (e || !fs::exists(s)) continue;
+    if (fs::is_symlink(s)) args.insert(args.end(), {"--symlink", fs::read_symlink(path).string(), path});
+    else args.insert(args.end(), {"--ro-bind", path, path});
+  }
+}
+
+std::vector<std::string> bubblewrap(const std::vector<std::string>& argv, const std::string& writable,
+                                    const std::vector<std::string>& readable) {
+  std::vector<std::string> args = {"bwrap", "--unshare-all", "--die-with-parent"};
+  add_system(args);
+  args.insert(args.end(), {"--dev", "/dev", "--proc", "/proc", "--tmpfs", "/tmp"});
+  for (const std::string& path : readable)
+    if (fs::exists(path) && path.rfind("/usr/", 0) != 0) args.insert(args.end(), {"--ro-bind", path, path});
+  if (!writable.empty()) args.insert(args.end(), {"--bind", writable, writable, "--chdir", writable});
+  args.insert(args.end(), {"--setenv", "HOME", writable.empty() ? "/tmp" : writable, "--setenv", "TMPDIR", "/tmp", "--"});
+  args.insert(args.end(), argv.begin(), argv.end());
+  return args;
+}
+
+}  // namespace
+
+Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& needed) {
+  Sandbox s;
+  s.drop_uid_ = geteuid() == 0;
+  if (mode == "none") {
+    s.why_ = "turned off (--sandbox none)";
+    return s;
+  }
+  // Probe: does bubblewrap run here, under the uid confined runs will have?
+  s.kind_ = Kind::bubblewrap;
+  Limits limits;
+  limits.seconds = 20;
+  const fs::path probe = fs::temp_directory_path() / ("labkit-probe." + std::to_string(getpid()));
+  fs::create_directories(probe);
+  const Confined c = s.confine({"/bin/sh", "-c", "echo probe > written"}, probe.string(), needed, limits);
+  const Run r = run(c.argv, {}, c.limits, probe.string());
+  const bool works = r.ok() && fs::exists(probe / "written");
+  fs::remove_all(probe);
+  if (works) return s;
+  s.kind_ = Kind::none;
+  s.why_ = r.output.empty() ? "bubblewrap does not run here" : "bubblewrap does not run here: " + r.output.substr(0, 200);
+  if (r.output.find("Permission denied") != std::string::npos && s.drop_uid_)
+    s.why_ += " (the kit's folders must be readable by other users: chmod o+rx on them and their parents)";
+  while (!s.why_.empty() && (s.why_.back() == '\n' || s.why_.back() == ' ')) s.why_.pop_back();
+  if (mode == "bubblewrap") throw std::runtime_error(s.why_ + " (install bubblewrap, or use --sandbox none)");
+  return s;
+}
+
+std::string Sandbox::description() const {
+  std::string uid = drop_uid_ ? ", each run under its own unprivileged uid" : "";
+  if (kind_ == Kind::bubblewrap)
+    return "bubblewrap: no network, read-only system, only its own scratch folder writable" + uid;
+  return "none (" + why_ + "): time, memory, output and file-size limits only" + uid;
+}
+
+void Sandbox::interpret(Run& run) const {
+  if (kind_ == Kind::bubblewrap && run.signal == 0 && run.exit_code > 128 && run.exit_code < 128 + 65) {
+    run.signal = run.exit_code - 128;
+    run.exit_code = -1;
+  }
+}
+
+Confined Sandbox::confine(const std::vector<std::string>& argv, const std::string& writable,
+                          const std::vector<std::string>& readable, Limits limits) const {
+  Confined c;
+  if (drop_uid_) {
+    int uid = -1;
+    c.lease = lease_uid(&uid);
+    limits.uid = limits.gid = uid;
+    limits.processes = kProcesses;
+    if (!writable.empty()) chown_all(writable, uid);
+  }
+  c.limits = limits;
+  c.argv = kind_ == Kind::bubblewrap ? bubblewrap(argv, writable, readable) : argv;
+  return c;
+}
+
+}  // namespace runner

@@ -1,0 +1,264 @@
+#!/usr/bin/env bash
+# The hostile and broken submissions, each graded by ./labkit grade and compared with
+# its expected result. Every submission is the reference of every lab, with one fault
+# written into lab 02 (the faults live in its functions); so every other lab must keep
+# full marks, and lab 02 every step the fault does not reach.
+#
+#   hostile.test.sh RUNNER KIT_ROOT BUILD_DIR SCHEMA_CHECKER
+#
+# Takes a few minutes: every submission builds each lab (the kit is built already).
+set -uo pipefail
+runner="$1"
+kit="$2"
+build="$3"
+schema_check="$4"
+work="$(mktemp -d /tmp/labkit-hostile.XXXXXX)"
+trap 'rm -rf "$work"' EXIT
+subs="$work/submissions"
+out="$work/results"
+secret="hostile suite secret $$ $(date +%s%N)"
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+mkdir -p "$subs"
+
+lab02=labs/02_segment_triangle/segment_triangle.cpp
+# The reference of every lab the kit has, at the paths students edit.
+reference() {
+  local into="$1" lab
+  for lab in "$kit"/labs/[0-9][0-9]_*/; do
+    lab="$(basename "$lab")"
+    [ -d "$kit/solutions/$lab" ] || continue
+    mkdir -p "$into/labs/$lab"
+    cp "$kit/solutions/$lab"/*.cpp "$into/labs/$lab/"
+  done
+}
+# inject NAME FUNCTION CODE: the reference, with CODE first in lab 02's FUNCTION.
+inject() {
+  local name="$1" function="$2" code="$3"
+  reference "$subs/$name"
+  awk -v f="$function" -v code="$code" '
+    { print }
+    !done && $0 ~ ("[ &*]" f "\\(.*\\) \\{$") { print code; done = 1 }
+    END { if (!done) exit 1 }' "$kit/solutions/02_segment_triangle/segment_triangle.cpp" >"$subs/$name/$lab02" ||
+    { echo "setup: no one-line definition of $function in lab 02's reference"; exit 1; }
+  { printf '#include <csignal>\n#include <cstdio>\n#include <cstdlib>\n#include <vector>\n#include <unistd.h>\n'
+    cat "$subs/$name/$lab02"; } >"$work/injected.cpp" && mv "$work/injected.cpp" "$subs/$name/$lab02"
+}
+
+# ---- the submissions --------------------------------------------------------------
+reference "$work/ref" && (cd "$work/ref" && zip -qr "$subs/reference.zip" .)
+mkdir -p "$subs/empty"
+mkdir -p "$subs/stubs/labs" && cp -R "$kit"/labs/* "$subs/stubs/labs/" && find "$subs/stubs" -name '*.h' -delete
+reference "$subs/compile_error" && echo 'this is not C++;' >>"$subs/compile_error/$lab02"
+inject segfault point_in_triangle_barycentric '  { volatile int* nowhere = nullptr; *nowhere = 42; }'
+inject endless_loop point_in_triangle_edges '  for (volatile unsigned spin = 0;; ++spin) {}'
+inject allocate_50gb all_hits '  { std::vector<char> huge(std::size_t(50) << 30); huge[12345] = 1; }'
+inject print_100mb segment_plane '  { static bool once = false; if (!once) { once = true; for (int i = 0; i < 1600000; ++i) std::puts("flooding the grader with sixty-four bytes of output per line........"); } }'
+inject exit_0 any_hit '  std::exit(0);'
+# Writing outside its folder: the kit's tree, /tmp, the grader's folders, the home
+# folder (the suite then checks that none of those files exists); reading the reference
+# or the kit's git history (the step aborts if it can, and this suite fails); signalling
+# every process it can. None of it works, so the step passes as usual.
+inject escape test_segment_triangle '  { static bool tried = false; if (!tried) { tried = true; bool escaped = false;
+    for (const char* path : {"KIT/HOSTILE_WAS_HERE", "/tmp/labkit-hostile-was-here", "../../../hostile-was-here", "../hostile-was-here", "/root/.labkit-hostile"})
+      if (FILE* f = std::fopen(path, "w")) { std::fputs("escaped", f); std::fclose(f); }
+    for (const char* path : {"KIT/solutions/02_segment_triangle/segment_triangle.cpp", "KIT/.git/HEAD"})
+      if (FILE* f = std::fopen(path, "r")) { std::fclose(f); escaped = true; }
+    kill(-1, SIGKILL);
+    if (escaped) std::abort(); } }'
+sed -i "s|KIT/|$kit/|g" "$subs/escape/$lab02"
+# Stealing the secret seed before the tests start: the environment, the seed file, this
+# process's and the sandbox's and the grader's command lines and environments. If it
+# finds the seed, segment_plane aborts (and this suite fails).
+inject steal_seed segment_plane '  if (stolen) std::abort();'
+{ printf '#include <cstdio>\n#include <cstdlib>\n#include <cstring>\n#include <string>\n#include <unistd.h>\nnamespace {\nbool seed_stolen() {\n'
+  printf '  const char* marker = "hostile suite secret";\n'
+  printf '  auto holds = [&](const char* path) { std::FILE* f = std::fopen(path, "rb"); if (!f) return false; std::string text; char b[4096]; std::size_t n;\n'
+  printf '    while ((n = std::fread(b, 1, sizeof b, f)) > 0) text.append(b, n); std::fclose(f); return text.find(marker) != std::string::npos; };\n'
+  printf '  if (const char* v = std::getenv("LABKIT_SEED")) if (std::strstr(v, marker)) return true;\n'
+  printf '  if (const char* v = std::getenv("LABKIT_SEED_FILE")) if (holds(v)) return true;\n'
+  printf '  for (const char* p : {"/proc/self/environ", "/proc/self/cmdline", "/proc/1/environ", "/proc/1/cmdline"}) if (holds(p)) return true;\n'
+  printf '  for (int pid : {int(getppid()), 2, 3}) for (const char* what : {"cmdline", "environ"}) {\n'
+  printf '    char path[64]; std::snprintf(path, sizeof path, "/proc/%%d/%%s", pid, what); if (holds(path)) return true; }\n'
+  printf '  return false;\n}\nconst bool stolen = seed_stolen();\n}  // namespace\n'
+  cat "$subs/steal_seed/$lab02"; } >"$work/stolen.cpp" && mv "$work/stolen.cpp" "$subs/steal_seed/$lab02"
+# Code that would run before the harness reads its settings.
+reference "$subs/early_constructor" &&
+  printf '#include <cstdlib>\nvolatile bool early;\n__attribute__((constructor(101))) static void first() { early = std::getenv("LABKIT_SEED_FILE"); }\n' \
+    >>"$subs/early_constructor/$lab02"
+# Extra files that try to replace the tests, a header, the harness, the build and the points.
+mkdir -p "$work/extra" && reference "$work/extra"
+mkdir -p "$work/extra/tests" "$work/extra/common/harness" "$work/extra/grading"
+echo '#error "the submission replaced the header"' >"$work/extra/labs/02_segment_triangle/segment_triangle.h"
+echo '#error "the submission replaced the tests"' >"$work/extra/tests/02_segment_triangle.test.cpp"
+echo '#error "the submission replaced the harness"' >"$work/extra/common/harness/check.h"
+echo 'message(FATAL_ERROR "the submission replaced the build")' >"$work/extra/CMakeLists.txt"
+sed 's/"points": [0-9]*/"points": 1000/' "$kit/grading/manifest.json" >"$work/extra/grading/manifest.json"
+(cd "$work/extra" && tar -czf "$subs/extra_files.tar.gz" .)
+# A symlink to the reference on the grader's disk, and an #include of it.
+reference "$subs/symlink" && rm "$subs/symlink/$lab02" && ln -s "$kit/solutions/02_segment_triangle/segment_triangle.cpp" "$subs/symlink/$lab02"
+reference "$subs/include_reference"
+echo "#include \"$kit/solutions/02_segment_triangle/segment_triangle.cpp\"" >"$subs/include_reference/$lab02"
+# Its own main(), which would write a perfect report, and a call into the oracle.
+reference "$subs/own_main" && printf 'int main() { return 0; }\n' >>"$subs/own_main/$lab02"
+# Partial credit: a classic mistake in a step with partial credit, and in one without.
+reference "$subs/partial" && cp "$build/mutants/02_segment_triangle/beta_sign.cpp" "$subs/partial/$lab02"
+reference "$subs/all_or_nothing" && cp "$build/mutants/02_segment_triangle/crossing_t_sign.cpp" "$subs/all_or_nothing/$lab02"
+
+# ---- grade them all at once -------------------------------------------------------
+# The endless loop on its own, with a short time limit; the others with a generous one,
+# so that a loaded machine never turns a slow step into a time-out.
+mkdir -p "$work/loop" && mv "$subs/endless_loop" "$work/loop/"
+started=$(date +%s)
+"$runner" grade "$subs" --out "$out" --seed "$secret" --cases 300 --timeout 120 --jobs 2 >"$work/grade.log" 2>&1
+code=$?
+"$runner" grade "$work/loop/endless_loop" --out "$out/endless_loop" --seed "$secret" --cases 100 --timeout 8 --jobs 2 \
+  >>"$work/grade.log" 2>&1 || code=$?
+mv "$work/loop/endless_loop" "$subs/"
+echo "graded $(ls "$subs" | wc -l) submissions in $(($(date +%s) - started)) s (exit $code)"
+[ $code -eq 0 ] || { cat "$work/grade.log"; fail "labkit grade exits $code"; }
+
+# expect NAME LAB02 [STEP=STATUS ...]: lab 02 as LAB02 says (graded: each STEP has that
+# status and 0 points; or "does not compile", "not submitted" for all of it); every
+# other row (each step of every other lab, each step of lab 02 the fault does not
+# reach) exactly as the reference's own grade has it: same status, same points.
+expect() {
+  local name="$1" state="$2"
+  shift 2
+  local tsv="$out/$name/steps.tsv"
+  [ -f "$tsv" ] || { fail "$name: no results"; return; }
+  local lab step tag status score max want faulty
+  while IFS=$'\t' read -r lab step tag status score max; do
+    [ "$lab" = lab ] && continue
+    faulty=""
+    if [ "$lab" = 02 ]; then
+      [ "$state" = graded ] || faulty="$state"
+      for rule in "$@"; do [ "${rule%%=*}" = "$step" ] && faulty="${rule#*=}"; done
+    fi
+    if [ -n "$faulty" ]; then
+      [ "$status" = "$faulty" ] || fail "$name: lab $lab step $step is '$status', expected '$faulty'"
+      [ "$score" = 0 ] || fail "$name: lab $lab step $step scores $score, expected 0"
+    else
+      want="$(awk -F'\t' -v l="$lab" -v s="$step" '$1 == l && $2 == s { print $4 "\t" $5 }' "$out/reference/steps.tsv")"
+      [ "$status"$'\t'"$score" = "$want" ] ||
+        fail "$name: lab $lab step $step is '$status' with $score points; without the fault: '${want/$'\t'/' with '} points"
+    fi
+  done <"$tsv"
+}
+# The reference itself: every step passed, full points.
+awk -F'\t' 'NR > 1 && ($4 != "passed" || $5 != $6) { print "FAIL: reference: lab " $1 " step " $2 " is " $4 " with " $5 " of " $6; bad = 1 }
+            END { exit bad }' "$out/reference/steps.tsv" || failures=$((failures + 1))
+expect reference graded
+expect extra_files graded
+expect escape graded
+expect compile_error "does not compile"
+expect include_reference "does not compile"
+expect own_main "does not compile"
+expect early_constructor "does not compile"
+expect steal_seed graded
+expect symlink "not submitted"
+# A fault costs the steps whose tests reach the function it is in (the reference calls
+# some of its functions from others): point_in_triangle_barycentric is steps 3 and 7's,
+# point_in_triangle_edges steps 2 and 7's, all_hits steps 5 and 7's, segment_plane step
+# 1's, any_hit step 5's.
+expect segfault graded 3=crashed 7=crashed
+expect endless_loop graded 2="timed out" 7="timed out"
+expect allocate_50gb graded 5="out of memory" 7="out of memory"
+expect print_100mb graded 1="too much output"
+expect exit_0 graded 5="exited early"
+expect all_or_nothing graded 1=failing
+# Empty and stubs: nothing to give points to, in any lab.
+for name in empty stubs; do
+  awk -F'\t' -v n="$name" 'NR > 1 && $5 != "0" { print "FAIL: " n ": lab " $1 " step " $2 " scores " $5; bad = 1 } END { exit bad }' \
+    "$out/$name/steps.tsv" || failures=$((failures + 1))
+done
+grep -q "not submitted" "$out/empty/steps.tsv" || fail "empty: its labs are not 'not submitted'"
+[ "$(awk -F'\t' 'NR > 1 && $4 != "not implemented yet"' "$out/stubs/steps.tsv" | wc -l)" = 0 ] || fail "stubs: a step is not 'not implemented yet'"
+# Partial credit: the wrong sign of beta (barycentric, which find_segment_triangle uses
+# too) keeps some of the points of steps 3, 4, 5 and 7, never all; the rest is full.
+awk -F'\t' 'NR > 1 && !($1 == "02" && $2 ~ /^[3457]$/) && $5 != $6 { print "FAIL: partial: lab " $1 " step " $2 " scores " $5 " of " $6; bad = 1 }
+            NR > 1 && $1 == "02" && $2 ~ /^[3457]$/ && !($4 == "failing" && $5 > 0 && $5 < $6) { print "FAIL: partial: step " $2 " is " $4 " with " $5 " of " $6; bad = 1 }
+            END { exit bad }' "$out/partial/steps.tsv" || failures=$((failures + 1))
+
+# What the feedback says, in the student's words.
+grep -q "this is not C++" "$out/compile_error/report.txt" || fail "compile_error: the report does not show the compiler's error"
+grep -q "segmentation fault" "$out/segfault/report.txt" || fail "segfault: the report does not name the signal"
+grep -q "replay    ./labkit check 02 --case" "$out/segfault/report.txt" || fail "segfault: no replay command for the input it died on"
+grep -q "did not finish within 8 s" "$out/endless_loop/report.txt" || fail "endless_loop: the report does not say it timed out"
+grep -q "ran out of memory" "$out/allocate_50gb/report.txt" || fail "allocate_50gb: the report does not say it ran out of memory"
+grep -q "printed more than" "$out/print_100mb/report.txt" || fail "print_100mb: the report does not say it printed too much"
+grep -q "exit()" "$out/exit_0/report.txt" || fail "exit_0: the report does not mention exit()"
+grep -q "defines main()" "$out/own_main/report.txt" || fail "own_main: the report does not say it defines main()"
+grep -q "constructor priority" "$out/early_constructor/report.txt" || fail "early_constructor: the report does not say why"
+grep -q "No such file" "$out/include_reference/report.txt" || fail "include_reference: the reference was visible to the compiler"
+
+# Nothing escaped.
+for path in "$kit/HOSTILE_WAS_HERE" /tmp/labkit-hostile-was-here /root/.labkit-hostile "$work/hostile-was-here" \
+  "$out/hostile-was-here"; do
+  [ -e "$path" ] && { fail "the escape submission wrote $path"; rm -f "$path"; }
+done
+[ -z "$(find /tmp -maxdepth 3 -name hostile-was-here 2>/dev/null)" ] || fail "the escape submission wrote a hostile-was-here under /tmp"
+
+# Without bubblewrap (--sandbox none, where it cannot run), what is still protected: as
+# root, each run's own uid cannot write to the kit's tree nor /root; but world-writable
+# /tmp is open to it, and so is reading the kit's files (the reference, where the kit
+# has it: the Gradescope zip does not).
+if [ "$(id -u)" = 0 ]; then
+  rm -f /tmp/labkit-hostile-was-here
+  "$runner" grade "$subs/escape" --out "$work/unsandboxed" --seed "$secret" --cases 50 --labs 02 --sandbox none \
+    >"$work/unsandboxed.log" 2>&1 || fail "grading with --sandbox none exits $?"
+  grep -q "sandbox: none" "$work/unsandboxed/report.txt" || fail "--sandbox none: the report does not say so"
+  [ -e "$kit/HOSTILE_WAS_HERE" ] && { fail "--sandbox none: the kit's tree was written"; rm -f "$kit/HOSTILE_WAS_HERE"; }
+  [ -e /root/.labkit-hostile ] && { fail "--sandbox none: /root was written"; rm -f /root/.labkit-hostile; }
+  [ -e /tmp/labkit-hostile-was-here ] || fail "--sandbox none: /tmp was not written (then this suite no longer shows the fallback's limits)"
+  grep -qP "^02\t4\t.*\tcrashed\t" "$work/unsandboxed/steps.tsv" || fail "--sandbox none: the reference was not readable (expected, without bubblewrap)"
+  rm -f /tmp/labkit-hostile-was-here
+fi
+
+# The outputs: every results.json matches Gradescope's schema; none holds the seed.
+"$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json >"$work/schema.log" ||
+  { cat "$work/schema.log"; fail "a results.json does not match the schema"; }
+if grep -rqF "$secret" "$out" "$work/grade.log"; then fail "the secret seed appears in the results"; fi
+for xml in "$out"/*/junit.xml; do
+  head -n 2 "$xml" | grep -q "<testsuites " || fail "$xml has no <testsuites>"
+  [ "$(grep -c "<testcase " "$xml")" = "$(($(wc -l <"${xml%junit.xml}steps.tsv") - 1))" ] || fail "$xml: one <testcase> per step"
+done
+grep -q "<error type=\"crashed\"" "$out/segfault/junit.xml" || fail "segfault: junit.xml has no <error> for the crash"
+[ "$(wc -l <"$out/class.csv")" = "$(ls "$subs" | wc -l)" ] || fail "class.csv: one row per submission (the endless loop is graded apart)"
+head -n 1 "$out/class.csv" | grep -qE "^submission,(lab[0-9]{2},)+total,max$" || fail "class.csv's header is $(head -n 1 "$out/class.csv")"
+
+# JUnit XML that a CI server can read.
+if command -v python3 >/dev/null; then
+  python3 -c 'import sys, xml.etree.ElementTree as T
+for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml || fail "a junit.xml is not well-formed XML"
+fi
+
+# The table: each fault, what the grader reported for it, and what it kept.
+declare -A fault=(
+  [reference]="none: the reference itself" [empty]="empty submission" [stubs]="the stubs, unchanged"
+  [compile_error]="compile error in lab 02" [segfault]="segfault (null write)" [endless_loop]="endless loop"
+  [allocate_50gb]="allocating 50 GB" [print_100mb]="printing 100 MB" [exit_0]="exit(0) in a test"
+  [escape]="writing outside its folder, kill(-1)" [extra_files]="extra files replacing a test, headers, CMake, manifest"
+  [steal_seed]="reading the secret seed" [early_constructor]="constructor before the harness"
+  [symlink]="lab file is a symlink to the reference" [include_reference]="#include of the reference"
+  [own_main]="its own main()" [partial]="classic mistake (beta sign), partial steps" [all_or_nothing]="classic mistake, all-or-nothing step")
+echo
+printf '%-44s | %-58s | %-9s | %s\n' "fault (in lab 02)" "what the grader reported for lab 02" "lab 02" "other labs kept"
+for name in reference empty stubs compile_error segfault endless_loop allocate_50gb print_100mb exit_0 escape extra_files \
+  steal_seed early_constructor symlink include_reference own_main partial all_or_nothing; do
+  [ -f "$out/$name/steps.tsv" ] || continue
+  awk -F'\t' -v f="${fault[$name]}" 'FNR == 1 { next }
+    FNR == NR { ref[$1 "/" $2] = $4; refscore[$1] += $5; next }
+    $1 == "02" { lab02 += $5; max02 += $6; if ($4 != ref["02/" $2]) said[$4] = said[$4] (said[$4] == "" ? "" : ",") $2 }
+    $1 != "02" { other += $5 }
+    END { for (r in refscore) if (r != "02") otherref += refscore[r]
+          for (s in said) reported = reported (reported == "" ? "" : "; ") s " (step " said[s] ")"
+          if (reported == "") reported = "as the reference"
+          printf "%-44s | %-58s | %4s/%-4s | %s of %s\n", f, reported, lab02, max02, other, otherref }' \
+    "$out/reference/steps.tsv" "$out/$name/steps.tsv"
+done
+echo
+cat "$out/class.csv"
+echo
+[ $failures -eq 0 ] && echo "hostile suite: every fault cost only what it should" || { cat "$work/grade.log"; }
+exit $((failures > 0))
