@@ -23,26 +23,26 @@ std::unique_ptr<Scene> make_frustum_split(const Setup& setup);
 const std::vector<Preset>& frustum_split_presets();
 std::unique_ptr<Scene> make_segment_triangle(const Setup& setup);
 const std::vector<Preset>& segment_triangle_presets();
+std::unique_ptr<Scene> make_separating_axes(const Setup& setup);
+const std::vector<Preset>& separating_axes_presets();
 std::unique_ptr<Scene> make_bisection(const Setup& setup);
 const std::vector<Preset>& bisection_presets();
 std::unique_ptr<Scene> make_sphere_sweeps(const Setup& setup);
 const std::vector<Preset>& sphere_sweeps_presets();
-std::unique_ptr<Scene> make_particles(const Setup& setup);
-const std::vector<Preset>& particles_presets();
-std::unique_ptr<Scene> make_separating_axes(const Setup& setup);
-const std::vector<Preset>& separating_axes_presets();
 std::unique_ptr<Scene> make_spatial_trees(const Setup& setup);
 const std::vector<Preset>& spatial_trees_presets();
+std::unique_ptr<Scene> make_particles(const Setup& setup);
+const std::vector<Preset>& particles_presets();
 
 inline const SceneInfo kScenes[] = {
     {"01", "01_frustum_split", "View-frustum clipping by triangle splitting", make_frustum_split, frustum_split_presets},
     {"02", "02_segment_triangle", "Segment against triangle and mesh", make_segment_triangle, segment_triangle_presets},
-    {"04", "04_bisection", "Time of impact by bisection", make_bisection, bisection_presets},
-    {"05", "05_sphere_sweeps", "Sphere-swept volumes, static and moving", make_sphere_sweeps, sphere_sweeps_presets},
-    {"07", "07_particles", "Particle systems that bounce", make_particles, particles_presets},
     {"03", "03_separating_axes", "Separating axes: oriented boxes, triangle pairs, moving boxes", make_separating_axes,
      separating_axes_presets},
+    {"04", "04_bisection", "Time of impact by bisection", make_bisection, bisection_presets},
+    {"05", "05_sphere_sweeps", "Sphere-swept volumes, static and moving", make_sphere_sweeps, sphere_sweeps_presets},
     {"06", "06_spatial_trees", "BSP and k-d trees, pair reduction", make_spatial_trees, spatial_trees_presets},
+    {"07", "07_particles", "Particle systems that bounce", make_particles, particles_presets},
 };
 
 }  // namespace viewer
