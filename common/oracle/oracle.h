@@ -6,6 +6,7 @@
 #pragma once
 
 #include "common/oracle/clipping.h"
+#include "common/oracle/particles.h"
 #include "common/oracle/predicates.h"
 #include "common/oracle/segment_triangle.h"
 #include "common/oracle/spatial_trees.h"

@@ -1,0 +1,45 @@
+// Seeded inputs for particles that bounce (lab 07): a particle's step as a segment
+// against one-sided planes and a two-sided mesh. Same dyadic lattice as generators.h:
+// planes have small integer normals through lattice points, so a point "on the plane" or
+// "on the line where two planes meet" is exactly there.
+//
+// Families on purpose: steps crossing a plane, starting exactly on it (resting, pushed in),
+// ending exactly on it (touching), sliding along it, near-parallel; into the crease of two
+// planes (right-angled and acute) and the corner of three; between two planes facing each
+// other a hair apart (a crack: many bounces); against terrains, soups and closed octahedra
+// through their shared edges and vertices, starting on a triangle's plane; a triangle lying
+// in a plane (a tie); every scale from 2^-20 to 2^20, and far from the origin.
+#pragma once
+
+#include "common/geometry.h"
+#include "common/harness/codec.h"
+
+#include <rapidcheck.h>
+
+#include <vector>
+
+namespace labkit {
+
+// A particle's step, and the surfaces it may hit.
+struct StepSurfaces {
+  Segment step;
+  std::vector<Plane> planes;  // one-sided: solid behind
+  Mesh mesh;                  // two-sided
+};
+
+}  // namespace labkit
+
+namespace labkit::gen {
+
+// A plane through `point` with a non-zero integer normal, components in [-magnitude, magnitude].
+rc::Gen<Plane> plane_through(const Vec3& point, int magnitude = 3);
+
+// Steps and surfaces on the fine lattice (the random cases).
+rc::Gen<StepSurfaces> step_surfaces();
+// Exact degenerate cases on integer coordinates (multiples of 8, |x| <= 1024, times a
+// power of two): planes crossed, touched, started on, slid along, creases and corners
+// hit exactly; and steps starting exactly on a triangle's plane. No case here depends on
+// a triangle's edges, which the watertight test decides in floating point.
+rc::Gen<StepSurfaces> exact_step_surfaces();
+
+}  // namespace labkit::gen

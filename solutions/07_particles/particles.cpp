@@ -1,0 +1,477 @@
+// Lab 07 reference: particle systems that bounce.
+//
+// The physics is a handful of lines per step; the care goes into two places. Decisions
+// (does the step cross this surface, which side is the particle on) are made from input
+// numbers, before anything is constructed. And every position the particle keeps after a
+// bounce is settled: checked against the surface with a bound on its own rounding error,
+// and pushed off by a hair when in doubt, so that "never behind a surface" holds exactly,
+// not just nearly.
+#include "particles.h"
+
+#include "common/given/segment_triangle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace labkit::lab07 {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+}  // namespace
+
+// ---- Step 1: emitter and lifetime ----------------------------------------------------
+
+// Uniform in solid angle over the cone: the area of the spherical cap between angles 0
+// and theta is 2 pi (1 - cos theta), linear in cos theta, so cos theta is drawn uniformly
+// (drawing theta itself uniformly would crowd the particles toward the axis).
+Particle emit(const Emitter& emitter, Random& random) {
+  Particle p;
+  for (int i = 0; i < 3; ++i) p.position[i] = emitter.position[i] + emitter.half_extents[i] * random.uniform(-1.0, 1.0);
+  const Vec3 axis = emitter.direction.normalized();
+  const Vec3 u = axis.unitOrthogonal(), w = axis.cross(u);
+  const double cos_theta = random.uniform(std::cos(emitter.cone), 1.0);
+  const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
+  const double turn = random.uniform(0.0, 2 * kPi);
+  const Vec3 direction = cos_theta * axis + sin_theta * (std::cos(turn) * u + std::sin(turn) * w);
+  p.velocity = random.uniform(emitter.speed - emitter.speed_spread, emitter.speed + emitter.speed_spread) * direction;
+  p.lifetime = random.uniform(emitter.lifetime - emitter.lifetime_spread, emitter.lifetime + emitter.lifetime_spread);
+  p.mass = emitter.mass;
+  p.previous = p.position;
+  return p;
+}
+
+// The fraction is carried, not dropped: at 10 particles per second and 60 steps per
+// second, rate * dt = 1/6 rounds down to 0 every single step.
+Births births(const Emitter& emitter, double dt) {
+  const double due = emitter.owed + emitter.rate * dt;
+  const double whole = std::floor(due);
+  return {int(whole), due - whole};
+}
+
+std::vector<Particle> age(std::vector<Particle> particles, double dt) {
+  for (Particle& p : particles) {
+    p.age += dt;
+    p.alive = p.age < p.lifetime;  // reaching the lifetime is dying
+  }
+  particles.erase(std::remove_if(particles.begin(), particles.end(), [](const Particle& p) { return !p.alive; }),
+                  particles.end());
+  return particles;
+}
+
+// ---- Step 2: forces, Euler and Verlet ------------------------------------------------
+
+// Drag always opposes the velocity: viscous drag grows with |v|, air drag with |v|^2.
+Vec3 force(const Particle& p, const Forces& forces) {
+  return p.mass * forces.gravity - forces.drag * p.velocity - forces.air_drag * p.velocity.norm() * p.velocity;
+}
+
+// The state is S = (position, velocity) and dS/dt = (velocity, F / m), both taken at the
+// start of the step: S(t + dt) = S(t) + dS/dt dt.
+Particle euler_step(const Particle& p, const Forces& forces, double dt) {
+  const Vec3 a = force(p, forces) / p.mass;
+  Particle next = p;
+  next.position = p.position + p.velocity * dt;
+  next.velocity = p.velocity + a * dt;
+  return next;
+}
+
+// Taylor: x(dt) = x + v dt + a dt^2 / 2, and x(-dt) = x - v dt + a dt^2 / 2. With the
+// second as `previous`, the Verlet step 2 x - x(-dt) + a dt^2 gives exactly the first.
+Particle start_verlet(const Particle& p, const Forces& forces, double dt) {
+  const Vec3 a = force(p, forces) / p.mass;
+  Particle next = p;
+  next.previous = p.position - p.velocity * dt + 0.5 * a * dt * dt;
+  return next;
+}
+
+// The lecture's S(t + dt) = 2 S(t) - S(t - dt) + a dt^2: add the last step's displacement
+// again, bent by the acceleration. The velocity is not part of the state; the one kept is
+// the average over the step just taken, which is what the collision test moves along.
+Particle verlet_step(const Particle& p, const Forces& forces, double dt) {
+  const Vec3 a = force(p, forces) / p.mass;
+  Particle next = p;
+  next.position = 2 * p.position - p.previous + a * dt * dt;
+  next.previous = p.position;
+  next.velocity = (next.position - p.position) / dt;
+  return next;
+}
+
+// ---- Step 3: launch angle to hit a target --------------------------------------------
+
+//   Derivation (lecture 002, target practice). Aim at elevation theta with speed v; the
+//   target is x away horizontally and y up. Horizontally v cos(theta) T = x, so
+//   T = x / (v cos theta); vertically y = v sin(theta) T - g T^2 / 2. With u = tan(theta)
+//   and 1 / cos^2 = 1 + u^2:
+//
+//       y = x u - A (1 + u^2),   A = g x^2 / (2 v^2),   so   A u^2 - x u + (A + y) = 0,
+//
+//   whose radicand is x^2 - 4 A (A + y) (the lecture's 969.31), and
+//   u = (x +- sqrt(x^2 - 4 A (A + y))) / (2 A) = (v^2 +- sqrt(D)) / (g x) with
+//   D = v^4 - 2 g y v^2 - g^2 x^2. In vectors (d = target - from, g y = -d . gravity,
+//   g^2 x^2 = |d x gravity|^2): D = v^4 + 2 v^2 (d . gravity) - |d x gravity|^2, a
+//   polynomial in the input, so its sign is exact on small integers.
+//
+//       up ^          . ' ' .   high: lobbed, slow
+//          |       .  _ - - _  ' .
+//          |     . -           - .'.
+//          |   .'  low: flat, fast  '*  target (x, y)
+//     from *-----------------------------> horizontal, toward the target
+Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity) {
+  const Vec3 d = target - from;
+  const double gx_squared = d.cross(gravity).squaredNorm();
+  if (gx_squared == 0 || speed == 0) return {};  // straight up or down, no gravity, or no speed
+  const double v2 = speed * speed;
+  const double D = v2 * v2 + 2 * v2 * d.dot(gravity) - gx_squared;
+
+  const double g = gravity.norm();
+  const Vec3 up = -gravity / g;
+  const double y = d.dot(up);
+  const double x = std::sqrt(gx_squared) / g;
+  Aim r;
+  r.radicand = (x * x) / (v2 * v2) * D;
+  if (D < 0) return r;  // out of reach: no angle gets there
+  r.count = D > 0 ? 2 : 1;
+
+  // The two roots, each in a form without cancellation: the high one adds sqrt(D) to v^2;
+  // the low one is the product of the roots, (A + y) / A = (g x^2 + 2 y v^2) / (g x^2),
+  // divided by the high one (v^2 - sqrt(D) would subtract two nearly equal numbers when
+  // the target is close and the shot fast).
+  const double root = std::sqrt(D);
+  const double tan_high = (v2 + root) / (g * x);
+  const double tan_low = (g * x * x + 2 * y * v2) / (x * (v2 + root));
+  const Vec3 toward = (d - y * up).normalized();  // horizontal, toward the target
+  const auto shot = [&](double tangent) {
+    const double c = 1 / std::hypot(1.0, tangent), s = tangent * c;  // cos and sin of the angle
+    return Shot{std::atan(tangent), speed * (c * toward + s * up), x / (speed * c)};
+  };
+  r.low = shot(tan_low);
+  r.high = r.count == 2 ? shot(tan_high) : r.low;
+  return r;
+}
+
+// ---- Step 4: the step as a segment against surfaces ----------------------------------
+
+// One-sided: the solid is behind (value < 0). The step hits only if it starts on the
+// allowed side and ends behind; value changes linearly along the segment, so it crosses
+// zero at t = value(a) / (value(a) - value(b)), a division without cancellation because
+// the two values have opposite signs (or value(a) = 0: t = 0).
+SurfaceHit hit_plane(const Segment& segment, const Plane& plane) {
+  const double length = plane.normal.norm();
+  if (length == 0) return {};  // a zero normal: no plane
+  const double va = plane.value(segment.a), vb = plane.value(segment.b);
+  if (va < 0) return {};   // starts behind: not this step's doing
+  if (vb >= 0) return {};  // does not end behind (touching the plane is allowed)
+  SurfaceHit h;
+  h.hit = true;
+  h.t = va / (va - vb);
+  h.point = segment.point(h.t);
+  h.normal = plane.normal / length;
+  return h;
+}
+
+// Two-sided: the side the particle comes from is the side a is on, decided from input
+// numbers before the given watertight test builds anything.
+SurfaceHit hit_triangle(const Segment& segment, const Triangle& triangle) {
+  const Vec3 n = triangle.normal();
+  const double side = n.dot(segment.a - triangle.v0);
+  if (side == 0) return {};  // starts on the plane (or no plane): it is leaving, not hitting
+  const given::SegmentHit g = given::segment_triangle(segment, triangle);
+  if (!g.hit) return {};  // misses the closed triangle
+  SurfaceHit h;
+  h.hit = true;
+  h.t = g.t;
+  h.point = g.point;
+  h.normal = (side > 0 ? n : Vec3(-n)).normalized();
+  return h;
+}
+
+namespace {
+
+// Cheap rejection before the exact-ish test: boxes that do not overlap cannot meet.
+bool boxes_apart(const Vec3& low, const Vec3& high, const Triangle& t) {
+  const Vec3 t_low = t.v0.cwiseMin(t.v1).cwiseMin(t.v2), t_high = t.v0.cwiseMax(t.v1).cwiseMax(t.v2);
+  return (t_low.array() > high.array()).any() || (t_high.array() < low.array()).any();
+}
+
+}  // namespace
+
+// The nearest hit wins; a later surface must be strictly nearer to replace an earlier
+// one, which makes ties go to planes, then to lower indices.
+SurfaceHit first_hit(const Segment& segment, const Scene& scene) {
+  SurfaceHit best;
+  for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+    const SurfaceHit h = hit_plane(segment, scene.planes[i]);
+    if (!h.hit || (best.hit && h.t >= best.t)) continue;  // a miss, or not nearer
+    best = h;
+    best.plane = int(i);
+  }
+  if (scene.mesh_query) {
+    const SurfaceHit h = scene.mesh_query(segment, scene.mesh);
+    if (h.hit && (!best.hit || h.t < best.t)) best = h;
+    return best;
+  }
+  const Vec3 low = segment.a.cwiseMin(segment.b), high = segment.a.cwiseMax(segment.b);
+  for (std::size_t i = 0; i < scene.mesh.size(); ++i) {
+    const Triangle tri = scene.mesh.triangle(i);
+    if (boxes_apart(low, high, tri)) continue;  // far from the segment
+    const SurfaceHit h = hit_triangle(segment, tri);
+    if (!h.hit || (best.hit && h.t >= best.t)) continue;  // a miss, or not nearer
+    best = h;
+    best.triangle = int(i);
+  }
+  return best;
+}
+
+// ---- Step 5: impulse with restitution and friction -----------------------------------
+
+//   Derivation (lecture 001). Only the relative velocity v_r = v - v_obj matters. Split
+//   it along the unit normal: v_close = v_r . n, and the rest, v_t = v_r - v_close n.
+//   Restitution turns v_close into -e v_close, a change of -(1 + e) v_close along n:
+//   j_n = -(1 + e) m v_close n. Coulomb friction opposes v_t with at most mu |j_n|, and
+//   at most what stops the sliding, m |v_t| (more would reverse it):
+//
+//         n ^  -e v_close (after)       v_t' = v_t (1 - f / (m |v_t|)),
+//           |                           f = min(mu |j_n|, m |v_t|)
+//    -------+------------>  v_t
+//           |
+//           v  v_close < 0 (before: closing)
+Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& normal, double mass,
+                const Material& material) {
+  Impulse r;
+  const Vec3 relative = velocity - object_velocity;
+  r.v_close = relative.dot(normal);
+  r.velocity = velocity;
+  if (!(r.v_close < 0)) return r;  // separating or sliding along: no impulse
+  r.closing = true;
+  const double j = -(1 + material.restitution) * mass * r.v_close;  // |j_n|, positive
+  r.normal_impulse = j * normal;
+  const Vec3 tangential = relative - r.v_close * normal;
+  const double slide = tangential.norm();
+  if (slide > 0) {
+    const double f = std::min(material.friction * j, mass * slide);  // never reverses v_t
+    r.friction = -(f / slide) * tangential;
+  }
+  r.velocity = velocity + (r.normal_impulse + r.friction) / mass;
+  return r;
+}
+
+// ---- Step 6: bounce in the remaining time, bounce cap --------------------------------
+
+// The lecture's best position adjustment: find when the hit happened (assuming constant
+// velocity within the step), apply the impulse there, move on for the time that is left,
+// and test that new path too. A particle in a crack could bounce forever in one step;
+// after the cap it stops where it hits next.
+Collision collide(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene) {
+  const int cap = std::clamp(scene.bounce_cap, 0, kMaxBounceCap);
+  Collision c;
+  Segment piece = step;
+  Vec3 v = velocity;
+  double remaining = dt;
+  SurfaceHit last;
+  for (;;) {
+    const SurfaceHit hit = first_hit(piece, scene);
+    if (!hit.hit) break;  // this piece is clear: the particle gets to its end
+    Bounce& bounce = c.trace[std::size_t(c.bounces)];
+    bounce.hit = hit;
+    bounce.from = settle(hit.point, scene, hit);
+    if (c.bounces == cap) {  // one hit too many: stop here, at rest
+      c.stopped = true;
+      c.position = bounce.from;
+      c.velocity = Vec3::Zero();
+      return c;
+    }
+    v = impulse(v, Vec3::Zero(), hit.normal, mass, scene.material).velocity;
+    bounce.velocity = v;
+    remaining *= 1 - hit.t;
+    piece = {bounce.from, bounce.from + v * remaining};
+    last = hit;
+    ++c.bounces;
+  }
+  c.position = settle(piece.b, scene, last);
+  c.velocity = v;
+  return c;
+}
+
+// ---- Step 7: never behind, exactly; the handling loop --------------------------------
+
+namespace {
+
+// A value whose sign says the side, and a bound on the rounding error made computing it.
+struct Signed {
+  double value = 0.0;
+  double error = 0.0;
+};
+
+// n . x + c: three products and three sums, each rounding by at most 2^-53 of its size,
+// err <= 4 2^-53 (sum of |terms|) < 1e-15 (sum of |terms|).
+Signed plane_value(const Plane& plane, const Vec3& x) {
+  const Vec3 terms = plane.normal.cwiseProduct(x);
+  return {terms.x() + terms.y() + terms.z() + plane.offset, 1e-15 * (terms.cwiseAbs().sum() + std::abs(plane.offset))};
+}
+
+// (x - v0) . (e1 x e2): Shewchuk's bound for orient3d, (7 + 56 2^-53) 2^-53 times the
+// "permanent" (the triple product with every product made positive), below 1e-15 times it.
+Signed triangle_value(const Triangle& t, const Vec3& x) {
+  const Vec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0, p = x - t.v0;
+  const double value = p.dot(e1.cross(e2));
+  const double permanent = std::abs(p.x()) * (std::abs(e1.y() * e2.z()) + std::abs(e1.z() * e2.y())) +
+                           std::abs(p.y()) * (std::abs(e1.z() * e2.x()) + std::abs(e1.x() * e2.z())) +
+                           std::abs(p.z()) * (std::abs(e1.x() * e2.y()) + std::abs(e1.y() * e2.x()));
+  return {value, 1e-15 * permanent};
+}
+
+double largest(const Vec3& v) { return v.cwiseAbs().maxCoeff(); }
+
+// The direction that moves away from all these surfaces fastest (its worst unit normal
+// n_i . d largest), scaled so that n_i . d >= 1 for every one: a push of k d then moves
+// each surface at least k farther off. The best direction is equally inclined to the one,
+// two or three normals that limit it, so it is among: each normal; each pair's bisector;
+// for each three, the d with n_i . d = 1 for all three. Zero when none moves away from all.
+Vec3 away_from(const std::vector<Vec3>& normals) {
+  Vec3 best = Vec3::Zero();
+  double best_margin = 0;
+  const auto consider = [&](const Vec3& d) {
+    const double length = d.norm();
+    if (!(length > 0)) return;
+    double margin = std::numeric_limits<double>::infinity();
+    for (const Vec3& n : normals) margin = std::min(margin, n.dot(d) / length);
+    if (margin > best_margin) {
+      best_margin = margin;
+      best = d / length;
+    }
+  };
+  const std::size_t k = normals.size();
+  for (std::size_t i = 0; i < k; ++i) {
+    consider(normals[i]);
+    for (std::size_t j = i + 1; j < k; ++j) {
+      consider(normals[i] + normals[j]);
+      for (std::size_t l = j + 1; l < k; ++l) {
+        Mat3 rows;
+        rows << normals[i].transpose(), normals[j].transpose(), normals[l].transpose();
+        if (rows.determinant() != 0) consider(rows.inverse() * Vec3::Ones());
+      }
+    }
+  }
+  return best_margin > 0 ? Vec3(best / best_margin) : Vec3::Zero();
+}
+
+}  // namespace
+
+//   Why this is needed: the hit point x = a + t (b - a) is rounded, so it lies a hair on
+//   either side of the surface; after a dead (e = 0) bounce the particle slides with the
+//   surface at "zero" distance, and rounding decides the side. The exact side is known
+//   only when the computed value is farther from zero than its error bound. When it is
+//   not, push the point off along the normals in doubt (the lecture's "collision point
+//   plus some offset along the normal") by a skin of a few rounding errors, doubled until
+//   nothing is in doubt. Pushing away from all of them together works even in an acute
+//   crease, where pushing off one would push behind the other.
+Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
+  const bool last_triangle = last.hit && last.triangle >= 0 && std::size_t(last.triangle) < scene.mesh.size();
+  const Triangle tri = last_triangle ? scene.mesh.triangle(std::size_t(last.triangle)) : Triangle{};
+  const double facing = last_triangle && last.normal.dot(tri.normal()) < 0 ? -1.0 : 1.0;
+  const double tri_length = tri.normal().norm();
+
+  // How p stands to plane i, or to the last triangle: certainly fine, or in doubt, with
+  // how far behind it is (deficit) and its rounding bound (error), both as distances.
+  struct Standing {
+    bool doubt = false;
+    double deficit = 0.0;
+    double error = 0.0;
+  };
+  const auto plane_standing = [&](std::size_t i, const Vec3& p) {
+    const Plane& plane = scene.planes[i];
+    const Signed s = plane_value(plane, p);
+    const bool strict = last.hit && last.plane == int(i);  // the plane just hit: strictly in front
+    if (strict ? s.value > s.error : s.value >= s.error) return Standing{};  // certainly fine
+    const double length = plane.normal.norm();
+    return Standing{true, std::max(0.0, -s.value / length), s.error / length};
+  };
+  const auto triangle_standing = [&](const Vec3& p) {
+    const Signed s = triangle_value(tri, p);
+    if (facing * s.value > s.error) return Standing{};  // certainly in front, on the facing side
+    return Standing{true, std::max(0.0, -facing * s.value / tri_length), s.error / tri_length};
+  };
+
+  // Most of the time nothing is in doubt: a particle in the open, or well off what it hit.
+  bool all_fine = !last_triangle || !triangle_standing(x).doubt;
+  for (std::size_t i = 0; i < scene.planes.size() && all_fine; ++i) all_fine = !plane_standing(i, x).doubt;
+  if (all_fine) return x;
+
+  // The planes to keep x in front of: all but those it is clearly behind (by more than a
+  // thousand rounding errors), which it was behind before; they are not ours to fix.
+  std::vector<bool> keep(scene.planes.size(), false);
+  for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+    const Signed s = plane_value(scene.planes[i], x);
+    keep[i] = scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));
+  }
+
+  // Push away from every surface found in doubt so far: once a surface has needed a push
+  // it keeps getting one, so that in a crease two surfaces are pushed off together instead
+  // of in turn (each turn would push behind the other). The skin starts at four times the
+  // largest rounding bound (enough to certify) plus a few ulps, and doubles if it was not.
+  Vec3 p = x;
+  std::vector<bool> pushed(scene.planes.size(), false);
+  bool pushed_triangle = false;
+  for (int round = 0; round < 40; ++round) {
+    bool doubt = false;
+    double deficit = 0, error = 0;
+    const auto note = [&](const Standing& st) {
+      doubt = true;
+      deficit = std::max(deficit, st.deficit);
+      error = std::max(error, st.error);
+    };
+    for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+      if (!keep[i]) continue;
+      const Standing st = plane_standing(i, p);
+      if (!st.doubt) continue;
+      note(st);
+      pushed[i] = true;
+    }
+    if (last_triangle) {
+      const Standing st = triangle_standing(p);
+      if (st.doubt) {
+        note(st);
+        pushed_triangle = true;
+      }
+    }
+    if (!doubt) return p;
+    std::vector<Vec3> normals;
+    if (pushed_triangle) normals.push_back(facing * tri.normal() / tri_length);
+    for (std::size_t i = 0; i < scene.planes.size(); ++i)
+      if (pushed[i]) normals.push_back(scene.planes[i].normal.normalized());
+    const Vec3 away = away_from(normals);
+    if (away == Vec3::Zero()) return p;  // surfaces facing each other with no room between
+    // At least a few ulps of p: a smaller push would not move it at all.
+    p += (deficit + std::ldexp(4 * error + 0x1p-50 * std::max(largest(p), 1e-290), round)) * away;
+  }
+  return p;  // a corner too sharp to get out of by small pushes: give up near x
+}
+
+void System::step(double dt) {
+  // 1. Births, with their attributes.
+  const Births born = births(emitter, dt);
+  emitter.owed = born.owed;
+  for (int i = 0; i < born.count; ++i) {
+    const Particle p = emit(emitter, random);
+    particles.push_back(integrator == Integrator::verlet ? start_verlet(p, forces, dt) : p);
+  }
+  // 2. Forces and integration, then the step as a segment: test, impulse, position.
+  for (Particle& p : particles) {
+    const Vec3 a = p.position;
+    p = integrator == Integrator::euler ? euler_step(p, forces, dt) : verlet_step(p, forces, dt);
+    const Collision c = collide({a, p.position}, p.velocity, p.mass, dt, scene);
+    p.position = c.position;
+    p.velocity = c.velocity;
+    p.bounces = c.bounces;
+    // Verlet keeps its velocity in (position - previous): rewrite it after a bounce.
+    if (integrator == Integrator::verlet && (c.bounces > 0 || c.stopped)) p.previous = p.position - p.velocity * dt;
+  }
+  // 3. Death: those whose time is up.
+  particles = age(std::move(particles), dt);
+  time += dt;
+}
+
+}  // namespace labkit::lab07

@@ -1,0 +1,1102 @@
+#include "07_particles.judge.h"
+
+#include "common/oracle/oracle.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace labkit::lab07 {
+
+// ---- Text and replay tokens ----------------------------------------------------------
+
+void encode(codec::Writer& w, const Forces& f) {
+  codec::encode(w, f.gravity);
+  w.unit(f.drag);
+  w.unit(f.air_drag);
+}
+void decode(codec::Reader& r, Forces& f) {
+  codec::decode(r, f.gravity);
+  f.drag = r.real();
+  f.air_drag = r.real();
+}
+void encode(codec::Writer& w, const Material& m) {
+  w.unit(m.restitution);
+  w.unit(m.friction);
+}
+void decode(codec::Reader& r, Material& m) {
+  m.restitution = r.real();
+  m.friction = r.real();
+}
+void encode(codec::Writer& w, const Scene& s) {
+  w.count(s.planes.size());
+  for (const Plane& p : s.planes) {
+    for (int i = 0; i < 3; ++i) w.unit(p.normal[i]);
+    w.real(p.offset);
+  }
+  codec::encode(w, s.mesh);
+  encode(w, s.material);
+  w.count(std::size_t(std::max(0, s.bounce_cap)));
+}
+void decode(codec::Reader& r, Scene& s) {
+  s.planes.resize(r.count(64));
+  for (Plane& p : s.planes) {
+    codec::decode(r, p.normal);
+    p.offset = r.real();
+  }
+  codec::decode(r, s.mesh);
+  decode(r, s.material);
+  s.bounce_cap = int(r.count(kMaxBounceCap));
+}
+
+std::string describe(const Forces& f) {
+  return "gravity=" + fmt(f.gravity) + " drag=" + fmt(f.drag) + " air_drag=" + fmt(f.air_drag);
+}
+std::string describe(const Material& m) { return "e=" + fmt(m.restitution) + " mu=" + fmt(m.friction); }
+std::string describe(const Scene& s) {
+  std::string text = describe(s.material) + ", bounce cap " + std::to_string(s.bounce_cap) + ", " +
+                     std::to_string(s.planes.size()) + (s.planes.size() == 1 ? " plane" : " planes");
+  for (std::size_t i = 0; i < s.planes.size(); ++i) text += "\n    plane " + std::to_string(i) + ": " + describe(s.planes[i]);
+  if (s.mesh.size() > 0) text += "\n    mesh: " + describe(s.mesh);
+  return text;
+}
+std::string describe(const Collision& c) {
+  std::string text = "position " + fmt(c.position) + ", velocity " + fmt(c.velocity) + ", " +
+                     std::to_string(c.bounces) + (c.bounces == 1 ? " bounce" : " bounces") + (c.stopped ? ", stopped" : "");
+  const int shown = std::clamp(c.bounces + (c.stopped ? 1 : 0), 0, kMaxBounceCap + 1);
+  for (int k = 0; k < shown; ++k) {
+    const Bounce& b = c.trace[std::size_t(k)];
+    text += "\n    " + std::string(k == c.bounces ? "stop" : "bounce " + std::to_string(k)) + ": " +
+            (b.hit.plane >= 0 ? "plane " + std::to_string(b.hit.plane) : "triangle " + std::to_string(b.hit.triangle)) +
+            " at t = " + fmt(b.hit.t) + ", point " + fmt(b.hit.point) + ", normal " + fmt(b.hit.normal) +
+            ", velocity after " + fmt(b.velocity) + ", from " + fmt(b.from);
+  }
+  return text;
+}
+
+System system_of(const SystemCase& c) {
+  System s;
+  s.emitter = c.emitter;
+  s.scene = c.scene;
+  s.forces = c.forces;
+  s.integrator = c.verlet ? Integrator::verlet : Integrator::euler;
+  s.random = Random(std::uint64_t(c.seed));
+  return s;
+}
+
+namespace judge {
+
+namespace {
+
+using check::ambiguous;
+using check::Expect;
+using check::fail;
+using check::pass;
+
+constexpr double kRelative = 1e-9;  // tol = 1e-9 S (the header's tolerances)
+constexpr double kEnergy = 1e-12;   // the energy invariants' relative tolerance
+const double kRoot3 = std::sqrt(3.0);
+
+double largest(const Vec3& v) { return v.cwiseAbs().maxCoeff(); }
+
+// S of a scene: its mesh vertices, and each plane's point nearest the origin.
+double scene_scale(const Scene& scene) {
+  double s = scale_of(scene.mesh);
+  for (const Plane& p : scene.planes) {
+    const double length = p.normal.norm();
+    if (length > 0) s = std::max(s, std::abs(p.offset) / length);
+  }
+  return s;
+}
+
+double scale_with(const Scene& scene, std::initializer_list<Vec3> points) {
+  return std::max({scene_scale(scene), scale_of(points), 1e-300});
+}
+
+// The verdict on a yes/no answer whose exact value is `expected`; `doubt` says whether a
+// perturbation of 1e-9 could change it (then any answer passes, counted apart).
+Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no) {
+  if (rules == Rules::exact) doubt = false;
+  if (got == expected) return doubt ? ambiguous() : pass();
+  if (doubt) return ambiguous();
+  return fail(expected ? yes : no, got ? yes : no,
+              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
+                                    : "the exact answer is stable here: no input within 1e-9 S answers otherwise");
+}
+
+// Keeps the first failure of a sequence of checks, with a prefix saying where it was.
+Outcome within(const std::string& where, const Outcome& o) {
+  if (o.verdict != Outcome::Verdict::fail) return o;
+  return fail(o.expected, o.got, where + ": " + o.why);
+}
+
+bool finite(const Vec3& v) { return v.allFinite(); }
+
+// ---- Surfaces: exact hits and whether a perturbation could change them ----------------
+
+// How much n . x + c can move when every coordinate moves by eps S, every normal
+// component by eps and the offset by eps S: |n| sqrt(3) eps S + sqrt(3) eps |x| + eps S.
+// A value within twice that of zero is in doubt.
+bool plane_value_in_doubt(const Plane& p, const Vec3& x, double scale) {
+  const double reach = kRelative * (p.normal.norm() * kRoot3 * scale + kRoot3 * x.norm() + scale);
+  return std::abs(p.value(x)) <= 2 * reach;
+}
+
+bool plane_unstable(const Segment& s, const Plane& p, double scale, Rules rules) {
+  if (rules == Rules::exact) return false;
+  return plane_value_in_doubt(p, s.a, scale) || plane_value_in_doubt(p, s.b, scale);
+}
+
+bool sheet_hit(const SegmentTrianglePair& p) { return oracle::sheet_hit(p.segment, p.triangle); }
+
+// A triangle is in doubt when the segment comes within a few tol of it (lab 02's
+// conservative test), or when sampling finds a flip; a distant one never is.
+bool triangle_unstable(const Segment& s, const Triangle& tri, double tol, Rules rules) {
+  if (rules == Rules::exact) return false;
+  const Vec3 low = s.a.cwiseMin(s.b).array() - 8 * tol, high = s.a.cwiseMax(s.b).array() + 8 * tol;
+  const Vec3 t_low = tri.v0.cwiseMin(tri.v1).cwiseMin(tri.v2), t_high = tri.v0.cwiseMax(tri.v1).cwiseMax(tri.v2);
+  if ((t_low.array() > high.array()).any() || (t_high.array() < low.array()).any()) return false;
+  return oracle::segment_triangle_in_doubt(s, tri, tol) ||
+         check::flips_under_perturbation(SegmentTrianglePair{s, tri}, sheet_hit);
+}
+
+// How loosely a crossing fixes t: tol / |d_a - d_b| with unit-normal distances.
+double t_tolerance(double d_a, double d_b, double tol) {
+  const double change = std::abs(d_a - d_b);
+  return change > 0 ? tol / change : std::numeric_limits<double>::infinity();
+}
+double plane_t_tolerance(const Segment& s, const Plane& p, double tol) {
+  return t_tolerance(oracle::plane_distance(p, s.a), oracle::plane_distance(p, s.b), tol);
+}
+double triangle_t_tolerance(const Segment& s, const Triangle& t, double tol) {
+  return t_tolerance(oracle::triangle_plane_distance(t, s.a), oracle::triangle_plane_distance(t, s.b), tol);
+}
+
+// The checks every reported hit must pass: the point on the segment and the surface,
+// t reproducing it and near the exact t, the unit normal facing the particle.
+void check_plane_hit(Expect& e, const Segment& s, const Plane& p, const SurfaceHit& got, double tol) {
+  e.that("point", oracle::within(got.point, p, tol), fmt(got.point), "a point of the plane",
+         "the point is " + fmt(std::abs(oracle::plane_distance(p, got.point))) + " from the plane (tolerance " + fmt(tol) + ")");
+  e.that("point on segment", oracle::within(got.point, s, tol), fmt(got.point), "a point of the segment",
+         "the point is " + fmt(oracle::distance(got.point, s)) + " from the segment (tolerance " + fmt(tol) + ")");
+  e.that("t", oracle::parameter_reproduces(s, got.t, got.point, tol), fmt(got.t), "a + t (b - a) = point",
+         "a + t (b - a) is " + fmt((s.point(got.t) - got.point).norm()) + " away from the point");
+  const double exact_t = oracle::plane_hit_t(s, p), slack = plane_t_tolerance(s, p, tol);
+  e.that("t exact", std::abs(got.t - exact_t) <= slack, fmt(got.t), fmt(exact_t),
+         "t is off by " + fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
+  const Vec3 n = p.normal.normalized();
+  e.that("normal", (got.normal - n).norm() <= kRelative, fmt(got.normal), fmt(n),
+         "a plane's normal is its own, made unit length: n / |n|");
+}
+
+void check_triangle_hit(Expect& e, const Segment& s, const Triangle& tri, const SurfaceHit& got, double tol) {
+  e.that("point", oracle::within(got.point, tri, tol), fmt(got.point), "a point of the triangle",
+         "the point is " + fmt(oracle::distance(got.point, tri)) + " from the triangle (tolerance " + fmt(tol) + ")");
+  e.that("point on segment", oracle::within(got.point, s, tol), fmt(got.point), "a point of the segment",
+         "the point is " + fmt(oracle::distance(got.point, s)) + " from the segment (tolerance " + fmt(tol) + ")");
+  e.that("t", oracle::parameter_reproduces(s, got.t, got.point, tol), fmt(got.t), "a + t (b - a) = point",
+         "a + t (b - a) is " + fmt((s.point(got.t) - got.point).norm()) + " away from the point");
+  const double exact_t = oracle::segment_triangle(s, tri).t, slack = triangle_t_tolerance(s, tri, tol);
+  e.that("t exact", std::abs(got.t - exact_t) <= slack, fmt(got.t), fmt(exact_t),
+         "t is off by " + fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
+  // The side a is on: when a is a hair off the plane either side may be reported.
+  const int side = oracle::orientation(tri.v0, tri.v1, tri.v2, s.a);
+  const Vec3 n = oracle::unit_normal(tri);
+  const bool up = (got.normal - n).norm() <= kRelative, down = (got.normal + n).norm() <= kRelative;
+  const bool near_plane = std::abs(oracle::triangle_plane_distance(tri, s.a)) <= 8 * tol;
+  e.that("normal", (side > 0 && up) || (side < 0 && down) || (near_plane && (up || down)), fmt(got.normal),
+         fmt(side < 0 ? Vec3(-n) : n),
+         "the normal must be the triangle's unit normal, turned to the side a is on");
+}
+
+struct Status {
+  bool hit = false;
+  bool unstable = false;
+};
+
+struct SceneStatus {
+  std::vector<Status> planes, triangles;
+  bool any_stable_hit = false, any_hit = false, any_unstable = false;
+};
+
+SceneStatus statuses(const Segment& s, const Scene& scene, double tol, Rules rules) {
+  SceneStatus all;
+  const double scale = tol / kRelative;
+  for (const Plane& p : scene.planes) all.planes.push_back({oracle::plane_hit(s, p), plane_unstable(s, p, scale, rules)});
+  for (std::size_t i = 0; i < scene.mesh.size(); ++i) {
+    const Triangle tri = scene.mesh.triangle(i);
+    all.triangles.push_back({oracle::sheet_hit(s, tri), triangle_unstable(s, tri, tol, rules)});
+  }
+  for (const auto* list : {&all.planes, &all.triangles})
+    for (const Status& st : *list) {
+      all.any_hit = all.any_hit || st.hit;
+      all.any_stable_hit = all.any_stable_hit || (st.hit && !st.unstable);
+      all.any_unstable = all.any_unstable || st.unstable;
+    }
+  return all;
+}
+
+std::string describe_hits(const Segment& s, const Scene& scene, const SceneStatus& all) {
+  std::string text;
+  for (std::size_t i = 0; i < all.planes.size(); ++i)
+    if (all.planes[i].hit) text += (text.empty() ? "" : ", ") + ("plane " + std::to_string(i) + " at t = " + fmt(oracle::plane_hit_t(s, scene.planes[i])));
+  for (std::size_t i = 0; i < all.triangles.size(); ++i)
+    if (all.triangles[i].hit)
+      text += (text.empty() ? "" : ", ") + ("triangle " + std::to_string(i) + " at t = " + fmt(oracle::segment_triangle(s, scene.mesh.triangle(i)).t));
+  return text.empty() ? "no hit" : text;
+}
+
+std::string describe_hit(const SurfaceHit& h) {
+  if (!h.hit) return "no hit";
+  return (h.plane >= 0 ? "plane " + std::to_string(h.plane) : "triangle " + std::to_string(h.triangle)) + " at t = " + fmt(h.t);
+}
+
+bool valid_plane(const Scene& scene, int i) { return i >= 0 && std::size_t(i) < scene.planes.size(); }
+bool valid_triangle(const Scene& scene, int i) { return i >= 0 && std::size_t(i) < scene.mesh.size(); }
+
+// The first hit of a segment on a scene: lab 02's mesh verdict, with planes beside the triangles.
+Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got, Rules rules) {
+  const double tol = kRelative * scale_with(scene, {s.a, s.b});
+  const SceneStatus all = statuses(s, scene, tol, rules);
+  const std::string expected = describe_hits(s, scene, all);
+  const Outcome decision = verdict(got.hit, all.any_hit, !all.any_stable_hit && all.any_unstable, rules, "a hit", "no hit");
+  if (decision.verdict == Outcome::Verdict::fail) return fail(expected, describe_hit(got), decision.why);
+  if (!got.hit || !all.any_hit) return decision;
+
+  const bool on_plane = valid_plane(scene, got.plane), on_triangle = valid_triangle(scene, got.triangle);
+  if (on_plane == on_triangle)
+    return fail(expected, "plane " + std::to_string(got.plane) + ", triangle " + std::to_string(got.triangle),
+                "a hit names exactly one surface: a plane index or a triangle index (the other -1)");
+  Expect e;
+  double slack = 0;
+  if (on_plane) {
+    const Plane& p = scene.planes[std::size_t(got.plane)];
+    const Status& st = all.planes[std::size_t(got.plane)];
+    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "the segment does not hit plane " + std::to_string(got.plane));
+    check_plane_hit(e, s, p, got, tol);
+    slack = plane_t_tolerance(s, p, tol);
+  } else {
+    const Triangle tri = scene.mesh.triangle(std::size_t(got.triangle));
+    const Status& st = all.triangles[std::size_t(got.triangle)];
+    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "the segment does not hit triangle " + std::to_string(got.triangle));
+    check_triangle_hit(e, s, tri, got, tol);
+    slack = triangle_t_tolerance(s, tri, tol);
+  }
+  // No stable hit may come clearly before it.
+  for (std::size_t i = 0; i < all.planes.size(); ++i) {
+    if (!all.planes[i].hit || all.planes[i].unstable) continue;
+    const double t = oracle::plane_hit_t(s, scene.planes[i]);
+    if (got.t > t + slack + plane_t_tolerance(s, scene.planes[i], tol))
+      return fail(expected, describe_hit(got), "a nearer hit exists: plane " + std::to_string(i) + " at t = " + fmt(t));
+  }
+  for (std::size_t i = 0; i < all.triangles.size(); ++i) {
+    if (!all.triangles[i].hit || all.triangles[i].unstable) continue;
+    const Triangle tri = scene.mesh.triangle(i);
+    const double t = oracle::segment_triangle(s, tri).t;
+    if (got.t > t + slack + triangle_t_tolerance(s, tri, tol))
+      return fail(expected, describe_hit(got), "a nearer hit exists: triangle " + std::to_string(i) + " at t = " + fmt(t));
+  }
+  const Outcome o = e.outcome();
+  return o.verdict == Outcome::Verdict::fail ? o : decision;
+}
+
+// The exact unit normal of the surface a hit names, facing where the hit's normal faces.
+Vec3 exact_normal(const Scene& scene, const SurfaceHit& h) {
+  if (valid_plane(scene, h.plane)) return scene.planes[std::size_t(h.plane)].normal.normalized();
+  const Vec3 n = oracle::unit_normal(scene.mesh.triangle(std::size_t(h.triangle)));
+  return h.normal.dot(n) < 0 ? Vec3(-n) : n;
+}
+
+}  // namespace
+
+// ---- Step 1 ----------------------------------------------------------------------------
+
+Outcome emit(const EmitCase& in, const std::vector<Particle>& first, const std::vector<Particle>& second) {
+  const Emitter& em = in.emitter;
+  const Vec3 axis = em.direction.normalized();
+  const double tol = kRelative * std::max({largest(em.position), largest(em.half_extents), 1e-300});
+  const double tol_v = kRelative * (em.speed + em.speed_spread);
+  const double tol_l = kRelative * (std::abs(em.lifetime) + em.lifetime_spread);
+  const double cos_cone = std::cos(std::min(em.cone, M_PI));
+  bool varied = false;
+  for (std::size_t i = 0; i < first.size(); ++i) {
+    const Particle& p = first[i];
+    const std::string which = "particle " + std::to_string(i) + ": ";
+    const Vec3 off = (p.position - em.position).cwiseAbs() - em.half_extents;
+    if (!finite(p.position) || off.maxCoeff() > tol)
+      return fail("a position within position +- half_extents", fmt(p.position),
+                  which + "its position is " + fmt(off.maxCoeff()) + " outside the emitter's box");
+    const double speed = p.velocity.norm();
+    if (!(speed >= em.speed - em.speed_spread - tol_v && speed <= em.speed + em.speed_spread + tol_v))
+      return fail("a speed in [" + fmt(em.speed - em.speed_spread) + ", " + fmt(em.speed + em.speed_spread) + "]",
+                  fmt(speed), which + "its speed is out of the emitter's range");
+    if (speed > 0 && p.velocity.dot(axis) / speed < cos_cone - 1e-9)
+      return fail("a direction within " + fmt(em.cone) + " rad of " + fmt(axis), fmt(p.velocity),
+                  which + "its direction is " + fmt(std::acos(std::clamp(p.velocity.dot(axis) / speed, -1.0, 1.0))) +
+                      " rad from the cone's axis");
+    if (!(p.lifetime >= em.lifetime - em.lifetime_spread - tol_l && p.lifetime <= em.lifetime + em.lifetime_spread + tol_l))
+      return fail("a lifetime in [" + fmt(em.lifetime - em.lifetime_spread) + ", " + fmt(em.lifetime + em.lifetime_spread) + "]",
+                  fmt(p.lifetime), which + "its lifetime is out of the emitter's range");
+    Expect e;
+    e.equal("mass", p.mass, em.mass);
+    e.equal("age", p.age, 0.0);
+    e.equal("alive", p.alive, true);
+    e.equal("previous", p.previous, p.position);
+    e.equal("bounces", p.bounces, 0);
+    const Outcome o = e.outcome();
+    if (o.verdict == Outcome::Verdict::fail) return fail(o.expected, o.got, which + "a newborn particle: " + o.why);
+    const Particle& q = second[i];
+    if (q.position != p.position || q.velocity != p.velocity || q.lifetime != p.lifetime)
+      return fail(describe(p), describe(q),
+                  which + "emitted again from the same seed it came out different: draw only from `random`");
+    if (i > 0 && (p.position != first[0].position || p.velocity != first[0].velocity || p.lifetime != first[0].lifetime))
+      varied = true;
+  }
+  const bool spread = em.half_extents != Vec3::Zero() || em.cone > 0 || em.speed_spread > 0 || em.lifetime_spread > 0;
+  if (spread && first.size() >= 4 && !varied)
+    return fail("particles that differ (the emitter has spreads)", "identical particles", "every particle came out the same");
+  return pass();
+}
+
+Outcome births(const BirthsCase& in, const std::vector<Births>& got) {
+  long double due = in.emitter.owed, total = 0;
+  for (std::size_t k = 0; k < got.size(); ++k) {
+    due += (long double)in.emitter.rate * in.dt;
+    total += got[k].count;
+    const long double slack = 1e-9L * (due + 1);
+    const std::string which = "step " + std::to_string(k) + ": ";
+    if (got[k].count < 0) return fail("a count >= 0", describe(got[k].count), which + "a negative number of births");
+    if (!(got[k].owed >= 0 && got[k].owed < 1))
+      return fail("owed in [0, 1)", fmt(got[k].owed), which + "what is owed must be the fraction left over");
+    if (total < std::floor(due - slack) || total > std::floor(due + slack))
+      return fail(std::to_string((long long)std::floor(due)) + " births so far", std::to_string((long long)total),
+                  which + "after " + std::to_string(k + 1) + " steps the births must be owed + rate * time = " +
+                      fmt(double(due)) + ", rounded down");
+    if (std::abs((long double)got[k].owed + total - due) > slack + 1e-15L * due)
+      return fail("births + owed = " + fmt(double(due)), fmt(double(got[k].owed + total)),
+                  which + "the births so far plus what is owed must add up to owed + rate * time");
+  }
+  return pass();
+}
+
+Outcome age(const AgeCase& in, const std::vector<Particle>& got) {
+  std::vector<Particle> expected;
+  for (Particle p : in.particles) {
+    p.age += in.dt;
+    p.alive = p.age < p.lifetime;
+    if (p.alive) expected.push_back(p);
+  }
+  std::string want, have;
+  for (const Particle& p : expected) want += (want.empty() ? "" : ", ") + fmt(p.age) + "/" + fmt(p.lifetime);
+  for (const Particle& p : got) have += (have.empty() ? "" : ", ") + fmt(p.age) + "/" + fmt(p.lifetime);
+  want = "ages/lifetimes [" + want + "]";
+  have = "ages/lifetimes [" + have + "]";
+  if (got.size() != expected.size())
+    return fail(want, have, std::to_string(expected.size()) + " particles survive (a new age >= the lifetime dies), not " +
+                                std::to_string(got.size()));
+  for (std::size_t i = 0; i < got.size(); ++i) {
+    const Particle &g = got[i], &x = expected[i];
+    if (g.position != x.position || g.velocity != x.velocity || g.lifetime != x.lifetime)
+      return fail(want, have, "survivor " + std::to_string(i) + " is not the one expected there: keep their order");
+    if (g.age != x.age) return fail(want, have, "survivor " + std::to_string(i) + "'s age must be age + dt = " + fmt(x.age));
+    if (!g.alive) return fail(want, have, "survivor " + std::to_string(i) + " says alive = false");
+  }
+  return pass();
+}
+
+// ---- Step 2 ----------------------------------------------------------------------------
+
+namespace {
+
+oracle::Forces exact_forces(const Forces& f) { return {f.gravity, f.drag, f.air_drag}; }
+oracle::State state_of(const Particle& p) { return {p.position, p.velocity, p.previous}; }
+
+// The size of the acceleration's terms, for tolerances: |g| + (k1 |v| + k2 |v|^2) / m.
+double acceleration_size(const MotionCase& in) {
+  const double v = in.particle.velocity.norm();
+  return largest(in.forces.gravity) + (std::abs(in.forces.drag) * v + std::abs(in.forces.air_drag) * v * v) / in.particle.mass;
+}
+
+Outcome compare_particle(const MotionCase& in, const oracle::State& exact, const Particle& got, double tol_p, double tol_v) {
+  Expect e;
+  e.near("position", got.position, exact.position, tol_p);
+  e.near("velocity", got.velocity, exact.velocity, tol_v);
+  e.near("previous", got.previous, exact.previous, tol_p);
+  e.equal("mass", got.mass, in.particle.mass);
+  e.equal("age", got.age, in.particle.age);
+  e.equal("lifetime", got.lifetime, in.particle.lifetime);
+  e.equal("alive", got.alive, in.particle.alive);
+  return e.outcome();
+}
+
+double position_tolerance(const MotionCase& in) {
+  const Particle& p = in.particle;
+  return kRelative * (largest(p.position) + largest(p.previous) + in.dt * largest(p.velocity) +
+                      in.dt * in.dt * acceleration_size(in) + 1e-300);
+}
+
+}  // namespace
+
+Outcome force(const MotionCase& in, const Vec3& got) {
+  const Vec3 exact = oracle::force(in.particle.velocity, in.particle.mass, exact_forces(in.forces));
+  Expect e;
+  e.near("force", got, exact, kRelative * in.particle.mass * acceleration_size(in) + 1e-300);
+  return e.outcome();
+}
+
+Outcome euler_step(const MotionCase& in, const Particle& got) {
+  const oracle::State exact = oracle::euler_step(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
+  const double tol_v = kRelative * (largest(in.particle.velocity) + in.dt * acceleration_size(in) + 1e-300);
+  return compare_particle(in, exact, got, position_tolerance(in), tol_v);
+}
+
+Outcome start_verlet(const MotionCase& in, const Particle& got) {
+  const oracle::State exact = oracle::start_verlet(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
+  return compare_particle(in, exact, got, position_tolerance(in), kRelative * largest(in.particle.velocity) + 1e-300);
+}
+
+Outcome verlet_step(const MotionCase& in, const Particle& got) {
+  const oracle::State exact = oracle::verlet_step(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
+  const double tol_p = position_tolerance(in);
+  return compare_particle(in, exact, got, tol_p, tol_p / in.dt);
+}
+
+// ---- Step 3 ----------------------------------------------------------------------------
+
+namespace {
+
+// Could moving from and target by 1e-9 S, and speed and gravity by 1e-9 of themselves,
+// change the sign of D = v^4 + 2 v^2 (d . g) - |d x g|^2, or move the target off (or
+// onto) the vertical? Each term's change is bounded by its size times its relative
+// change; twice the sum is the doubt.
+bool launch_in_doubt(const LaunchCase& in) {
+  const double eps = kRelative;
+  const double S = std::max({largest(in.from), largest(in.target), 1e-300});
+  const Vec3 d = in.target - in.from;
+  const double dd = 2 * kRoot3 * eps * S;  // how far d may move
+  const double v2 = in.speed * in.speed, g = in.gravity.norm(), dn = d.norm();
+  const double cross = d.cross(in.gravity).norm();
+  const double dg = std::abs(d.dot(in.gravity));
+  const double change = 4.01 * eps * v2 * v2 + 2 * v2 * (2.01 * eps * dg + dd * g + dn * kRoot3 * eps * g) +
+                        2 * cross * (dd * g + dn * kRoot3 * eps * g) + (dd * g + dn * kRoot3 * eps * g) * (dd * g + dn * kRoot3 * eps * g);
+  const double D = oracle::launch_discriminant(in.from, in.target, in.speed, in.gravity);
+  return std::abs(D) <= 2 * change || cross <= 4 * (dd * g + dn * kRoot3 * eps * g);
+}
+
+int expected_count(const LaunchCase& in) {
+  if (in.speed == 0 || oracle::launch_vertical(in.from, in.target, in.gravity)) return 0;
+  const int sign = oracle::launch_sign(in.from, in.target, in.speed, in.gravity);
+  return sign > 0 ? 2 : (sign == 0 ? 1 : 0);
+}
+
+// A shot must have the speed, leave at its angle, and be at the target at its time.
+void check_shot(Expect& e, const std::string& name, const LaunchCase& in, const Shot& s, double tol) {
+  const Vec3 up = -in.gravity.normalized();
+  e.that(name + ".velocity", std::abs(s.velocity.norm() - in.speed) <= kRelative * in.speed, fmt(s.velocity),
+         "a velocity of length " + fmt(in.speed), "its length is " + fmt(s.velocity.norm()));
+  e.that(name + ".angle", in.speed > 0 && std::abs(std::sin(s.angle) - s.velocity.dot(up) / in.speed) <= 1e-9, fmt(s.angle),
+         "the elevation of the velocity", "sin(angle) does not match the velocity's upward part over the speed");
+  e.that(name + ".time", s.time > 0 && oracle::trajectory_reaches(in.from, s.velocity, s.time, in.gravity, in.target, tol),
+         fmt(s.time), "from + velocity t + g t^2 / 2 = target",
+         "at t = " + fmt(s.time) + " the shot is at " +
+             fmt(Vec3(in.from + s.velocity * s.time + 0.5 * s.time * s.time * in.gravity)) + ", not at the target (tolerance " +
+             fmt(tol) + ")");
+}
+
+}  // namespace
+
+Outcome aim(const LaunchCase& in, const Aim& got, Rules rules) {
+  const int expected = expected_count(in);
+  const bool doubt = rules == Rules::random && launch_in_doubt(in);
+  if (got.count != expected) {
+    if (doubt) return ambiguous();
+    return fail("count = " + std::to_string(expected), "count = " + std::to_string(got.count),
+                expected == 0 ? "the target is out of reach (D < 0), or straight above or below"
+                              : (expected == 1 ? "D = 0 exactly: the target is just in reach, by one angle"
+                                               : "D > 0: two angles reach the target"));
+  }
+  const Vec3 d = in.target - in.from;
+  const double g = in.gravity.norm();
+  Expect e;
+  const bool vertical = in.speed == 0 || oracle::launch_vertical(in.from, in.target, in.gravity);
+  const double radicand = oracle::launch_radicand(in.from, in.target, in.speed, in.gravity);
+  if (vertical) {
+    e.equal("radicand", got.radicand, 0.0);
+  } else {
+    const double x2 = d.cross(in.gravity).squaredNorm() / (g * g), y = -d.dot(in.gravity) / g;
+    const double A = g * x2 / (2 * in.speed * in.speed);
+    e.near("radicand", got.radicand, radicand, kRelative * (x2 + 4 * A * (A + std::abs(y))));
+  }
+  if (expected >= 1 && g > 0) {
+    const double S = std::max({largest(in.from), largest(in.target), in.speed * in.speed / g});
+    const double tol = kRelative * S;
+    check_shot(e, "low", in, got.low, tol);
+    check_shot(e, "high", in, got.high, tol);
+    e.that("order", got.low.angle <= got.high.angle + 1e-12, fmt(got.low.angle) + " <= " + fmt(got.high.angle),
+           "low.angle <= high.angle", "the low shot must have the lower angle");
+    // The roots lie on either side of the angle of the longest reach, tan = v^2 / (g x):
+    // a shot that reaches the target on the wrong side is the other root.
+    const double x = d.cross(in.gravity).norm() / g, pivot = in.speed * in.speed / (g * x);
+    const auto tan_of = [](const Shot& s) { return std::tan(s.angle); };
+    e.that("low is the low root", tan_of(got.low) <= pivot * (1 + 1e-9) + 1e-12, fmt(got.low.angle),
+           "an angle below atan(v^2 / (g x)) = " + fmt(std::atan(pivot)),
+           "low is above the angle of the longest reach: that is the lobbed shot, which belongs in high");
+    e.that("high is the high root", tan_of(got.high) >= pivot * (1 - 1e-9) - 1e-12, fmt(got.high.angle),
+           "an angle above atan(v^2 / (g x)) = " + fmt(std::atan(pivot)),
+           "high is below the angle of the longest reach: that is the flat shot, which belongs in low");
+  }
+  const Outcome o = e.outcome();
+  if (o.verdict == Outcome::Verdict::fail) return doubt && expected == 1 ? ambiguous() : o;
+  return doubt ? ambiguous() : pass();
+}
+
+// ---- Step 4 ----------------------------------------------------------------------------
+
+Outcome hit_plane(const SegmentScene& in, const SurfaceHit& got, Rules rules) {
+  const Segment& s = in.segment;
+  const Plane& p = in.scene.planes.front();
+  const double scale = scale_with(in.scene, {s.a, s.b}), tol = kRelative * scale;
+  const bool expected = oracle::plane_hit(s, p);
+  const Outcome decision = verdict(got.hit, expected, plane_unstable(s, p, scale, rules), rules, "a hit", "no hit");
+  if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
+  Expect e;
+  check_plane_hit(e, s, p, got, tol);
+  const Outcome o = e.outcome();
+  return o.verdict == Outcome::Verdict::fail ? o : decision;
+}
+
+Outcome hit_triangle(const SegmentTrianglePair& in, const SurfaceHit& got) {
+  const double tol = kRelative * check::scale_of_input(in);
+  const bool expected = sheet_hit(in);
+  const Outcome decision = verdict(got.hit, expected, triangle_unstable(in.segment, in.triangle, tol, Rules::random),
+                                   Rules::random, "a hit", "no hit");
+  if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
+  Expect e;
+  check_triangle_hit(e, in.segment, in.triangle, got, tol);
+  const Outcome o = e.outcome();
+  return o.verdict == Outcome::Verdict::fail ? o : decision;
+}
+
+Outcome first_hit(const SegmentScene& in, const SurfaceHit& got, Rules rules) {
+  return first_hit_on(in.segment, in.scene, got, rules);
+}
+
+// ---- Step 5 ----------------------------------------------------------------------------
+
+Outcome impulse(const ImpulseCase& in, const Impulse& got) {
+  const double e_ = in.material.restitution, mu = in.material.friction;
+  const oracle::Impulse exact = oracle::impulse(in.velocity, in.object_velocity, in.normal, in.mass, e_, mu);
+  const double V = in.velocity.norm() + in.object_velocity.norm();
+  const double tol_v = kRelative * V * (2 + e_ + mu * (1 + e_)) + 1e-300;
+  // v_close's sign is in doubt when moving every velocity by 1e-9 V, and the normal by
+  // 1e-9, could flip it.
+  const bool doubt = std::abs(exact.v_close) <= 2 * kRelative * V * (kRoot3 + 1);
+  Expect e;
+  if (got.closing != exact.closing && !doubt)
+    return fail("closing = " + describe(exact.closing), "closing = " + describe(got.closing),
+                "v_close = (v - v_obj) . n = " + fmt(exact.v_close) + ": the particle is " +
+                    (exact.closing ? "closing (v_close < 0)" : "not closing (v_close >= 0)"));
+  e.near("v_close", got.v_close, exact.v_close, tol_v);
+  e.near("normal_impulse", got.normal_impulse, exact.normal_impulse, in.mass * tol_v);
+  e.near("friction", got.friction, exact.friction, in.mass * tol_v);
+  e.near("velocity", got.velocity, exact.velocity, tol_v);
+  const Outcome o = e.outcome();
+  if (o.verdict == Outcome::Verdict::fail) return o;
+  return doubt ? ambiguous() : pass();
+}
+
+// ---- Step 6 ----------------------------------------------------------------------------
+
+Outcome collide(const CollideCase& in, const Collision& got) {
+  const Scene& scene = in.scene;
+  const int cap = std::clamp(scene.bounce_cap, 0, kMaxBounceCap);
+  const std::string answer = describe(got);
+  if (got.bounces < 0 || got.bounces > cap)
+    return fail("between 0 and " + std::to_string(cap) + " bounces", answer, "the bounce cap is " + std::to_string(cap));
+  if (got.stopped && got.bounces != cap)
+    return fail("no stop before the cap", answer, "a particle stops only when it hits again after " + std::to_string(cap) + " bounces");
+  if (!finite(got.position) || !finite(got.velocity)) return fail("a finite position and velocity", answer, "not finite");
+
+  const double e_ = scene.material.restitution, mu = scene.material.friction;
+  const double tol_v = kRelative * in.velocity.norm() * (2 + e_ + mu * (1 + e_)) + 1e-300;
+  Segment piece = in.step;
+  Vec3 v = in.velocity;
+  double remaining = in.dt;
+  bool doubt = false;
+  for (int k = 0;; ++k) {
+    const std::string where = k == 0 ? "the step a -> b" : "the piece after bounce " + std::to_string(k - 1);
+    const double tol = kRelative * scale_with(scene, {piece.a, piece.b, in.step.a, in.step.b});
+    if (k == got.bounces && !got.stopped) {  // the last piece: clear to its end
+      const Outcome o = within(where, first_hit_on(piece, scene, SurfaceHit{}, Rules::random));
+      if (o.verdict == Outcome::Verdict::fail)
+        return fail(o.expected, answer, o.why + " (a hit there is another bounce, or the stop when the cap is used up)");
+      doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
+      Expect e;
+      e.that("position", (got.position - piece.b).norm() <= tol, fmt(got.position), fmt(piece.b),
+             "the particle must end where " + where + " ends, " + fmt(piece.b) + " (tolerance " + fmt(tol) + ")");
+      e.near("velocity", got.velocity, v, tol_v);
+      const Outcome end = e.outcome();
+      if (end.verdict == Outcome::Verdict::fail) return end;
+      break;
+    }
+    const Bounce& b = got.trace[std::size_t(k)];
+    const Outcome o = within(where, first_hit_on(piece, scene, b.hit, Rules::random));
+    if (o.verdict == Outcome::Verdict::fail) return fail(o.expected, answer, o.why);
+    doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
+    if (!b.hit.hit) return fail("a hit", answer, where + ": the trace records no hit");
+    if ((b.from - b.hit.point).norm() > tol)
+      return fail(fmt(b.hit.point), fmt(b.from), "bounce " + std::to_string(k) + ": `from` must be the hit point (settled by at most tol)");
+    if (k == got.bounces) {  // the stop
+      Expect e;
+      e.that("position", (got.position - b.from).norm() <= tol, fmt(got.position), fmt(b.from),
+             "a stopped particle stays at its stopping hit's `from`");
+      e.equal("velocity", got.velocity, Vec3(Vec3::Zero()));
+      return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : (doubt ? ambiguous() : pass());
+    }
+    const oracle::Impulse exact = oracle::impulse(v, Vec3::Zero(), exact_normal(scene, b.hit), in.mass,
+                                                  scene.material.restitution, scene.material.friction);
+    if ((b.velocity - exact.velocity).norm() > tol_v)
+      return fail(fmt(exact.velocity), fmt(b.velocity),
+                  "bounce " + std::to_string(k) + ": the velocity after the impulse (e = " + fmt(scene.material.restitution) +
+                      ", mu = " + fmt(scene.material.friction) + ") on " + fmt(v));
+    remaining *= 1 - b.hit.t;
+    v = b.velocity;
+    piece = {b.from, b.from + v * remaining};
+  }
+  return doubt ? ambiguous() : pass();
+}
+
+// ---- Step 7 ----------------------------------------------------------------------------
+
+Outcome invariants(const CollideCase& in, const Collision& got) {
+  const Scene& scene = in.scene;
+  const std::string answer = describe(got);
+  const int used = std::clamp(got.bounces + (got.stopped ? 1 : 0), 0, kMaxBounceCap + 1);
+  // (1) Never behind a plane the step began in front of.
+  for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+    const Plane& p = scene.planes[i];
+    if (oracle::plane_side(p, in.step.a) < 0) continue;
+    if (oracle::plane_side(p, got.position) < 0)
+      return fail("a position not behind plane " + std::to_string(i), answer,
+                  "the particle ends behind plane " + std::to_string(i) + ", by " +
+                      fmt(-oracle::plane_distance(p, got.position)) + " (exactly: its n . x + c < 0)");
+  }
+  // Each `from`, strictly in front of the surface just hit; the end, not behind the last.
+  const auto side_of = [&](const SurfaceHit& h, const Vec3& x) {
+    if (valid_plane(scene, h.plane)) return oracle::plane_side(scene.planes[std::size_t(h.plane)], x);
+    const Triangle tri = scene.mesh.triangle(std::size_t(h.triangle));
+    const int facing = h.normal.dot(tri.normal()) < 0 ? -1 : 1;
+    return facing * oracle::orientation(tri.v0, tri.v1, tri.v2, x);
+  };
+  for (int k = 0; k < used; ++k) {
+    const Bounce& b = got.trace[std::size_t(k)];
+    if (!b.hit.hit || valid_plane(scene, b.hit.plane) == valid_triangle(scene, b.hit.triangle))
+      return fail("a hit on one surface", answer, "bounce " + std::to_string(k) + " names no valid surface");
+    if (side_of(b.hit, b.from) <= 0)
+      return fail("`from` strictly in front of the surface hit", answer,
+                  "bounce " + std::to_string(k) + ": `from` " + fmt(b.from) +
+                      " is on or behind the surface it bounced off (exactly): settle it");
+  }
+  if (used > 0 && side_of(got.trace[std::size_t(used - 1)].hit, got.position) < 0)
+    return fail("an end not behind the last surface hit", answer,
+                "the particle ends behind the last surface it hit, seen from the side it came from (exactly)");
+  // (3) and (4): energy.
+  const double e = scene.material.restitution, mu = scene.material.friction;
+  if (e <= 1 && !oracle::squared_speed_at_most(got.velocity, in.velocity, 1 + kEnergy))
+    return fail("|v_end|^2 <= (1 + 1e-12) |v|^2 = " + fmt(in.velocity.squaredNorm()), fmt(got.velocity.squaredNorm()),
+                "with e <= 1 against still surfaces, a bounce never adds energy");
+  if (e == 1 && mu == 0 && !got.stopped && !oracle::squared_speed_at_least(got.velocity, in.velocity, 1 - kEnergy))
+    return fail("|v_end|^2 = |v|^2 = " + fmt(in.velocity.squaredNorm()), fmt(got.velocity.squaredNorm()),
+                "with e = 1 and mu = 0 a bounce keeps the speed (within 1e-12)");
+  return pass();
+}
+
+Outcome settle(const SettleCase& in, const Vec3& got) {
+  const Scene& scene = in.scene;
+  const double tol = kRelative * scale_with(scene, {in.x});
+  if (!finite(got) || (got - in.x).norm() > tol)
+    return fail("a point within " + fmt(tol) + " of x", fmt(got), "settle moved x by " + fmt((got - in.x).norm()));
+  for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+    const Plane& p = scene.planes[i];
+    const bool strict = in.last.hit && in.last.plane == int(i);
+    // Clearly behind from the start (more than 1000 rounding errors): not settle's business.
+    const Vec3 terms = p.normal.cwiseProduct(in.x);
+    const double value = terms.x() + terms.y() + terms.z() + p.offset;
+    if (!strict && (p.normal == Vec3::Zero() || value < -1000 * 1e-15 * (terms.cwiseAbs().sum() + std::abs(p.offset)))) continue;
+    const int side = oracle::plane_side(p, got);
+    if (strict ? side <= 0 : side < 0)
+      return fail(strict ? "strictly in front of plane " + std::to_string(i) + " (the one just hit)"
+                         : "not behind plane " + std::to_string(i),
+                  fmt(got), "exactly, n . x + c is " + std::string(side < 0 ? "negative" : "zero") + " there");
+  }
+  if (in.last.hit && valid_triangle(scene, in.last.triangle)) {
+    const Triangle tri = scene.mesh.triangle(std::size_t(in.last.triangle));
+    const int facing = in.last.normal.dot(tri.normal()) < 0 ? -1 : 1;
+    if (facing * oracle::orientation(tri.v0, tri.v1, tri.v2, got) <= 0)
+      return fail("strictly in front of triangle " + std::to_string(in.last.triangle) + ", on last.normal's side", fmt(got),
+                  "exactly, the point is on or behind the triangle's plane");
+  }
+  return pass();
+}
+
+Outcome system_step(const SystemCase& in, const System& after, int step) {
+  const std::string which = "after step " + std::to_string(step + 1) + ", ";
+  if (std::abs(after.time - (step + 1) * in.dt) > 1e-9 * (step + 1) * in.dt)
+    return fail(fmt((step + 1) * in.dt), fmt(after.time), which + "time must have grown by dt each step");
+  // With no particle old enough to die yet, the count is the births so far.
+  const Emitter& em = in.emitter;
+  if (em.lifetime - em.lifetime_spread > (step + 1) * in.dt) {
+    const long double due = em.owed + (long double)em.rate * in.dt * (step + 1), slack = 1e-9L * (due + 1);
+    const auto count = (long double)after.particles.size();
+    if (count < std::floor(due - slack) || count > std::floor(due + slack))
+      return fail(std::to_string((long long)std::floor(due)) + " particles (the births so far)",
+                  std::to_string(after.particles.size()), which + "none can have died yet");
+  }
+  for (std::size_t i = 0; i < after.particles.size(); ++i) {
+    const Particle& p = after.particles[i];
+    const std::string who = which + "particle " + std::to_string(i);
+    if (!finite(p.position) || !finite(p.velocity)) return fail("finite", describe(p), who + " is not finite");
+    if (!p.alive || !(p.age < p.lifetime))
+      return fail("alive, age < lifetime", "alive = " + describe(p.alive) + ", age " + fmt(p.age) + ", lifetime " + fmt(p.lifetime),
+                  who + ": the dead are removed at the end of the step");
+    for (std::size_t k = 0; k < in.scene.planes.size(); ++k)
+      if (oracle::plane_side(in.scene.planes[k], p.position) < 0)
+        return fail("not behind plane " + std::to_string(k), fmt(p.position),
+                    who + " is behind plane " + std::to_string(k) + " by " +
+                        fmt(-oracle::plane_distance(in.scene.planes[k], p.position)) + " (exactly)");
+  }
+  return pass();
+}
+
+// ---- Generators ------------------------------------------------------------------------
+
+namespace {
+
+rc::Gen<double> dyadic(int low, int high, int bits) {
+  return rc::gen::map(rc::gen::inRange(low, high + 1), [bits](int k) { return std::ldexp(double(k), -bits); });
+}
+
+rc::Gen<Vec3> unit_vector() {
+  return rc::gen::map(gen::direction(1.0, 4), [](const Vec3& v) { return Vec3(v.normalized()); });
+}
+
+Scene scene_of(const StepSurfaces& s) {
+  Scene scene;
+  scene.planes = s.planes;
+  scene.mesh = s.mesh;
+  return scene;
+}
+
+rc::Gen<Material> material() {
+  return rc::gen::exec([] {
+    Material m;
+    m.restitution = *rc::gen::weightedOneOf<double>({{2, rc::gen::element(0.0, 0.5, 1.0)}, {2, dyadic(0, 16, 4)}});
+    m.friction = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(0.0)}, {2, dyadic(0, 16, 3)}});
+    return m;
+  });
+}
+
+rc::Gen<double> time_step() {
+  return rc::gen::weightedOneOf<double>({{3, dyadic(1, 8, 4)}, {1, rc::gen::element(1.0 / 60, 0.01, 0.1, 1.0)}});
+}
+
+}  // namespace
+
+rc::Gen<EmitCase> emit_case() {
+  return rc::gen::exec([] {
+    const double s = *gen::scale();
+    EmitCase c;
+    Emitter& e = c.emitter;
+    e.position = *gen::point(s);
+    e.half_extents = (*gen::lattice_point(s, 4)).cwiseAbs();
+    e.direction = *unit_vector();
+    e.cone = *rc::gen::weightedOneOf<double>({{1, rc::gen::element(0.0, M_PI / 2, M_PI)}, {3, dyadic(0, 24, 3)}});
+    e.speed = *dyadic(0, 64, 2) * s;
+    e.speed_spread = e.speed * *dyadic(0, 4, 2);
+    e.lifetime = *dyadic(1, 64, 3);
+    e.lifetime_spread = e.lifetime * *dyadic(0, 3, 2);
+    e.mass = *dyadic(1, 64, 3);
+    c.seed = *rc::gen::inRange(1, 1 << 20);
+    c.count = *rc::gen::inRange(1, 65);
+    return c;
+  });
+}
+
+rc::Gen<BirthsCase> births_case() {
+  return rc::gen::exec([] {
+    BirthsCase c;
+    c.emitter.rate = *rc::gen::weightedOneOf<double>(
+        {{3, dyadic(0, 512, 2)}, {1, rc::gen::element(10.0, 30.0, 1.0 / 3, 1000.0, 0.7)}});
+    c.emitter.owed = *dyadic(0, 15, 4);
+    c.dt = *time_step();
+    c.steps = *rc::gen::inRange(1, 65);
+    return c;
+  });
+}
+
+rc::Gen<AgeCase> age_case() {
+  return rc::gen::exec([] {
+    AgeCase c;
+    c.dt = *time_step();
+    const int n = *rc::gen::inRange(0, 13);
+    for (int i = 0; i < n; ++i) {
+      Particle p;
+      p.position = *gen::point(1.0);
+      p.velocity = *gen::point(1.0);
+      p.previous = p.position;
+      // Ages on the step's grid, so that age + dt hits the lifetime exactly in some cases.
+      p.age = *rc::gen::inRange(0, 9) * c.dt;
+      p.lifetime = *rc::gen::weightedOneOf<double>(
+          {{2, rc::gen::just(p.age + c.dt)}, {3, rc::gen::map(dyadic(1, 64, 3), [](double x) { return x; })}});
+      c.particles.push_back(p);
+    }
+    return c;
+  });
+}
+
+rc::Gen<MotionCase> motion_case() {
+  return rc::gen::exec([] {
+    const double s = *gen::scale();
+    MotionCase c;
+    c.dt = *time_step();
+    Particle& p = c.particle;
+    p.position = *gen::point(s);
+    p.velocity = *gen::point(s);
+    p.previous = p.position - c.dt * p.velocity + *gen::lattice_point(s / 64, 2);
+    p.mass = *rc::gen::weightedOneOf<double>({{3, rc::gen::just(1.0)}, {2, dyadic(1, 64, 3)}, {1, rc::gen::element(1e-3, 1e3)}});
+    p.age = *dyadic(0, 16, 3);
+    p.lifetime = p.age + 1;
+    c.forces.gravity = *rc::gen::oneOf(rc::gen::just(Vec3(0, 0, -9.81)), gen::lattice_point(s, 10));
+    c.forces.drag = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(0.0)}, {1, dyadic(0, 16, 3)}});
+    c.forces.air_drag = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(0.0)}, {1, dyadic(0, 16, 4)}});
+    if (s > 1) c.forces.air_drag /= s;  // keep the drag's size near the others'
+    return c;
+  });
+}
+
+namespace {
+
+// Exactly at the edge of reach (D = 0) on integers: with gravity q^2 along an axis, speed
+// m q, and the target x = m n across and y = (m^2 - n^2) / 2 up, v^4 = 2 g y v^2 + g^2 x^2.
+LaunchCase edge_of_reach(double length_scale) {
+  const int q = *rc::gen::inRange(1, 5), m = *rc::gen::inRange(1, 9), n = *rc::gen::inRange(1, 9);
+  const double x = m * n, y = (m * m - n * n) / 2.0;
+  const int axis = *rc::gen::inRange(0, 3);
+  Vec3 down = Vec3::Zero();
+  down[axis] = -1;
+  Vec3 across = Vec3::Zero();
+  across[(axis + 1 + *rc::gen::inRange(0, 2)) % 3] = *rc::gen::element(1.0, -1.0);
+  // Lengths times 4^k, gravity times 4^j: speed^2 = g s scales by 4^(k+j), exactly.
+  const int k = int(std::log2(length_scale)) / 2, j = *rc::gen::inRange(-2, 3);
+  const double L = std::ldexp(1.0, 2 * k), G = std::ldexp(1.0, 2 * j);
+  LaunchCase c;
+  c.from = *gen::lattice_point(L, 8);
+  c.target = c.from + L * (x * across - y * down);
+  c.gravity = G * q * q * down;
+  c.speed = std::ldexp(double(m * q), k + j);
+  return c;
+}
+
+}  // namespace
+
+rc::Gen<LaunchCase> launch_case() {
+  return rc::gen::exec([] {
+    const double s = *gen::scale();
+    const int family = *rc::gen::inRange(0, 6);
+    LaunchCase c;
+    if (family == 0) return edge_of_reach(s);
+    c.from = *gen::point(s);
+    c.gravity = family == 1 ? Vec3(*gen::lattice_point(1.0, 10)) : Vec3(0, 0, -9.81);
+    if (c.gravity == Vec3::Zero()) c.gravity = Vec3(0, -1, 0);
+    c.target = c.from + *gen::point(s);
+    if (family == 2) c.target = c.from - c.gravity * *dyadic(-8, 8, 2) * s;  // straight above or below
+    // A speed near the one that just reaches: v^2 near g (y + |d|) (the minimum), scaled.
+    const Vec3 d = c.target - c.from;
+    const double g = c.gravity.norm(), y = -d.dot(c.gravity) / g;
+    const double least = std::sqrt(std::max(0.0, g * (y + d.norm())));
+    const double factor = family == 3 ? 1 + std::ldexp(double(*gen::integer(4)), -*rc::gen::inRange(10, 50)) : *dyadic(1, 24, 3);
+    c.speed = family == 4 ? *dyadic(0, 64, 2) * std::sqrt(g * s) : least * factor;
+    return c;
+  });
+}
+
+rc::Gen<LaunchCase> exact_launch_case() {
+  return rc::gen::exec([] {
+    const double s = std::ldexp(1.0, 2 * *rc::gen::inRange(-5, 6));
+    if (*rc::gen::inRange(0, 3) == 0) return edge_of_reach(s);
+    LaunchCase c;
+    c.from = *gen::lattice_point(s, 16);
+    const int axis = *rc::gen::inRange(0, 3);
+    c.gravity = Vec3::Zero();
+    c.gravity[axis] = -double(*rc::gen::inRange(1, 11));
+    c.target = *rc::gen::inRange(0, 3) == 0 ? Vec3(c.from - c.gravity * *gen::integer(4) * s)  // straight above or below
+                                            : Vec3(c.from + *gen::lattice_point(s, 16));
+    c.speed = *rc::gen::inRange(0, 33) * std::sqrt(s);
+    return c;
+  });
+}
+
+rc::Gen<SegmentScene> plane_case() {
+  return rc::gen::exec([] {
+    const StepSurfaces c = *rc::gen::suchThat(gen::step_surfaces(), [](const StepSurfaces& x) { return !x.planes.empty(); });
+    SegmentScene out;
+    out.segment = c.step;
+    out.scene.planes = {c.planes[std::size_t(*rc::gen::inRange(0, int(c.planes.size())))]};
+    return out;
+  });
+}
+
+rc::Gen<SegmentScene> segment_scene() {
+  return rc::gen::map(gen::step_surfaces(), [](const StepSurfaces& c) { return SegmentScene{c.step, scene_of(c)}; });
+}
+
+rc::Gen<SegmentScene> exact_segment_scene() {
+  return rc::gen::map(gen::exact_step_surfaces(), [](const StepSurfaces& c) { return SegmentScene{c.step, scene_of(c)}; });
+}
+
+rc::Gen<ImpulseCase> impulse_case() {
+  return rc::gen::exec([] {
+    const double s = *gen::scale();
+    ImpulseCase c;
+    c.normal = *rc::gen::weightedOneOf<Vec3>({{1, rc::gen::element(Vec3(Vec3::UnitZ()), Vec3(-Vec3::UnitX()))}, {3, unit_vector()}});
+    c.velocity = *gen::point(s);
+    const int family = *rc::gen::inRange(0, 5);
+    if (family == 1) c.velocity -= c.velocity.dot(c.normal) * c.normal;  // (nearly) tangential: v_close about 0
+    if (family == 2) c.velocity = -*dyadic(1, 64, 2) * s * c.normal;    // straight in: no sliding
+    if (family == 3) c.velocity -= 2 * std::abs(c.velocity.dot(c.normal)) * c.normal;  // closing
+    c.object_velocity = *rc::gen::weightedOneOf<Vec3>({{2, rc::gen::just(Vec3(Vec3::Zero()))}, {1, gen::point(s)}});
+    c.mass = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(1.0)}, {2, dyadic(1, 64, 3)}});
+    c.material = *material();
+    return c;
+  });
+}
+
+namespace {
+
+bool starts_valid(const Segment& step, const std::vector<Plane>& planes) {
+  for (const Plane& p : planes)
+    if (oracle::plane_side(p, step.a) < 0) return false;
+  return true;
+}
+
+// Steps that start not behind any plane (reversed if that helps), as a particle's do.
+rc::Gen<StepSurfaces> valid_steps() {
+  const auto reversed_if_behind = [](StepSurfaces c) {
+    if (!starts_valid(c.step, c.planes)) std::swap(c.step.a, c.step.b);
+    return c;
+  };
+  return rc::gen::suchThat(rc::gen::map(gen::step_surfaces(), reversed_if_behind),
+                           [](const StepSurfaces& x) { return starts_valid(x.step, x.planes); });
+}
+
+}  // namespace
+
+rc::Gen<CollideCase> collide_case() {
+  return rc::gen::exec([] {
+    const StepSurfaces c = *valid_steps();
+    CollideCase out;
+    out.step = c.step;
+    out.scene = scene_of(c);
+    out.scene.material = *material();
+    out.scene.bounce_cap = *rc::gen::weightedOneOf<int>({{3, rc::gen::inRange(0, 5)}, {1, rc::gen::just(kMaxBounceCap)}});
+    out.dt = *time_step();
+    out.mass = *rc::gen::weightedOneOf<double>({{3, rc::gen::just(1.0)}, {1, dyadic(1, 64, 3)}});
+    // The integrator's velocity: the step's own, or one that differs from it (Euler's new
+    // velocity is not the one it moved with).
+    const Vec3 along = (c.step.b - c.step.a) / out.dt;
+    const double size = std::max(largest(along), 1e-300);
+    out.velocity = *rc::gen::weightedOneOf<Vec3>(
+        {{3, rc::gen::just(along)}, {1, rc::gen::map(gen::lattice_point(size / 4, 4), [along](const Vec3& d) { return Vec3(along + d); })}});
+    return out;
+  });
+}
+
+// A point on (or a hair from) a surface the step hits or could hit, as collide meets
+// them; the surface is met from the side the step starts on, as a particle would.
+rc::Gen<SettleCase> settle_case() {
+  return rc::gen::exec([] {
+    const StepSurfaces c = *rc::gen::suchThat(valid_steps(), [](const StepSurfaces& x) {
+      return !x.planes.empty() || x.mesh.size() > 0;
+    });
+    SettleCase out;
+    out.scene = scene_of(c);
+    SurfaceHit& last = out.last;
+    const int i = *rc::gen::inRange(0, int(c.planes.size() + c.mesh.size()));
+    const bool on_plane = std::size_t(i) < c.planes.size();
+    const int j = on_plane ? i : i - int(c.planes.size());
+    const Triangle tri = on_plane ? Triangle{} : c.mesh.triangle(std::size_t(j));
+    const int side = on_plane ? 1 : oracle::orientation(tri.v0, tri.v1, tri.v2, c.step.a);
+    if (!on_plane && side == 0) {  // the step starts on the sheet: it cannot hit it
+      out.x = c.step.a;
+      return out;
+    }
+    if (on_plane) {
+      const Plane& p = c.planes[std::size_t(j)];
+      last = {true, j, -1, 0.0, Vec3::Zero(), p.normal.normalized()};
+      // Where a + t (b - a) lands, computed as a student would: a hair either side.
+      const double va = p.value(c.step.a), vb = p.value(c.step.b);
+      Vec3 x = (va != vb) ? c.step.point(va / (va - vb)) : c.step.a;
+      x -= p.normal * (p.value(x) / p.normal.squaredNorm());
+      const double local = std::max(largest(x), std::abs(p.offset) / p.normal.norm());
+      x -= *rc::gen::element(0.0, 1.0, -1.0) * std::ldexp(local, -40) * p.normal.normalized();
+      out.x = x;
+    } else {
+      const Vec3 n = tri.normal();
+      last = {true, -1, j, 0.0, Vec3::Zero(), side * n.normalized()};
+      const Vec3 weights = Vec3(*dyadic(0, 8, 3), *dyadic(0, 8, 3), 0);
+      Vec3 x = tri.v0 + weights.x() * (tri.v1 - tri.v0) + weights.y() * (tri.v2 - tri.v0);
+      x -= n * ((x - tri.v0).dot(n) / n.squaredNorm());  // onto the plane, up to rounding
+      out.x = x;
+    }
+    last.point = out.x;
+    return out;
+  });
+}
+
+rc::Gen<SystemCase> system_case() {
+  return rc::gen::exec([] {
+    const double s = *gen::scale();
+    SystemCase c;
+    Emitter& e = c.emitter;
+    e.position = Vec3(0, 0, 4 * s) + *gen::lattice_point(s / 4, 4);
+    e.half_extents = (*gen::lattice_point(s / 8, 4)).cwiseAbs();
+    e.direction = *unit_vector();
+    e.cone = *dyadic(0, 24, 3);
+    e.speed = *dyadic(1, 32, 2) * s;
+    e.speed_spread = e.speed * *dyadic(0, 3, 2);
+    e.lifetime = *dyadic(1, 32, 3);
+    e.lifetime_spread = e.lifetime * *dyadic(0, 3, 2);
+    e.mass = *dyadic(1, 16, 2);
+    e.rate = *dyadic(1, 64, 0);
+    c.dt = *rc::gen::element(1.0 / 64, 1.0 / 32, 1.0 / 16, 1.0 / 8, 1.0 / 60);
+    c.steps = *rc::gen::inRange(1, 9);
+    e.rate = std::min(e.rate, 16 / (c.dt * c.steps));  // at most about 16 particles
+    c.verlet = *rc::gen::inRange(0, 2);
+    c.seed = *rc::gen::inRange(1, 1 << 20);
+    c.forces.gravity = Vec3(0, 0, -*dyadic(1, 64, 2) * s);
+    c.forces.drag = *rc::gen::weightedOneOf<double>({{3, rc::gen::just(0.0)}, {1, dyadic(0, 8, 4)}});
+    // A floor under the emitter, walls around it, tilted planes; or a terrain or soup.
+    Scene& scene = c.scene;
+    const int kind = *rc::gen::inRange(0, 4);
+    const auto plane = [](const Vec3& n, const Vec3& through) { return Plane{n, -n.dot(through)}; };
+    if (kind <= 2) scene.planes.push_back(plane(Vec3::UnitZ(), Vec3(0, 0, *gen::integer(2) * s)));
+    if (kind == 1)
+      for (const Vec3& n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)})
+        scene.planes.push_back(plane(n, -n * *dyadic(8, 32, 2) * s));
+    if (kind == 2)
+      for (int i = 0; i < 2; ++i) {
+        const Vec3 n = *gen::direction(1.0, 3);
+        scene.planes.push_back(plane(n, e.position - n.normalized() * *dyadic(8, 32, 2) * s));
+      }
+    if (kind >= 2) scene.mesh = *gen::mesh(s);
+    scene.material = *material();
+    scene.bounce_cap = *rc::gen::inRange(0, 5);
+    // Every plane faces the emitter's box, with room to spare.
+    for (Plane& p : scene.planes)
+      if (p.value(e.position) < 0) p = Plane{-p.normal, -p.offset};
+    return c;
+  });
+}
+
+}  // namespace judge
+}  // namespace labkit::lab07

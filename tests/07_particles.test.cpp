@@ -1,0 +1,621 @@
+// Lab 07 tests. Each step: the hand-worked examples of handouts/07_particles.md, then
+// random cases against the exact oracle (tests/07_particles.judge.cpp).
+#include "07_particles.judge.h"
+#include "particles.h"
+
+#include <cmath>
+
+using namespace labkit;
+using namespace labkit::lab07;
+using check::Expect;
+using check::Outcome;
+using judge::Rules;
+
+namespace {
+
+constexpr double kDegree = M_PI / 180;
+
+// Fails if the rule holds for no element, naming the first it fails for.
+Outcome first_failure(std::initializer_list<Outcome> outcomes) {
+  for (const Outcome& o : outcomes)
+    if (o.verdict == Outcome::Verdict::fail) return o;
+  return check::pass();
+}
+
+// ---- Runners: call the code under test, hand the answer to its judge ------------------
+
+Outcome run_emit(const EmitCase& in) {
+  std::vector<Particle> first, second;
+  Random r1(std::uint64_t(in.seed)), r2(std::uint64_t(in.seed));
+  for (int i = 0; i < in.count; ++i) first.push_back(emit(in.emitter, r1));
+  for (int i = 0; i < in.count; ++i) second.push_back(emit(in.emitter, r2));
+  return judge::emit(in, first, second);
+}
+
+std::vector<Births> run_births_steps(const BirthsCase& in) {
+  std::vector<Births> got;
+  Emitter e = in.emitter;
+  for (int k = 0; k < in.steps; ++k) {
+    got.push_back(births(e, in.dt));
+    e.owed = got.back().owed;
+  }
+  return got;
+}
+
+Outcome run_births(const BirthsCase& in) { return judge::births(in, run_births_steps(in)); }
+Outcome run_age(const AgeCase& in) { return judge::age(in, age(in.particles, in.dt)); }
+
+Outcome run_motion(const MotionCase& in) {
+  return first_failure({judge::force(in, force(in.particle, in.forces)),
+                        judge::euler_step(in, euler_step(in.particle, in.forces, in.dt)),
+                        judge::start_verlet(in, start_verlet(in.particle, in.forces, in.dt)),
+                        judge::verlet_step(in, verlet_step(in.particle, in.forces, in.dt))});
+}
+
+Outcome run_aim(const LaunchCase& in) { return judge::aim(in, aim(in.from, in.target, in.speed, in.gravity)); }
+Outcome run_exact_aim(const LaunchCase& in) {
+  return judge::aim(in, aim(in.from, in.target, in.speed, in.gravity), Rules::exact);
+}
+
+Outcome run_first_hit(const SegmentScene& in) { return judge::first_hit(in, first_hit(in.segment, in.scene)); }
+Outcome run_exact_first_hit(const SegmentScene& in) {
+  return judge::first_hit(in, first_hit(in.segment, in.scene), Rules::exact);
+}
+
+Outcome run_impulse(const ImpulseCase& in) {
+  return judge::impulse(in, impulse(in.velocity, in.object_velocity, in.normal, in.mass, in.material));
+}
+
+Collision run_collide_only(const CollideCase& in) { return collide(in.step, in.velocity, in.mass, in.dt, in.scene); }
+Outcome run_collide(const CollideCase& in) { return judge::collide(in, run_collide_only(in)); }
+Outcome run_invariants(const CollideCase& in) { return judge::invariants(in, run_collide_only(in)); }
+
+Outcome run_system(const SystemCase& in) {
+  System system = system_of(in);
+  for (int k = 0; k < in.steps; ++k) {
+    system.step(in.dt);
+    const Outcome o = judge::system_step(in, system, k);
+    if (o.verdict == Outcome::Verdict::fail) return o;
+  }
+  return check::pass();
+}
+
+// ---- The handout's scenes ----------------------------------------------------------------
+
+const Plane kFloor{{0, 0, 1}, 0};  // z = 0, solid below
+const Triangle kFloorTriangle{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}};
+
+Scene floor_scene(double e, double mu, int cap = 4) {
+  Scene s;
+  s.planes = {kFloor};
+  s.material = {e, mu};
+  s.bounce_cap = cap;
+  return s;
+}
+
+// The square [0, 4] x [0, 4] at height z, two triangles.
+void add_square(Mesh& m, double z) {
+  const int base = int(m.vertices.size());
+  m.vertices.insert(m.vertices.end(), {{0, 0, z}, {4, 0, z}, {4, 4, z}, {0, 4, z}});
+  m.triangles.push_back({base, base + 1, base + 2});
+  m.triangles.push_back({base, base + 2, base + 3});
+}
+
+// The floor and a wall x = 3 facing -x: the corner of the bouncing examples.
+Scene corner(int cap) {
+  Scene s = floor_scene(1, 0, cap);
+  s.planes.push_back(Plane{{-1, 0, 0}, 3});
+  return s;
+}
+
+SegmentScene on_floor(Vec3 a, Vec3 b) {
+  SegmentScene c;
+  c.segment = {a, b};
+  c.scene.planes = {kFloor};
+  return c;
+}
+
+}  // namespace
+
+// ---- Step 1 ----------------------------------------------------------------------------
+
+TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
+  const auto counts = [](std::vector<int> expected, std::vector<double> owed) {
+    return [=](const BirthsCase& in) {
+      const std::vector<Births> got = run_births_steps(in);
+      Expect e;
+      for (std::size_t k = 0; k < expected.size() && k < got.size(); ++k) {
+        e.equal("count " + std::to_string(k), got[k].count, expected[k]);
+        e.near("owed " + std::to_string(k), got[k].owed, owed[k], 1e-12);
+      }
+      return e.outcome();
+    };
+  };
+  BirthsCase ten{};
+  ten.emitter.rate = 10;
+  ten.dt = 0.25;
+  ten.steps = 4;
+  check::example("births", "10 per second, dt = 1/4: 2, 3, 2, 3", ten, counts({2, 3, 2, 3}, {0.5, 0, 0.5, 0}));
+  BirthsCase three{};
+  three.emitter.rate = 3;
+  three.dt = 0.125;
+  three.steps = 8;
+  check::example("births", "3 per second, dt = 1/8: 3 in a second", three,
+                 counts({0, 0, 1, 0, 0, 1, 0, 1}, {0.375, 0.75, 0.125, 0.5, 0.875, 0.25, 0.625, 0}));
+  BirthsCase fine{};
+  fine.emitter.rate = 10;
+  fine.dt = 1.0 / 64;
+  fine.steps = 64;
+  check::example("births", "10 per second at 64 steps per second: 10 in a second", fine, [](const BirthsCase& in) {
+    int total = 0;
+    for (const Births& b : run_births_steps(in)) total += b.count;
+    Expect e;
+    e.equal("births in 64 steps", total, 10);
+    return e.outcome();
+  });
+
+  AgeCase ages{};
+  ages.dt = 0.25;
+  for (double a : {0.0, 0.25, 0.5}) {
+    Particle p;
+    p.position = Vec3(a, 0, 0);
+    p.age = a;
+    p.lifetime = a == 0.5 ? 1.0 : 0.5;
+    ages.particles.push_back(p);
+  }
+  check::example("age", "ages 0, 1/4, 1/2 (lifetimes 1/2, 1/2, 1), dt 1/4: the second dies", ages, [](const AgeCase& in) {
+    const std::vector<Particle> got = age(in.particles, in.dt);
+    Expect e;
+    e.equal("survivors", int(got.size()), 2);
+    if (got.size() == 2) {
+      e.equal("first age", got[0].age, 0.25);
+      e.equal("second age", got[1].age, 0.75);
+      e.equal("order kept", got[1].position, Vec3(0.5, 0, 0));
+    }
+    return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : judge::age(in, got);
+  });
+
+  EmitCase still{};
+  still.emitter.position = Vec3(1, 2, 3);
+  still.emitter.direction = Vec3(0, 0, 1);
+  still.emitter.speed = 5;
+  still.emitter.lifetime = 2;
+  still.emitter.mass = 0.5;
+  still.count = 3;
+  check::example("emit", "no spread: at (1, 2, 3), velocity (0, 0, 5)", still, [](const EmitCase& in) {
+    Random random(1);
+    const Particle p = emit(in.emitter, random);
+    Expect e;
+    e.near("position", p.position, Vec3(1, 2, 3), 1e-12);
+    e.near("velocity", p.velocity, Vec3(0, 0, 5), 1e-12);
+    e.equal("lifetime", p.lifetime, 2.0);
+    e.equal("mass", p.mass, 0.5);
+    e.equal("age", p.age, 0.0);
+    e.equal("alive", p.alive, true);
+    return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : run_emit(in);
+  });
+
+  // A 60-degree cone: uniform in solid angle, the mean of cos(angle) is (1 + cos 60) / 2.
+  EmitCase cone{};
+  cone.emitter.position = Vec3(0, 0, 1);
+  cone.emitter.half_extents = Vec3(1, 2, 0);
+  cone.emitter.direction = Vec3(0, 0, 1);
+  cone.emitter.cone = M_PI / 3;
+  cone.emitter.speed = 10;
+  cone.emitter.speed_spread = 2;
+  cone.emitter.lifetime = 3;
+  cone.emitter.lifetime_spread = 1;
+  cone.count = 20000;
+  check::example("emit", "a 60-degree cone, 20000 particles: spread as the ranges say", cone, [](const EmitCase& in) {
+    Random random(7);
+    double cos_sum = 0, speed_sum = 0, life_sum = 0;
+    Vec3 side = Vec3::Zero(), where = Vec3::Zero();
+    for (int i = 0; i < in.count; ++i) {
+      const Particle p = emit(in.emitter, random);
+      const Vec3 d = p.velocity.normalized();
+      cos_sum += d.z();
+      side += Vec3(d.x(), d.y(), 0);
+      speed_sum += p.velocity.norm();
+      life_sum += p.lifetime;
+      where += p.position;
+    }
+    const double n = in.count;
+    Expect e;
+    e.near("mean cos(angle to the axis)", cos_sum / n, 0.75, 0.005);
+    e.near("mean sideways direction", side / n, Vec3::Zero(), 0.01);
+    e.near("mean speed", speed_sum / n, 10, 0.05);
+    e.near("mean lifetime", life_sum / n, 3, 0.02);
+    e.near("mean position", where / n, Vec3(0, 0, 1), 0.03);
+    const Outcome stats = e.outcome();
+    if (stats.verdict == Outcome::Verdict::fail) return stats;
+    EmitCase some = in;
+    some.count = 200;
+    return run_emit(some);
+  });
+}
+
+TEST_CASE("L07S1 emitter and lifetime: random cases", "[lab07][step1][oracle]") {
+  check::random_cases("emit", judge::emit_case(), run_emit);
+  check::random_cases("births", judge::births_case(), run_births);
+  check::random_cases("age", judge::age_case(), run_age);
+}
+
+// ---- Step 2 ----------------------------------------------------------------------------
+
+namespace {
+
+// The handout's thrown particle: from (0, 0, 10) at (2, 0, 0), g = 10 down, dt = 1/2.
+MotionCase thrown() {
+  MotionCase c;
+  c.particle.position = Vec3(0, 0, 10);
+  c.particle.velocity = Vec3(2, 0, 0);
+  c.particle.previous = c.particle.position;
+  c.forces.gravity = Vec3(0, 0, -10);
+  c.dt = 0.5;
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
+  check::example("euler_step", "two Euler steps of a thrown particle", thrown(), [](const MotionCase& in) {
+    const Particle one = euler_step(in.particle, in.forces, in.dt);
+    const Particle two = euler_step(one, in.forces, in.dt);
+    Expect e;
+    e.near("position after 1", one.position, Vec3(1, 0, 10), 1e-12);
+    e.near("velocity after 1", one.velocity, Vec3(2, 0, -5), 1e-12);
+    e.near("position after 2", two.position, Vec3(2, 0, 7.5), 1e-12);
+    e.near("velocity after 2", two.velocity, Vec3(2, 0, -10), 1e-12);
+    return e.outcome();
+  });
+  check::example("verlet_step", "two Verlet steps land on the exact parabola", thrown(), [](const MotionCase& in) {
+    const Particle start = start_verlet(in.particle, in.forces, in.dt);
+    const Particle one = verlet_step(start, in.forces, in.dt);
+    const Particle two = verlet_step(one, in.forces, in.dt);
+    Expect e;
+    e.near("previous at the start", start.previous, Vec3(-1, 0, 8.75), 1e-12);
+    e.near("position after 1", one.position, Vec3(1, 0, 8.75), 1e-12);
+    e.near("velocity after 1", one.velocity, Vec3(2, 0, -2.5), 1e-12);
+    e.near("position after 2", two.position, Vec3(2, 0, 5), 1e-12);
+    e.near("velocity after 2", two.velocity, Vec3(2, 0, -7.5), 1e-12);
+    e.near("previous after 2", two.previous, Vec3(1, 0, 8.75), 1e-12);
+    return e.outcome();
+  });
+  MotionCase dragged{};
+  dragged.particle.mass = 2;
+  dragged.particle.velocity = Vec3(4, 0, 0);
+  dragged.forces = {Vec3(0, 0, -10), 0.5, 0.25};
+  dragged.dt = 0.5;
+  check::example("force", "gravity and both drags: (-2 - 4, 0, -20)", dragged, [](const MotionCase& in) {
+    Expect e;
+    e.near("force", force(in.particle, in.forces), Vec3(-6, 0, -20), 1e-12);
+    return e.outcome();
+  });
+  check::example("euler_step", "with drag: the velocity loses 6 / 2 * 1/2 along x", dragged, [](const MotionCase& in) {
+    const Particle one = euler_step(in.particle, in.forces, in.dt);
+    Expect e;
+    e.near("position", one.position, Vec3(2, 0, 0), 1e-12);
+    e.near("velocity", one.velocity, Vec3(2.5, 0, -5), 1e-12);
+    return e.outcome();
+  });
+}
+
+TEST_CASE("L07S2 forces, Euler and Verlet: random cases", "[lab07][step2][oracle]") {
+  check::random_cases("integrators", judge::motion_case(), run_motion);
+}
+
+// ---- Step 3 ----------------------------------------------------------------------------
+
+namespace {
+
+LaunchCase lecture_shot(Vec3 target) { return {Vec3::Zero(), target, 25, Vec3(0, 0, -9.81)}; }
+
+auto expect_angles(int count, double radicand, double low, double high, double low_time, double high_time) {
+  return [=](const LaunchCase& in) {
+    const Aim got = aim(in.from, in.target, in.speed, in.gravity);
+    Expect e;
+    e.equal("count", got.count, count);
+    e.near("radicand", got.radicand, radicand, 1e-9 * std::abs(radicand) + 1e-12);
+    if (count > 0) {
+      e.near("low.angle", got.low.angle, low, 1e-9);
+      e.near("high.angle", got.high.angle, high, 1e-9);
+      e.near("low.time", got.low.time, low_time, 1e-9);
+      e.near("high.time", got.high.time, high_time, 1e-9);
+    }
+    const Outcome o = e.outcome();
+    return o.verdict == Outcome::Verdict::fail ? o : judge::aim(in, got, Rules::exact);
+  };
+}
+
+}  // namespace
+
+TEST_CASE("L07S3 launch angle to hit a target: worked examples", "[lab07][step3]") {
+  // The lecture's example: 25 m/s, a target 40 m away at the launch height.
+  check::example("aim", "the lecture's example: 19.4 and 70.6 degrees", lecture_shot({40, 0, 0}),
+                 expect_angles(2, 969.30709504, 0.3393874833716999, 1.2314088434231967, 1.6967868333822653, 4.8061098626660765));
+  check::example("aim", "the lecture's example, in degrees to 0.1", lecture_shot({40, 0, 0}), [](const LaunchCase& in) {
+    const Aim got = aim(in.from, in.target, in.speed, in.gravity);
+    Expect e;
+    e.near("low, degrees", std::round(got.low.angle / kDegree * 10) / 10, 19.4, 1e-9);
+    e.near("high, degrees", std::round(got.high.angle / kDegree * 10) / 10, 70.6, 1e-9);
+    e.near("radicand, to 0.01", std::round(got.radicand * 100) / 100, 969.31, 1e-9);
+    return e.outcome();
+  });
+  check::example("aim", "a target 10 m up: 36.2 and 67.8 degrees", lecture_shot({40, 0, 10}),
+                 expect_angles(2, 467.03509504, 0.6320328874362006, 1.18374210248556, 1.9830740305387204, 4.238835098464936));
+  check::example("aim", "70 m is out of reach", lecture_shot({70, 0, 0}), expect_angles(0, -1015.20962816, 0, 0, 0, 0));
+  // D = 10^4 - 10^2 10^2 = 0: one angle, 45 degrees.
+  check::example("aim", "just in reach: one angle, 45 degrees", LaunchCase{Vec3::Zero(), {10, 0, 0}, 10, {0, 0, -10}},
+                 expect_angles(1, 0, M_PI / 4, M_PI / 4, std::sqrt(2.0), std::sqrt(2.0)));
+  check::example("aim", "straight above: no angle to solve for", lecture_shot({0, 0, 5}), expect_angles(0, 0, 0, 0, 0, 0));
+}
+
+TEST_CASE("L07S3 launch angle to hit a target: random cases", "[lab07][step3][oracle]") {
+  check::random_cases("aim", judge::launch_case(), run_aim);
+  check::random_cases("exact.aim", judge::exact_launch_case(), run_exact_aim);
+}
+
+// ---- Step 4 ----------------------------------------------------------------------------
+
+TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab07][step4]") {
+  const auto plane_hit = [](double t, Vec3 point) {
+    return [=](const SegmentScene& in) {
+      const SurfaceHit got = hit_plane(in.segment, in.scene.planes[0]);
+      Expect e;
+      e.equal("hit", got.hit, true);
+      e.near("t", got.t, t, 1e-12);
+      e.near("point", got.point, point, 1e-12);
+      e.near("normal", got.normal, in.scene.planes[0].normal.normalized(), 1e-12);
+      const Outcome o = e.outcome();
+      return o.verdict == Outcome::Verdict::fail ? o : judge::hit_plane(in, got, Rules::exact);
+    };
+  };
+  const auto plane_miss = [](const SegmentScene& in) {
+    Expect e;
+    e.equal("hit", hit_plane(in.segment, in.scene.planes[0]).hit, false);
+    return e.outcome();
+  };
+  check::example("hit_plane", "falling through the floor at t = 3/4", on_floor({1, 1, 3}, {1, 1, -1}), plane_hit(0.75, {1, 1, 0}));
+  check::example("hit_plane", "rising from below: one-sided, no hit", on_floor({1, 1, -1}, {1, 1, 3}), plane_miss);
+  check::example("hit_plane", "resting on the floor, pushed in: t = 0", on_floor({1, 1, 0}, {1, 1, -1}), plane_hit(0, {1, 1, 0}));
+  check::example("hit_plane", "ending exactly on the floor is not behind it", on_floor({1, 1, 3}, {1, 1, 0}), plane_miss);
+  SegmentScene shelf = on_floor({0, 0, 3}, {0, 0, 0});
+  shelf.scene.planes = {Plane{{0, 0, 2}, -2}};  // z = 1, its normal of length 2
+  check::example("hit_plane", "z = 1 written 2 z - 2 = 0: t = 2/3", shelf, plane_hit(2.0 / 3, {0, 0, 1}));
+
+  const auto triangle_hit = [](double t, Vec3 normal) {
+    return [=](const SegmentTrianglePair& in) {
+      const SurfaceHit got = hit_triangle(in.segment, in.triangle);
+      Expect e;
+      e.equal("hit", got.hit, true);
+      e.near("t", got.t, t, 1e-12);
+      e.near("normal", got.normal, normal, 1e-12);
+      const Outcome o = e.outcome();
+      return o.verdict == Outcome::Verdict::fail ? o : judge::hit_triangle(in, got);
+    };
+  };
+  check::example("hit_triangle", "from above: normal up", SegmentTrianglePair{{{1, 1, 3}, {1, 1, -1}}, kFloorTriangle},
+                 triangle_hit(0.75, {0, 0, 1}));
+  check::example("hit_triangle", "from below: two-sided, the normal faces down", SegmentTrianglePair{{{1, 1, -1}, {1, 1, 3}}, kFloorTriangle},
+                 triangle_hit(0.25, {0, 0, -1}));
+  check::example("hit_triangle", "starting on the triangle: leaving it, no hit",
+                 SegmentTrianglePair{{{1, 1, 0}, {1, 1, -1}}, kFloorTriangle}, [](const SegmentTrianglePair& in) {
+                   Expect e;
+                   e.equal("hit", hit_triangle(in.segment, in.triangle).hit, false);
+                   return e.outcome();
+                 });
+
+  SegmentScene floor_and_shelf;
+  floor_and_shelf.segment = {{1, 3, 5}, {1, 3, -1}};
+  floor_and_shelf.scene.planes = {kFloor};
+  add_square(floor_and_shelf.scene.mesh, 2);
+  check::example("first_hit", "the shelf (t = 1/2) before the floor (t = 5/6)", floor_and_shelf, [](const SegmentScene& in) {
+    const SurfaceHit got = first_hit(in.segment, in.scene);
+    Expect e;
+    e.equal("hit", got.hit, true);
+    e.equal("plane", got.plane, -1);
+    e.equal("triangle", got.triangle, 1);
+    e.near("t", got.t, 0.5, 1e-12);
+    e.near("point", got.point, Vec3(1, 3, 2), 1e-12);
+    const Outcome o = e.outcome();
+    return o.verdict == Outcome::Verdict::fail ? o : judge::first_hit(in, got, Rules::exact);
+  });
+  SegmentScene tie;
+  tie.segment = {{1, 3, 1}, {1, 3, -1}};
+  tie.scene.planes = {kFloor};
+  add_square(tie.scene.mesh, 0);
+  check::example("first_hit", "a triangle lying on the floor: the tie goes to the plane", tie, [](const SegmentScene& in) {
+    const SurfaceHit got = first_hit(in.segment, in.scene);
+    Expect e;
+    e.equal("hit", got.hit, true);
+    e.equal("plane", got.plane, 0);
+    e.equal("triangle", got.triangle, -1);
+    e.near("t", got.t, 0.5, 1e-12);
+    return e.outcome();
+  });
+}
+
+TEST_CASE("L07S4 the step as a segment against surfaces: random cases", "[lab07][step4][oracle]") {
+  check::random_cases("hit_plane", judge::plane_case(), [](const SegmentScene& in) {
+    return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]));
+  });
+  check::random_cases("hit_triangle", gen::segment_triangle(), [](const SegmentTrianglePair& in) {
+    return judge::hit_triangle(in, hit_triangle(in.segment, in.triangle));
+  });
+  check::random_cases("first_hit", judge::segment_scene(), run_first_hit);
+  check::random_cases("exact.first_hit", judge::exact_segment_scene(), run_exact_first_hit);
+}
+
+// ---- Step 5 ----------------------------------------------------------------------------
+
+namespace {
+
+auto expect_impulse(bool closing, Vec3 normal_impulse, Vec3 friction, Vec3 velocity) {
+  return [=](const ImpulseCase& in) {
+    const Impulse got = impulse(in.velocity, in.object_velocity, in.normal, in.mass, in.material);
+    Expect e;
+    e.equal("closing", got.closing, closing);
+    e.near("normal_impulse", got.normal_impulse, normal_impulse, 1e-12);
+    e.near("friction", got.friction, friction, 1e-12);
+    e.near("velocity", got.velocity, velocity, 1e-12);
+    const Outcome o = e.outcome();
+    return o.verdict == Outcome::Verdict::fail ? o : judge::impulse(in, got);
+  };
+}
+
+}  // namespace
+
+TEST_CASE("L07S5 impulse with restitution and friction: worked examples", "[lab07][step5]") {
+  const Vec3 up(0, 0, 1);
+  check::example("impulse", "e = 1/2, mu = 1/4: sliding slows", ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 2, {0.5, 0.25}},
+                 expect_impulse(true, {0, 0, 12}, {-3, 0, 0}, {1.5, 0, 2}));
+  check::example("impulse", "mu = 1: friction stops the sliding, never reverses it",
+                 ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 2, {0.5, 1}}, expect_impulse(true, {0, 0, 12}, {-6, 0, 0}, {0, 0, 2}));
+  check::example("impulse", "e = 1, mu = 0: the speed is kept", ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 1, {1, 0}},
+                 expect_impulse(true, {0, 0, 8}, {0, 0, 0}, {3, 0, 4}));
+  check::example("impulse", "a paddle rising at 2 meets a ball falling at 3: it leaves at 7",
+                 ImpulseCase{{0, 0, -3}, {0, 0, 2}, up, 1, {1, 0}}, expect_impulse(true, {0, 0, 10}, {0, 0, 0}, {0, 0, 7}));
+  check::example("impulse", "a floor falling faster than the ball: no impulse",
+                 ImpulseCase{{0, 0, -1}, {0, 0, -3}, up, 1, {1, 0}}, expect_impulse(false, {0, 0, 0}, {0, 0, 0}, {0, 0, -1}));
+}
+
+TEST_CASE("L07S5 impulse with restitution and friction: random cases", "[lab07][step5][oracle]") {
+  check::random_cases("impulse", judge::impulse_case(), run_impulse);
+}
+
+// ---- Step 6 ----------------------------------------------------------------------------
+
+namespace {
+
+auto expect_collision(Vec3 position, Vec3 velocity, int bounces, bool stopped) {
+  return [=](const CollideCase& in) {
+    const Collision got = run_collide_only(in);
+    Expect e;
+    e.near("position", got.position, position, 1e-9);
+    e.near("velocity", got.velocity, velocity, 1e-9);
+    e.equal("bounces", got.bounces, bounces);
+    e.equal("stopped", got.stopped, stopped);
+    const Outcome o = e.outcome();
+    return o.verdict == Outcome::Verdict::fail ? o : judge::collide(in, got);
+  };
+}
+
+CollideCase into_floor(double e, double mu) { return {{{0, 0, 1}, {2, 0, -1}}, {2, 0, -2}, 1, 1, floor_scene(e, mu)}; }
+CollideCase into_corner(int cap) { return {{{0, 0, 1}, {4, 0, -1}}, {4, 0, -2}, 1, 1, corner(cap)}; }
+
+}  // namespace
+
+TEST_CASE("L07S6 bounce in the remaining time, bounce cap: worked examples", "[lab07][step6]") {
+  check::example("collide", "e = 1: from (1, 0, 0) half a step at (2, 0, 2)", into_floor(1, 0),
+                 expect_collision({2, 0, 1}, {2, 0, 2}, 1, false));
+  check::example("collide", "e = 1/2: up at 1 instead of 2", into_floor(0.5, 0), expect_collision({2, 0, 0.5}, {2, 0, 1}, 1, false));
+  check::example("collide", "floor, then wall: two bounces", into_corner(4), expect_collision({2, 0, 1}, {-4, 0, 2}, 2, false));
+  check::example("collide", "cap 1: stopped at the wall", into_corner(1), expect_collision({3, 0, 0.5}, {0, 0, 0}, 1, true));
+  check::example("collide", "cap 0: stopped at the floor", into_corner(0), expect_collision({2, 0, 0}, {0, 0, 0}, 0, true));
+  check::example("collide", "no hit: the step stands", CollideCase{{{0, 0, 3}, {1, 0, 2}}, {1, 0, -1}, 1, 1, floor_scene(1, 0)},
+                 expect_collision({1, 0, 2}, {1, 0, -1}, 0, false));
+}
+
+TEST_CASE("L07S6 bounce in the remaining time, bounce cap: random cases", "[lab07][step6][oracle]") {
+  check::random_cases("collide", judge::collide_case(), run_collide);
+}
+
+// ---- Step 7 ----------------------------------------------------------------------------
+
+TEST_CASE("L07S7 never behind, exactly: worked examples", "[lab07][step7]") {
+  const auto settled = [](const SettleCase& in) { return judge::settle(in, settle(in.x, in.scene, in.last)); };
+  SettleCase on{};
+  on.x = Vec3(1, 1, 0);
+  on.scene = floor_scene(0, 0);
+  on.last = {true, 0, -1, 0.5, Vec3(1, 1, 0), Vec3(0, 0, 1)};
+  check::example("settle", "exactly on the floor just hit: lifted off it", on, settled);
+  SettleCase behind = on;
+  behind.x = Vec3(0.125, 0, -1.3877787807814457e-17);
+  check::example("settle", "a hair below the floor: back above it", behind, settled);
+  SettleCase crease = on;
+  crease.x = Vec3(0, 0, 0);
+  crease.scene.planes.push_back(Plane{{1, 0, -2}, 0});  // x >= 2 z: a wedge 26.6 degrees wide
+  check::example("settle", "in an acute crease: off both planes at once", crease, settled);
+  SettleCase sheet{};
+  sheet.x = Vec3(1, 1, 0);
+  add_square(sheet.scene.mesh, 0);
+  sheet.last = {true, -1, 0, 0.5, Vec3(1, 1, 0), Vec3(0, 0, -1)};
+  check::example("settle", "on a sheet hit from below: below it", sheet, settled);
+
+  // A dead bounce (e = 0) along the floor: the hit point a + t (b - a) comes out
+  // 1.4e-17 below the floor, and the particle would slide on there.
+  const CollideCase dead{{{0, 0, 0.1}, {1, 0, -0.7}}, {1, 0, -0.8}, 1, 1, floor_scene(0, 0)};
+  check::example("invariants", "a dead bounce slides on, above the floor", dead, [](const CollideCase& in) {
+    const Collision got = run_collide_only(in);
+    const Outcome o = judge::invariants(in, got);
+    return o.verdict == Outcome::Verdict::fail ? o : judge::collide(in, got);
+  });
+  check::example("invariants", "e = 1: the speed is kept through two bounces", into_corner(4), run_invariants);
+  CollideCase crack{{{0.5, 0, 0.25}, {8.5, 0, -7.75}}, {8, 0, -8}, 1, 1, floor_scene(1, 0, kMaxBounceCap)};
+  crack.scene.planes.push_back(Plane{{0, 0, -1}, 0.5});  // a ceiling at z = 1/2: a crack to bounce in
+  check::example("invariants", "in a crack, up to the cap", crack, [](const CollideCase& in) {
+    const Collision got = run_collide_only(in);
+    Expect e;
+    e.equal("stopped", got.stopped, true);
+    const Outcome o = e.outcome();
+    return first_failure({o, judge::invariants(in, got), judge::collide(in, got)});
+  });
+}
+
+TEST_CASE("L07S7 the handling loop: worked examples", "[lab07][step7]") {
+  // Ten per second, one each step of 1/10 s; each lives 4 steps (lifetime 0.35).
+  SystemCase fountain{};
+  fountain.emitter.position = Vec3(0, 0, 1);
+  fountain.emitter.direction = Vec3(0, 0, 1);
+  fountain.emitter.speed = 5;
+  fountain.emitter.lifetime = 0.35;
+  fountain.emitter.rate = 10;
+  fountain.scene = floor_scene(0.5, 0.1);
+  fountain.dt = 0.1;
+  fountain.steps = 10;
+  check::example("system", "a fountain after 10 steps: the last 3 born are alive", fountain, [](const SystemCase& in) {
+    System system = system_of(in);
+    for (int k = 0; k < in.steps; ++k) system.step(in.dt);
+    Expect e;
+    e.equal("particles", int(system.particles.size()), 3);
+    e.near("time", system.time, 1.0, 1e-12);
+    for (const Particle& p : system.particles) e.that("above the floor", p.position.z() >= 0, fmt(p.position), "z >= 0", "below the floor");
+    return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : run_system(in);
+  });
+  // One particle dropped onto the floor with Verlet: after the bounce, previous is
+  // rewritten so that the next step goes on upward.
+  SystemCase drop{};
+  drop.scene = floor_scene(1, 0);
+  drop.forces.gravity = Vec3::Zero();
+  drop.verlet = 1;
+  drop.dt = 0.5;
+  check::example("system", "Verlet: a bounce rewrites previous", drop, [](const SystemCase& in) {
+    System system = system_of(in);
+    Particle p;
+    p.position = Vec3(0, 0, 1);
+    p.velocity = Vec3(0, 0, -4);
+    p.lifetime = 10;
+    system.particles = {start_verlet(p, system.forces, in.dt)};
+    system.step(in.dt);  // from z = 1 toward z = -1: hits at t = 1/2, back up to z = 1
+    Expect e;
+    e.equal("particles", int(system.particles.size()), 1);
+    if (system.particles.size() == 1) {
+      const Particle& q = system.particles[0];
+      e.near("position", q.position, Vec3(0, 0, 1), 1e-12);
+      e.near("velocity", q.velocity, Vec3(0, 0, 4), 1e-12);
+      e.near("previous", q.previous, Vec3(0, 0, -1), 1e-12);
+      e.equal("bounces", q.bounces, 1);
+    }
+    system.step(in.dt);
+    if (system.particles.size() == 1) e.near("position after 2", system.particles[0].position, Vec3(0, 0, 3), 1e-12);
+    return e.outcome();
+  });
+}
+
+TEST_CASE("L07S7 invariants: random cases", "[lab07][step7][oracle]") {
+  check::random_cases("settle", judge::settle_case(), [](const SettleCase& in) {
+    return judge::settle(in, settle(in.x, in.scene, in.last));
+  });
+  check::random_cases("invariants", judge::collide_case(), run_invariants);
+  check::random_cases("system", judge::system_case(), run_system);
+}
