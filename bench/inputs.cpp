@@ -3,6 +3,11 @@
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
 
+#include <malloc.h>
+
+#include <map>
+#include <memory>
+
 namespace bench {
 
 // Zero-area triangles and segments lying in the triangle's plane are left out: "never
@@ -45,6 +50,57 @@ int ambiguous(const Exact& exact) {
   int n = 0;
   for (bool d : exact.doubt) n += d;
   return n;
+}
+
+const Mesh& terrain(int triangles) {
+  static std::map<int, std::unique_ptr<Mesh>> meshes;
+  auto& m = meshes[triangles];
+  if (!m) m = std::make_unique<Mesh>(gen::terrain_mesh(triangles, 6));
+  return *m;
+}
+
+namespace {
+
+struct SplitMix {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+  }
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+};
+
+}  // namespace
+
+std::vector<Segment> short_segments(const Mesh& mesh, int count, std::uint64_t seed) {
+  SplitMix random{seed};
+  Vec3 low = mesh.vertices[0], high = low;
+  for (const Vec3& v : mesh.vertices) low = low.cwiseMin(v), high = high.cwiseMax(v);
+  const double size = (high - low).norm();
+  const auto in_ball = [&] {
+    for (;;) {
+      const Vec3 v(2 * random.uniform() - 1, 2 * random.uniform() - 1, 2 * random.uniform() - 1);
+      if (v.squaredNorm() <= 1 && v.squaredNorm() > 1e-6) return v;
+    }
+  };
+  std::vector<Segment> out;
+  out.reserve(count);
+  while (int(out.size()) < count) {
+    const Triangle t = mesh.triangle(std::size_t(random.next() % mesh.size()));
+    double u = random.uniform(), v = random.uniform();
+    if (u + v > 1) u = 1 - u, v = 1 - v;
+    const Vec3 c = t.v0 + u * (t.v1 - t.v0) + v * (t.v2 - t.v0) + size / 100 * in_ball();
+    const Vec3 d = size / 100 * in_ball().normalized();
+    out.push_back({c - d, c + d});
+  }
+  return out;
+}
+
+long long heap_bytes() {
+  const struct mallinfo2 m = mallinfo2();
+  return (long long)(m.uordblks + m.hblkhd);
 }
 
 }  // namespace bench

@@ -4,8 +4,10 @@
 #pragma once
 
 #include "common/generators/generators.h"
+#include "common/generators/meshes.h"
 
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace bench {
@@ -27,5 +29,20 @@ Exact exact_segment_triangle(const std::vector<SegmentTrianglePair>& inputs);
 // How many answers differ from the exact ones where the exact answer is not in doubt.
 int disagreements(const std::vector<bool>& answers, const Exact& exact);
 int ambiguous(const Exact& exact);
+
+// ---- Trees and particles (labs 06, 07) ---------------------------------------------------
+
+// The seeded mesh of the tree benchmarks: a terrain of about `triangles` triangles over
+// [0, 1]^2 (gen::terrain_mesh, seed 6), built once per size and kept.
+const Mesh& terrain(int triangles);
+
+// `count` short segments at the mesh, as lab 06's step 6 draws them: centred within
+// size / 100 of a random point of a random triangle, size / 50 long (size: the mesh
+// box's diagonal). Seeded splitmix64, the same on every machine.
+std::vector<Segment> short_segments(const Mesh& mesh, int count, std::uint64_t seed);
+
+// Bytes the heap holds now (glibc's mallinfo2: arena in use plus mmapped blocks): the
+// difference across a build is what the built structure keeps.
+long long heap_bytes();
 
 }  // namespace bench

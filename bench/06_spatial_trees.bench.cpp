@@ -1,0 +1,417 @@
+// Lab 06: trees over a mesh, and the broad phase.
+//
+// tree_first_hit/IMPL/SIZE: first-hit queries of short segments (a fiftieth of the mesh's
+// size, at its surface) on a seeded terrain of about SIZE triangles. Implementations:
+// the reference k-d tree (lab 06), CGAL's AABB_tree (Epick, AABB_triangle_primitive,
+// first_intersection of the ray a -> b, cut at b), Embree 3 (rtcIntersect1, the segment
+// as a ray with tnear 0 and tfar its length, one build thread) and brute force
+// (given::segment_triangle on every triangle, on the first few segments only).
+// `disagree`: queries on which an answer differs from brute force's, on the segments
+// brute force answered: a hit where it found none or the reverse, or a hit whose point
+// a + t (b - a) lies farther than 1e-6 of the mesh's size from brute force's.
+// Counters: tests_per_query (calls of the segment-triangle test, for the trees that
+// count them) and bytes_per_triangle (what a build keeps, over the triangle count).
+//
+// tree_build/IMPL/SIZE: building those trees on the same meshes; items are triangles.
+// The reference BSP has no row: its build did not finish 10k triangles in 60 s on the
+// terrain, nor in 90 s on a 10k sphere (bench/NOTES.md).
+//
+// broad_phase/IMPL/SIZE: overlapping pairs among SIZE moving spheres, as dense as the
+// lab's 2,000 in a cube of side 100; items are the n (n - 1) / 2 pairs a frame covers.
+#include "inputs.h"
+
+#include "spatial_trees.h"
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <benchmark/benchmark.h>
+
+#ifdef LABKIT_HAS_EMBREE
+#include <embree3/rtcore.h>
+#endif
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <map>
+#include <memory>
+#include <set>
+
+namespace {
+
+using namespace bench;
+namespace lab06 = labkit::lab06;
+
+constexpr int kQueries = 10000;
+
+// A first hit as every implementation reports it: where along the segment.
+struct First {
+  bool hit = false;
+  double t = 0.0;
+};
+
+// Brute force answers the first few segments: every triangle, for each.
+int brute_queries(int triangles) { return triangles <= 10000 ? 2000 : triangles <= 100000 ? 200 : 20; }
+
+First brute_first_hit(const Mesh& mesh, const Segment& s) {
+  First best;
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const labkit::given::SegmentHit h = labkit::given::segment_triangle(s, mesh.triangle(i));
+    if (h.hit && (!best.hit || h.t < best.t)) best = {true, h.t};
+  }
+  return best;
+}
+
+struct TreeInputs {
+  explicit TreeInputs(int n) : mesh(terrain(n)), segments(short_segments(mesh, kQueries, 6000 + n)) {
+    Vec3 low = mesh.vertices[0], high = low;
+    for (const Vec3& v : mesh.vertices) low = low.cwiseMin(v), high = high.cwiseMax(v);
+    size = (high - low).norm();
+    for (int i = 0; i < brute_queries(n); ++i) brute.push_back(brute_first_hit(mesh, segments[i]));
+  }
+  const Mesh& mesh;
+  std::vector<Segment> segments;
+  double size = 0;
+  std::vector<First> brute;  // brute force's answers on segments[0 .. brute.size())
+};
+
+const TreeInputs& inputs(int n) {
+  static std::map<int, std::unique_ptr<TreeInputs>> cache;
+  auto& p = cache[n];
+  if (!p) p = std::make_unique<TreeInputs>(n);
+  return *p;
+}
+
+int disagreements(const TreeInputs& in, const std::vector<First>& answers) {
+  int n = 0;
+  for (std::size_t i = 0; i < in.brute.size() && i < answers.size(); ++i) {
+    const First &a = answers[i], &b = in.brute[i];
+    const double length = (in.segments[i].b - in.segments[i].a).norm();
+    n += a.hit != b.hit || (a.hit && std::abs(a.t - b.t) * length > 1e-6 * in.size);
+  }
+  return n;
+}
+
+// Runs `query` over every segment per iteration, then counts its disagreements with
+// brute force. `query(segment)` returns a First.
+template <class Query>
+void measure_queries(benchmark::State& state, const TreeInputs& in, Query&& query) {
+  std::size_t hits = 0;
+  for (auto _ : state)
+    for (const Segment& s : in.segments) hits += query(s).hit;
+  benchmark::DoNotOptimize(hits);
+  state.SetItemsProcessed(state.iterations() * int64_t(in.segments.size()));
+  std::vector<First> answers;
+  for (std::size_t i = 0; i < in.brute.size(); ++i) answers.push_back(query(in.segments[i]));
+  state.counters["disagree"] = disagreements(in, answers);
+}
+
+// A query benchmark's structure, built once per size (Google Benchmark calls the
+// function several times) and kept, with the bytes its build kept per triangle.
+template <class Built>
+struct Cached {
+  std::unique_ptr<Built> built;
+  double bytes_per_triangle = 0;
+};
+template <class Built, class Make>
+const Cached<Built>& cached(const Mesh& mesh, Make&& make) {
+  static std::map<const Mesh*, Cached<Built>> cache;
+  Cached<Built>& c = cache[&mesh];
+  if (!c.built) {
+    const long long before = heap_bytes();
+    c.built = make(mesh);
+    c.bytes_per_triangle = double(heap_bytes() - before) / double(mesh.size());
+  }
+  return c;
+}
+
+// ---- The reference k-d tree -------------------------------------------------------------
+
+void build_reference(benchmark::State& state) {
+  const Mesh& mesh = terrain(int(state.range(0)));
+  long long kept = 0;
+  for (auto _ : state) {
+    const long long before = heap_bytes();
+    lab06::KdTree tree = lab06::build_kd_tree(mesh);
+    kept = heap_bytes() - before;
+    benchmark::DoNotOptimize(tree.nodes.data());
+  }
+  state.SetItemsProcessed(state.iterations() * int64_t(mesh.size()));
+  state.counters["bytes_per_triangle"] = double(kept) / double(mesh.size());
+}
+
+void first_hit_reference(benchmark::State& state) {
+  const TreeInputs& in = inputs(int(state.range(0)));
+  const auto& c = cached<lab06::KdTree>(in.mesh, [](const Mesh& m) { return std::make_unique<lab06::KdTree>(lab06::build_kd_tree(m)); });
+  const lab06::KdTree& tree = *c.built;
+  state.counters["bytes_per_triangle"] = c.bytes_per_triangle;
+  long long tests = 0, queries = 0;
+  measure_queries(state, in, [&](const Segment& s) {
+    const lab06::KdHit h = lab06::first_hit(tree, s);
+    tests += h.tests, ++queries;
+    return First{h.hit, h.t};
+  });
+  state.counters["tests_per_query"] = double(tests) / double(queries);
+}
+
+// ---- CGAL's AABB_tree ----------------------------------------------------------------------
+
+using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
+using CgalTriangles = std::vector<Epick::Triangle_3>;
+using CgalPrimitive = CGAL::AABB_triangle_primitive<Epick, CgalTriangles::const_iterator>;
+using CgalTree = CGAL::AABB_tree<CGAL::AABB_traits<Epick, CgalPrimitive>>;
+
+// The tree keeps iterators into the triangles: both are what the build makes (the k-d
+// tree, too, keeps its own copy of the triangles).
+struct CgalBuilt {
+  explicit CgalBuilt(const Mesh& mesh) {
+    triangles.reserve(mesh.size());
+    const auto point = [](const Vec3& v) { return Epick::Point_3(v.x(), v.y(), v.z()); };
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+      const Triangle t = mesh.triangle(i);
+      triangles.emplace_back(point(t.v0), point(t.v1), point(t.v2));
+    }
+    tree.insert(triangles.begin(), triangles.end());
+    tree.build();
+  }
+  CgalTriangles triangles;
+  CgalTree tree;
+};
+
+void build_cgal(benchmark::State& state) {
+  const Mesh& mesh = terrain(int(state.range(0)));
+  long long kept = 0;
+  for (auto _ : state) {
+    const long long before = heap_bytes();
+    CgalBuilt built(mesh);
+    kept = heap_bytes() - before;
+    benchmark::DoNotOptimize(&built.tree);
+  }
+  state.SetItemsProcessed(state.iterations() * int64_t(mesh.size()));
+  state.counters["bytes_per_triangle"] = double(kept) / double(mesh.size());
+}
+
+// first_intersection takes a ray: the ray from a through b, whose first hit counts when
+// it is no farther than b.
+void first_hit_cgal(benchmark::State& state) {
+  const TreeInputs& in = inputs(int(state.range(0)));
+  const auto& c = cached<CgalBuilt>(in.mesh, [](const Mesh& m) { return std::make_unique<CgalBuilt>(m); });
+  const CgalBuilt& built = *c.built;
+  state.counters["bytes_per_triangle"] = c.bytes_per_triangle;
+  measure_queries(state, in, [&](const Segment& s) {
+    const Epick::Point_3 a(s.a.x(), s.a.y(), s.a.z()), b(s.b.x(), s.b.y(), s.b.z());
+    const auto result = built.tree.first_intersection(Epick::Ray_3(a, b));
+    if (!result) return First{};
+    Epick::Point_3 p;
+    if (const auto* point = boost::get<Epick::Point_3>(&result->first)) p = *point;
+    else if (const auto* part = boost::get<Epick::Segment_3>(&result->first))  // in the triangle's plane
+      p = CGAL::squared_distance(a, part->source()) <= CGAL::squared_distance(a, part->target()) ? part->source()
+                                                                                                : part->target();
+    const double t = ((p - a) * (b - a)) / (b - a).squared_length();
+    return t <= 1 ? First{true, t} : First{};
+  });
+}
+
+// ---- Embree 3 ---------------------------------------------------------------------------------
+#ifdef LABKIT_HAS_EMBREE
+
+// Embree allocates through its own allocator (mmap for its blocks): its memory monitor
+// callback, not mallinfo, sees what a scene keeps.
+std::atomic<long long> embree_bytes{0};
+bool embree_monitor(void*, ssize_t bytes, bool) {
+  embree_bytes += bytes;
+  return true;
+}
+
+// One device for every scene, made outside the timings: one build thread, like the
+// other builds.
+RTCDevice embree_device() {
+  static const RTCDevice device = [] {
+    const RTCDevice d = rtcNewDevice("threads=1");
+    rtcSetDeviceMemoryMonitorFunction(d, embree_monitor, nullptr);
+    return d;
+  }();
+  return device;
+}
+
+struct EmbreeBuilt {
+  explicit EmbreeBuilt(const Mesh& mesh) {
+    const RTCDevice device = embree_device();
+    const long long before = embree_bytes;
+    scene = rtcNewScene(device);
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* v = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
+    for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+      for (int k = 0; k < 3; ++k) v[3 * i + k] = float(mesh.vertices[i][k]);
+    auto* f = static_cast<unsigned*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.size()));
+    for (std::size_t i = 0; i < mesh.size(); ++i)
+      for (int k = 0; k < 3; ++k) f[3 * i + k] = unsigned(mesh.triangles[i][k]);
+    rtcCommitGeometry(geometry);
+    rtcAttachGeometry(scene, geometry);
+    rtcReleaseGeometry(geometry);
+    rtcCommitScene(scene);
+    kept = embree_bytes - before;
+  }
+  ~EmbreeBuilt() { rtcReleaseScene(scene); }
+  EmbreeBuilt(const EmbreeBuilt&) = delete;
+  EmbreeBuilt& operator=(const EmbreeBuilt&) = delete;
+  RTCScene scene;
+  long long kept = 0;
+};
+
+void build_embree(benchmark::State& state) {
+  const Mesh& mesh = terrain(int(state.range(0)));
+  long long kept = 0;
+  for (auto _ : state) {
+    EmbreeBuilt built(mesh);
+    kept = built.kept;
+  }
+  state.SetItemsProcessed(state.iterations() * int64_t(mesh.size()));
+  state.counters["bytes_per_triangle"] = double(kept) / double(mesh.size());
+}
+
+void first_hit_embree(benchmark::State& state) {
+  const TreeInputs& in = inputs(int(state.range(0)));
+  const auto& c = cached<EmbreeBuilt>(in.mesh, [](const Mesh& m) { return std::make_unique<EmbreeBuilt>(m); });
+  const EmbreeBuilt& built = *c.built;
+  state.counters["bytes_per_triangle"] = double(built.kept) / double(in.mesh.size());  // its monitor's count
+  measure_queries(state, in, [&](const Segment& s) {
+    const Vec3 d = s.b - s.a;
+    const double length = d.norm();
+    const Vec3 u = d / length;
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit r;
+    r.ray.org_x = float(s.a.x()), r.ray.org_y = float(s.a.y()), r.ray.org_z = float(s.a.z());
+    r.ray.dir_x = float(u.x()), r.ray.dir_y = float(u.y()), r.ray.dir_z = float(u.z());
+    r.ray.tnear = 0.0f;
+    r.ray.tfar = float(length);
+    r.ray.mask = ~0u;
+    r.ray.flags = 0;
+    r.ray.time = 0.0f;
+    r.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    r.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(built.scene, &context, &r);
+    if (r.hit.geomID == RTC_INVALID_GEOMETRY_ID) return First{};
+    return First{true, double(r.ray.tfar) / length};
+  });
+}
+
+#endif
+
+// ---- Brute force ------------------------------------------------------------------------------
+
+void first_hit_brute_force(benchmark::State& state) {
+  const TreeInputs& in = inputs(int(state.range(0)));
+  const std::size_t n = in.brute.size();
+  std::size_t hits = 0;
+  for (auto _ : state)
+    for (std::size_t i = 0; i < n; ++i) hits += brute_first_hit(in.mesh, in.segments[i]).hit;
+  benchmark::DoNotOptimize(hits);
+  state.SetItemsProcessed(state.iterations() * int64_t(n));
+  state.counters["disagree"] = 0;  // it is the yardstick
+  state.counters["tests_per_query"] = double(in.mesh.size());
+  state.counters["bytes_per_triangle"] = 0;
+}
+
+// ---- Broad phase ------------------------------------------------------------------------------
+
+constexpr int kFrames = 4;
+constexpr int kBruteSubset = 10000;  // brute force at 100k: all pairs among the first 10,000
+
+// Frames of moving spheres: spread_spheres at the lab's density, then each centre moves
+// by its own velocity (up to 1 per axis per frame).
+struct Spheres {
+  explicit Spheres(int n) {
+    const double side = 100 * std::cbrt(n / 2000.0);
+    const std::vector<Sphere> start = gen::spread_spheres(n, side, 0.25, 1.0, 7000 + n);
+    const std::vector<Sphere> pace = gen::spread_spheres(n, 2.0, 0.0, 0.0, 8000 + n);
+    for (int f = 0; f < kFrames; ++f) {
+      frames.push_back(start);
+      for (int i = 0; i < n; ++i) frames[f][i].center += f * (pace[i].center - Vec3(1, 1, 1));
+    }
+  }
+  std::vector<std::vector<Sphere>> frames;
+};
+
+const Spheres& spheres(int n) {
+  static std::map<int, std::unique_ptr<Spheres>> cache;
+  auto& p = cache[n];
+  if (!p) p = std::make_unique<Spheres>(n);
+  return *p;
+}
+
+std::set<std::array<int, 2>> brute_pairs(const std::vector<Sphere>& s, int m) {
+  std::set<std::array<int, 2>> pairs;
+  for (int i = 0; i < m; ++i)
+    for (int j = i + 1; j < m; ++j)
+      if ((s[i].center - s[j].center).norm() <= s[i].radius + s[j].radius) pairs.insert({i, j});
+  return pairs;
+}
+
+void broad_phase_reference(benchmark::State& state) {
+  const int n = int(state.range(0));
+  const Spheres& in = spheres(n);
+  long long tests = 0, frames = 0;
+  for (auto _ : state) {
+    const lab06::SpherePairs p = lab06::overlapping_pairs(in.frames[frames % kFrames]);
+    tests += p.tests, ++frames;
+    benchmark::DoNotOptimize(p.pairs.data());
+  }
+  state.SetItemsProcessed(state.iterations() * (int64_t(n) * (n - 1) / 2));
+  // Agreement on frame 0, over the pairs brute force tests (all, or those among the subset).
+  const int m = std::min(n, kBruteSubset);
+  const std::set<std::array<int, 2>> exact = brute_pairs(in.frames[0], m);
+  std::set<std::array<int, 2>> mine;
+  for (const auto& pair : lab06::overlapping_pairs(in.frames[0]).pairs)
+    if (pair[1] < m) mine.insert(pair);
+  int differ = 0;
+  for (const auto& pair : mine) differ += !exact.count(pair);
+  for (const auto& pair : exact) differ += !mine.count(pair);
+  state.counters["disagree"] = differ;
+  state.counters["tests_per_query"] = double(tests) / double(frames);  // sphere tests per frame
+}
+
+// At 100k (5e9 pairs a frame), brute force covers the first kBruteSubset spheres: its
+// items are the pairs it tested, so its pairs per second stand for the whole frame's.
+void broad_phase_brute_force(benchmark::State& state) {
+  const int n = int(state.range(0)), m = std::min(n, kBruteSubset);
+  const Spheres& in = spheres(n);
+  long long frames = 0, found = 0;
+  for (auto _ : state) {
+    const std::vector<Sphere>& s = in.frames[frames++ % kFrames];
+    for (int i = 0; i < m; ++i)
+      for (int j = i + 1; j < m; ++j) found += (s[i].center - s[j].center).norm() <= s[i].radius + s[j].radius;
+  }
+  benchmark::DoNotOptimize(found);
+  state.SetItemsProcessed(state.iterations() * (int64_t(m) * (m - 1) / 2));
+  state.counters["disagree"] = 0;  // the yardstick
+  state.counters["tests_per_query"] = double(int64_t(m) * (m - 1) / 2);
+}
+
+}  // namespace
+
+// Names group/implementation/SIZE: the report fits the scaling exponent over SIZE.
+#define LABKIT_TREE_SIZES(function, name)                                       \
+  BENCHMARK(function)->Name(name)->Arg(10000)->Unit(benchmark::kMillisecond);  \
+  BENCHMARK(function)->Name(name)->Arg(100000)->Unit(benchmark::kMillisecond); \
+  BENCHMARK(function)->Name(name)->Arg(1000000)->Unit(benchmark::kMillisecond)
+
+LABKIT_TREE_SIZES(first_hit_reference, "tree_first_hit/reference");
+LABKIT_TREE_SIZES(first_hit_cgal, "tree_first_hit/cgal_aabb_tree");
+#ifdef LABKIT_HAS_EMBREE
+LABKIT_TREE_SIZES(first_hit_embree, "tree_first_hit/embree");
+#endif
+LABKIT_TREE_SIZES(first_hit_brute_force, "tree_first_hit/brute_force");
+LABKIT_TREE_SIZES(build_reference, "tree_build/reference");
+LABKIT_TREE_SIZES(build_cgal, "tree_build/cgal_aabb_tree");
+#ifdef LABKIT_HAS_EMBREE
+LABKIT_TREE_SIZES(build_embree, "tree_build/embree");
+#endif
+
+BENCHMARK(broad_phase_reference)->Name("broad_phase/reference")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(broad_phase_brute_force)->Name("broad_phase/brute_force")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
