@@ -46,12 +46,6 @@ template <class K> typename K::Point_3 point_of(const Vec3& v) { return {v.x(), 
 template <class K> typename K::Vector_3 vector_of(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 template <class K> typename K::Segment_3 segment_of(const Segment& s) { return {point_of<K>(s.a), point_of<K>(s.b)}; }
 
-// The smaller of two squared distances; for intervals, an interval holding it.
-FT lower(const FT& a, const FT& b) { return CGAL::min(a, b); }
-Interval lower(const Interval& a, const Interval& b) {
-  return Interval(std::min(a.inf(), b.inf()), std::min(a.sup(), b.sup()));
-}
-
 template <class K>
 typename K::FT distance2(const typename K::Point_3& p, const typename K::Segment_3& s) {
   if (s.is_degenerate()) return CGAL::squared_distance(p, s.source());
