@@ -151,6 +151,9 @@ function(labkit_mutant number name)
   target_compile_options(${library} PRIVATE -w)  # a mistake may well leave a variable unused
   set_target_properties(${library} PROPERTIES EXCLUDE_FROM_ALL FALSE)
   labkit_add_test_binary(${number} ${name} mutant_${M_NAME} ${library})
-  add_test(NAME lab${number}.mutant.${M_NAME} COMMAND test_${stem}_mutant_${M_NAME} "[lab${number}][step${M_STEP}]")
-  set_tests_properties(lab${number}.mutant.${M_NAME} PROPERTIES WILL_FAIL TRUE LABELS "mutant;lab${number}")
+  # Caught when the step fails in any way: a failed check, or a crash (a mistake may
+  # divide by zero; CTest's WILL_FAIL would not count a signal as a failure).
+  add_test(NAME lab${number}.mutant.${M_NAME}
+           COMMAND sh -c "! \"$0\" \"$1\"" $<TARGET_FILE:test_${stem}_mutant_${M_NAME}> "[lab${number}][step${M_STEP}]")
+  set_tests_properties(lab${number}.mutant.${M_NAME} PROPERTIES LABELS "mutant;lab${number}")
 endfunction()

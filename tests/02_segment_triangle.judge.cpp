@@ -102,7 +102,8 @@ Outcome mesh_yes_no(const std::vector<Status>& all, bool got, Rules rules, const
 // crossing far along the plane (the header's rule for points).
 void check_hit(Expect& e, const Segment& s, const Triangle& tri, double t, const Vec3& point, const Vec3& weights,
                const Vec3& normal, double tol) {
-  const double along = tol + (s.b - s.a).norm() * t_tolerance(s, tri, tol);
+  const double length = (s.b - s.a).norm();  // zero: a point, whose t is anything
+  const double along = tol + (length > 0 ? length * t_tolerance(s, tri, tol) : 0.0);
   e.that("point", oracle::within(point, tri, along), fmt(point), "a point of the triangle",
          "the point is " + fmt(oracle::distance(point, tri)) + " from the triangle (tolerance " + fmt(along) + ")");
   e.that("point on segment", oracle::within(point, s, tol), fmt(point), "a point of the segment",
