@@ -255,8 +255,12 @@ rc::Gen<Mesh> lattice_voxels() {
     const int count = *rc::gen::inRange(1, 9);
     std::vector<std::array<int, 3>> cubes{{0, 0, 0}};
     while (int(cubes.size()) < count) {
-      const std::array<int, 3> c{*rc::gen::inRange(0, 3), *rc::gen::inRange(0, 3), *rc::gen::inRange(0, 2)};
-      if (std::find(cubes.begin(), cubes.end(), c) == cubes.end()) cubes.push_back(c);
+      // rapidcheck scales inRange with the size, down to the lower end at size 0: a cell
+      // already taken moves on to the next free one (of 18), or the loop never ends.
+      int cell = *rc::gen::inRange(0, 3) * 6 + *rc::gen::inRange(0, 3) * 2 + *rc::gen::inRange(0, 2);
+      const auto of = [](int k) { return std::array<int, 3>{k / 6, k / 2 % 3, k % 2}; };
+      while (std::find(cubes.begin(), cubes.end(), of(cell)) != cubes.end()) cell = (cell + 1) % 18;
+      cubes.push_back(of(cell));
     }
     return moved(voxel_mesh(cubes, Vec3::Zero(), 1.0), p);
   });

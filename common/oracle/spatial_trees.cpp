@@ -6,6 +6,7 @@
 
 #include <CGAL/intersections.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -27,8 +28,59 @@ std::vector<Crossing> segment_mesh_crossings(const Segment& s, const Mesh& mesh)
   return out;
 }
 
+namespace {
+
+// A filter before the exact test: the separating axes of a triangle and a box (the box's
+// three axes, the triangle's normal, and the nine products of a box axis with an edge) in
+// doubles. Returns -1 when some axis separates them by more than the rounding could
+// account for, +1 when every axis shows them overlapping by more than that, 0 in doubt.
+// Margins: a dot product a . x of doubles is off by at most 3u |a|_1 R (u = 2^-53, R the
+// largest |coordinate|); an axis a box axis times an edge is off by u |a|_1 (the edge's
+// subtraction), the normal by about 12u |e0|_1 |e1|_1. 1e-12 is far above all of it. An
+// axis the products make exactly zero (an edge parallel to a box axis: the subtraction
+// gives 0 exactly when the coordinates are equal) is not needed and is skipped.
+int triangle_box_filter(const Triangle& t, const Aabb& box) {
+  double reach = 0;
+  for (int i = 0; i < 3; ++i)
+    reach = std::max({reach, t[i].cwiseAbs().maxCoeff(), box.min.cwiseAbs().maxCoeff(), box.max.cwiseAbs().maxCoeff()});
+  const Vec3 e[3] = {t.v1 - t.v0, t.v2 - t.v1, t.v0 - t.v2};
+  bool overlap = true;
+  const auto axis = [&](const Vec3& a, double scale) {  // -1 apart, else whether the overlap is certain
+    const double margin = 1e-12 * reach * scale;
+    double lo = 0, hi = 0;
+    for (int i = 0; i < 3; ++i) {
+      lo += std::min(a[i] * box.min[i], a[i] * box.max[i]);
+      hi += std::max(a[i] * box.min[i], a[i] * box.max[i]);
+    }
+    const double p0 = a.dot(t.v0), p1 = a.dot(t.v1), p2 = a.dot(t.v2);
+    const double tlo = std::min({p0, p1, p2}), thi = std::max({p0, p1, p2});
+    if (thi < lo - margin || hi < tlo - margin) return -1;
+    if (!(thi - lo > margin && hi - tlo > margin)) overlap = false;
+    return 0;
+  };
+  for (int i = 0; i < 3; ++i) {
+    Vec3 unit = Vec3::Zero();
+    unit[i] = 1;
+    if (axis(unit, 1) < 0) return -1;
+  }
+  const Vec3 n = e[0].cross(e[1]);
+  if (axis(n, n.cwiseAbs().sum() + e[0].cwiseAbs().sum() * e[1].cwiseAbs().sum()) < 0) return -1;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) {
+      Vec3 unit = Vec3::Zero();
+      unit[i] = 1;
+      const Vec3 a = unit.cross(e[j]);
+      if (a == Vec3::Zero()) continue;
+      if (axis(a, a.cwiseAbs().sum()) < 0) return -1;
+    }
+  return overlap ? 1 : 0;
+}
+
+}  // namespace
+
 bool triangle_meets_box(const Triangle& t, const Aabb& box) {
   if (is_degenerate(t)) return false;
+  if (const int clear = triangle_box_filter(t, box); clear != 0) return clear > 0;
   const Epick::Triangle_3 tri(fast(t.v0), fast(t.v1), fast(t.v2));
   const Epick::Iso_cuboid_3 cuboid(fast(box.min), fast(box.max));
   return CGAL::do_intersect(tri, cuboid);

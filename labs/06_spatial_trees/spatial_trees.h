@@ -164,7 +164,12 @@ KdHits all_hits(const KdTree& tree, const Segment& segment);
 // went there; no piece: no child (-1).
 //
 // Decide every side by the sign of n . (x - v0) computed in doubles: on integer input
-// with |x| <= 1024 it is exact. Zero-area triangles are left out altogether.
+// with |x| <= 1024 it is exact. While building, take a value within rounding noise of zero,
+// |d| <= 1e-13 |e0|_1 |e1|_1 |x - v0|_1 (e0 = v1 - v0, e1 = v2 - v0), as zero: a neighbour
+// sharing an edge with the plane's triangle would otherwise be cut into a sliver on the
+// wrong side, whose node then answers for a whole wedge of space (classify fails far from
+// the surface). On step 7's integers the snap never fires. Zero-area triangles are left
+// out altogether.
 //
 // Classify, for a closed mesh wound outward (every normal pointing out of the solid):
 // where is p? Descend from the root: strictly in front, go front; strictly behind, go
