@@ -203,6 +203,10 @@ int check(const Paths& paths, const CheckOptions& options) {
       return 2;
     }
   }
+  // The title column fits the longest title shown.
+  std::size_t title_width = 40;
+  for (const auto& steps : selected)
+    for (const Step* s : steps) title_width = std::max(title_width, s->title.size() + 2);
   if (!replaying)
     std::cout << bold("labkit check") << dim(": " + std::string(options.cases ? std::to_string(options.cases) : "the default") +
                                              " random cases per query, seed " + (options.seed.empty() ? "public" : options.seed))
@@ -255,7 +259,7 @@ int check(const Paths& paths, const CheckOptions& options) {
     for (const StepResult& r : results) {
       ++total;
       const Step& s = *r.step;
-      std::cout << "  " << term::pad(std::to_string(s.number), 3) << term::pad(s.tag, 7) << term::pad(s.title, 40)
+      std::cout << "  " << term::pad(std::to_string(s.number), 3) << term::pad(s.tag, 7) << term::pad(s.title, title_width)
                 << term::pad(coloured_status(r.status), 22) << counts(r) << "\n";
       if (r.status == Status::passed) {
         ++passing;
