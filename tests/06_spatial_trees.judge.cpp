@@ -36,7 +36,11 @@ std::string str(int n) { return std::to_string(n); }
 
 bool is_finite(const Vec3& v) { return v.allFinite(); }
 
-Aabb box_of(const Triangle& t) { return {t.v0.cwiseMin(t.v1).cwiseMin(t.v2), t.v0.cwiseMax(t.v1).cwiseMax(t.v2)}; }
+// The triangle's bounding box, corner by corner.
+Aabb box_of(const Triangle& t) {
+  const Vec3 low = t.v1.cwiseMin(t.v2).cwiseMin(t.v0), high = t.v1.cwiseMax(t.v2).cwiseMax(t.v0);
+  return {low, high};
+}
 
 bool boxes_meet(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();

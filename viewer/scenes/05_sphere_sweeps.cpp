@@ -79,7 +79,8 @@ void ball(Renderer& r, const Vec3& c, double radius, Color col, float width = 1.
 }
 
 Vec3 corner(const Rectangle& r, int k) {
-  return r.center + (k & 1 ? r.half_u : -r.half_u) * r.u + (k & 2 ? r.half_v : -r.half_v) * r.v;
+  const double su = (k & 1) ? 1.0 : -1.0, sv = (k & 2) ? 1.0 : -1.0;  // which corner
+  return r.center + su * r.half_u * r.u + sv * r.half_v * r.v;
 }
 
 // The core in `core`, its radius as a wire hull in `hull`.
