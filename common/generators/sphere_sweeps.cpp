@@ -347,7 +347,7 @@ rc::Gen<SphereSphereMotion> sphere_sphere_families(bool exact) {
         return place(g, dir * (k * g.s), -dir * (j * g.s / T), n * (k - j) * g.s, T);
       }
       case 3: {  // no relative motion
-        SphereSphereMotion m{{grid_point(g), grid_length(g)}, grid_direction(g), {grid_point(g), grid_length(g)}, {}, T};
+        SphereSphereMotion m{{grid_point(g), grid_length(g)}, grid_direction(g), {grid_point(g), grid_length(g)}, Vec3::Zero(), T};
         m.v1 = m.v0;
         return m;
       }
@@ -425,7 +425,7 @@ rc::Gen<SphereSphereMotion> grazing_spheres() {
     int n = 0;
     const Vec3 P = pythagorean(n);
     const Vec3 B = P.cross(*direction(1.0, 4)) * std::ldexp(1.0, *rc::gen::inRange(0, 10));
-    if (B == Vec3::Zero()) return SphereSphereMotion{{P * s, n * s}, {}, {}, {}, 1.0};
+    if (B == Vec3::Zero()) return SphereSphereMotion{{P * s, n * s}, Vec3::Zero(), {}, Vec3::Zero(), 1.0};
     const double tc = *rc::gen::inRange(1, 16) / 16.0;
     const Vec3 A = P - tc * B;
     const int k = *rc::gen::inRange(10, 53);
