@@ -227,6 +227,23 @@ TEST_CASE("L05S3 sphere, capsule and lozenge pairs: worked examples", "[lab05][s
                  expect_test<LozengePair>(true));
   check::example("test_lozenge_lozenge", "standing 1 above, radii 0.25 + 0.5", LozengePair{{kFloor, 0.25}, {kStanding, 0.5}},
                  expect_test<LozengePair>(false));
+  // Found by secret-seed runs: flat lozenges (one half-size 0) whose sides run parallel
+  // to the other core, where the rounded n = d0 x d1 says nothing about the lines' distance.
+  check::example("test_capsule_lozenge", "an axis parallel to a flat lozenge, 532 apart, radii 133 + 133",
+                 input_from_token<CapsuleLozenge>(parse_token(
+                     "test_capsule_lozenge:-9006.740114795919,8471.584183673469,8006.752610809948,-9414.110172193878,"
+                     "9123.376275510203,9093.072763871172,133.0742187499999,-8192,7168,5834.1123046875,0.30612244897959184,"
+                     "-0.4897959183673469,-0.8163265306122448,-0.8163265306122448,0.30612244897959184,-0.4897959183673469,"
+                     "2129.1875,0,133.0742187499999")),
+                 expect_test<CapsuleLozenge>(false));
+  check::example("test_lozenge_lozenge", "two flat lozenges in line, a gap just wider than r0 + r1",
+                 input_from_token<LozengePair>(parse_token(
+                     "test_lozenge_lozenge:0,0.0078125,0,-0.18181818181818188,0.5454545454545454,0.8181818181818182,"
+                     "0.5454545454545454,-0.6363636363636365,0.5454545454545454,0,0.0068359375,0.0009756064996508932,"
+                     "-0.007457386363636363,0.016512784090909092,-0.007457386363636363,-0.18181818181818188,0.5454545454545454,"
+                     "0.8181818181818182,0.5454545454545454,-0.6363636363636365,0.5454545454545454,0,0.004882817156612873,"
+                     "0.0009756064996508932")),
+                 expect_test<LozengePair>(false));
 }
 
 TEST_CASE("L05S3 sphere, capsule and lozenge pairs: random cases", "[lab05][step3][oracle]") {

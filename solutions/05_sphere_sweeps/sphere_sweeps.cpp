@@ -57,6 +57,12 @@ bool segment_segment_within(const Segment& s0, const Segment& s1, double r2) {
   if (nn == 0) return false;  // parallel (or a zero-length segment): the ends decided
   const double s = w.cross(d1).dot(n), t = w.cross(d0).dot(n);
   if (s < 0 || s > nn || t < 0 || t > nn) return false;  // the lines meet nearest outside: the ends decided
+  // Nearly parallel (sin^2 of the angle below 1e-10): n is then mostly rounding, and w . n
+  // picks up w's long component along the lines, so it no longer measures their distance.
+  // Measure the pair itself: any pair of points is at least the true distance apart, and
+  // when the segments really cross at such an angle the pair found is accurate.
+  if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm())
+    return (point_at(s0, s / nn) - point_at(s1, t / nn)).squaredNorm() <= r2;
   return square(w.dot(n)) <= r2 * nn;
 }
 
