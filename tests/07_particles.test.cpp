@@ -195,6 +195,14 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
     return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : run_emit(in);
   });
 
+  // A cone at zero speed turns nothing: every particle is the same, and that is right.
+  EmitCase resting{};
+  resting.emitter.cone = 1.5;
+  resting.emitter.lifetime = 0.125;
+  resting.emitter.mass = 0.125;
+  resting.count = 4;
+  check::example("emit", "a wide cone at speed 0: four identical particles at rest", resting, run_emit);
+
   // A 60-degree cone: uniform in solid angle, the mean of cos(angle) is (1 + cos 60) / 2.
   EmitCase cone{};
   cone.emitter.position = Vec3(0, 0, 1);
@@ -433,6 +441,14 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
     e.near("t", got.t, 0.5, 1e-12);
     return e.outcome();
   });
+  // Found by a secret-seed run: the segment passes a hair outside an edge of triangle 5
+  // (in doubt, so hitting it is fine); its t is judged against the plane crossing.
+  const SegmentScene edge = input_from_token<SegmentScene>(parse_token(
+      "first_hit:384,3456,-512,1341.8301825301382,1747.3950400718986,-1676.8855876623131,3,1,0,0,-0,0,1,0,-0,0,0,1,-0,"
+      "16,0,0,0,0,1024,0,0,2048,2048,0,3072,0,1024,0,0,1024,1024,0,1024,2048,-1024,1024,3072,-2048,2048,0,0,2048,1024,0,"
+      "2048,2048,0,2048,3072,0,3072,0,0,3072,1024,0,3072,2048,0,3072,3072,0,18,0,4,5,0,5,1,1,5,6,1,6,2,2,6,7,2,7,3,4,8,"
+      "9,4,9,5,5,9,10,5,10,6,6,10,11,6,11,7,8,12,13,8,13,9,9,13,14,9,14,10,10,14,15,10,15,11,0.5,0,4"));
+  check::example("first_hit", "a hair outside an edge: a hit there is in doubt, either answer passes", edge, run_first_hit);
 }
 
 TEST_CASE("L07S4 the step as a segment against surfaces: random cases", "[lab07][step4][oracle]") {

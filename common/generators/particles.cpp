@@ -131,7 +131,9 @@ Segment through_point(const Grid& g, const Vec3& x, const Vec3& normal) {
     case 3: return {x + d, x};
     case 4: {
       auto [u, v] = in_plane(normal);
-      if (normal.cwiseAbs().maxCoeff() > 3) {  // a triangle's normal: only roughly in its plane, but a is on it
+      // A triangle's normal (large): only roughly in its plane, but a is on it. Exact cases
+      // (planes only, normals up to 5) keep the integer vectors: b exactly in the plane.
+      if (!g.exact && normal.cwiseAbs().maxCoeff() > 3) {
         u.normalize();
         v.normalize();
       }
