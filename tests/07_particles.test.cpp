@@ -567,6 +567,13 @@ TEST_CASE("L07S7 never behind, exactly: worked examples", "[lab07][step7]") {
     return o.verdict == Outcome::Verdict::fail ? o : judge::collide(in, got);
   });
   check::example("invariants", "e = 1: the speed is kept through two bounces", into_corner(4), run_invariants);
+  // Found by a seed sweep: a starts exactly on plane 0, where n . a + c rounds to -1.5e-11.
+  check::example("invariants", "resting exactly on a plane, n . a + c rounding below zero, then moving behind it",
+                 input_from_token<CollideCase>(parse_token(
+                     "invariants:-33791.999998051404,16384.000000954293,16384.00000055659,-33791.99999423671,"
+                     "16384.000000954293,16384.00000055659,6.103515625e-05,0,0,0.125,0.0625,3,-1,2,1,-82944.00000051658,"
+                     "-0,-0,-1,16384.00000055659,0,1,0,-16384.00000000062,0,0,0,0,0")),
+                 run_invariants);
   CollideCase crack{{{0.5, 0, 0.25}, {8.5, 0, -7.75}}, {8, 0, -8}, 1, 1, floor_scene(1, 0, kMaxBounceCap)};
   crack.scene.planes.push_back(Plane{{0, 0, -1}, 0.5});  // a ceiling at z = 1/2: a crack to bounce in
   check::example("invariants", "in a crack, up to the cap", crack, [](const CollideCase& in) {

@@ -304,6 +304,9 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
 //  (4) for e = 1 and mu = 0, unless stopped: | |v_end|^2 - |v|^2 | <= 1e-12 |v|^2.
 // (1) and (2) are checked exactly. (3) and (4) allow 1e-12 because each impulse rounds a
 // few times (about 1e-15 relative each); a real mistake changes the energy by far more.
+// (1) needs one more care in hit_plane: a particle resting exactly on a plane can compute
+// n . a + c a hair below zero and skip the plane. Take value(a) within its error bound
+// (the plane's bound above) as 0, so that moving behind hits at t = 0.
 Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last);
 
 enum class Integrator { euler, verlet };

@@ -154,6 +154,23 @@ Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity)
 
 // ---- Step 4: the step as a segment against surfaces ----------------------------------
 
+namespace {
+
+// A value whose sign says the side, and a bound on the rounding error made computing it.
+struct Signed {
+  double value = 0.0;
+  double error = 0.0;
+};
+
+// n . x + c: three products and three sums, each rounding by at most 2^-53 of its size,
+// err <= 4 2^-53 (sum of |terms|) < 1e-15 (sum of |terms|).
+Signed plane_value(const Plane& plane, const Vec3& x) {
+  const Vec3 terms = plane.normal.cwiseProduct(x);
+  return {terms.x() + terms.y() + terms.z() + plane.offset, 1e-15 * (terms.cwiseAbs().sum() + std::abs(plane.offset))};
+}
+
+}  // namespace
+
 // One-sided: the solid is behind (value < 0). The step hits only if it starts on the
 // allowed side and ends behind; value changes linearly along the segment, so it crosses
 // zero at t = value(a) / (value(a) - value(b)), a division without cancellation because
@@ -161,7 +178,10 @@ Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity)
 SurfaceHit hit_plane(const Segment& segment, const Plane& plane) {
   const double length = plane.normal.norm();
   if (length == 0) return {};  // a zero normal: no plane
-  const double va = plane.value(segment.a), vb = plane.value(segment.b);
+  // a within rounding error of the plane counts as on it: a particle resting on a plane
+  // that moves behind it hits at t = 0, even when n . a + c rounds a hair below zero.
+  const Signed a = plane_value(plane, segment.a);
+  const double va = std::abs(a.value) <= a.error ? 0.0 : a.value, vb = plane.value(segment.b);
   if (va < 0) return {};   // starts behind: not this step's doing
   if (vb >= 0) return {};  // does not end behind (touching the plane is allowed)
   SurfaceHit h;
@@ -298,19 +318,6 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
 // ---- Step 7: never behind, exactly; the handling loop --------------------------------
 
 namespace {
-
-// A value whose sign says the side, and a bound on the rounding error made computing it.
-struct Signed {
-  double value = 0.0;
-  double error = 0.0;
-};
-
-// n . x + c: three products and three sums, each rounding by at most 2^-53 of its size,
-// err <= 4 2^-53 (sum of |terms|) < 1e-15 (sum of |terms|).
-Signed plane_value(const Plane& plane, const Vec3& x) {
-  const Vec3 terms = plane.normal.cwiseProduct(x);
-  return {terms.x() + terms.y() + terms.z() + plane.offset, 1e-15 * (terms.cwiseAbs().sum() + std::abs(plane.offset))};
-}
 
 // (x - v0) . (e1 x e2): Shewchuk's bound for orient3d, (7 + 56 2^-53) 2^-53 times the
 // "permanent" (the triple product with every product made positive), below 1e-15 times it.
