@@ -20,13 +20,18 @@
 
 namespace runner {
 
+// Random cases per query when grading. Students' checks run 10,000 per query on the
+// public seed; grading draws fewer from the secret seed, enough for every generator
+// family to come up hundreds of times, so that a class grades in minutes.
+constexpr int kGradingCases = 3000;
+
 struct GradeOptions {
   std::vector<std::string> submissions;
   std::string out = "grades";
   std::string seed;           // the secret seed; "" grades with the public one (and says so)
   std::vector<std::string> labs;  // empty: every lab the kit has
   int jobs = 0;               // processes at once (0: one per core)
-  int cases = 0;              // random cases per query (0: the harness's default)
+  int cases = kGradingCases;  // random cases per query
   double timeout = 60;        // seconds per step
   std::size_t memory_mb = 2048;  // address space per step
   std::string sandbox = "auto";  // auto, bubblewrap or none

@@ -43,7 +43,8 @@ int main(int argc, char** argv) {
   grade_command->add_option("--seed", grade.seed, "The secret seed (default: $LABKIT_GRADING_SEED)");
   grade_command->add_option("--jobs", grade.jobs, "Processes at once (default: one per core)")->check(CLI::PositiveNumber);
   grade_command->add_option("--labs", grade.labs, "Only these labs, e.g. --labs 01 02");
-  grade_command->add_option("--cases", grade.cases, "Random cases per query")->check(CLI::Range(1, 100000000));
+  grade_command->add_option("--cases", grade.cases, "Random cases per query (default " + std::to_string(runner::kGradingCases) + ")")
+      ->check(CLI::Range(1, 100000000));
   grade_command->add_option("--timeout", grade.timeout, "Seconds allowed per step (default 60)")->check(CLI::PositiveNumber);
   grade_command->add_option("--memory", grade.memory_mb, "Megabytes of memory per step (default 2048)")->check(CLI::Range(64, 1 << 20));
   grade_command->add_option("--sandbox", grade.sandbox, "auto (bubblewrap when it works), bubblewrap or none")
