@@ -27,6 +27,9 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <benchmark/benchmark.h>
+#ifdef LABKIT_HAS_NANOFLANN
+#include <nanoflann.hpp>
+#endif
 
 #ifdef LABKIT_HAS_EMBREE
 #include <embree3/rtcore.h>
@@ -353,6 +356,20 @@ std::set<std::array<int, 2>> brute_pairs(const std::vector<Sphere>& s, int m) {
   return pairs;
 }
 
+// Pairs that `got` and brute force disagree on, over the pairs brute force tests on
+// frame 0 (all of them, or those among the subset).
+int disagreements(const std::vector<std::array<int, 2>>& got, const std::vector<Sphere>& frame, int n) {
+  const int m = std::min(n, kBruteSubset);
+  const std::set<std::array<int, 2>> exact = brute_pairs(frame, m);
+  std::set<std::array<int, 2>> mine;
+  for (const auto& pair : got)
+    if (pair[1] < m) mine.insert(pair);
+  int differ = 0;
+  for (const auto& pair : mine) differ += !exact.count(pair);
+  for (const auto& pair : exact) differ += !mine.count(pair);
+  return differ;
+}
+
 void broad_phase_reference(benchmark::State& state) {
   const int n = int(state.range(0));
   const Spheres& in = spheres(n);
@@ -363,18 +380,58 @@ void broad_phase_reference(benchmark::State& state) {
     benchmark::DoNotOptimize(p.pairs.data());
   }
   state.SetItemsProcessed(state.iterations() * (int64_t(n) * (n - 1) / 2));
-  // Agreement on frame 0, over the pairs brute force tests (all, or those among the subset).
-  const int m = std::min(n, kBruteSubset);
-  const std::set<std::array<int, 2>> exact = brute_pairs(in.frames[0], m);
-  std::set<std::array<int, 2>> mine;
-  for (const auto& pair : lab06::overlapping_pairs(in.frames[0]).pairs)
-    if (pair[1] < m) mine.insert(pair);
-  int differ = 0;
-  for (const auto& pair : mine) differ += !exact.count(pair);
-  for (const auto& pair : exact) differ += !mine.count(pair);
-  state.counters["disagree"] = differ;
+  state.counters["disagree"] = disagreements(lab06::overlapping_pairs(in.frames[0]).pairs, in.frames[0], n);
   state.counters["tests_per_query"] = double(tests) / double(frames);  // sphere tests per frame
 }
+
+#ifdef LABKIT_HAS_NANOFLANN
+// nanoflann: a k-d tree over the centres, rebuilt every frame (the spheres move), then a
+// radius search around each centre out to its radius plus the largest radius; the pairs
+// within r_i + r_j are kept, each once (j > i). Its tests are the candidates it returns.
+struct Centres {
+  const std::vector<Sphere>& spheres;
+  std::size_t kdtree_get_point_count() const { return spheres.size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t axis) const { return spheres[i].center[int(axis)]; }
+  template <class Box>
+  bool kdtree_get_bbox(Box&) const { return false; }
+};
+using CentreTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Centres>, Centres, 3>;
+
+std::vector<std::array<int, 2>> nanoflann_pairs(const std::vector<Sphere>& s, long long& tests) {
+  const Centres centres{s};
+  const CentreTree tree(3, centres, nanoflann::KDTreeSingleIndexAdaptorParams(10));
+  double largest = 0;
+  for (const Sphere& x : s) largest = std::max(largest, x.radius);
+  std::vector<std::array<int, 2>> pairs;
+  std::vector<std::pair<unsigned, double>> near;  // (index, squared distance)
+  const nanoflann::SearchParams unsorted(32, 0, false);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    near.clear();
+    const double reach = s[i].radius + largest;
+    tree.radiusSearch(s[i].center.data(), reach * reach * (1 + 1e-12), near, unsorted);  // squared; a hair wider
+    tests += static_cast<long long>(near.size());
+    for (const auto& found : near) {
+      const unsigned j = found.first;
+      if (j > i && (s[i].center - s[j].center).norm() <= s[i].radius + s[j].radius) pairs.push_back({int(i), int(j)});
+    }
+  }
+  return pairs;
+}
+
+void broad_phase_nanoflann(benchmark::State& state) {
+  const int n = int(state.range(0));
+  const Spheres& in = spheres(n);
+  long long tests = 0, frames = 0;
+  for (auto _ : state) {
+    const std::vector<std::array<int, 2>> pairs = nanoflann_pairs(in.frames[frames++ % kFrames], tests);
+    benchmark::DoNotOptimize(pairs.data());
+  }
+  state.SetItemsProcessed(state.iterations() * (int64_t(n) * (n - 1) / 2));
+  long long unused = 0;
+  state.counters["disagree"] = disagreements(nanoflann_pairs(in.frames[0], unused), in.frames[0], n);
+  state.counters["tests_per_query"] = double(tests) / double(frames);  // candidates per frame
+}
+#endif
 
 // At 100k (5e9 pairs a frame), brute force covers the first kBruteSubset spheres: its
 // items are the pairs it tested, so its pairs per second stand for the whole frame's.
@@ -414,4 +471,7 @@ LABKIT_TREE_SIZES(build_embree, "tree_build/embree");
 #endif
 
 BENCHMARK(broad_phase_reference)->Name("broad_phase/reference")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+#ifdef LABKIT_HAS_NANOFLANN
+BENCHMARK(broad_phase_nanoflann)->Name("broad_phase/nanoflann")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+#endif
 BENCHMARK(broad_phase_brute_force)->Name("broad_phase/brute_force")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
