@@ -30,9 +30,7 @@ namespace judge {
 
 using check::Outcome;
 
-// Random cases accept any answer on ambiguous input; the robustness step's exact
-// degenerate input must follow the header's rules exactly.
-enum class Rules { random, exact };
+using check::Rules;  // random cases, or a robustness step's exact input
 
 // got[i] is the signed distance of vertex i to the plane.
 Outcome signed_distance(const TrianglePlane& in, const std::array<double, 3>& got);

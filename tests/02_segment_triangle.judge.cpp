@@ -1,6 +1,7 @@
 #include "02_segment_triangle.judge.h"
 
 #include "common/oracle/oracle.h"
+#include "common/harness/segment_doubt.h"
 
 #include <cmath>
 #include <limits>
@@ -23,16 +24,7 @@ double tolerance_of(const Input& in) {
   return kRelative * check::scale_of_input(in);
 }
 
-// The verdict on a yes/no answer whose exact value is `expected`; `doubt` says whether
-// a perturbation of 1e-9 S could change it (then any answer passes, counted apart).
-Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no) {
-  if (rules == Rules::exact) doubt = false;
-  if (got == expected) return doubt ? ambiguous() : pass();
-  if (doubt) return ambiguous();
-  return fail(expected ? yes : no, got ? yes : no,
-              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
-                                    : "the exact answer is stable here: no input within 1e-9 S answers otherwise");
-}
+using check::verdict;
 
 // The same, with doubt found by perturbing the input (`exact` recomputes the answer).
 template <class Input, class Exact>
@@ -52,16 +44,9 @@ double t_tolerance(const Segment& s, const Triangle& tri, double tol) {
 
 bool triangle_hit(const SegmentTrianglePair& p) { return oracle::segment_hits_triangle(p.segment, p.triangle); }
 
-// Could a perturbation of tol change whether the segment meets this triangle? Only a
-// triangle whose box comes within a few tol of the segment's box can; the rest are
-// settled at once. Near ones get the oracle's conservative test, then sampling.
+// Could a perturbation of tol change whether the segment meets this triangle?
 bool unstable(const Segment& s, const Triangle& tri, double tol, Rules rules) {
-  if (rules == Rules::exact) return false;
-  const Vec3 low = s.a.cwiseMin(s.b).array() - 8 * tol, high = s.a.cwiseMax(s.b).array() + 8 * tol;
-  const Vec3 tri_low = tri.v0.cwiseMin(tri.v1).cwiseMin(tri.v2), tri_high = tri.v0.cwiseMax(tri.v1).cwiseMax(tri.v2);
-  if ((tri_low.array() > high.array()).any() || (tri_high.array() < low.array()).any()) return false;
-  return oracle::segment_triangle_in_doubt(s, tri, tol) ||
-         check::flips_under_perturbation(SegmentTrianglePair{s, tri}, triangle_hit);
+  return rules == Rules::random && check::segment_triangle_in_doubt(s, tri, tol, triangle_hit);
 }
 
 // Is this triangle of the mesh hit, or is its hit ambiguous?

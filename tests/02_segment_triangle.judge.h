@@ -48,9 +48,7 @@ namespace judge {
 
 using check::Outcome;
 
-// Random cases accept any answer on ambiguous input; the robustness step's exact
-// degenerate input must follow the header's rules exactly.
-enum class Rules { random, exact };
+using check::Rules;  // random cases, or a robustness step's exact input
 
 Outcome segment_plane(const SegmentTrianglePair& in, const PlaneCrossing& got, Rules rules = Rules::random);
 Outcome point_in_triangle(const PointTriangle& in, bool got, Rules rules = Rules::random);

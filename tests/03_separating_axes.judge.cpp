@@ -31,16 +31,7 @@ constexpr double kBoxDoubt = 24;
 //    of displacement per box): 20 + 4 sqrt(3) + 4 sqrt(3), under 34; 40 with room.
 constexpr double kMovingDoubt = 40;
 
-// The verdict on a yes/no answer whose exact value is `expected`; `doubt` says whether
-// a perturbation could change it (then any answer passes, counted apart).
-Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no) {
-  if (rules == Rules::exact) doubt = false;
-  if (got == expected) return doubt ? ambiguous() : pass();
-  if (doubt) return ambiguous();
-  return fail(expected ? yes : no, got ? yes : no,
-              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
-                                    : "the exact answer is stable here: no input within 1e-9 S answers otherwise");
-}
+using check::verdict;
 
 bool boxes_in_doubt(const BoxPair& in, Rules rules) {
   return rules == Rules::random && std::abs(oracle::box_pair_margin(in.a, in.b)) <= kBoxDoubt * tolerance_of(in);

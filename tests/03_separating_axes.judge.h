@@ -25,9 +25,7 @@ namespace judge {
 
 using check::Outcome;
 
-// Random cases accept any answer on ambiguous input; the robustness step's exact
-// degenerate input must follow the header's rules exactly.
-enum class Rules { random, exact };
+using check::Rules;  // random cases, or a robustness step's exact input
 
 // tol = 1e-9 S, S the input's largest position coordinate (the header's tolerances).
 template <class Input>

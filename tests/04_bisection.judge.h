@@ -38,9 +38,7 @@ namespace judge {
 
 using check::Outcome;
 
-// Random cases accept any answer on ambiguous input; the robustness step's exact input
-// must follow the header's rules exactly.
-enum class Rules { random, exact };
+using check::Rules;  // random cases, or a robustness step's exact input
 
 Outcome closest_point(const PointBox& in, const Vec3& got, Rules rules = Rules::random);
 // Overlap at t0 and at t1 of the case's search.

@@ -107,15 +107,7 @@ void check_on_rectangle(Expect& e, const char* name, const Rectangle& r, const V
          std::string(name) + " is " + fmt(d.distance()) + " from the rectangle (tolerance " + fmt(tol) + ")");
 }
 
-// The verdict on a yes/no answer whose exact value is `expected`.
-Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no) {
-  if (rules == Rules::exact) doubt = false;
-  if (got == expected) return doubt ? ambiguous() : pass();
-  if (doubt) return ambiguous();
-  return fail(expected ? yes : no, got ? yes : no,
-              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
-                                    : "the exact answer is stable here: no input within 1e-9 S answers otherwise");
-}
+using check::verdict;
 
 // A test of table 6.1: the cores' exact distance against r0 + r1.
 Outcome test_verdict(const oracle::SquaredDistance& cores, double r0, double r1, double tol, bool got, Rules rules) {

@@ -49,9 +49,7 @@ namespace judge {
 
 using check::Outcome;
 
-// Random cases accept any answer on ambiguous input; the robustness step's exact
-// degenerate input must follow the header's rules exactly.
-enum class Rules { random, exact };
+using check::Rules;  // random cases, or a robustness step's exact input
 
 // The header's S for each input, and tol = 1e-9 S.
 double scale(const PointSegmentPair& in);

@@ -2,6 +2,7 @@
 
 #include "common/generators/generators.h"
 #include "common/oracle/oracle.h"
+#include "common/harness/segment_doubt.h"
 
 #include <algorithm>
 #include <cmath>
@@ -168,14 +169,9 @@ long long allowed_tests(const KdTree& tree, const std::vector<LeafCell>& leaves,
 
 bool crossing(const SegmentTrianglePair& p) { return oracle::segment_crosses_triangle(p.segment, p.triangle); }
 
-// Could a perturbation of tol change whether the segment crosses this triangle? Only a
-// triangle whose box comes within a few tol of the segment's can; near ones get the
-// oracle's conservative test, then sampling.
+// Could a perturbation of tol change whether the segment crosses this triangle?
 bool unstable(const Segment& s, const Triangle& tri, double tol, Rules rules) {
-  if (rules == Rules::exact) return false;
-  const Aabb near{s.a.cwiseMin(s.b).array() - 8 * tol, s.a.cwiseMax(s.b).array() + 8 * tol};
-  if (!boxes_meet(near, box_of(tri))) return false;
-  return oracle::segment_triangle_in_doubt(s, tri, tol) || check::flips_under_perturbation(SegmentTrianglePair{s, tri}, crossing);
+  return rules == Rules::random && check::segment_triangle_in_doubt(s, tri, tol, crossing);
 }
 
 struct Status {

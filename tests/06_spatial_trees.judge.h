@@ -59,9 +59,7 @@ namespace judge {
 
 using check::Outcome;
 
-// Random cases accept any answer on ambiguous input; the robustness step's exact input
-// must follow the header's rules exactly.
-enum class Rules { random, exact };
+using check::Rules;  // random cases, or a robustness step's exact input
 
 // The checker's own k-d trees: valid by step 1's rule, and awkward on purpose: splits
 // through vertices, on cell walls and at random places, empty leaves, zero-area

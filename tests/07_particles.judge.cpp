@@ -1,6 +1,7 @@
 #include "07_particles.judge.h"
 
 #include "common/oracle/oracle.h"
+#include "common/harness/segment_doubt.h"
 
 #include <algorithm>
 #include <cmath>
@@ -113,16 +114,7 @@ double scale_with(const Scene& scene, std::initializer_list<Vec3> points) {
   return std::max({scene_scale(scene), scale_of(points), 1e-300});
 }
 
-// The verdict on a yes/no answer whose exact value is `expected`; `doubt` says whether a
-// perturbation of 1e-9 could change it (then any answer passes, counted apart).
-Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no) {
-  if (rules == Rules::exact) doubt = false;
-  if (got == expected) return doubt ? ambiguous() : pass();
-  if (doubt) return ambiguous();
-  return fail(expected ? yes : no, got ? yes : no,
-              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
-                                    : "the exact answer is stable here: no input within 1e-9 S answers otherwise");
-}
+using check::verdict;
 
 // Keeps the first failure of a sequence of checks, with a prefix saying where it was.
 Outcome within(const std::string& where, const Outcome& o) {
@@ -154,15 +146,9 @@ bool plane_unstable(const Segment& s, const Plane& p, double scale, Rules rules)
 
 bool sheet_hit(const SegmentTrianglePair& p) { return oracle::sheet_hit(p.segment, p.triangle); }
 
-// A triangle is in doubt when the segment comes within a few tol of it (lab 02's
-// conservative test), or when sampling finds a flip; a distant one never is.
+// Could a perturbation of tol change whether the segment hits this sheet?
 bool triangle_unstable(const Segment& s, const Triangle& tri, double tol, Rules rules) {
-  if (rules == Rules::exact) return false;
-  const Vec3 low = s.a.cwiseMin(s.b).array() - 8 * tol, high = s.a.cwiseMax(s.b).array() + 8 * tol;
-  const Vec3 t_low = tri.v0.cwiseMin(tri.v1).cwiseMin(tri.v2), t_high = tri.v0.cwiseMax(tri.v1).cwiseMax(tri.v2);
-  if ((t_low.array() > high.array()).any() || (t_high.array() < low.array()).any()) return false;
-  return oracle::segment_triangle_in_doubt(s, tri, tol) ||
-         check::flips_under_perturbation(SegmentTrianglePair{s, tri}, sheet_hit);
+  return rules == Rules::random && check::segment_triangle_in_doubt(s, tri, tol, sheet_hit);
 }
 
 // How loosely a crossing fixes t: tol / |d_a - d_b| with unit-normal distances.

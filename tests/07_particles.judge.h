@@ -147,9 +147,7 @@ namespace judge {
 
 using check::Outcome;
 
-// Random cases accept any answer on ambiguous input; exact degenerate input must follow
-// the header's rules exactly.
-enum class Rules { random, exact };
+using check::Rules;  // random cases, or a robustness step's exact input
 
 // Step 1. `first` and `second`: the same count of particles emitted twice from Random(seed).
 Outcome emit(const EmitCase& in, const std::vector<Particle>& first, const std::vector<Particle>& second);

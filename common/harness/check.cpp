@@ -289,4 +289,13 @@ void Expect::that(const std::string& field, bool ok, const std::string& got, con
 
 Outcome Expect::outcome() const { return failed_ ? fail(expected_, got_, why_) : pass(); }
 
+Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no) {
+  if (rules == Rules::exact) doubt = false;
+  if (got == expected) return doubt ? ambiguous() : pass();
+  if (doubt) return ambiguous();
+  return fail(expected ? yes : no, got ? yes : no,
+              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
+                                    : "the exact answer is stable here: no input within 1e-9 S answers otherwise");
+}
+
 }  // namespace labkit::check

@@ -67,6 +67,14 @@ inline Outcome fail(std::string expected, std::string got, std::string why) {
   return {Outcome::Verdict::fail, std::move(expected), std::move(got), std::move(why)};
 }
 
+// Which rules a query is judged by: random cases accept either answer on ambiguous input;
+// a robustness step's exact degenerate input must follow the header's rules exactly.
+enum class Rules { random, exact };
+
+// A yes/no answer against the exact one. `doubt` (ignored under the exact rules): the
+// input is ambiguous, so either answer passes. `yes` and `no` say the two answers.
+Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no);
+
 // Collects the differences between an answer and the expected one, field by field,
 // for hand-worked examples:
 //   Expect e;
