@@ -13,12 +13,15 @@
 // count them) and bytes_per_triangle (what a build keeps, over the triangle count).
 //
 // tree_build/IMPL/SIZE: building those trees on the same meshes; items are triangles.
-// The reference BSP has no row: its build did not finish 10k triangles in 60 s on the
-// terrain, nor in 90 s on a 10k sphere (bench/NOTES.md).
+//
+// bsp_build/reference/SIZE and bsp_classify/IMPL/10000: the BSP on a closed sphere mesh
+// (on the terrain its fragments explode; bench/NOTES.md), built, then asked inside or
+// outside for points, against CGAL's Side_of_triangle_mesh.
 //
 // broad_phase/IMPL/SIZE: overlapping pairs among SIZE moving spheres, as dense as the
 // lab's 2,000 in a cube of side 100; items are the n (n - 1) / 2 pairs a frame covers.
 #include "inputs.h"
+#include "common/generators/meshes.h"
 
 #include "spatial_trees.h"
 
@@ -26,6 +29,8 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Side_of_triangle_mesh.h>
+#include <CGAL/Surface_mesh.h>
 #include <benchmark/benchmark.h>
 #ifdef LABKIT_HAS_NANOFLANN
 #include <nanoflann.hpp>
@@ -40,6 +45,7 @@
 #include <cmath>
 #include <map>
 #include <memory>
+#include <random>
 #include <set>
 
 namespace {
@@ -450,6 +456,86 @@ void broad_phase_brute_force(benchmark::State& state) {
   state.counters["tests_per_query"] = double(int64_t(m) * (m - 1) / 2);
 }
 
+// ---- BSP (lab 06 step 3) ------------------------------------------------------------------------
+
+// The auto-partition over a closed convex mesh, gen::sphere_mesh(SIZE): every triangle's
+// plane has the rest of the mesh behind it, so the tree is a chain as long as the mesh and
+// the build is O(n^2). Sizes stop at 10k (20k takes about 20 s).
+const Mesh& sphere(int n) {
+  static std::map<int, Mesh> cache;
+  auto it = cache.find(n);
+  if (it == cache.end()) it = cache.emplace(n, labkit::gen::sphere_mesh(n, Vec3(0.5, 0.5, 0.5), 0.5)).first;
+  return it->second;
+}
+
+void bsp_build(benchmark::State& state) {
+  const Mesh& mesh = sphere(int(state.range(0)));
+  std::size_t nodes = 0;
+  for (auto _ : state) {
+    const lab06::BspTree tree = lab06::build_bsp(mesh);
+    nodes = tree.nodes.size();
+    benchmark::DoNotOptimize(tree.nodes.data());
+  }
+  state.SetItemsProcessed(state.iterations() * int64_t(mesh.size()));
+  state.counters["nodes"] = double(nodes);
+}
+
+// Classify: inside or outside for 10,000 points spread over the sphere's box (about half
+// inside), the BSP against CGAL's Side_of_triangle_mesh (an AABB tree and ray parity,
+// exact predicates) on the same mesh; both built before the timing.
+using SurfaceMesh = CGAL::Surface_mesh<Epick::Point_3>;
+
+std::vector<Vec3> box_points(int count) {
+  std::mt19937_64 random(2026);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  std::vector<Vec3> points(std::size_t(count), Vec3::Zero());
+  for (Vec3& p : points) p = Vec3(unit(random), unit(random), unit(random));
+  return points;
+}
+
+SurfaceMesh surface_of(const Mesh& mesh) {
+  SurfaceMesh surface;
+  std::vector<SurfaceMesh::Vertex_index> corner;
+  for (const Vec3& v : mesh.vertices) corner.push_back(surface.add_vertex(Epick::Point_3(v.x(), v.y(), v.z())));
+  for (const auto& t : mesh.triangles) surface.add_face(corner[t[0]], corner[t[1]], corner[t[2]]);
+  return surface;
+}
+
+std::vector<bool> cgal_inside(const Mesh& mesh, const std::vector<Vec3>& points) {
+  const SurfaceMesh surface = surface_of(mesh);
+  const CGAL::Side_of_triangle_mesh<SurfaceMesh, Epick> side(surface);
+  std::vector<bool> inside;
+  for (const Vec3& p : points) inside.push_back(side(Epick::Point_3(p.x(), p.y(), p.z())) != CGAL::ON_UNBOUNDED_SIDE);
+  return inside;
+}
+
+void bsp_classify_reference(benchmark::State& state) {
+  const Mesh& mesh = sphere(int(state.range(0)));
+  const std::vector<Vec3> points = box_points(kQueries);
+  const lab06::BspTree tree = lab06::build_bsp(mesh);
+  std::size_t k = 0;
+  for (auto _ : state) benchmark::DoNotOptimize(lab06::classify(tree, points[k++ % points.size()]));
+  state.SetItemsProcessed(state.iterations());
+  const std::vector<bool> exact = cgal_inside(mesh, points);
+  int differ = 0;
+  for (std::size_t i = 0; i < points.size(); ++i) differ += (lab06::classify(tree, points[i]) != lab06::Where::outside) != exact[i];
+  state.counters["disagree"] = differ;
+}
+
+void bsp_classify_cgal(benchmark::State& state) {
+  const Mesh& mesh = sphere(int(state.range(0)));
+  const std::vector<Vec3> points = box_points(kQueries);
+  const SurfaceMesh surface = surface_of(mesh);
+  const CGAL::Side_of_triangle_mesh<SurfaceMesh, Epick> side(surface);
+  std::size_t k = 0;
+  for (auto _ : state) {
+    const Vec3& p = points[k++ % points.size()];
+    benchmark::DoNotOptimize(side(Epick::Point_3(p.x(), p.y(), p.z())));
+  }
+  state.SetItemsProcessed(state.iterations());
+  state.counters["disagree"] = 0;  // the yardstick
+}
+
 }  // namespace
 
 // Names group/implementation/SIZE: the report fits the scaling exponent over SIZE.
@@ -469,6 +555,10 @@ LABKIT_TREE_SIZES(build_cgal, "tree_build/cgal_aabb_tree");
 #ifdef LABKIT_HAS_EMBREE
 LABKIT_TREE_SIZES(build_embree, "tree_build/embree");
 #endif
+
+BENCHMARK(bsp_build)->Name("bsp_build/reference")->Arg(2500)->Arg(5000)->Arg(10000)->Unit(benchmark::kMillisecond);
+BENCHMARK(bsp_classify_reference)->Name("bsp_classify/reference")->Arg(10000);
+BENCHMARK(bsp_classify_cgal)->Name("bsp_classify/cgal_side_of_triangle_mesh")->Arg(10000);
 
 BENCHMARK(broad_phase_reference)->Name("broad_phase/reference")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 #ifdef LABKIT_HAS_NANOFLANN
