@@ -116,9 +116,39 @@ std::vector<std::string> bubblewrap(const std::vector<std::string>& argv, const 
 
 }  // namespace
 
+namespace {
+
+// The first folder on the way to one of `paths` (or the path itself) that a user who is
+// neither its owner nor in its group cannot pass through or read; "" when there is none.
+std::string closed_to_others(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) {
+    std::error_code e;
+    fs::path p = fs::absolute(path, e);
+    if (e || !fs::exists(p, e)) continue;
+    for (fs::path at = p;; at = at.parent_path()) {
+      struct stat st {};
+      if (stat(at.c_str(), &st) == 0) {
+        const bool folder = S_ISDIR(st.st_mode);
+        const bool open = (!folder || (st.st_mode & S_IXOTH)) && (at != p || (st.st_mode & S_IROTH));
+        if (!open) return at.string();
+      }
+      if (at == at.root_path() || at.parent_path() == at) break;
+    }
+  }
+  return "";
+}
+
+}  // namespace
+
 Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& needed) {
   Sandbox s;
   s.drop_uid_ = geteuid() == 0;
+  // Run as root, the graded code runs under an unprivileged uid of its own: it must be
+  // able to read the kit, or every lab would fail to build for a reason not the student's.
+  if (const std::string closed = s.drop_uid_ ? closed_to_others(needed) : ""; !closed.empty())
+    throw std::runtime_error("the graded code runs under an unprivileged uid, and " + closed +
+                             " is closed to other users, so it could not read the kit. Make the kit's folder and "
+                             "its parents readable (chmod o+rx " + closed + ") or move the kit, then grade again");
   if (mode == "none") {
     s.why_ = "turned off (--sandbox none)";
     return s;

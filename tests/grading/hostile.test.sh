@@ -118,6 +118,18 @@ mv "$work/loop/endless_loop" "$subs/"
 echo "graded $(ls "$subs" | wc -l) submissions in $(($(date +%s) - started)) s (exit $code)"
 [ $code -eq 0 ] || { cat "$work/grade.log"; fail "labkit grade exits $code"; }
 
+# A kit the graded code cannot read (run as root, it runs under an unprivileged uid; here
+# the build folder sits behind a folder closed to others): grading stops at once and says
+# why, instead of failing every lab of every student as "does not compile".
+if [ "$(id -u)" = 0 ]; then
+  mkdir -m 700 "$work/closed" && ln -s "$build" "$work/closed/build"
+  said=$(LABKIT_BUILD_DIR="$work/closed/build" "$runner" grade "$subs/reference.zip" --out "$work/closed-out" \
+    --seed "$secret" 2>&1)
+  closed_code=$?
+  { [ $closed_code -eq 2 ] && grep -q "closed to other users" <<<"$said"; } ||
+    fail "a kit closed to other users: exit $closed_code, and it said: $said"
+fi
+
 # expect NAME LAB02 [STEP=STATUS ...]: lab 02 as LAB02 says (graded: each STEP has that
 # status and 0 points; or "does not compile", "not submitted" for all of it); every
 # other row (each step of every other lab, each step of lab 02 the fault does not
