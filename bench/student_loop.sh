@@ -15,6 +15,9 @@ OUT="${1:-$ROOT/bench/student_loop.md}"
 LAB="${LABKIT_LOOP_LAB:-02}"
 WORK="$(mktemp -d /tmp/labkit-loop.XXXXXX)"
 trap 'rm -rf "$WORK"' EXIT
+# Graded code runs under an unprivileged uid when this runs as root: the copy of the kit
+# must be readable by others (mktemp makes its folder 0700).
+chmod 755 "$WORK"
 
 say() { printf 'student loop: %s\n' "$*" >&2; }
 
@@ -24,8 +27,10 @@ seconds() {
   shift
   local start end
   start=$(date +%s.%N)
-  "$@" >"$log" 2>&1 || true
+  status=0
+  "$@" >"$log" 2>&1 || status=$?
   end=$(date +%s.%N)
+  echo "$status" >"$log.status"
   python3 -c "print(f'{$end - $start:.1f}')"
 }
 
@@ -57,6 +62,12 @@ git -C "$ROOT" show "HEAD:$student" >"$student" 2>/dev/null || cp "$ROOT/$studen
 say "./labkit test"
 test_time=$(seconds "$WORK/test.log" ./labkit test)
 test_summary=$(grep -E "tests passed|tests failed" "$WORK/test.log" | tail -n 1)
+failed_tests=$(sed -n '/The following tests FAILED/,$p' "$WORK/test.log" | grep -E "^\s+[0-9]+ - " | sed 's/^ *//' | tr '\n' ';')
+if [ -n "$failed_tests" ]; then
+  say "./labkit test failed: $failed_tests"
+  sed -n '/The following tests FAILED/,$p' "$WORK/test.log" >&2
+  test_summary="$test_summary; failed: $failed_tests"
+fi
 
 grade_time="not measured (no ./labkit grade in this tree)"
 if ./labkit help 2>&1 | grep -q "grade"; then
@@ -68,6 +79,14 @@ if ./labkit help 2>&1 | grep -q "grade"; then
   done
   ./labkit grade "$WORK/submission" --out "$WORK/grade-warm" >/dev/null 2>&1 || true
   grade_time="$(seconds "$WORK/grade.log" ./labkit grade "$WORK/submission" --out "$WORK/grade") s"
+  score=$(sed -n 's/^ *Total  *\([0-9.]* \/ [0-9.]*\).*/\1/p' "$WORK/grade.log" | tail -n 1)
+  if [ "$(cat "$WORK/grade.log.status")" != 0 ] || [ -z "$score" ]; then
+    say "grading failed:"
+    tail -n 20 "$WORK/grade.log" >&2
+    grade_time="$grade_time (grading failed: $(tail -n 1 "$WORK/grade.log"))"
+  else
+    grade_time="$grade_time (the reference scored $score)"
+  fi
 fi
 
 cat >"$OUT" <<EOF
