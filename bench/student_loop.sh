@@ -62,7 +62,7 @@ git -C "$ROOT" show "HEAD:$student" >"$student" 2>/dev/null || cp "$ROOT/$studen
 say "./labkit test"
 test_time=$(seconds "$WORK/test.log" ./labkit test)
 test_summary=$(grep -E "tests passed|tests failed" "$WORK/test.log" | tail -n 1)
-failed_tests=$(sed -n '/The following tests FAILED/,$p' "$WORK/test.log" | grep -E "^\s+[0-9]+ - " | sed 's/^ *//' | tr '\n' ';')
+failed_tests=$(sed -n '/The following tests FAILED/,$p' "$WORK/test.log" | grep -E "^\s+[0-9]+ - " | sed 's/^ *//' | tr '\n' ';' || true)
 if [ -n "$failed_tests" ]; then
   say "./labkit test failed: $failed_tests"
   sed -n '/The following tests FAILED/,$p' "$WORK/test.log" >&2
@@ -79,7 +79,7 @@ if ./labkit help 2>&1 | grep -q "grade"; then
   done
   ./labkit grade "$WORK/submission" --out "$WORK/grade-warm" >/dev/null 2>&1 || true
   grade_time="$(seconds "$WORK/grade.log" ./labkit grade "$WORK/submission" --out "$WORK/grade") s"
-  score=$(sed -n 's/^ *Total  *\([0-9.]* \/ [0-9.]*\).*/\1/p' "$WORK/grade.log" | tail -n 1)
+  score=$(sed -n 's/^ *Total  *\([0-9.]* \/ [0-9.]*\).*/\1/p' "$WORK/grade.log" | tail -n 1 || true)
   if [ "$(cat "$WORK/grade.log.status")" != 0 ] || [ -z "$score" ]; then
     say "grading failed:"
     tail -n 20 "$WORK/grade.log" >&2
