@@ -1,12 +1,20 @@
 # labkit_add_lab(NN name): everything one lab needs, from its files alone.
 #
+# The code under test never shares a process with the judge (common/protocol/answerer.h):
+#
 #   labs/NN_name/*.cpp            -> labNN_student     (the student's file: one small object)
 #   solutions/NN_name/*.cpp       -> labNN_reference   (absent in a student release)
+#   answer_NN_name_X              -> the answerer: the lab's functions from labNN_X (student,
+#                                    reference or a mutant) behind common/protocol/lab_answerer.cpp;
+#                                    nothing of the kit's but the geometry types. A student's
+#                                    edit recompiles one file and relinks this small program.
 #   tests/NN_name.judge.cpp       -> labNN_judge       (verdicts against the oracle; the viewer shares it)
-#   tests/NN_name.test.cpp        -> compiled once, linked twice:
-#                                    test_NN_name_student and test_NN_name_reference
+#   tests/NN_name.test.cpp        -> test_NN_name      (examples and random cases: the judge's
+#                                    process, linked once; it runs the answerer named by
+#                                    LABKIT_ANSWERER and calls the lab's functions there)
+#   tests/NN_name.wire.h          -> the lab's functions and answer types on the wire
 #   grading record                -> build/grading/NN_name.{json,link}: how ./labkit grade
-#                                    links a submission (see runner/lab_build.h)
+#                                    links a submission's answerer (see runner/lab_build.h)
 #   tests/NN_name.mutants.cmake   -> the reference with one classic mistake each; ctest
 #                                    expects the step each one breaks to fail
 #   viewer/scenes/NN_name.cpp     -> the lab's viewer scene, compiled into both viewers
@@ -37,26 +45,37 @@ function(labkit_add_lab number name)
   endif()
 
   add_library(${lab}_judge STATIC "${PROJECT_SOURCE_DIR}/tests/${stem}.judge.cpp")
-  target_include_directories(${lab}_judge PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
+  target_include_directories(${lab}_judge PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_judge PUBLIC labkit_harness labkit_oracle)
 
-  add_library(${lab}_tests OBJECT "${PROJECT_SOURCE_DIR}/tests/${stem}.test.cpp")
-  target_link_libraries(${lab}_tests PUBLIC ${lab}_judge)
-  target_include_directories(${lab}_tests PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
+  # The lab's list of calls (tests/NN_name.wire.h), expanded on both sides of the pipe.
+  set(wire_definitions LABKIT_LAB_WIRE="${stem}.wire.h" LABKIT_LAB_NAMESPACE=${lab}
+                       LABKIT_LAB_CALLS=LABKIT_LAB${number}_CALLS)
+  add_library(${lab}_calls STATIC "${PROJECT_SOURCE_DIR}/common/protocol/lab_calls.cpp")
+  target_compile_definitions(${lab}_calls PRIVATE ${wire_definitions})
+  target_include_directories(${lab}_calls PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
+  target_link_libraries(${lab}_calls PUBLIC labkit_protocol)
+  add_library(${lab}_answerer_main OBJECT "${PROJECT_SOURCE_DIR}/common/protocol/lab_answerer.cpp")
+  target_compile_definitions(${lab}_answerer_main PRIVATE ${wire_definitions})
+  target_include_directories(${lab}_answerer_main PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
+  target_link_libraries(${lab}_answerer_main PUBLIC labkit_protocol)
+
+  add_executable(test_${stem} "${PROJECT_SOURCE_DIR}/tests/${stem}.test.cpp")
+  target_link_libraries(test_${stem} PRIVATE ${lab}_judge ${lab}_calls labkit_catch_main)
 
   foreach(impl IN LISTS implementations)
-    labkit_add_test_binary(${number} ${name} ${impl} ${lab}_${impl})
+    labkit_add_answerer(${number} ${name} ${impl} ${lab}_${impl})
   endforeach()
 
-  # `./labkit grade` builds a submission's lab by compiling its file(s) as the stub is
-  # compiled (compile_commands.json) and linking them as the stub's test binary is
+  # `./labkit grade` builds a submission's answerer by compiling its file(s) as the stub
+  # is compiled (compile_commands.json) and linking them as the stub's answerer is
   # linked: that link command is recorded each time the kit runs it.
   set(link_record "${PROJECT_BINARY_DIR}/grading/${stem}.link")
-  set_target_properties(test_${stem}_student PROPERTIES
+  set_target_properties(answer_${stem}_student PROPERTIES
     CXX_LINKER_LAUNCHER "${PROJECT_SOURCE_DIR}/cmake/record-command.sh;${link_record}")
   file(GENERATE OUTPUT "${PROJECT_BINARY_DIR}/grading/${stem}.json" CONTENT
     "{\"lab\": \"${number}\", \"student_library\": \"$<TARGET_FILE:${lab}_student>\", \"link_record\": \"${link_record}\"}\n")
-  set_property(GLOBAL APPEND PROPERTY LABKIT_GRADING_TARGETS test_${stem}_student)
+  set_property(GLOBAL APPEND PROPERTY LABKIT_GRADING_TARGETS answer_${stem}_student test_${stem})
 
   # ctest: one test per step of the reference. Each leaves its harness report in
   # build/reports/, which `labkit-runner report` sums up after the suite.
@@ -64,9 +83,9 @@ function(labkit_add_lab number name)
     labkit_manifest_steps(${number} steps)
     file(MAKE_DIRECTORY "${PROJECT_BINARY_DIR}/reports")
     foreach(step IN LISTS steps)
-      add_test(NAME ${lab}.step${step} COMMAND test_${stem}_reference "[${lab}][step${step}]")
+      add_test(NAME ${lab}.step${step} COMMAND test_${stem} "[${lab}][step${step}]")
       set_tests_properties(${lab}.step${step} PROPERTIES LABELS "reference;${lab}"
-        ENVIRONMENT "LABKIT_REPORT=${PROJECT_BINARY_DIR}/reports/${lab}.step${step}.json")
+        ENVIRONMENT "LABKIT_REPORT=${PROJECT_BINARY_DIR}/reports/${lab}.step${step}.json;LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>")
     endforeach()
   endif()
 
@@ -81,11 +100,12 @@ function(labkit_add_lab number name)
   endif()
 endfunction()
 
-# A test binary of lab NN linked against one implementation (a library target).
-function(labkit_add_test_binary number name suffix implementation)
-  set(target test_${number}_${name}_${suffix})
-  add_executable(${target} $<TARGET_OBJECTS:lab${number}_tests>)
-  target_link_libraries(${target} PRIVATE lab${number}_tests ${implementation} labkit_catch_main)
+# The answerer of lab NN for one implementation (a library target): the lab's functions
+# and nothing of the judge's.
+function(labkit_add_answerer number name suffix implementation)
+  set(target answer_${number}_${name}_${suffix})
+  add_executable(${target} $<TARGET_OBJECTS:lab${number}_answerer_main>)
+  target_link_libraries(${target} PRIVATE lab${number}_answerer_main ${implementation})
 endfunction()
 
 # The step numbers of lab NN in grading/manifest.json.
@@ -150,10 +170,11 @@ function(labkit_mutant number name)
   target_precompile_headers(${library} REUSE_FROM labkit_geometry)
   target_compile_options(${library} PRIVATE -w)  # a mistake may well leave a variable unused
   set_target_properties(${library} PROPERTIES EXCLUDE_FROM_ALL FALSE)
-  labkit_add_test_binary(${number} ${name} mutant_${M_NAME} ${library})
-  # Caught when the step fails in any way: a failed check, or a crash (a mistake may
-  # divide by zero; CTest's WILL_FAIL would not count a signal as a failure).
+  labkit_add_answerer(${number} ${name} mutant_${M_NAME} ${library})
+  # Caught when the step fails in any way: a failed check, or a crash of the judge's
+  # process (CTest's WILL_FAIL would not count a signal as a failure).
   add_test(NAME lab${number}.mutant.${M_NAME}
-           COMMAND sh -c "! \"$0\" \"$1\"" $<TARGET_FILE:test_${stem}_mutant_${M_NAME}> "[lab${number}][step${M_STEP}]")
-  set_tests_properties(lab${number}.mutant.${M_NAME} PROPERTIES LABELS "mutant;lab${number}")
+           COMMAND sh -c "! \"$0\" \"$1\"" $<TARGET_FILE:test_${stem}> "[lab${number}][step${M_STEP}]")
+  set_tests_properties(lab${number}.mutant.${M_NAME} PROPERTIES LABELS "mutant;lab${number}"
+    ENVIRONMENT "LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_mutant_${M_NAME}>")
 endfunction()

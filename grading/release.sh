@@ -31,7 +31,7 @@ make_release() {
     [ -d "$folder" ] && cp -pR "$folder" "$out/"
   done
   mkdir -p "$out/tests" "$out/grading"
-  cp -p tests/CMakeLists.txt tests/*.test.cpp tests/*.judge.h tests/*.judge.cpp "$out/tests/"
+  cp -p tests/CMakeLists.txt tests/*.test.cpp tests/*.judge.h tests/*.judge.cpp tests/*.wire.h "$out/tests/"
   cp -pR tests/kit "$out/tests/"
   cp -p grading/manifest.json "$out/grading/"
   cp -p grading/student-README.md "$out/README.md"

@@ -45,7 +45,7 @@ std::string counts(const StepResult& r) {
   return dim(s);
 }
 
-void print_failure(const Failure& f, const std::string& query, const Lab& lab, bool hide_seed_hint) {
+void print_failure(const Failure& f, const std::string& query, const Lab& lab) {
   std::cout << "  query     " << query << (f.title.empty() ? "" : ", " + f.title);
   if (f.shrinks > 0) std::cout << " (shrunk " << f.shrinks << " times)";
   std::cout << "\n  input     " << term::indent(f.input, "            ") << "\n";
@@ -56,7 +56,6 @@ void print_failure(const Failure& f, const std::string& query, const Lab& lab, b
     std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case '" + f.replay + "'") << "\n";
     std::cout << "  see it    ./labkit view " << lab.id << " --case '" << f.replay << "'\n";
   }
-  (void)hide_seed_hint;
 }
 
 void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
@@ -67,13 +66,11 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
   if (abnormal(r.status)) {
     std::cout << "  what      " << r.detail << "\n";
     if (!r.inflight.empty()) {
-      const std::string binary = paths.build + "/" + lab.test_binary("student");
-      std::cout << "  on input  " << term::indent(describe_token(binary, lab, r.inflight), "            ") << "\n";
+      const Programs programs{paths.build + "/" + lab.judge_binary(), paths.build + "/" + lab.answerer("student")};
+      std::cout << "  on input  " << term::indent(describe_token(programs, lab, r.inflight), "            ") << "\n";
       std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case '" + r.inflight + "'") << "\n";
       std::cout << "  see it    ./labkit view " << lab.id << " --case '" << r.inflight << "'\n";
     }
-    std::cout << "  debug     gdb --args " << paths.build << "/" << lab.test_binary("student") << " '[lab" << lab.id
-              << "][step" << step.number << "]'\n";
     const std::string tail = r.run.output.size() > 1200 ? r.run.output.substr(r.run.output.size() - 1200) : r.run.output;
     if (!tail.empty()) std::cout << dim("  its last output:\n    " + term::indent(tail, "    ")) << "\n";
     return;
@@ -84,7 +81,7 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
       return;
     }
     if (q.failure && q.not_implemented.empty()) {
-      print_failure(*q.failure, q.query, lab, false);
+      print_failure(*q.failure, q.query, lab);
       return;
     }
   }
@@ -113,21 +110,23 @@ std::string first_errors(const std::string& log, const std::string& root) {
   return excerpt;
 }
 
-std::string build_target(const Paths& paths, const std::string& target, bool* ok) {
+std::string build_targets(const Paths& paths, const std::vector<std::string>& targets, bool* ok) {
   Limits limits;
   limits.seconds = 3600;
   limits.kept_bytes = 1 << 20;
-  const Run run = runner::run({"cmake", "--build", paths.build, "--target", target}, {}, limits);
+  std::vector<std::string> argv = {"cmake", "--build", paths.build, "--target"};
+  argv.insert(argv.end(), targets.begin(), targets.end());
+  const Run run = runner::run(argv, {}, limits);
   *ok = run.ok();
   return *ok ? "" : first_errors(run.output, paths.source);
 }
 
-std::vector<StepResult> run_steps(const std::string& binary, const Lab& lab, const std::vector<const Step*>& steps,
+std::vector<StepResult> run_steps(const Programs& programs, const Lab& lab, const std::vector<const Step*>& steps,
                                   const StepOptions& options, int jobs) {
   std::vector<StepResult> results(steps.size());
   std::atomic<std::size_t> next{0};
   const auto worker = [&] {
-    for (std::size_t i; (i = next++) < steps.size();) results[i] = run_step(binary, lab, *steps[i], options);
+    for (std::size_t i; (i = next++) < steps.size();) results[i] = run_step(programs, lab, *steps[i], options);
   };
   std::vector<std::thread> pool;
   for (int k = 0; k < std::max(1, jobs); ++k) pool.emplace_back(worker);
@@ -135,13 +134,13 @@ std::vector<StepResult> run_steps(const std::string& binary, const Lab& lab, con
   return results;
 }
 
-std::string describe_token(const std::string& binary, const Lab& lab, const std::string& token) {
+std::string describe_token(const Programs& programs, const Lab& lab, const std::string& token) {
   StepOptions options;
   options.replay = token;
   options.describe_only = true;
   options.limits.seconds = 30;
   for (const Step& step : lab.steps) {
-    const StepResult r = run_step(binary, lab, step, options);
+    const StepResult r = run_step(programs, lab, step, options);
     for (const QueryResult& q : r.queries)
       if (q.failure && !q.failure->input.empty()) return q.failure->input;
   }
@@ -215,9 +214,10 @@ int check(const Paths& paths, const CheckOptions& options) {
   for (std::size_t l = 0; l < labs.size(); ++l) {
     const Lab* lab = labs[l];
     const std::vector<const Step*>& steps = selected[l];
-    const std::string target = lab->test_binary(options.implementation);
+    const Programs programs{paths.build + "/" + lab->judge_binary(), paths.build + "/" + lab->answerer(options.implementation)};
     bool built = false;
-    const std::string errors = build_target(paths, target, &built);
+    const std::string errors =
+        build_targets(paths, {lab->judge_binary(), lab->answerer(options.implementation)}, &built);
     if (!replaying || !built) std::cout << "\n" << bold("Lab " + lab->id + "  " + lab->title) << dim("   " + lab->handout()) << "\n";
     if (!built) {
       std::cout << "  " << red("does not compile") << ": every step of this lab fails until it does.\n\n    "
@@ -227,7 +227,7 @@ int check(const Paths& paths, const CheckOptions& options) {
       continue;
     }
     const std::vector<StepResult> results =
-        run_steps(paths.build + "/" + target, *lab, steps, step_options, jobs);
+        run_steps(programs, *lab, steps, step_options, jobs);
 
     if (replaying) {
       for (const StepResult& r : results)
@@ -240,7 +240,7 @@ int check(const Paths& paths, const CheckOptions& options) {
           std::cout << "  replayed " << q.query << " (step " << r.step->number << ", " << r.step->tag << "): ";
           if (q.failure) {
             std::cout << red("fails") << "\n";
-            print_failure(*q.failure, q.query, *lab, true);
+            print_failure(*q.failure, q.query, *lab);
           } else {
             std::cout << green(q.ambiguous ? "passes (an ambiguous case: any answer is accepted)" : "passes") << "\n";
           }

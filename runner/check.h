@@ -32,14 +32,14 @@ int check(const Paths& paths, const CheckOptions& options);
 // The first compiler errors of a build log (24 lines), with `root/` taken out of paths.
 std::string first_errors(const std::string& log, const std::string& root);
 
-// Builds one target; on failure returns the first compiler errors, else "".
-std::string build_target(const Paths& paths, const std::string& target, bool* ok);
+// Builds the targets; on failure returns the first compiler errors, else "".
+std::string build_targets(const Paths& paths, const std::vector<std::string>& targets, bool* ok);
 
 // Runs the given steps of a lab, `jobs` at a time, in the order given.
-std::vector<StepResult> run_steps(const std::string& binary, const Lab& lab, const std::vector<const Step*>& steps,
+std::vector<StepResult> run_steps(const Programs& programs, const Lab& lab, const std::vector<const Step*>& steps,
                                   const StepOptions& options, int jobs);
 
 // The readable input behind a replay token (runs no code under test).
-std::string describe_token(const std::string& binary, const Lab& lab, const std::string& token);
+std::string describe_token(const Programs& programs, const Lab& lab, const std::string& token);
 
 }  // namespace runner

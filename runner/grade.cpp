@@ -50,7 +50,7 @@ std::string tail(const std::string& text, std::size_t n) { return text.size() > 
 
 // What the student reads about one step: the verdict, the counts, the first failure and
 // how to replay it with the public kit.
-std::string feedback(const StepResult& r, const Lab& lab, const std::string& binary, const Context& c) {
+std::string feedback(const StepResult& r, const Lab& lab, const Programs& programs, const Context& c) {
   std::ostringstream out;
   int cases = 0, passed = 0;
   for (const QueryResult& q : r.queries) {
@@ -69,9 +69,9 @@ std::string feedback(const StepResult& r, const Lab& lab, const std::string& bin
       describe.describe_only = true;
       describe.limits.seconds = 30;
       describe.sandbox = &c.sandbox;
-      describe.scratch_parent = fs::path(binary).parent_path().string();
+      describe.scratch_parent = fs::path(programs.answerer).parent_path().string();
       std::string input = r.inflight;
-      const StepResult d = run_step(binary, lab, *r.step, describe);
+      const StepResult d = run_step(programs, lab, *r.step, describe);
       for (const QueryResult& q : d.queries)
         if (q.failure && !q.failure->input.empty()) input = q.failure->input;
       out << "on input  " << term::indent(input, "          ") << "\n";
@@ -210,8 +210,9 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
     const Lab& lab = *c.labs[i];
     StepGrade& s = g.labs[i].steps[k];
     StepResult r;
+    const Programs programs{c.paths.build + "/" + lab.judge_binary(), binaries[i]};
     try {
-      r = run_step(binaries[i], lab, *s.step, graded_step_options(folders[i], c));
+      r = run_step(programs, lab, *s.step, graded_step_options(folders[i], c));
     } catch (const std::exception& e) {
       r.step = s.step;
       r.status = Status::crashed;
@@ -222,7 +223,7 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
     s.score = step_score(*s.step, r);
     s.ambiguous = r.ambiguous;
     for (const QueryResult& q : r.queries) s.cases += q.cases;
-    s.feedback = redact(feedback(r, lab, binaries[i], c), c.options.seed);
+    s.feedback = redact(feedback(r, lab, programs, c), c.options.seed);
   });
 
   for (std::size_t i = 0; i < n; ++i) {

@@ -177,7 +177,7 @@ LabRecipe load_recipe(const Paths& paths, const Lab& lab) {
     words.push_back(link.substr(at, end - at));
     at = end == std::string::npos ? link.size() : end + 1;
   }
-  if (words.size() < 3) throw std::runtime_error("the kit has not linked " + lab.test_binary("student") + " yet (" + link_record + ")");
+  if (words.size() < 3) throw std::runtime_error("the kit has not linked " + lab.answerer("student") + " yet (" + link_record + ")");
   recipe.link.directory = words.front();
   recipe.link.argv.assign(words.begin() + 1, words.end());
 
@@ -285,7 +285,7 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
     objects.push_back(object);
   }
 
-  const std::string binary = (out / lab.test_binary("submission")).string();
+  const std::string binary = (out / lab.answerer("submission")).string();
   std::vector<std::string> argv, readable;
   for (std::size_t i = 0; i < recipe.link.argv.size(); ++i) {
     const std::string& word = recipe.link.argv[i];

@@ -22,7 +22,12 @@ struct Lab {
   std::vector<Step> steps;
 
   std::string stem() const { return id + "_" + name; }
-  std::string test_binary(const std::string& implementation) const { return "test_" + stem() + "_" + implementation; }
+  // A step runs two programs (common/protocol/answerer.h): the judge's, the kit's own
+  // (tests, judges, exact oracle), and the answerer, the lab's functions from one
+  // implementation (student, reference, mutant_NAME, or a graded submission) and nothing
+  // of the judge's.
+  std::string judge_binary() const { return "test_" + stem(); }
+  std::string answerer(const std::string& implementation) const { return "answer_" + stem() + "_" + implementation; }
   std::string handout() const { return "handouts/" + stem() + ".md"; }
 };
 

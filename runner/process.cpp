@@ -50,6 +50,23 @@ class Capture {
   close(output);
   const int null = open("/dev/null", O_RDONLY);
   if (null >= 0) dup2(null, 0);
+  for (const auto& [name, value] : env) setenv(name.c_str(), value.c_str(), 1);
+  if (!directory.empty() && chdir(directory.c_str()) != 0) {
+    dprintf(2, "labkit: cannot enter %s: %s\n", directory.c_str(), strerror(errno));
+    _exit(126);
+  }
+  if (!apply_limits(limits)) _exit(126);
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  execvp(args[0], args.data());
+  dprintf(2, "labkit: cannot run %s: %s\n", argv[0].c_str(), strerror(errno));
+  _exit(127);
+}
+
+}  // namespace
+
+bool apply_limits(const Limits& limits) {
   rlimit no_core{0, 0};
   setrlimit(RLIMIT_CORE, &no_core);
   if (limits.memory_bytes > 0) {
@@ -64,27 +81,19 @@ class Capture {
     rlimit processes{rlim_t(limits.processes), rlim_t(limits.processes)};
     setrlimit(RLIMIT_NPROC, &processes);
   }
-  for (const auto& [name, value] : env) setenv(name.c_str(), value.c_str(), 1);
-  if (!directory.empty() && chdir(directory.c_str()) != 0) {
-    dprintf(2, "labkit: cannot enter %s: %s\n", directory.c_str(), strerror(errno));
-    _exit(126);
+  if (limits.cpu_seconds > 0) {
+    rlimit cpu{rlim_t(limits.cpu_seconds), rlim_t(limits.cpu_seconds) + 1};
+    setrlimit(RLIMIT_CPU, &cpu);
   }
   if (limits.uid >= 0) {
     const gid_t gid = gid_t(limits.gid >= 0 ? limits.gid : limits.uid);
     if (setgroups(0, nullptr) != 0 || setresgid(gid, gid, gid) != 0 || setresuid(uid_t(limits.uid), uid_t(limits.uid), uid_t(limits.uid)) != 0) {
       dprintf(2, "labkit: cannot switch to uid %d: %s\n", limits.uid, strerror(errno));
-      _exit(126);
+      return false;
     }
   }
-  std::vector<char*> args;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  execvp(args[0], args.data());
-  dprintf(2, "labkit: cannot run %s: %s\n", argv[0].c_str(), strerror(errno));
-  _exit(127);
+  return true;
 }
-
-}  // namespace
 
 Run run(const std::vector<std::string>& argv, const Environment& env, const Limits& limits, const std::string& directory) {
   Run result;

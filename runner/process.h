@@ -17,6 +17,7 @@ struct Limits {
   std::size_t flood_bytes = 64u << 20;    // output beyond this kills the process
   std::size_t file_bytes = 0;             // largest file it may write (RLIMIT_FSIZE); 0: no limit
   long processes = 0;                     // processes of its uid (RLIMIT_NPROC); 0: no limit
+  long cpu_seconds = 0;                   // CPU time (RLIMIT_CPU); 0: no limit
   int uid = -1, gid = -1;                 // run under this uid and gid (needs root); -1: as we are
 };
 
@@ -38,6 +39,10 @@ using Environment = std::vector<std::pair<std::string, std::string>>;
 // The child runs in its own session (so its own process group, and no terminal).
 Run run(const std::vector<std::string>& argv, const Environment& extra_environment = {}, const Limits& limits = {},
         const std::string& directory = "");
+
+// Applies the limits to this process (no core files; then the uid last). False, with the
+// reason on stderr, when the uid cannot be taken.
+bool apply_limits(const Limits& limits);
 
 // "segmentation fault", "aborted", ...
 std::string signal_name(int signal);

@@ -2,10 +2,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
+#include <sys/prctl.h>
+#include <unistd.h>
 
 namespace runner {
 
@@ -121,12 +127,41 @@ double fraction_passed(const StepResult& r) {
 
 }  // namespace
 
-StepResult run_step(const std::string& binary, const Lab& lab, const Step& step, const StepOptions& options) {
+namespace {
+
+// The command line the judge's process starts the answerer with: the answerer itself
+// on a student's machine; for a graded run, confined (its own scratch folder, uid and
+// sandbox) and under limits, through `labkit-runner confine`.
+std::string answerer_command(const Programs& programs, const StepOptions& options, const std::string& scratch,
+                             std::shared_ptr<void>* lease) {
+  if (!options.sandbox) return programs.answerer;
+  Limits limits;
+  limits.memory_bytes = options.limits.memory_bytes;
+  limits.file_bytes = options.limits.file_bytes;
+  limits.cpu_seconds = long(options.limits.seconds) + 1;
+  const Confined confined = options.sandbox->confine({programs.answerer}, scratch,
+                                                     {fs::path(programs.answerer).parent_path().string()}, limits);
+  *lease = confined.lease;
+  std::vector<std::string> argv = confine_command(confined.limits);
+  argv.push_back("--");
+  argv.insert(argv.end(), confined.argv.begin(), confined.argv.end());
+  return nlohmann::json(argv).dump();
+}
+
+}  // namespace
+
+StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, const StepOptions& options) {
   StepResult r;
   r.step = &step;
-  std::string scratch_template = options.scratch_parent + "/labkit-step.XXXXXX";
-  const char* scratch = mkdtemp(scratch_template.data());
-  if (!scratch) {
+  const auto scratch_folder = [&] {
+    std::string name = options.scratch_parent + "/labkit-step.XXXXXX";
+    return mkdtemp(name.data()) ? name : std::string();
+  };
+  // The judge's folder (its report and the seed) and the answerer's are apart: the code
+  // under test never sees the first.
+  const std::string scratch = scratch_folder();
+  const std::string answerer_scratch = options.sandbox ? scratch_folder() : scratch;
+  if (scratch.empty() || answerer_scratch.empty()) {
     r.run.started = false;
     r.run.output = "cannot make a scratch folder in " + options.scratch_parent;
     r.status = Status::crashed;
@@ -135,10 +170,13 @@ StepResult run_step(const std::string& binary, const Lab& lab, const Step& step,
   }
   const fs::path report = fs::path(scratch) / "report.json";
 
-  Environment env = {{"LABKIT_REPORT", report.string()}};
+  std::shared_ptr<void> answerer_lease;  // held until the step ends: the answerer's uid
+  Environment env = {{"LABKIT_REPORT", report.string()},
+                     {"LABKIT_ANSWERER", answerer_command(programs, options, answerer_scratch, &answerer_lease)}};
+  if (options.call_seconds > 0) env.push_back({"LABKIT_CALL_SECONDS", std::to_string(options.call_seconds)});
   if (!options.seed.empty() && options.hide_seed) {
     // A secret seed never goes on a command line or in the environment (which other
-    // processes, the sandbox's own included, could show): a file the harness deletes.
+    // processes could show): a file the harness deletes, in the judge's folder.
     const fs::path seed_file = fs::path(scratch) / ".seed";
     std::ofstream(seed_file) << options.seed;
     fs::permissions(seed_file, fs::perms::owner_read | fs::perms::owner_write);
@@ -152,17 +190,11 @@ StepResult run_step(const std::string& binary, const Lab& lab, const Step& step,
   if (options.count_all) env.push_back({"LABKIT_COUNT_ALL", "1"});
   if (options.describe_only) env.push_back({"LABKIT_DESCRIBE", "1"});
   const std::string filter = "[lab" + lab.id + "][step" + std::to_string(step.number) + "]";
-  if (options.sandbox) {
-    const Confined confined =
-        options.sandbox->confine({binary, filter}, scratch, {fs::path(binary).parent_path().string()}, options.limits);
-    r.run = run(confined.argv, env, confined.limits, scratch);
-    options.sandbox->interpret(r.run);
-  } else {
-    r.run = run({binary, filter}, env, options.limits, scratch);
-  }
+  r.run = run({programs.judge, filter}, env, options.limits, scratch);
   read_report(report, r);
   std::error_code ignored;
   fs::remove_all(scratch, ignored);
+  if (answerer_scratch != scratch) fs::remove_all(answerer_scratch, ignored);
 
   r.inflight = inflight_token(r.run.output);
   r.status = decide(r);
@@ -190,6 +222,52 @@ StepResult run_step(const std::string& binary, const Lab& lab, const Step& step,
   }
   r.fraction_passed = fraction_passed(r);
   return r;
+}
+
+std::vector<std::string> confine_command(const Limits& limits) {
+  char self[4096];
+  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  std::vector<std::string> argv = {n > 0 ? std::string(self, std::size_t(n)) : std::string("labkit-runner"), "confine"};
+  const auto add = [&](const char* name, long long value) {
+    if (value > 0) argv.insert(argv.end(), {name, std::to_string(value)});
+  };
+  add("--memory", (long long)limits.memory_bytes);
+  add("--file-size", (long long)limits.file_bytes);
+  add("--processes", limits.processes);
+  add("--cpu", limits.cpu_seconds);
+  if (limits.uid >= 0) argv.insert(argv.end(), {"--uid", std::to_string(limits.uid), "--gid", std::to_string(limits.gid)});
+  return argv;
+}
+
+int confine_main(int argc, char** argv) {
+  Limits limits;
+  int at = 2;  // after "labkit-runner confine"
+  for (; at + 1 < argc && std::string(argv[at]) != "--"; at += 2) {
+    const std::string name = argv[at];
+    const long long value = std::atoll(argv[at + 1]);
+    if (name == "--memory") limits.memory_bytes = std::size_t(value);
+    else if (name == "--file-size") limits.file_bytes = std::size_t(value);
+    else if (name == "--processes") limits.processes = long(value);
+    else if (name == "--cpu") limits.cpu_seconds = long(value);
+    else if (name == "--uid") limits.uid = int(value);
+    else if (name == "--gid") limits.gid = int(value);
+    else {
+      std::fprintf(stderr, "labkit-runner confine: unknown option %s\n", name.c_str());
+      return 126;
+    }
+  }
+  if (at >= argc || std::string(argv[at]) != "--" || at + 1 >= argc) {
+    std::fprintf(stderr, "usage: labkit-runner confine [--memory B] [--file-size B] [--processes N] [--cpu S] "
+                         "[--uid U --gid G] -- PROGRAM [ARGS]\n");
+    return 126;
+  }
+  if (!apply_limits(limits)) return 126;
+  // Taking a uid clears the parent-death signal: set it again, so that the code under
+  // test ends when the judge's process does, however that ends.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  execvp(argv[at + 1], argv + at + 1);
+  std::fprintf(stderr, "labkit-runner confine: cannot run %s: %s\n", argv[at + 1], std::strerror(errno));
+  return 127;
 }
 
 }  // namespace runner

@@ -1,6 +1,8 @@
-// One step of one lab, run in its own process: `test_NN_name_X "[labNN][stepK]"`, with
-// the harness writing its JSON report to a scratch file. The result says what happened,
-// in the runner's words, whatever the code under test did.
+// One step of one lab: the judge's process `test_NN_name "[labNN][stepK]"` (the kit's
+// tests, judges and oracle), which runs the code under test in a process of its own,
+// the answerer (common/protocol/answerer.h), and writes its JSON report to a scratch
+// file. The code under test only answers calls: a crash or a time-out costs the case it
+// happened on. The result says what happened, in the runner's words.
 #pragma once
 
 #include "manifest.h"
@@ -73,11 +75,24 @@ struct StepOptions {
   bool hide_seed = false;
   bool count_all = false;     // judge every random case (partial credit), LABKIT_COUNT_ALL
   bool describe_only = false; // with `replay`: describe the input, run no code under test
-  Limits limits;
-  const Sandbox* sandbox = nullptr;  // graded runs: the step runs confined to its scratch folder
+  Limits limits;              // the judge's process; its answerer gets the same memory and file limits
+  double call_seconds = 0;   // the time limit of one call of the code under test (0: the harness's 5 s)
+  const Sandbox* sandbox = nullptr;  // graded runs: the answerer runs confined to a scratch folder of its own
   std::string scratch_parent = "/tmp";  // where each step's scratch folder is made
 };
 
-StepResult run_step(const std::string& binary, const Lab& lab, const Step& step, const StepOptions& options);
+// The two programs of a step (see Lab::judge_binary).
+struct Programs {
+  std::string judge;     // the kit's test program
+  std::string answerer;  // the program that runs the code under test
+};
+
+StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, const StepOptions& options);
+
+// `labkit-runner confine LIMITS -- ARGV`: applies the limits (and the uid) and runs ARGV.
+// The judge's process starts a graded answerer through it: the runner decides the
+// confinement, the judge only starts the command line it is given.
+std::vector<std::string> confine_command(const Limits& limits);
+int confine_main(int argc, char** argv);
 
 }  // namespace runner

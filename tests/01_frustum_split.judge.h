@@ -4,7 +4,7 @@
 // case in `./labkit check` always agree.
 #pragma once
 
-#include "frustum_split.h"
+#include "01_frustum_split.wire.h"
 
 #include "common/generators/clipping.h"
 #include "common/harness/check.h"
@@ -13,13 +13,6 @@
 #include <vector>
 
 namespace labkit::lab01 {
-
-// Answers and inputs list their fields, so that reports can print them.
-template <class V> void fields(Camera& c, V&& v) {
-  v("eye", c.eye); v("forward", c.forward); v("up", c.up); v("fov_y", c.fov_y); v("aspect", c.aspect);
-  v("near", c.near); v("far", c.far);
-}
-template <class V> void fields(ClippedMesh& m, V&& v) { v("mesh", m.mesh); v("colors", m.colors); v("source", m.source); }
 
 std::string describe(Side s);
 

@@ -4,7 +4,7 @@
 // case in `./labkit check` always agree.
 #pragma once
 
-#include "segment_triangle.h"
+#include "02_segment_triangle.wire.h"
 
 #include "common/generators/generators.h"
 #include "common/harness/check.h"
@@ -13,21 +13,7 @@
 
 namespace labkit::lab02 {
 
-// Answers and inputs list their fields, so that reports can print them.
-template <class V> void fields(PlaneCrossing& c, V&& v) {
-  v("d_a", c.d_a); v("d_b", c.d_b); v("crosses", c.crosses); v("t", c.t); v("point", c.point);
-}
-template <class V> void fields(Barycentric& b, V&& v) {
-  v("dropped_axis", b.dropped_axis); v("alpha", b.alpha); v("beta", b.beta);
-}
-template <class V> void fields(SegmentTriangleHit& h, V&& v) {
-  v("hit", h.hit); v("t", h.t); v("point", h.point); v("barycentric", h.barycentric); v("normal", h.normal);
-}
-template <class V> void fields(MeshHit& h, V&& v) {
-  v("hit", h.hit); v("triangle", h.triangle); v("t", h.t); v("point", h.point);
-  v("barycentric", h.barycentric); v("normal", h.normal);
-}
-
+// Inputs list their fields, so that reports can print them (answers: the wire header).
 struct PointTriangle {
   Vec3 x = Vec3::Zero();
   Triangle triangle;

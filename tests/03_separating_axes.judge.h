@@ -4,7 +4,7 @@
 // case in `./labkit check` always agree.
 #pragma once
 
-#include "separating_axes.h"
+#include "03_separating_axes.wire.h"
 
 #include "common/generators/separating_axes.h"
 #include "common/harness/check.h"
@@ -13,13 +13,6 @@
 #include <array>
 
 namespace labkit::lab03 {
-
-// Answers list their fields, so that reports can print them.
-template <class V> void fields(Projection& p, V&& v) { v("center", p.center); v("radius", p.radius); }
-template <class V> void fields(BoxContact& c, V&& v) {
-  v("intersecting", c.intersecting); v("axis_index", c.axis_index); v("axis", c.axis); v("depth", c.depth);
-}
-template <class V> void fields(ContactInterval& c, V&& v) { v("contact", c.contact); v("first", c.first); v("last", c.last); }
 
 namespace judge {
 

@@ -10,18 +10,12 @@
 // grazing contact); a verdict that hangs on such a configuration is ambiguous.
 #pragma once
 
-#include "bisection.h"
+#include "04_bisection.wire.h"
 
 #include "common/generators/motions.h"
 #include "common/harness/check.h"
 
 namespace labkit::lab04 {
-
-// Answers list their fields, so that reports can print them.
-template <class V> void fields(TimeOfImpact& r, V&& v) {
-  v("hit", r.hit); v("overlapping_at_start", r.overlapping_at_start); v("t", r.t); v("t_contact", r.t_contact);
-  v("steps", r.steps); v("iterations", r.iterations);
-}
 
 // The lab's types from the kit's descriptions.
 StandardMotion motion_of(const MotionParameters& m);

@@ -217,15 +217,14 @@ TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][st
   check::example("bisect", "the lecture's midpoints, seen by a recording motion", ball_and_wall(0, 1, 1.0 / 32),
                  [](const MovingPairCase& in) {
                    MovingPair pair = pair_of(in);
-                   auto asked = std::make_shared<std::vector<double>>();
-                   pair.motion_a = [asked, standard = motion_of(in.a.motion)](double t) {
-                     if (std::find(asked->begin(), asked->end(), t) == asked->end()) asked->push_back(t);
-                     return standard(t);
-                   };
+                   const RecordingMotion recording{motion_of(in.a.motion)};
+                   pair.motion_a = recording;
                    const TimeOfImpact got = bisect(pair, in.times.t0, in.times.t1, in.times.tolerance);
                    std::vector<double> midpoints;
-                   for (double t : *asked)
-                     if (t != in.times.t0 && t != in.times.t1) midpoints.push_back(t);
+                   for (double t : *recording.asked)
+                     if (t != in.times.t0 && t != in.times.t1 &&
+                         std::find(midpoints.begin(), midpoints.end(), t) == midpoints.end())
+                       midpoints.push_back(t);
                    Expect e;
                    e.equal("times asked besides t0 and t1", int(midpoints.size()), 5);
                    const double lecture[] = {0.5, 0.25, 0.375, 0.4375, 0.40625};

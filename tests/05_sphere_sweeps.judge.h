@@ -3,7 +3,7 @@
 // and the viewer both use them.
 #pragma once
 
-#include "sphere_sweeps.h"
+#include "05_sphere_sweeps.wire.h"
 
 #include "common/generators/sphere_sweeps.h"
 #include "common/harness/check.h"
@@ -12,24 +12,7 @@
 
 namespace labkit::lab05 {
 
-// Answers list their fields, so that reports can print them.
 std::string describe(SweepStatus s);
-template <class V> void fields(PointSegmentDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("t", x.t); v("closest", x.closest);
-}
-template <class V> void fields(SegmentSegmentDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("s", x.s); v("t", x.t); v("closest0", x.closest0); v("closest1", x.closest1);
-}
-template <class V> void fields(PointRectangleDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("s", x.s); v("t", x.t); v("closest", x.closest);
-}
-template <class V> void fields(SegmentRectangleDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("r", x.r); v("s", x.s); v("t", x.t);
-  v("closest0", x.closest0); v("closest1", x.closest1);
-}
-template <class V> void fields(RectangleRectangleDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("closest0", x.closest0); v("closest1", x.closest1);
-}
 
 // Step 3's inputs: two sphere-swept volumes.
 struct SpherePair { Sphere a, b; };

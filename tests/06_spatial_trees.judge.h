@@ -3,7 +3,7 @@
 // both use them.
 #pragma once
 
-#include "spatial_trees.h"
+#include "06_spatial_trees.wire.h"
 
 #include "common/generators/meshes.h"
 #include "common/harness/check.h"

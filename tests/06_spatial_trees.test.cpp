@@ -379,14 +379,13 @@ Outcome run_efficiency(const EfficiencyCase& in) {
   Tally short_first, short_any, long_first, long_all;
   for (bool short_ones : {true, false}) {
     const auto segments = judge::efficiency_segments(mesh, in.segments, short_ones, std::uint64_t(in.seed) * 7 + short_ones);
-    for (const Segment& s : segments) {
+    const SegmentRuns runs = run_segments(tree, segments, !short_ones);
+    for (std::size_t k = 0; k < segments.size(); ++k) {
+      const Segment& s = segments[k];
       const KdHit expected = brute_first(s);
-      const std::uint64_t c0 = given::segment_triangle_calls();
-      const KdHit first = first_hit(tree, s);
-      const std::uint64_t c1 = given::segment_triangle_calls();
-      const KdHit any = any_hit(tree, s);
-      const std::uint64_t c2 = given::segment_triangle_calls();
-      if (first.tests != int(c1 - c0) || any.tests != int(c2 - c1))
+      const KdHit& first = runs[k].first;
+      const KdHit& any = runs[k].any;
+      if (first.tests != runs[k].first_calls || any.tests != runs[k].any_calls)
         return check::fail("tests = the calls of given::segment_triangle", "a different count", "count every call in `tests`");
       if (first.hit != expected.hit || (expected.hit && first.t != expected.t))
         return check::fail(expected.hit ? "a hit at t = " + fmt(expected.t) : "no hit",
@@ -398,7 +397,7 @@ Outcome run_efficiency(const EfficiencyCase& in) {
         short_any.add(any.tests);
       } else {
         long_first.add(first.tests);
-        long_all.add(all_hits(tree, s).tests);
+        long_all.add(runs[k].all_tests);
       }
     }
   }

@@ -3,7 +3,7 @@
 // use them, so a red mark in the viewer and a failing case in `./labkit check` agree.
 #pragma once
 
-#include "particles.h"
+#include "07_particles.wire.h"
 
 #include "common/generators/generators.h"
 #include "common/generators/particles.h"
@@ -16,29 +16,6 @@ namespace labkit::lab07 {
 
 // ---- Text and replay tokens for the lab's types -------------------------------------
 
-template <class V> void fields(Particle& p, V&& v) {
-  v("position", p.position); v("velocity", p.velocity); v("previous", p.previous); v("mass", p.mass);
-  v("age", p.age); v("lifetime", p.lifetime); v("alive", p.alive); v("bounces", p.bounces);
-}
-template <class V> void fields(Emitter& e, V&& v) {
-  v("position", e.position); v("half_extents", e.half_extents); v("direction", e.direction); v("cone", e.cone);
-  v("speed", e.speed); v("speed_spread", e.speed_spread); v("lifetime", e.lifetime);
-  v("lifetime_spread", e.lifetime_spread); v("mass", e.mass); v("rate", e.rate); v("owed", e.owed);
-}
-template <class V> void fields(Births& b, V&& v) { v("count", b.count); v("owed", b.owed); }
-template <class V> void fields(Shot& s, V&& v) { v("angle", s.angle); v("velocity", s.velocity); v("time", s.time); }
-template <class V> void fields(Aim& a, V&& v) { v("count", a.count); v("radicand", a.radicand); v("low", a.low); v("high", a.high); }
-template <class V> void fields(SurfaceHit& h, V&& v) {
-  v("hit", h.hit); v("plane", h.plane); v("triangle", h.triangle); v("t", h.t); v("point", h.point); v("normal", h.normal);
-}
-template <class V> void fields(Impulse& i, V&& v) {
-  v("closing", i.closing); v("v_close", i.v_close); v("normal_impulse", i.normal_impulse); v("friction", i.friction);
-  v("velocity", i.velocity);
-}
-template <class V> void fields(Bounce& b, V&& v) { v("hit", b.hit); v("velocity", b.velocity); v("from", b.from); }
-
-// Coefficients (drag, restitution, friction) and plane normals are unit-free numbers:
-// the ambiguity check moves them by 1e-9, not by 1e-9 S.
 void encode(codec::Writer& w, const Forces& f);
 void decode(codec::Reader& r, Forces& f);
 void encode(codec::Writer& w, const Material& m);

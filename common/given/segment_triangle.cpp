@@ -10,6 +10,8 @@ thread_local std::uint64_t calls = 0;
 
 std::uint64_t segment_triangle_calls() { return calls; }
 
+void count_segment_triangle_calls(std::uint64_t n) { calls += n; }
+
 // Work in "segment space": translate so a is the origin, then shear so the segment's
 // direction becomes the z axis. The question becomes 2D: does the origin lie inside the
 // sheared triangle's projection? Its three edge functions U, V, W (2D cross products of

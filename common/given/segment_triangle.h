@@ -29,5 +29,8 @@ SegmentHit segment_triangle(const Segment& segment, const Triangle& triangle);
 // structure's efficiency by counting primitive tests, never by timing: a check reads
 // this before and after a query.
 std::uint64_t segment_triangle_calls();
+// Adds calls made elsewhere: the judge's process adds those the answerer's process made
+// for it (common/protocol/calls.h), so that counting around a call reads the same.
+void count_segment_triangle_calls(std::uint64_t n);
 
 }  // namespace labkit::given

@@ -13,6 +13,7 @@
 
 #include "common/harness/codec.h"
 #include "common/not_implemented.h"
+#include "common/protocol/answerer.h"
 
 #include <catch2/catch.hpp>
 #include <rapidcheck.h>
@@ -174,11 +175,17 @@ struct QuietListener : rc::detail::TestListener {
   void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
 };
 
-// Runs the judge, turning stubs and stray exceptions into outcomes.
+// Runs the judge, turning stubs, stray exceptions and calls that got no answer (a crash
+// or a time-out in the answerer's process) into outcomes. A deferred call (a batch is
+// being gathered) goes through to random_cases.
 template <class Input, class Judge>
 Outcome run_judge(Judge& judge, const Input& input, QueryReport& report) {
   try {
     return judge(input);
+  } catch (const remote::Deferred&) {
+    throw;
+  } catch (const remote::Failed& e) {
+    return fail("an answer", e.got, e.what());
   } catch (const NotImplemented& e) {
     report.not_implemented = e.what();
     return fail("an answer", "a stub", e.what());
@@ -199,6 +206,39 @@ inline void tally(QueryReport& report, const Outcome& o) {
   if (o.verdict == Outcome::Verdict::pass) ++report.passed;
   if (o.verdict == Outcome::Verdict::ambiguous) ++report.ambiguous;
   if (o.verdict == Outcome::Verdict::fail) ++report.failed;
+}
+
+// Judges inputs[begin, end) into outcomes[begin, end), gathering the code under test's
+// calls into batches (common/protocol/answerer.h): each round runs the judges, those
+// whose call is not answered yet defer, and one flush answers them all at once. A judge
+// that makes several dependent calls takes a round per call.
+template <class Input, class Judge>
+void judge_batch(const std::vector<Input>& inputs, std::size_t begin, std::size_t end, Judge& judge,
+                 QueryReport& report, std::vector<Outcome>& outcomes) {
+  constexpr int kRounds = 32;
+  std::vector<std::size_t> todo;
+  for (std::size_t i = begin; i < end; ++i) todo.push_back(i);
+  // Each case's replay token, made once: a crash of the judge's process names its case.
+  std::vector<std::string> tokens(end - begin);
+  remote::begin_batch();
+  for (int round = 0; !todo.empty(); ++round) {
+    if (round == kRounds) remote::stop_deferring();  // the rest, one call at a time
+    std::vector<std::size_t> deferred;
+    for (std::size_t i : todo) {
+      std::string& token = tokens[i - begin];
+      if (token.empty()) token = replay_token(report.query, inputs[i]);
+      set_inflight(token);
+      try {
+        outcomes[i] = run_judge(judge, inputs[i], report);
+      } catch (const remote::Deferred&) {
+        deferred.push_back(i);
+      }
+      clear_inflight();
+    }
+    todo = std::move(deferred);
+    if (!todo.empty()) remote::flush();
+  }
+  remote::end_batch();
 }
 
 template <class Input, class Judge>
@@ -317,41 +357,67 @@ void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& j
   rc::detail::TestMetadata metadata;
   metadata.id = metadata.description = query;
   detail::QuietListener listener;
+  remote::new_query();
 
-  // Counting mode: a first pass judges every case and never stops; the second pass below
-  // then only finds the first failure again (same seed, same cases) and shrinks it.
-  int first_failing_case = 0;
-  std::optional<detail::Failure> first_failure;
-  if (s.count_all) {
-    const auto count = [&] {
-      const Input input = *gen;
-      detail::set_inflight(replay_token(query, input));
-      const Outcome o = detail::run_judge(judge, input, report);
-      detail::clear_inflight();
-      detail::tally(report, o);
-      if (o.verdict != Outcome::Verdict::fail || first_failing_case != 0) return;
-      first_failing_case = report.cases;
-      first_failure = detail::failure_of("", query, input, o);
-    };
-    rc::detail::checkProperty(rc::detail::toProperty(count), metadata, params, listener, {});
+  // The cases, drawn as RapidCheck draws them: the same seed gives the same cases.
+  std::vector<Input> inputs;
+  inputs.reserve(std::size_t(s.cases));
+  const auto drawn =
+      rc::detail::checkProperty(rc::detail::toProperty([&] { inputs.push_back(*gen); }), metadata, params, listener, {});
+  if (!drawn.template is<rc::detail::SuccessResult>()) {
+    report.error = "the random cases could not be drawn: " +
+                   (drawn.template is<rc::detail::FailureResult>() ? drawn.template get<rc::detail::FailureResult>().description
+                                                                   : std::string("RapidCheck gave up or failed"));
     detail::save_report();
-    if (first_failing_case == 0) {
-      detail::report_to_catch(report, true);
-      return;
-    }
+    detail::report_to_catch(report, true);
+    return;
   }
 
-  // After the first failure RapidCheck only shrinks: those runs are not counted as cases.
-  bool shrinking = s.count_all;  // counting mode has counted every case already
+  // Judged a chunk at a time, each chunk's calls in one batch. The student's check stops
+  // at the chunk holding the first failure; a graded run judges every case (partial
+  // credit), and its report still shows the first failure, shrunk.
+  constexpr std::size_t kChunk = 1024;
+  std::vector<Outcome> outcomes(inputs.size());
+  int first_failing_case = 0;  // 1-based; 0: none
+  for (std::size_t begin = 0; begin < inputs.size() && (first_failing_case == 0 || s.count_all); begin += kChunk) {
+    const std::size_t end = std::min(inputs.size(), begin + kChunk);
+    detail::judge_batch(inputs, begin, end, judge, report, outcomes);
+    for (std::size_t i = begin; i < end && (first_failing_case == 0 || s.count_all); ++i) {
+      detail::tally(report, outcomes[i]);
+      if (outcomes[i].verdict == Outcome::Verdict::fail && first_failing_case == 0) first_failing_case = int(i) + 1;
+    }
+  }
+  detail::save_report();
+  if (first_failing_case == 0) {
+    detail::report_to_catch(report, true);
+    return;
+  }
+  std::optional<detail::Failure> first_failure =
+      detail::failure_of("", query, inputs[std::size_t(first_failing_case) - 1], outcomes[std::size_t(first_failing_case) - 1]);
+  inputs = {};
+  outcomes = {};
+  // A call that never finished is not shrunk: each try would wait out the time limit.
+  if (first_failure->got == remote::kNoAnswer) {
+    first_failure->title = "random case " + std::to_string(first_failing_case) + " of " + std::to_string(s.cases);
+    report.failure = first_failure;
+    detail::save_report();
+    detail::report_to_catch(report, true);
+    return;
+  }
+
+  // RapidCheck draws the same cases again to shrink the first failure: those before it
+  // passed already, so only the failing case and its shrinks are judged, one at a time.
+  bool shrinking = false;
+  int seen = 0;
   int shrinks = -1;
   std::optional<detail::Failure> smallest;
   const auto property = [&] {
     const Input input = *gen;
+    if (!shrinking && ++seen < first_failing_case) return;
     const std::string token = replay_token(query, input);
     detail::set_inflight(token);
     const Outcome o = detail::run_judge(judge, input, report);
     detail::clear_inflight();
-    if (!shrinking) detail::tally(report, o);
     if (o.verdict != Outcome::Verdict::fail) return;
     shrinking = true;
     ++shrinks;
@@ -362,7 +428,7 @@ void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& j
 
   if (result.template is<rc::detail::FailureResult>() && smallest) {
     smallest->shrinks = shrinks;
-    const int at = s.count_all ? first_failing_case : report.cases;
+    const int at = first_failing_case;
     smallest->title = "random case " + std::to_string(at) + " of " + std::to_string(s.cases);
     report.failure = smallest;
   } else if (result.template is<rc::detail::FailureResult>()) {

@@ -73,6 +73,7 @@ class Random {
   }
   double uniform() { return double(next() >> 11) * 0x1.0p-53; }  // in [0, 1)
   double uniform(double low, double high) { return low + (high - low) * uniform(); }
+  std::uint64_t state() const { return state_; }  // Random(r.state()) goes on as r would
 
  private:
   std::uint64_t state_;

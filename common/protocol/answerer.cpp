@@ -1,0 +1,333 @@
+#include "common/protocol/answerer.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace labkit::remote {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+constexpr std::uint64_t kLargestAnswer = std::uint64_t(1) << 30;  // bytes
+constexpr const char* kHello = "labkit-answerer 1";
+// Start-ups in a row that die before answering anything: then the program is broken
+// as a whole (a crash in a static initialiser, say), and no call is tried again.
+constexpr int kFailedStarts = 3;
+
+std::vector<std::string> command_from_environment() {
+  const char* v = std::getenv("LABKIT_ANSWERER");
+  if (!v || !*v)
+    throw std::runtime_error(
+        "LABKIT_ANSWERER is not set: this test program runs the lab's code in a process of its own and needs its "
+        "path (./labkit check and ctest set it; see common/protocol/answerer.h)");
+  if (v[0] != '[') return {v};
+  std::vector<std::string> argv;
+  try {
+    argv = nlohmann::json::parse(v).get<std::vector<std::string>>();
+  } catch (const nlohmann::json::exception& e) {
+    throw std::runtime_error(std::string("LABKIT_ANSWERER is not a JSON array of strings: ") + e.what());
+  }
+  if (argv.empty()) throw std::runtime_error("LABKIT_ANSWERER is an empty command line");
+  return argv;
+}
+
+// Reads whole frames out of a byte stream as it arrives.
+class Frames {
+ public:
+  void add(const char* data, std::size_t n) {
+    buffer_.erase(0, at_);  // what was read already, once per chunk received
+    at_ = 0;
+    buffer_.append(data, n);
+  }
+  // True and the frame's payload when one is complete; throws on an impossible length.
+  bool next(std::string& payload) {
+    if (buffer_.size() - at_ < sizeof(std::uint64_t)) return false;
+    std::uint64_t n;
+    std::memcpy(&n, buffer_.data() + at_, sizeof n);
+    if (n > kLargestAnswer) throw std::runtime_error("an answer of " + std::to_string(n) + " bytes");
+    if (buffer_.size() - at_ - sizeof n < n) return false;
+    payload.assign(buffer_, at_ + sizeof n, n);
+    at_ += sizeof n + n;
+    return true;
+  }
+
+ private:
+  std::string buffer_;
+  std::size_t at_ = 0;
+};
+
+std::string signal_words(int s) {
+  switch (s) {
+    case SIGSEGV: return "segmentation fault: a read or write through a bad pointer or past an array's end";
+    case SIGFPE: return "floating-point exception: an integer division by zero";
+    case SIGABRT: return "aborted: a failed assert(), or an exception nobody caught";
+    case SIGBUS: return "bus error: a misaligned or unmapped memory access";
+    case SIGILL: return "illegal instruction";
+    case SIGKILL: return "killed (SIGKILL): out of memory, or a limit was reached";
+    case SIGXCPU: return "killed: the CPU-time limit was reached";
+    case SIGXFSZ: return "killed: it wrote a file beyond the size limit";
+  }
+  return std::string("killed by signal ") + std::to_string(s) + " (" + strsignal(s) + ")";
+}
+
+// The batch, shared by every call of the process.
+struct Batch {
+  bool deferring = false;
+  std::vector<std::string> pending;
+  std::unordered_map<std::string, Response> answers;
+};
+Batch batch;
+bool started = false;  // an answerer exists
+
+}  // namespace
+
+Answerer& Answerer::instance() {
+  started = true;
+  static Answerer answerer(command_from_environment());
+  return answerer;
+}
+
+Answerer::Answerer(std::vector<std::string> argv) : argv_(std::move(argv)) {
+  // Writing to an answerer that just died must not kill the judge.
+  std::signal(SIGPIPE, SIG_IGN);
+  if (const char* v = std::getenv("LABKIT_CALL_SECONDS"); v && *v) {
+    const double s = std::strtod(v, nullptr);
+    if (s > 0) call_limit_ = std::chrono::milliseconds(long(s * 1000));
+  }
+}
+
+Answerer::~Answerer() { stop(true); }
+
+bool Answerer::start() {
+  int requests[2], answers[2];
+  if (pipe2(requests, O_CLOEXEC) != 0) return false;
+  if (pipe2(answers, O_CLOEXEC) != 0) {
+    close(requests[0]), close(requests[1]);
+    return false;
+  }
+  std::vector<char*> args;
+  for (std::string& a : argv_) args.push_back(a.data());
+  args.push_back(nullptr);
+  char path[] = "PATH=/usr/bin:/bin";
+  char* environment[] = {path, nullptr};  // nothing of the judge's: no seed, no settings
+  const pid_t judge = getpid();
+
+  const pid_t pid = fork();
+  if (pid == 0) {
+    setpgid(0, 0);  // its own group: a time-out ends everything it started
+    prctl(PR_SET_PDEATHSIG, SIGKILL);
+    if (getppid() != judge) _exit(127);
+    const int null = open("/dev/null", O_RDONLY);
+    dup2(null, 0);
+    dup2(2, 1);  // its prints go where the judge's diagnostics go, never into the protocol
+    // Out of the way first (the pipes may already sit on 3 or 4), then in place; dup2
+    // leaves the copies open across exec.
+    const int in = fcntl(requests[0], F_DUPFD_CLOEXEC, 10), out = fcntl(answers[1], F_DUPFD_CLOEXEC, 10);
+    if (in < 0 || out < 0 || dup2(in, 3) != 3 || dup2(out, 4) != 4) _exit(127);
+    execve(args[0], args.data(), environment);
+    const std::string why = std::string("labkit: cannot run the code under test (") + argv_[0] + "): " + strerror(errno) + "\n";
+    if (write(2, why.data(), why.size()) < 0) {}
+    _exit(127);
+  }
+  close(requests[0]);
+  close(answers[1]);
+  if (pid < 0) {
+    close(requests[1]), close(answers[0]);
+    return false;
+  }
+  pid_ = pid;
+  to_ = requests[1];
+  from_ = answers[0];
+  fcntl(to_, F_SETFL, O_NONBLOCK);
+  fcntl(from_, F_SETFL, O_NONBLOCK);
+  greeted_ = false;
+  return true;
+}
+
+void Answerer::stop(bool kill_it) {
+  if (to_ >= 0) close(to_);
+  if (from_ >= 0) close(from_);
+  to_ = from_ = -1;
+  if (pid_ > 0) {
+    if (kill_it) {
+      kill(-pid_, SIGKILL);
+      kill(pid_, SIGKILL);
+    }
+    int status = 0;
+    waitpid(pid_, &status, 0);
+  }
+  pid_ = -1;
+}
+
+// After the answer stream ended: how the process ended, in words.
+std::string Answerer::ended_how() {
+  if (to_ >= 0) close(to_);
+  if (from_ >= 0) close(from_);
+  to_ = from_ = -1;
+  int status = 0;
+  std::string how = "it stopped answering";
+  if (pid_ > 0 && waitpid(pid_, &status, 0) == pid_) {
+    if (WIFSIGNALED(status)) how = signal_words(WTERMSIG(status));
+    // A confinement wrapper reports its child's signal N as exit status 128 + N.
+    else if (WIFEXITED(status) && WEXITSTATUS(status) > 128 && WEXITSTATUS(status) < 128 + 65)
+      how = signal_words(WEXITSTATUS(status) - 128);
+    else if (WIFEXITED(status))
+      how = "the process exited with status " + std::to_string(WEXITSTATUS(status)) +
+            " in the middle of a call (exit(), quick_exit() or _exit() in the code?)";
+  }
+  kill(-pid_, SIGKILL);
+  pid_ = -1;
+  return how;
+}
+
+std::vector<Response> Answerer::exchange(const std::vector<std::string>& requests) {
+  std::vector<Response> out(requests.size());
+  std::size_t received = 0;
+  int failed_starts = 0;
+  while (received < requests.size()) {
+    const auto fail_rest = [&](Response::Kind kind, const std::string& detail) {
+      for (; received < requests.size(); ++received) out[received] = {kind, {}, detail};
+    };
+    if (!start_failure_.empty()) {
+      fail_rest(Response::Kind::crashed, start_failure_);
+      break;
+    }
+    if (timeouts_ >= kTimeoutsPerQuery) {
+      fail_rest(Response::Kind::timed_out,
+                "not run: the code under test already timed out " + std::to_string(timeouts_) + " times in this query");
+      break;
+    }
+    if (pid_ < 0 && !start()) {
+      start_failure_ = std::string("the code under test could not be started: ") + strerror(errno);
+      continue;
+    }
+    // Send every request not answered yet, and read answers as they come.
+    std::string outbox;
+    std::size_t size = 0;
+    for (std::size_t i = received; i < requests.size(); ++i) size += sizeof(std::uint64_t) + requests[i].size();
+    outbox.reserve(size);
+    for (std::size_t i = received; i < requests.size(); ++i) {
+      const std::uint64_t n = requests[i].size();
+      outbox.append(reinterpret_cast<const char*>(&n), sizeof n).append(requests[i]);
+    }
+    std::size_t written = 0;
+    Frames frames;
+    auto deadline = Clock::now() + call_limit_ + (greeted_ ? std::chrono::milliseconds(0) : std::chrono::seconds(10));
+    std::string problem;  // why this run of the answerer ended early
+    Response::Kind kind = Response::Kind::crashed;
+    while (received < requests.size() && problem.empty()) {
+      pollfd fds[2] = {{from_, POLLIN, 0}, {written < outbox.size() ? to_ : -1, POLLOUT, 0}};
+      const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+      if (wait <= 0) {
+        kind = Response::Kind::timed_out;
+        problem = "it did not answer within " + std::to_string(call_limit_.count() / 1000.0).substr(0, 4) +
+                  " s (the time limit of one call): an endless loop?";
+        break;
+      }
+      if (poll(fds, 2, int(std::min<long long>(wait, 1000))) < 0 && errno != EINTR) {
+        problem = std::string("poll failed: ") + strerror(errno);
+        break;
+      }
+      if (fds[1].revents & (POLLOUT | POLLERR | POLLHUP)) {
+        const ssize_t n = write(to_, outbox.data() + written, outbox.size() - written);
+        if (n > 0) written += std::size_t(n);
+      }
+      if (fds[0].revents & (POLLIN | POLLHUP | POLLERR)) {
+        char buffer[1 << 16];
+        const ssize_t n = read(from_, buffer, sizeof buffer);
+        if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) {
+          problem = ended_how();
+          break;
+        }
+        if (n > 0) frames.add(buffer, std::size_t(n));
+        std::string payload;
+        try {
+          while (received < requests.size() && frames.next(payload)) {
+            if (!greeted_) {
+              if (payload != kHello) throw std::runtime_error("it did not greet as an answerer does");
+              greeted_ = true;
+              failed_starts = 0;
+            } else {
+              out[received++] = {Response::Kind::answered, std::move(payload), {}};
+            }
+            deadline = Clock::now() + call_limit_;
+          }
+        } catch (const std::runtime_error& e) {
+          kind = Response::Kind::broken;
+          problem = std::string("its process wrote something that is not an answer (") + e.what() +
+                    "): does the code write to file descriptor 4?";
+        }
+      }
+    }
+    if (problem.empty()) break;
+    // This run of the answerer is over: the call it was on gets the blame, the rest
+    // are sent again to a new one.
+    if (kind == Response::Kind::timed_out) ++timeouts_;
+    if (!greeted_ && kind == Response::Kind::crashed && ++failed_starts >= kFailedStarts) {
+      start_failure_ = "the code under test's process ends before it can answer anything (" + problem +
+                       "): a crash in a static initialiser, or a call of exit() before main?";
+      stop(true);
+      continue;
+    }
+    stop(true);
+    if (greeted_ || kind != Response::Kind::crashed) out[received++] = {kind, {}, problem};
+  }
+  return out;
+}
+
+const Response& Answerer::ask(const std::string& request) {
+  if (const auto it = batch.answers.find(request); it != batch.answers.end()) return it->second;
+  if (batch.deferring) {
+    batch.pending.push_back(request);
+    throw Deferred{};
+  }
+  last_ = std::move(exchange({request}).front());
+  return last_;
+}
+
+void Answerer::flush() {
+  std::vector<std::string>& pending = batch.pending;
+  std::sort(pending.begin(), pending.end());
+  pending.erase(std::unique(pending.begin(), pending.end()), pending.end());
+  const std::vector<Response> responses = exchange(pending);
+  for (std::size_t i = 0; i < pending.size(); ++i) batch.answers[pending[i]] = responses[i];
+  pending.clear();
+}
+
+void begin_batch() {
+  batch.deferring = true;
+  batch.pending.clear();
+}
+
+bool flush() {
+  if (batch.pending.empty()) return false;
+  Answerer::instance().flush();
+  return true;
+}
+
+void stop_deferring() {
+  batch.deferring = false;
+  batch.pending.clear();
+}
+
+void end_batch() {
+  stop_deferring();
+  batch.answers.clear();
+}
+
+void new_query() {
+  if (started) Answerer::instance().timeouts_ = 0;
+}
+
+}  // namespace labkit::remote

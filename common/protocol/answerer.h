@@ -1,0 +1,103 @@
+// The code under test runs in a process of its own, the answerer; the judge, the exact
+// oracle and the harness never share an address space with it. The judge's process
+// sends it calls ("segment_plane" and its arguments) and reads back answers, nothing
+// else: whatever the student's file does (declares names, reads its own binary, scans
+// memory, crashes, loops), it can only answer, never judge.
+//
+//   judge's process                              answerer (student's code)
+//   lab02::segment_plane(s, t)  --- request --->  serve(): decode, call the real
+//     (common/protocol/lab_calls.cpp)             segment_plane, encode the answer
+//   answer, or remote::Failed  <--- response ---  (common/protocol/lab_answerer.cpp)
+//
+// Requests travel on the answerer's file descriptor 3 and answers on 4, each framed as
+// an 8-byte length and the bytes (common/protocol/wire.h). The answerer's stdout and
+// stderr are the judge's stderr, so a student's debug prints still show.
+//
+// Batches: the harness asks for thousands of random cases at a time. Between
+// begin_batch() and end_batch(), a call whose answer is not known yet is recorded and
+// throws Deferred; flush() sends every recorded call at once (the answers stream back
+// in order, with no round trip per call) and keeps the answers, and the harness runs
+// the deferred judges again. A crash or a time-out costs the one call it happened on:
+// that call's answer says so, the answerer is started again, and the rest go on.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <sys/types.h>
+#include <unordered_map>
+#include <vector>
+
+namespace labkit::remote {
+
+// The answer to one call, as the judge's process saw it.
+struct Response {
+  enum class Kind { answered, crashed, timed_out, broken };
+  Kind kind = Kind::answered;
+  std::string bytes;   // answered: the answerer's reply (a status byte, then its data)
+  std::string detail;  // otherwise: what happened, in words
+};
+
+// What the answerer replies, in the first byte of an answered call.
+enum class Status : unsigned char { answered = 0, not_implemented = 1, threw = 2, unknown_call = 3 };
+
+// The call could not be answered: it crashed, timed out, or sent something unreadable.
+// `got` and `why` are ready for a failure report.
+struct Failed : std::runtime_error {
+  Failed(std::string got, std::string why) : std::runtime_error(why), got(std::move(got)) {}
+  std::string got;
+};
+
+// Failed::got of a call that timed out.
+constexpr const char* kNoAnswer = "no answer";
+
+// Thrown while batching when a call's answer is not known yet. Not a std::exception, so
+// that no judge's own catch of std::exception swallows it.
+struct Deferred {};
+
+class Answerer {
+ public:
+  // The one answerer of this process, run as LABKIT_ANSWERER says: a program's path, or
+  // a JSON array of a command line (the grader's confinement around the program).
+  static Answerer& instance();
+
+  // The answer to one call: known from a batch, or asked now (or, while deferring,
+  // recorded for the next flush: then it throws Deferred).
+  // The reference stays valid until the batch ends or the next call.
+  const Response& ask(const std::string& request);
+  // Sends the recorded calls at once and keeps their answers.
+  void flush();
+
+  ~Answerer();
+
+ private:
+  explicit Answerer(std::vector<std::string> argv);
+  std::vector<Response> exchange(const std::vector<std::string>& requests);
+  bool start();
+  void stop(bool kill_it);
+  std::string ended_how();
+
+  std::vector<std::string> argv_;
+  pid_t pid_ = -1;
+  int to_ = -1, from_ = -1;
+  bool greeted_ = false;
+  std::string start_failure_;  // set when the program cannot answer anything at all
+
+  int timeouts_ = 0;
+  std::chrono::milliseconds call_limit_{5000};
+  Response last_;  // the answer to the last call asked outside a batch
+  friend void new_query();
+};
+
+// Batches, for the harness; they cost nothing in a process that never calls the answerer.
+void begin_batch();       // calls whose answer is not known yet are recorded, and defer
+bool flush();             // sends them (false: there were none) and keeps the answers
+void stop_deferring();    // calls not known yet are asked one by one again
+void end_batch();         // forgets the answers
+void new_query();         // a new query: the time-out budget starts afresh
+
+// How many time-outs a query tolerates before its remaining calls are not run.
+constexpr int kTimeoutsPerQuery = 2;
+
+}  // namespace labkit::remote

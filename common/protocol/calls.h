@@ -1,0 +1,158 @@
+// A lab's functions as calls between two processes (see answerer.h for the picture).
+//
+// Each lab lists its functions once, in tests/NN_name.wire.h:
+//
+//   #define LABKIT_LAB02_CALLS(CALL, METHOD) ...
+//     CALL(PlaneCrossing, segment_plane, (const Segment&, const Triangle&)) ...
+//
+// From that one list, common/protocol/lab_calls.cpp defines each function for the
+// judge's process (it sends the call and returns the answer) and
+// common/protocol/lab_answerer.cpp builds the answerer's table (it receives the call
+// and runs the student's function). A non-const reference argument (lab 07's Random&)
+// travels both ways: its new value comes back with the answer. METHOD(Class, name,
+// params) does the same for a member function returning void, with *this in and out.
+#pragma once
+
+#include "common/not_implemented.h"
+#include "common/protocol/answerer.h"
+#include "common/protocol/wire.h"
+
+#include <functional>
+#include <map>
+#include <string>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+// ---- Naming a parenthesised parameter list: (const Segment&, double) -> const Segment& a1, double a2
+#define LABKIT_CAT(a, b) LABKIT_CAT_(a, b)
+#define LABKIT_CAT_(a, b) a##b
+#define LABKIT_COUNT(...) LABKIT_COUNT_(__VA_ARGS__, 8, 7, 6, 5, 4, 3, 2, 1, 0)
+#define LABKIT_COUNT_(_1, _2, _3, _4, _5, _6, _7, _8, n, ...) n
+#define LABKIT_NAMED(...) LABKIT_CAT(LABKIT_NAMED_, LABKIT_COUNT(__VA_ARGS__))(__VA_ARGS__)
+#define LABKIT_NAMED_1(A) A a1
+#define LABKIT_NAMED_2(A, B) A a1, B a2
+#define LABKIT_NAMED_3(A, B, C) A a1, B a2, C a3
+#define LABKIT_NAMED_4(A, B, C, D) A a1, B a2, C a3, D a4
+#define LABKIT_NAMED_5(A, B, C, D, E) A a1, B a2, C a3, D a4, E a5
+#define LABKIT_NAMED_6(A, B, C, D, E, F) A a1, B a2, C a3, D a4, E a5, F a6
+#define LABKIT_ARGS(...) LABKIT_CAT(LABKIT_ARGS_, LABKIT_COUNT(__VA_ARGS__))
+#define LABKIT_ARGS_1 a1
+#define LABKIT_ARGS_2 a1, a2
+#define LABKIT_ARGS_3 a1, a2, a3
+#define LABKIT_ARGS_4 a1, a2, a3, a4
+#define LABKIT_ARGS_5 a1, a2, a3, a4, a5
+#define LABKIT_ARGS_6 a1, a2, a3, a4, a5, a6
+#define LABKIT_UNPAREN(...) __VA_ARGS__
+
+namespace labkit::remote {
+
+template <class P>
+constexpr bool is_out = std::is_lvalue_reference_v<P> && !std::is_const_v<std::remove_reference_t<P>>;
+
+// ---- What a call did besides answering -------------------------------------------------
+// An answer carries how often the call used given::segment_triangle (lab 06 counts them:
+// the judge's process adds them to its own count, so that counting around a call reads
+// the same as in one process) and the samples it recorded: the values the code passed to
+// a recording argument (lab 04's RecordingMotion: the times it asked for a pose).
+
+// In the answerer: records one sample for the current call.
+void record_sample(double x);
+// In the judge's process: the next answer's samples are appended to `sink` (then it is
+// forgotten). Set while the recording argument is sent.
+void sample_into(std::vector<double>* sink);
+
+// ---- The judge's side: send the call, return the answer ------------------------------
+
+namespace detail {
+// Turns an answerer's reply into the answer, or throws what the student's code threw.
+wire::Reader open_reply(const std::string& id, const Response& response);
+}  // namespace detail
+
+// A non-const reference argument comes back with the answer; the others only go.
+template <class P, class A>
+void get_out(wire::Reader& r, A& a) {
+  if constexpr (is_out<P>) wire::get(r, a);
+}
+template <class P, class A>
+void put_out(wire::Writer& w, const A& a) {
+  if constexpr (is_out<P>) wire::put(w, a);
+}
+
+template <class R, class... P>
+R call(const char* id, P... args) {
+  wire::Writer w;
+  wire::put(w, std::string(id));
+  (wire::put(w, args), ...);
+  wire::Reader r = detail::open_reply(id, Answerer::instance().ask(w.bytes()));
+  try {
+    if constexpr (std::is_void_v<R>) {
+      (get_out<P>(r, args), ...);
+      if (!r.done()) throw wire::Error("extra bytes after the answer");
+    } else {
+      R result{};
+      wire::get(r, result);
+      (get_out<P>(r, args), ...);
+      if (!r.done()) throw wire::Error("extra bytes after the answer");
+      return result;
+    }
+  } catch (const wire::Error& e) {
+    throw Failed("an answer that cannot be read", std::string("the answer to ") + id + " is malformed: " + e.what() +
+                                                      " (does the code write to file descriptor 4?)");
+  }
+}
+
+// ---- The answerer's side: receive the call, run the student's function ---------------
+
+using Handler = std::function<void(wire::Reader&, wire::Writer&)>;
+using Table = std::map<std::string, Handler>;
+
+template <class R, class... P, std::size_t... I>
+void run_call(R (*function)(P...), wire::Reader& in, wire::Writer& out, std::index_sequence<I...>) {
+  std::tuple<std::decay_t<P>...> args;
+  (wire::get(in, std::get<I>(args)), ...);
+  if (!in.done()) throw wire::Error("extra bytes after the arguments");
+  if constexpr (std::is_void_v<R>) {
+    function(std::get<I>(args)...);
+  } else {
+    const R result = function(std::get<I>(args)...);
+    wire::put(out, result);
+  }
+  (put_out<P>(out, std::get<I>(args)), ...);
+}
+
+template <class R, class... P>
+Handler handler(R (*function)(P...)) {
+  return [function](wire::Reader& in, wire::Writer& out) {
+    run_call(function, in, out, std::index_sequence_for<P...>{});
+  };
+}
+
+// The answerer's main loop: greets, then answers calls until its input ends.
+int serve(const Table& table);
+
+}  // namespace labkit::remote
+
+// ---- The two expansions of a lab's list -----------------------------------------------
+
+#define LABKIT_CALL_ID(R, name, params) #name #params
+
+// In the judge's process: the function, defined as a call to the answerer.
+#define LABKIT_DEFINE_CALL(R, name, params)                                                   \
+  R name(LABKIT_NAMED params) {                                               \
+    return ::labkit::remote::call<R, LABKIT_UNPAREN params>(                 \
+        LABKIT_CALL_ID(R, name, params), LABKIT_ARGS params);                                \
+  }
+#define LABKIT_DEFINE_METHOD(Class, name, params)                                             \
+  void Class::name(LABKIT_NAMED params) {                                                    \
+    ::labkit::remote::call<void, Class&, LABKIT_UNPAREN params>(#Class "::" #name #params, *this, \
+                                                                  LABKIT_ARGS params);       \
+  }
+
+// In the answerer: the table entry that runs the student's function.
+#define LABKIT_TABLE_CALL(R, name, params) \
+  table[LABKIT_CALL_ID(R, name, params)] = ::labkit::remote::handler<R, LABKIT_UNPAREN params>(&name);
+#define LABKIT_TABLE_METHOD(Class, name, params)                                                                 \
+  table[#Class "::" #name #params] = ::labkit::remote::handler<void, Class&, LABKIT_UNPAREN params>(            \
+      +[](Class& self, LABKIT_NAMED params) { self.name(LABKIT_ARGS params); });

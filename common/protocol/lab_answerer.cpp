@@ -1,0 +1,17 @@
+// main() of one lab's answerer: the process that runs the code under test and nothing
+// else of the kit's but the geometry types (answerer.h). Linked with the student's
+// objects, the reference or a mutant; compiled once per lab like lab_calls.cpp.
+// A wire header's helpers that run in the answerer (a batch of queries on one big input)
+// are defined here only.
+#define LABKIT_IN_ANSWERER
+#include LABKIT_LAB_WIRE
+
+#include "common/protocol/calls.h"
+
+int main() {
+  using namespace labkit;
+  using namespace labkit::LABKIT_LAB_NAMESPACE;
+  remote::Table table;
+  LABKIT_LAB_CALLS(LABKIT_TABLE_CALL, LABKIT_TABLE_METHOD)
+  return remote::serve(table);
+}

@@ -1,0 +1,46 @@
+// Lab 05 across the process boundary (common/protocol/answerer.h): the fields of the
+// lab's answer types, which reports print and the protocol copies, and the list of the
+// functions the judge's process calls in the answerer.
+#pragma once
+
+#include "sphere_sweeps.h"
+
+namespace labkit::lab05 {
+
+template <class V> void fields(PointSegmentDistance& x, V&& v) {
+  v("squared_distance", x.squared_distance); v("t", x.t); v("closest", x.closest);
+}
+template <class V> void fields(SegmentSegmentDistance& x, V&& v) {
+  v("squared_distance", x.squared_distance); v("s", x.s); v("t", x.t); v("closest0", x.closest0); v("closest1", x.closest1);
+}
+template <class V> void fields(PointRectangleDistance& x, V&& v) {
+  v("squared_distance", x.squared_distance); v("s", x.s); v("t", x.t); v("closest", x.closest);
+}
+template <class V> void fields(SegmentRectangleDistance& x, V&& v) {
+  v("squared_distance", x.squared_distance); v("r", x.r); v("s", x.s); v("t", x.t);
+  v("closest0", x.closest0); v("closest1", x.closest1);
+}
+template <class V> void fields(RectangleRectangleDistance& x, V&& v) {
+  v("squared_distance", x.squared_distance); v("closest0", x.closest0); v("closest1", x.closest1);
+}
+template <class V> void fields(Sweep& s, V&& v) { v("status", s.status); v("time", s.time); v("point", s.point); }
+
+}  // namespace labkit::lab05
+
+// clang-format off
+#define LABKIT_LAB05_CALLS(CALL, METHOD)                                                              \
+  CALL(PointSegmentDistance, point_segment, (const Vec3&, const Segment&))                            \
+  CALL(SegmentSegmentDistance, segment_segment, (const Segment&, const Segment&))                     \
+  CALL(PointRectangleDistance, point_rectangle, (const Vec3&, const Rectangle&))                      \
+  CALL(SegmentRectangleDistance, segment_rectangle, (const Segment&, const Rectangle&))               \
+  CALL(RectangleRectangleDistance, rectangle_rectangle, (const Rectangle&, const Rectangle&))         \
+  CALL(bool, test_sphere_sphere, (const Sphere&, const Sphere&))                                      \
+  CALL(bool, test_sphere_capsule, (const Sphere&, const Capsule&))                                    \
+  CALL(bool, test_sphere_lozenge, (const Sphere&, const Lozenge&))                                    \
+  CALL(bool, test_capsule_capsule, (const Capsule&, const Capsule&))                                  \
+  CALL(bool, test_capsule_lozenge, (const Capsule&, const Lozenge&))                                  \
+  CALL(bool, test_lozenge_lozenge, (const Lozenge&, const Lozenge&))                                  \
+  CALL(Sweep, sweep_sphere_plane, (const Sphere&, const Vec3&, const Plane&, double))                 \
+  CALL(Sweep, sweep_sphere_sphere, (const Sphere&, const Vec3&, const Sphere&, const Vec3&, double))  \
+  CALL(Sweep, sweep_box_plane, (const Box&, const Vec3&, const Plane&, double))
+// clang-format on
