@@ -58,6 +58,25 @@ void print_failure(const Failure& f, const std::string& query, const Lab& lab) {
   }
 }
 
+// What gdb printed about the answerer (--debug), in short.
+void print_debugger(const std::string& output) {
+  const auto at = output.find("Program received signal");
+  if (at == std::string::npos) {
+    std::cout << "  debugger  the code did not crash under gdb\n";
+    return;
+  }
+  // The signal, the line it stopped on, then the backtrace's frames in the lab's own
+  // files (the kit's frames below them only say how the call arrived).
+  std::istringstream in(output.substr(at));
+  std::string line, shown;
+  for (int n = 0; std::getline(in, line) && n < 60; ++n) {
+    const bool frame = line.rfind("#", 0) == 0;
+    if (frame && line.find("/common/protocol/") != std::string::npos) break;
+    if (!frame || line.find("/labs/") != std::string::npos || line.find("/src/") != std::string::npos) shown += line + "\n";
+  }
+  std::cout << "  debugger  " << term::indent(shown, "            ") << "\n";
+}
+
 void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
   const Step& step = *r.step;
   std::cout << "\n" << bold("Lab " + lab.id + ", step " + std::to_string(step.number) + " (" + step.tag + ", " + step.title + "): ") +
@@ -183,6 +202,12 @@ int check(const Paths& paths, const CheckOptions& options) {
   step_options.seed = options.seed;
   step_options.cases = options.cases;
   step_options.replay = options.replay;
+  if (options.debug && options.replay.empty()) {
+    std::cerr << "labkit check: --debug replays one case under gdb; add the --case a failure report printed\n";
+    return 2;
+  }
+  step_options.debugger = options.debug;
+  if (options.debug) step_options.call_seconds = 120;  // gdb reads the program's symbols first
   step_options.limits.seconds = options.timeout;
   step_options.limits.memory_bytes = std::size_t(4) << 30;
   const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
@@ -241,6 +266,7 @@ int check(const Paths& paths, const CheckOptions& options) {
           if (q.failure) {
             std::cout << red("fails") << "\n";
             print_failure(*q.failure, q.query, *lab);
+            if (options.debug) print_debugger(r.run.output);
           } else {
             std::cout << green(q.ambiguous ? "passes (an ambiguous case: any answer is accepted)" : "passes") << "\n";
           }

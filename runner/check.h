@@ -25,6 +25,7 @@ struct CheckOptions {
   int jobs = 0;                   // parallel steps (0: one per core)
   double timeout = 120;           // seconds per step
   std::string implementation = "student";
+  bool debug = false;             // with `replay`: run the code under test under gdb
 };
 
 int check(const Paths& paths, const CheckOptions& options);

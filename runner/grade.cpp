@@ -259,7 +259,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
     return 2;
   }
   const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
-  Context c{paths, options, {}, {}, Sandbox::make(options.sandbox, {paths.source + "/common", paths.build}), {}, {}};
+  Context c{paths, options, {}, {}, Sandbox::make(options.sandbox, {paths.source + "/common", paths.build}, paths.source), {}, {}};
   for (const Lab& lab : manifest.labs) {
     const bool wanted = options.labs.empty() ||
                         std::find_if(options.labs.begin(), options.labs.end(), [&](const std::string& id) {

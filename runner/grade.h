@@ -34,7 +34,7 @@ struct GradeOptions {
   int cases = kGradingCases;  // random cases per query
   double timeout = 60;        // seconds per step
   std::size_t memory_mb = 2048;  // address space per step
-  std::string sandbox = "auto";  // auto, bubblewrap or none
+  std::string sandbox = "auto";  // auto, bubblewrap, landlock or none (sandbox.h)
 };
 
 struct StepGrade {

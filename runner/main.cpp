@@ -3,7 +3,7 @@
 #include "check.h"
 #include "grade.h"
 #include "report.h"
-#include "step.h"
+#include "sandbox.h"
 
 #include <CLI/CLI.hpp>
 
@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   check_command->add_option("labs", check.labs, "Which labs (default: all), e.g. 02");
   check_command->add_option("--step", check.step, "Only this step")->check(CLI::PositiveNumber);
   check_command->add_option("--case", check.replay, "Replay exactly one case, as a failure report prints it");
+  check_command->add_flag("--debug", check.debug, "With --case: run your code under gdb and show where it crashes");
   check_command->add_option("--cases", check.cases, "Random cases per query")->check(CLI::Range(1, 100000000));
   check_command->add_option("--seed", check.seed, "Seed of the random cases (default: the public one)");
   check_command->add_option("--jobs", check.jobs, "Steps run at once (default: one per core)")->check(CLI::PositiveNumber);
@@ -51,8 +52,8 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 100000000));
   grade_command->add_option("--timeout", grade.timeout, "Seconds allowed per step (default 60)")->check(CLI::PositiveNumber);
   grade_command->add_option("--memory", grade.memory_mb, "Megabytes of memory per step (default 2048)")->check(CLI::Range(64, 1 << 20));
-  grade_command->add_option("--sandbox", grade.sandbox, "auto (bubblewrap when it works), bubblewrap or none")
-      ->check(CLI::IsMember({"auto", "bubblewrap", "none"}));
+  grade_command->add_option("--sandbox", grade.sandbox, "auto (bubblewrap, else Landlock), bubblewrap, landlock or none")
+      ->check(CLI::IsMember({"auto", "bubblewrap", "landlock", "none"}));
 
   std::string reports;
   CLI::App* report_command = app.add_subcommand("report", "Sum up the case counts a suite run left behind");

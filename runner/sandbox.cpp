@@ -1,12 +1,18 @@
 #include "sandbox.h"
+#include "landlock.h"
 
 #include <bitset>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <csignal>
 #include <filesystem>
 #include <mutex>
 #include <stdexcept>
 #include <fcntl.h>
 #include <sys/file.h>
+#include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -140,7 +146,48 @@ std::string closed_to_others(const std::vector<std::string>& paths) {
 
 }  // namespace
 
-Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& needed) {
+namespace {
+
+std::string trimmed(std::string text) {
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  return text.substr(0, 300);
+}
+
+std::string self_path() {
+  char self[4096];
+  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+  return n > 0 ? std::string(self, std::size_t(n)) : std::string("labkit-runner");
+}
+
+}  // namespace
+
+// Runs a tiny confined command; "" when it wrote its file, else why not.
+std::string Sandbox::probe(const std::vector<std::string>& needed) const {
+  Limits limits;
+  limits.seconds = 20;
+  const fs::path folder = fs::temp_directory_path() / ("labkit-probe." + std::to_string(getpid()));
+  fs::create_directories(folder);
+  const Confined c = confine({"/bin/sh", "-c", "echo probe > written"}, folder.string(), needed, limits);
+  const Run r = run(c.argv, {}, c.limits, folder.string());
+  const bool works = r.ok() && fs::exists(folder / "written");
+  fs::remove_all(folder);
+  if (works) return "";
+  if (kind_ == Kind::bubblewrap) {
+    // The same without the kit's folders: tells a machine that forbids namespaces from
+    // folders the graded uid cannot read.
+    Sandbox bare = *this;
+    const Confined plain = bare.confine({"bwrap", "--unshare-all", "--ro-bind", "/", "/", "true"}, "", {}, limits);
+    const Run r2 = run(plain.argv, {}, plain.limits);
+    if (!r2.ok())
+      return "bubblewrap cannot make its namespaces here" + std::string(drop_uid_ ? " (as an unprivileged uid)" : "") +
+             ": " + trimmed(r2.output.empty() ? "it failed" : r2.output);
+    return "bubblewrap runs, but not with the kit's folders: " + trimmed(r.output) +
+           (drop_uid_ ? " (are they readable by other users?)" : "");
+  }
+  return trimmed(r.output.empty() ? "the probe did not run" : r.output);
+}
+
+Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& needed, const std::string& kit) {
   Sandbox s;
   s.drop_uid_ = geteuid() == 0;
   // Run as root, the graded code runs under an unprivileged uid of its own: it must be
@@ -153,23 +200,24 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
     s.why_ = "turned off (--sandbox none)";
     return s;
   }
-  // Probe: does bubblewrap run here, under the uid confined runs will have?
-  s.kind_ = Kind::bubblewrap;
-  Limits limits;
-  limits.seconds = 20;
-  const fs::path probe = fs::temp_directory_path() / ("labkit-probe." + std::to_string(getpid()));
-  fs::create_directories(probe);
-  const Confined c = s.confine({"/bin/sh", "-c", "echo probe > written"}, probe.string(), needed, limits);
-  const Run r = run(c.argv, {}, c.limits, probe.string());
-  const bool works = r.ok() && fs::exists(probe / "written");
-  fs::remove_all(probe);
-  if (works) return s;
+  if (mode == "auto" || mode == "bubblewrap") {
+    s.kind_ = Kind::bubblewrap;
+    const std::string why = s.probe(needed);
+    if (why.empty()) return s;
+    s.why_ = why;
+    if (mode == "bubblewrap") throw std::runtime_error(why + " (install bubblewrap, or use --sandbox landlock or none)");
+  }
+  s.kind_ = Kind::landlock;
+  const std::string why = landlock::version() == 0 ? "this kernel has no Landlock" : s.probe(needed);
+  if (why.empty()) return s;
   s.kind_ = Kind::none;
-  s.why_ = r.output.empty() ? "bubblewrap does not run here" : "bubblewrap does not run here: " + r.output.substr(0, 200);
-  if (r.output.find("Permission denied") != std::string::npos && s.drop_uid_)
-    s.why_ += " (the kit's folders must be readable by other users: chmod o+rx on them and their parents)";
-  while (!s.why_.empty() && (s.why_.back() == '\n' || s.why_.back() == ' ')) s.why_.pop_back();
-  if (mode == "bubblewrap") throw std::runtime_error(s.why_ + " (install bubblewrap, or use --sandbox none)");
+  s.why_ += std::string(s.why_.empty() ? "" : "; ") + "Landlock: " + why;
+  if (mode == "landlock") throw std::runtime_error(s.why_);
+  if (fs::exists(fs::path(kit) / "solutions"))
+    throw std::runtime_error("nothing can confine the graded code's files here (" + s.why_ +
+                             "), and this kit holds solutions/: the graded code could read the reference. Grade with "
+                             "the Gradescope package, which holds no reference (./labkit package gradescope; unzip it; "
+                             "setup.sh, then run_autograder), or pass --sandbox none if you trust every submission");
   return s;
 }
 
@@ -177,6 +225,9 @@ std::string Sandbox::description() const {
   std::string uid = drop_uid_ ? ", each run under its own unprivileged uid" : "";
   if (kind_ == Kind::bubblewrap)
     return "bubblewrap: no network, read-only system, only its own scratch folder writable" + uid;
+  if (kind_ == Kind::landlock)
+    return "Landlock (bubblewrap cannot run here: " + why_ +
+           "): reads only the system and its own files, writes only its own scratch folder, no TCP" + uid;
   return "none (" + why_ + "): time, memory, output and file-size limits only" + uid;
 }
 
@@ -198,8 +249,78 @@ Confined Sandbox::confine(const std::vector<std::string>& argv, const std::strin
     if (!writable.empty()) chown_all(writable, uid);
   }
   c.limits = limits;
-  c.argv = kind_ == Kind::bubblewrap ? bubblewrap(argv, writable, readable) : argv;
+  switch (kind_) {
+    case Kind::bubblewrap: c.argv = bubblewrap(argv, writable, readable); break;
+    case Kind::landlock: c.argv = launcher({}, argv, readable, writable); break;
+    case Kind::none: c.argv = argv; break;
+  }
   return c;
+}
+
+std::vector<std::string> launcher(const Limits& limits, const std::vector<std::string>& argv,
+                                  const std::vector<std::string>& readable, const std::string& writable) {
+  std::vector<std::string> out = {self_path(), "confine"};
+  const auto add = [&](const char* name, long long value) {
+    if (value > 0) out.insert(out.end(), {name, std::to_string(value)});
+  };
+  add("--memory", (long long)limits.memory_bytes);
+  add("--file-size", (long long)limits.file_bytes);
+  add("--processes", limits.processes);
+  add("--cpu", limits.cpu_seconds);
+  if (limits.uid >= 0) out.insert(out.end(), {"--uid", std::to_string(limits.uid), "--gid", std::to_string(limits.gid)});
+  for (const std::string& path : readable) out.insert(out.end(), {"--read", path});
+  if (!writable.empty()) out.insert(out.end(), {"--write", writable});
+  out.push_back("--");
+  out.insert(out.end(), argv.begin(), argv.end());
+  return out;
+}
+
+int confine_main(int argc, char** argv) {
+  Limits limits;
+  std::vector<std::string> readable;
+  std::string writable;
+  bool restrict_files = false;
+  int at = 2;  // after "labkit-runner confine"
+  for (; at + 1 < argc && std::string(argv[at]) != "--"; at += 2) {
+    const std::string name = argv[at], value = argv[at + 1];
+    const long long number = std::atoll(value.c_str());
+    if (name == "--memory") limits.memory_bytes = std::size_t(number);
+    else if (name == "--file-size") limits.file_bytes = std::size_t(number);
+    else if (name == "--processes") limits.processes = long(number);
+    else if (name == "--cpu") limits.cpu_seconds = long(number);
+    else if (name == "--uid") limits.uid = int(number);
+    else if (name == "--gid") limits.gid = int(number);
+    else if (name == "--read") readable.push_back(value), restrict_files = true;
+    else if (name == "--write") writable = value, restrict_files = true;
+    else {
+      std::fprintf(stderr, "labkit-runner confine: unknown option %s\n", name.c_str());
+      return 126;
+    }
+  }
+  if (at + 1 >= argc || std::string(argv[at]) != "--") {
+    std::fprintf(stderr, "usage: labkit-runner confine [--memory B] [--file-size B] [--processes N] [--cpu S] "
+                         "[--uid U --gid G] [--read PATH]... [--write PATH] -- PROGRAM [ARGS]\n");
+    return 126;
+  }
+  if (!apply_limits(limits)) return 126;
+  if (restrict_files) {
+    if (!writable.empty()) {
+      setenv("TMPDIR", writable.c_str(), 1);  // the compiler's temporary files: never /tmp
+      setenv("HOME", writable.c_str(), 1);
+    }
+    const std::string why = landlock::restrict_self(readable, writable.empty() ? std::vector<std::string>{}
+                                                                                 : std::vector<std::string>{writable});
+    if (!why.empty()) {
+      std::fprintf(stderr, "labkit-runner confine: %s\n", why.c_str());
+      return 126;
+    }
+  }
+  // Taking a uid clears the parent-death signal: set it again, so that the code under
+  // test ends when the judge's process does, however that ends.
+  prctl(PR_SET_PDEATHSIG, SIGKILL);
+  execvp(argv[at + 1], argv + at + 1);
+  std::fprintf(stderr, "labkit-runner confine: cannot run %s: %s\n", argv[at + 1], std::strerror(errno));
+  return 127;
 }
 
 }  // namespace runner

@@ -1,4 +1,5 @@
-// Confinement for the code a submission brings: its compile, its link, each of its steps.
+// Confinement for the code a submission brings: its compile, its link, and the answerer
+// that runs it during each step (common/protocol/answerer.h).
 //
 // bubblewrap (the default when it works here): each run gets a new mount, pid, network,
 // IPC and UTS namespace. It sees the system (/usr, /etc), a private empty /tmp, and only
@@ -7,13 +8,21 @@
 // one writable folder is its own scratch folder. It cannot reach the network, see or
 // signal other processes, or leave anything running behind it.
 //
-// none: the fallback where bubblewrap cannot run (some containers). Then only the limits
-// and, when the grader runs as root, the unprivileged uid below protect the machine.
+// landlock: where bubblewrap cannot run (a container that forbids namespaces), the run
+// takes away its own access to the file system (runner/landlock.h): it reads the system
+// and the paths it is given, writes its own folder, and nothing else; no TCP, no signals
+// outside itself where the kernel can refuse them. The same files as under bubblewrap.
+//
+// none: no file confinement. `auto` never falls back to it for a kit that holds
+// solutions/ (the graded code could read the reference): it stops and says why. Asked
+// for (--sandbox none), or for the Gradescope package (no reference in it), only the
+// limits and the uid below protect the machine.
 //
 // Either way, when the grader runs as root, each confined run also runs under an
-// unprivileged uid of its own (one per concurrent run, 61000 and up, leased machine-wide so that two graders never share one), which owns its
-// scratch folder and nothing else, with a cap on its processes: it can write nowhere
-// else, and a fork bomb starves only itself.
+// unprivileged uid of its own (one per concurrent run, 61000 and up, leased machine-wide
+// so that two graders never share one), which owns its scratch folder and nothing else,
+// with a cap on its processes: it can write nowhere else, and a fork bomb starves only
+// itself.
 #pragma once
 
 #include "process.h"
@@ -33,11 +42,13 @@ struct Confined {
 
 class Sandbox {
  public:
-  enum class Kind { bubblewrap, none };
+  enum class Kind { bubblewrap, landlock, none };
 
-  // mode: "auto" (bubblewrap when it works, else none), "bubblewrap" (throws when it
-  // cannot run here), "none". `needed`: folders confined runs must be able to see.
-  static Sandbox make(const std::string& mode, const std::vector<std::string>& needed);
+  // mode: "auto" (bubblewrap when it works, else landlock, else none where the kit holds
+  // no solutions/: otherwise it throws, saying why), "bubblewrap" or "landlock" (throws
+  // when it cannot run here), "none". `needed`: folders confined runs must be able to
+  // see. `kit`: the kit's root.
+  static Sandbox make(const std::string& mode, const std::vector<std::string>& needed, const std::string& kit);
 
   Kind kind() const { return kind_; }
   // One line for the instructor: what this run is protected by.
@@ -52,9 +63,18 @@ class Sandbox {
   void interpret(Run& run) const;
 
  private:
+  std::string probe(const std::vector<std::string>& needed) const;
   Kind kind_ = Kind::none;
   bool drop_uid_ = false;
   std::string why_;  // why bubblewrap is not used
 };
+
+// `labkit-runner confine [LIMITS] [--read PATH]... [--write PATH] -- PROGRAM [ARGS]`: takes
+// the limits (and the uid), then Landlock's restriction when paths are given, then runs
+// PROGRAM. The judge's process starts a graded answerer through it: the runner decides
+// the confinement, the judge only starts the command line it is given.
+std::vector<std::string> launcher(const Limits& limits, const std::vector<std::string>& argv,
+                                  const std::vector<std::string>& readable = {}, const std::string& writable = "");
+int confine_main(int argc, char** argv);
 
 }  // namespace runner

@@ -2,16 +2,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include <cerrno>
-#include <csignal>
 #include <cstdio>
-#include <cstring>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <sys/prctl.h>
-#include <unistd.h>
 
 namespace runner {
 
@@ -134,6 +129,8 @@ namespace {
 // sandbox) and under limits, through `labkit-runner confine`.
 std::string answerer_command(const Programs& programs, const StepOptions& options, const std::string& scratch,
                              std::shared_ptr<void>* lease) {
+  if (options.debugger)
+    return nlohmann::json({"gdb", "-q", "-batch", "-ex", "run", "-ex", "bt", "--args", programs.answerer}).dump();
   if (!options.sandbox) return programs.answerer;
   Limits limits;
   limits.memory_bytes = options.limits.memory_bytes;
@@ -142,10 +139,7 @@ std::string answerer_command(const Programs& programs, const StepOptions& option
   const Confined confined = options.sandbox->confine({programs.answerer}, scratch,
                                                      {fs::path(programs.answerer).parent_path().string()}, limits);
   *lease = confined.lease;
-  std::vector<std::string> argv = confine_command(confined.limits);
-  argv.push_back("--");
-  argv.insert(argv.end(), confined.argv.begin(), confined.argv.end());
-  return nlohmann::json(argv).dump();
+  return nlohmann::json(launcher(confined.limits, confined.argv)).dump();
 }
 
 }  // namespace
@@ -222,52 +216,6 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
   }
   r.fraction_passed = fraction_passed(r);
   return r;
-}
-
-std::vector<std::string> confine_command(const Limits& limits) {
-  char self[4096];
-  const ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
-  std::vector<std::string> argv = {n > 0 ? std::string(self, std::size_t(n)) : std::string("labkit-runner"), "confine"};
-  const auto add = [&](const char* name, long long value) {
-    if (value > 0) argv.insert(argv.end(), {name, std::to_string(value)});
-  };
-  add("--memory", (long long)limits.memory_bytes);
-  add("--file-size", (long long)limits.file_bytes);
-  add("--processes", limits.processes);
-  add("--cpu", limits.cpu_seconds);
-  if (limits.uid >= 0) argv.insert(argv.end(), {"--uid", std::to_string(limits.uid), "--gid", std::to_string(limits.gid)});
-  return argv;
-}
-
-int confine_main(int argc, char** argv) {
-  Limits limits;
-  int at = 2;  // after "labkit-runner confine"
-  for (; at + 1 < argc && std::string(argv[at]) != "--"; at += 2) {
-    const std::string name = argv[at];
-    const long long value = std::atoll(argv[at + 1]);
-    if (name == "--memory") limits.memory_bytes = std::size_t(value);
-    else if (name == "--file-size") limits.file_bytes = std::size_t(value);
-    else if (name == "--processes") limits.processes = long(value);
-    else if (name == "--cpu") limits.cpu_seconds = long(value);
-    else if (name == "--uid") limits.uid = int(value);
-    else if (name == "--gid") limits.gid = int(value);
-    else {
-      std::fprintf(stderr, "labkit-runner confine: unknown option %s\n", name.c_str());
-      return 126;
-    }
-  }
-  if (at >= argc || std::string(argv[at]) != "--" || at + 1 >= argc) {
-    std::fprintf(stderr, "usage: labkit-runner confine [--memory B] [--file-size B] [--processes N] [--cpu S] "
-                         "[--uid U --gid G] -- PROGRAM [ARGS]\n");
-    return 126;
-  }
-  if (!apply_limits(limits)) return 126;
-  // Taking a uid clears the parent-death signal: set it again, so that the code under
-  // test ends when the judge's process does, however that ends.
-  prctl(PR_SET_PDEATHSIG, SIGKILL);
-  execvp(argv[at + 1], argv + at + 1);
-  std::fprintf(stderr, "labkit-runner confine: cannot run %s: %s\n", argv[at + 1], std::strerror(errno));
-  return 127;
 }
 
 }  // namespace runner

@@ -77,6 +77,7 @@ struct StepOptions {
   bool describe_only = false; // with `replay`: describe the input, run no code under test
   Limits limits;              // the judge's process; its answerer gets the same memory and file limits
   double call_seconds = 0;   // the time limit of one call of the code under test (0: the harness's 5 s)
+  bool debugger = false;     // the answerer runs under gdb, which prints where it crashed
   const Sandbox* sandbox = nullptr;  // graded runs: the answerer runs confined to a scratch folder of its own
   std::string scratch_parent = "/tmp";  // where each step's scratch folder is made
 };
@@ -89,10 +90,5 @@ struct Programs {
 
 StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, const StepOptions& options);
 
-// `labkit-runner confine LIMITS -- ARGV`: applies the limits (and the uid) and runs ARGV.
-// The judge's process starts a graded answerer through it: the runner decides the
-// confinement, the judge only starts the command line it is given.
-std::vector<std::string> confine_command(const Limits& limits);
-int confine_main(int argc, char** argv);
 
 }  // namespace runner

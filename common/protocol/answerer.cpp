@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fcntl.h>
 #include <poll.h>
+#include <unordered_set>
 #include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -135,7 +136,7 @@ bool Answerer::start() {
     // leaves the copies open across exec.
     const int in = fcntl(requests[0], F_DUPFD_CLOEXEC, 10), out = fcntl(answers[1], F_DUPFD_CLOEXEC, 10);
     if (in < 0 || out < 0 || dup2(in, 3) != 3 || dup2(out, 4) != 4) _exit(127);
-    execve(args[0], args.data(), environment);
+    execvpe(args[0], args.data(), environment);
     const std::string why = std::string("labkit: cannot run the code under test (") + argv_[0] + "): " + strerror(errno) + "\n";
     if (write(2, why.data(), why.size()) < 0) {}
     _exit(127);
@@ -182,6 +183,8 @@ std::string Answerer::ended_how() {
     // A confinement wrapper reports its child's signal N as exit status 128 + N.
     else if (WIFEXITED(status) && WEXITSTATUS(status) > 128 && WEXITSTATUS(status) < 128 + 65)
       how = signal_words(WEXITSTATUS(status) - 128);
+    else if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
+      how = "its program could not be started (" + argv_[0] + ": the reason is in the output above)";
     else if (WIFEXITED(status))
       how = "the process exited with status " + std::to_string(WEXITSTATUS(status)) +
             " in the middle of a call (exit(), quick_exit() or _exit() in the code?)";
@@ -297,9 +300,14 @@ const Response& Answerer::ask(const std::string& request) {
 }
 
 void Answerer::flush() {
+  // Each call once, in the order the cases asked for them: a time-out then falls on the
+  // first case that loops, and the report shows that case.
   std::vector<std::string>& pending = batch.pending;
-  std::sort(pending.begin(), pending.end());
-  pending.erase(std::unique(pending.begin(), pending.end()), pending.end());
+  std::unordered_set<std::string> seen;
+  std::vector<std::string> unique;
+  for (std::string& request : pending)
+    if (seen.insert(request).second) unique.push_back(std::move(request));
+  pending = std::move(unique);
   const std::vector<Response> responses = exchange(pending);
   for (std::size_t i = 0; i < pending.size(); ++i) batch.answers[pending[i]] = responses[i];
   pending.clear();

@@ -24,7 +24,7 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
   switch (response.kind) {
     case Response::Kind::crashed:
       throw Failed("a crash", "your code crashed during this call (" + response.detail +
-                                  "); run the replay command under a debugger to see where");
+                                  "); add --debug to the replay command below to see the line it crashed on");
     case Response::Kind::timed_out:
       throw Failed(kNoAnswer, "your code did not finish this call: " + response.detail +
                                     ". Every loop needs a bound that the header's rules guarantee");
