@@ -212,7 +212,9 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
   const Submission sub = read_submission(path, c.labs, work, c.sandbox);
   g.error = sub.error;
   g.notes = sub.notes;
-  if (sub.files.empty() && sub.error.empty()) g.notes.push_back("the submission holds none of the files a student edits");
+  if (sub.files.empty() && sub.error.empty())
+    g.notes.push_back(sub.notes.empty() ? "the submission holds none of the files a student edits"
+                                        : "no file a student edits could be graded (the notes above say why)");
 
   const std::size_t n = c.labs.size();
   std::vector<std::string> folders(n), binaries(n);

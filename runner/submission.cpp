@@ -1,4 +1,6 @@
 #include "submission.h"
+#include "archive.h"
+#include "untrusted.h"
 
 #include <algorithm>
 #include <filesystem>
@@ -10,7 +12,9 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr std::uintmax_t kLargestStudentFile = 1 << 20;
+constexpr std::uintmax_t kLargestArchive = std::uintmax_t(1) << 30;  // copied whole for the confined unpacker
 constexpr int kMostEntries = 20000;  // a submission folder is walked this far, no further
+constexpr std::size_t kMostRefusalsShown = 10;
 
 bool ends_with(const std::string& s, const std::string& tail) {
   return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
@@ -25,30 +29,6 @@ Format format_of(const std::string& path) {
   if (ends_with(path, ".tar.gz") || ends_with(path, ".tgz")) return Format::tar_gz;
   if (ends_with(path, ".tar")) return Format::tar;
   return Format::unknown;
-}
-
-// Unpacks only the files named like a student file, confined to `into`.
-std::string unpack(const std::string& archive, Format format, const std::vector<std::string>& wanted,
-                   const std::string& into, const Sandbox& sandbox) {
-  std::vector<std::string> argv;
-  if (format == Format::zip) {
-    argv = {"unzip", "-qq", "-o", archive};
-    for (const std::string& w : wanted) argv.push_back("*" + fs::path(w).filename().string());
-    argv.insert(argv.end(), {"-d", into});
-  } else {
-    argv = {"tar", format == Format::tar_gz ? "-xzf" : "-xf", archive, "-C", into, "--no-same-owner",
-            "--no-same-permissions", "--wildcards"};
-    for (const std::string& w : wanted) argv.push_back("*" + fs::path(w).filename().string());
-  }
-  Limits limits;
-  limits.seconds = 60;
-  limits.memory_bytes = std::size_t(1) << 30;
-  limits.file_bytes = 8 << 20;
-  const Confined c = sandbox.confine(argv, into, {fs::absolute(archive).string()}, limits);
-  const Run r = run(c.argv, {}, c.limits, into);
-  // "nothing matched" (unzip 11, tar 2) is an empty submission, not a broken one.
-  if (r.ok() || (r.started && !r.timed_out && r.signal == 0 && (r.exit_code == 11 || r.exit_code == 2))) return "";
-  return "could not unpack " + fs::path(archive).filename().string() + ": " + r.output.substr(0, 300);
 }
 
 // Regular files under `root`, by path relative to it; symlinks are never followed.
@@ -85,6 +65,101 @@ std::string find(const std::vector<std::string>& files, const std::string& wante
   const std::string chosen = shortest(by_name);
   if (by_name.size() > 1) *note = "several files are named " + name + "; graded " + chosen;
   return chosen;
+}
+
+// Takes `file` (`found` in the submission) as the student file `wanted`: copied into the
+// grader's own folder with checks (untrusted.h), so that what is built is what was
+// checked, whatever the file's folder holds later.
+void take(const std::string& wanted, const std::string& found, const std::string& file, const std::string& work,
+          const std::string& note, Submission& s) {
+  const fs::path copy = fs::path(work) / "taken" / wanted;
+  fs::create_directories(copy.parent_path());
+  const std::string why = copy_untrusted_file(file, copy.string(), kLargestStudentFile);
+  if (!why.empty()) {
+    s.notes.push_back(safe_line(found) + " " + why + " and was not graded");
+    return;
+  }
+  s.files[wanted] = copy.string();
+  if (!note.empty()) s.notes.push_back(note);
+  else if (found != wanted) s.notes.push_back("graded " + safe_line(found) + " as " + wanted);
+}
+
+void read_folder(const std::string& root, const std::vector<std::string>& wanted, const std::string& work,
+                 Submission& s) {
+  const std::vector<std::string> files = regular_files(root);
+  for (const std::string& w : wanted) {
+    std::string note;
+    const std::string found = find(files, w, &note);
+    if (!found.empty()) take(w, found, root + "/" + found, work, note, s);
+  }
+}
+
+bool named_like_a_student_file(const ArchiveMember& m, const std::vector<std::string>& wanted) {
+  const std::string name = m.name.substr(m.name.find_last_of("/\\") + 1);
+  return std::any_of(wanted.begin(), wanted.end(), [&](const std::string& w) { return fs::path(w).filename() == name; });
+}
+
+// The files never unpacked, each with why (once, however many copies): those named like a
+// student file first (they may be why a lab is missing), at most ten in all.
+void note_refusals(const ArchiveListing& listing, const std::vector<std::string>& wanted, Submission& s) {
+  std::vector<std::string> refusals;
+  std::size_t named_like_ours = 0;
+  for (const ArchiveMember& m : listing.members) {
+    if (m.refused.empty() || m.kind == ArchiveMember::Kind::folder) continue;
+    const std::string line = "not unpacked: " + safe_line(m.name) + " " + m.refused;
+    if (std::find(refusals.begin(), refusals.end(), line) != refusals.end()) continue;
+    if (named_like_a_student_file(m, wanted)) refusals.insert(refusals.begin() + long(named_like_ours++), line);
+    else refusals.push_back(line);
+  }
+  for (std::size_t i = 0; i < refusals.size() && i < kMostRefusalsShown; ++i) s.notes.push_back(refusals[i]);
+  if (refusals.size() > kMostRefusalsShown)
+    s.notes.push_back("... and " + std::to_string(refusals.size() - kMostRefusalsShown) + " more members not unpacked");
+}
+
+ArchiveFormat archive_format(Format format) {
+  return format == Format::zip ? ArchiveFormat::zip : format == Format::tar_gz ? ArchiveFormat::tar_gz : ArchiveFormat::tar;
+}
+
+// An archive: listed, its unsafe members refused (each named in a note, with why), and
+// each student file found among the others unpacked on its own. One bad member costs
+// only itself.
+void read_archive(const std::string& path, Format format, const std::vector<std::string>& wanted,
+                  const std::string& work, const Sandbox& sandbox, Submission& s) {
+  const ArchiveFormat kind = archive_format(format);
+  // A copy the confined unpacker can read, wherever the original lies, and the grader's own.
+  const std::string archive = work + (kind == ArchiveFormat::zip ? "/submission.zip" : kind == ArchiveFormat::tar_gz ? "/submission.tar.gz" : "/submission.tar");
+  std::error_code e;
+  const std::string why = copy_untrusted_file(fs::canonical(path, e).string(), archive, kLargestArchive);
+  if (!why.empty()) {
+    s.error = "cannot read " + path + ": it " + why;
+    return;
+  }
+  fs::create_directories(work + "/listing");
+  const ArchiveListing listing = list_archive(archive, kind, kLargestStudentFile, work + "/listing", sandbox);
+  if (!listing.error.empty() && listing.members.empty()) {
+    s.error = "could not unpack " + fs::path(path).filename().string() + ": " + listing.error;
+    return;
+  }
+  if (!listing.error.empty()) s.notes.push_back(listing.error);
+
+  std::vector<std::string> paths;  // the members that may be unpacked
+  std::map<std::string, const ArchiveMember*> by_path;
+  for (const ArchiveMember& m : listing.members)
+    if (m.refused.empty() && m.kind == ArchiveMember::Kind::file) {
+      paths.push_back(m.path);
+      by_path[m.path] = &m;
+    }
+  for (std::size_t i = 0; i < wanted.size(); ++i) {
+    std::string note;
+    const std::string found = find(paths, wanted[i], &note);
+    if (found.empty()) continue;
+    const std::string into = work + "/unpacked/" + std::to_string(i);
+    fs::create_directories(into);
+    const UnpackedMember u = unpack_member(archive, kind, *by_path.at(found), kLargestStudentFile, into, sandbox);
+    if (!u.error.empty()) s.notes.push_back("not unpacked: " + safe_line(found) + " " + u.error);
+    else take(wanted[i], found, u.file, work, note, s);
+  }
+  note_refusals(listing, wanted, s);
 }
 
 }  // namespace
@@ -135,46 +210,12 @@ Submission read_submission(const std::string& path, const std::vector<const Lab*
   std::vector<std::string> wanted;
   for (const Lab* lab : labs) wanted.insert(wanted.end(), lab->student_files.begin(), lab->student_files.end());
 
-  fs::path root = path;
   const Format format = format_of(path);
   std::error_code e;
-  if (!fs::exists(path, e)) {
-    s.error = "no such file or folder: " + path;
-    return s;
-  }
-  if (format == Format::unknown) {
-    s.error = path + " is neither a folder nor a .zip, .tar.gz or .tar file";
-    return s;
-  }
-  if (format != Format::folder) {
-    // A copy the confined unpacker can read, wherever the original lies.
-    const fs::path archive = fs::path(work) / ("submission" + fs::path(path).extension().string());
-    fs::copy_file(path, archive, fs::copy_options::overwrite_existing, e);
-    if (e) {
-      s.error = "cannot read " + path + ": " + e.message();
-      return s;
-    }
-    fs::permissions(archive, fs::perms(0644));
-    root = fs::path(work) / "unpacked";
-    fs::create_directories(root);
-    s.error = unpack(archive.string(), format, wanted, root.string(), sandbox);
-    if (!s.error.empty()) return s;
-  }
-
-  const std::vector<std::string> files = regular_files(root);
-  for (const std::string& w : wanted) {
-    std::string note;
-    const std::string found = find(files, w, &note);
-    if (found.empty()) continue;
-    const fs::path file = root / found;
-    if (fs::file_size(file, e) > kLargestStudentFile) {
-      s.notes.push_back(found + " is larger than 1 MB and was not graded");
-      continue;
-    }
-    s.files[w] = file.string();
-    if (!note.empty()) s.notes.push_back(note);
-    else if (found != w) s.notes.push_back("graded " + found + " as " + w);
-  }
+  if (!fs::exists(path, e)) s.error = "no such file or folder: " + path;
+  else if (format == Format::unknown) s.error = path + " is neither a folder nor a .zip, .tar.gz or .tar file";
+  else if (format == Format::folder) read_folder(path, wanted, work, s);
+  else read_archive(path, format, wanted, work, sandbox, s);
   return s;
 }
 

@@ -144,6 +144,15 @@ bool write_all(int fd, const char* data, std::size_t size) {
 
 }  // namespace
 
+std::string safe_line(std::string_view bytes) {
+  std::string out;
+  for (const char c : safe_text(bytes)) {
+    if (c == '\n' || c == '\t') out += as_text(static_cast<unsigned char>(c));
+    else out += c;
+  }
+  return out;
+}
+
 std::string safe_text(std::string_view bytes) {
   std::string out;
   out.reserve(bytes.size());

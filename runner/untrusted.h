@@ -21,6 +21,10 @@ namespace runner {
 // line or reorder one. Newlines and tabs stay; "\r\n" becomes "\n". Idempotent.
 std::string safe_text(std::string_view bytes);
 
+// safe_text for text that must stay on one line (a file or test name in a note): a
+// newline or tab in it is shown as "\x0a" or "\x09" too, so it cannot forge a line.
+std::string safe_line(std::string_view bytes);
+
 // One word for a POSIX shell that stands for `text` exactly: 'it'\''s'.
 std::string shell_quote(std::string_view text);
 
