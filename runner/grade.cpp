@@ -295,6 +295,46 @@ SubmissionGrade ungraded(const std::string& path, const std::string& name, const
   return g;
 }
 
+// The class's own files in OUT, beside a folder per submission.
+const std::vector<std::string> kClassFiles = {"class.csv"};
+
+struct Submissions {
+  std::vector<std::string> paths;
+  bool a_class = false;  // results in OUT/<name>/, and OUT/class.csv
+  std::string error;     // why nothing should be graded
+  std::vector<std::string> classes;  // "DIR holds N submissions", for each class folder
+};
+
+// The submissions named, a class folder standing for each submission in it; an error
+// when a folder could be one submission or a class, or when two results folders would
+// be one (alice.zip and alice.tar.gz: which counts is the instructor's call) or one
+// would be a class file (class.csv.zip).
+Submissions find_submissions(const std::vector<std::string>& named, const std::vector<const Lab*>& labs) {
+  Submissions found;
+  found.a_class = named.size() > 1;
+  for (const std::string& path : named) {
+    const ClassFolder folder = class_members(path, labs);
+    if (!folder.error.empty()) {
+      found.error = folder.error;
+      return found;
+    }
+    if (folder.members.empty()) {
+      found.paths.push_back(path);
+      continue;
+    }
+    found.classes.push_back(safe_line(path) + " holds " + std::to_string(folder.members.size()) +
+                            " submissions: graded one by one");
+    found.paths.insert(found.paths.end(), folder.members.begin(), folder.members.end());
+    found.a_class = true;
+  }
+  const std::string clashes = found.a_class ? name_clashes(found.paths, kClassFiles) : "";
+  if (!clashes.empty())
+    found.error = "each submission's results go to OUT/<name>/, <name> being its file's name without .zip, .tar.gz "
+                  "or .tar; these names cannot be told apart, so nothing was graded (rename the files):\n" +
+                  clashes.substr(0, clashes.size() - 1);
+  return found;
+}
+
 // Removes the scratch root however grading ends.
 struct RemovedAtEnd {
   std::string path;
@@ -346,6 +386,13 @@ int grade(const Paths& paths, const GradeOptions& options) {
     std::cerr << "labkit grade: no lab to grade (the kit has none of those asked for)\n";
     return 2;
   }
+  // Before any work: a class whose names clash is not graded at all.
+  const Submissions found = find_submissions(options.submissions, c.labs);
+  if (!found.error.empty()) {
+    std::cerr << "labkit grade: " << found.error << "\n";
+    return 2;
+  }
+  for (const std::string& line : found.classes) std::cerr << "labkit grade: " << line << "\n";
   for (const Lab* lab : c.labs) c.recipes[lab] = load_recipe(paths, *lab);
   c.run.seed_kind = options.seed.empty() ? "public" : "secret";
   c.run.cases = options.cases;
@@ -362,29 +409,10 @@ int grade(const Paths& paths, const GradeOptions& options) {
   const RemovedAtEnd scratch{c.work};
   fs::permissions(c.work, fs::perms(0711));
 
-  // A folder of submissions (a class) stands for each of them.
-  std::vector<std::string> submissions;
-  bool a_class = options.submissions.size() > 1;
-  for (const std::string& path : options.submissions) {
-    const std::vector<std::string> members = class_members(path, c.labs);
-    if (members.empty()) {
-      submissions.push_back(path);
-      continue;
-    }
-    std::cerr << "labkit grade: " << path << " holds " << members.size() << " submissions: graded one by one\n";
-    submissions.insert(submissions.end(), members.begin(), members.end());
-    a_class = true;
-  }
-
-  // Names, made unique: results/<name>/ per submission.
+  const std::vector<std::string>& submissions = found.paths;
   std::vector<std::string> names;
-  std::map<std::string, int> seen;
-  for (const std::string& path : submissions) {
-    std::string name = submission_name(path);
-    if (++seen[name] > 1) name += "-" + std::to_string(seen[name]);
-    names.push_back(name);
-  }
-  const bool single = !a_class;
+  for (const std::string& path : submissions) names.push_back(submission_name(path));
+  const bool single = !found.a_class;
   const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
   // Several submissions share the processes out one each; one submission uses them all.
   const int outer = std::min<int>(jobs, int(submissions.size()));

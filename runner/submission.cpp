@@ -174,32 +174,78 @@ std::string submission_name(const std::string& path) {
   return name.empty() || name[0] == '.' ? "submission" + name : name;
 }
 
-std::vector<std::string> class_members(const std::string& path, const std::vector<const Lab*>& labs) {
+std::string name_clashes(const std::vector<std::string>& submissions, const std::vector<std::string>& reserved) {
+  std::map<std::string, std::vector<std::string>> by_name;
+  for (const std::string& path : submissions) by_name[submission_name(path)].push_back(path);
+  std::string clashes;
+  for (const auto& [name, paths] : by_name) {
+    const bool taken = std::find(reserved.begin(), reserved.end(), name) != reserved.end();
+    if (paths.size() < 2 && !taken) continue;
+    clashes += "  " + name + (taken ? " (the class's own " + name + ")" : "") + ":";
+    for (const std::string& path : paths) clashes += " " + safe_line(path);
+    clashes += "\n";
+  }
+  return clashes;
+}
+
+namespace {
+
+// A student file at its place in the kit (labs/NN_name/file) under `folder`, or "".
+std::string student_file_in_place(const fs::path& folder, const std::vector<const Lab*>& labs) {
   std::error_code e;
-  if (!fs::is_directory(path, e) || fs::exists(fs::path(path) / "labs", e)) return {};
+  for (const Lab* lab : labs)
+    for (const std::string& f : lab->student_files)
+      if (fs::is_regular_file(fs::symlink_status(folder / f, e))) return f;
+  return "";
+}
+
+std::string listed(const std::vector<std::string>& paths) {
+  std::string text;
+  for (std::size_t i = 0; i < paths.size() && i < 3; ++i) text += (i ? ", " : "") + safe_line(fs::path(paths[i]).filename().string());
+  return text + (paths.size() > 3 ? ", ..." : "");
+}
+
+}  // namespace
+
+ClassFolder class_members(const std::string& path, const std::vector<const Lab*>& labs) {
+  std::error_code e;
+  if (!fs::is_directory(path, e)) return {};
   std::vector<std::string> names;
   for (const Lab* lab : labs)
     for (const std::string& f : lab->student_files) names.push_back(fs::path(f).filename().string());
   const auto is_student_file = [&](const fs::path& p) {
     return std::find(names.begin(), names.end(), p.filename().string()) != names.end();
   };
+  // Its own labs/ (a student file at its place in the kit) makes a folder one student's;
+  // a folder merely named labs may be one student's among a class.
+  const std::string in_place = student_file_in_place(path, labs);
+  const std::string own_labs = in_place.substr(0, in_place.find('/'));
   std::vector<std::string> archives, folders, all_folders;  // folders: those with a student file
   for (const fs::directory_entry& entry : fs::directory_iterator(path, e)) {
     const fs::file_status s = entry.symlink_status(e);
+    const std::string name = entry.path().filename().string();
     if (fs::is_regular_file(s) && is_student_file(entry.path())) return {};  // files uploaded one by one
     if (fs::is_regular_file(s) && format_of(entry.path().string()) != Format::unknown) archives.push_back(entry.path().string());
-    if (!fs::is_directory(s) || entry.path().filename().string()[0] == '.') continue;
+    if (!fs::is_directory(s) || name[0] == '.') continue;
     all_folders.push_back(entry.path().string());
     const std::vector<std::string> inside = regular_files(entry.path());
-    if (std::any_of(inside.begin(), inside.end(), [&](const std::string& f) { return is_student_file(f); }))
+    if (name != own_labs && std::any_of(inside.begin(), inside.end(), [&](const std::string& f) { return is_student_file(f); }))
       folders.push_back(entry.path().string());
   }
   if (archives.empty() && folders.size() < 2) return {};
+  // One student's labs/, and other students' work beside it: which is it? Not guessed.
+  if (!in_place.empty()) {
+    std::vector<std::string> others = archives;
+    others.insert(others.end(), folders.begin(), folders.end());
+    return {{}, safe_line(path) + " holds " + in_place + ", as one student's submission does, and also " + listed(others) +
+                    ", as a class does: grade the submissions it holds by name (labkit grade " + safe_line(path) +
+                    "/*), or move its " + own_labs + "/ into a folder of its own"};
+  }
   // A class: every archive and folder in it is a student's, an empty one too (it scores 0).
   std::vector<std::string> members = archives;
   members.insert(members.end(), all_folders.begin(), all_folders.end());
   std::sort(members.begin(), members.end());
-  return members;
+  return {members, ""};
 }
 
 Submission read_submission(const std::string& path, const std::vector<const Lab*>& labs, const std::string& work,
