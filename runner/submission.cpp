@@ -127,11 +127,12 @@ void read_archive(const std::string& path, Format format, const std::vector<std:
                   const std::string& work, const Sandbox& sandbox, Submission& s) {
   const ArchiveFormat kind = archive_format(format);
   // A copy the confined unpacker can read, wherever the original lies, and the grader's own.
-  const std::string archive = work + (kind == ArchiveFormat::zip ? "/submission.zip" : kind == ArchiveFormat::tar_gz ? "/submission.tar.gz" : "/submission.tar");
+  const std::string archive =
+      work + "/submission" + (kind == ArchiveFormat::zip ? ".zip" : kind == ArchiveFormat::tar ? ".tar" : ".tar.gz");
   std::error_code e;
   const std::string why = copy_untrusted_file(fs::canonical(path, e).string(), archive, kLargestArchive);
   if (!why.empty()) {
-    s.error = "cannot read " + path + ": it " + why;
+    s.error = path + " " + why;
     return;
   }
   fs::create_directories(work + "/listing");

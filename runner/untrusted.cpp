@@ -113,9 +113,9 @@ std::string open_untrusted(const std::string& path, std::uintmax_t max_bytes, De
   // O_NOFOLLOW: a symlink put in its place is refused, never followed. O_NONBLOCK: a
   // FIFO put in its place cannot make open() wait for a writer that never comes.
   file.fd = open(path.c_str(), O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC);
-  if (file.fd < 0) return errno == ELOOP ? "is a symbolic link" : error_text(errno);
+  if (file.fd < 0) return errno == ELOOP ? "is a symbolic link" : "cannot be opened (" + error_text(errno) + ")";
   struct stat st {};
-  if (fstat(file.fd, &st) != 0) return error_text(errno);
+  if (fstat(file.fd, &st) != 0) return "cannot be read (" + error_text(errno) + ")";
   // A FIFO, socket or device could block a read forever, or never end.
   if (!S_ISREG(st.st_mode)) return "is " + kind_of(st.st_mode) + ", not a regular file";
   // Too large as it stands (the reads stop at the cap too, in case it grows meanwhile).
@@ -213,7 +213,7 @@ UntrustedRead read_untrusted_file(const std::string& path, std::uintmax_t max_by
     // One byte past the cap at most: enough to tell that it grew past it.
     const std::uintmax_t room = std::min<std::uintmax_t>(sizeof buffer, max_bytes + 1 - r.text.size());
     const ssize_t n = read_some(file.fd, buffer, std::size_t(room));
-    if (n < 0) return {"", error_text(errno)};
+    if (n < 0) return {"", "cannot be read (" + error_text(errno) + ")"};
     if (n == 0) return r;
     r.text.append(buffer, std::size_t(n));
     if (r.text.size() > max_bytes) return {"", "is larger than " + size_text(max_bytes)};
@@ -225,17 +225,17 @@ std::string copy_untrusted_file(const std::string& from, const std::string& to, 
   const std::string why = open_untrusted(from, max_bytes, in);
   if (!why.empty()) return why;
   out.fd = open(to.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0644);
-  if (out.fd < 0 || fchmod(out.fd, 0644) != 0) return "cannot write " + to + ": " + error_text(errno);
+  if (out.fd < 0 || fchmod(out.fd, 0644) != 0) return "cannot be copied to " + to + " (" + error_text(errno) + ")";
   char buffer[1 << 16];
   std::uintmax_t copied = 0;
   for (;;) {
     const std::uintmax_t room = std::min<std::uintmax_t>(sizeof buffer, max_bytes + 1 - copied);
     const ssize_t n = read_some(in.fd, buffer, std::size_t(room));
-    if (n < 0) return error_text(errno);
+    if (n < 0) return "cannot be read (" + error_text(errno) + ")";
     if (n == 0) return "";
     copied += std::uintmax_t(n);
     if (copied > max_bytes) return "is larger than " + size_text(max_bytes);  // it grew while copied
-    if (!write_all(out.fd, buffer, std::size_t(n))) return "cannot write " + to + ": " + error_text(errno);
+    if (!write_all(out.fd, buffer, std::size_t(n))) return "cannot be copied to " + to + " (" + error_text(errno) + ")";
   }
 }
 

@@ -39,7 +39,8 @@ std::string replay_command(const std::string& verb, const std::string& lab_id, s
 
 struct UntrustedRead {
   std::string text;   // the file's bytes, when error is ""
-  std::string error;  // why it was not read: "is a FIFO, not a regular file", ...
+  std::string error;  // why it was not read, said of the file: "is a FIFO, not a regular
+                      // file", "is larger than 1 MB", "cannot be opened (...)"
 };
 
 // A file the graded code may have replaced or left behind: opened without following a
@@ -48,7 +49,7 @@ struct UntrustedRead {
 UntrustedRead read_untrusted_file(const std::string& path, std::uintmax_t max_bytes);
 
 // The same checks, streamed into a new file `to` (mode 0644) that the grader owns;
-// returns "" or why it was not copied.
+// returns "" or why it was not copied, said of the file as above.
 std::string copy_untrusted_file(const std::string& from, const std::string& to, std::uintmax_t max_bytes);
 
 }  // namespace runner

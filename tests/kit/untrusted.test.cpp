@@ -126,7 +126,7 @@ TEST_CASE("files left behind: only a regular file of a sane size is read", "[kit
   fs::create_symlink(dir / "report.json", dir / "link");
   CHECK(read_untrusted_file((dir / "link").string(), 100).error == "is a symbolic link");
   CHECK(read_untrusted_file(dir.string(), 100).error == "is a folder, not a regular file");
-  CHECK(read_untrusted_file((dir / "absent").string(), 100).error == "No such file or directory");
+  CHECK(read_untrusted_file((dir / "absent").string(), 100).error == "cannot be opened (No such file or directory)");
   CHECK(read_untrusted_file("/dev/zero", 100).error == "is a device, not a regular file");
 
   CHECK(runner::copy_untrusted_file((dir / "report.json").string(), (dir / "copy").string(), 100).empty());
