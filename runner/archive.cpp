@@ -126,6 +126,7 @@ std::optional<ArchiveMember> tar_member(const std::string& line) {
   std::istringstream words(line);
   std::string mode, owner, size;
   const std::size_t quote = line.find('"');
+  // Not a member's line (too few words, no quoted name, a name cut short): not listed.
   if (!(words >> mode >> owner >> size) || quote == std::string::npos) return std::nullopt;
   const std::optional<std::string> name = unquote(line, quote);
   if (!name) return std::nullopt;

@@ -75,7 +75,7 @@ void take(const std::string& wanted, const std::string& found, const std::string
   const fs::path copy = fs::path(work) / "taken" / wanted;
   fs::create_directories(copy.parent_path());
   const std::string why = copy_untrusted_file(file, copy.string(), kLargestStudentFile);
-  if (!why.empty()) {
+  if (!why.empty()) {  // a FIFO, a link or a file too large to be a student's: not built
     s.notes.push_back(safe_line(found) + " " + why + " and was not graded");
     return;
   }
@@ -131,13 +131,13 @@ void read_archive(const std::string& path, Format format, const std::vector<std:
       work + "/submission" + (kind == ArchiveFormat::zip ? ".zip" : kind == ArchiveFormat::tar ? ".tar" : ".tar.gz");
   std::error_code e;
   const std::string why = copy_untrusted_file(fs::canonical(path, e).string(), archive, kLargestArchive);
-  if (!why.empty()) {
+  if (!why.empty()) {  // not a regular file, or over 1 GB: nothing in it is read
     s.error = path + " " + why;
     return;
   }
   fs::create_directories(work + "/listing");
   const ArchiveListing listing = list_archive(archive, kind, kLargestStudentFile, work + "/listing", sandbox);
-  if (!listing.error.empty() && listing.members.empty()) {
+  if (!listing.error.empty() && listing.members.empty()) {  // not an archive, or one without a readable member
     s.error = "could not unpack " + fs::path(path).filename().string() + ": " + listing.error;
     return;
   }

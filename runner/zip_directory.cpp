@@ -58,12 +58,14 @@ Directory find_directory(std::ifstream& in, std::uint64_t file_size) {
   const std::uint64_t span = std::min<std::uint64_t>(file_size, 22 + 65535);
   const std::string tail = read_at(in, file_size - span, span);
   for (std::size_t at = tail.size() >= 22 ? tail.size() - 21 : 0; at-- > 0;) {
+    // Not the record, or those bytes within a comment or data that merely look like it.
     if (field(tail, at, 4) != 0x06054b50 || at + 22 + field(tail, at + 20, 2) > tail.size()) continue;
     // Split archives need their other parts, which a submission does not have.
     if (field(tail, at + 4, 2) != 0 || field(tail, at + 6, 2) != 0) throw BadZip("is split across several files");
     Directory d{field(tail, at + 10, 2), field(tail, at + 12, 4), field(tail, at + 16, 4), 0};
     const std::uint64_t end_record = file_size - span + at;
     if (d.entries == 0xFFFF || d.size == 0xFFFFFFFF || d.offset == 0xFFFFFFFF) return zip64_directory(in, end_record);
+    // Offsets that point past the record: not a directory this file holds.
     if (d.size + d.offset > end_record) throw BadZip("has its central directory past its end");
     d.shift = end_record - d.size - d.offset;
     d.offset += d.shift;
