@@ -3,6 +3,7 @@
 #include "check.h"
 #include "grade.h"
 #include "report.h"
+#include "untrusted.h"
 
 #include <CLI/CLI.hpp>
 
@@ -76,7 +77,7 @@ int main(int argc, char** argv) {
     }
     if (report_command->parsed()) return runner::report(reports.empty() ? paths.build + "/reports" : reports);
   } catch (const std::exception& e) {
-    std::cerr << "labkit: " << e.what() << "\n";
+    std::cerr << "labkit: " << runner::safe_text(e.what()) << "\n";  // it may name a student's file
     return 2;
   }
   return 0;
