@@ -298,43 +298,6 @@ SubmissionGrade ungraded(const std::string& path, const std::string& name, const
 // The class's own files in OUT, beside a folder per submission.
 const std::vector<std::string> kClassFiles = {"class.csv"};
 
-struct Submissions {
-  std::vector<std::string> paths;
-  bool a_class = false;  // results in OUT/<name>/, and OUT/class.csv
-  std::string error;     // why nothing should be graded
-  std::vector<std::string> classes;  // "DIR holds N submissions", for each class folder
-};
-
-// The submissions named, a class folder standing for each submission in it; an error
-// when a folder could be one submission or a class, or when two results folders would
-// be one (alice.zip and alice.tar.gz: which counts is the instructor's call) or one
-// would be a class file (class.csv.zip).
-Submissions find_submissions(const std::vector<std::string>& named, const std::vector<const Lab*>& labs) {
-  Submissions found;
-  found.a_class = named.size() > 1;
-  for (const std::string& path : named) {
-    const ClassFolder folder = class_members(path, labs);
-    if (!folder.error.empty()) {
-      found.error = folder.error;
-      return found;
-    }
-    if (folder.members.empty()) {
-      found.paths.push_back(path);
-      continue;
-    }
-    found.classes.push_back(safe_line(path) + " holds " + std::to_string(folder.members.size()) +
-                            " submissions: graded one by one");
-    found.paths.insert(found.paths.end(), folder.members.begin(), folder.members.end());
-    found.a_class = true;
-  }
-  const std::string clashes = found.a_class ? name_clashes(found.paths, kClassFiles) : "";
-  if (!clashes.empty())
-    found.error = "each submission's results go to OUT/<name>/, <name> being its file's name without .zip, .tar.gz "
-                  "or .tar; these names cannot be told apart, so nothing was graded (rename the files):\n" +
-                  clashes.substr(0, clashes.size() - 1);
-  return found;
-}
-
 // Removes the scratch root however grading ends.
 struct RemovedAtEnd {
   std::string path;
@@ -387,7 +350,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
     return 2;
   }
   // Before any work: a class whose names clash is not graded at all.
-  const Submissions found = find_submissions(options.submissions, c.labs);
+  const Submissions found = find_submissions(options.submissions, c.labs, kClassFiles);
   if (!found.error.empty()) {
     std::cerr << "labkit grade: " << found.error << "\n";
     return 2;

@@ -249,6 +249,33 @@ ClassFolder class_members(const std::string& path, const std::vector<const Lab*>
   return {members, ""};
 }
 
+Submissions find_submissions(const std::vector<std::string>& named, const std::vector<const Lab*>& labs,
+                             const std::vector<std::string>& class_files) {
+  Submissions found;
+  found.a_class = named.size() > 1;
+  for (const std::string& path : named) {
+    const ClassFolder folder = class_members(path, labs);
+    if (!folder.error.empty()) {
+      found.error = folder.error;
+      return found;
+    }
+    if (folder.members.empty()) {
+      found.paths.push_back(path);
+      continue;
+    }
+    found.classes.push_back(safe_line(path) + " holds " + std::to_string(folder.members.size()) +
+                            " submissions: graded one by one");
+    found.paths.insert(found.paths.end(), folder.members.begin(), folder.members.end());
+    found.a_class = true;
+  }
+  const std::string clashes = found.a_class ? name_clashes(found.paths, class_files) : "";
+  if (!clashes.empty())
+    found.error = "each submission's results go to OUT/<name>/, <name> being its file's name without .zip, .tar.gz "
+                  "or .tar; these names cannot be told apart, so nothing was graded (rename the files):\n" +
+                  clashes.substr(0, clashes.size() - 1);
+  return found;
+}
+
 Submission read_submission(const std::string& path, const std::vector<const Lab*>& labs, const std::string& work,
                            const Sandbox& sandbox) {
   Submission s;

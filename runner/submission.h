@@ -45,6 +45,20 @@ struct ClassFolder {
 // unless it holds a student file at its place). Both at once is an error.
 ClassFolder class_members(const std::string& path, const std::vector<const Lab*>& labs);
 
+struct Submissions {
+  std::vector<std::string> paths;
+  bool a_class = false;  // results in OUT/<name>/, and the class's own files in OUT
+  std::string error;     // why nothing should be graded
+  std::vector<std::string> classes;  // "DIR holds N submissions", for each class folder
+};
+
+// The submissions named, a class folder standing for each submission in it; an error
+// when a folder could be one submission or a class, or when two results folders would
+// be one (alice.zip and alice.tar.gz: which counts is the instructor's call) or one
+// would be a class file (`class_files`: class.csv.zip).
+Submissions find_submissions(const std::vector<std::string>& named, const std::vector<const Lab*>& labs,
+                             const std::vector<std::string>& class_files);
+
 // Finds the student files of `labs` in the submission at `path`; an archive is unpacked
 // (only those files) into `work`, confined by `sandbox`.
 Submission read_submission(const std::string& path, const std::vector<const Lab*>& labs, const std::string& work,
