@@ -1,5 +1,6 @@
 #include "check.h"
 #include "terminal.h"
+#include "untrusted.h"
 
 #include <algorithm>
 #include <atomic>
@@ -45,17 +46,29 @@ std::string counts(const StepResult& r) {
   return dim(s);
 }
 
-void print_failure(const Failure& f, const std::string& query, const Lab& lab) {
-  std::cout << "  query     " << query << (f.title.empty() ? "" : ", " + f.title);
-  if (f.shrinks > 0) std::cout << " (shrunk " << f.shrinks << " times)";
-  std::cout << "\n  input     " << term::indent(f.input, "            ") << "\n";
-  std::cout << "  expected  " << term::indent(f.expected, "            ") << "\n";
-  std::cout << "  got       " << term::indent(f.got, "            ") << "\n";
-  std::cout << "  why       " << term::indent(f.why, "            ") << "\n";
-  if (!f.replay.empty()) {
-    std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case '" + f.replay + "'") << "\n";
-    std::cout << "  see it    ./labkit view " << lab.id << " --case '" << f.replay << "'\n";
+// A report's text, as the terminal may show it (the code under test wrote it).
+std::string shown(const std::string& text) { return term::indent(safe_text(text), "            "); }
+
+// The commands that replay a case, each one shell word per argument; none for a token
+// the harness never writes (the code under test printed or wrote it).
+void print_replay(const Lab& lab, const std::string& token) {
+  const std::string check = replay_command("check", lab.id, token);
+  if (check.empty()) {
+    std::cout << "  replay    none (the case reported is not a replay token the kit writes)\n";
+    return;
   }
+  std::cout << "  replay    " << bold(check) << "\n";
+  std::cout << "  see it    " << replay_command("view", lab.id, token) << "\n";
+}
+
+void print_failure(const Failure& f, const std::string& query, const Lab& lab) {
+  std::cout << "  query     " << safe_text(query) << (f.title.empty() ? "" : ", " + safe_text(f.title));
+  if (f.shrinks > 0) std::cout << " (shrunk " << f.shrinks << " times)";
+  std::cout << "\n  input     " << shown(f.input) << "\n";
+  std::cout << "  expected  " << shown(f.expected) << "\n";
+  std::cout << "  got       " << shown(f.got) << "\n";
+  std::cout << "  why       " << shown(f.why) << "\n";
+  if (!f.replay.empty()) print_replay(lab, f.replay);
 }
 
 // What gdb printed about the answerer (--debug), in short.
@@ -68,13 +81,13 @@ void print_debugger(const std::string& output) {
   // The signal, the line it stopped on, then the backtrace's frames in the lab's own
   // files (the kit's frames below them only say how the call arrived).
   std::istringstream in(output.substr(at));
-  std::string line, shown;
+  std::string line, lines;
   for (int n = 0; std::getline(in, line) && n < 60; ++n) {
     const bool frame = line.rfind("#", 0) == 0;
     if (frame && line.find("/common/protocol/") != std::string::npos) break;
-    if (!frame || line.find("/labs/") != std::string::npos || line.find("/src/") != std::string::npos) shown += line + "\n";
+    if (!frame || line.find("/labs/") != std::string::npos || line.find("/src/") != std::string::npos) lines += line + "\n";
   }
-  std::cout << "  debugger  " << term::indent(shown, "            ") << "\n";
+  std::cout << "  debugger  " << shown(lines) << "\n";
 }
 
 void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
@@ -83,20 +96,20 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
                          coloured_status(r.status)
             << "\n";
   if (abnormal(r.status)) {
-    std::cout << "  what      " << r.detail << "\n";
+    std::cout << "  what      " << safe_text(r.detail) << "\n";
     if (!r.inflight.empty()) {
       const Programs programs{paths.build + "/" + lab.judge_binary(), paths.build + "/" + lab.answerer("student")};
-      std::cout << "  on input  " << term::indent(describe_token(programs, lab, r.inflight), "            ") << "\n";
-      std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case '" + r.inflight + "'") << "\n";
-      std::cout << "  see it    ./labkit view " << lab.id << " --case '" << r.inflight << "'\n";
+      // Its output may have faked the in-flight marker: only a real token is described.
+      if (is_replay_token(r.inflight)) std::cout << "  on input  " << shown(describe_token(programs, lab, r.inflight)) << "\n";
+      print_replay(lab, r.inflight);
     }
     const std::string tail = r.run.output.size() > 1200 ? r.run.output.substr(r.run.output.size() - 1200) : r.run.output;
-    if (!tail.empty()) std::cout << dim("  its last output:\n    " + term::indent(tail, "    ")) << "\n";
+    if (!tail.empty()) std::cout << dim("  its last output:\n    " + term::indent(safe_text(tail), "    ")) << "\n";
     return;
   }
   for (const QueryResult& q : r.queries) {
     if (!q.error.empty()) {
-      std::cout << "  " << q.query << ": " << q.error << "\n";
+      std::cout << "  " << safe_text(q.query) << ": " << safe_text(q.error) << "\n";
       return;
     }
     if (q.failure && q.not_implemented.empty()) {
@@ -106,7 +119,7 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
   }
   for (const TestCaseResult& t : r.test_cases)
     if (!t.passed && !t.failures.empty()) {
-      std::cout << "  test      " << t.name << "\n  failure   " << term::indent(t.failures.front(), "            ") << "\n";
+      std::cout << "  test      " << safe_text(t.name) << "\n  failure   " << shown(t.failures.front()) << "\n";
       return;
     }
   if (r.status == Status::no_tests)
@@ -187,15 +200,10 @@ int check(const Paths& paths, const CheckOptions& options) {
     std::cerr << "labkit check: --case replays one lab's case; name the lab, e.g. ./labkit check 02 --case '...'\n";
     return 2;
   }
-  if (!options.replay.empty()) {
-    const auto colon = options.replay.find(':');
-    const bool numbers = colon != std::string::npos &&
-                         options.replay.find_first_not_of("0123456789.,-+eEinfa", colon + 1) == std::string::npos;
-    if (colon == std::string::npos || colon == 0 || !numbers) {
-      std::cerr << "labkit check: a case looks like 'query:1,2,3' (copy it from a failure report); got '"
-                << options.replay.substr(0, 60) << "'\n";
-      return 2;
-    }
+  if (!options.replay.empty() && !is_replay_token(options.replay)) {
+    std::cerr << "labkit check: a case looks like 'query:1,2,3' (copy it from a failure report); got '"
+              << safe_text(options.replay.substr(0, 60)) << "'\n";
+    return 2;
   }
 
   StepOptions step_options;
@@ -246,7 +254,7 @@ int check(const Paths& paths, const CheckOptions& options) {
     if (!replaying || !built) std::cout << "\n" << bold("Lab " + lab->id + "  " + lab->title) << dim("   " + lab->handout()) << "\n";
     if (!built) {
       std::cout << "  " << red("does not compile") << ": every step of this lab fails until it does.\n\n    "
-                << term::indent(errors, "    ") << "\n";
+                << term::indent(safe_text(errors), "    ") << "\n";
       total += int(steps.size());
       if (next_step.empty()) next_step = "make lab " + lab->id + " compile (the errors above)";
       continue;
@@ -258,11 +266,11 @@ int check(const Paths& paths, const CheckOptions& options) {
       for (const StepResult& r : results)
         for (const QueryResult& q : r.queries) {
           if (!q.error.empty()) {
-            std::cerr << "labkit check: " << q.error << "\n";
+            std::cerr << "labkit check: " << safe_text(q.error) << "\n";
             return 2;
           }
           if (q.cases == 0) continue;
-          std::cout << "  replayed " << q.query << " (step " << r.step->number << ", " << r.step->tag << "): ";
+          std::cout << "  replayed " << safe_text(q.query) << " (step " << r.step->number << ", " << r.step->tag << "): ";
           if (q.failure) {
             std::cout << red("fails") << "\n";
             print_failure(*q.failure, q.query, *lab);

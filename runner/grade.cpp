@@ -4,6 +4,7 @@
 #include "sandbox.h"
 #include "submission.h"
 #include "terminal.h"
+#include "untrusted.h"
 
 #include <algorithm>
 #include <atomic>
@@ -46,7 +47,36 @@ std::string redact(std::string text, const std::string& secret) {
   return text;
 }
 
-std::string tail(const std::string& text, std::size_t n) { return text.size() > n ? "..." + text.substr(text.size() - n) : text; }
+// Everything a student controls in a grade, as it may be written and shown: never the
+// secret (even if the code under test found it), and safe text (untrusted.h). The one
+// place this happens: every result file and the terminal get a grade through it.
+void make_presentable(SubmissionGrade& g, const std::string& secret) {
+  const auto presentable = [&](std::string& text) { text = safe_text(redact(text, secret)); };
+  presentable(g.name);
+  presentable(g.source);
+  presentable(g.error);
+  for (std::string& note : g.notes) presentable(note);
+  for (LabGrade& l : g.labs) {
+    presentable(l.build_output);
+    for (StepGrade& s : l.steps) presentable(s.feedback);
+  }
+}
+
+// The last `n` bytes of `text`, from the start of a character: a tail cut in the middle
+// of one would begin with a broken character.
+std::string tail(const std::string& text, std::size_t n) {
+  if (text.size() <= n) return text;
+  std::size_t from = text.size() - n;
+  for (int k = 0; k < 3 && from < text.size() && (static_cast<unsigned char>(text[from]) & 0xC0) == 0x80; ++k) ++from;
+  return "..." + text.substr(from);
+}
+
+// The command that replays a case, or why there is none: a token the harness never
+// writes (the code under test printed or wrote it) never becomes a command.
+std::string replay_line(const Lab& lab, const std::string& token) {
+  const std::string command = replay_command("check", lab.id, token);
+  return "replay    " + (command.empty() ? "none (the case it reported is not a replay token the kit writes)" : command) + "\n";
+}
 
 // What the student reads about one step: the verdict, the counts, the first failure and
 // how to replay it with the public kit.
@@ -63,7 +93,9 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
   out << "\n";
   if (abnormal(r.status)) {
     out << "what      " << r.detail << "\n";
-    if (!r.inflight.empty()) {
+    if (!r.inflight.empty() && !is_replay_token(r.inflight)) {
+      out << replay_line(lab, r.inflight);  // its output faked the marker: no input to describe
+    } else if (!r.inflight.empty()) {
       StepOptions describe;
       describe.replay = r.inflight;
       describe.describe_only = true;
@@ -75,7 +107,7 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
       for (const QueryResult& q : d.queries)
         if (q.failure && !q.failure->input.empty()) input = q.failure->input;
       out << "on input  " << term::indent(input, "          ") << "\n";
-      out << "replay    ./labkit check " << lab.id << " --case '" << r.inflight << "'\n";
+      out << replay_line(lab, r.inflight);
     }
     if (r.status == Status::crashed || r.status == Status::exited_early || r.status == Status::out_of_memory) {
       const std::string last = tail(r.run.output, 800);
@@ -96,7 +128,7 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
       out << "expected  " << term::indent(f.expected, "          ") << "\n";
       out << "got       " << term::indent(f.got, "          ") << "\n";
       out << "why       " << term::indent(f.why, "          ") << "\n";
-      if (!f.replay.empty()) out << "replay    ./labkit check " << lab.id << " --case '" << f.replay << "'\n";
+      if (!f.replay.empty()) out << replay_line(lab, f.replay);
       break;
     }
   }
@@ -144,7 +176,7 @@ LabGrade build_one_lab(const Lab& lab, const Submission& sub, const std::string&
   g.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!build.ok) {
     g.state = LabGrade::State::not_built;
-    g.build_output = redact(build.errors, c.options.seed);
+    g.build_output = build.errors;
     for (StepGrade& s : g.steps) s.feedback = "does not compile: every step of this lab scores 0 until it does.";
     return g;
   }
@@ -180,7 +212,9 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
   const Submission sub = read_submission(path, c.labs, work, c.sandbox);
   g.error = sub.error;
   g.notes = sub.notes;
-  if (sub.files.empty() && sub.error.empty()) g.notes.push_back("the submission holds none of the files a student edits");
+  if (sub.files.empty() && sub.error.empty())
+    g.notes.push_back(sub.notes.empty() ? "the submission holds none of the files a student edits"
+                                        : "no file a student edits could be graded (the notes above say why)");
 
   const std::size_t n = c.labs.size();
   std::vector<std::string> folders(n), binaries(n);
@@ -223,7 +257,7 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
     s.score = step_score(*s.step, r);
     s.ambiguous = r.ambiguous;
     for (const QueryResult& q : r.queries) s.cases += q.cases;
-    s.feedback = redact(feedback(r, lab, programs, c), c.options.seed);
+    s.feedback = feedback(r, lab, programs, c);
   });
 
   for (std::size_t i = 0; i < n; ++i) {
@@ -236,6 +270,43 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
   g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return g;
 }
+
+// A grade of 0 for a submission the grader itself could not grade (a file system error),
+// with the same labs as every other, so that class.csv keeps its columns.
+SubmissionGrade ungraded(const std::string& path, const std::string& name, const std::string& why, const Context& c) {
+  SubmissionGrade g;
+  g.name = name;
+  g.source = path;
+  g.error = why;
+  for (const Lab* lab : c.labs) {
+    LabGrade l;
+    l.lab = lab;
+    l.state = LabGrade::State::not_built;
+    l.build_output = why;
+    for (const Step& step : lab->steps) {
+      StepGrade s;
+      s.step = &step;
+      s.feedback = why;
+      l.steps.push_back(s);
+      l.max_score += step.points;
+    }
+    g.max_score += l.max_score;
+    g.labs.push_back(l);
+  }
+  return g;
+}
+
+// The class's own files in OUT, beside a folder per submission.
+const std::vector<std::string> kClassFiles = {"class.csv"};
+
+// Removes the scratch root however grading ends.
+struct RemovedAtEnd {
+  std::string path;
+  ~RemovedAtEnd() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+};
 
 void write_file(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
@@ -279,6 +350,13 @@ int grade(const Paths& paths, const GradeOptions& options) {
     std::cerr << "labkit grade: no lab to grade (the kit has none of those asked for)\n";
     return 2;
   }
+  // Before any work: a class whose names clash is not graded at all.
+  const Submissions found = find_submissions(options.submissions, c.labs, kClassFiles);
+  if (!found.error.empty()) {
+    std::cerr << "labkit grade: " << found.error << "\n";
+    return 2;
+  }
+  for (const std::string& line : found.classes) std::cerr << "labkit grade: " << line << "\n";
   for (const Lab* lab : c.labs) c.recipes[lab] = load_recipe(paths, *lab);
   c.run.seed_kind = options.seed.empty() ? "public" : "secret";
   c.run.cases = options.cases;
@@ -292,31 +370,13 @@ int grade(const Paths& paths, const GradeOptions& options) {
   char work_template[] = "/tmp/labkit-grade.XXXXXX";
   if (!mkdtemp(work_template)) throw std::runtime_error("cannot make a scratch folder in /tmp");
   c.work = work_template;
+  const RemovedAtEnd scratch{c.work};
   fs::permissions(c.work, fs::perms(0711));
 
-  // A folder of submissions (a class) stands for each of them.
-  std::vector<std::string> submissions;
-  bool a_class = options.submissions.size() > 1;
-  for (const std::string& path : options.submissions) {
-    const std::vector<std::string> members = class_members(path, c.labs);
-    if (members.empty()) {
-      submissions.push_back(path);
-      continue;
-    }
-    std::cerr << "labkit grade: " << path << " holds " << members.size() << " submissions: graded one by one\n";
-    submissions.insert(submissions.end(), members.begin(), members.end());
-    a_class = true;
-  }
-
-  // Names, made unique: results/<name>/ per submission.
+  const std::vector<std::string>& submissions = found.paths;
   std::vector<std::string> names;
-  std::map<std::string, int> seen;
-  for (const std::string& path : submissions) {
-    std::string name = submission_name(path);
-    if (++seen[name] > 1) name += "-" + std::to_string(seen[name]);
-    names.push_back(name);
-  }
-  const bool single = !a_class;
+  for (const std::string& path : submissions) names.push_back(submission_name(path));
+  const bool single = !found.a_class;
   const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
   // Several submissions share the processes out one each; one submission uses them all.
   const int outer = std::min<int>(jobs, int(submissions.size()));
@@ -324,16 +384,29 @@ int grade(const Paths& paths, const GradeOptions& options) {
 
   std::vector<SubmissionGrade> grades(submissions.size());
   std::mutex print;
+  std::atomic<bool> trouble{false};  // the grader's own: a submission it could not grade, results it could not write
   const auto start = std::chrono::steady_clock::now();
+  // One submission's trouble is its own: an exception here would end every grade at once.
   parallel_for(submissions.size(), outer, [&](std::size_t i) {
-    grades[i] = grade_one(submissions[i], names[i], c.work + "/" + std::to_string(i), inner, c);
+    try {
+      grades[i] = grade_one(submissions[i], names[i], c.work + "/" + std::to_string(i), inner, c);
+    } catch (const std::exception& e) {
+      grades[i] = ungraded(submissions[i], names[i], std::string("the grader could not grade it: ") + e.what(), c);
+      trouble = true;
+    }
+    make_presentable(grades[i], options.seed);
     const fs::path folder = single ? fs::path(options.out) : fs::path(options.out) / names[i];
-    write_results(grades[i], folder, c);
+    std::string unwritten;
+    try {
+      write_results(grades[i], folder, c);
+    } catch (const std::exception& e) {
+      unwritten = e.what();
+      trouble = true;
+    }
     std::lock_guard<std::mutex> lock(print);
+    if (!unwritten.empty()) std::cerr << "labkit grade: " << safe_text(unwritten) << "\n";
     std::cout << (single ? "" : "\n") << table(grades[i], c.run) << std::flush;
   });
-  std::error_code ignored;
-  fs::remove_all(c.work, ignored);
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!single) {
@@ -343,7 +416,8 @@ int grade(const Paths& paths, const GradeOptions& options) {
   } else {
     std::cout << "\nResults: " << (fs::path(options.out) / "results.json").string() << ", junit.xml, report.txt, steps.tsv\n";
   }
-  return 0;
+  if (trouble) std::cerr << "labkit grade: the grader had trouble of its own (above, or in a submission's results)\n";
+  return trouble ? 1 : 0;
 }
 
 }  // namespace runner

@@ -4,6 +4,7 @@
 #include "grade.h"
 #include "report.h"
 #include "sandbox.h"
+#include "untrusted.h"
 
 #include <CLI/CLI.hpp>
 
@@ -81,7 +82,7 @@ int main(int argc, char** argv) {
     }
     if (report_command->parsed()) return runner::report(reports.empty() ? paths.build + "/reports" : reports);
   } catch (const std::exception& e) {
-    std::cerr << "labkit: " << e.what() << "\n";
+    std::cerr << "labkit: " << runner::safe_text(e.what()) << "\n";  // it may name a student's file
     return 2;
   }
   return 0;

@@ -1,4 +1,5 @@
 #include "step.h"
+#include "untrusted.h"
 
 #include <nlohmann/json.hpp>
 
@@ -35,15 +36,15 @@ bool abnormal(Status s) {
 
 namespace {
 
-void read_report(const fs::path& path, StepResult& r) {
-  std::ifstream in(path);
-  if (!in) return;
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception&) {
-    return;  // cut short by a crash: what the run printed says more
-  }
+// The harness's report, when the step left one. The code under test can write there too:
+// a FIFO, a link or a flood is no report (read_untrusted_file), and so is JSON cut short
+// or of another shape (the catch also covers every field read below, which throws when
+// a field has another type than the harness writes).
+void read_report(const fs::path& path, StepResult& r) try {
+  constexpr std::uintmax_t kLargestReport = std::uintmax_t(64) << 20;  // a graded step's file cap
+  const UntrustedRead file = read_untrusted_file(path.string(), kLargestReport);
+  if (!file.error.empty()) return;
+  const nlohmann::json j = nlohmann::json::parse(file.text);
   r.finished = j.value("finished", false);
   for (const auto& t : j.value("test_cases", nlohmann::json::array()))
     r.test_cases.push_back({t.value("name", ""), t.value("passed", false),
@@ -66,6 +67,11 @@ void read_report(const fs::path& path, StepResult& r) {
     }
     r.queries.push_back(qr);
   }
+} catch (const nlohmann::json::exception&) {
+  // Cut short by a crash, or not the harness's: what the run printed says more.
+  r.finished = false;
+  r.test_cases.clear();
+  r.queries.clear();
 }
 
 std::string inflight_token(const std::string& output) {

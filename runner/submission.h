@@ -23,14 +23,41 @@ struct Submission {
   std::vector<std::string> notes;  // what the instructor should know (a file found by its name only, ...)
 };
 
-// The name a submission's results are filed under.
+// The name a submission's results are filed under: its file or folder name without
+// .zip, .tar.gz or .tar, with characters other than letters, digits, '-', '_' and '.'
+// as '_'. Two submissions can have the same name (alice.zip, alice.tar.gz).
 std::string submission_name(const std::string& path);
 
+// The names that cannot be told apart: shared by two submissions or more, or the name of
+// one of the class's own files (`reserved`: class.csv). One line per name, with the paths;
+// "" when every submission has a name of its own.
+std::string name_clashes(const std::vector<std::string>& submissions, const std::vector<std::string>& reserved);
+
+struct ClassFolder {
+  std::vector<std::string> members;  // sorted; empty when the folder is one submission
+  std::string error;                 // it looks like both: nothing should be graded
+};
+
 // The submissions a folder holds when it is a class's folder (one sub-folder, .zip or
-// .tar.gz per student), sorted; empty when `path` is one submission. A folder is one
-// submission when a student file lies at its top or under its labs/; it is a class when
-// it holds archives, or two or more sub-folders with a student file in them.
-std::vector<std::string> class_members(const std::string& path, const std::vector<const Lab*>& labs);
+// .tar.gz per student). A folder is one submission when a student file lies at its top,
+// or at its place in the kit (labs/NN_name/file); it is a class when it holds archives,
+// or two or more sub-folders with a student file in them (a sub-folder named labs too,
+// unless it holds a student file at its place). Both at once is an error.
+ClassFolder class_members(const std::string& path, const std::vector<const Lab*>& labs);
+
+struct Submissions {
+  std::vector<std::string> paths;
+  bool a_class = false;  // results in OUT/<name>/, and the class's own files in OUT
+  std::string error;     // why nothing should be graded
+  std::vector<std::string> classes;  // "DIR holds N submissions", for each class folder
+};
+
+// The submissions named, a class folder standing for each submission in it; an error
+// when a folder could be one submission or a class, or when two results folders would
+// be one (alice.zip and alice.tar.gz: which counts is the instructor's call) or one
+// would be a class file (`class_files`: class.csv.zip).
+Submissions find_submissions(const std::vector<std::string>& named, const std::vector<const Lab*>& labs,
+                             const std::vector<std::string>& class_files);
 
 // Finds the student files of `labs` in the submission at `path`; an archive is unpacked
 // (only those files) into `work`, confined by `sandbox`.

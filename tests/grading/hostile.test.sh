@@ -105,6 +105,49 @@ reference "$subs/own_main" && printf 'int main() { return 0; }\n' >>"$subs/own_m
 reference "$subs/partial" && cp "$build/mutants/02_segment_triangle/beta_sign.cpp" "$subs/partial/$lab02"
 reference "$subs/all_or_nothing" && cp "$build/mutants/02_segment_triangle/crossing_t_sign.cpp" "$subs/all_or_nothing/$lab02"
 
+# Untrusted text (feedback must stay valid UTF-8 and show terminal controls as text):
+# accented output, a Latin-1 byte and escapes, then a crash (the kept tail starts in the
+# middle of a character); a Latin-1 byte and escapes in a compile error.
+inject latin1_crash segment_plane '  { static bool once = false; if (!once) { once = true; for (int i = 0; i < 700; ++i) std::fputs("\\xc3\\xa9", stdout);
+    std::fputs("\\nr\\xc3\\xa9sultat \\xe9 \\x1b[2J\\x1b]0;owned\\x07\\n", stdout); std::fflush(stdout); volatile int* nowhere = nullptr; *nowhere = 1; } }'
+reference "$subs/latin1_compile" && printf '#error caf\351 \033[2J\033]0;owned\007\n' >>"$subs/latin1_compile/$lab02"
+# What the code under test leaves in place of its report, after the harness wrote it (a
+# static object's destructor runs last): a FIFO (the grader, as root, once blocked in
+# open() on it forever), a symlink, JSON of the wrong shape, a crafted replay token.
+after_the_report() {
+  reference "$subs/$1"
+  printf '#include <cstdio>\n#include <cstdlib>\n#include <sys/stat.h>\n#include <unistd.h>\nnamespace {\nstruct LastWord {\n  ~LastWord() {\n    const char* report = std::getenv("LABKIT_REPORT");\n    if (!report) return;\n    %s\n  }\n} last_word;\n}  // namespace\n' "$2" \
+    >>"$subs/$1/$lab02"
+}
+after_the_report fifo_report 'std::remove(report); mkfifo(report, 0600);'
+after_the_report symlink_report 'std::remove(report); symlink("/etc/passwd", report);'
+write_report() { printf 'if (std::FILE* f = std::fopen(report, "w")) { std::fputs(R"(%s)", f); std::fclose(f); }' "$1"; }
+after_the_report queries_5 "$(write_report '{"finished": true, "queries": 5}')"
+after_the_report finished_yes "$(write_report '{"finished": "yes"}')"
+after_the_report crafted_token "$(write_report '{"finished": true, "queries": [{"query": "segment_plane", "kind": "random", "cases": 1, "failed": 1, "failure": {"title": "t", "input": "i", "expected": "e", "got": "g", "why": "w", "replay": "segment_plane:1'"'"' ; touch /tmp/labkit-hostile-owned ; '"'"'"}}]}')"
+# A crafted in-flight marker as the last thing printed, then an early exit.
+inject crafted_inflight segment_plane '  { std::puts("LABKIT-INFLIGHT segment_plane:1'"'"' ; touch /tmp/labkit-hostile-owned ; '"'"'"); std::fflush(stdout); _exit(3); }'
+# A student's folder that is merely named labs (files uploaded one by one): a class
+# member like any other, not a sign that the whole class is one submission.
+mkdir -p "$subs/labs" && cp "$kit"/solutions/[0-9][0-9]_*/*.cpp "$subs/labs/"
+# Archives where one member is bad: the rest is graded, the feedback says why.
+latin1="$(printf 'caf\351')"
+mkdir -p "$work/members/$latin1" "$work/members/XX" "$work/members/links" && reference "$work/members/$latin1"
+echo 'the escape' >"$work/members/XX/segment_triangle.cpp"
+ln -s /etc/passwd "$work/members/links/frustum_split.cpp"
+ln -s /etc/passwd "$work/members/$(printf 'esc\033[2J\nape')"
+head -c 5M /dev/zero >"$work/members/links/particles.cpp"
+(cd "$work/members" && zip -qry "$subs/bad_members.zip" . && LC_ALL=C sed -i 's|XX/segment|../segment|g' "$subs/bad_members.zip")
+(cd "$work/members" && tar -czf "$subs/bad_members_tar.tar.gz" -P --transform 's,^\./XX/,/abs/,;s,^\./links/particles,../particles,' .)
+# A zip bomb that lies: lab 02's file, first in the zip, declares 10 bytes and unpacks to
+# 3 MB; every other lab is the reference.
+mkdir -p "$work/bomb/$(dirname "$lab02")" && head -c 3M /dev/zero >"$work/bomb/$lab02"
+reference "$work/bomb-rest" && rm "$work/bomb-rest/$lab02"
+(cd "$work/bomb" && zip -q "$subs/bomb.zip" "$lab02") && (cd "$work/bomb-rest" && zip -qr "$subs/bomb.zip" labs)
+size=$(stat -c %s "$subs/bomb.zip")
+first=$(od -An -tu4 -j $((size - 6)) -N4 "$subs/bomb.zip" | tr -d ' ')  # the central directory's first entry
+for at in 22 $((first + 24)); do printf '\x0a\x00\x00\x00' | dd of="$subs/bomb.zip" bs=1 seek=$at conv=notrunc status=none; done
+
 # ---- grade them all at once -------------------------------------------------------
 # The endless loop on its own, with a short time limit; the others with a generous one,
 # so that a loaded machine never turns a slow step into a time-out.
@@ -179,6 +222,19 @@ expect allocate_50gb graded 5="out of memory" 7="out of memory"
 expect print_100mb graded 1="too much output"
 expect exit_0 graded 5="exited early"
 expect all_or_nothing graded 1=failing
+expect latin1_crash graded 1=crashed
+expect latin1_compile "does not compile"
+# No report (a FIFO, a link, the wrong shape): as if the session never ended.
+expect fifo_report "exited early"
+expect symlink_report "exited early"
+expect queries_5 "exited early"
+expect finished_yes "exited early"
+expect crafted_token failing
+expect crafted_inflight graded 1="exited early"
+expect labs graded
+expect bad_members graded
+expect bad_members_tar graded
+expect bomb "not submitted"
 # Empty and stubs: nothing to give points to, in any lab.
 for name in empty stubs; do
   awk -F'\t' -v n="$name" 'NR > 1 && $5 != "0" { print "FAIL: " n ": lab " $1 " step " $2 " scores " $5; bad = 1 } END { exit bad }' \
@@ -203,6 +259,54 @@ grep -q "exit()" "$out/exit_0/report.txt" || fail "exit_0: the report does not m
 grep -q "defines main()" "$out/own_main/report.txt" || fail "own_main: the report does not say it defines main()"
 grep -q "constructor priority" "$out/early_constructor/report.txt" || fail "early_constructor: the report does not say why"
 grep -q "No such file" "$out/include_reference/report.txt" || fail "include_reference: the reference was visible to the compiler"
+# Untrusted text: invalid UTF-8 as U+FFFD, terminal controls shown, never obeyed.
+grep -qF $'r\u00e9sultat \ufffd \\x1b[2J\\x1b]0;owned\\x07' "$out/latin1_crash/report.txt" || fail "latin1_crash: its last output is not shown as safe text"
+grep -qF $'#error caf\ufffd \\x1b[2J' "$out/latin1_compile/report.txt" || fail "latin1_compile: the compile error is not shown as safe text"
+grep -qF $'graded caf\ufffd/labs/02_segment_triangle/segment_triangle.cpp as' "$out/bad_members/report.txt" ||
+  fail "bad_members: no note of the Latin-1 folder it was graded from"
+for file in "$out"/class.csv "$out"/*/*; do
+  iconv -f UTF-8 -t UTF-8 "$file" >/dev/null 2>&1 || fail "$file is not valid UTF-8"
+  if LC_ALL=C grep -q $'[\x01-\x08\x0b-\x1f\x7f]' "$file"; then fail "$file holds a control character"; fi
+done
+# A replay token the harness never writes is never printed as a command.
+for name in crafted_token crafted_inflight; do
+  grep -qF "replay    none (the case it reported is not a replay token the kit writes)" "$out/$name/report.txt" ||
+    fail "$name: the report does not refuse its crafted replay token"
+done
+if grep -rhoE "replay +\./labkit [^\\]*" "$out" | grep touch; then fail "a crafted replay token became a command"; fi
+[ -e /tmp/labkit-hostile-owned ] && { fail "a crafted replay command ran"; rm -f /tmp/labkit-hostile-owned; }
+grep -q "ended before its tests did" "$out/fifo_report/report.txt" || fail "fifo_report: the report does not say it ended early"
+# One bad archive member costs only itself, and says why.
+for said in 'not unpacked: ../segment_triangle.cpp has ".." in its path' \
+  "not unpacked: links/frustum_split.cpp is a symbolic link" "not unpacked: links/particles.cpp is larger than 1 MB" \
+  'not unpacked: esc\x1b[2J\x0aape is a symbolic link'; do
+  grep -qF -- "$said" "$out/bad_members/report.txt" || fail "bad_members: the report does not say '$said'"
+done
+for said in "not unpacked: /abs/segment_triangle.cpp has an absolute path" "not unpacked: ../particles.cpp has \"..\" in its path" \
+  "not unpacked: ./links/frustum_split.cpp is a symbolic link"; do
+  grep -qF -- "$said" "$out/bad_members_tar/report.txt" || fail "bad_members_tar: the report does not say '$said'"
+done
+grep -qF "not unpacked: labs/02_segment_triangle/segment_triangle.cpp unpacks to more than 1 MB" "$out/bomb/report.txt" ||
+  fail "bomb: the report does not say it unpacks to more than 1 MB"
+
+# Names that cannot be told apart: nothing is graded, the message names the files (exit
+# 2 at once, before any lab is built).
+refused() {
+  local class="$work/$1" said code
+  shift
+  said=$("$runner" grade "$class" --out "$class.out" --seed "$secret" 2>&1)
+  code=$?
+  [ $code -eq 2 ] || fail "$(basename "$class"): exit $code, expected 2: $said"
+  [ -e "$class.out" ] && fail "$(basename "$class"): results were written"
+  for what in "$@"; do grep -qF -- "$what" <<<"$said" || fail "$(basename "$class"): the message does not name '$what': $said"; done
+}
+mkdir -p "$work/two_alices" && cp "$subs/reference.zip" "$work/two_alices/alice.zip" &&
+  cp "$subs/reference.zip" "$work/two_alices/alice-2.zip" && cp "$subs/extra_files.tar.gz" "$work/two_alices/alice.tar.gz"
+refused two_alices "alice.zip" "alice.tar.gz"
+mkdir -p "$work/class_file" && cp "$subs/reference.zip" "$work/class_file/class.csv.zip" && cp "$subs/reference.zip" "$work/class_file/bob.zip"
+refused class_file "class.csv.zip"
+mkdir -p "$work/labs_in_place" && reference "$work/labs_in_place" && cp "$subs/reference.zip" "$work/labs_in_place/bob.zip"
+refused labs_in_place "labs/01_frustum_split/frustum_split.cpp" "bob.zip"
 
 # Nothing escaped.
 for path in "$kit/HOSTILE_WAS_HERE" /tmp/labkit-hostile-was-here /root/.labkit-hostile "$work/hostile-was-here" \
@@ -253,11 +357,18 @@ declare -A fault=(
   [escape]="writing outside its folder, kill(-1)" [extra_files]="extra files replacing a test, headers, CMake, manifest"
   [steal_seed]="reading the secret seed" [early_constructor]="constructor before the harness"
   [symlink]="lab file is a symlink to the reference" [include_reference]="#include of the reference"
-  [own_main]="its own main()" [partial]="classic mistake (beta sign), partial steps" [all_or_nothing]="classic mistake, all-or-nothing step")
+  [own_main]="its own main()" [partial]="classic mistake (beta sign), partial steps" [all_or_nothing]="classic mistake, all-or-nothing step"
+  [latin1_crash]="Latin-1 and escapes printed, then a crash" [latin1_compile]="Latin-1 and escapes in a compile error"
+  [fifo_report]="a FIFO in place of its report" [symlink_report]="a symlink in place of its report"
+  [queries_5]="a report of the wrong shape (queries: 5)" [finished_yes]="a report of the wrong shape (finished: yes)"
+  [crafted_token]="a crafted replay token in its report" [crafted_inflight]="a crafted in-flight marker, then exit"
+  [labs]="a student's folder named labs" [bad_members]="zip: ../, symlinks, 5 MB, Latin-1 folder"
+  [bad_members_tar]="tar: absolute, ../, symlinks, 5 MB" [bomb]="zip bomb declaring 10 bytes")
 echo
 printf '%-44s | %-58s | %-9s | %s\n' "fault (in lab 02)" "what the grader reported for lab 02" "lab 02" "other labs kept"
 for name in reference empty stubs compile_error segfault endless_loop allocate_50gb print_100mb exit_0 escape extra_files \
-  steal_seed early_constructor symlink include_reference own_main partial all_or_nothing; do
+  steal_seed early_constructor symlink include_reference own_main partial all_or_nothing latin1_crash latin1_compile \
+  fifo_report symlink_report queries_5 finished_yes crafted_token crafted_inflight labs bad_members bad_members_tar bomb; do
   [ -f "$out/$name/steps.tsv" ] || continue
   awk -F'\t' -v f="${fault[$name]}" 'FNR == 1 { next }
     FNR == NR { ref[$1 "/" $2] = $4; refscore[$1] += $5; next }

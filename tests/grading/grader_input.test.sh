@@ -1,0 +1,195 @@
+#!/usr/bin/env bash
+# What ./labkit grade does with what a submission controls: its output, its reports, its
+# replay tokens, its archives and its names. No lab is built: a stand-in kit's "compiler"
+# copies the student's file, and its "test binary" is a shell script with that file
+# appended, so each submission below is a few lines of sh that print, crash, or write
+# their own report (a FIFO, JSON of the wrong shape, a crafted replay token). It needs
+# labkit-runner alone and takes seconds; hostile.test.sh grades the same faults in C++
+# on the real kit.
+#
+#   grader_input.test.sh RUNNER KIT_ROOT SCHEMA_CHECKER
+set -uo pipefail
+runner="$1"
+kit="$2"
+schema_check="$3"
+work="$(mktemp -d /tmp/labkit-grader-input.XXXXXX)"
+trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
+chmod 755 "$work"  # the sandbox's runs read the stand-in build as other users
+failures=0
+fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+secret="grader input secret $$"
+owned="$work/owned"  # what a crafted replay command would create if it were ever run
+
+# ---- the stand-in kit ---------------------------------------------------------------
+build="$work/build"
+mkdir -p "$build/grading"
+# The test binary: every step passes (or, described, names its input), then the
+# student's lines run.
+cat >"$build/test-binary.sh" <<'EOF'
+#!/bin/sh
+if [ -n "${LABKIT_DESCRIBE:-}" ]; then
+  printf '{"finished": true, "test_cases": [], "queries": [{"query": "q", "kind": "examples", "cases": 1, "failure": {"title": "described", "input": "the described input", "replay": "%s"}}]}' "$LABKIT_REPLAY" >"$LABKIT_REPORT"
+  exit 0
+fi
+printf '{"finished": true, "test_cases": [], "queries": [{"query": "q", "kind": "examples", "cases": 1, "passed": 1}]}' >"$LABKIT_REPORT"
+# The student's lines:
+EOF
+# Compiling copies the file (a first line "#error ..." fails it, with the file as the
+# errors); linking appends it to the test binary.
+compile='if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; cp $0 $2'
+link='cat $1 $4 >$3 && chmod 755 $3'
+entries=""
+for file in $(grep -o '"labs/[0-9][0-9]_[a-z_]*/[a-z_]*\.cpp"' "$kit/grading/manifest.json" | tr -d '"'); do
+  stem=$(basename "$(dirname "$file")")
+  printf '%s\0' "$build" sh -c "$link" sh "$build/test-binary.sh" -o placeholder "$build/libstub.a" >"$build/grading/$stem.link"
+  printf '{"student_library": "%s", "link_record": "%s"}\n' "$build/libstub.a" "$build/grading/$stem.link" >"$build/grading/$stem.json"
+  entries+="${entries:+,}{\"directory\": \"$build\", \"file\": \"$kit/$file\", \"arguments\": [\"sh\", \"-c\", \"$compile\", \"$kit/$file\", \"-o\", \"placeholder.o\"]}"
+done
+echo "[$entries]" >"$build/compile_commands.json"
+grade() { LABKIT_BUILD_DIR="$build" timeout 300 "$runner" grade "$@" --seed "$secret" --labs 02 --jobs 2 --timeout 20; }
+
+# ---- the submissions: lab 02's file is the student's lines ---------------------------
+subs="$work/submissions"
+lab02=labs/02_segment_triangle/segment_triangle.cpp
+# student NAME LINES: a folder submission whose lab 02 file holds LINES.
+student() { mkdir -p "$subs/$1/$(dirname $lab02)" && printf '%s\n' "$2" >"$subs/$1/$lab02"; }
+# report JSON: the student's lines write this report instead of the harness's.
+report() { printf "printf '%%s' '%s' >\"\$LABKIT_REPORT\"" "${1//\'/\'\\\'\'}"; }
+failing_with_replay() { report '{"finished": true, "test_cases": [], "queries": [{"query": "segment_plane", "kind": "random", "cases": 1, "failed": 1, "failure": {"title": "random case", "input": "in", "expected": "yes", "got": "no", "why": "because", "replay": "'"$1"'"}}]}'; }
+
+student passing ': nothing to add'
+# Accented text (the kept tail starts in the middle of it), a Latin-1 byte, terminal
+# escapes, then a crash.
+student latin1_crash 'i=0; while [ $i -lt 700 ]; do printf "\303\251"; i=$((i + 1)); done; printf "\nr\303\251sultat \351 \033[2J\033]0;owned\007\n\033[31mred\r\n"; kill -SEGV $$'
+student latin1_compile "$(printf '#error caf\351 \033[2J\033]0;owned\007 \303\251')"
+student fifo_report 'rm -f "$LABKIT_REPORT"; mkfifo "$LABKIT_REPORT"'
+student symlink_report 'rm -f "$LABKIT_REPORT"; ln -s /etc/passwd "$LABKIT_REPORT"'
+student queries_5 "$(report '{"finished": true, "queries": 5}')"
+student finished_yes "$(report '{"finished": "yes"}')"
+student report_array "$(report '[1, 2, 3]')"
+student crafted_token "$(failing_with_replay "segment_plane:1' ; touch $owned ; '")"
+student real_token "$(failing_with_replay 'segment_plane:1,-2.5,1e+300,inf')"
+student crafted_inflight "echo \"LABKIT-INFLIGHT segment_plane:1' ; touch $owned ; '\"; kill -SEGV \$\$"
+# A student's folder that is merely named labs: its file at its top, uploaded alone.
+mkdir -p "$subs/labs" && echo ': the student called labs' >"$subs/labs/segment_triangle.cpp"
+
+# Archives. good: lab 02's file; the rest is what one bad member looks like.
+mkdir -p "$work/a/labs/02_segment_triangle" "$work/a/XX" "$work/a/labs/01_frustum_split" "$work/a/labs/03_separating_axes"
+echo ': good' >"$work/a/$lab02"
+echo 'touch /tmp/escaped' >"$work/a/XX/segment_triangle.cpp"
+ln -s /etc/passwd "$work/a/labs/01_frustum_split/frustum_split.cpp"
+head -c 5M /dev/zero >"$work/a/labs/03_separating_axes/separating_axes.cpp"
+(cd "$work/a" && zip -qry "$subs/bad_members.zip" . && LC_ALL=C sed -i 's|XX/segment|../segment|g' "$subs/bad_members.zip")
+# A zip bomb that lies: it declares 10 bytes and unpacks to 3 MB.
+mkdir -p "$work/b/$(dirname $lab02)" && head -c 3M /dev/zero >"$work/b/$lab02"
+(cd "$work/b" && zip -qr "$subs/bomb.zip" $lab02)
+size=$(stat -c %s "$subs/bomb.zip")
+directory=$(od -An -tu4 -j $((size - 6)) -N4 "$subs/bomb.zip" | tr -d ' ')
+for at in 22 $((directory + 24)); do printf '\x0a\x00\x00\x00' | dd of="$subs/bomb.zip" bs=1 seek=$at conv=notrunc status=none; done
+# A tar with every kind of bad member, and lab 02's file under a folder named in Latin-1.
+latin1="$(printf 'caf\351')"
+mkdir -p "$work/t/one/labs/01_frustum_split" "$work/t/two/labs/01_frustum_split" "$work/t/$latin1/$(dirname $lab02)" \
+  "$work/t/labs/03_separating_axes" "$work/t/labs/04_bisection" "$work/t/labs/05_sphere_sweeps"
+echo ': good' >"$work/t/$latin1/$lab02"
+echo one >"$work/t/one/labs/01_frustum_split/frustum_split.cpp"
+echo two >"$work/t/two/labs/01_frustum_split/frustum_split.cpp"
+echo absolute >"$work/t/labs/03_separating_axes/separating_axes.cpp"
+echo target >"$work/t/target" && ln "$work/t/target" "$work/t/labs/04_bisection/bisection.cpp"
+mkfifo "$work/t/labs/05_sphere_sweeps/sphere_sweeps.cpp"
+(cd "$work/t" && tar -czf "$subs/bad_members_tar.tar.gz" -P --transform 's,^one/,,;s,^two/,,;s,^labs/03,/abs/labs/03,' \
+  --transform 's,^target,../../target,' target one two labs "$latin1" 2>/dev/null)
+
+# ---- one class, graded at once -------------------------------------------------------
+out="$work/results"
+grade "$subs" --out "$out" >"$work/grade.log" 2>&1
+code=$?
+[ $code -eq 0 ] || { cat "$work/grade.log"; fail "labkit grade exits $code (124: it hung)"; }
+
+# status NAME STATUS: every step of lab 02 has that status.
+status() {
+  local tsv="$out/$1/steps.tsv"
+  [ -f "$tsv" ] || { fail "$1: no results"; return; }
+  local other
+  other=$(awk -F'\t' -v s="$2" 'NR > 1 && $4 != s { print "step " $2 " is " $4 }' "$tsv" | head -n 1)
+  [ -z "$other" ] || fail "$1: $other, expected '$2'"
+}
+says() { grep -qF -- "$2" "$out/$1/report.txt" || fail "$1: the report does not say '$2'"; }
+status passing passed
+status latin1_crash crashed
+status latin1_compile "does not compile"
+status fifo_report "exited early"
+status symlink_report "exited early"
+status queries_5 "exited early"
+status finished_yes "exited early"
+status report_array "exited early"
+status crafted_token failing
+status real_token failing
+status crafted_inflight crashed
+status labs passed
+status bad_members passed
+status bad_members_tar passed
+status bomb "not submitted"
+
+# 1. Untrusted text: invalid UTF-8 shown as U+FFFD, terminal controls shown as text.
+says latin1_crash $'r\u00e9sultat \ufffd \\x1b[2J\\x1b]0;owned\\x07'
+says latin1_crash '\x1b[31mred'
+says latin1_compile $'#error caf\ufffd \\x1b[2J'
+says bad_members_tar $'graded caf\ufffd/labs/02_segment_triangle/segment_triangle.cpp as'
+# 2. Replay commands: a real token, quoted; a crafted one, never a command.
+says real_token "replay    ./labkit check 02 --case 'segment_plane:1,-2.5,1e+300,inf'"
+says crafted_token "replay    none (the case it reported is not a replay token the kit writes)"
+says crafted_inflight "replay    none (the case it reported is not a replay token the kit writes)"
+if grep -rhoE "replay +\./labkit [^\\]*" "$out" | grep touch; then fail "a crafted token became a replay command"; fi
+[ -e "$owned" ] && fail "a crafted replay command ran"
+# 3. A FIFO, a link or JSON of another shape in place of the report: no report, at once.
+says fifo_report "ended before its tests did"
+# 5. One bad member costs only itself, and says why.
+says bad_members 'not unpacked: ../segment_triangle.cpp has ".." in its path'
+says bad_members "not unpacked: labs/01_frustum_split/frustum_split.cpp is a symbolic link"
+says bad_members "not unpacked: labs/03_separating_axes/separating_axes.cpp is larger than 1 MB"
+says bomb "not unpacked: labs/02_segment_triangle/segment_triangle.cpp unpacks to more than 1 MB"
+says bad_members_tar "labs/01_frustum_split/frustum_split.cpp appears 2 times in the archive"
+says bad_members_tar "/abs/labs/03_separating_axes/separating_axes.cpp has an absolute path"
+says bad_members_tar "labs/04_bisection/bisection.cpp is a hard link"
+says bad_members_tar "labs/05_sphere_sweeps/sphere_sweeps.cpp is not a regular file"
+[ -e /tmp/escaped ] && { fail "a member with .. was unpacked"; rm -f /tmp/escaped; }
+# 4. Each student their own folder: the one called labs too.
+[ "$(wc -l <"$out/class.csv")" = "$(($(ls "$subs" | wc -l) + 1))" ] || fail "class.csv: one row per submission"
+
+# Every output is valid UTF-8 without a control character but newline and tab (and
+# JSON, XML and the schema agree).
+for file in "$out"/class.csv "$out"/*/*; do
+  iconv -f UTF-8 -t UTF-8 "$file" >/dev/null 2>&1 || fail "$file is not valid UTF-8"
+  if LC_ALL=C grep -q $'[\x01-\x08\x0b-\x1f\x7f]' "$file"; then fail "$file holds a control character"; fi
+done
+"$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json >"$work/schema.log" ||
+  { cat "$work/schema.log"; fail "a results.json does not match the schema"; }
+if command -v python3 >/dev/null; then
+  python3 -c 'import sys, xml.etree.ElementTree as T
+for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml || fail "a junit.xml is not well-formed XML"
+fi
+if grep -rqF "$secret" "$out" "$work/grade.log"; then fail "the secret seed appears in the results"; fi
+
+# ---- 4. names that cannot be told apart: nothing is graded --------------------------
+# refused NAME WHAT...: grading the class folder NAME exits 2 at once, writes nothing,
+# and its message names each WHAT.
+refused() {
+  local class="$work/$1" said code
+  shift
+  said=$(grade "$class" --out "$class.out" 2>&1)
+  code=$?
+  [ $code -eq 2 ] || fail "$(basename "$class"): exit $code, expected 2: $said"
+  [ -e "$class.out" ] && fail "$(basename "$class"): results were written"
+  for what in "$@"; do grep -qF -- "$what" <<<"$said" || fail "$(basename "$class"): the message does not name '$what': $said"; done
+}
+mkdir -p "$work/two_alices" && cp "$subs/bomb.zip" "$work/two_alices/alice.zip" && cp "$subs/bomb.zip" "$work/two_alices/alice-2.zip" &&
+  cp "$subs/bad_members_tar.tar.gz" "$work/two_alices/alice.tar.gz"
+refused two_alices "alice.zip" "alice.tar.gz"
+mkdir -p "$work/class_file" && cp "$subs/bomb.zip" "$work/class_file/class.csv.zip" && cp "$subs/bomb.zip" "$work/class_file/bob.zip"
+refused class_file "class.csv.zip"
+mkdir -p "$work/labs_in_place/labs/02_segment_triangle" && echo ': x' >"$work/labs_in_place/$lab02" &&
+  cp "$subs/bomb.zip" "$work/labs_in_place/bob.zip"
+refused labs_in_place "labs/02_segment_triangle/segment_triangle.cpp" "bob.zip"
+
+[ $failures -eq 0 ] && echo "grader input: every hostile output, name and archive cost only what it should" || cat "$work/grade.log"
+exit $((failures > 0))

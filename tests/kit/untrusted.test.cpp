@@ -1,0 +1,137 @@
+// What the grader does with what a submission controls (runner/untrusted.h): any bytes
+// become valid UTF-8 with terminal controls shown as text, a replay command is a single
+// shell word whatever the token, and a file left behind is read only if it is a regular
+// file of a sane size. Runs without the kit's build: `kit_untrusted` is this file and
+// runner/untrusted.cpp alone.
+#define CATCH_CONFIG_MAIN
+#include "runner/untrusted.h"
+
+#include <catch2/catch.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+using runner::is_replay_token;
+using runner::read_untrusted_file;
+using runner::replay_command;
+using runner::safe_text;
+using runner::shell_quote;
+
+namespace {
+
+const std::string fffd = "\xEF\xBF\xBD";
+
+// Strict UTF-8 with no C0 control but \n and \t: what nlohmann::json and XML accept.
+bool valid_and_quiet(const std::string& s) {
+  for (std::size_t i = 0; i < s.size();) {
+    const unsigned char c = s[i];
+    if (c < 0x80) {
+      if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7F) return false;
+      ++i;
+      continue;
+    }
+    const std::size_t n = c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : c >= 0xC2 ? 2 : 0;
+    if (n == 0 || i + n > s.size()) return false;
+    for (std::size_t k = 1; k < n; ++k)
+      if ((static_cast<unsigned char>(s[i + k]) & 0xC0) != 0x80) return false;
+    i += n;
+  }
+  return true;
+}
+
+// Runs `word` through sh as the argument of printf, and returns what sh passed on.
+std::string through_the_shell(const std::string& word) {
+  const std::string out = "/tmp/kit-untrusted-shell." + std::to_string(getpid());
+  const std::string command = "printf %s " + word + " >" + out;
+  if (std::system(command.c_str()) != 0) return "<sh failed>";
+  std::ifstream in(out, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::filesystem::remove(out);
+  return text;
+}
+
+}  // namespace
+
+TEST_CASE("text that is already fine passes unchanged", "[kit][untrusted]") {
+  for (const std::string s : {"", "plain ASCII", "line one\n\tline two\n", "élève, naïve, 日本語, 🙂",
+                              "error: expected ';' before '}' token"})
+    CHECK(safe_text(s) == s);
+}
+
+TEST_CASE("invalid UTF-8 becomes U+FFFD, one per broken sequence, and the rest is kept", "[kit][untrusted]") {
+  CHECK(safe_text("caf\xE9 ok") == "caf" + fffd + " ok");                  // a Latin-1 byte
+  CHECK(safe_text("\xA9t\xC3\xA9") == fffd + "t\xC3\xA9");                 // a tail cut mid-character
+  CHECK(safe_text("ab\xE2\x82") == "ab" + fffd);                           // cut short at the end
+  CHECK(safe_text("\xC0\xAF") == fffd + fffd);                             // an overlong '/'
+  CHECK(safe_text("\xED\xA0\x80") == fffd + fffd + fffd);                  // a surrogate
+  CHECK(safe_text("\xF4\x90\x80\x80") == fffd + fffd + fffd + fffd);       // past U+10FFFF
+  CHECK(safe_text("\xF0\x9F\x99") == fffd);                                // one maximal subpart
+  CHECK(safe_text(std::string("a\0b", 3)) == "a\\x00b");
+  std::string every_byte;
+  for (int c = 0; c < 256; ++c) every_byte += char(c);
+  for (int i = 0; i < 3; ++i) every_byte += every_byte;
+  CHECK(valid_and_quiet(safe_text(every_byte)));
+}
+
+TEST_CASE("terminal controls are shown, not obeyed", "[kit][untrusted]") {
+  CHECK(safe_text("\x1b[2J\x1b]0;owned\x07") == "\\x1b[2J\\x1b]0;owned\\x07");
+  CHECK(safe_text("100%\rpassed") == "100%\\x0dpassed");
+  CHECK(safe_text("dos line\r\nnext") == "dos line\nnext");
+  CHECK(safe_text("\x7f") == "\\x7f");
+  CHECK(safe_text("\xC2\x9B" "31m") == "\\u009b31m");                      // C1 CSI
+  CHECK(safe_text("\xE2\x80\xAEtxt.exe") == "\\u202etxt.exe");             // right-to-left override
+  CHECK(safe_text("\xEF\xBF\xBE") == "\\ufffe");                           // XML refuses it
+}
+
+TEST_CASE("safe_text is idempotent", "[kit][untrusted]") {
+  for (const std::string s : {"caf\xE9\x1b[31m\r\n\xC2\x9B\xE2\x80\xAE", "\\x1b already shown", "\xF0\x9F\x99"})
+    CHECK(safe_text(safe_text(s)) == safe_text(s));
+}
+
+TEST_CASE("a quoted word is one word, literally, for sh", "[kit][untrusted]") {
+  for (const std::string s : {"q:1,2", "it's", "'; touch /tmp/x; '", "$(id) `id` $HOME \\ \" *", "a\nb", "''''", ""})
+    CHECK(through_the_shell(shell_quote(s)) == s);
+  CHECK(shell_quote("it's") == "'it'\\''s'");
+}
+
+TEST_CASE("replay tokens: the harness's grammar, and nothing else", "[kit][untrusted]") {
+  for (const char* token : {"segment_plane:1,2,3", "distance sphere box:0.1,-3,1e-06,1e+300,inf,-inf,nan",
+                            "robust.advance:4.9406564584124654e-324,-0", "q:",
+                            "first_hit:1,3,5,1,3,-1,8,0,0,0,4,0,0,4,4,0,0,4,0,0,0,2,4,0,2,4,4,2,0,4,2,4,0,1,2,0,2"})
+    CHECK(is_replay_token(token));
+  for (const char* token : {"", "nonsense", ":1,2", "q:1,,2", "q:1,2,", "q:1;id", "q:$(id)", "q':1", "q:1 2",
+                            "q\n:1", "q:0x1p3", "q:1,2' ; rm -rf ~ ; echo '"})
+    CHECK_FALSE(is_replay_token(token));
+  CHECK(replay_command("check", "02", "segment_plane:1,2,3") == "./labkit check 02 --case 'segment_plane:1,2,3'");
+  CHECK(replay_command("check", "02", "q:1' ; touch /tmp/owned ; '") == "");
+}
+
+TEST_CASE("files left behind: only a regular file of a sane size is read", "[kit][untrusted]") {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / ("kit-untrusted." + std::to_string(getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "report.json") << "{\"finished\": true}";
+  const auto read = read_untrusted_file((dir / "report.json").string(), 100);
+  CHECK(read.error.empty());
+  CHECK(read.text == "{\"finished\": true}");
+  CHECK(read_untrusted_file((dir / "report.json").string(), 5).error == "is larger than 5 bytes");
+
+  REQUIRE(mkfifo((dir / "fifo").c_str(), 0600) == 0);  // open() would wait for a writer forever
+  CHECK(read_untrusted_file((dir / "fifo").string(), 100).error == "is a FIFO, not a regular file");
+  fs::create_symlink(dir / "report.json", dir / "link");
+  CHECK(read_untrusted_file((dir / "link").string(), 100).error == "is a symbolic link");
+  CHECK(read_untrusted_file(dir.string(), 100).error == "is a folder, not a regular file");
+  CHECK(read_untrusted_file((dir / "absent").string(), 100).error == "cannot be opened (No such file or directory)");
+  CHECK(read_untrusted_file("/dev/zero", 100).error == "is a device, not a regular file");
+
+  CHECK(runner::copy_untrusted_file((dir / "report.json").string(), (dir / "copy").string(), 100).empty());
+  CHECK(read_untrusted_file((dir / "copy").string(), 100).text == read.text);
+  CHECK(runner::copy_untrusted_file((dir / "fifo").string(), (dir / "copy2").string(), 100) ==
+        "is a FIFO, not a regular file");
+  fs::remove_all(dir);
+}
