@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# What ./labkit grade does with what a submission controls: its output, its reports, its
-# replay tokens, its archives and its names. No lab is built: a stand-in kit's "compiler"
-# copies the student's file, and its "test binary" is a shell script with that file
-# appended, so each submission below is a few lines of sh that print, crash, or write
-# their own report (a FIFO, JSON of the wrong shape, a crafted replay token). It needs
-# labkit-runner alone and takes seconds; hostile.test.sh grades the same faults in C++
-# on the real kit.
+# What ./labkit grade does with what a submission controls: its output, its replay
+# tokens, its archives and its names; and what it must not reach: the judge's report.
+# No lab is built. A step runs two programs (common/protocol/answerer.h), and the
+# stand-in kit has both: its judge is a shell script that writes the report and starts
+# the answerer, and its "compiler" and "linker" make the answerer, a shell script with
+# the student's file appended. So each submission below is a few lines of sh that
+# print, crash, or go after the report. It needs labkit-runner and python3 (the judge
+# reads LABKIT_ANSWERER with it) and takes seconds; hostile.test.sh grades the same
+# faults in C++ on the real kit.
 #
 #   grader_input.test.sh RUNNER KIT_ROOT SCHEMA_CHECKER
 set -uo pipefail
@@ -21,27 +23,44 @@ secret="grader input secret $$"
 owned="$work/owned"  # what a crafted replay command would create if it were ever run
 
 # ---- the stand-in kit ---------------------------------------------------------------
+# A step runs two programs (common/protocol/answerer.h): the kit's judge, which writes
+# the report, and the answerer, the student's code, which the judge starts and which
+# only answers. Here the answerer is a shell script with the student's lines appended:
+# ending well answers every call right. A first line "#error ..." fails the compile,
+# with the file as the errors.
 build="$work/build"
 mkdir -p "$build/grading"
-# The test binary: every step passes (or, described, names its input), then the
-# student's lines run.
-cat >"$build/test-binary.sh" <<'EOF'
+echo '#!/bin/sh' >"$build/answerer.sh"
+# The judge: every call passes, unless the answerer ends badly; then one call failed,
+# in the real judge's words (common/protocol/calls.cpp), with a replay token of its own.
+# Described (LABKIT_DESCRIBE), it names the case and runs no code under test.
+cat >"$build/test_02_segment_triangle" <<'EOF'
 #!/bin/sh
 if [ -n "${LABKIT_DESCRIBE:-}" ]; then
   printf '{"finished": true, "test_cases": [], "queries": [{"query": "q", "kind": "examples", "cases": 1, "failure": {"title": "described", "input": "the described input", "replay": "%s"}}]}' "$LABKIT_REPLAY" >"$LABKIT_REPORT"
   exit 0
 fi
 printf '{"finished": true, "test_cases": [], "queries": [{"query": "q", "kind": "examples", "cases": 1, "passed": 1}]}' >"$LABKIT_REPORT"
-# The student's lines:
+# As the real judge starts it: LABKIT_ANSWERER is a path or a JSON array (the grader's
+# confinement around it), the environment is PATH alone, its output is the judge's.
+python3 -c 'import json, os, sys
+command = sys.argv[1]
+argv = json.loads(command) if command.startswith("[") else [command]
+os.execvpe(argv[0], argv, {"PATH": "/usr/bin:/bin"})' "$LABKIT_ANSWERER" </dev/null >&2
+ended=$?
+[ $ended -eq 0 ] && exit 0
+if [ $ended -gt 128 ]; then how="killed by signal $((ended - 128))"; else how="it exited with status $ended"; fi
+printf '{"finished": true, "test_cases": [], "queries": [{"query": "segment_plane", "kind": "random", "cases": 1, "failed": 1, "failure": {"title": "random case", "input": "in", "expected": "yes", "got": "a crash", "why": "your code crashed during this call (%s)", "replay": "segment_plane:1,-2.5,1e+300,inf"}}]}' "$how" >"$LABKIT_REPORT"
+exit 1
 EOF
-# Compiling copies the file (a first line "#error ..." fails it, with the file as the
-# errors); linking appends it to the test binary.
+chmod 755 "$build/test_02_segment_triangle"
+# Compiling copies the file; linking appends it to the answerer, at the path asked (-o).
 compile='if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; cp $0 $2'
 link='cat $1 $4 >$3 && chmod 755 $3'
 entries=""
 for file in $(grep -o '"labs/[0-9][0-9]_[a-z_]*/[a-z_]*\.cpp"' "$kit/grading/manifest.json" | tr -d '"'); do
   stem=$(basename "$(dirname "$file")")
-  printf '%s\0' "$build" sh -c "$link" sh "$build/test-binary.sh" -o placeholder "$build/libstub.a" >"$build/grading/$stem.link"
+  printf '%s\0' "$build" sh -c "$link" sh "$build/answerer.sh" -o placeholder "$build/libstub.a" >"$build/grading/$stem.link"
   printf '{"student_library": "%s", "link_record": "%s"}\n' "$build/libstub.a" "$build/grading/$stem.link" >"$build/grading/$stem.json"
   entries+="${entries:+,}{\"directory\": \"$build\", \"file\": \"$kit/$file\", \"arguments\": [\"sh\", \"-c\", \"$compile\", \"$kit/$file\", \"-o\", \"placeholder.o\"]}"
 done
@@ -53,23 +72,21 @@ subs="$work/submissions"
 lab02=labs/02_segment_triangle/segment_triangle.cpp
 # student NAME LINES: a folder submission whose lab 02 file holds LINES.
 student() { mkdir -p "$subs/$1/$(dirname $lab02)" && printf '%s\n' "$2" >"$subs/$1/$lab02"; }
-# report JSON: the student's lines write this report instead of the harness's.
-report() { printf "printf '%%s' '%s' >\"\$LABKIT_REPORT\"" "${1//\'/\'\\\'\'}"; }
-failing_with_replay() { report '{"finished": true, "test_cases": [], "queries": [{"query": "segment_plane", "kind": "random", "cases": 1, "failed": 1, "failure": {"title": "random case", "input": "in", "expected": "yes", "got": "no", "why": "because", "replay": "'"$1"'"}}]}'; }
+# tamper COMMAND: the student's lines run COMMAND on "$report" for every path where the
+# judge's report could be: $LABKIT_REPORT (the answerer's environment has none), the
+# folders beside its own (the judge's scratch folder is one of them, on the grader's
+# disk) and the grader's under /tmp. Then they end well.
+tamper() { printf 'for report in "${LABKIT_REPORT:-}" ../report.json ../*/report.json /tmp/labkit-grade.*/*/lab02/*/report.json; do %s; done 2>/dev/null; :' "$1"; }
+crafted="segment_plane:1' ; touch $owned ; '"
+forged='{"finished": true, "test_cases": [], "queries": [{"query": "segment_plane", "kind": "random", "cases": 1, "failed": 1, "failure": {"title": "t", "input": "i", "expected": "e", "got": "g", "why": "w", "replay": "'"$crafted"'"}}]}'
 
 student passing ': nothing to add'
-# Accented text (the kept tail starts in the middle of it), a Latin-1 byte, terminal
-# escapes, then a crash.
-student latin1_crash 'i=0; while [ $i -lt 700 ]; do printf "\303\251"; i=$((i + 1)); done; printf "\nr\303\251sultat \351 \033[2J\033]0;owned\007\n\033[31mred\r\n"; kill -SEGV $$'
+# A crafted in-flight marker, then a crash: one call fails, and the judge names its case.
+student crash "echo \"LABKIT-INFLIGHT $crafted\"; kill -SEGV \$\$"
 student latin1_compile "$(printf '#error caf\351 \033[2J\033]0;owned\007 \303\251')"
-student fifo_report 'rm -f "$LABKIT_REPORT"; mkfifo "$LABKIT_REPORT"'
-student symlink_report 'rm -f "$LABKIT_REPORT"; ln -s /etc/passwd "$LABKIT_REPORT"'
-student queries_5 "$(report '{"finished": true, "queries": 5}')"
-student finished_yes "$(report '{"finished": "yes"}')"
-student report_array "$(report '[1, 2, 3]')"
-student crafted_token "$(failing_with_replay "segment_plane:1' ; touch $owned ; '")"
-student real_token "$(failing_with_replay 'segment_plane:1,-2.5,1e+300,inf')"
-student crafted_inflight "echo \"LABKIT-INFLIGHT segment_plane:1' ; touch $owned ; '\"; kill -SEGV \$\$"
+student fifo_report "$(tamper 'rm -f "$report"; mkfifo "$report"')"
+student symlink_report "$(tamper 'rm -f "$report"; ln -s /etc/passwd "$report"')"
+student forged_report "$(tamper "printf '%s' '${forged//\'/\'\\\'\'}' >\"\$report\"")"
 # A student's folder that is merely named labs: its file at its top, uploaded alone.
 mkdir -p "$subs/labs" && echo ': the student called labs' >"$subs/labs/segment_triangle.cpp"
 
@@ -114,35 +131,33 @@ status() {
   [ -z "$other" ] || fail "$1: $other, expected '$2'"
 }
 says() { grep -qF -- "$2" "$out/$1/report.txt" || fail "$1: the report does not say '$2'"; }
+# full_marks NAME: every step of lab 02 scores its points.
+full_marks() { awk -F'\t' 'NR > 1 && $5 != $6 { bad = 1 } END { exit bad }' "$out/$1/steps.tsv" || fail "$1: a step lost points"; }
 status passing passed
-status latin1_crash crashed
+status crash failing
 status latin1_compile "does not compile"
-status fifo_report "exited early"
-status symlink_report "exited early"
-status queries_5 "exited early"
-status finished_yes "exited early"
-status report_array "exited early"
-status crafted_token failing
-status real_token failing
-status crafted_inflight crashed
+status fifo_report passed
+status symlink_report passed
+status forged_report passed
 status labs passed
 status bad_members passed
 status bad_members_tar passed
 status bomb "not submitted"
 
 # 1. Untrusted text: invalid UTF-8 shown as U+FFFD, terminal controls shown as text.
-says latin1_crash $'r\u00e9sultat \ufffd \\x1b[2J\\x1b]0;owned\\x07'
-says latin1_crash '\x1b[31mred'
 says latin1_compile $'#error caf\ufffd \\x1b[2J'
 says bad_members_tar $'graded caf\ufffd/labs/02_segment_triangle/segment_triangle.cpp as'
-# 2. Replay commands: a real token, quoted; a crafted one, never a command.
-says real_token "replay    ./labkit check 02 --case 'segment_plane:1,-2.5,1e+300,inf'"
-says crafted_token "replay    none (the case it reported is not a replay token the kit writes)"
-says crafted_inflight "replay    none (the case it reported is not a replay token the kit writes)"
+# 2. A crash costs the call it happened on, in the judge's words; its replay command is
+# the judge's token, quoted, never the marker the student printed.
+says crash "got       a crash"
+says crash "why       your code crashed during this call (killed by signal 11)"
+says crash "replay    ./labkit check 02 --case 'segment_plane:1,-2.5,1e+300,inf'"
 if grep -rhoE "replay +\./labkit [^\\]*" "$out" | grep touch; then fail "a crafted token became a replay command"; fi
 [ -e "$owned" ] && fail "a crafted replay command ran"
-# 3. A FIFO, a link or JSON of another shape in place of the report: no report, at once.
-says fifo_report "ended before its tests did"
+# 3. The judge's report is out of the answerer's reach: whatever it puts where the report
+# might be (a FIFO the grader would wait on, a link, a forged failure), the step keeps
+# the judge's verdict.
+for name in passing fifo_report symlink_report forged_report; do full_marks $name; done
 # 5. One bad member costs only itself, and says why.
 says bad_members 'not unpacked: ../segment_triangle.cpp has ".." in its path'
 says bad_members "not unpacked: labs/01_frustum_split/frustum_split.cpp is a symbolic link"
@@ -164,10 +179,8 @@ for file in "$out"/class.csv "$out"/*/*; do
 done
 "$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json >"$work/schema.log" ||
   { cat "$work/schema.log"; fail "a results.json does not match the schema"; }
-if command -v python3 >/dev/null; then
-  python3 -c 'import sys, xml.etree.ElementTree as T
+python3 -c 'import sys, xml.etree.ElementTree as T
 for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml || fail "a junit.xml is not well-formed XML"
-fi
 if grep -rqF "$secret" "$out" "$work/grade.log"; then fail "the secret seed appears in the results"; fi
 
 # ---- 4. names that cannot be told apart: nothing is graded --------------------------
