@@ -26,11 +26,27 @@ owned="$work/owned"  # what a crafted replay command would create if it were eve
 # A step runs two programs (common/protocol/answerer.h): the kit's judge, which writes
 # the report, and the answerer, the student's code, which the judge starts and which
 # only answers. Here the answerer is a shell script with the student's lines appended:
-# ending well answers every call right. A first line "#error ..." fails the compile,
-# with the file as the errors.
+# ending well answers every call right.
+#
+# stand_in_kit BUILD: how the kit in BUILD compiles a lab's file (a copy; a first line
+# "#error ..." fails, with the file as the errors) and links it into an answerer (the
+# answerer's head with the file appended, at the path the runner asks with -o).
+stand_in_kit() {
+  local build="$1" compile link entries="" file stem
+  mkdir -p "$build/grading"
+  echo '#!/bin/sh' >"$build/answerer.sh"
+  compile='if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; cp $0 $2'
+  link='cat $1 $4 >$3 && chmod 755 $3'
+  for file in $(grep -o '"labs/[0-9][0-9]_[a-z_]*/[a-z_]*\.cpp"' "$kit/grading/manifest.json" | tr -d '"'); do
+    stem=$(basename "$(dirname "$file")")
+    printf '%s\0' "$build" sh -c "$link" sh "$build/answerer.sh" -o placeholder "$build/libstub.a" >"$build/grading/$stem.link"
+    printf '{"student_library": "%s", "link_record": "%s"}\n' "$build/libstub.a" "$build/grading/$stem.link" >"$build/grading/$stem.json"
+    entries+="${entries:+,}{\"directory\": \"$build\", \"file\": \"$kit/$file\", \"arguments\": [\"sh\", \"-c\", \"$compile\", \"$kit/$file\", \"-o\", \"placeholder.o\"]}"
+  done
+  echo "[$entries]" >"$build/compile_commands.json"
+}
 build="$work/build"
-mkdir -p "$build/grading"
-echo '#!/bin/sh' >"$build/answerer.sh"
+stand_in_kit "$build"
 # The judge: every call passes, unless the answerer ends badly; then one call failed,
 # in the real judge's words (common/protocol/calls.cpp), with a replay token of its own.
 # Described (LABKIT_DESCRIBE), it names the case and runs no code under test.
@@ -54,18 +70,8 @@ printf '{"finished": true, "test_cases": [], "queries": [{"query": "segment_plan
 exit 1
 EOF
 chmod 755 "$build/test_02_segment_triangle"
-# Compiling copies the file; linking appends it to the answerer, at the path asked (-o).
-compile='if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; cp $0 $2'
-link='cat $1 $4 >$3 && chmod 755 $3'
-entries=""
-for file in $(grep -o '"labs/[0-9][0-9]_[a-z_]*/[a-z_]*\.cpp"' "$kit/grading/manifest.json" | tr -d '"'); do
-  stem=$(basename "$(dirname "$file")")
-  printf '%s\0' "$build" sh -c "$link" sh "$build/answerer.sh" -o placeholder "$build/libstub.a" >"$build/grading/$stem.link"
-  printf '{"student_library": "%s", "link_record": "%s"}\n' "$build/libstub.a" "$build/grading/$stem.link" >"$build/grading/$stem.json"
-  entries+="${entries:+,}{\"directory\": \"$build\", \"file\": \"$kit/$file\", \"arguments\": [\"sh\", \"-c\", \"$compile\", \"$kit/$file\", \"-o\", \"placeholder.o\"]}"
-done
-echo "[$entries]" >"$build/compile_commands.json"
-grade() { LABKIT_BUILD_DIR="$build" timeout 300 "$runner" grade "$@" --seed "$secret" --labs 02 --jobs 2 --timeout 20; }
+# grade BUILD ARGS...: ./labkit grade ARGS with the stand-in kit BUILD.
+grade() { LABKIT_BUILD_DIR="$1" timeout 300 "$runner" grade "${@:2}" --seed "$secret" --labs 02 --jobs 2 --timeout 20; }
 
 # ---- the submissions: lab 02's file is the student's lines ---------------------------
 subs="$work/submissions"
@@ -118,7 +124,7 @@ mkfifo "$work/t/labs/05_sphere_sweeps/sphere_sweeps.cpp"
 
 # ---- one class, graded at once -------------------------------------------------------
 out="$work/results"
-grade "$subs" --out "$out" >"$work/grade.log" 2>&1
+grade "$build" "$subs" --out "$out" >"$work/grade.log" 2>&1
 code=$?
 [ $code -eq 0 ] || { cat "$work/grade.log"; fail "labkit grade exits $code (124: it hung)"; }
 
@@ -152,8 +158,6 @@ says bad_members_tar $'graded caf\ufffd/labs/02_segment_triangle/segment_triangl
 says crash "got       a crash"
 says crash "why       your code crashed during this call (killed by signal 11)"
 says crash "replay    ./labkit check 02 --case 'segment_plane:1,-2.5,1e+300,inf'"
-if grep -rhoE "replay +\./labkit [^\\]*" "$out" | grep touch; then fail "a crafted token became a replay command"; fi
-[ -e "$owned" ] && fail "a crafted replay command ran"
 # 3. The judge's report is out of the answerer's reach: whatever it puts where the report
 # might be (a FIFO the grader would wait on, a link, a forged failure), the step keeps
 # the judge's verdict.
@@ -171,17 +175,51 @@ says bad_members_tar "labs/05_sphere_sweeps/sphere_sweeps.cpp is not a regular f
 # 4. Each student their own folder: the one called labs too.
 [ "$(wc -l <"$out/class.csv")" = "$(($(ls "$subs" | wc -l) + 1))" ] || fail "class.csv: one row per submission"
 
+# ---- a broken kit: reports the grader must survive -----------------------------------
+# The student's code cannot reach the report, but a kit's bug can still spoil it: this
+# kit's judge leaves another bad report at each step (JSON of other shapes or cut short,
+# a FIFO the grader would wait on forever, a link, a crafted replay token). Each is no
+# verdict, at once, and the token never a command.
+broken="$work/broken_build"
+stand_in_kit "$broken"
+printf '%s' "$forged" >"$broken/forged.json"
+cat >"$broken/test_02_segment_triangle" <<'EOF'
+#!/bin/sh
+case "$1" in
+  '[lab02][step1]') printf '{"finished": true, "queries": 5}' >"$LABKIT_REPORT" ;;
+  '[lab02][step2]') printf '{"finished": "yes"}' >"$LABKIT_REPORT" ;;
+  '[lab02][step3]') printf '[1, 2, 3]' >"$LABKIT_REPORT" ;;
+  '[lab02][step4]') printf '{"finished": true, "queries": [' >"$LABKIT_REPORT" ;;
+  '[lab02][step5]') mkfifo "$LABKIT_REPORT" ;;
+  '[lab02][step6]') ln -s /etc/passwd "$LABKIT_REPORT" ;;
+  '[lab02][step7]') cat "$(dirname "$0")/forged.json" >"$LABKIT_REPORT" ;;
+esac
+EOF
+chmod 755 "$broken/test_02_segment_triangle"
+broken_out="$work/broken_results"
+grade "$broken" "$subs/passing" --out "$broken_out" >"$work/broken.log" 2>&1
+code=$?
+[ $code -eq 0 ] || { cat "$work/broken.log"; fail "labkit grade on a broken kit exits $code (124: it hung)"; }
+steps=$(awk -F'\t' 'NR > 1 { print $4 }' "$broken_out/steps.tsv" | paste -sd ,)
+expected="exited early,exited early,exited early,exited early,exited early,exited early,failing"
+[ "$steps" = "$expected" ] || fail "broken kit: the steps are '$steps', expected '$expected'"
+grep -qF "replay    none (the case it reported is not a replay token the kit writes)" "$broken_out/report.txt" ||
+  fail "broken kit: the crafted token is not refused"
+
+# No crafted token became a replay command, and none ran.
+if grep -rhoE "replay +\./labkit [^\\]*" "$out" "$broken_out" | grep touch; then fail "a crafted token became a replay command"; fi
+[ -e "$owned" ] && fail "a crafted replay command ran"
 # Every output is valid UTF-8 without a control character but newline and tab (and
 # JSON, XML and the schema agree).
-for file in "$out"/class.csv "$out"/*/*; do
+for file in "$out"/class.csv "$out"/*/* "$broken_out"/*; do
   iconv -f UTF-8 -t UTF-8 "$file" >/dev/null 2>&1 || fail "$file is not valid UTF-8"
   if LC_ALL=C grep -q $'[\x01-\x08\x0b-\x1f\x7f]' "$file"; then fail "$file holds a control character"; fi
 done
-"$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json >"$work/schema.log" ||
+"$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json "$broken_out"/results.json >"$work/schema.log" ||
   { cat "$work/schema.log"; fail "a results.json does not match the schema"; }
 python3 -c 'import sys, xml.etree.ElementTree as T
-for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml || fail "a junit.xml is not well-formed XML"
-if grep -rqF "$secret" "$out" "$work/grade.log"; then fail "the secret seed appears in the results"; fi
+for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml "$broken_out"/junit.xml || fail "a junit.xml is not well-formed XML"
+if grep -rqF "$secret" "$out" "$work/grade.log" "$broken_out" "$work/broken.log"; then fail "the secret seed appears in the results"; fi
 
 # ---- 4. names that cannot be told apart: nothing is graded --------------------------
 # refused NAME WHAT...: grading the class folder NAME exits 2 at once, writes nothing,
@@ -189,7 +227,7 @@ if grep -rqF "$secret" "$out" "$work/grade.log"; then fail "the secret seed appe
 refused() {
   local class="$work/$1" said code
   shift
-  said=$(grade "$class" --out "$class.out" 2>&1)
+  said=$(grade "$build" "$class" --out "$class.out" 2>&1)
   code=$?
   [ $code -eq 2 ] || fail "$(basename "$class"): exit $code, expected 2: $said"
   [ -e "$class.out" ] && fail "$(basename "$class"): results were written"
