@@ -89,6 +89,16 @@ forged='{"finished": true, "test_cases": [], "queries": [{"query": "segment_plan
 student passing ': nothing to add'
 # A crafted in-flight marker, then a crash: one call fails, and the judge names its case.
 student crash "echo \"LABKIT-INFLIGHT $crafted\"; kill -SEGV \$\$"
+# Accented text (the kept tail starts in the middle of it), a Latin-1 byte, terminal
+# escapes, then death as a C++ program dies of an uncaught std::bad_alloc (one that runs
+# out of memory before it answers): the one end the answerer can still give a step
+# whose feedback shows its last output.
+student latin1_out_of_memory 'i=0; while [ $i -lt 700 ]; do printf "\303\251"; i=$((i + 1)); done; printf "\nr\303\251sultat \351 \033[2J\033]0;owned\007\n\033[31mred\r\n"
+printf "terminate called after throwing an instance of '"'std::bad_alloc'"'\n  what():  std::bad_alloc\n"; kill -ABRT $$'
+# An in-flight marker, then a flood of output: the grader kills the judge's process
+# (SIGKILL: the harness names no case), so the marker it finds is the student's.
+student crafted_inflight "echo \"LABKIT-INFLIGHT $crafted\"; yes flooding the grader"
+student faked_inflight "echo 'LABKIT-INFLIGHT segment_plane:4,5,6'; yes flooding the grader"
 student latin1_compile "$(printf '#error caf\351 \033[2J\033]0;owned\007 \303\251')"
 student fifo_report "$(tamper 'rm -f "$report"; mkfifo "$report"')"
 student symlink_report "$(tamper 'rm -f "$report"; ln -s /etc/passwd "$report"')"
@@ -141,6 +151,9 @@ says() { grep -qF -- "$2" "$out/$1/report.txt" || fail "$1: the report does not 
 full_marks() { awk -F'\t' 'NR > 1 && $5 != $6 { bad = 1 } END { exit bad }' "$out/$1/steps.tsv" || fail "$1: a step lost points"; }
 status passing passed
 status crash failing
+status latin1_out_of_memory "out of memory"
+status crafted_inflight "too much output"
+status faked_inflight "too much output"
 status latin1_compile "does not compile"
 status fifo_report passed
 status symlink_report passed
@@ -151,13 +164,20 @@ status bad_members_tar passed
 status bomb "not submitted"
 
 # 1. Untrusted text: invalid UTF-8 shown as U+FFFD, terminal controls shown as text.
+says latin1_out_of_memory $'r\u00e9sultat \ufffd \\x1b[2J\\x1b]0;owned\\x07'
+says latin1_out_of_memory '\x1b[31mred'
 says latin1_compile $'#error caf\ufffd \\x1b[2J'
 says bad_members_tar $'graded caf\ufffd/labs/02_segment_triangle/segment_triangle.cpp as'
-# 2. A crash costs the call it happened on, in the judge's words; its replay command is
-# the judge's token, quoted, never the marker the student printed.
+# 2. Replay commands. A crash costs the call it happened on, in the judge's words, and
+# its replay command is the judge's token, quoted, never the marker printed before it.
+# The marker a flood leaves is the student's: a crafted one is no command, a
+# well-formed one at most a quoted case.
 says crash "got       a crash"
 says crash "why       your code crashed during this call (killed by signal 11)"
 says crash "replay    ./labkit check 02 --case 'segment_plane:1,-2.5,1e+300,inf'"
+says crafted_inflight "replay    none (the case it reported is not a replay token the kit writes)"
+says faked_inflight "on input  the described input"
+says faked_inflight "replay    ./labkit check 02 --case 'segment_plane:4,5,6'"
 # 3. The judge's report is out of the answerer's reach: whatever it puts where the report
 # might be (a FIFO the grader would wait on, a link, a forged failure), the step keeps
 # the judge's verdict.
