@@ -262,5 +262,5 @@ mkdir -p "$work/labs_in_place/labs/02_segment_triangle" && echo ': x' >"$work/la
   cp "$subs/bomb.zip" "$work/labs_in_place/bob.zip"
 refused labs_in_place "labs/02_segment_triangle/segment_triangle.cpp" "bob.zip"
 
-[ $failures -eq 0 ] && echo "grader input: every hostile output, name and archive cost only what it should" || cat "$work/grade.log"
+[ $failures -eq 0 ] && echo "grader input: every hostile output, name and archive cost only what it should, and no report was reached" || cat "$work/grade.log"
 exit $((failures > 0))
