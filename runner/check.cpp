@@ -62,12 +62,7 @@ void print_replay(const Lab& lab, const std::string& token) {
 }
 
 void print_failure(const Failure& f, const std::string& query, const Lab& lab) {
-  std::cout << "  query     " << safe_text(query) << (f.title.empty() ? "" : ", " + safe_text(f.title));
-  if (f.shrinks > 0) std::cout << " (shrunk " << f.shrinks << " times)";
-  std::cout << "\n  input     " << shown(f.input) << "\n";
-  std::cout << "  expected  " << shown(f.expected) << "\n";
-  std::cout << "  got       " << shown(f.got) << "\n";
-  std::cout << "  why       " << shown(f.why) << "\n";
+  std::cout << safe_text(labkit::report::format(f, query, "  "));
   if (!f.replay.empty()) print_replay(lab, f.replay);
 }
 

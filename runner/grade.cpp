@@ -78,6 +78,24 @@ std::string replay_line(const Lab& lab, const std::string& token) {
   return "replay    " + (command.empty() ? "none (the case it reported is not a replay token the kit writes)" : command) + "\n";
 }
 
+StepOptions graded_step_options(const std::string& folder, const Context& c) {
+  StepOptions options;
+  options.seed = c.options.seed;
+  options.cases = c.options.cases;
+  options.hide_seed = true;
+  options.count_all = true;
+  options.limits.seconds = c.options.timeout;
+  options.limits.memory_bytes = c.options.memory_mb << 20;
+  options.limits.file_bytes = std::size_t(64) << 20;
+  options.limits.flood_bytes = std::size_t(16) << 20;
+  // One call's limit: a tenth of the step's, at most 5 s, so that a loop costs its case
+  // and the step still ends within its own limit.
+  options.call_seconds = std::clamp(c.options.timeout / 10, 0.5, 5.0);
+  options.sandbox = &c.sandbox;
+  options.scratch_parent = folder;
+  return options;
+}
+
 // What the student reads about one step: the verdict, the counts, the first failure and
 // how to replay it with the public kit.
 std::string feedback(const StepResult& r, const Lab& lab, const Programs& programs, const Context& c) {
@@ -96,12 +114,12 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
     if (!r.inflight.empty() && !is_replay_token(r.inflight)) {
       out << replay_line(lab, r.inflight);  // its output faked the marker: no input to describe
     } else if (!r.inflight.empty()) {
-      StepOptions describe;
+      // Describing runs no code under test; it keeps the graded limits all the same.
+      StepOptions describe = graded_step_options(fs::path(programs.answerer).parent_path().string(), c);
       describe.replay = r.inflight;
       describe.describe_only = true;
+      describe.count_all = false;
       describe.limits.seconds = 30;
-      describe.sandbox = &c.sandbox;
-      describe.scratch_parent = fs::path(programs.answerer).parent_path().string();
       std::string input = r.inflight;
       const StepResult d = run_step(programs, lab, *r.step, describe);
       for (const QueryResult& q : d.queries)
@@ -122,12 +140,7 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
     }
     if (q.failure && q.not_implemented.empty()) {
       const Failure& f = *q.failure;
-      out << "query     " << q.query << (f.title.empty() ? "" : ", " + f.title);
-      if (f.shrinks > 0) out << " (shrunk " << f.shrinks << " times)";
-      out << "\ninput     " << term::indent(f.input, "          ") << "\n";
-      out << "expected  " << term::indent(f.expected, "          ") << "\n";
-      out << "got       " << term::indent(f.got, "          ") << "\n";
-      out << "why       " << term::indent(f.why, "          ") << "\n";
+      out << labkit::report::format(f, q.query, "");
       if (!f.replay.empty()) out << replay_line(lab, f.replay);
       break;
     }
@@ -184,20 +197,6 @@ LabGrade build_one_lab(const Lab& lab, const Submission& sub, const std::string&
   return g;
 }
 
-StepOptions graded_step_options(const std::string& folder, const Context& c) {
-  StepOptions options;
-  options.seed = c.options.seed;
-  options.cases = c.options.cases;
-  options.hide_seed = true;
-  options.count_all = true;
-  options.limits.seconds = c.options.timeout;
-  options.limits.memory_bytes = c.options.memory_mb << 20;
-  options.limits.file_bytes = std::size_t(64) << 20;
-  options.limits.flood_bytes = std::size_t(16) << 20;
-  options.sandbox = &c.sandbox;
-  options.scratch_parent = folder;
-  return options;
-}
 
 // Every lab built at once, then every step of every lab, `jobs` processes at a time:
 // a lab's build or step never waits for another lab's.

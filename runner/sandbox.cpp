@@ -204,15 +204,16 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
     s.kind_ = Kind::bubblewrap;
     const std::string why = s.probe(needed);
     if (why.empty()) return s;
-    s.why_ = why;
+    s.why_ = "cannot run here: " + why;
     if (mode == "bubblewrap") throw std::runtime_error(why + " (install bubblewrap, or use --sandbox landlock or none)");
   }
   s.kind_ = Kind::landlock;
+  if (mode == "landlock") s.why_ = "not asked for: --sandbox landlock";
   const std::string why = landlock::version() == 0 ? "this kernel has no Landlock" : s.probe(needed);
   if (why.empty()) return s;
   s.kind_ = Kind::none;
   s.why_ += std::string(s.why_.empty() ? "" : "; ") + "Landlock: " + why;
-  if (mode == "landlock") throw std::runtime_error(s.why_);
+  if (mode == "landlock") throw std::runtime_error("Landlock cannot confine the graded code here: " + why);
   if (fs::exists(fs::path(kit) / "solutions"))
     throw std::runtime_error("nothing can confine the graded code's files here (" + s.why_ +
                              "), and this kit holds solutions/: the graded code could read the reference. Grade with "
@@ -226,7 +227,7 @@ std::string Sandbox::description() const {
   if (kind_ == Kind::bubblewrap)
     return "bubblewrap: no network, read-only system, only its own scratch folder writable" + uid;
   if (kind_ == Kind::landlock)
-    return "Landlock (bubblewrap cannot run here: " + why_ +
+    return "Landlock (bubblewrap " + why_ +
            "): reads only the system and its own files, writes only its own scratch folder, no TCP" + uid;
   return "none (" + why_ + "): time, memory, output and file-size limits only" + uid;
 }

@@ -12,6 +12,7 @@
 namespace runner {
 
 namespace fs = std::filesystem;
+namespace variable = labkit::report::variable;
 
 std::string status_word(Status s) {
   switch (s) {
@@ -36,58 +37,33 @@ bool abnormal(Status s) {
 
 namespace {
 
-// The harness's report, when the step left one. The code under test can write there too:
-// a FIFO, a link or a flood is no report (read_untrusted_file), and so is JSON cut short
-// or of another shape (the catch also covers every field read below, which throws when
-// a field has another type than the harness writes).
+// The judge's report, when the step left one: read strictly (report.h), and still as a
+// file that could be anything (read_untrusted_file: no FIFO, no link, no flood).
 void read_report(const fs::path& path, StepResult& r) try {
-  constexpr std::uintmax_t kLargestReport = std::uintmax_t(64) << 20;  // a graded step's file cap
+  constexpr std::uintmax_t kLargestReport = std::uintmax_t(64) << 20;
   const UntrustedRead file = read_untrusted_file(path.string(), kLargestReport);
   if (!file.error.empty()) return;
-  const nlohmann::json j = nlohmann::json::parse(file.text);
-  r.finished = j.value("finished", false);
-  for (const auto& t : j.value("test_cases", nlohmann::json::array()))
-    r.test_cases.push_back({t.value("name", ""), t.value("passed", false),
-                            t.value("failures", std::vector<std::string>{}), t.value("not_implemented", "")});
-  for (const auto& q : j.value("queries", nlohmann::json::array())) {
-    QueryResult qr;
-    qr.test_case = q.value("test_case", "");
-    qr.query = q.value("query", "");
-    qr.kind = q.value("kind", "");
-    qr.cases = q.value("cases", 0);
-    qr.passed = q.value("passed", 0);
-    qr.ambiguous = q.value("ambiguous", 0);
-    qr.failed = q.value("failed", 0);
-    qr.not_implemented = q.value("not_implemented", "");
-    qr.error = q.value("error", "");
-    if (q.contains("failure")) {
-      const auto& f = q["failure"];
-      qr.failure = Failure{f.value("title", ""), f.value("input", ""),  f.value("expected", ""), f.value("got", ""),
-                           f.value("why", ""),   f.value("replay", ""), f.value("shrinks", 0)};
-    }
-    r.queries.push_back(qr);
-  }
-} catch (const nlohmann::json::exception&) {
-  // Cut short by a crash, or not the harness's: what the run printed says more.
+  const labkit::report::Step step = labkit::report::step_from_json(nlohmann::json::parse(file.text));
+  r.finished = step.finished;
+  r.test_cases = step.test_cases;
+  r.queries = step.queries;
+} catch (const std::exception&) {
+  // Cut short by the judge's death (it rewrites the report as it goes): what the run
+  // printed says more.
   r.finished = false;
   r.test_cases.clear();
   r.queries.clear();
 }
 
-std::string inflight_token(const std::string& output) {
-  const std::string mark = "LABKIT-INFLIGHT ";
-  const auto at = output.rfind(mark);
-  if (at == std::string::npos) return "";
-  const auto end = output.find('\n', at);
-  return output.substr(at + mark.size(), end == std::string::npos ? std::string::npos : end - at - mark.size());
+// The case in flight when the judge's process died: the file only that process writes.
+std::string inflight_token(const fs::path& file) {
+  const UntrustedRead read = read_untrusted_file(file.string(), 1 << 18);
+  return read.error.empty() ? read.text : "";
 }
 
-bool out_of_memory(const StepResult& r) {
-  if (r.run.output.find("std::bad_alloc") != std::string::npos) return true;
-  for (const QueryResult& q : r.queries)
-    if (q.failure && q.failure->got.find("std::bad_alloc") != std::string::npos) return true;
-  return false;
-}
+// The judge's own process ran out of memory (the code under test running out costs its
+// case: its answer says so).
+bool out_of_memory(const StepResult& r) { return r.run.output.find("std::bad_alloc") != std::string::npos && !r.finished; }
 
 Status decide(const StepResult& r) {
   if (r.run.flooded) return Status::flooded;
@@ -95,7 +71,9 @@ Status decide(const StepResult& r) {
   if (!r.run.started) return Status::crashed;
   if (out_of_memory(r)) return Status::out_of_memory;
   if (r.run.signal != 0) return Status::crashed;
-  if (r.run.output.find("No test cases matched") != std::string::npos) return Status::no_tests;
+  // A session that ran no test case for the filter (the report says so, not the
+  // output, which the code under test shares).
+  if (r.finished && r.test_cases.empty()) return Status::no_tests;
   // The session never returned: exit() in the code under test (even exit(0)), or a death
   // the harness never saw. Its counts stop where it stopped, so they are not a verdict.
   if (!r.finished) return Status::exited_early;
@@ -171,49 +149,54 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
   const fs::path report = fs::path(scratch) / "report.json";
 
   std::shared_ptr<void> answerer_lease;  // held until the step ends: the answerer's uid
-  Environment env = {{"LABKIT_REPORT", report.string()},
-                     {"LABKIT_ANSWERER", answerer_command(programs, options, answerer_scratch, &answerer_lease)}};
-  if (options.call_seconds > 0) env.push_back({"LABKIT_CALL_SECONDS", std::to_string(options.call_seconds)});
+  const fs::path inflight = fs::path(scratch) / "inflight";
+  Environment env = {{variable::report, report.string()},
+                     {variable::inflight, inflight.string()},
+                     {variable::answerer, answerer_command(programs, options, answerer_scratch, &answerer_lease)}};
+  if (options.call_seconds > 0) env.push_back({variable::call_seconds, std::to_string(options.call_seconds)});
   if (!options.seed.empty() && options.hide_seed) {
     // A secret seed never goes on a command line or in the environment (which other
     // processes could show): a file the harness deletes, in the judge's folder.
     const fs::path seed_file = fs::path(scratch) / ".seed";
     std::ofstream(seed_file) << options.seed;
     fs::permissions(seed_file, fs::perms::owner_read | fs::perms::owner_write);
-    env.push_back({"LABKIT_SEED_FILE", seed_file.string()});
+    env.push_back({variable::seed_file, seed_file.string()});
   } else if (!options.seed.empty()) {
-    env.push_back({"LABKIT_SEED", options.seed});
+    env.push_back({variable::seed, options.seed});
   }
-  if (options.cases > 0) env.push_back({"LABKIT_CASES", std::to_string(options.cases)});
-  if (!options.replay.empty()) env.push_back({"LABKIT_REPLAY", options.replay});
-  if (options.hide_seed) env.push_back({"LABKIT_HIDE_SEED", "1"});
-  if (options.count_all) env.push_back({"LABKIT_COUNT_ALL", "1"});
-  if (options.describe_only) env.push_back({"LABKIT_DESCRIBE", "1"});
+  if (options.cases > 0) env.push_back({variable::cases, std::to_string(options.cases)});
+  if (!options.replay.empty()) env.push_back({variable::replay, options.replay});
+  if (options.hide_seed) env.push_back({variable::hide_seed, "1"});
+  if (options.count_all) env.push_back({variable::count_all, "1"});
+  if (options.describe_only) env.push_back({variable::describe, "1"});
   const std::string filter = "[lab" + lab.id + "][step" + std::to_string(step.number) + "]";
   r.run = run({programs.judge, filter}, env, options.limits, scratch);
   read_report(report, r);
+  r.inflight = inflight_token(inflight);
   std::error_code ignored;
   fs::remove_all(scratch, ignored);
   if (answerer_scratch != scratch) fs::remove_all(answerer_scratch, ignored);
 
-  r.inflight = inflight_token(r.run.output);
   r.status = decide(r);
   if (r.status == Status::crashed) {
-    if (r.run.signal) r.detail = "the test process was killed by " + signal_name(r.run.signal);
+    // The judge's process is the kit's: its death is never the student's code crashing.
+    if (r.run.signal) r.detail = "the kit's test process was killed by " + signal_name(r.run.signal);
     else r.detail = "the test binary could not be run: " + r.run.output.substr(0, 300);
   }
   if (r.status == Status::exited_early) {
-    r.detail = "the test process ended before its tests did, with exit status " + std::to_string(r.run.exit_code) +
-               " (does the code call exit(), quick_exit() or _exit()?)";
+    r.detail = "the kit's test process ended before its tests did, with exit status " +
+               std::to_string(r.run.exit_code) + ": a kit error, not yours (please report it)";
   }
   if (r.status == Status::out_of_memory)
-    r.detail = "it ran out of memory (std::bad_alloc" +
+    r.detail = "the kit's test process ran out of memory (std::bad_alloc" +
                (options.limits.memory_bytes ? ", the limit is " + std::to_string(options.limits.memory_bytes >> 20) + " MB" : std::string()) +
                ")";
   if (r.status == Status::timed_out)
-    r.detail = "it did not finish within " + std::to_string(int(options.limits.seconds)) + " s (an endless loop?)";
+    r.detail = "the step did not finish within " + std::to_string(int(options.limits.seconds)) +
+               " s: the code under test is too slow for its cases (each call has a time limit too)";
   if (r.status == Status::flooded)
-    r.detail = "it printed more than " + std::to_string(options.limits.flood_bytes >> 20) + " MB and was stopped";
+    r.detail = "it printed more than " + std::to_string(options.limits.flood_bytes >> 20) +
+               " MB and was stopped (what the code under test prints counts: remove debug prints)";
 
   for (const QueryResult& q : r.queries) {
     if (q.kind == "examples") r.examples += q.cases;

@@ -9,6 +9,8 @@
 #include "process.h"
 #include "sandbox.h"
 
+#include "common/protocol/report.h"
+
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,24 +32,10 @@ enum class Status {
 
 std::string status_word(Status s);
 
-struct Failure {
-  std::string title, input, expected, got, why, replay;
-  int shrinks = 0;
-};
-
-struct QueryResult {
-  std::string test_case, query, kind;
-  int cases = 0, passed = 0, ambiguous = 0, failed = 0;
-  std::string not_implemented, error;
-  std::optional<Failure> failure;
-};
-
-struct TestCaseResult {
-  std::string name;
-  bool passed = false;
-  std::vector<std::string> failures;
-  std::string not_implemented;
-};
+// The judge's report, as common/protocol/report.h defines it.
+using Failure = labkit::report::Failure;
+using QueryResult = labkit::report::Query;
+using TestCaseResult = labkit::report::TestCase;
 
 struct StepResult {
   Status status = Status::not_built;

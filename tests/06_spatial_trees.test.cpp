@@ -519,7 +519,7 @@ TEST_CASE("L06S7 robustness: random exact degenerate cases", "[lab06][step7][ora
 // ---- Figures (not a graded step) ----------------------------------------------------------------
 // Primitive tests per query on 10k, 100k and 1M triangles, against brute force (every
 // triangle once). Hidden: run it with
-//   build/test_06_spatial_trees_reference "[lab06-figures]"
+//   LABKIT_ANSWERER=build/answer_06_spatial_trees_reference build/test_06_spatial_trees "[lab06-figures]"
 // It counts calls of given::segment_triangle; it times nothing.
 TEST_CASE("L06 figures: primitive tests per query", "[.][lab06-figures]") {
   const int segments = 1000;

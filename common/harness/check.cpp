@@ -8,11 +8,14 @@
 #include <cstring>
 #include <deque>
 #include <fstream>
+#include <fcntl.h>
 #include <unistd.h>
 
 namespace labkit::check {
 
 namespace {
+
+namespace variable = labkit::report::variable;
 
 std::uint64_t fnv1a(const std::string& text) {
   std::uint64_t h = 1469598103934665603ull;
@@ -36,28 +39,28 @@ std::uint64_t parse_seed(const std::string& text) {
 
 Settings read_settings() {
   Settings s;
-  if (const char* v = std::getenv("LABKIT_SEED"); v && *v) s.seed = parse_seed(v);
-  if (const char* v = std::getenv("LABKIT_CASES"); v && *v) {
+  if (const char* v = std::getenv(variable::seed); v && *v) s.seed = parse_seed(v);
+  if (const char* v = std::getenv(variable::cases); v && *v) {
     const long n = std::strtol(v, nullptr, 10);
     s.cases = n >= 1 ? int(std::min(n, 100000000L)) : 1;
   }
-  if (const char* v = std::getenv("LABKIT_REPLAY")) s.replay = v;
-  if (const char* v = std::getenv("LABKIT_REPORT")) s.report = v;
-  if (const char* v = std::getenv("LABKIT_HIDE_SEED")) s.hide_seed = std::string(v) == "1";
-  if (const char* v = std::getenv("LABKIT_DESCRIBE")) s.describe_only = std::string(v) == "1";
-  if (const char* v = std::getenv("LABKIT_COUNT_ALL")) s.count_all = std::string(v) == "1";
+  if (const char* v = std::getenv(variable::replay)) s.replay = v;
+  if (const char* v = std::getenv(variable::report)) s.report = v;
+  if (const char* v = std::getenv(variable::hide_seed)) s.hide_seed = std::string(v) == "1";
+  if (const char* v = std::getenv(variable::describe)) s.describe_only = std::string(v) == "1";
+  if (const char* v = std::getenv(variable::count_all)) s.count_all = std::string(v) == "1";
   // A graded run's seed is a secret: it comes in a file that is deleted once read, and
   // is wiped from the environment (getenv, and /proc/self/environ, which shows the
   // original bytes in place), before any code under test runs (see read_early below).
-  if (const char* v = std::getenv("LABKIT_SEED_FILE"); v && *v) {
+  if (const char* v = std::getenv(variable::seed_file); v && *v) {
     std::ifstream in(v);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (!text.empty()) s.seed = parse_seed(text);
     std::remove(v);
   }
-  if (char* v = std::getenv("LABKIT_SEED"); v && s.hide_seed) {
+  if (char* v = std::getenv(variable::seed); v && s.hide_seed) {
     std::memset(v, 0, std::strlen(v));
-    unsetenv("LABKIT_SEED");
+    unsetenv(variable::seed);
   }
   return s;
 }
@@ -132,29 +135,18 @@ void clear_inflight() { inflight_length = 0; }
 void save_report() {
   const std::string& path = settings().report;
   if (path.empty()) return;
-  nlohmann::json j;
-  j["seed"] = settings().hide_seed ? nlohmann::json("hidden") : nlohmann::json(settings().seed);
-  j["cases_per_query"] = settings().cases;
-  j["finished"] = run_finished;
-  j["test_cases"] = nlohmann::json::array();
-  for (const report::TestCase& t : test_cases()) j["test_cases"].push_back(report::to_json(t));
-  j["queries"] = nlohmann::json::array();
-  for (const QueryReport& q : queries()) {
-    nlohmann::json e = {{"test_case", q.test_case}, {"query", q.query},     {"kind", q.kind},
-                        {"cases", q.cases},         {"passed", q.passed},   {"ambiguous", q.ambiguous},
-                        {"failed", q.failed},       {"not_implemented", q.not_implemented},
-                        {"error", q.error}};
-    if (q.failure)
-      e["failure"] = {{"title", q.failure->title},   {"input", q.failure->input}, {"expected", q.failure->expected},
-                      {"got", q.failure->got},       {"why", q.failure->why},     {"replay", q.failure->replay},
-                      {"shrinks", q.failure->shrinks}};
-    j["queries"].push_back(e);
-  }
-  // Written beside and renamed: a crash mid-write leaves the previous report whole.
+  labkit::report::Step step;
+  step.seed = settings().hide_seed ? "hidden" : std::to_string(settings().seed);
+  step.cases_per_query = settings().cases;
+  step.finished = run_finished;
+  step.test_cases.assign(test_cases().begin(), test_cases().end());
+  step.queries.assign(queries().begin(), queries().end());
+  // Written beside and renamed: a crash mid-write leaves the previous report whole. What
+  // the code under test threw is its own text: invalid UTF-8 in it is replaced, not fatal.
   const std::string partial = path + ".partial";
   {
     std::ofstream out(partial);
-    out << j.dump(1) << '\n';
+    out << labkit::report::to_json(step).dump(1, ' ', false, nlohmann::json::error_handler_t::replace) << '\n';
   }
   std::rename(partial.c_str(), path.c_str());
 }
@@ -163,13 +155,9 @@ void report_to_catch(const QueryReport& q, bool announce_not_implemented) {
   if (!q.error.empty()) {
     FAIL_CHECK(q.query << ": " << q.error);
   } else if (q.failure) {
-    const Failure& f = *q.failure;
-    std::string text = q.query + ": " + f.title;
-    if (f.shrinks > 0) text += " (shrunk " + std::to_string(f.shrinks) + " times)";
-    text += "\n  input:\n    " + report::indent(f.input, "    ");
-    text += "\n  expected: " + f.expected + "\n  got:      " + f.got + "\n  why:      " + f.why;
-    if (!settings().hide_seed) text += "\n  seed:     " + std::to_string(settings().seed);
-    text += "\n  replay:   ./labkit check " + current_lab() + " --case '" + f.replay + "'";
+    std::string text = labkit::report::format(*q.failure, q.query, "  ");
+    if (!settings().hide_seed) text += "  seed      " + std::to_string(settings().seed) + "\n";
+    text += "  replay    ./labkit check " + current_lab() + " --case '" + q.failure->replay + "'";
     FAIL_CHECK(text);
   } else if (!q.not_implemented.empty()) {
     if (announce_not_implemented) FAIL_CHECK(q.query << ": " << q.not_implemented);
@@ -181,21 +169,6 @@ void report_to_catch(const QueryReport& q, bool announce_not_implemented) {
 }  // namespace detail
 
 namespace report {
-
-std::string indent(const std::string& text, const std::string& prefix) {
-  std::string out;
-  for (char c : text) {
-    out += c;
-    if (c == '\n') out += prefix;
-  }
-  return out;
-}
-
-nlohmann::json to_json(const TestCase& t) {
-  return {{"name", t.name},         {"tags", t.tags},
-          {"passed", t.passed},     {"ended", t.ended},
-          {"failures", t.failures}, {"not_implemented", t.not_implemented}};
-}
 
 void test_case_started(const std::string& name, const std::vector<std::string>& tags) {
   test_cases().push_back({name, tags, false, false, {}, {}});
@@ -226,13 +199,15 @@ void session_finished() {
   detail::save_report();
 }
 
+// Where a crash or the runner's time-out writes the case in flight: a file in the judge's
+// own folder (LABKIT_INFLIGHT), opened before anything runs. Never the output, which the
+// code under test shares and could fake.
+int inflight_file = 2;
+
 // Fatal signals and the runner's SIGTERM on a time-out: name the input, then die as asked.
 extern "C" void on_fatal_signal(int signal) {
-  static const char head[] = "\nLABKIT-INFLIGHT ";
   if (inflight_length > 0) {
-    ssize_t ignored = write(2, head, sizeof head - 1);
-    ignored = write(2, inflight, inflight_length);
-    ignored = write(2, "\n", 1);
+    ssize_t ignored = write(inflight_file, inflight, inflight_length);
     (void)ignored;
   }
   std::signal(signal, SIG_DFL);
@@ -240,6 +215,10 @@ extern "C" void on_fatal_signal(int signal) {
 }
 
 void install_signal_handlers() {
+  if (const char* path = std::getenv(variable::inflight); path && *path) {
+    const int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
+    if (fd >= 0) inflight_file = fd;
+  }
   // Its own stack, so that a stack overflow can still be reported.
   static char alternate_stack[1 << 16];
   stack_t stack{};

@@ -14,6 +14,7 @@
 #include "common/harness/codec.h"
 #include "common/not_implemented.h"
 #include "common/protocol/answerer.h"
+#include "common/protocol/report.h"
 
 #include <catch2/catch.hpp>
 #include <rapidcheck.h>
@@ -135,28 +136,9 @@ void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& j
 // Everything below is the machinery behind these three.
 namespace detail {
 
-struct Failure {
-  std::string title;
-  std::string input;
-  std::string expected;
-  std::string got;
-  std::string why;
-  std::string replay;
-  int shrinks = 0;
-};
-
-struct QueryReport {
-  std::string test_case;
-  std::string query;
-  std::string kind;  // "examples" or "random"
-  int cases = 0;
-  int passed = 0;
-  int ambiguous = 0;
-  int failed = 0;
-  std::string not_implemented;  // the stub's message, when a stub was hit
-  std::string error;            // a failure of the harness itself
-  std::optional<Failure> failure;
-};
+// The report's types (common/protocol/report.h): the runner reads exactly these.
+using Failure = labkit::report::Failure;
+using QueryReport = labkit::report::Query;
 
 QueryReport& entry(const std::string& query, const std::string& kind);
 void save_report();

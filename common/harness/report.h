@@ -4,24 +4,14 @@
 // how far a run got when the code under test crashes or hangs.
 #pragma once
 
-#include <nlohmann/json_fwd.hpp>
+#include "common/protocol/report.h"
 
 #include <string>
 #include <vector>
 
 namespace labkit::check::report {
 
-struct TestCase {
-  std::string name;
-  std::vector<std::string> tags;
-  bool passed = false;
-  bool ended = false;                 // false when the process died or exited inside it
-  std::vector<std::string> failures;  // the first few failed assertions, as Catch words them
-  std::string not_implemented;        // set when a stub was reached
-};
-
-nlohmann::json to_json(const TestCase& t);
-std::string indent(const std::string& text, const std::string& prefix);
+using TestCase = labkit::report::TestCase;
 
 void test_case_started(const std::string& name, const std::vector<std::string>& tags);
 void assertion_failed(const std::string& message);

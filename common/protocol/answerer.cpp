@@ -1,4 +1,5 @@
 #include "common/protocol/answerer.h"
+#include "common/protocol/report.h"
 
 #include <nlohmann/json.hpp>
 
@@ -27,7 +28,7 @@ constexpr const char* kHello = "labkit-answerer 1";
 constexpr int kFailedStarts = 3;
 
 std::vector<std::string> command_from_environment() {
-  const char* v = std::getenv("LABKIT_ANSWERER");
+  const char* v = std::getenv(report::variable::answerer);
   if (!v || !*v)
     throw std::runtime_error(
         "LABKIT_ANSWERER is not set: this test program runs the lab's code in a process of its own and needs its "
@@ -102,7 +103,7 @@ Answerer& Answerer::instance() {
 Answerer::Answerer(std::vector<std::string> argv) : argv_(std::move(argv)) {
   // Writing to an answerer that just died must not kill the judge.
   std::signal(SIGPIPE, SIG_IGN);
-  if (const char* v = std::getenv("LABKIT_CALL_SECONDS"); v && *v) {
+  if (const char* v = std::getenv(report::variable::call_seconds); v && *v) {
     const double s = std::strtod(v, nullptr);
     if (s > 0) call_limit_ = std::chrono::milliseconds(long(s * 1000));
   }
@@ -111,10 +112,14 @@ Answerer::Answerer(std::vector<std::string> argv) : argv_(std::move(argv)) {
 Answerer::~Answerer() { stop(true); }
 
 bool Answerer::start() {
-  int requests[2], answers[2];
+  int requests[2], answers[2], output[2];
   if (pipe2(requests, O_CLOEXEC) != 0) return false;
   if (pipe2(answers, O_CLOEXEC) != 0) {
     close(requests[0]), close(requests[1]);
+    return false;
+  }
+  if (pipe2(output, O_CLOEXEC) != 0) {
+    close(requests[0]), close(requests[1]), close(answers[0]), close(answers[1]);
     return false;
   }
   std::vector<char*> args;
@@ -131,7 +136,8 @@ bool Answerer::start() {
     if (getppid() != judge) _exit(127);
     const int null = open("/dev/null", O_RDONLY);
     dup2(null, 0);
-    dup2(2, 1);  // its prints go where the judge's diagnostics go, never into the protocol
+    dup2(output[1], 1);  // its prints: to the judge, never into the protocol
+    dup2(output[1], 2);
     // Out of the way first (the pipes may already sit on 3 or 4), then in place; dup2
     // leaves the copies open across exec.
     const int in = fcntl(requests[0], F_DUPFD_CLOEXEC, 10), out = fcntl(answers[1], F_DUPFD_CLOEXEC, 10);
@@ -143,23 +149,44 @@ bool Answerer::start() {
   }
   close(requests[0]);
   close(answers[1]);
+  close(output[1]);
   if (pid < 0) {
-    close(requests[1]), close(answers[0]);
+    close(requests[1]), close(answers[0]), close(output[0]);
     return false;
   }
   pid_ = pid;
   to_ = requests[1];
   from_ = answers[0];
+  output_ = output[0];
+  output_tail_.clear();
   fcntl(to_, F_SETFL, O_NONBLOCK);
   fcntl(from_, F_SETFL, O_NONBLOCK);
+  fcntl(output_, F_SETFL, O_NONBLOCK);
   greeted_ = false;
   return true;
+}
+
+void Answerer::drain_output() {
+  constexpr std::size_t kTail = 600;
+  char buffer[1 << 14];
+  while (output_ >= 0) {
+    const ssize_t n = read(output_, buffer, sizeof buffer);
+    if (n == 0) {  // it closed its output: nothing more will come
+      close(output_);
+      output_ = -1;
+    }
+    if (n <= 0) break;
+    if (write(2, buffer, std::size_t(n)) < 0) {}
+    output_tail_.append(buffer, std::size_t(n));
+    if (output_tail_.size() > 2 * kTail) output_tail_.erase(0, output_tail_.size() - kTail);
+  }
 }
 
 void Answerer::stop(bool kill_it) {
   if (to_ >= 0) close(to_);
   if (from_ >= 0) close(from_);
-  to_ = from_ = -1;
+  if (output_ >= 0) close(output_);
+  to_ = from_ = output_ = -1;
   if (pid_ > 0) {
     if (kill_it) {
       kill(-pid_, SIGKILL);
@@ -176,21 +203,22 @@ std::string Answerer::ended_how() {
   if (to_ >= 0) close(to_);
   if (from_ >= 0) close(from_);
   to_ = from_ = -1;
-  int status = 0;
+  drain_output();
   std::string how = "it stopped answering";
-  if (pid_ > 0 && waitpid(pid_, &status, 0) == pid_) {
-    if (WIFSIGNALED(status)) how = signal_words(WTERMSIG(status));
+  // How it ended, read without reaping it: until it is reaped its pid stays its own, so
+  // killing its group below can never reach a process that took the pid over.
+  siginfo_t info{};
+  if (pid_ > 0 && waitid(P_PID, id_t(pid_), &info, WEXITED | WNOWAIT) == 0) {
+    const int code = info.si_status;
+    if (info.si_code == CLD_KILLED || info.si_code == CLD_DUMPED) how = signal_words(code);
     // A confinement wrapper reports its child's signal N as exit status 128 + N.
-    else if (WIFEXITED(status) && WEXITSTATUS(status) > 128 && WEXITSTATUS(status) < 128 + 65)
-      how = signal_words(WEXITSTATUS(status) - 128);
-    else if (WIFEXITED(status) && WEXITSTATUS(status) == 127)
-      how = "its program could not be started (" + argv_[0] + ": the reason is in the output above)";
-    else if (WIFEXITED(status))
-      how = "the process exited with status " + std::to_string(WEXITSTATUS(status)) +
+    else if (code > 128 && code < 128 + 65) how = signal_words(code - 128);
+    else if (code == 127) how = "its program could not be started (" + argv_[0] + ": the reason is in the output above)";
+    else
+      how = "the process exited with status " + std::to_string(code) +
             " in the middle of a call (exit(), quick_exit() or _exit() in the code?)";
   }
-  kill(-pid_, SIGKILL);
-  pid_ = -1;
+  stop(true);
   return how;
 }
 
@@ -200,7 +228,7 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
   int failed_starts = 0;
   while (received < requests.size()) {
     const auto fail_rest = [&](Response::Kind kind, const std::string& detail) {
-      for (; received < requests.size(); ++received) out[received] = {kind, {}, detail};
+      for (; received < requests.size(); ++received) out[received] = {kind, {}, detail, {}};
     };
     if (!start_failure_.empty()) {
       fail_rest(Response::Kind::crashed, start_failure_);
@@ -230,7 +258,7 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
     std::string problem;  // why this run of the answerer ended early
     Response::Kind kind = Response::Kind::crashed;
     while (received < requests.size() && problem.empty()) {
-      pollfd fds[2] = {{from_, POLLIN, 0}, {written < outbox.size() ? to_ : -1, POLLOUT, 0}};
+      pollfd fds[3] = {{from_, POLLIN, 0}, {written < outbox.size() ? to_ : -1, POLLOUT, 0}, {output_, POLLIN, 0}};
       const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
       if (wait <= 0) {
         kind = Response::Kind::timed_out;
@@ -238,10 +266,11 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
                   " s (the time limit of one call): an endless loop?";
         break;
       }
-      if (poll(fds, 2, int(std::min<long long>(wait, 1000))) < 0 && errno != EINTR) {
+      if (poll(fds, 3, int(std::min<long long>(wait, 1000))) < 0 && errno != EINTR) {
         problem = std::string("poll failed: ") + strerror(errno);
         break;
       }
+      if (fds[2].revents & (POLLIN | POLLHUP | POLLERR)) drain_output();
       if (fds[1].revents & (POLLOUT | POLLERR | POLLHUP)) {
         const ssize_t n = write(to_, outbox.data() + written, outbox.size() - written);
         if (n > 0) written += std::size_t(n);
@@ -262,7 +291,7 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
               greeted_ = true;
               failed_starts = 0;
             } else {
-              out[received++] = {Response::Kind::answered, std::move(payload), {}};
+              out[received++] = {Response::Kind::answered, std::move(payload), {}, {}};
             }
             deadline = Clock::now() + call_limit_;
           }
@@ -284,7 +313,8 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
       continue;
     }
     stop(true);
-    if (greeted_ || kind != Response::Kind::crashed) out[received++] = {kind, {}, problem};
+    const std::string printed = output_tail_.substr(output_tail_.size() - std::min<std::size_t>(output_tail_.size(), 600));
+    if (greeted_ || kind != Response::Kind::crashed) out[received++] = {kind, {}, problem, printed};
   }
   return out;
 }

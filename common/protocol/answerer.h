@@ -10,8 +10,8 @@
 //   answer, or remote::Failed  <--- response ---  (common/protocol/lab_answerer.cpp)
 //
 // Requests travel on the answerer's file descriptor 3 and answers on 4, each framed as
-// an 8-byte length and the bytes (common/protocol/wire.h). The answerer's stdout and
-// stderr are the judge's stderr, so a student's debug prints still show.
+// an 8-byte length and the bytes (common/protocol/wire.h). What the answerer prints goes
+// on to the judge's stderr, and its last lines come with a crash's report.
 //
 // Batches: the harness asks for thousands of random cases at a time. Between
 // begin_batch() and end_batch(), a call whose answer is not known yet is recorded and
@@ -37,6 +37,7 @@ struct Response {
   Kind kind = Kind::answered;
   std::string bytes;   // answered: the answerer's reply (a status byte, then its data)
   std::string detail;  // otherwise: what happened, in words
+  std::string output;  // crashed: the last of what it printed
 };
 
 // What the answerer replies, in the first byte of an answered call.
@@ -77,10 +78,12 @@ class Answerer {
   bool start();
   void stop(bool kill_it);
   std::string ended_how();
+  void drain_output();  // what the answerer printed: passed on, its tail kept
 
   std::vector<std::string> argv_;
   pid_t pid_ = -1;
-  int to_ = -1, from_ = -1;
+  int to_ = -1, from_ = -1, output_ = -1;
+  std::string output_tail_;  // the last of what the running answerer printed
   bool greeted_ = false;
   std::string start_failure_;  // set when the program cannot answer anything at all
 

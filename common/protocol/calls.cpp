@@ -24,7 +24,8 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
   switch (response.kind) {
     case Response::Kind::crashed:
       throw Failed("a crash", "your code crashed during this call (" + response.detail +
-                                  "); add --debug to the replay command below to see the line it crashed on");
+                                  "); add --debug to the replay command below to see the line it crashed on" +
+                                  (response.output.empty() ? "" : "\nwhat it printed last:\n" + response.output));
     case Response::Kind::timed_out:
       throw Failed(kNoAnswer, "your code did not finish this call: " + response.detail +
                                     ". Every loop needs a bound that the header's rules guarantee");
@@ -58,7 +59,11 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
       throw NotImplemented(open != std::string::npos && close > open ? message.substr(open + 1, close - open - 1)
                                                                      : message);
     }
-    case Status::threw: throw std::runtime_error(message);
+    case Status::threw:
+      if (message == "std::bad_alloc")
+        throw Failed("an exception: std::bad_alloc", "your code ran out of memory during this call: an allocation "
+                                                     "too large for the memory limit, or one that never stops growing?");
+      throw std::runtime_error(message);
     case Status::unknown_call:
       throw std::logic_error("kit error: the answerer cannot run " + id + ": " + message +
                              " (is it built from the same kit as the tests?)");

@@ -48,26 +48,51 @@ stand_in_kit() {
 build="$work/build"
 stand_in_kit "$build"
 # The judge: every call passes, unless the answerer ends badly; then one call failed,
-# in the real judge's words (common/protocol/calls.cpp), with a replay token of its own.
-# Described (LABKIT_DESCRIBE), it names the case and runs no code under test.
+# in the real judge's words (common/protocol/calls.cpp), with a replay token of its own
+# and the last of what the answerer printed. Described (LABKIT_DESCRIBE), it names the
+# case and runs no code under test. Its report has every field common/protocol/report.h
+# reads.
 cat >"$build/test_02_segment_triangle" <<'EOF'
-#!/bin/sh
-if [ -n "${LABKIT_DESCRIBE:-}" ]; then
-  printf '{"finished": true, "test_cases": [], "queries": [{"query": "q", "kind": "examples", "cases": 1, "failure": {"title": "described", "input": "the described input", "replay": "%s"}}]}' "$LABKIT_REPLAY" >"$LABKIT_REPORT"
-  exit 0
-fi
-printf '{"finished": true, "test_cases": [], "queries": [{"query": "q", "kind": "examples", "cases": 1, "passed": 1}]}' >"$LABKIT_REPORT"
+#!/usr/bin/env python3
+import json, os, subprocess, sys
+
+def write(queries):
+    with open(os.environ["LABKIT_REPORT"], "w") as f:
+        json.dump({"seed": "hidden", "cases_per_query": 1, "finished": True, "queries": queries,
+                   "test_cases": [{"name": "t", "tags": [], "passed": queries[0]["failed"] == 0, "ended": True,
+                                   "failures": [], "not_implemented": ""}]}, f)
+
+def query(name, passed, failure=None):
+    return {"test_case": "t", "query": name, "kind": "random", "cases": 1, "passed": passed, "ambiguous": 0,
+            "failed": 1 - passed, "not_implemented": "", "error": "", "failure": failure}
+
+def failure(title, input, got, why, replay):
+    return {"title": title, "input": input, "expected": "yes", "got": got, "why": why, "replay": replay, "shrinks": 0}
+
+if os.environ.get("LABKIT_DESCRIBE"):
+    write([query("q", 0, failure("described", "the described input", "", "", os.environ.get("LABKIT_REPLAY", "")))])
+    sys.exit(0)
+write([query("q", 1)])
 # As the real judge starts it: LABKIT_ANSWERER is a path or a JSON array (the grader's
-# confinement around it), the environment is PATH alone, its output is the judge's.
-python3 -c 'import json, os, sys
-command = sys.argv[1]
+# confinement around it), the environment is PATH alone; what it prints goes on to the
+# judge's stderr, and its tail comes with a crash.
+command = os.environ["LABKIT_ANSWERER"]
 argv = json.loads(command) if command.startswith("[") else [command]
-os.execvpe(argv[0], argv, {"PATH": "/usr/bin:/bin"})' "$LABKIT_ANSWERER" </dev/null >&2
-ended=$?
-[ $ended -eq 0 ] && exit 0
-if [ $ended -gt 128 ]; then how="killed by signal $((ended - 128))"; else how="it exited with status $ended"; fi
-printf '{"finished": true, "test_cases": [], "queries": [{"query": "segment_plane", "kind": "random", "cases": 1, "failed": 1, "failure": {"title": "random case", "input": "in", "expected": "yes", "got": "a crash", "why": "your code crashed during this call (%s)", "replay": "segment_plane:1,-2.5,1e+300,inf"}}]}' "$how" >"$LABKIT_REPORT"
-exit 1
+answerer = subprocess.Popen(argv, env={"PATH": "/usr/bin:/bin"}, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                            stderr=subprocess.STDOUT)
+tail = b""
+for chunk in iter(lambda: answerer.stdout.read1(65536), b""):
+    sys.stderr.buffer.write(chunk)
+    tail = (tail + chunk)[-600:]
+ended = answerer.wait()
+if ended == 0:
+    sys.exit(0)
+signal = -ended if ended < 0 else ended - 128
+how = f"killed by signal {signal}" if signal > 0 else f"it exited with status {ended}"
+printed = tail.decode("utf-8", "replace")
+write([query("segment_plane", 0, failure("random case", "in", "a crash",
+      f"your code crashed during this call ({how})\nwhat it printed last:\n{printed}", "segment_plane:1,-2.5,1e+300,inf"))])
+sys.exit(1)
 EOF
 chmod 755 "$build/test_02_segment_triangle"
 # grade BUILD ARGS...: ./labkit grade ARGS with the stand-in kit BUILD.
@@ -84,19 +109,18 @@ student() { mkdir -p "$subs/$1/$(dirname $lab02)" && printf '%s\n' "$2" >"$subs/
 # disk) and the grader's under /tmp. Then they end well.
 tamper() { printf 'for report in "${LABKIT_REPORT:-}" ../report.json ../*/report.json /tmp/labkit-grade.*/*/lab02/*/report.json; do %s; done 2>/dev/null; :' "$1"; }
 crafted="segment_plane:1' ; touch $owned ; '"
-forged='{"finished": true, "test_cases": [], "queries": [{"query": "segment_plane", "kind": "random", "cases": 1, "failed": 1, "failure": {"title": "t", "input": "i", "expected": "e", "got": "g", "why": "w", "replay": "'"$crafted"'"}}]}'
+forged='{"seed": "hidden", "cases_per_query": 1, "finished": true, "test_cases": [{"name": "t", "tags": [], "passed": false, "ended": true, "failures": [], "not_implemented": ""}], "queries": [{"test_case": "t", "query": "segment_plane", "kind": "random", "cases": 1, "passed": 0, "ambiguous": 0, "failed": 1, "not_implemented": "", "error": "", "failure": {"title": "t", "input": "i", "expected": "e", "got": "g", "why": "w", "replay": "'"$crafted"'", "shrinks": 0}}]}'
 
 student passing ': nothing to add'
 # A crafted in-flight marker, then a crash: one call fails, and the judge names its case.
 student crash "echo \"LABKIT-INFLIGHT $crafted\"; kill -SEGV \$\$"
 # Accented text (the kept tail starts in the middle of it), a Latin-1 byte, terminal
-# escapes, then death as a C++ program dies of an uncaught std::bad_alloc (one that runs
-# out of memory before it answers): the one end the answerer can still give a step
-# whose feedback shows its last output.
-student latin1_out_of_memory 'i=0; while [ $i -lt 700 ]; do printf "\303\251"; i=$((i + 1)); done; printf "\nr\303\251sultat \351 \033[2J\033]0;owned\007\n\033[31mred\r\n"
+# escapes, then death as a C++ program dies of an uncaught std::bad_alloc: one call
+# fails, and what it printed last comes with it, as safe text.
+student latin1_crash 'i=0; while [ $i -lt 700 ]; do printf "\303\251"; i=$((i + 1)); done; printf "\nr\303\251sultat \351 \033[2J\033]0;owned\007\n\033[31mred\r\n"
 printf "terminate called after throwing an instance of '"'std::bad_alloc'"'\n  what():  std::bad_alloc\n"; kill -ABRT $$'
-# An in-flight marker, then a flood of output: the grader kills the judge's process
-# (SIGKILL: the harness names no case), so the marker it finds is the student's.
+# An in-flight marker printed, then a flood of output: the grader stops the judge's
+# process, and names the case only from the judge's own file, never from the output.
 student crafted_inflight "echo \"LABKIT-INFLIGHT $crafted\"; yes flooding the grader"
 student faked_inflight "echo 'LABKIT-INFLIGHT segment_plane:4,5,6'; yes flooding the grader"
 student latin1_compile "$(printf '#error caf\351 \033[2J\033]0;owned\007 \303\251')"
@@ -151,7 +175,7 @@ says() { grep -qF -- "$2" "$out/$1/report.txt" || fail "$1: the report does not 
 full_marks() { awk -F'\t' 'NR > 1 && $5 != $6 { bad = 1 } END { exit bad }' "$out/$1/steps.tsv" || fail "$1: a step lost points"; }
 status passing passed
 status crash failing
-status latin1_out_of_memory "out of memory"
+status latin1_crash failing
 status crafted_inflight "too much output"
 status faked_inflight "too much output"
 status latin1_compile "does not compile"
@@ -164,20 +188,19 @@ status bad_members_tar passed
 status bomb "not submitted"
 
 # 1. Untrusted text: invalid UTF-8 shown as U+FFFD, terminal controls shown as text.
-says latin1_out_of_memory $'r\u00e9sultat \ufffd \\x1b[2J\\x1b]0;owned\\x07'
-says latin1_out_of_memory '\x1b[31mred'
+says latin1_crash $'r\u00e9sultat \ufffd \\x1b[2J\\x1b]0;owned\\x07'
+says latin1_crash '\x1b[31mred'
 says latin1_compile $'#error caf\ufffd \\x1b[2J'
 says bad_members_tar $'graded caf\ufffd/labs/02_segment_triangle/segment_triangle.cpp as'
 # 2. Replay commands. A crash costs the call it happened on, in the judge's words, and
-# its replay command is the judge's token, quoted, never the marker printed before it.
-# The marker a flood leaves is the student's: a crafted one is no command, a
-# well-formed one at most a quoted case.
+# its replay command is the judge's token, quoted, never the marker printed before it;
+# a flood's printed markers name nothing.
 says crash "got       a crash"
 says crash "why       your code crashed during this call (killed by signal 11)"
 says crash "replay    ./labkit check 02 --case 'segment_plane:1,-2.5,1e+300,inf'"
-says crafted_inflight "replay    none (the case it reported is not a replay token the kit writes)"
-says faked_inflight "on input  the described input"
-says faked_inflight "replay    ./labkit check 02 --case 'segment_plane:4,5,6'"
+for name in crafted_inflight faked_inflight; do
+  grep -qE "on input|segment_plane:4,5,6|touch /tmp" "$out/$name/report.txt" && fail "$name: its printed marker named a case"
+done
 # 3. The judge's report is out of the answerer's reach: whatever it puts where the report
 # might be (a FIFO the grader would wait on, a link, a forged failure), the step keeps
 # the judge's verdict.
@@ -198,8 +221,9 @@ says bad_members_tar "labs/05_sphere_sweeps/sphere_sweeps.cpp is not a regular f
 # ---- a broken kit: reports the grader must survive -----------------------------------
 # The student's code cannot reach the report, but a kit's bug can still spoil it: this
 # kit's judge leaves another bad report at each step (JSON of other shapes or cut short,
-# a FIFO the grader would wait on forever, a link, a crafted replay token). Each is no
-# verdict, at once, and the token never a command.
+# a FIFO the grader would wait on forever, a link, a crafted replay token, as a report or
+# as the case a dying judge names). Each is no verdict, at once, and the token never a
+# command.
 broken="$work/broken_build"
 stand_in_kit "$broken"
 printf '%s' "$forged" >"$broken/forged.json"
@@ -211,7 +235,7 @@ case "$1" in
   '[lab02][step3]') printf '[1, 2, 3]' >"$LABKIT_REPORT" ;;
   '[lab02][step4]') printf '{"finished": true, "queries": [' >"$LABKIT_REPORT" ;;
   '[lab02][step5]') mkfifo "$LABKIT_REPORT" ;;
-  '[lab02][step6]') ln -s /etc/passwd "$LABKIT_REPORT" ;;
+  '[lab02][step6]') ln -s /etc/passwd "$LABKIT_REPORT"; printf '%s' "segment_plane:1' ; touch /tmp/labkit-owned ; '" >"$LABKIT_INFLIGHT"; kill -KILL $$ ;;
   '[lab02][step7]') cat "$(dirname "$0")/forged.json" >"$LABKIT_REPORT" ;;
 esac
 EOF
@@ -221,7 +245,7 @@ grade "$broken" "$subs/passing" --out "$broken_out" >"$work/broken.log" 2>&1
 code=$?
 [ $code -eq 0 ] || { cat "$work/broken.log"; fail "labkit grade on a broken kit exits $code (124: it hung)"; }
 steps=$(awk -F'\t' 'NR > 1 { print $4 }' "$broken_out/steps.tsv" | paste -sd ,)
-expected="exited early,exited early,exited early,exited early,exited early,exited early,failing"
+expected="exited early,exited early,exited early,exited early,exited early,crashed,failing"
 [ "$steps" = "$expected" ] || fail "broken kit: the steps are '$steps', expected '$expected'"
 grep -qF "replay    none (the case it reported is not a replay token the kit writes)" "$broken_out/report.txt" ||
   fail "broken kit: the crafted token is not refused"

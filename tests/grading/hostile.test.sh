@@ -45,6 +45,14 @@ inject() {
     cat "$subs/$name/$lab02"; } >"$work/injected.cpp" && mv "$work/injected.cpp" "$subs/$name/$lab02"
 }
 
+# stub_with NAME CODE: every lab the reference, but lab 02 its stub, with CODE after it:
+# a trick that would earn lab 02 points without writing it.
+stub_with() {
+  reference "$subs/$1"
+  { printf '#include <cstdio>\n#include <cstdlib>\n#include <cstring>\n#include <string>\n#include <unistd.h>\n'
+    cat "$kit/$lab02"; printf '%s\n' "$2"; } >"$subs/$1/$lab02"
+}
+
 # ---- the submissions --------------------------------------------------------------
 reference "$work/ref" && (cd "$work/ref" && zip -qr "$subs/reference.zip" .)
 mkdir -p "$subs/empty"
@@ -148,6 +156,55 @@ size=$(stat -c %s "$subs/bomb.zip")
 first=$(od -An -tu4 -j $((size - 6)) -N4 "$subs/bomb.zip" | tr -d ' ')  # the central directory's first entry
 for at in 22 $((first + 24)); do printf '\x0a\x00\x00\x00' | dd of="$subs/bomb.zip" bs=1 seek=$at conv=notrunc status=none; done
 
+# The red team's tricks, each of which once earned points: the student's code no longer
+# shares a process with the tests, the judges, the oracle or the report.
+# A static initialiser that writes a passing report wherever a report could be, then exits.
+stub_with forge_report '#include <glob.h>
+namespace { struct Forge { Forge() {
+  const char* passed = "{\"finished\": true, \"test_cases\": [], \"queries\": []}";
+  std::string paths[64]; int n = 0;
+  if (const char* p = std::getenv("LABKIT_REPORT")) paths[n++] = p;
+  for (const char* pattern : {"/tmp/labkit-*/report.json", "../labkit-step.*/report.json", "../../*/labkit-step.*/report.json"}) {
+    glob_t g; if (glob(pattern, 0, nullptr, &g) == 0) for (std::size_t i = 0; i < g.gl_pathc && n < 64; ++i) paths[n++] = g.gl_pathv[i]; }
+  for (int i = 0; i < n; ++i) if (std::FILE* f = std::fopen(paths[i].c_str(), "w")) { std::fputs(passed, f); std::fclose(f); }
+  std::exit(0); } } forge; }'
+# A weak rename() (the symbol audit refused only strong definitions) that would swap in a
+# passing report whenever the harness saved one.
+stub_with weak_rename 'extern "C" __attribute__((weak)) int rename(const char*, const char* to) {
+  if (std::FILE* f = std::fopen(to, "w")) { std::fputs("{\"finished\": true, \"test_cases\": [], \"queries\": []}", f); std::fclose(f); }
+  return 0; }'
+# The exact oracle by its mangled name: in its own binary (/proc/self/exe) or through
+# dlsym. If it is there, segment_plane aborts (and this suite fails).
+inject oracle_by_name segment_plane '  if (oracle_reachable()) std::abort();'
+{ printf '#include <dlfcn.h>\n#include <fstream>\n#include <iterator>\n#include <string>\nnamespace {\nbool oracle_reachable() {\n'
+  printf '  static const bool found = [] { std::ifstream exe("/proc/self/exe", std::ios::binary);\n'
+  printf '    const std::string bytes((std::istreambuf_iterator<char>(exe)), std::istreambuf_iterator<char>());\n'
+  printf '    const std::string name = std::string("6labkit6") + "oracle";  // built at run time: not in the binary itself\n'
+  printf '    return bytes.find(name) != std::string::npos ||\n'
+  printf '           dlsym(RTLD_DEFAULT, ("_ZN" + name + "13segment_planeERKNS_7SegmentERKNS_8TriangleE").c_str()) != nullptr; }();\n'
+  printf '  return found;\n}\n}  // namespace\n'
+  cat "$subs/oracle_by_name/$lab02"; } >"$work/oracle.cpp" && mv "$work/oracle.cpp" "$subs/oracle_by_name/$lab02"
+# A .preinit_array function (runs before any initialiser; the audit refused only numbered
+# .init_array sections) that looks for the seed file and the seed and prints what it
+# finds, hex-encoded (redaction matched only the plain text).
+inject preinit_seed segment_plane '  if (seed_found) std::abort();'
+{ printf '#include <cstdio>\n#include <cstdlib>\n#include <fstream>\n#include <iterator>\n#include <string>\nnamespace {\nbool seed_found = false;\n'
+  printf 'void look(int, char**, char** env) {\n  std::string seen;\n'
+  printf '  for (char** e = env; e && *e; ++e) seen += std::string(*e) + "\\n";\n'
+  printf '  if (const char* p = std::getenv("LABKIT_SEED_FILE")) { std::ifstream f(p); seen += std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>()); }\n'
+  printf '  for (const char* p : {"/proc/self/environ", "/proc/1/environ"}) { std::ifstream f(p); seen += std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>()); }\n'
+  printf '  for (unsigned char c : seen) std::printf("%%02x", c);\n  std::printf("\\n");\n'
+  printf '  seed_found = seen.find("hostile suite secret") != std::string::npos;\n}\n'
+  printf '__attribute__((section(".preinit_array"), used)) void (*early_look)(int, char**, char**) = look;\n}  // namespace\n'
+  cat "$subs/preinit_seed/$lab02"; } >"$work/preinit.cpp" && mv "$work/preinit.cpp" "$subs/preinit_seed/$lab02"
+# The kit's own programs: the reference's answer program (exec it, and lab 02 would be the
+# reference's), the kit's test program and the reference libraries. Lab 02 is the stub:
+# any point it earns is a hole.
+stub_with kit_programs "namespace { struct Borrow { Borrow() {
+  for (const char* program : {\"$build/answer_02_segment_triangle_reference\", \"$kit/build/answer_02_segment_triangle_reference\"}) {
+    char* argv[] = {const_cast<char*>(program), nullptr};
+    execv(program, argv); } } } borrow; }"
+
 # ---- grade them all at once -------------------------------------------------------
 # The endless loop on its own, with a short time limit; the others with a generous one,
 # so that a loaded machine never turns a slow step into a time-out.
@@ -174,23 +231,27 @@ if [ "$(id -u)" = 0 ]; then
 fi
 
 # expect NAME LAB02 [STEP=STATUS ...]: lab 02 as LAB02 says (graded: each STEP has that
-# status and 0 points; or "does not compile", "not submitted" for all of it); every
-# other row (each step of every other lab, each step of lab 02 the fault does not
-# reach) exactly as the reference's own grade has it: same status, same points.
+# status and 0 points, or with STATUS* fewer points than the step's, any; or "does not
+# compile", "not submitted" for all of it); every other row (each step of every other
+# lab, each step of lab 02 the fault does not reach) exactly as the reference's own
+# grade has it: same status, same points.
 expect() {
   local name="$1" state="$2"
   shift 2
   local tsv="$out/$name/steps.tsv"
   [ -f "$tsv" ] || { fail "$name: no results"; return; }
   local lab step tag status score max want faulty
-  while IFS=$'\t' read -r lab step tag status score max; do
+  while IFS=$'\t' read -r lab step tag status score max _; do
     [ "$lab" = lab ] && continue
     faulty=""
     if [ "$lab" = 02 ]; then
       [ "$state" = graded ] || faulty="$state"
       for rule in "$@"; do [ "${rule%%=*}" = "$step" ] && faulty="${rule#*=}"; done
     fi
-    if [ -n "$faulty" ]; then
+    if [ -n "$faulty" ] && [ "${faulty%\*}" != "$faulty" ]; then
+      [ "$status" = "${faulty%\*}" ] || fail "$name: lab $lab step $step is '$status', expected '${faulty%\*}'"
+      awk -v s="$score" -v m="$max" 'BEGIN { exit !(s < m) }' || fail "$name: lab $lab step $step scores $score of $max"
+    elif [ -n "$faulty" ]; then
       [ "$status" = "$faulty" ] || fail "$name: lab $lab step $step is '$status', expected '$faulty'"
       [ "$score" = 0 ] || fail "$name: lab $lab step $step scores $score, expected 0"
     else
@@ -212,25 +273,33 @@ expect own_main "does not compile"
 expect early_constructor "does not compile"
 expect steal_seed graded
 expect symlink "not submitted"
-# A fault costs the steps whose tests reach the function it is in (the reference calls
-# some of its functions from others): point_in_triangle_barycentric is steps 3 and 7's,
-# point_in_triangle_edges steps 2 and 7's, all_hits steps 5 and 7's, segment_plane step
-# 1's, any_hit step 5's.
-expect segfault graded 3=crashed 7=crashed
-expect endless_loop graded 2="timed out" 7="timed out"
-expect allocate_50gb graded 5="out of memory" 7="out of memory"
+# A fault costs the cases that reach the function it is in (the reference calls some of
+# its functions from others): a crash or a time-out costs its case, not its step, so a
+# step with partial credit keeps the points of its other queries.
+# point_in_triangle_barycentric is steps 3 and 7's, point_in_triangle_edges steps 2 and
+# 7's, all_hits steps 5 and 7's, segment_plane step 1's, any_hit step 5's.
+expect segfault graded 3="failing*" 7="failing*"
+expect endless_loop graded 2=failing 7="failing*"
+expect allocate_50gb graded 5="failing*" 7="failing*"
 expect print_100mb graded 1="too much output"
-expect exit_0 graded 5="exited early"
+expect exit_0 graded 5="failing*"
 expect all_or_nothing graded 1=failing
-expect latin1_crash graded 1=crashed
+expect latin1_crash graded 1=failing
 expect latin1_compile "does not compile"
-# No report (a FIFO, a link, the wrong shape): as if the session never ended.
-expect fifo_report "exited early"
-expect symlink_report "exited early"
-expect queries_5 "exited early"
-expect finished_yes "exited early"
-expect crafted_token failing
-expect crafted_inflight graded 1="exited early"
+# The code under test has no report to replace (it never knows where the judge's is).
+expect fifo_report graded
+expect symlink_report graded
+expect queries_5 graded
+expect finished_yes graded
+expect crafted_token graded
+expect crafted_inflight graded 1=failing
+# The red team's tricks: no point for a stub, nothing reached.
+for name in forge_report weak_rename kit_programs; do
+  awk -F'\t' -v n="$name" 'NR > 1 && $1 == "02" && $5 != "0" { print "FAIL: " n ": lab 02 step " $2 " scores " $5; bad = 1 }
+    END { exit bad }' "$out/$name/steps.tsv" || failures=$((failures + 1))
+done
+expect oracle_by_name graded
+expect preinit_seed graded
 expect labs graded
 expect bad_members graded
 expect bad_members_tar graded
@@ -252,7 +321,7 @@ awk -F'\t' 'NR > 1 && !($1 == "02" && $2 ~ /^[3457]$/) && $5 != $6 { print "FAIL
 grep -q "this is not C++" "$out/compile_error/report.txt" || fail "compile_error: the report does not show the compiler's error"
 grep -q "segmentation fault" "$out/segfault/report.txt" || fail "segfault: the report does not name the signal"
 grep -q "replay    ./labkit check 02 --case" "$out/segfault/report.txt" || fail "segfault: no replay command for the input it died on"
-grep -q "did not finish within 8 s" "$out/endless_loop/report.txt" || fail "endless_loop: the report does not say it timed out"
+grep -q "did not finish this call" "$out/endless_loop/report.txt" || fail "endless_loop: the report does not say a call timed out"
 grep -q "ran out of memory" "$out/allocate_50gb/report.txt" || fail "allocate_50gb: the report does not say it ran out of memory"
 grep -q "printed more than" "$out/print_100mb/report.txt" || fail "print_100mb: the report does not say it printed too much"
 grep -q "exit()" "$out/exit_0/report.txt" || fail "exit_0: the report does not mention exit()"
@@ -269,13 +338,11 @@ for file in "$out"/class.csv "$out"/*/*; do
   if LC_ALL=C grep -q $'[\x01-\x08\x0b-\x1f\x7f]' "$file"; then fail "$file holds a control character"; fi
 done
 # A replay token the harness never writes is never printed as a command.
-for name in crafted_token crafted_inflight; do
-  grep -qF "replay    none (the case it reported is not a replay token the kit writes)" "$out/$name/report.txt" ||
-    fail "$name: the report does not refuse its crafted replay token"
-done
 if grep -rhoE "replay +\./labkit [^\\]*" "$out" | grep touch; then fail "a crafted replay token became a command"; fi
 [ -e /tmp/labkit-hostile-owned ] && { fail "a crafted replay command ran"; rm -f /tmp/labkit-hostile-owned; }
-grep -q "ended before its tests did" "$out/fifo_report/report.txt" || fail "fifo_report: the report does not say it ended early"
+# The seed, hex-encoded, printed by code that ran before anything else.
+hex_secret=$(printf '%s' "$secret" | od -An -tx1 | tr -d ' \n')
+if grep -rqF "$hex_secret" "$out" "$work/grade.log"; then fail "the secret seed appears hex-encoded in the results"; fi
 # One bad archive member costs only itself, and says why.
 for said in 'not unpacked: ../segment_triangle.cpp has ".." in its path' \
   "not unpacked: links/frustum_split.cpp is a symbolic link" "not unpacked: links/particles.cpp is larger than 1 MB" \
@@ -308,27 +375,47 @@ refused class_file "class.csv.zip"
 mkdir -p "$work/labs_in_place" && reference "$work/labs_in_place" && cp "$subs/reference.zip" "$work/labs_in_place/bob.zip"
 refused labs_in_place "labs/01_frustum_split/frustum_split.cpp" "bob.zip"
 
-# Nothing escaped.
-for path in "$kit/HOSTILE_WAS_HERE" /tmp/labkit-hostile-was-here /root/.labkit-hostile "$work/hostile-was-here" \
-  "$out/hostile-was-here"; do
-  [ -e "$path" ] && { fail "the escape submission wrote $path"; rm -f "$path"; }
-done
 [ -z "$(find /tmp -maxdepth 3 -name hostile-was-here 2>/dev/null)" ] || fail "the escape submission wrote a hostile-was-here under /tmp"
 
-# Without bubblewrap (--sandbox none, where it cannot run), what is still protected: as
-# root, each run's own uid cannot write to the kit's tree nor /root; but world-writable
-# /tmp is open to it, and so is reading the kit's files (the reference, where the kit
-# has it: the Gradescope zip does not).
+# Every confinement this machine has, on the submissions that try to get out: the same
+# promises hold under each (the run above used the one `auto` chose), and the report
+# says which it was.
+nothing_escaped() {
+  for path in "$kit/HOSTILE_WAS_HERE" /tmp/labkit-hostile-was-here /root/.labkit-hostile "$work/hostile-was-here" \
+    "$out/hostile-was-here"; do
+    [ -e "$path" ] && { fail "$1: the escape submission wrote $path"; rm -f "$path"; }
+  done
+}
+nothing_escaped "sandbox $(grep -o 'sandbox: [A-Za-z]*' "$out/reference/report.txt" | head -n 1)"
+for mode in bubblewrap landlock; do
+  if ! probe=$("$runner" grade "$subs/empty" --out "$work/probe-$mode" --labs 02 --sandbox "$mode" 2>&1); then
+    echo "no $mode on this machine: $(tail -n 1 <<<"$probe")"
+    continue
+  fi
+  mkdir -p "$work/mode-$mode"
+  for name in escape steal_seed forge_report weak_rename kit_programs include_reference preinit_seed oracle_by_name; do
+    cp -R "$subs/$name" "$work/mode-$mode/"
+  done
+  "$runner" grade "$work/mode-$mode" --out "$work/out-$mode" --seed "$secret" --cases 50 --labs 02 --sandbox "$mode" \
+    --jobs 2 >"$work/mode-$mode.log" 2>&1 || { cat "$work/mode-$mode.log"; fail "grading with --sandbox $mode exits $?"; }
+  grep -qi "sandbox: $mode" "$work/out-$mode/escape/report.txt" || fail "--sandbox $mode: the report does not say so"
+  cp -R "$out/reference" "$work/out-$mode/"
+  main_out="$out" && out="$work/out-$mode"
+  for name in escape steal_seed oracle_by_name preinit_seed; do expect "$name" graded; done
+  expect include_reference "does not compile"
+  for name in forge_report weak_rename kit_programs; do
+    awk -F'\t' -v n="$name ($mode)" 'NR > 1 && $5 != "0" { print "FAIL: " n ": lab 02 step " $2 " scores " $5; bad = 1 }
+      END { exit bad }' "$out/$name/steps.tsv" || failures=$((failures + 1))
+  done
+  nothing_escaped "--sandbox $mode"
+  out="$main_out"
+  echo "--sandbox $mode: every trick kept out"
+done
+# Asked for, no confinement at all: the report says so (the instructor trusts the code).
 if [ "$(id -u)" = 0 ]; then
-  rm -f /tmp/labkit-hostile-was-here
-  "$runner" grade "$subs/escape" --out "$work/unsandboxed" --seed "$secret" --cases 50 --labs 02 --sandbox none \
+  "$runner" grade "$subs/reference.zip" --out "$work/unsandboxed" --seed "$secret" --cases 50 --labs 02 --sandbox none \
     >"$work/unsandboxed.log" 2>&1 || fail "grading with --sandbox none exits $?"
-  grep -q "sandbox: none" "$work/unsandboxed/report.txt" || fail "--sandbox none: the report does not say so"
-  [ -e "$kit/HOSTILE_WAS_HERE" ] && { fail "--sandbox none: the kit's tree was written"; rm -f "$kit/HOSTILE_WAS_HERE"; }
-  [ -e /root/.labkit-hostile ] && { fail "--sandbox none: /root was written"; rm -f /root/.labkit-hostile; }
-  [ -e /tmp/labkit-hostile-was-here ] || fail "--sandbox none: /tmp was not written (then this suite no longer shows the fallback's limits)"
-  grep -qP "^02\t4\t.*\tcrashed\t" "$work/unsandboxed/steps.tsv" || fail "--sandbox none: the reference was not readable (expected, without bubblewrap)"
-  rm -f /tmp/labkit-hostile-was-here
+  grep -q "sandbox: none (turned off" "$work/unsandboxed/report.txt" || fail "--sandbox none: the report does not say so"
 fi
 
 # The outputs: every results.json matches Gradescope's schema; none holds the seed.
@@ -339,7 +426,7 @@ for xml in "$out"/*/junit.xml; do
   head -n 2 "$xml" | grep -q "<testsuites " || fail "$xml has no <testsuites>"
   [ "$(grep -c "<testcase " "$xml")" = "$(($(wc -l <"${xml%junit.xml}steps.tsv") - 1))" ] || fail "$xml: one <testcase> per step"
 done
-grep -q "<error type=\"crashed\"" "$out/segfault/junit.xml" || fail "segfault: junit.xml has no <error> for the crash"
+grep -q "<failure" "$out/segfault/junit.xml" || fail "segfault: junit.xml has no <failure> for the step its crashes cost"
 [ "$(wc -l <"$out/class.csv")" = "$(ls "$subs" | wc -l)" ] || fail "class.csv: one row per submission (the endless loop is graded apart)"
 head -n 1 "$out/class.csv" | grep -qE "^submission,(lab[0-9]{2},)+total,max$" || fail "class.csv's header is $(head -n 1 "$out/class.csv")"
 
