@@ -103,6 +103,11 @@ Answerer& Answerer::instance() {
 Answerer::Answerer(std::vector<std::string> argv) : argv_(std::move(argv)) {
   // Writing to an answerer that just died must not kill the judge.
   std::signal(SIGPIPE, SIG_IGN);
+  // What the answerer's confinement leaves behind when it is killed (bubblewrap's own
+  // children) comes back to this process to be reaped at once. Left to the machine's
+  // init, such zombies pile up under the answerer's uid until its process cap refuses
+  // every new start.
+  prctl(PR_SET_CHILD_SUBREAPER, 1);
   if (const char* v = std::getenv(report::variable::call_seconds); v && *v) {
     const double s = std::strtod(v, nullptr);
     if (s > 0) call_limit_ = std::chrono::milliseconds(long(s * 1000));
@@ -196,6 +201,7 @@ void Answerer::stop(bool kill_it) {
     waitpid(pid_, &status, 0);
   }
   pid_ = -1;
+  while (waitpid(-1, nullptr, WNOHANG) > 0) {}  // the orphans of its confinement
 }
 
 // After the answer stream ended: how the process ended, in words.
@@ -309,6 +315,7 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
     if (!greeted_ && kind == Response::Kind::crashed && ++failed_starts >= kFailedStarts) {
       start_failure_ = "the code under test's process ends before it can answer anything (" + problem +
                        "): a crash in a static initialiser, or a call of exit() before main?";
+      if (!output_tail_.empty()) start_failure_ += "\nwhat it printed last:\n" + output_tail_;
       stop(true);
       continue;
     }
