@@ -436,11 +436,13 @@ if command -v python3 >/dev/null; then
 for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml || fail "a junit.xml is not well-formed XML"
 fi
 
-# The table: each fault, what the grader reported for it, and what it kept.
+# The table: each fault, what the grader reported for it, what it kept, and the grader's
+# seconds for the whole submission. Also left in the build folder (hostile-table.txt)
+# for the notes.
 declare -A fault=(
   [reference]="none: the reference itself" [empty]="empty submission" [stubs]="the stubs, unchanged"
   [compile_error]="compile error in lab 02" [segfault]="segfault (null write)" [endless_loop]="endless loop"
-  [allocate_50gb]="allocating 50 GB" [print_100mb]="printing 100 MB" [exit_0]="exit(0) in a test"
+  [allocate_50gb]="allocating 50 GB" [print_100mb]="printing 100 MB" [exit_0]="exit(0) in a call"
   [escape]="writing outside its folder, kill(-1)" [extra_files]="extra files replacing a test, headers, CMake, manifest"
   [steal_seed]="reading the secret seed" [early_constructor]="constructor before the harness"
   [symlink]="lab file is a symlink to the reference" [include_reference]="#include of the reference"
@@ -450,25 +452,32 @@ declare -A fault=(
   [queries_5]="a report of the wrong shape (queries: 5)" [finished_yes]="a report of the wrong shape (finished: yes)"
   [crafted_token]="a crafted replay token in its report" [crafted_inflight]="a crafted in-flight marker, then exit"
   [labs]="a student's folder named labs" [bad_members]="zip: ../, symlinks, 5 MB, Latin-1 folder"
-  [bad_members_tar]="tar: absolute, ../, symlinks, 5 MB" [bomb]="zip bomb declaring 10 bytes")
-echo
-printf '%-44s | %-58s | %-9s | %s\n' "fault (in lab 02)" "what the grader reported for lab 02" "lab 02" "other labs kept"
-for name in reference empty stubs compile_error segfault endless_loop allocate_50gb print_100mb exit_0 escape extra_files \
-  steal_seed early_constructor symlink include_reference own_main partial all_or_nothing latin1_crash latin1_compile \
-  fifo_report symlink_report queries_5 finished_yes crafted_token crafted_inflight labs bad_members bad_members_tar bomb; do
-  [ -f "$out/$name/steps.tsv" ] || continue
-  awk -F'\t' -v f="${fault[$name]}" 'FNR == 1 { next }
-    FNR == NR { ref[$1 "/" $2] = $4; refscore[$1] += $5; next }
-    $1 == "02" { lab02 += $5; max02 += $6; if ($4 != ref["02/" $2]) said[$4] = said[$4] (said[$4] == "" ? "" : ",") $2 }
-    $1 != "02" { other += $5 }
-    END { for (r in refscore) if (r != "02") otherref += refscore[r]
-          for (s in said) reported = reported (reported == "" ? "" : "; ") s " (step " said[s] ")"
-          if (reported == "") reported = "as the reference"
-          printf "%-44s | %-58s | %4s/%-4s | %s of %s\n", f, reported, lab02, max02, other, otherref }' \
-    "$out/reference/steps.tsv" "$out/$name/steps.tsv"
-done
-echo
-cat "$out/class.csv"
-echo
+  [bad_members_tar]="tar: absolute, ../, symlinks, 5 MB" [bomb]="zip bomb declaring 10 bytes"
+  [forge_report]="stub + static init writing a passing report" [weak_rename]="stub + weak rename() swapping reports"
+  [oracle_by_name]="the oracle by mangled name, /proc/self/exe" [preinit_seed]=".preinit_array reading the seed"
+  [kit_programs]="stub + exec of the reference's program")
+{
+  echo
+  printf '%-46s | %-40s | %-9s | %-10s | %s\n' "fault (in lab 02)" "what the grader reported for lab 02" "lab 02" "other labs" "seconds"
+  for name in reference empty stubs compile_error segfault endless_loop allocate_50gb print_100mb exit_0 escape extra_files \
+    steal_seed early_constructor symlink include_reference own_main partial all_or_nothing latin1_crash latin1_compile \
+    fifo_report symlink_report queries_5 finished_yes crafted_token crafted_inflight labs bad_members bad_members_tar bomb \
+    forge_report weak_rename oracle_by_name preinit_seed kit_programs; do
+    [ -f "$out/$name/steps.tsv" ] || continue
+    seconds=$(grep -oE '\(([0-9.]+) s\)$' "$out/$name/report.txt" | tail -n 1 | tr -d '() s')
+    awk -F'\t' -v f="${fault[$name]}" -v t="$seconds" 'FNR == 1 { next }
+      FNR == NR { ref[$1 "/" $2] = $4; refscore[$1] += $5; next }
+      $1 == "02" { lab02 += $5; max02 += $6; if ($4 != ref["02/" $2]) said[$4] = said[$4] (said[$4] == "" ? "" : ",") $2 }
+      $1 != "02" { other += $5 }
+      END { for (r in refscore) if (r != "02") otherref += refscore[r]
+            for (s in said) reported = reported (reported == "" ? "" : "; ") s " (step " said[s] ")"
+            if (reported == "") reported = "as the reference"
+            printf "%-46s | %-40s | %4s/%-4s | %4s/%-5s | %s\n", f, reported, lab02, max02, other, otherref, t }' \
+      "$out/reference/steps.tsv" "$out/$name/steps.tsv"
+  done
+  echo
+  cat "$out/class.csv"
+  echo
+} | tee "$build/hostile-table.txt"
 [ $failures -eq 0 ] && echo "hostile suite: every fault cost only what it should" || { cat "$work/grade.log"; }
 exit $((failures > 0))
