@@ -1,4 +1,5 @@
 #include "process.h"
+#include "cgroup.h"
 
 #include <cerrno>
 #include <chrono>
@@ -84,6 +85,13 @@ bool apply_limits(const Limits& limits) {
   if (limits.cpu_seconds > 0) {
     rlimit cpu{rlim_t(limits.cpu_seconds), rlim_t(limits.cpu_seconds) + 1};
     setrlimit(RLIMIT_CPU, &cpu);
+  }
+  for (const std::string& group : limits.groups) {
+    const std::string why = join_group(group);
+    if (!why.empty()) {
+      dprintf(2, "labkit: %s\n", why.c_str());
+      return false;  // its limits were promised: never run without them
+    }
   }
   if (limits.uid >= 0) {
     const gid_t gid = gid_t(limits.gid >= 0 ? limits.gid : limits.uid);

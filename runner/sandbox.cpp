@@ -269,6 +269,7 @@ std::vector<std::string> launcher(const Limits& limits, const std::vector<std::s
   add("--processes", limits.processes);
   add("--cpu", limits.cpu_seconds);
   if (limits.uid >= 0) out.insert(out.end(), {"--uid", std::to_string(limits.uid), "--gid", std::to_string(limits.gid)});
+  for (const std::string& group : limits.groups) out.insert(out.end(), {"--cgroup", group});
   for (const std::string& path : readable) out.insert(out.end(), {"--read", path});
   if (!writable.empty()) out.insert(out.end(), {"--write", writable});
   out.push_back("--");
@@ -291,6 +292,7 @@ int confine_main(int argc, char** argv) {
     else if (name == "--cpu") limits.cpu_seconds = long(number);
     else if (name == "--uid") limits.uid = int(number);
     else if (name == "--gid") limits.gid = int(number);
+    else if (name == "--cgroup") limits.groups.push_back(value);
     else if (name == "--read") readable.push_back(value), restrict_files = true;
     else if (name == "--write") writable = value, restrict_files = true;
     else {
@@ -300,7 +302,7 @@ int confine_main(int argc, char** argv) {
   }
   if (at + 1 >= argc || std::string(argv[at]) != "--") {
     std::fprintf(stderr, "usage: labkit-runner confine [--memory B] [--file-size B] [--processes N] [--cpu S] "
-                         "[--uid U --gid G] [--read PATH]... [--write PATH] -- PROGRAM [ARGS]\n");
+                         "[--uid U --gid G] [--cgroup FOLDER]... [--read PATH]... [--write PATH] -- PROGRAM [ARGS]\n");
     return 126;
   }
   if (!apply_limits(limits)) return 126;

@@ -69,10 +69,12 @@ class Sandbox {
   std::string why_;  // why bubblewrap is not used
 };
 
-// `labkit-runner confine [LIMITS] [--read PATH]... [--write PATH] -- PROGRAM [ARGS]`: takes
-// the limits (and the uid), then Landlock's restriction when paths are given, then runs
-// PROGRAM. The judge's process starts a graded answerer through it: the runner decides
-// the confinement, the judge only starts the command line it is given.
+// `labkit-runner confine [LIMITS] [--cgroup FOLDER]... [--read PATH]... [--write PATH] --
+// PROGRAM [ARGS]`: takes the limits, joins the control groups (runner/cgroup.h) while it
+// is still root, takes the uid, then Landlock's restriction when paths are given, then
+// runs PROGRAM: everything PROGRAM starts stays in the groups. The judge's process starts
+// a graded answerer through it: the runner decides the confinement, the judge only starts
+// the command line it is given.
 std::vector<std::string> launcher(const Limits& limits, const std::vector<std::string>& argv,
                                   const std::vector<std::string>& readable = {}, const std::string& writable = "");
 int confine_main(int argc, char** argv);
