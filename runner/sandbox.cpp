@@ -26,6 +26,9 @@ namespace {
 constexpr int kFirstUid = 61000;
 constexpr int kUids = 1024;
 constexpr long kProcesses = 256;  // per confined run (its own uid)
+// The private /tmp under bubblewrap is RAM (a tmpfs): files there are bounded in all, not
+// only one by one (RLIMIT_FSIZE).
+constexpr std::size_t kTmpBytes = std::size_t(256) << 20;
 
 std::mutex uid_mutex;
 std::bitset<kUids> uids_in_use;
@@ -107,11 +110,21 @@ void add_system(std::vector<std::string>& args) {
   }
 }
 
+// bubblewrap 0.5 and later can bound a tmpfs (--size); older ones refuse the option.
+bool bubblewrap_sizes_tmpfs() {
+  Limits limits;
+  limits.seconds = 10;
+  return run({"bwrap", "--help"}, {}, limits).output.find("--size") != std::string::npos;
+}
+
+// `tmp_bytes`: the size of its /tmp, 0 for the tmpfs default (half the RAM).
 std::vector<std::string> bubblewrap(const std::vector<std::string>& argv, const std::string& writable,
-                                    const std::vector<std::string>& readable) {
+                                    const std::vector<std::string>& readable, std::size_t tmp_bytes) {
   std::vector<std::string> args = {"bwrap", "--unshare-all", "--die-with-parent"};
   add_system(args);
-  args.insert(args.end(), {"--dev", "/dev", "--proc", "/proc", "--tmpfs", "/tmp"});
+  args.insert(args.end(), {"--dev", "/dev", "--proc", "/proc"});
+  if (tmp_bytes > 0) args.insert(args.end(), {"--size", std::to_string(tmp_bytes)});
+  args.insert(args.end(), {"--tmpfs", "/tmp"});
   for (const std::string& path : readable)
     if (fs::exists(path) && path.rfind("/usr/", 0) != 0) args.insert(args.end(), {"--ro-bind", path, path});
   if (!writable.empty()) args.insert(args.end(), {"--bind", writable, writable, "--chdir", writable});
@@ -202,6 +215,7 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
   }
   if (mode == "auto" || mode == "bubblewrap") {
     s.kind_ = Kind::bubblewrap;
+    s.tmp_bytes_ = bubblewrap_sizes_tmpfs() ? kTmpBytes : 0;
     const std::string why = s.probe(needed);
     if (why.empty()) return s;
     s.why_ = "cannot run here: " + why;
@@ -225,7 +239,8 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
 std::string Sandbox::description() const {
   std::string uid = drop_uid_ ? ", each run under its own unprivileged uid" : "";
   if (kind_ == Kind::bubblewrap)
-    return "bubblewrap: no network, read-only system, only its own scratch folder writable" + uid;
+    return "bubblewrap: no network, read-only system, only its own scratch folder writable, " +
+           (tmp_bytes_ ? "a " + std::to_string(tmp_bytes_ >> 20) + " MB /tmp" : "an unbounded /tmp (bubblewrap before 0.5)") + uid;
   if (kind_ == Kind::landlock)
     return "Landlock (bubblewrap " + why_ +
            "): reads only the system and its own files, writes only its own scratch folder, no TCP" + uid;
@@ -251,7 +266,7 @@ Confined Sandbox::confine(const std::vector<std::string>& argv, const std::strin
   }
   c.limits = limits;
   switch (kind_) {
-    case Kind::bubblewrap: c.argv = bubblewrap(argv, writable, readable); break;
+    case Kind::bubblewrap: c.argv = bubblewrap(argv, writable, readable, tmp_bytes_); break;
     case Kind::landlock: c.argv = launcher({}, argv, readable, writable); break;
     case Kind::none: c.argv = argv; break;
   }

@@ -2,11 +2,12 @@
 // that runs it during each step (common/protocol/answerer.h).
 //
 // bubblewrap (the default when it works here): each run gets a new mount, pid, network,
-// IPC and UTS namespace. It sees the system (/usr, /etc), a private empty /tmp, and only
-// the paths it is given read-only (the kit's headers and prebuilt pieces, never
-// solutions/ nor .git, nor the kit's build tree as a whole, nor other submissions); its
-// one writable folder is its own scratch folder. It cannot reach the network, see or
-// signal other processes, or leave anything running behind it.
+// IPC and UTS namespace. It sees the system (/usr, /etc), a private empty /tmp (a tmpfs
+// of 256 MB at most, where bubblewrap is 0.5 or later), and only the paths it is given
+// read-only (the kit's headers and prebuilt pieces, never solutions/ nor .git, nor the
+// kit's build tree as a whole, nor other submissions); its one writable folder is its
+// own scratch folder. It cannot reach the network, see or signal other processes, or
+// leave anything running behind it.
 //
 // landlock: where bubblewrap cannot run (a container that forbids namespaces), the run
 // takes away its own access to the file system (runner/landlock.h): it reads the system
@@ -66,6 +67,7 @@ class Sandbox {
   std::string probe(const std::vector<std::string>& needed) const;
   Kind kind_ = Kind::none;
   bool drop_uid_ = false;
+  std::size_t tmp_bytes_ = 0;  // the size of bubblewrap's /tmp; 0: its tmpfs cannot be sized
   std::string why_;  // why bubblewrap is not used
 };
 
