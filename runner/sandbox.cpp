@@ -1,4 +1,5 @@
 #include "sandbox.h"
+#include "cgroup.h"
 #include "landlock.h"
 
 #include <bitset>
@@ -200,9 +201,22 @@ std::string Sandbox::probe(const std::vector<std::string>& needed) const {
   return trimmed(r.output.empty() ? "the probe did not run" : r.output);
 }
 
+// Makes one group as a graded step does: whether steps get one here, and what it holds.
+void Sandbox::probe_step_groups() {
+  const StepGroup probe({std::size_t(64) << 20});
+  step_groups_ = !probe.folders().empty();
+  const std::string holds = "; per step, the graded code's processes together get the step's memory, " +
+                            std::to_string(GroupLimits{}.processes) + " processes and one core (cgroup " + probe.version();
+  const std::string cap = drop_uid_ ? ", and the graded code may run " + std::to_string(kProcessesWithoutGroup) +
+                                          " processes at once" : "";
+  if (probe.whole()) groups_ = holds + (probe.missing().empty() ? ")" : "; but " + probe.missing() + ")");
+  else groups_ = "; no per-step cgroup limits (" + probe.missing() + "): memory and file limits hold per process" + cap;
+}
+
 Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& needed, const std::string& kit) {
   Sandbox s;
   s.drop_uid_ = geteuid() == 0;
+  s.probe_step_groups();
   // Run as root, the graded code runs under an unprivileged uid of its own: it must be
   // able to read the kit, or every lab would fail to build for a reason not the student's.
   if (const std::string closed = s.drop_uid_ ? closed_to_others(needed) : ""; !closed.empty())
@@ -237,14 +251,14 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
 }
 
 std::string Sandbox::description() const {
-  std::string uid = drop_uid_ ? ", each run under its own unprivileged uid" : "";
+  const std::string also = (drop_uid_ ? ", each run under its own unprivileged uid" : "") + groups_;
   if (kind_ == Kind::bubblewrap)
     return "bubblewrap: no network, read-only system, only its own scratch folder writable, " +
-           (tmp_bytes_ ? "a " + std::to_string(tmp_bytes_ >> 20) + " MB /tmp" : "an unbounded /tmp (bubblewrap before 0.5)") + uid;
+           (tmp_bytes_ ? "a " + std::to_string(tmp_bytes_ >> 20) + " MB /tmp" : "an unbounded /tmp (bubblewrap before 0.5)") + also;
   if (kind_ == Kind::landlock)
     return "Landlock (bubblewrap " + why_ +
-           "): reads only the system and its own files, writes only its own scratch folder, no TCP" + uid;
-  return "none (" + why_ + "): time, memory, output and file-size limits only" + uid;
+           "): reads only the system and its own files, writes only its own scratch folder, no TCP" + also;
+  return "none (" + why_ + "): time, memory, output and file-size limits only" + also;
 }
 
 void Sandbox::interpret(Run& run) const {
