@@ -205,12 +205,16 @@ std::string Sandbox::probe(const std::vector<std::string>& needed) const {
 void Sandbox::probe_step_groups() {
   const StepGroup probe({std::size_t(64) << 20});
   step_groups_ = !probe.folders().empty();
-  const std::string holds = "; per step, the graded code's processes together get the step's memory, " +
-                            std::to_string(GroupLimits{}.processes) + " processes and one core (cgroup " + probe.version();
   const std::string cap = drop_uid_ ? ", and the graded code may run " + std::to_string(kProcessesWithoutGroup) +
                                           " processes at once" : "";
-  if (probe.whole()) groups_ = holds + (probe.missing().empty() ? ")" : "; but " + probe.missing() + ")");
-  else groups_ = "; no per-step cgroup limits (" + probe.missing() + "): memory and file limits hold per process" + cap;
+  if (probe.whole())
+    groups_ = "; per step, the graded code's processes together get the step's memory, " +
+              std::to_string(GroupLimits{}.processes) + " processes and one core (cgroup " + probe.version() +
+              (probe.missing().empty() ? ")" : "; but " + probe.missing() + ")");
+  else if (step_groups_)
+    groups_ = "; per-step cgroup limits in part only (cgroup " + probe.version() + "; " + probe.missing() + ")" + cap;
+  else
+    groups_ = "; no per-step cgroup limits (" + probe.missing() + "): memory and file limits hold per process" + cap;
 }
 
 Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& needed, const std::string& kit) {

@@ -46,8 +46,13 @@ if "[step1]" in sys.argv[1]:
              if os.path.exists(os.path.join(g, f))]
     with open(os.path.join("$measured", line.split(":")[0] or "nothing"), "w") as out:
         out.write(line + "\ngroups " + " ".join(groups) + "\npeak_mb " + str(int(peaks[0]) >> 20 if peaks else -1) + "\n")
+# Every field common/protocol/report.h reads.
+passed = {"test_case": "t", "query": "q", "kind": "examples", "cases": 1, "passed": 1, "ambiguous": 0, "failed": 0,
+          "not_implemented": "", "error": "", "failure": None}
 with open(os.environ["LABKIT_REPORT"], "w") as report:
-    json.dump({"finished": True, "test_cases": [], "queries": [{"query": "q", "kind": "examples", "cases": 1, "passed": 1}]}, report)
+    json.dump({"seed": "hidden", "cases_per_query": 1, "finished": True, "queries": [passed],
+               "test_cases": [{"name": "t", "tags": [], "passed": True, "ended": True, "failures": [], "not_implemented": ""}]},
+              report)
 EOF
 chmod 755 "$build/test_02_segment_triangle"
 # Compiling copies the file; linking makes the answerer: the hostile program beside it,
@@ -82,6 +87,7 @@ sandbox=$(grep -h -m 1 -i "sandbox" "$out/memory/report.txt")
 echo "$sandbox"
 case "$sandbox" in
   *"no per-step cgroup limits"*) skip "no per-step cgroup limits here ${sandbox#*no per-step cgroup limits }" ;;
+  *"per-step cgroup limits in part only"*) skip "per-step cgroup limits only in part here ${sandbox#*in part only }" ;;
   *"per step, the graded code's processes together"*) ;;
   *) fail "the report does not say whether per-step cgroup limits are in force" ;;
 esac
