@@ -296,6 +296,8 @@ StepGroup::StepGroup(const GroupLimits& limits) {
   for (const Place& p : places()) {
     const bool holds = set_up(p, name, limits, folders_, missing);
     if (holds) versions.insert(p.version);
+    // Memory and processes are what per-process limits cannot bound together; CPU time
+    // has RLIMIT_CPU and the step's time limit.
     if (!holds && p.controller != "cpu") whole_ = false;
   }
   for (const int v : versions) version_ += (version_.empty() ? "v" : " and v") + std::to_string(v);

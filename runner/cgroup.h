@@ -9,8 +9,8 @@
 //            calls setsid() no longer gets an autogroup (a fresh share of the machine)
 //
 // cgroup v2 (one unified hierarchy) or v1 (one hierarchy per controller): either way the
-// step's group is made below the group this process is in (/proc/self/cgroup), named
-// labkit-PID-N. `labkit-runner confine --cgroup FOLDER` moves the answerer into it before
+// step's group is made below the group this process was in when it started
+// (/proc/self/cgroup), named labkit-PID-N. `labkit-runner confine --cgroup FOLDER` moves the answerer into it before
 // it drops root, so everything the answerer starts is in it too. When the step ends,
 // every process left in the group is killed and the group removed.
 //
