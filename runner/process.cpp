@@ -1,4 +1,5 @@
 #include "process.h"
+#include "cgroup.h"
 
 #include <cerrno>
 #include <chrono>
@@ -85,6 +86,13 @@ bool apply_limits(const Limits& limits) {
     rlimit cpu{rlim_t(limits.cpu_seconds), rlim_t(limits.cpu_seconds) + 1};
     setrlimit(RLIMIT_CPU, &cpu);
   }
+  for (const std::string& group : limits.groups) {
+    const std::string why = join_group(group);
+    if (!why.empty()) {
+      dprintf(2, "labkit: %s\n", why.c_str());
+      return false;  // its limits were promised: never run without them
+    }
+  }
   if (limits.uid >= 0) {
     const gid_t gid = gid_t(limits.gid >= 0 ? limits.gid : limits.uid);
     if (setgroups(0, nullptr) != 0 || setresgid(gid, gid, gid) != 0 || setresuid(uid_t(limits.uid), uid_t(limits.uid), uid_t(limits.uid)) != 0) {
@@ -120,10 +128,19 @@ Run run(const std::vector<std::string>& argv, const Environment& env, const Limi
   Capture capture(limits.kept_bytes);
   const auto deadline = start + std::chrono::duration<double>(limits.seconds);
   Clock::time_point kill_at{};
-  bool open = true;
+  bool open = true, exited = false;
+  Clock::time_point drained_at{};
+  int status = 0;
   char buffer[1 << 16];
   while (open) {
     const auto now = Clock::now();
+    if (!exited && waitpid(pid, &status, WNOHANG) == pid) {
+      exited = true;
+      drained_at = now + std::chrono::seconds(1);
+    }
+    // The child is gone and a process it started outside its group (a daemon) holds the
+    // pipe: its output is not waited for (the caller's cleanup ends it).
+    if (exited && now >= drained_at) break;
     if (!result.timed_out && now >= deadline) {
       result.timed_out = true;
       kill(-pid, SIGTERM);  // lets the harness name the case it was running
@@ -151,10 +168,8 @@ Run run(const std::vector<std::string>& argv, const Environment& env, const Limi
   close(pipe_fds[0]);
 
   // The pipe closed: the child is gone or closed its output. Wait, still within limits.
-  int status = 0;
-  for (;;) {
-    const pid_t done = waitpid(pid, &status, WNOHANG);
-    if (done == pid) break;
+  while (!exited) {
+    if (waitpid(pid, &status, WNOHANG) == pid) break;
     const auto now = Clock::now();
     if (!result.timed_out && now >= deadline) {
       result.timed_out = true;

@@ -19,6 +19,7 @@ struct Limits {
   long processes = 0;                     // processes of its uid (RLIMIT_NPROC); 0: no limit
   long cpu_seconds = 0;                   // CPU time (RLIMIT_CPU); 0: no limit
   int uid = -1, gid = -1;                 // run under this uid and gid (needs root); -1: as we are
+  std::vector<std::string> groups;        // join these control groups first (runner/cgroup.h; needs root)
 };
 
 struct Run {
@@ -40,8 +41,9 @@ using Environment = std::vector<std::pair<std::string, std::string>>;
 Run run(const std::vector<std::string>& argv, const Environment& extra_environment = {}, const Limits& limits = {},
         const std::string& directory = "");
 
-// Applies the limits to this process (no core files; then the uid last). False, with the
-// reason on stderr, when the uid cannot be taken.
+// Applies the limits to this process (no core files; its control groups, while it may
+// still join them; then the uid last). False, with the reason on stderr, when a group
+// cannot be joined or the uid cannot be taken.
 bool apply_limits(const Limits& limits);
 
 // "segmentation fault", "aborted", ...

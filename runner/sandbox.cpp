@@ -1,4 +1,5 @@
 #include "sandbox.h"
+#include "cgroup.h"
 #include "landlock.h"
 
 #include <bitset>
@@ -26,6 +27,9 @@ namespace {
 constexpr int kFirstUid = 61000;
 constexpr int kUids = 1024;
 constexpr long kProcesses = 256;  // per confined run (its own uid)
+// The private /tmp under bubblewrap is RAM (a tmpfs): files there are bounded in all, not
+// only one by one (RLIMIT_FSIZE).
+constexpr std::size_t kTmpBytes = std::size_t(256) << 20;
 
 std::mutex uid_mutex;
 std::bitset<kUids> uids_in_use;
@@ -107,11 +111,21 @@ void add_system(std::vector<std::string>& args) {
   }
 }
 
+// bubblewrap 0.5 and later can bound a tmpfs (--size); older ones refuse the option.
+bool bubblewrap_sizes_tmpfs() {
+  Limits limits;
+  limits.seconds = 10;
+  return run({"bwrap", "--help"}, {}, limits).output.find("--size") != std::string::npos;
+}
+
+// `tmp_bytes`: the size of its /tmp, 0 for the tmpfs default (half the RAM).
 std::vector<std::string> bubblewrap(const std::vector<std::string>& argv, const std::string& writable,
-                                    const std::vector<std::string>& readable) {
+                                    const std::vector<std::string>& readable, std::size_t tmp_bytes) {
   std::vector<std::string> args = {"bwrap", "--unshare-all", "--die-with-parent"};
   add_system(args);
-  args.insert(args.end(), {"--dev", "/dev", "--proc", "/proc", "--tmpfs", "/tmp"});
+  args.insert(args.end(), {"--dev", "/dev", "--proc", "/proc"});
+  if (tmp_bytes > 0) args.insert(args.end(), {"--size", std::to_string(tmp_bytes)});
+  args.insert(args.end(), {"--tmpfs", "/tmp"});
   for (const std::string& path : readable)
     if (fs::exists(path) && path.rfind("/usr/", 0) != 0) args.insert(args.end(), {"--ro-bind", path, path});
   if (!writable.empty()) args.insert(args.end(), {"--bind", writable, writable, "--chdir", writable});
@@ -187,9 +201,26 @@ std::string Sandbox::probe(const std::vector<std::string>& needed) const {
   return trimmed(r.output.empty() ? "the probe did not run" : r.output);
 }
 
+// Makes one group as a graded step does: whether steps get one here, and what it holds.
+void Sandbox::probe_step_groups() {
+  const StepGroup probe({std::size_t(64) << 20});
+  step_groups_ = !probe.folders().empty();
+  const std::string cap = drop_uid_ ? ", and the graded code may run " + std::to_string(kProcessesWithoutGroup) +
+                                          " processes at once" : "";
+  if (probe.whole())
+    groups_ = "; per step, the graded code's processes together get the step's memory, " +
+              std::to_string(GroupLimits{}.processes) + " processes and one core (cgroup " + probe.version() +
+              (probe.missing().empty() ? ")" : "; but " + probe.missing() + ")");
+  else if (step_groups_)
+    groups_ = "; per-step cgroup limits in part only (cgroup " + probe.version() + "; " + probe.missing() + ")" + cap;
+  else
+    groups_ = "; no per-step cgroup limits (" + probe.missing() + "): memory and file limits hold per process" + cap;
+}
+
 Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& needed, const std::string& kit) {
   Sandbox s;
   s.drop_uid_ = geteuid() == 0;
+  s.probe_step_groups();
   // Run as root, the graded code runs under an unprivileged uid of its own: it must be
   // able to read the kit, or every lab would fail to build for a reason not the student's.
   if (const std::string closed = s.drop_uid_ ? closed_to_others(needed) : ""; !closed.empty())
@@ -202,6 +233,7 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
   }
   if (mode == "auto" || mode == "bubblewrap") {
     s.kind_ = Kind::bubblewrap;
+    s.tmp_bytes_ = bubblewrap_sizes_tmpfs() ? kTmpBytes : 0;
     const std::string why = s.probe(needed);
     if (why.empty()) return s;
     s.why_ = "cannot run here: " + why;
@@ -223,13 +255,14 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
 }
 
 std::string Sandbox::description() const {
-  std::string uid = drop_uid_ ? ", each run under its own unprivileged uid" : "";
+  const std::string also = (drop_uid_ ? ", each run under its own unprivileged uid" : "") + groups_;
   if (kind_ == Kind::bubblewrap)
-    return "bubblewrap: no network, read-only system, only its own scratch folder writable" + uid;
+    return "bubblewrap: no network, read-only system, only its own scratch folder writable, " +
+           (tmp_bytes_ ? "a " + std::to_string(tmp_bytes_ >> 20) + " MB /tmp" : "an unbounded /tmp (bubblewrap before 0.5)") + also;
   if (kind_ == Kind::landlock)
     return "Landlock (bubblewrap " + why_ +
-           "): reads only the system and its own files, writes only its own scratch folder, no TCP" + uid;
-  return "none (" + why_ + "): time, memory, output and file-size limits only" + uid;
+           "): reads only the system and its own files, writes only its own scratch folder, no TCP" + also;
+  return "none (" + why_ + "): time, memory, output and file-size limits only" + also;
 }
 
 void Sandbox::interpret(Run& run) const {
@@ -251,7 +284,7 @@ Confined Sandbox::confine(const std::vector<std::string>& argv, const std::strin
   }
   c.limits = limits;
   switch (kind_) {
-    case Kind::bubblewrap: c.argv = bubblewrap(argv, writable, readable); break;
+    case Kind::bubblewrap: c.argv = bubblewrap(argv, writable, readable, tmp_bytes_); break;
     case Kind::landlock: c.argv = launcher({}, argv, readable, writable); break;
     case Kind::none: c.argv = argv; break;
   }
@@ -269,6 +302,7 @@ std::vector<std::string> launcher(const Limits& limits, const std::vector<std::s
   add("--processes", limits.processes);
   add("--cpu", limits.cpu_seconds);
   if (limits.uid >= 0) out.insert(out.end(), {"--uid", std::to_string(limits.uid), "--gid", std::to_string(limits.gid)});
+  for (const std::string& group : limits.groups) out.insert(out.end(), {"--cgroup", group});
   for (const std::string& path : readable) out.insert(out.end(), {"--read", path});
   if (!writable.empty()) out.insert(out.end(), {"--write", writable});
   out.push_back("--");
@@ -291,6 +325,7 @@ int confine_main(int argc, char** argv) {
     else if (name == "--cpu") limits.cpu_seconds = long(number);
     else if (name == "--uid") limits.uid = int(number);
     else if (name == "--gid") limits.gid = int(number);
+    else if (name == "--cgroup") limits.groups.push_back(value);
     else if (name == "--read") readable.push_back(value), restrict_files = true;
     else if (name == "--write") writable = value, restrict_files = true;
     else {
@@ -300,7 +335,7 @@ int confine_main(int argc, char** argv) {
   }
   if (at + 1 >= argc || std::string(argv[at]) != "--") {
     std::fprintf(stderr, "usage: labkit-runner confine [--memory B] [--file-size B] [--processes N] [--cpu S] "
-                         "[--uid U --gid G] [--read PATH]... [--write PATH] -- PROGRAM [ARGS]\n");
+                         "[--uid U --gid G] [--cgroup FOLDER]... [--read PATH]... [--write PATH] -- PROGRAM [ARGS]\n");
     return 126;
   }
   if (!apply_limits(limits)) return 126;

@@ -2,11 +2,12 @@
 // that runs it during each step (common/protocol/answerer.h).
 //
 // bubblewrap (the default when it works here): each run gets a new mount, pid, network,
-// IPC and UTS namespace. It sees the system (/usr, /etc), a private empty /tmp, and only
-// the paths it is given read-only (the kit's headers and prebuilt pieces, never
-// solutions/ nor .git, nor the kit's build tree as a whole, nor other submissions); its
-// one writable folder is its own scratch folder. It cannot reach the network, see or
-// signal other processes, or leave anything running behind it.
+// IPC and UTS namespace. It sees the system (/usr, /etc), a private empty /tmp (a tmpfs
+// of 256 MB at most, where bubblewrap is 0.5 or later), and only the paths it is given
+// read-only (the kit's headers and prebuilt pieces, never solutions/ nor .git, nor the
+// kit's build tree as a whole, nor other submissions); its one writable folder is its
+// own scratch folder. It cannot reach the network, see or signal other processes, or
+// leave anything running behind it.
 //
 // landlock: where bubblewrap cannot run (a container that forbids namespaces), the run
 // takes away its own access to the file system (runner/landlock.h): it reads the system
@@ -23,6 +24,11 @@
 // so that two graders never share one), which owns its scratch folder and nothing else,
 // with a cap on its processes: it can write nowhere else, and a fork bomb starves only
 // itself.
+//
+// A graded step's answerer also runs in a control group of the step's own
+// (runner/cgroup.h), where the machine has them: its processes together get the step's
+// memory, 64 processes and one core. Where it has none, the memory and file limits hold
+// per process only, and the answerer may run only kProcessesWithoutGroup processes.
 #pragma once
 
 #include "process.h"
@@ -32,6 +38,10 @@
 #include <vector>
 
 namespace runner {
+
+// The cap on a graded answerer's processes (its uid's) where no control group holds
+// them together: each may take the step's memory, so the cap bounds their sum.
+constexpr long kProcessesWithoutGroup = 8;
 
 // A command ready to run confined. Keep it until the run ends: it holds the run's uid.
 struct Confined {
@@ -53,6 +63,9 @@ class Sandbox {
   Kind kind() const { return kind_; }
   // One line for the instructor: what this run is protected by.
   std::string description() const;
+  // Whether graded steps get a control group (runner/cgroup.h); description() says
+  // which of its limits hold.
+  bool step_groups() const { return step_groups_; }
 
   // `argv` confined to `writable` (made the working folder, and chowned to the run's uid),
   // also seeing `readable` (files or folders), under `limits`.
@@ -64,15 +77,21 @@ class Sandbox {
 
  private:
   std::string probe(const std::vector<std::string>& needed) const;
+  void probe_step_groups();
   Kind kind_ = Kind::none;
   bool drop_uid_ = false;
+  std::size_t tmp_bytes_ = 0;  // the size of bubblewrap's /tmp; 0: its tmpfs cannot be sized
   std::string why_;  // why bubblewrap is not used
+  bool step_groups_ = false;
+  std::string groups_;  // what the step groups hold, for description()
 };
 
-// `labkit-runner confine [LIMITS] [--read PATH]... [--write PATH] -- PROGRAM [ARGS]`: takes
-// the limits (and the uid), then Landlock's restriction when paths are given, then runs
-// PROGRAM. The judge's process starts a graded answerer through it: the runner decides
-// the confinement, the judge only starts the command line it is given.
+// `labkit-runner confine [LIMITS] [--cgroup FOLDER]... [--read PATH]... [--write PATH] --
+// PROGRAM [ARGS]`: takes the limits, joins the control groups (runner/cgroup.h) while it
+// is still root, takes the uid, then Landlock's restriction when paths are given, then
+// runs PROGRAM: everything PROGRAM starts stays in the groups. The judge's process starts
+// a graded answerer through it: the runner decides the confinement, the judge only starts
+// the command line it is given.
 std::vector<std::string> launcher(const Limits& limits, const std::vector<std::string>& argv,
                                   const std::vector<std::string>& readable = {}, const std::string& writable = "");
 int confine_main(int argc, char** argv);

@@ -1,4 +1,5 @@
 #include "step.h"
+#include "cgroup.h"
 #include "untrusted.h"
 
 #include <nlohmann/json.hpp>
@@ -108,22 +109,35 @@ double fraction_passed(const StepResult& r) {
 
 namespace {
 
+// The control group of a graded step's answerer (runner/cgroup.h): all its processes
+// together get the step's memory, 64 processes and one core. Null on a student's
+// machine, and where the grader's machine has no cgroups to offer.
+std::unique_ptr<StepGroup> answerer_group(const StepOptions& options) {
+  if (!options.sandbox || !options.sandbox->step_groups()) return nullptr;
+  return std::make_unique<StepGroup>(GroupLimits{options.limits.memory_bytes});
+}
+
 // The command line the judge's process starts the answerer with: the answerer itself
-// on a student's machine; for a graded run, confined (its own scratch folder, uid and
-// sandbox) and under limits, through `labkit-runner confine`.
+// on a student's machine; for a graded run, confined (its own scratch folder, uid,
+// sandbox and control group) and under limits, through `labkit-runner confine`.
 std::string answerer_command(const Programs& programs, const StepOptions& options, const std::string& scratch,
-                             std::shared_ptr<void>* lease) {
+                             const StepGroup* group, std::shared_ptr<void>* lease) {
   if (options.debugger)
     return nlohmann::json({"gdb", "-q", "-batch", "-ex", "run", "-ex", "bt", "--args", programs.answerer}).dump();
   if (!options.sandbox) return programs.answerer;
   Limits limits;
-  limits.memory_bytes = options.limits.memory_bytes;
+  limits.memory_bytes = options.limits.memory_bytes;  // per process too: a second line of defence
   limits.file_bytes = options.limits.file_bytes;
   limits.cpu_seconds = long(options.limits.seconds) + 1;
   const Confined confined = options.sandbox->confine({programs.answerer}, scratch,
                                                      {fs::path(programs.answerer).parent_path().string()}, limits);
   *lease = confined.lease;
-  return nlohmann::json(launcher(confined.limits, confined.argv)).dump();
+  Limits answerer = confined.limits;
+  if (group) answerer.groups = group->folders();
+  // Without a group holding them together, each process may take the step's memory: only
+  // a tight cap on how many there are bounds their sum (it needs a uid of the run's own).
+  if ((!group || !group->whole()) && answerer.uid >= 0) answerer.processes = kProcessesWithoutGroup;
+  return nlohmann::json(launcher(answerer, confined.argv)).dump();
 }
 
 }  // namespace
@@ -148,11 +162,14 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
   }
   const fs::path report = fs::path(scratch) / "report.json";
 
-  std::shared_ptr<void> answerer_lease;  // held until the step ends: the answerer's uid
+  // Held until the step ends: the answerer's uid, and its control group (everything left
+  // in it is killed then, and the group removed).
+  std::shared_ptr<void> answerer_lease;
+  const std::unique_ptr<StepGroup> group = answerer_group(options);
   const fs::path inflight = fs::path(scratch) / "inflight";
   Environment env = {{variable::report, report.string()},
                      {variable::inflight, inflight.string()},
-                     {variable::answerer, answerer_command(programs, options, answerer_scratch, &answerer_lease)}};
+                     {variable::answerer, answerer_command(programs, options, answerer_scratch, group.get(), &answerer_lease)}};
   if (options.call_seconds > 0) env.push_back({variable::call_seconds, std::to_string(options.call_seconds)});
   if (!options.seed.empty() && options.hide_seed) {
     // A secret seed never goes on a command line or in the environment (which other

@@ -63,7 +63,8 @@ struct StepOptions {
   bool hide_seed = false;
   bool count_all = false;     // judge every random case (partial credit), LABKIT_COUNT_ALL
   bool describe_only = false; // with `replay`: describe the input, run no code under test
-  Limits limits;              // the judge's process; its answerer gets the same memory and file limits
+  Limits limits;              // the judge's process; its answerer gets the same memory and file limits (graded:
+                              // for its processes together too, in a control group, runner/cgroup.h)
   double call_seconds = 0;   // the time limit of one call of the code under test (0: the harness's 5 s)
   bool debugger = false;     // the answerer runs under gdb, which prints where it crashed
   const Sandbox* sandbox = nullptr;  // graded runs: the answerer runs confined to a scratch folder of its own
