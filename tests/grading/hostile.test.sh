@@ -205,6 +205,16 @@ stub_with kit_programs "namespace { struct Borrow { Borrow() {
     char* argv[] = {const_cast<char*>(program), nullptr};
     execv(program, argv); } } } borrow; }"
 
+# ---- a machine that can confine nothing ---------------------------------------------
+# Neither bubblewrap nor Landlock: grading a kit that holds solutions/ is refused (the
+# graded code could read the reference), with what to do instead. That refusal is the
+# one promise to check here.
+if ! said=$("$runner" grade "$subs/empty" --out "$work/probe" --labs 02 2>&1) && grep -q "nothing can confine" <<<"$said"; then
+  grep -q "Gradescope package" <<<"$said" || fail "the refusal does not say what to do instead: $said"
+  echo "nothing can confine graded code on this machine: grading this kit is refused, as it must be"
+  exit $((failures > 0))
+fi
+
 # ---- grade them all at once -------------------------------------------------------
 # The endless loop on its own, with a short time limit; the others with a generous one,
 # so that a loaded machine never turns a slow step into a time-out.
