@@ -118,7 +118,7 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
       return;
     }
   if (r.status == Status::no_tests)
-    std::cout << "  The test binary has no test tagged [lab" << lab.id << "][step" << step.number
+    std::cout << "  The kit's test program has no test tagged [lab" << lab.id << "][step" << step.number
               << "]: grading/manifest.json and the tests disagree.\n";
 }
 

@@ -160,7 +160,7 @@ void parallel_for(std::size_t count, int jobs, Work&& work) {
   for (std::thread& t : pool) t.join();
 }
 
-// The lab's files found and built; `binary` is its test binary when it built.
+// The lab's files found and built; `binary` is its answer program when it built.
 LabGrade build_one_lab(const Lab& lab, const Submission& sub, const std::string& folder, const Context& c,
                        std::string* binary) {
   LabGrade g;
@@ -264,7 +264,7 @@ SubmissionGrade grade_one(const std::string& path, const std::string& name, cons
     g.score += g.labs[i].score;
     g.max_score += g.labs[i].max_score;
     std::error_code ignored;
-    fs::remove_all(folders[i], ignored);  // its test binary is 50 MB
+    fs::remove_all(folders[i], ignored);  // its objects and answer program
   }
   g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return g;

@@ -1,10 +1,10 @@
 // Builds one lab of one submission in seconds, without configuring anything: the
 // student's file(s) are compiled with exactly the command the kit's build uses for the
 // stub (from compile_commands.json), then linked with exactly the kit's own link command
-// for the lab's student test binary (recorded at build time by cmake/record-command.sh),
-// the stub's library swapped for the student's objects. Tests, judge, harness, oracle
-// and Catch's main are the kit's prebuilt pieces; nothing from the submission but its
-// own source files takes part.
+// for the lab's student answer program (recorded at build time by cmake/record-command.sh),
+// the stub's library swapped for the student's objects. That program holds the student's
+// code, the geometry types and the answerer's loop, nothing else of the kit's; the tests,
+// judges and oracle stay in the kit's own test program (common/protocol/answerer.h).
 #pragma once
 
 #include "check.h"
@@ -23,7 +23,7 @@ struct Command {
   std::vector<std::string> argv;
 };
 
-// How the kit builds lab NN's student test binary.
+// How the kit builds lab NN's student answer program.
 struct LabRecipe {
   std::map<std::string, Command> compile;  // student file (manifest path) -> its compile command
   Command link;
@@ -39,12 +39,12 @@ std::string recipe_record(const Paths& paths, const Lab& lab);
 
 struct LabBuild {
   bool ok = false;
-  std::string binary;  // the test binary, when ok
+  std::string binary;  // the answer program, when ok
   std::string errors;  // the first compiler, linker or audit errors, when not
   double seconds = 0;
 };
 
-// Compiles `files` (manifest path -> file) and links them into `folder`/test_binary,
+// Compiles `files` (manifest path -> file) and links them into `folder`'s answer program,
 // each command confined by `sandbox`.
 LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
                    const std::map<std::string, std::string>& files, const std::string& folder, const Sandbox& sandbox);

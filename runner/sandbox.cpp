@@ -99,7 +99,7 @@ void chown_all(const fs::path& root, int uid) {
     if (lchown(it->path().c_str(), uid, uid) != 0) continue;
 }
 
-// The system a compiler and a test binary need, read-only: /usr and /etc, and the
+// The system a compiler and an answer program need, read-only: /usr and /etc, and the
 // top-level links or folders of a merged-/usr layout.
 void add_system(std::vector<std::string>& args) {
   for (const char* path : {"/usr", "/etc", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32"}) {

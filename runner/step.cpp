@@ -198,7 +198,7 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
   if (r.status == Status::crashed) {
     // The judge's process is the kit's: its death is never the student's code crashing.
     if (r.run.signal) r.detail = "the kit's test process was killed by " + signal_name(r.run.signal);
-    else r.detail = "the test binary could not be run: " + r.run.output.substr(0, 300);
+    else r.detail = "the kit's test program could not be run: " + r.run.output.substr(0, 300);
   }
   if (r.status == Status::exited_early) {
     r.detail = "the kit's test process ended before its tests did, with exit status " +
