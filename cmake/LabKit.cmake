@@ -87,6 +87,12 @@ function(labkit_add_lab number name)
       set_tests_properties(${lab}.step${step} PROPERTIES LABELS "reference;${lab}"
         ENVIRONMENT "LABKIT_REPORT=${PROJECT_BINARY_DIR}/reports/${lab}.step${step}.json;LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>")
     endforeach()
+    # The header's preconditions: the reference rejects every kind of invalid input with
+    # std::invalid_argument naming the argument. Tagged [contract], in no step: students
+    # are not graded on invalid input unless a step says so.
+    add_test(NAME ${lab}.contract COMMAND test_${stem} "[${lab}][contract]")
+    set_tests_properties(${lab}.contract PROPERTIES LABELS "reference;${lab}"
+      ENVIRONMENT "LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>")
   endif()
 
   # The classic mistakes, each of which the tests must catch.
@@ -130,7 +136,7 @@ function(labkit_manifest_steps number out)
   set(${out} ${result} PARENT_SCOPE)
 endfunction()
 
-# labkit_mutant(NN name NAME id STEP k FIND "text" REPLACE "text" [FILE solution.cpp])
+# labkit_mutant(NN name NAME id STEP k SAYS "word" ... FIND "text" REPLACE "text" [FILE solution.cpp])
 #
 # A mutant is the reference solution with one classic mistake written in (the handout's
 # "classic mistake" of that step): the text FIND replaced by REPLACE. ctest then expects
@@ -139,7 +145,7 @@ endfunction()
 # lab's tests, in tests/NN_name.mutants.cmake.
 function(labkit_mutant number name)
   # PARSE_ARGV keeps the semicolons of C++ code inside FIND and REPLACE.
-  cmake_parse_arguments(PARSE_ARGV 2 M "" "NAME;STEP;FILE;FIND;REPLACE" "")
+  cmake_parse_arguments(PARSE_ARGV 2 M "" "NAME;STEP;FILE;FIND;REPLACE" "SAYS")
   set(stem ${number}_${name})
   if(NOT M_FILE)
     set(M_FILE ${name}.cpp)

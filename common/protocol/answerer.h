@@ -41,7 +41,9 @@ struct Response {
 };
 
 // What the answerer replies, in the first byte of an answered call.
-enum class Status : unsigned char { answered = 0, not_implemented = 1, threw = 2, unknown_call = 3 };
+// rejected: the code threw std::invalid_argument, a precondition of the header it checks
+// (the judge's side throws it again, with its message, so a test can ask for exactly that).
+enum class Status : unsigned char { answered = 0, not_implemented = 1, threw = 2, unknown_call = 3, rejected = 4 };
 
 // The call could not be answered: it crashed, timed out, or sent something unreadable.
 // `got` and `why` are ready for a failure report.

@@ -64,6 +64,7 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
         throw Failed("an exception: std::bad_alloc", "your code ran out of memory during this call: an allocation "
                                                      "too large for the memory limit, or one that never stops growing?");
       throw std::runtime_error(message);
+    case Status::rejected: throw std::invalid_argument(message);
     case Status::unknown_call:
       throw std::logic_error("kit error: the answerer cannot run " + id + ": " + message +
                              " (is it built from the same kit as the tests?)");
@@ -134,6 +135,8 @@ std::string answer(const Table& table, const std::string& request) {
     return failure(Status::unknown_call, std::string("its arguments cannot be read: ") + e.what());
   } catch (const NotImplemented& e) {
     return failure(Status::not_implemented, e.what());
+  } catch (const std::invalid_argument& e) {
+    return failure(Status::rejected, e.what());
   } catch (const std::exception& e) {
     return failure(Status::threw, e.what());
   } catch (...) {
