@@ -84,7 +84,7 @@ function(labkit_add_lab number name)
     file(MAKE_DIRECTORY "${PROJECT_BINARY_DIR}/reports")
     foreach(step IN LISTS steps)
       add_test(NAME ${lab}.step${step} COMMAND test_${stem} "[${lab}][step${step}]")
-      set_tests_properties(${lab}.step${step} PROPERTIES LABELS "reference;${lab}"
+      set_tests_properties(${lab}.step${step} PROPERTIES LABELS "reference;${lab}" FIXTURES_SETUP labkit_reports
         ENVIRONMENT "LABKIT_REPORT=${PROJECT_BINARY_DIR}/reports/${lab}.step${step}.json;LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>")
     endforeach()
     # The header's preconditions: the reference rejects every kind of invalid input with
@@ -139,9 +139,11 @@ endfunction()
 # labkit_mutant(NN name NAME id STEP k SAYS "word" ... FIND "text" REPLACE "text" [FILE solution.cpp])
 #
 # A mutant is the reference solution with one classic mistake written in (the handout's
-# "classic mistake" of that step): the text FIND replaced by REPLACE. ctest then expects
-# step k of the lab to FAIL against it: this is how the kit shows that its tests can
-# fail, and fail for the mistakes students actually make. Mutants live beside the
+# "classic mistake" of that step): the text FIND replaced by REPLACE. ctest then runs the
+# lab's steps against it in order and expects steps before k to pass, step k to FAIL, and
+# the why of that first failure to hold each SAYS word (the concept the mistake breaks):
+# this is how the kit shows that its tests fail, in the right step, for the mistakes
+# students actually make, and say so in the lab's words. Mutants live beside the
 # lab's tests, in tests/NN_name.mutants.cmake.
 function(labkit_mutant number name)
   # PARSE_ARGV keeps the semicolons of C++ code inside FIND and REPLACE.
@@ -177,10 +179,14 @@ function(labkit_mutant number name)
   target_compile_options(${library} PRIVATE -w)  # a mistake may well leave a variable unused
   set_target_properties(${library} PROPERTIES EXCLUDE_FROM_ALL FALSE)
   labkit_add_answerer(${number} ${name} mutant_${M_NAME} ${library})
-  # Caught when the step fails in any way: a failed check, or a crash of the judge's
-  # process (CTest's WILL_FAIL would not count a signal as a failure).
+  # Its steps run in order as a student's would (runner/mutant.h): the ones before STEP
+  # pass, STEP fails, and the why of its first failure holds every word it SAYS.
+  set(says "")
+  foreach(word IN LISTS M_SAYS)
+    list(APPEND says --says "${word}")
+  endforeach()
   add_test(NAME lab${number}.mutant.${M_NAME}
-           COMMAND sh -c "! \"$0\" \"$1\"" $<TARGET_FILE:test_${stem}> "[lab${number}][step${M_STEP}]")
+           COMMAND labkit-runner mutant ${number} --name ${M_NAME} --step ${M_STEP} ${says})
   set_tests_properties(lab${number}.mutant.${M_NAME} PROPERTIES LABELS "mutant;lab${number}"
-    ENVIRONMENT "LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_mutant_${M_NAME}>")
+    ENVIRONMENT "LABKIT_BUILD_DIR=${PROJECT_BINARY_DIR}")
 endfunction()

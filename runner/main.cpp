@@ -2,6 +2,7 @@
 // what is missing, configures and builds first.
 #include "check.h"
 #include "grade.h"
+#include "mutant.h"
 #include "report.h"
 #include "sandbox.h"
 #include "untrusted.h"
@@ -57,8 +58,21 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"auto", "bubblewrap", "landlock", "none"}));
 
   std::string reports;
+  double max_ambiguous = 100;
   CLI::App* report_command = app.add_subcommand("report", "Sum up the case counts a suite run left behind");
   report_command->add_option("directory", reports, "Where the reports are (default: build/reports)");
+  report_command->add_option("--max-ambiguous", max_ambiguous,
+                             "Fail when a random family outside a robustness step has more ambiguous cases than this, in %")
+      ->check(CLI::Range(0.0, 100.0));
+
+  // The kit's own test of a classic mistake (ctest labNN.mutant.NAME); not for students.
+  runner::MutantOptions mutant;
+  CLI::App* mutant_command = app.add_subcommand("mutant", "Check that a classic mistake fails first in its own step, naming its concept");
+  mutant_command->group("");  // hidden from --help
+  mutant_command->add_option("lab", mutant.lab, "The lab, e.g. 02")->required();
+  mutant_command->add_option("--name", mutant.name, "The mutant's NAME")->required();
+  mutant_command->add_option("--step", mutant.step, "The step its mistake belongs to")->required()->check(CLI::PositiveNumber);
+  mutant_command->add_option("--says", mutant.says, "A word its first failure's why must contain");
 
   CLI11_PARSE(app, argc, argv);
   // A seed given on the command line is wiped from it: /proc/PID/cmdline is world-readable.
@@ -80,7 +94,11 @@ int main(int argc, char** argv) {
       unsetenv("LABKIT_SEED");
       return runner::grade(paths, grade);
     }
-    if (report_command->parsed()) return runner::report(reports.empty() ? paths.build + "/reports" : reports);
+    if (mutant_command->parsed()) return runner::mutant(paths, mutant);
+    if (report_command->parsed()) {
+      const runner::Manifest manifest = runner::load_manifest(paths.source + "/grading/manifest.json");
+      return runner::report(reports.empty() ? paths.build + "/reports" : reports, &manifest, max_ambiguous / 100);
+    }
   } catch (const std::exception& e) {
     std::cerr << "labkit: " << runner::safe_text(e.what()) << "\n";  // it may name a student's file
     return 2;

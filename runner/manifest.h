@@ -12,6 +12,9 @@ struct Step {
   std::string title;
   double points = 0;
   bool partial = false;  // partial credit by the fraction of cases passed
+  // The lab's robustness step: exactly degenerate input, judged by the header's exact rules.
+  // Only its random families may be mostly ambiguous; every other step's must be decisive.
+  bool robustness = false;
 };
 
 struct Lab {

@@ -22,7 +22,13 @@ namespace codec {
 double Reader::real() {
   if (next_ >= numbers_.size())
     throw BadToken("it ends after " + std::to_string(numbers_.size()) + " numbers; more are needed");
-  return numbers_[next_++];
+  // Every input of every lab is finite (each header's preconditions): a token with nan or
+  // inf is not a case any generator draws, and the exact oracle has no answer for it.
+  const double x = numbers_[next_++];
+  if (!std::isfinite(x))
+    throw BadToken("number " + std::to_string(next_) + " of the case is " + fmt(x) +
+                   ": the labs' inputs are finite numbers (each header's preconditions)");
+  return x;
 }
 
 std::size_t Reader::count(std::size_t limit) {

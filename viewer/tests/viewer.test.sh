@@ -76,6 +76,8 @@ case $case_name in
   bad_input)
     one_line_error "no lab '99'" "$reference" 99
     one_line_error "ends after 2 numbers" "$reference" 02 --case 'segment_plane:1,2'
+    one_line_error "inputs are finite numbers" "$reference" 02 --case 'segment_plane:0,0,1,0,0,-1,nan,0,0,0,0,1'
+    one_line_error "is not a number" "$reference" 05 --case 'sweep_sphere_plane:1,2,zz'
     one_line_error "looks like 'query:1,2,3'" "$reference" 02 --case 'nonsense'
     one_line_error "has no query 'clip_triangle'" "$reference" 02 --case 'clip_triangle:1,2,3'
     one_line_error "--size needs" "$reference" 02 --size 12
