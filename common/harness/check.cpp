@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <deque>
+#include <map>
 #include <fstream>
 #include <fcntl.h>
 #include <unistd.h>
@@ -88,6 +89,21 @@ char inflight[1 << 18];
 volatile std::size_t inflight_length = 0;
 
 }  // namespace
+
+namespace {
+std::map<std::string, std::string>& rules() {
+  static std::map<std::string, std::string> r;
+  return r;
+}
+}  // namespace
+
+void rule(const std::string& query, const std::string& text) { rules()[query] = text; }
+
+const std::string& rule_of(const std::string& query) {
+  static const std::string none;
+  const auto it = rules().find(query);
+  return it == rules().end() ? none : it->second;
+}
 
 const Settings& settings() {
   static const Settings s = read_settings();

@@ -125,6 +125,14 @@ constexpr double kAmbiguity = 1e-9;
 template <class Input, class ExactAnswer>
 bool flips_under_perturbation(const Input& input, ExactAnswer&& exact, int samples = 16);
 
+// The header's rule that keeps a query's calls finite and well defined, in the lab's words
+// ("bisection halves [t0, t1] until it is shorter than tolerance: at most
+// log2((t1 - t0) / tolerance) + 1 rounds"). A crash, a time-out or an exception on valid
+// input in that query then says the rule before what happened. Set once per query, in
+// the lab's test file, before its cases.
+void rule(const std::string& query, const std::string& text);
+const std::string& rule_of(const std::string& query);
+
 // One hand-worked case from the handout.
 template <class Input, class Judge>
 void example(const std::string& query, const std::string& title, const Input& input, Judge&& judge);
@@ -157,6 +165,12 @@ struct QuietListener : rc::detail::TestListener {
   void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
 };
 
+// "The rule: <the query's rule>. <what happened>", or what happened alone.
+inline std::string with_rule(const std::string& query, const std::string& what) {
+  const std::string& r = rule_of(query);
+  return r.empty() ? what : "the rule: " + r + ". " + what;
+}
+
 // Runs the judge, turning stubs, stray exceptions and calls that got no answer (a crash
 // or a time-out in the answerer's process) into outcomes. A deferred call (a batch is
 // being gathered) goes through to random_cases.
@@ -167,12 +181,16 @@ Outcome run_judge(Judge& judge, const Input& input, QueryReport& report) {
   } catch (const remote::Deferred&) {
     throw;
   } catch (const remote::Failed& e) {
-    return fail("an answer", e.got, e.what());
+    return fail("an answer", e.got, with_rule(report.query, e.what()));
   } catch (const NotImplemented& e) {
     report.not_implemented = e.what();
     return fail("an answer", "a stub", e.what());
+  } catch (const std::invalid_argument& e) {
+    return fail("an answer", std::string("std::invalid_argument: ") + e.what(),
+                with_rule(report.query, "your code rejected a valid input: this input meets every precondition of the header"));
   } catch (const std::exception& e) {
-    return fail("an answer", std::string("an exception: ") + e.what(), "the code under test threw an exception");
+    return fail("an answer", std::string("an exception: ") + e.what(),
+                with_rule(report.query, "your code threw an exception on a valid input"));
   } catch (...) {
     return fail("an answer", "an exception of unknown type", "the code under test threw something not derived from std::exception");
   }

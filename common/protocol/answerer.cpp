@@ -269,7 +269,7 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
       if (wait <= 0) {
         kind = Response::Kind::timed_out;
         problem = "it did not answer within " + std::to_string(call_limit_.count() / 1000.0).substr(0, 4) +
-                  " s (the time limit of one call): an endless loop?";
+                  " s (the time limit of one call)";
         break;
       }
       if (poll(fds, 3, int(std::min<long long>(wait, 1000))) < 0 && errno != EINTR) {
