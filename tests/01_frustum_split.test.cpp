@@ -1,6 +1,7 @@
 // Lab 01 tests. Each step: the hand-worked examples of handouts/01_frustum_split.md,
 // then random cases against the exact oracle (tests/01_frustum_split.judge.cpp).
 #include "01_frustum_split.judge.h"
+#include "common/oracle/clipping.h"
 #include "frustum_split.h"
 
 #include <algorithm>
@@ -105,6 +106,79 @@ Outcome run_clip_random(const TriangleFrustum& in) { return judge::clip_triangle
 
 ColoredMesh colored(const MeshFrustum& in) { return {in.mesh, in.colors}; }
 
+// ---- Decisive random cases -------------------------------------------------------------
+// Steps 1 to 5 must decide their random cases (at most 15% ambiguous), so the
+// generators' exactly degenerate families (a vertex on a plane, an edge through the
+// line where two planes meet, a triangle lying in a plane) are moved just outside the
+// ambiguity band, 16 to 1024 tol off: still near-degenerate, but with one right answer.
+// The exactly degenerate ones are step 6's.
+
+// S as the header defines it: the points' largest |coordinate| and the planes'
+// distances from the origin.
+double scale_with(double points, const Plane* planes, int count) {
+  double s = points;
+  for (int i = 0; i < count; ++i)
+    if (planes[i].normal.norm() > 0) s = std::max(s, std::abs(planes[i].offset) / planes[i].normal.norm());
+  return std::max(s, 1e-300);
+}
+
+// 16 to 1024, a few bits of mantissa: how many tol off the band's edge.
+double band_outside() {
+  return std::ldexp(1 + *rc::gen::inRange(0, 16) / 16.0, *rc::gen::inRange(4, 10)) * *rc::gen::element(-1.0, 1.0);
+}
+
+// A vertex within 16 tol of the plane moves along its normal to 16 to 1024 tol off it
+// (on its own side when it has one): the triangle tilts a little.
+rc::Gen<TrianglePlane> decisive(rc::Gen<TrianglePlane> base) {
+  return rc::gen::exec([base] {
+    TrianglePlane c = *base;
+    const double length = c.plane.normal.norm();
+    const double tol = 1e-9 * scale_with(scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2}), &c.plane, 1);
+    for (int i = 0; i < 3; ++i) {
+      const double d = c.plane.value(c.triangle[i]) / length, off = band_outside();
+      if (!(std::abs(d) <= 16 * tol)) continue;
+      const double to = d == 0 ? off : std::copysign(off, d);
+      c.triangle[i] += ((to * tol - d) / length) * c.plane.normal;
+    }
+    return c;
+  });
+}
+
+// Several planes: while some sign of the clipping rule is in doubt, every plane moves
+// by 16 to 1024 tol (each its own amount and way), from where it was.
+template <class Case, class InDoubt>
+Case moved_until_decisive(const Case& base, double points, InDoubt&& in_doubt) {
+  for (int attempt = 0; attempt < 16; ++attempt) {
+    Case c = base;
+    const double tol = 1e-9 * scale_with(points, c.frustum.planes.data(), 6);
+    if (attempt > 0)
+      for (Plane& p : c.frustum.planes) p.offset += band_outside() * tol * p.normal.norm();
+    if (!in_doubt(c, tol)) return c;
+  }
+  return base;
+}
+
+rc::Gen<TriangleFrustum> decisive(rc::Gen<TriangleFrustum> base) {
+  return rc::gen::exec([base] {
+    const TriangleFrustum c = *base;
+    return moved_until_decisive(c, scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2}), [](const TriangleFrustum& x, double tol) {
+      return oracle::clip_in_doubt(x.triangle, {x.frustum.planes.begin(), x.frustum.planes.end()}, tol);
+    });
+  });
+}
+
+rc::Gen<MeshFrustum> decisive(rc::Gen<MeshFrustum> base) {
+  return rc::gen::exec([base] {
+    const MeshFrustum c = *base;
+    return moved_until_decisive(c, scale_of(c.mesh), [](const MeshFrustum& x, double tol) {
+      const std::vector<Plane> planes(x.frustum.planes.begin(), x.frustum.planes.end());
+      for (std::size_t k = 0; k < x.mesh.size(); ++k)
+        if (oracle::clip_in_doubt(x.mesh.triangle(k), planes, tol)) return true;
+      return false;
+    });
+  });
+}
+
 }  // namespace
 
 // ---- Step 1 ------------------------------------------------------------------------
@@ -138,12 +212,12 @@ TEST_CASE("L01S1 signed distance and vertex classes: worked examples", "[lab01][
 }
 
 TEST_CASE("L01S1 signed distance and vertex classes: random cases", "[lab01][step1][oracle]") {
-  check::random_cases("signed_distance", gen::triangle_plane(), [](const TrianglePlane& in) {
+  check::random_cases("signed_distance", decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
     std::array<double, 3> got{};
     for (int i = 0; i < 3; ++i) got[std::size_t(i)] = signed_distance(in.plane, in.triangle[i]);
     return judge::signed_distance(in, got);
   });
-  check::random_cases("classify", gen::triangle_plane(), [](const TrianglePlane& in) {
+  check::random_cases("classify", decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
     return judge::classify(in, classify(in.plane, in.triangle));
   });
 }
@@ -175,7 +249,7 @@ TEST_CASE("L01S2 split a triangle by one plane: vertices on the plane", "[lab01]
 }
 
 TEST_CASE("L01S2 split a triangle by one plane: random cases", "[lab01][step2][oracle]") {
-  check::random_cases("split_triangle", gen::triangle_plane(), run_split_random);
+  check::random_cases("split_triangle", decisive(gen::triangle_plane()), run_split_random);
 }
 
 // ---- Step 3 ------------------------------------------------------------------------
@@ -242,7 +316,7 @@ TEST_CASE("L01S4 clip a triangle to the frustum: worked examples", "[lab01][step
 }
 
 TEST_CASE("L01S4 clip a triangle to the frustum: random cases", "[lab01][step4][oracle]") {
-  check::random_cases("clip_triangle", gen::triangle_frustum(), run_clip_random);
+  check::random_cases("clip_triangle", decisive(gen::triangle_frustum()), run_clip_random);
 }
 
 // ---- Step 5 ------------------------------------------------------------------------
@@ -279,7 +353,7 @@ TEST_CASE("L01S5 clip a mesh, interpolate colours: worked examples", "[lab01][st
 }
 
 TEST_CASE("L01S5 clip a mesh, interpolate colours: random cases", "[lab01][step5][oracle]") {
-  check::random_cases("clip_mesh", gen::mesh_frustum(), [](const MeshFrustum& in) {
+  check::random_cases("clip_mesh", decisive(gen::mesh_frustum()), [](const MeshFrustum& in) {
     return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum));
   });
 }
