@@ -186,8 +186,8 @@ rc::Gen<TrianglePlane> far_away(rc::Gen<TrianglePlane> base) {
 }
 
 // A needle: long along a lattice direction of the plane's frame (in it, steep to it, or
-// anything between), as thin as 1 / aspect of its length, aspects 2^10 to 2^26 (about
-// 1e3 to 7e7), its middle anywhere near the plane.
+// anything between), as thin as 1 / aspect of its length, aspects 2^10 to 2^27 (about
+// 1e3 to 1.3e8), its middle anywhere near the plane.
 rc::Gen<TrianglePlane> needle_plane_case() {
   return rc::gen::exec([] {
     const double s = *scale();
@@ -196,7 +196,7 @@ rc::Gen<TrianglePlane> needle_plane_case() {
     Vec3 d = along();
     if (d == Vec3::Zero()) d = f.u;
     const Vec3 across = *rc::gen::suchThat(direction(1, 4), [d](const Vec3& v) { return d.cross(v) != Vec3::Zero(); });
-    const Vec3 thin = d.cross(across).normalized() * (d.norm() * std::ldexp(1.0, -*rc::gen::inRange(10, 27)));
+    const Vec3 thin = d.cross(across).normalized() * (d.norm() * std::ldexp(1.0, -*rc::gen::inRange(10, 28)));
     const Vec3 middle = f.origin + *coefficient(false, 2) * f.u + *coefficient(false, 2) * f.w + *coefficient(false, 1) * f.n;
     const double lambda = *rc::gen::inRange(0, 9) / 8.0;
     const Triangle t{middle - d, middle + d, middle - d + 2 * lambda * d + thin};
@@ -501,10 +501,10 @@ rc::Gen<TriangleFrustum> camera_case() {
     const CameraFrustum cf = camera_frustum(*camera());
     Triangle t;
     switch (*rc::gen::inRange(0, 6)) {
-      case 5: {  // a needle through a point of interest, in any direction, aspect 2^10 to 2^26
+      case 5: {  // a needle through a point of interest, in any direction, aspect 2^10 to 2^27
         const Vec3 d = *direction(std::ldexp(1.0, std::ilogb(cf.size) - 2), 8);
         const Vec3 across = *rc::gen::suchThat(direction(1, 4), [d](const Vec3& v) { return d.cross(v) != Vec3::Zero(); });
-        const Vec3 thin = d.cross(across).normalized() * (d.norm() * std::ldexp(1.0, -*rc::gen::inRange(10, 27)));
+        const Vec3 thin = d.cross(across).normalized() * (d.norm() * std::ldexp(1.0, -*rc::gen::inRange(10, 28)));
         const Vec3 middle = anchor(cf) + jitter(cf) / 4;
         t = {middle - d, middle + d, middle - d + (*rc::gen::inRange(0, 9) / 4.0) * d + thin};
         break;
