@@ -105,6 +105,10 @@ Triangle wound(Triangle t);
 // 1e-18 and 1e18 to 1e30), the ends of the header's domain.
 int signed_extreme() { return *rc::gen::element(-1, 1) * *rc::gen::inRange(60, 101); }
 
+// The same plane with its coefficients times k: normals up to 2 become up to 16, the
+// edge of lab 01's exact domain (|n_i| <= 16, |offset| <= 2^14 times the lattice unit).
+Plane longer(const Plane& p, int k) { return {double(k) * p.normal, double(k) * p.offset}; }
+
 // ---- One plane ---------------------------------------------------------------------
 // A plane with an integer normal n through a lattice point o, and two lattice vectors
 // u, w spanning it: every o + i u + j w with dyadic i, j lies exactly on it, and
@@ -454,7 +458,10 @@ rc::Gen<TriangleFrustum> exact_case() {
       default:
         t = {around(f), around(f), around(f)};
     }
-    return TriangleFrustum{wound(t), f.frustum()};
+    Frustum planes = f.frustum();
+    const int k = *rc::gen::inRange(1, 9);
+    for (Plane& p : planes.planes) p = longer(p, k);
+    return TriangleFrustum{wound(t), planes};
   });
 }
 
@@ -557,7 +564,13 @@ rc::Gen<TrianglePlane> triangle_plane() {
   return rc::gen::weightedOneOf<TrianglePlane>({{12, families}, {2, far_away(families)}, {2, extremes}});
 }
 
-rc::Gen<TrianglePlane> exact_triangle_plane() { return plane_families(true); }
+rc::Gen<TrianglePlane> exact_triangle_plane() {
+  return rc::gen::exec([] {
+    TrianglePlane c = *plane_families(true);
+    c.plane = longer(c.plane, *rc::gen::inRange(1, 9));
+    return c;
+  });
+}
 
 rc::Gen<CameraParameters> camera() {
   return rc::gen::exec([] {
@@ -632,7 +645,10 @@ MeshFrustum mesh_across(const Frustum& frustum, const Vec3& center, double unit,
 
 MeshFrustum exact_mesh_case() {
   const ExactFrustum f = *exact_frustum();
-  return mesh_across(f.frustum(), f.world(0, 0, f.near), 4 * f.s, true);
+  Frustum planes = f.frustum();
+  const int k = *rc::gen::inRange(1, 9);
+  for (Plane& p : planes.planes) p = longer(p, k);
+  return mesh_across(planes, f.world(0, 0, f.near), 4 * f.s, true);
 }
 
 }  // namespace
