@@ -427,10 +427,14 @@ Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules) {
   for (std::size_t k = 0; k < count; ++k) {
     for (int i : got.mesh.triangles[k])
       if (i < 0 || std::size_t(i) >= n)
-        return fail("indices into the vertices", "index " + std::to_string(i), "triangle " + std::to_string(k) + " has an index out of range");
+        return fail("indices into the vertices", "index " + std::to_string(i),
+                    "every index must name one of the " + std::to_string(n) + " vertices: triangle " + std::to_string(k) + " has " +
+                        std::to_string(i));
     const int s = got.source[k];
     if (s < 0 || std::size_t(s) >= in.mesh.size())
-      return fail("an input triangle's index", "source " + std::to_string(s), "triangle " + std::to_string(k) + " has a source out of range");
+      return fail("an input triangle's index", "source " + std::to_string(s),
+                  "every source must name one of the " + std::to_string(in.mesh.size()) + " input triangles: triangle " +
+                      std::to_string(k) + " has " + std::to_string(s));
     pieces_of[std::size_t(s)].push_back(got.mesh.triangle(k));
     indices_of[std::size_t(s)].push_back(k);
   }

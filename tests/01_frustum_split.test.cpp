@@ -62,7 +62,8 @@ auto expect_polygon(std::vector<Vec3> corners, double area, Run run, Judge judge
                                  std::to_string(expected) + (expected == 1 ? " triangle is" : " triangles are") + " expected");
     double total = 0;
     for (const Triangle& t : got) total += t.area();
-    e.near("area", total, area, 1e-12);
+    e.that("area", std::abs(total - area) <= 1e-12 * std::max(1.0, area), fmt(total), fmt(area),
+           "the pieces must cover the kept polygon exactly once: its area is " + fmt(area) + ", yours sum to " + fmt(total));
     // The same corners, no more and no fewer (within 1e-12).
     bool same = true;
     for (const Vec3& c : corners) same = same && has_point(got, c);
@@ -91,8 +92,11 @@ Outcome expect_planes(const Frustum& got, const std::array<Plane, 6>& expected, 
   static const char* names[6] = {"left", "right", "bottom", "top", "near", "far"};
   Expect e;
   for (int i = 0; i < 6; ++i) {
-    e.near(std::string(names[i]) + " normal", got.planes[std::size_t(i)].normal, expected[std::size_t(i)].normal, 1e-12);
-    e.near(std::string(names[i]) + " offset", got.planes[std::size_t(i)].offset, expected[std::size_t(i)].offset, 1e-12);
+    const Plane &g = got.planes[std::size_t(i)], &x = expected[std::size_t(i)];
+    const bool ok = (g.normal - x.normal).norm() <= 1e-12 && std::abs(g.offset - x.offset) <= 1e-12;
+    e.that(std::string(names[i]), ok, describe(g), describe(x),
+           std::string("the ") + names[i] + " plane of this worked example is normal " + fmt(x.normal) + ", offset " + fmt(x.offset) +
+               " (within 1e-12): yours is normal " + fmt(g.normal) + ", offset " + fmt(g.offset));
   }
   return e.outcome();
 }
