@@ -657,7 +657,13 @@ rc::Gen<MeshFrustum> mesh_frustum() {
   return rc::gen::exec([] {
     if (*rc::gen::inRange(0, 4) == 0) return exact_mesh_case();
     const CameraFrustum cf = camera_frustum(*camera());
-    return mesh_across(cf.frustum, cf.center, std::ldexp(1.0, std::ilogb(cf.size) - 3), false);
+    MeshFrustum m = mesh_across(cf.frustum, cf.center, std::ldexp(1.0, std::ilogb(cf.size) - 3), false);
+    if (*rc::gen::inRange(0, 6) == 0) {  // squashed along an axis by 2^-10 to 2^-27: needles
+      const int axis = *rc::gen::inRange(0, 3);
+      const double by = std::ldexp(1.0, -*rc::gen::inRange(10, 28)), middle = cf.center[axis];
+      for (Vec3& v : m.mesh.vertices) v[axis] = middle + (v[axis] - middle) * by;
+    }
+    return m;
   });
 }
 
