@@ -152,7 +152,7 @@ Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::v
     for (int j = 0; j < 3; ++j)
       if (!got[i][j].allFinite())
         return fail("finite corners", describe_pieces(got),
-                    "corner " + fmt(got[i][j]) + " of triangle " + std::to_string(i) + " is not a finite point");
+                    "every corner must be a finite point: corner " + fmt(got[i][j]) + " of triangle " + std::to_string(i) + " is not");
   // The usual cases, settled without exact arithmetic.
   const Clear clear = clearance(t, planes, tol);
   if (clear == Clear::inside && got.size() == 1 && same_triangle(got[0], t)) return pass();
