@@ -620,7 +620,15 @@ rc::Gen<Mat4> view_projection_matrix() {
 }
 
 rc::Gen<TriangleFrustum> triangle_frustum() {
-  return rc::gen::weightedOneOf<TriangleFrustum>({{3, camera_case()}, {1, exact_case()}});
+  return rc::gen::exec([] {
+    TriangleFrustum c = *rc::gen::weightedOneOf<TriangleFrustum>({{3, camera_case()}, {1, exact_case()}});
+    if (*rc::gen::inRange(0, 8) == 0)  // each plane's coefficients times 2^-100 to 2^100: normals of any length
+      for (Plane& p : c.frustum.planes) {
+        const int g = *rc::gen::inRange(-100, 101);
+        p = {std::ldexp(1.0, g) * p.normal, std::ldexp(p.offset, g)};
+      }
+    return c;
+  });
 }
 
 rc::Gen<TriangleFrustum> exact_triangle_frustum() { return exact_case(); }
