@@ -109,6 +109,40 @@ bool same_triangle(const Triangle& a, const Triangle& b) {
   return false;
 }
 
+// Why a count is wrong, when a corner of the exact polygon is missing: a vertex on a
+// plane (value 0 is in), or a cut point (a side with strictly opposite signs is cut).
+std::string missing_corner(const Triangle& t, const std::vector<Plane>& planes, const std::vector<Triangle>& got,
+                           const oracle::ClippedPolygon& exact, double tol) {
+  for (const Vec3& c : exact.corners) {
+    bool found = false;
+    for (const Triangle& p : got)
+      for (int j = 0; j < 3; ++j) found = found || (p[j] - c).norm() <= 8 * tol;
+    if (found) continue;
+    for (int i = 0; i < 3; ++i)
+      if (t[i] == c)
+        for (const Plane& p : planes)
+          if (p.value(c) == 0)
+            return ": the corner v" + std::to_string(i) + " = " + fmt(c) + " is missing; its value is 0, and the sets are closed: "
+                   "a vertex with value 0 is in, kept";
+    return ": the corner " + fmt(c) + " is missing; it is where a plane cuts a side whose ends have strictly opposite "
+           "signs: every such side is cut, the closing side from the last corner back to the first included";
+  }
+  return "";
+}
+
+// Why an area is wrong, when a corner is neither a vertex of the input nor on a plane.
+std::string stray_corner(const Triangle& t, const std::vector<Plane>& planes, const std::vector<Triangle>& got, double tol) {
+  for (const Triangle& p : got)
+    for (int j = 0; j < 3; ++j) {
+      bool explained = p[j] == t.v0 || p[j] == t.v1 || p[j] == t.v2;
+      for (const Plane& plane : planes) explained = explained || oracle::within(p[j], plane, tol);
+      if (!explained)
+        return "; the corner " + fmt(p[j]) + " is neither an input vertex nor on a plane: a cut point lies on the "
+               "cutting plane, at t = d_p / (d_p - d_q) measured from p";
+    }
+  return "";
+}
+
 // The checks every answer made of pieces of one triangle must pass: the header's
 // "Pieces" rules. S comes from the caller (a mesh's S covers all of its vertices).
 Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::vector<Triangle>& got, double S,
@@ -118,7 +152,7 @@ Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::v
     for (int j = 0; j < 3; ++j)
       if (!got[i][j].allFinite())
         return fail("finite corners", describe_pieces(got),
-                    "corner " + fmt(got[i][j]) + " of triangle " + std::to_string(i) + " is not a finite point");
+                    "every corner must be a finite point: corner " + fmt(got[i][j]) + " of triangle " + std::to_string(i) + " is not");
   // The usual cases, settled without exact arithmetic.
   const Clear clear = clearance(t, planes, tol);
   if (clear == Clear::inside && got.size() == 1 && same_triangle(got[0], t)) return pass();
@@ -129,28 +163,36 @@ Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::v
   const bool flat = oracle::is_degenerate(t);
   const double area_tol = kRelative * S * longest_edge(t);
 
+  // Where the corners are.
+  static const char* plane_names[6] = {"left", "right", "bottom", "top", "near", "far"};
+  for (std::size_t i = 0; i < got.size(); ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Vec3& p = got[i][j];
+      for (std::size_t k = 0; k < planes.size(); ++k)
+        if (!oracle::inside_all(p, {planes[k]}, tol))
+          return fail(expected, answer, "the pieces must lie in every plane: corner " + fmt(p) + " of triangle " + std::to_string(i) +
+                                            " is outside " + (planes.size() == 6 ? std::string("the ") + plane_names[k] + " plane" : "the plane") +
+                                            " by " + fmt(-oracle::signed_distance(planes[k], p)) + " (tolerance " + fmt(tol) + ")" +
+                                            (planes.size() == 6 && k >= 4 ? ": clip by all six planes, near and far included" : ""));
+      if (!surely_near(p, t, tol) && !oracle::within(p, t, tol))
+        return fail(expected, answer, "the pieces must lie in the input triangle: corner " + fmt(p) + " of triangle " + std::to_string(i) +
+                                          " is " + fmt(oracle::distance(p, t)) + " from it (tolerance " + fmt(tol) + ")");
+    }
+
   // How many pieces: exact, unless a small change of the input could change it.
   const bool doubt = rules == Rules::random && !flat && oracle::clip_in_doubt(t, planes, tol);
   if (!flat && int(got.size()) != exact.triangles() && !doubt)
     return fail(expected, answer,
-                (exact.has_area ? "the polygon triangle ∩ planes has " + count_of(exact.corners.size(), "corner") + ", so " +
+                (exact.has_area ? "triangle ∩ planes has " + count_of(exact.corners.size(), "corner") + ", so " +
                                       count_of(std::size_t(exact.triangles()), "triangle") +
                                       (exact.triangles() == 1 ? " is" : " are") + " expected, not "
                                 : std::string("triangle ∩ planes has no area, so no triangle is expected, not ")) +
-                    std::to_string(got.size()) +
-                    (rules == Rules::exact ? " (this input is exact: the header's rules decide)" : ""));
-
-  // Where the corners are.
-  for (std::size_t i = 0; i < got.size(); ++i)
-    for (int j = 0; j < 3; ++j) {
-      const Vec3& p = got[i][j];
-      if (!oracle::inside_all(p, planes, tol))
-        return fail(expected, answer, "corner " + fmt(p) + " of triangle " + std::to_string(i) +
-                                          " is outside a plane by more than tol = " + fmt(tol));
-      if (!surely_near(p, t, tol) && !oracle::within(p, t, tol))
-        return fail(expected, answer, "corner " + fmt(p) + " of triangle " + std::to_string(i) + " is " +
-                                          fmt(oracle::distance(p, t)) + " from the input triangle (tolerance " + fmt(tol) + ")");
-    }
+                    std::to_string(got.size()) + [&] {
+                      const std::string cause = missing_corner(t, planes, got, exact, tol);
+                      if (!cause.empty() || rules != Rules::exact) return cause;
+                      return std::string(" (this input is exact: decide every sign from the vertices' plane values, never "
+                                         "from a rounded cut point)");
+                    }());
 
   // How much they cover.
   double area = 0;
@@ -163,20 +205,22 @@ Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::v
       within_shifts = area >= in - area_tol && area <= out + area_tol;
     }
     if (!within_shifts)
-      return fail(expected, answer, "the pieces' areas sum to " + fmt(area) + ", the exact area is " + fmt(exact.area) +
-                                        " (tolerance " + fmt(area_tol) + ")");
+      return fail(expected, answer, "the pieces must cover triangle ∩ planes: their areas sum to " + fmt(area) +
+                                        ", its area is " + fmt(exact.area) + " (tolerance " + fmt(area_tol) + ")" +
+                                        stray_corner(t, planes, got, tol));
   }
 
   // No overlaps, and the input's winding.
   const Vec3 normal = t.normal();
   for (std::size_t i = 0; i < got.size(); ++i) {
     if (!flat && got[i].area() > area_tol && !(got[i].normal().dot(normal) > 0))
-      return fail(expected, answer, "triangle " + std::to_string(i) + " winds the other way: its normal " +
-                                        fmt(got[i].normal()) + " points away from the input's " + fmt(normal));
+      return fail(expected, answer, "every piece must wind like the input, (v1 - v0) x (v2 - v0) pointing the same way: triangle " +
+                                        std::to_string(i) + "'s normal " + fmt(got[i].normal()) + " points away from the input's " +
+                                        fmt(normal));
     for (std::size_t j = 0; j < i; ++j) {
       const double overlap = oracle::overlap_area(got[i], got[j], t);
       if (!(overlap <= area_tol))
-        return fail(expected, answer, "triangles " + std::to_string(j) + " and " + std::to_string(i) + " overlap by an area of " +
+        return fail(expected, answer, "the pieces must not overlap: triangles " + std::to_string(j) + " and " + std::to_string(i) + " overlap by an area of " +
                                           fmt(overlap) + " (tolerance " + fmt(area_tol) + ")");
     }
   }
@@ -215,6 +259,21 @@ Interpolation interpolate(const Triangle& t, const std::array<Vec3, 3>& colors, 
   return out;
 }
 
+// A likely cause of a wrong colour at x: t measured from the other end of the edge x is
+// on, or colours blended from other vertices than the position.
+std::string colour_hint(const Triangle& t, const std::array<Vec3, 3>& colors, const Vec3& x, const Vec3& got, double tol) {
+  for (int a = 0; a < 3; ++a) {
+    const int b = (a + 1) % 3;
+    const Vec3 edge = t[b] - t[a];
+    const double s = edge.squaredNorm() > 0 ? (x - t[a]).dot(edge) / edge.squaredNorm() : -1;
+    if (s <= 0 || s >= 1 || (t[a] + s * edge - x).norm() > 1e-9 * edge.norm()) continue;
+    const Vec3 other_end = colors[std::size_t(b)] + s * (colors[std::size_t(a)] - colors[std::size_t(b)]);
+    if ((got - other_end).norm() <= tol)
+      return ": it is the colour at t measured from the other end, c_b + t (c_a - c_b) with t = " + fmt(s) + " from a";
+  }
+  return ": is it blended from the same vertices, with the same weights, as the position?";
+}
+
 // Long double plane value, for corners.
 long double value_at(const Plane& p, const Vec3& x) { return widen(p.normal).dot(widen(x)) + p.offset; }
 
@@ -222,10 +281,21 @@ long double value_at(const Plane& p, const Vec3& x) { return widen(p.normal).dot
 
 Outcome signed_distance(const TrianglePlane& in, const std::array<double, 3>& got) {
   const double tol = kRelative * scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, {in.plane});
-  Expect e;
-  for (int i = 0; i < 3; ++i)
-    e.near("distance of v" + std::to_string(i), got[std::size_t(i)], oracle::signed_distance(in.plane, in.triangle[i]), tol);
-  return e.outcome();
+  const double length = in.plane.normal.norm();
+  for (int i = 0; i < 3; ++i) {
+    const double exact = oracle::signed_distance(in.plane, in.triangle[i]), g = got[std::size_t(i)];
+    if (std::abs(g - exact) <= tol) continue;
+    const std::string v = "v" + std::to_string(i);
+    std::string hint;
+    if (std::abs(length - 1) > 1e-6 && std::abs(g - exact * length) <= tol * length)
+      hint = ": yours is |n| = " + fmt(length) + " times it, the plane's value: divide by |n|";
+    else if (std::abs(g + exact) <= tol)
+      hint = ": yours has the other sign; the distance is positive on the side n points to";
+    return fail("distance of " + v + " = " + fmt(exact), "distance of " + v + " = " + fmt(g),
+                "the signed distance is (n . x + offset) / |n|: for " + v + " it is " + fmt(exact) + ", not " + fmt(g) +
+                    " (tolerance " + fmt(tol) + ")" + hint);
+  }
+  return pass();
 }
 
 Outcome classify(const TrianglePlane& in, const std::array<Side, 3>& got, Rules rules) {
@@ -237,13 +307,15 @@ Outcome classify(const TrianglePlane& in, const std::array<Side, 3>& got, Rules 
     doubt = doubt || (rules == Rules::random && oracle::within(in.triangle[i], in.plane, kMargin * tol));
   }
   for (int i = 0; i < 3; ++i) {
-    if (got[std::size_t(i)] == expected[std::size_t(i)]) continue;
-    const bool near = rules == Rules::random && oracle::within(in.triangle[i], in.plane, kMargin * tol);
-    if (near) continue;
+    const Side e = expected[std::size_t(i)], g = got[std::size_t(i)];
+    if (g == e || (rules == Rules::random && oracle::within(in.triangle[i], in.plane, kMargin * tol))) continue;
+    const double distance = oracle::signed_distance(in.plane, in.triangle[i]);
     return fail(labkit::describe(expected), labkit::describe(got),
-                "v" + std::to_string(i) + " is " + describe(expected[std::size_t(i)]) + ": its value is exactly " +
-                    (expected[std::size_t(i)] == Side::on ? "0" : (expected[std::size_t(i)] == Side::in ? "> 0" : "< 0")) +
-                    (rules == Rules::exact ? " (this input is exact)" : ", and no vertex within 8 tol of the plane decides it"));
+                "a vertex's class is the exact sign of its value, with no tolerance: v" + std::to_string(i) + " is " +
+                    fmt(distance) + " from the plane (value " + (e == Side::on ? "0" : (e == Side::in ? "> 0" : "< 0")) +
+                    "), so it is " + describe(e) + ", not " + describe(g) +
+                    (g == Side::on ? " (a magic epsilon?)" : "") +
+                    (rules == Rules::exact ? "" : "; it is more than 8 tol = " + fmt(kMargin * tol) + " from the plane"));
   }
   return doubt ? ambiguous() : pass();
 }
@@ -256,6 +328,16 @@ Outcome split_triangle(const TrianglePlane& in, const std::vector<Triangle>& got
 Outcome clip_triangle(const TriangleFrustum& in, const std::vector<Triangle>& got, Rules rules) {
   const std::vector<Plane> planes = planes_of(in.frustum);
   return pieces(in.triangle, planes, got, scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, planes), rules);
+}
+
+// Are the side planes those of tan(fov_y) instead of tan(fov_y / 2)?
+bool full_angle(const Camera& c, const Frustum& got) {
+  const Vec3 f = c.forward.normalized(), r = f.cross(c.up).normalized(), u = r.cross(f);
+  const double ty = std::tan(c.fov_y), tx = c.aspect * ty;
+  const Vec3 wrong[4] = {r + tx * f, -r + tx * f, u + ty * f, -u + ty * f};
+  for (int i = 0; i < 4; ++i)
+    if (!((got.planes[std::size_t(i)].normal - wrong[i].normalized()).norm() <= 1e-6)) return false;
+  return true;
 }
 
 Outcome frustum_from_camera(const Camera& in, const Frustum& got) {
@@ -274,17 +356,23 @@ Outcome frustum_from_camera(const Camera& in, const Frustum& got) {
     const std::string name = names[i];
     const std::string want = describe(expected.planes[std::size_t(i)]), have = describe(p);
     if (!(std::abs(p.normal.norm() - 1) <= kRelative))
-      return fail(name + ": " + want, name + ": " + have, "the " + name + " plane's normal has length " + fmt(p.normal.norm()) + ", not 1");
+      return fail(name + ": " + want, name + ": " + have, "every plane built must have a unit normal: the " + name +
+                                                              " plane's has length " + fmt(p.normal.norm()));
     if (!(value_at(p, center) > tol))
       return fail(name + ": " + want, name + ": " + have,
-                  "the " + name + " plane's normal points out: the point eye + forward (near + far) / 2 is behind it");
+                  "every normal must point into the frustum: the " + name +
+                      " plane's points out, the frustum's centre eye + forward (near + far) / 2 is behind it (value " +
+                      fmt(double(value_at(p, center))) + ")");
     for (int k = 0; k < 8; ++k) {
       if (((k >> bit[i]) & 1) != set[i]) continue;
       const long double v = value_at(p, corners[std::size_t(k)]);
       if (!(std::abs(v) <= tol))
         return fail(name + ": " + want, name + ": " + have,
-                    "the frustum's corner " + fmt(corners[std::size_t(k)]) + " should lie on the " + name + " plane, and is " +
-                        fmt(double(v)) + " from it (tolerance " + fmt(tol) + ")");
+                    "each plane passes through its four corners of the frustum: the corner " + fmt(corners[std::size_t(k)]) +
+                        " is " + fmt(double(v)) + " from the " + name + " plane (tolerance " + fmt(tol) + ")" +
+                        (i < 4 && full_angle(in, got) ? "; these side planes open by tan(fov_y), and fov_y is the full angle: "
+                                                        "use tan(fov_y / 2)"
+                                                      : ""));
     }
   }
   return pass();
@@ -302,12 +390,21 @@ Outcome frustum_from_matrix(const Mat4& in, const Frustum& got) {
     if (!(length > 0)) continue;  // no plane to compare with
     const double normal_tol = kRelative * a / length;
     const double offset_tol = kRelative * (b + a * std::abs(raw[3]) / length) / length;
-    const std::string name = names[i];
-    Expect x;
-    x.near(name + " normal", p.normal, e.normal, normal_tol);
-    x.near(name + " offset", p.offset, e.offset, offset_tol);
-    const Outcome o = x.outcome();
-    if (o.verdict == Outcome::Verdict::fail) return o;
+    const std::string name = names[i], want = name + ": " + describe(e), have = name + ": " + describe(p);
+    static const char* rows[6] = {"r3 + r0", "r3 - r0", "r3 + r1", "r3 - r1", "r3 + r2", "r3 - r2"};
+    if (!(std::abs(p.normal.norm() - 1) <= kRelative))
+      return fail(want, have, "each plane (a, b, c, d) must be divided by |(a, b, c)| so that its normal has unit length: the " +
+                                  name + " plane's has length " + fmt(p.normal.norm()));
+    const double off = (p.normal - e.normal).norm(), offset_off = std::abs(p.offset - e.offset);
+    if (off <= normal_tol && offset_off <= offset_tol) continue;
+    const Plane columns = oracle::frustum_planes(in.transpose())[std::size_t(i)];
+    const bool transposed = (p.normal - columns.normal).norm() <= 1e-6 && std::abs(p.offset - columns.offset) <= 1e-6 * (1 + std::abs(columns.offset));
+    return fail(want, have, "the " + name + " plane is the rows' combination " + rows[i] + " over |(a, b, c)|: normal " + fmt(e.normal) +
+                                ", offset " + fmt(e.offset) + "; yours is off by " + fmt(off) + " and " + fmt(offset_off) +
+                                " (tolerances " + fmt(normal_tol) + ", " + fmt(offset_tol) + ")" +
+                                (transposed ? ": yours combines the columns; the planes come from the rows of M, as points are "
+                                              "columns multiplied on the right, M (p, 1)"
+                                            : ""));
   }
   return pass();
 }
@@ -319,17 +416,25 @@ Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules) {
   const std::size_t n = got.mesh.vertices.size(), count = got.mesh.size();
   const std::string sizes = std::to_string(n) + " vertices, " + std::to_string(got.colors.size()) + " colours, " +
                             std::to_string(count) + " triangles, " + std::to_string(got.source.size()) + " sources";
-  if (got.colors.size() != n) return fail("one colour per vertex", sizes, "colors must have one entry per vertex");
-  if (got.source.size() != count) return fail("one source per triangle", sizes, "source must have one entry per triangle");
+  if (got.colors.size() != n)
+    return fail("one colour per vertex", sizes, "every vertex needs a colour, the new cut points included: " +
+                                                    std::to_string(n) + " vertices, " + count_of(got.colors.size(), "colour"));
+  if (got.source.size() != count)
+    return fail("one source per triangle", sizes, "every triangle needs its source, the input triangle it is a piece of: " +
+                                                      count_of(count, "triangle") + ", " + count_of(got.source.size(), "source"));
   std::vector<std::vector<Triangle>> pieces_of(in.mesh.size());
   std::vector<std::vector<std::size_t>> indices_of(in.mesh.size());
   for (std::size_t k = 0; k < count; ++k) {
     for (int i : got.mesh.triangles[k])
       if (i < 0 || std::size_t(i) >= n)
-        return fail("indices into the vertices", "index " + std::to_string(i), "triangle " + std::to_string(k) + " has an index out of range");
+        return fail("indices into the vertices", "index " + std::to_string(i),
+                    "every index must name one of the " + std::to_string(n) + " vertices: triangle " + std::to_string(k) + " has " +
+                        std::to_string(i));
     const int s = got.source[k];
     if (s < 0 || std::size_t(s) >= in.mesh.size())
-      return fail("an input triangle's index", "source " + std::to_string(s), "triangle " + std::to_string(k) + " has a source out of range");
+      return fail("an input triangle's index", "source " + std::to_string(s),
+                  "every source must name one of the " + std::to_string(in.mesh.size()) + " input triangles: triangle " +
+                      std::to_string(k) + " has " + std::to_string(s));
     pieces_of[std::size_t(s)].push_back(got.mesh.triangle(k));
     indices_of[std::size_t(s)].push_back(k);
   }
@@ -355,8 +460,9 @@ Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules) {
         const Vec3& c = got.colors[std::size_t(i)];
         if (!((c - f.value).norm() <= color_tol))
           return fail("colour " + fmt(f.value), "colour " + fmt(c),
-                      "vertex " + std::to_string(i) + " at " + fmt(x) + " of a piece of input triangle " + std::to_string(s) +
-                          ": linear interpolation there gives " + fmt(f.value) + " (tolerance " + fmt(color_tol) + ")");
+                      "a cut point's colour is interpolated with the same t as its position: at vertex " + std::to_string(i) + " " +
+                          fmt(x) + " of a piece of input triangle " + std::to_string(s) + ", linear interpolation gives " +
+                          fmt(f.value) + ", not " + fmt(c) + " (tolerance " + fmt(color_tol) + ")" + colour_hint(t, colors, x, c, color_tol));
       }
   }
   return doubt ? ambiguous() : pass();

@@ -99,6 +99,16 @@ namespace labkit::gen {
 
 namespace {
 
+Triangle wound(Triangle t);
+
+// An exponent for the scale extremes: 2^-100 to 2^-60 or 2^60 to 2^100 (about 1e-30 to
+// 1e-18 and 1e18 to 1e30), the ends of the header's domain.
+int signed_extreme() { return *rc::gen::element(-1, 1) * *rc::gen::inRange(60, 101); }
+
+// The same plane with its coefficients times k: normals up to 2 become up to 16, the
+// edge of lab 01's exact domain (|n_i| <= 16, |offset| <= 2^14 times the lattice unit).
+Plane longer(const Plane& p, int k) { return {double(k) * p.normal, double(k) * p.offset}; }
+
 // ---- One plane ---------------------------------------------------------------------
 // A plane with an integer normal n through a lattice point o, and two lattice vectors
 // u, w spanning it: every o + i u + j w with dyadic i, j lies exactly on it, and
@@ -177,6 +187,34 @@ rc::Gen<TrianglePlane> far_away(rc::Gen<TrianglePlane> base) {
     c.plane.offset -= c.plane.normal.dot(offset);
     return c;
   });
+}
+
+// A needle: long along a lattice direction of the plane's frame (in it, steep to it, or
+// anything between), as thin as 1 / aspect of its length, aspects 2^10 to 2^27 (about
+// 1e3 to 1.3e8), its middle anywhere near the plane.
+rc::Gen<TrianglePlane> needle_plane_case() {
+  return rc::gen::exec([] {
+    const double s = *scale();
+    const PlaneFrame f = *plane_frame(s, false);
+    const auto along = [&] { return double(*integer(4)) * f.u + double(*integer(4)) * f.w + double(*integer(4)) * f.n; };
+    Vec3 d = along();
+    if (d == Vec3::Zero()) d = f.u;
+    const Vec3 across = *rc::gen::suchThat(direction(1, 4), [d](const Vec3& v) { return d.cross(v) != Vec3::Zero(); });
+    const Vec3 thin = d.cross(across).normalized() * (d.norm() * std::ldexp(1.0, -*rc::gen::inRange(10, 28)));
+    const Vec3 middle = f.origin + *coefficient(false, 2) * f.u + *coefficient(false, 2) * f.w + *coefficient(false, 1) * f.n;
+    const double lambda = *rc::gen::inRange(0, 9) / 8.0;
+    const Triangle t{middle - d, middle + d, middle - d + 2 * lambda * d + thin};
+    return TrianglePlane{wound(t), f.plane};
+  });
+}
+
+// The same case with its coordinates times 2^e and its normal times 2^g: every
+// degeneracy stays exact, and the coordinates reach the header's extremes.
+TrianglePlane scaled(TrianglePlane c, int e, int g) {
+  for (int i = 0; i < 3; ++i) c.triangle[i] = std::ldexp(1.0, e) * c.triangle[i];
+  c.plane.normal *= std::ldexp(1.0, g);
+  c.plane.offset = std::ldexp(c.plane.offset, e + g);
+  return c;
 }
 
 rc::Gen<TrianglePlane> zero_area_plane_case() {
@@ -420,7 +458,10 @@ rc::Gen<TriangleFrustum> exact_case() {
       default:
         t = {around(f), around(f), around(f)};
     }
-    return TriangleFrustum{wound(t), f.frustum()};
+    Frustum planes = f.frustum();
+    const int k = *rc::gen::inRange(1, 9);
+    for (Plane& p : planes.planes) p = longer(p, k);
+    return TriangleFrustum{wound(t), planes};
   });
 }
 
@@ -466,7 +507,15 @@ rc::Gen<TriangleFrustum> camera_case() {
   return rc::gen::exec([] {
     const CameraFrustum cf = camera_frustum(*camera());
     Triangle t;
-    switch (*rc::gen::inRange(0, 5)) {
+    switch (*rc::gen::inRange(0, 6)) {
+      case 5: {  // a needle through a point of interest, in any direction, aspect 2^10 to 2^27
+        const Vec3 d = *direction(std::ldexp(1.0, std::ilogb(cf.size) - 2), 8);
+        const Vec3 across = *rc::gen::suchThat(direction(1, 4), [d](const Vec3& v) { return d.cross(v) != Vec3::Zero(); });
+        const Vec3 thin = d.cross(across).normalized() * (d.norm() * std::ldexp(1.0, -*rc::gen::inRange(10, 28)));
+        const Vec3 middle = anchor(cf) + jitter(cf) / 4;
+        t = {middle - d, middle + d, middle - d + (*rc::gen::inRange(0, 9) / 4.0) * d + thin};
+        break;
+      }
       case 0:  // anchored at points of interest, spread by the frustum's size
         t = {anchor(cf) + jitter(cf), anchor(cf) + jitter(cf), anchor(cf) + jitter(cf)};
         break;
@@ -507,16 +556,27 @@ rc::Gen<TrianglePlane> triangle_plane() {
       {1, plane_case(false, Heights::touch_vertex, true)},
   });
   const rc::Gen<TrianglePlane> families = rc::gen::weightedOneOf<TrianglePlane>({
-      {6, exactly}, {3, nearly}, {1, zero_area_plane_case()}, {2, rc::gen::map(exactly, unit_normal)}});
-  return rc::gen::weightedOneOf<TrianglePlane>({{7, families}, {1, far_away(families)}});
+      {6, exactly}, {3, nearly}, {1, zero_area_plane_case()}, {2, rc::gen::map(exactly, unit_normal)},
+      {2, needle_plane_case()}});
+  const rc::Gen<TrianglePlane> extremes = rc::gen::exec([families] {
+    return scaled(*families, signed_extreme(), *rc::gen::inRange(-100, 101));
+  });
+  return rc::gen::weightedOneOf<TrianglePlane>({{12, families}, {2, far_away(families)}, {2, extremes}});
 }
 
-rc::Gen<TrianglePlane> exact_triangle_plane() { return plane_families(true); }
+rc::Gen<TrianglePlane> exact_triangle_plane() {
+  return rc::gen::exec([] {
+    TrianglePlane c = *plane_families(true);
+    c.plane = longer(c.plane, *rc::gen::inRange(1, 9));
+    return c;
+  });
+}
 
 rc::Gen<CameraParameters> camera() {
   return rc::gen::exec([] {
     CameraParameters c;
-    const double s = *scale();
+    // Mostly the usual scales; one in 16 at the ends of the header's domain.
+    const double s = *rc::gen::inRange(0, 16) == 0 ? std::ldexp(1.0, signed_extreme()) : *scale();
     c.eye = *point(s);
     if (*rc::gen::inRange(0, 8) == 0) c.eye += *lattice_point(s * 1024.0, 64);
     c.forward = *direction(1, 8);
@@ -524,6 +584,10 @@ rc::Gen<CameraParameters> camera() {
     c.up = *rc::gen::suchThat(direction(1, 8), [f](const Vec3& u) {
       return f.cross(u).norm() >= std::sin(15 * M_PI / 180) * f.norm() * u.norm();
     });
+    if (*rc::gen::inRange(0, 16) == 0) {  // forward and up of any length
+      c.forward *= std::ldexp(1.0, *rc::gen::inRange(-100, 101));
+      c.up *= std::ldexp(1.0, *rc::gen::inRange(-100, 101));
+    }
     c.fov_y = *rc::gen::inRange(20, 121) * M_PI / 180;
     c.aspect = *rc::gen::element(0.5, 0.75, 1.0, 4.0 / 3.0, 16.0 / 9.0, 2.0);
     c.near = s * std::ldexp(1.0, *rc::gen::inRange(-3, 2));
@@ -556,7 +620,15 @@ rc::Gen<Mat4> view_projection_matrix() {
 }
 
 rc::Gen<TriangleFrustum> triangle_frustum() {
-  return rc::gen::weightedOneOf<TriangleFrustum>({{3, camera_case()}, {1, exact_case()}});
+  return rc::gen::exec([] {
+    TriangleFrustum c = *rc::gen::weightedOneOf<TriangleFrustum>({{3, camera_case()}, {1, exact_case()}});
+    if (*rc::gen::inRange(0, 8) == 0)  // each plane's coefficients times 2^-100 to 2^100: normals of any length
+      for (Plane& p : c.frustum.planes) {
+        const int g = *rc::gen::inRange(-100, 101);
+        p = {std::ldexp(1.0, g) * p.normal, std::ldexp(p.offset, g)};
+      }
+    return c;
+  });
 }
 
 rc::Gen<TriangleFrustum> exact_triangle_frustum() { return exact_case(); }
@@ -581,7 +653,10 @@ MeshFrustum mesh_across(const Frustum& frustum, const Vec3& center, double unit,
 
 MeshFrustum exact_mesh_case() {
   const ExactFrustum f = *exact_frustum();
-  return mesh_across(f.frustum(), f.world(0, 0, f.near), 4 * f.s, true);
+  Frustum planes = f.frustum();
+  const int k = *rc::gen::inRange(1, 9);
+  for (Plane& p : planes.planes) p = longer(p, k);
+  return mesh_across(planes, f.world(0, 0, f.near), 4 * f.s, true);
 }
 
 }  // namespace
@@ -590,7 +665,13 @@ rc::Gen<MeshFrustum> mesh_frustum() {
   return rc::gen::exec([] {
     if (*rc::gen::inRange(0, 4) == 0) return exact_mesh_case();
     const CameraFrustum cf = camera_frustum(*camera());
-    return mesh_across(cf.frustum, cf.center, std::ldexp(1.0, std::ilogb(cf.size) - 3), false);
+    MeshFrustum m = mesh_across(cf.frustum, cf.center, std::ldexp(1.0, std::ilogb(cf.size) - 3), false);
+    if (*rc::gen::inRange(0, 6) == 0) {  // squashed along an axis by 2^-10 to 2^-27: needles
+      const int axis = *rc::gen::inRange(0, 3);
+      const double by = std::ldexp(1.0, -*rc::gen::inRange(10, 28)), middle = cf.center[axis];
+      for (Vec3& v : m.mesh.vertices) v[axis] = middle + (v[axis] - middle) * by;
+    }
+    return m;
   });
 }
 

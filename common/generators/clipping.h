@@ -6,8 +6,9 @@
 // points, or rounded unit normals; frustums come from random cameras (rounded unit
 // planes) or are exact: boxes and pyramids with integer normals. Families on purpose:
 // vertices on planes, edges along them, triangles lying in them or touching them at a
-// point, edges through frustum edges and corners, tiny offsets off all of these, every
-// scale from 2^-20 to 2^20, and far from the origin.
+// point, edges through frustum edges and corners, tiny offsets off all of these, needle
+// triangles (aspects up to 2^27, about 1.3e8), every scale from 2^-20 to 2^20 and some at
+// the ends of lab 01's domain (2^-100 to 2^100), and far from the origin.
 #pragma once
 
 #include "common/geometry.h"

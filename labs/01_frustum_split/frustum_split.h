@@ -62,6 +62,21 @@
 //    the normal within 1e-9 A / |n| of the exact unit normal and the offset within
 //    1e-9 (B + A |d| / |n|) / |n| of the exact d / |n|, A being the largest |entry|
 //    of the matrix's first three columns and B of its last column.
+//
+// Domain: where answers must match the exact ones within those tolerances. Finite
+// input whose non-zero coordinates, offsets and normal components have magnitudes from
+// 2^-100 to 2^100 (about 1e-30 to 1e30), normals of any length in that range; triangles
+// of any shape, needles with an aspect up to 1e8 included; cameras with fov_y from 20
+// to 120 degrees, aspect from 1/2 to 2 and far / near up to 64. (In that range a product
+// of three plane values neither overflows nor underflows.)
+//
+// Preconditions. Every query needs finite numbers and planes with a non-zero normal. A
+// camera also needs forward and up non-zero and not parallel, 0 < fov_y < pi,
+// aspect > 0 and 0 < near < far; a matrix, a non-zero normal (a, b, c) for each of its
+// six planes; a mesh, one colour per vertex and indices into its vertices. Input that
+// breaks one throws std::invalid_argument naming the argument and the rule, such as
+// "classify: plane.normal must be non-zero, got (0, 0, 0)". No step grades invalid input:
+// the checks are good practice, not a requirement.
 #pragma once
 
 #include "common/geometry.h"
@@ -139,8 +154,11 @@ ClippedMesh clip_mesh(const ColoredMesh& mesh, const Frustum& frustum);
 
 // ---- Step 6 (L01S6): robustness ----------------------------------------------------
 // No new function: steps 1 to 5 must follow the rules at the top of this file exactly on
-// exact input (integer coordinates and plane coefficients up to about 1024, times a power
-// of two): vertices exactly on planes, edges along them, triangles lying in them or
-// touching them at a point, and edges through the lines where two planes meet.
+// exact input: integer coordinates |x| <= 1024 and integer offsets |offset| <= 2^14, all
+// times one power of two, and integer normal components |n_i| <= 16. Every plane value
+// is then an integer (times that power of two) with |d| <= 3 * 16 * 1024 + 2^14 = 2^16,
+// so products of up to three of them stay below 2^53, exact in doubles. The input has
+// vertices exactly on planes, edges along them, triangles lying in them or touching them
+// at a point, and edges through the lines where two planes meet.
 
 }  // namespace labkit::lab01

@@ -10,10 +10,44 @@
 
 #include <array>
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace labkit::lab01 {
 
 namespace {
+
+// ---- Preconditions (the header's) ------------------------------------------------------
+// Invalid input is named, never answered: a NaN has no side, and a zero normal no plane.
+
+std::string text(double x) {
+  std::ostringstream out;
+  out.precision(17);
+  out << x;
+  return out.str();
+}
+std::string text(const Vec3& v) { return "(" + text(v.x()) + ", " + text(v.y()) + ", " + text(v.z()) + ")"; }
+
+void require(bool ok, const char* query, const std::string& rule) {
+  if (!ok) throw std::invalid_argument(std::string(query) + ": " + rule);
+}
+void require_point(const Vec3& p, const char* query, const std::string& name) {
+  require(p.allFinite(), query, name + " must be finite, got " + text(p));
+}
+void require_plane(const Plane& p, const char* query, const std::string& name) {
+  require_point(p.normal, query, name + ".normal");
+  require(std::isfinite(p.offset), query, name + ".offset must be finite, got " + text(p.offset));
+  require(p.normal != Vec3::Zero(), query, name + ".normal must be non-zero, got (0, 0, 0)");
+}
+void require_triangle(const Triangle& t, const char* query) {
+  for (int i = 0; i < 3; ++i) require_point(t[i], query, "triangle.v" + std::to_string(i));
+}
+void require_frustum(const Frustum& f, const char* query) {
+  static const char* names[6] = {"left", "right", "bottom", "top", "near", "far"};
+  for (int k = 0; k < 6; ++k)
+    require_plane(f.planes[std::size_t(k)], query, "frustum.planes[" + std::to_string(k) + "] (" + names[k] + ")");
+}
 
 Side side_of(double value) { return value > 0 ? Side::in : (value < 0 ? Side::out : Side::on); }
 
@@ -139,13 +173,21 @@ std::vector<Triangle> fan(const Polygon& polygon, const Triangle& t) {
 
 }  // namespace
 
-double signed_distance(const Plane& plane, const Vec3& x) { return plane.value(x) / plane.normal.norm(); }
+double signed_distance(const Plane& plane, const Vec3& x) {
+  require_plane(plane, "signed_distance", "plane");
+  require_point(x, "signed_distance", "x");
+  return plane.value(x) / plane.normal.norm();
+}
 
 std::array<Side, 3> classify(const Plane& plane, const Triangle& triangle) {
+  require_plane(plane, "classify", "plane");
+  require_triangle(triangle, "classify");
   return {side_of(plane.value(triangle.v0)), side_of(plane.value(triangle.v1)), side_of(plane.value(triangle.v2))};
 }
 
 std::vector<Triangle> split_triangle(const Triangle& triangle, const Plane& plane) {
+  require_triangle(triangle, "split_triangle");
+  require_plane(plane, "split_triangle", "plane");
   return fan(clip_polygon(triangle, &plane, 1), triangle);
 }
 
@@ -156,6 +198,19 @@ std::vector<Triangle> split_triangle(const Triangle& triangle, const Plane& plan
 //   the left plane is (r + tx f) / |...| through the eye. The others alike; near and far
 //   are f and -f through eye + near f and eye + far f.
 Frustum frustum_from_camera(const Camera& camera) {
+  const char* q = "frustum_from_camera";
+  require_point(camera.eye, q, "camera.eye");
+  require_point(camera.forward, q, "camera.forward");
+  require_point(camera.up, q, "camera.up");
+  require(camera.forward != Vec3::Zero(), q, "camera.forward must be non-zero, got (0, 0, 0)");
+  require(camera.up != Vec3::Zero(), q, "camera.up must be non-zero, got (0, 0, 0)");
+  require(camera.forward.normalized().cross(camera.up.normalized()) != Vec3::Zero(), q,
+          "camera.up must not be parallel to camera.forward, got up " + text(camera.up) + " and forward " + text(camera.forward));
+  require(camera.fov_y > 0 && camera.fov_y < M_PI, q, "camera.fov_y must be in (0, pi), got " + text(camera.fov_y));
+  require(camera.aspect > 0 && std::isfinite(camera.aspect), q, "camera.aspect must be finite and > 0, got " + text(camera.aspect));
+  require(camera.near > 0, q, "camera.near must be > 0, got " + text(camera.near));
+  require(camera.far > camera.near && std::isfinite(camera.far), q,
+          "camera.far must be finite and > near = " + text(camera.near) + ", got " + text(camera.far));
   const Vec3 f = camera.forward.normalized();
   const Vec3 r = f.cross(camera.up).normalized();
   const Vec3 u = r.cross(f);
@@ -179,9 +234,13 @@ Frustum frustum_from_camera(const Camera& camera) {
 //   when -w <= x, that is (r3 + r0) . (p, 1) >= 0: a plane whose coefficients are the
 //   sum of rows 3 and 0. Each of the six inequalities gives one plane this way.
 Frustum frustum_from_matrix(const Mat4& view_projection) {
+  require(view_projection.allFinite(), "frustum_from_matrix", "view_projection must be finite");
+  static const char* names[6] = {"left r3 + r0", "right r3 - r0", "bottom r3 + r1", "top r3 - r1", "near r3 + r2", "far r3 - r2"};
   const auto plane = [&](int row, double sign) {
     const Vec4 c = (view_projection.row(3) + sign * view_projection.row(row)).transpose();
     const double length = c.head<3>().norm();
+    require(length > 0, "frustum_from_matrix",
+            std::string("view_projection: the ") + names[2 * row + (sign < 0)] + " plane's normal (a, b, c) must be non-zero, got (0, 0, 0)");
     return Plane{c.head<3>() / length, c[3] / length};
   };
   Frustum frustum;
@@ -195,12 +254,27 @@ Frustum frustum_from_matrix(const Mat4& view_projection) {
 }
 
 std::vector<Triangle> clip_triangle(const Triangle& triangle, const Frustum& frustum) {
+  require_triangle(triangle, "clip_triangle");
+  require_frustum(frustum, "clip_triangle");
   return fan(clip_polygon(triangle, frustum.planes.data(), 6), triangle);
 }
 
 // Vertices of the input stay where they are (pieces use them by their index); each cut
 // point is a new vertex, its colour blended with the same weights as its position.
 ClippedMesh clip_mesh(const ColoredMesh& in, const Frustum& frustum) {
+  const char* q = "clip_mesh";
+  const std::size_t n = in.mesh.vertices.size();
+  require(in.colors.size() == n, q, "mesh.colors must have one colour per vertex: " + std::to_string(in.colors.size()) +
+                                        " colours for " + std::to_string(n) + " vertices");
+  for (std::size_t i = 0; i < n; ++i) {
+    require_point(in.mesh.vertices[i], q, "mesh.mesh.vertices[" + std::to_string(i) + "]");
+    require_point(in.colors[i], q, "mesh.colors[" + std::to_string(i) + "]");
+  }
+  for (std::size_t k = 0; k < in.mesh.size(); ++k)
+    for (int i : in.mesh.triangles[k])
+      require(i >= 0 && std::size_t(i) < n, q, "mesh.mesh.triangles[" + std::to_string(k) + "] must index the vertices (0 to " +
+                                                   std::to_string(n) + " - 1), got " + std::to_string(i));
+  require_frustum(frustum, q);
   ClippedMesh out;
   out.mesh.vertices = in.mesh.vertices;
   out.colors = in.colors;
