@@ -91,7 +91,7 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
 }
 
 TEST_CASE("L02S1 signed distances and the crossing point: random cases", "[lab02][step1][oracle]") {
-  check::random_cases("segment_plane", gen::segment_triangle(), run_segment_plane);
+  check::random_cases("segment_plane", gen::decisive_segment_triangle(), run_segment_plane);
 }
 
 // ---- Step 2 ------------------------------------------------------------------------
@@ -226,8 +226,8 @@ TEST_CASE("L02S4 test and find segment-triangle: random cases", "[lab02][step4][
                        {-0.766850471496582, 8.200785636901855, 14},
                        {1.4385852813720703, 8.58306884765625e-06, 0}}),
                  run_find);
-  check::random_cases("test_segment_triangle", gen::segment_triangle(), run_test);
-  check::random_cases("find_segment_triangle", gen::segment_triangle(), run_find);
+  check::random_cases("test_segment_triangle", gen::decisive_segment_triangle(), run_test);
+  check::random_cases("find_segment_triangle", gen::decisive_segment_triangle(), run_find);
 }
 
 // ---- Step 5 ------------------------------------------------------------------------
@@ -268,13 +268,13 @@ TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
 }
 
 TEST_CASE("L02S5 segment against a mesh: random cases", "[lab02][step5][oracle]") {
-  check::random_cases("any_hit", gen::segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases("any_hit", gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::any_hit(in, any_hit(in.segment, in.mesh));
   });
-  check::random_cases("first_hit", gen::segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases("first_hit", gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::first_hit(in, first_hit(in.segment, in.mesh));
   });
-  check::random_cases("all_hits", gen::segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases("all_hits", gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::all_hits(in, all_hits(in.segment, in.mesh));
   });
 }
