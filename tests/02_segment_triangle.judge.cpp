@@ -149,8 +149,11 @@ void check_hit(Expect& e, const Segment& s, const Triangle& tri, double t, const
   const double along = tol + (length > 0 ? length * t_tolerance(s, tri, tol) : 0.0);
   e.that("point", oracle::within(point, tri, along), fmt(point), "a point of the triangle",
          "the point is " + fmt(oracle::distance(point, tri)) + " from the triangle (tolerance " + fmt(along) + ")");
+  std::string beyond;
+  if (t < 0 || t > 1) beyond = ": t = " + fmt(t) + " is beyond an end, where the segment does not reach (both ends on the same side?)";
   e.that("point on segment", oracle::within(point, s, tol), fmt(point), "a point of the segment",
-         "the point is " + fmt(oracle::distance(point, s)) + " from the segment (tolerance " + fmt(tol) + ")");
+         "the point must be on the segment, a + t (b - a) with 0 <= t <= 1, and it is " + fmt(oracle::distance(point, s)) +
+             " from it (tolerance " + fmt(tol) + ")" + beyond);
   e.that("t", oracle::parameter_reproduces(s, t, point, tol), fmt(t), "a + t (b - a) = point",
          "a + t (b - a) is " + fmt((s.point(t) - point).norm()) + " away from the point");
   e.that("barycentric", std::abs(weights.sum() - 1) <= kRelative && oracle::weights_reproduce(tri, weights, point, tol),

@@ -6,8 +6,8 @@ labkit_mutant(02 segment_triangle NAME crossing_t_sign STEP 1 SAYS "d_a / (d_a -
   REPLACE "c.t = d_a / (d_b - d_a);")
 
 labkit_mutant(02 segment_triangle NAME distance_not_normalized STEP 1 SAYS "distance" "unit"
-  FIND "const Vec3 unit = corner.n / length;"
-  REPLACE "const Vec3 unit = corner.n;")
+  FIND "c.d_a = scale.out(d_a);\n  c.d_b = scale.out(d_b);"
+  REPLACE "c.d_a = (segment.a - triangle.v0).dot(triangle.normal());\n  c.d_b = (segment.b - triangle.v0).dot(triangle.normal());")
 
 labkit_mutant(02 segment_triangle NAME strict_edge_test STEP 2 SAYS "closed"
   FIND "if ((x - from).dot(n.cross(to - from)) < 0) return false;  // strictly outside edge i"
@@ -19,7 +19,7 @@ labkit_mutant(02 segment_triangle NAME beta_sign STEP 3 SAYS "beta" "sign"
 
 labkit_mutant(02 segment_triangle NAME fuzzy_zero_area STEP 4 SAYS "zero area"
   FIND "if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit"
-  REPLACE "if (n.isZero()) return {};")
+  REPLACE "if (input_tri.normal().isZero()) return {};")
 
 labkit_mutant(02 segment_triangle NAME magic_epsilon STEP 4 SAYS "same side"
   FIND "if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side"
