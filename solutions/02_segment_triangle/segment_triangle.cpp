@@ -257,6 +257,24 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
   if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit
   if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);
 
+  // A segment in the plane up to rounding: its volumes below are noise, in 2D.
+  if (in_plane(d_a, d_b, a_to_v, b_to_v, c)) return decide_coplanar(s, tri, n);
+  // The volumes are rounded by a few units of 1e-16 |b - a| |p|^2 (p the longest v_i - a)
+  // and sum to d_b - d_a. A segment so nearly parallel to the plane that this sum is
+  // within that rounding has volumes whose signs are noise, even when one end is clearly
+  // off the plane and the other within rounding of it. Its crossing is then fixed only
+  // loosely anyway (the header's tolerance of t): build it, and test it in 2D. On
+  // integer input (|x| <= 1024) the bound is below 1 and the volumes always decide.
+  const double reach = std::max({p0.squaredNorm(), p1.squaredNorm(), p2.squaredNorm()});
+  constexpr double unit = 16 * std::numeric_limits<double>::epsilon();
+  if (std::abs(d_b - d_a) <= unit * direction.norm() * reach) {
+    const int axis = largest_axis(n);
+    const Vec2 p[3] = {drop(tri.v0, axis), drop(tri.v1, axis), drop(tri.v2, axis)};
+    const double t = d_a / (d_a - d_b);
+    if (!inside_2d(drop(s.point(t), axis), p, n[axis] > 0 ? 1.0 : -1.0)) return {};
+    return {true, t, n, Vec3::Zero()};
+  }
+
   const double side = d_a > d_b ? 1.0 : -1.0;
   const Vec3 m = direction.cross(p0);
   const double v0 = m.dot(p1);
@@ -265,15 +283,12 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
   if (side * v2 > 0) return {};  // outside edge v2 -> v0
   const double v1 = (d_b - d_a) - v0 - v2;
   if (side * v1 > 0) return {};  // outside edge v1 -> v2
-  // A segment in the plane up to rounding passes the volume test by chance: in 2D.
-  if (in_plane(d_a, d_b, a_to_v, b_to_v, c)) return decide_coplanar(s, tri, n);
   // The volumes are the crossing's barycentric weights, up to their sum: V_1 belongs to
   // the edge facing v0, and so weighs v0; V_2 weighs v1, V_0 weighs v2. Each V_i is
   // rounded by about 1e-16 |b - a| |p|^2 (p the longest v_i - a), so the weights are
   // good to 1e-11 while the sum is at least 1e-5 |b - a| |p|^2; a segment closer to
   // parallel than that leaves the weights to be measured on the point.
   const double sum = d_b - d_a;
-  const double reach = std::max({p0.squaredNorm(), p1.squaredNorm(), p2.squaredNorm()});
   const bool steep = sum * sum >= 1e-10 * direction.squaredNorm() * reach * reach;
   return {true, d_a / (d_a - d_b), n, steep ? Vec3(Vec3(v1, v2, v0) / sum) : Vec3(Vec3::Zero())};
 }
