@@ -6,7 +6,7 @@
 
 #include "02_segment_triangle.wire.h"
 
-#include "common/generators/generators.h"
+#include "common/generators/needles.h"
 #include "common/harness/check.h"
 
 #include <vector>

@@ -1,41 +1,54 @@
-# Lab 02's classic mistakes (handouts/02_segment_triangle.md); each must fail its step.
+# Lab 02's classic mistakes (handouts/02_segment_triangle.md); each must fail its step,
+# and the why of its first failure must name the concept (SAYS).
 
-labkit_mutant(02 segment_triangle NAME crossing_t_sign STEP 1
-  FIND "c.t = c.d_a / (c.d_a - c.d_b);"
-  REPLACE "c.t = c.d_a / (c.d_b - c.d_a);")
+labkit_mutant(02 segment_triangle NAME crossing_t_sign STEP 1 SAYS "d_a / (d_a - d_b)" "denominator"
+  FIND "c.t = d_a / (d_a - d_b);"
+  REPLACE "c.t = d_a / (d_b - d_a);")
 
-labkit_mutant(02 segment_triangle NAME strict_edge_test STEP 2
+labkit_mutant(02 segment_triangle NAME distance_not_normalized STEP 1 SAYS "distance" "unit"
+  FIND "c.d_a = scale.out(d_a);\n  c.d_b = scale.out(d_b);"
+  REPLACE "c.d_a = (segment.a - triangle.v0).dot(triangle.normal());\n  c.d_b = (segment.b - triangle.v0).dot(triangle.normal());")
+
+labkit_mutant(02 segment_triangle NAME strict_edge_test STEP 2 SAYS "closed"
   FIND "if ((x - from).dot(n.cross(to - from)) < 0) return false;  // strictly outside edge i"
   REPLACE "if ((x - from).dot(n.cross(to - from)) <= 0) return false;")
 
-labkit_mutant(02 segment_triangle NAME beta_sign STEP 3
-  FIND "b.beta = cross(e1, p) / denominator;"
-  REPLACE "b.beta = cross(p, e1) / denominator;")
+labkit_mutant(02 segment_triangle NAME beta_sign STEP 3 SAYS "beta" "sign"
+  FIND "b.beta = (p - b.alpha * e1).dot(e2) / e2.squaredNorm();"
+  REPLACE "b.beta = cross(p, e1) / cross(e1, e2);")
 
-labkit_mutant(02 segment_triangle NAME fuzzy_zero_area STEP 4
+labkit_mutant(02 segment_triangle NAME fuzzy_zero_area STEP 4 SAYS "zero area"
   FIND "if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit"
-  REPLACE "if (n.isZero()) return {};")
+  REPLACE "if (input_tri.normal().isZero()) return {};")
 
-labkit_mutant(02 segment_triangle NAME magic_epsilon STEP 4
+labkit_mutant(02 segment_triangle NAME magic_epsilon STEP 4 SAYS "same side"
   FIND "if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side"
   REPLACE "if ((d_a > 1e-9 && d_b > 1e-9) || (d_a < -1e-9 && d_b < -1e-9)) return {};")
 
-labkit_mutant(02 segment_triangle NAME first_found_not_nearest STEP 5
+labkit_mutant(02 segment_triangle NAME normal_toward_a STEP 4 SAYS "as wound"
+  FIND "h.normal = d.n.normalized();"
+  REPLACE "h.normal = d.n.normalized(); if ((s.a - tri.v0).dot(h.normal) < 0) h.normal = -h.normal;")
+
+labkit_mutant(02 segment_triangle NAME first_found_not_nearest STEP 5 SAYS "smallest t"
   FIND "if (!d.hit || (best.hit && d.t >= best.t)) continue;  // a miss, or not nearer"
   REPLACE "if (!d.hit || best.hit) continue;")
 
-labkit_mutant(02 segment_triangle NAME hits_unsorted STEP 5
+labkit_mutant(02 segment_triangle NAME hits_unsorted STEP 5 SAYS "sorted by t"
   FIND "return x.t != y.t ? x.t < y.t : x.triangle < y.triangle;"
   REPLACE "return x.triangle < y.triangle;")
 
-labkit_mutant(02 segment_triangle NAME moving_one_frame STEP 6
+labkit_mutant(02 segment_triangle NAME all_hits_drops_equal_t STEP 5 SAYS "missing" "same t"
+  FIND "  return hits;\n}\n\n// The lecture's delta matrix"
+  REPLACE "  hits.erase(std::unique(hits.begin(), hits.end(), [](const MeshHit& x, const MeshHit& y) { return x.t == y.t; }), hits.end());\n  return hits;\n}\n\n// The lecture's delta matrix")
+
+labkit_mutant(02 segment_triangle NAME moving_one_frame STEP 6 SAYS "m1^-1 b"
   FIND "const Segment local{m0.inverse() * segment.a, m1.inverse() * segment.b};"
   REPLACE "const Segment local{m0.inverse() * segment.a, m0.inverse() * segment.b};")
 
-labkit_mutant(02 segment_triangle NAME crossing_point_edge_tests STEP 7
+labkit_mutant(02 segment_triangle NAME crossing_point_edge_tests STEP 7 SAYS "boundary"
   FIND "const double side = d_a > d_b ? 1.0 : -1.0;"
   REPLACE "if (!point_in_triangle_edges(s.point(d_a / (d_a - d_b)), tri)) return {}; const double side = 0;")
 
-labkit_mutant(02 segment_triangle NAME coplanar_is_a_miss STEP 7
+labkit_mutant(02 segment_triangle NAME coplanar_is_a_miss STEP 7 SAYS "in the plane"
   FIND "if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);"
   REPLACE "if (d_a == 0 && d_b == 0) return {};")

@@ -3,7 +3,11 @@
 #include "02_segment_triangle.judge.h"
 #include "segment_triangle.h"
 
+#include "common/oracle/segment_triangle.h"
+
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 using namespace labkit;
 using namespace labkit::lab02;
@@ -45,6 +49,23 @@ Outcome run_test(const SegmentTrianglePair& in) {
   return judge::test_segment_triangle(in, test_segment_triangle(in.segment, in.triangle));
 }
 
+// The examples' checks, each naming the rule of the header it checks.
+void expect_distance(Expect& e, const std::string& name, double got, double expected, double n_length) {
+  std::string why = name + " must be the signed distance of " + name.substr(2) + " to the plane, along the unit normal: " + fmt(expected);
+  if (expected != 0 && std::abs(got - n_length * expected) <= 1e-9 * std::abs(got))
+    why += "; " + fmt(got) + " is |n| = " + fmt(n_length) + " times it: is n unit?";
+  e.that(name, std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected), why);
+}
+void expect_t(Expect& e, double got, double expected) {
+  std::string why = "the crossing is at t = d_a / (d_a - d_b) = " + fmt(expected) + ", the fraction of the way from a to b";
+  if (std::abs(got + expected) <= 1e-12) why += "; yours has the opposite sign: is the denominator d_b - d_a?";
+  e.that("t", std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected), why);
+}
+void expect_normal(Expect& e, const Vec3& got, const Vec3& expected) {
+  e.that("normal", (got - expected).norm() <= 1e-12, fmt(got), fmt(expected),
+         "the normal is the triangle's unit normal as wound, (v1 - v0) x (v2 - v0) / |...|, whichever side a comes from");
+}
+
 }  // namespace
 
 // ---- Step 1 ------------------------------------------------------------------------
@@ -54,10 +75,10 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
                  [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
                    Expect e;
-                   e.near("d_a", got.d_a, 3, 1e-12);
-                   e.near("d_b", got.d_b, -1, 1e-12);
+                   expect_distance(e, "d_a", got.d_a, 3, 16);
+                   expect_distance(e, "d_b", got.d_b, -1, 16);
                    e.equal("crosses", got.crosses, true);
-                   e.near("t", got.t, 0.75, 1e-12);
+                   expect_t(e, got.t, 0.75);
                    e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
                    return e.outcome();
                  });
@@ -65,8 +86,8 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
                  [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
                    Expect e;
-                   e.near("d_a", got.d_a, 2, 1e-12);
-                   e.near("d_b", got.d_b, 5, 1e-12);
+                   expect_distance(e, "d_a", got.d_a, 2, 16);
+                   expect_distance(e, "d_b", got.d_b, 5, 16);
                    e.equal("crosses", got.crosses, false);
                    return e.outcome();
                  });
@@ -75,7 +96,7 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
                    Expect e;
                    e.equal("crosses", got.crosses, true);
-                   e.near("t", got.t, 0, 1e-12);
+                   expect_t(e, got.t, 0);
                    e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
                    return e.outcome();
                  });
@@ -83,25 +104,25 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
                  [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
                    Expect e;
-                   e.near("d_a", got.d_a, -3, 1e-12);
-                   e.near("d_b", got.d_b, 1, 1e-12);
-                   e.near("t", got.t, 0.75, 1e-12);
+                   expect_distance(e, "d_a", got.d_a, -3, 16);
+                   expect_distance(e, "d_b", got.d_b, 1, 16);
+                   expect_t(e, got.t, 0.75);
                    return e.outcome();
                  });
 }
 
 TEST_CASE("L02S1 signed distances and the crossing point: random cases", "[lab02][step1][oracle]") {
-  check::random_cases("segment_plane", gen::segment_triangle(), run_segment_plane);
+  check::random_cases("segment_plane", gen::decisive_segment_triangle(), run_segment_plane);
 }
 
 // ---- Step 2 ------------------------------------------------------------------------
 
 TEST_CASE("L02S2 point in triangle by edge tests: worked examples", "[lab02][step2]") {
+  // Each expected answer is the exact one; the judge says which rule a wrong one breaks.
   const auto expect = [](bool inside) {
     return [inside](const PointTriangle& in) {
-      Expect e;
-      e.equal("inside", point_in_triangle_edges(in.x, in.triangle), inside);
-      return e.outcome();
+      const bool got = point_in_triangle_edges(in.x, in.triangle);
+      return got == inside ? Outcome{} : judge::point_in_triangle(in, got, Rules::exact);
     };
   };
   check::example("point_in_triangle_edges", "inside", PointTriangle{{1, 1, 0}, kFloor}, expect(true));
@@ -127,8 +148,14 @@ TEST_CASE("L02S3 barycentric coordinates in the dropped-axis plane: worked examp
       const Barycentric got = barycentric(in.x, in.triangle);
       Expect e;
       e.equal("dropped_axis", got.dropped_axis, axis);
-      e.near("alpha", got.alpha, alpha, 1e-12);
-      e.near("beta", got.beta, beta, 1e-12);
+      const auto weight = [&e](const std::string& name, double mine, double exact) {
+        std::string why = "x = v0 + alpha e1 + beta e2 needs " + name + " = " + fmt(exact);
+        if (exact != 0 && std::abs(mine + exact) <= 1e-12)
+          why += "; yours has the wrong sign: " + name + " = " + (name == "beta" ? "(e1 x p)" : "(p x e2)") + " / (e1 x e2)";
+        e.that(name, std::abs(mine - exact) <= 1e-12, fmt(mine), fmt(exact), why);
+      };
+      weight("alpha", got.alpha, alpha);
+      weight("beta", got.beta, beta);
       return e.outcome();
     };
   };
@@ -143,9 +170,8 @@ TEST_CASE("L02S3 barycentric coordinates in the dropped-axis plane: worked examp
   });
   const auto inside = [](bool expected) {
     return [expected](const PointTriangle& in) {
-      Expect e;
-      e.equal("inside", point_in_triangle_barycentric(in.x, in.triangle), expected);
-      return e.outcome();
+      const bool got = point_in_triangle_barycentric(in.x, in.triangle);
+      return got == expected ? Outcome{} : judge::point_in_triangle(in, got, Rules::exact);
     };
   };
   check::example("point_in_triangle_barycentric", "inside", PointTriangle{{1, 1, 0}, kFloor}, inside(true));
@@ -174,7 +200,7 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
                    e.near("t", got.t, 0.75, 1e-12);
                    e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
                    e.near("barycentric", got.barycentric, Vec3(0.5, 0.25, 0.25), 1e-12);
-                   e.near("normal", got.normal, Vec3(0, 0, 1), 1e-12);
+                   expect_normal(e, got.normal, Vec3(0, 0, 1));
                    return e.outcome();
                  });
   check::example("find_segment_triangle", "from below: same normal, t = 1/4", pair({1, 1, -1}, {1, 1, 3}),
@@ -182,8 +208,8 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
                    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
                    Expect e;
                    e.equal("hit", got.hit, true);
-                   e.near("t", got.t, 0.25, 1e-12);
-                   e.near("normal", got.normal, Vec3(0, 0, 1), 1e-12);
+                   expect_t(e, got.t, 0.25);
+                   expect_normal(e, got.normal, Vec3(0, 0, 1));
                    return e.outcome();
                  });
   const auto miss = [](const SegmentTrianglePair& in) {
@@ -195,6 +221,14 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
   check::example("find_segment_triangle", "crosses the plane beside the triangle", pair({3, 3, 1}, {3, 3, -1}), miss);
   check::example("find_segment_triangle", "parallel, above", pair({1, 1, 1}, {2, 1, 1}), miss);
   check::example("find_segment_triangle", "stops short of the plane", pair({1, 1, 3}, {1, 1, 1}), miss);
+  // In the plane and beside the triangle: a miss, graded (no lift makes it a hit). Only
+  // a coplanar hit is ambiguous in this step's random cases.
+  check::example("find_segment_triangle", "in the plane, beside the triangle: a miss", pair({5, 1, 0}, {5, 3, 0}),
+                 [](const SegmentTrianglePair& in) {
+                   const Outcome o = judge::find_segment_triangle(in, find_segment_triangle(in.segment, in.triangle), Rules::exact);
+                   if (o.verdict == Outcome::Verdict::fail) return o;
+                   return judge::test_segment_triangle(in, test_segment_triangle(in.segment, in.triangle), Rules::exact);
+                 });
   // The floor triangle shrunk by 2^-22 (legs of 9.5e-7): its normal is 9.1e-13 long, below
   // the 1e-12 of Eigen's fuzzy isZero(), and still not zero.
   const double tiny = std::ldexp(1.0, -22);
@@ -203,7 +237,10 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
                  [tiny](const SegmentTrianglePair& in) {
                    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
                    Expect e;
-                   e.equal("hit", got.hit, true);
+                   e.that("hit", got.hit, describe(got.hit), "true",
+                          "the triangle's area |n| / 2 = " + fmt(in.triangle.area()) +
+                              " is not zero: only an exactly zero normal means zero area (a fuzzy test such as "
+                              "isZero() drops small triangles)");
                    e.near("t", got.t, 0.75, 1e-12);
                    e.near("point", got.point, Vec3(tiny, tiny, 0), 1e-18);
                    return e.outcome();
@@ -226,8 +263,8 @@ TEST_CASE("L02S4 test and find segment-triangle: random cases", "[lab02][step4][
                        {-0.766850471496582, 8.200785636901855, 14},
                        {1.4385852813720703, 8.58306884765625e-06, 0}}),
                  run_find);
-  check::random_cases("test_segment_triangle", gen::segment_triangle(), run_test);
-  check::random_cases("find_segment_triangle", gen::segment_triangle(), run_find);
+  check::random_cases("test_segment_triangle", gen::decisive_segment_triangle(), run_test);
+  check::random_cases("find_segment_triangle", gen::decisive_segment_triangle(), run_find);
 }
 
 // ---- Step 5 ------------------------------------------------------------------------
@@ -239,7 +276,9 @@ TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
                    const MeshHit got = first_hit(in.segment, in.mesh);
                    Expect e;
                    e.equal("hit", got.hit, true);
-                   e.equal("triangle", got.triangle, 3);
+                   e.that("triangle", got.triangle == 3, std::to_string(got.triangle), "3",
+                          "first_hit is the hit with the smallest t: the shelf (triangle 3, t = 0.5) before the floor "
+                          "(triangle 1, t = 5/6)");
                    e.near("t", got.t, 0.5, 1e-12);
                    e.near("point", got.point, Vec3(1, 3, 2), 1e-12);
                    return e.outcome();
@@ -250,12 +289,18 @@ TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
                    Expect e;
                    e.equal("count", int(got.size()), 2);
                    if (got.size() == 2) {
-                     e.equal("first triangle", got[0].triangle, 3);
+                     e.that("first triangle", got[0].triangle == 3, std::to_string(got[0].triangle), "3",
+                            "all_hits must be sorted by t: the shelf (triangle 3, t = 0.5) before the floor (triangle 1, t = 5/6)");
                      e.near("first t", got[0].t, 0.5, 1e-12);
                      e.equal("second triangle", got[1].triangle, 1);
                      e.near("second t", got[1].t, 5.0 / 6.0, 1e-12);
                    }
                    return e.outcome();
+                 });
+  // The floor's two triangles share the diagonal (0,0)-(4,4): both are met, at one t.
+  check::example("all_hits", "through the shared diagonal: both triangles, at the same t",
+                 SegmentMeshPair{{{1, 1, 1}, {3, 3, -1}}, mesh}, [](const SegmentMeshPair& in) {
+                   return judge::all_hits(in, all_hits(in.segment, in.mesh), Rules::exact);
                  });
   check::example("any_hit", "beside the squares", SegmentMeshPair{{{5, 5, 5}, {5, 5, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
@@ -268,13 +313,13 @@ TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
 }
 
 TEST_CASE("L02S5 segment against a mesh: random cases", "[lab02][step5][oracle]") {
-  check::random_cases("any_hit", gen::segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases("any_hit", gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::any_hit(in, any_hit(in.segment, in.mesh));
   });
-  check::random_cases("first_hit", gen::segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases("first_hit", gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::first_hit(in, first_hit(in.segment, in.mesh));
   });
-  check::random_cases("all_hits", gen::segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases("all_hits", gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::all_hits(in, all_hits(in.segment, in.mesh));
   });
 }
@@ -290,10 +335,27 @@ TEST_CASE("L02S6 segment against a moving mesh: worked examples", "[lab02][step6
                  MovingMesh{{{1, 1, 1}, {1, 1, 1}}, floor, RigidTransform::Identity(), up}, [](const MovingMesh& in) {
                    const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
                    Expect e;
-                   e.equal("hit", got.hit, true);
+                   e.that("hit", got.hit, describe(got.hit), "true",
+                          "in the floor's own frame the particle goes from m0^-1 a = (1, 1, 1) to m1^-1 b = (1, 1, -1), "
+                          "through the floor: each end goes through its own pose");
                    e.near("t", got.t, 0.5, 1e-12);
                    e.near("point", got.point, Vec3(1, 1, 2), 1e-12);
                    e.near("normal", got.normal, Vec3(0, 0, 1), 1e-12);
+                   return e.outcome();
+                 });
+  // The point is the contact on the mesh at its end pose m1: in the floor's frame the
+  // path (2,2,1) -> (2,2,-1) meets it at (2,2,0), which m1 (a shift by 1 in x) puts at
+  // (3,2,0); not (2,2,0) (the mesh at m0) and not a + t (b - a) = (2.5,2,0).
+  RigidTransform aside = RigidTransform::Identity();
+  aside.translation() = Vec3(1, 0, 0);
+  check::example("first_hit_moving", "a sliding floor: the point is on the mesh at its end pose",
+                 MovingMesh{{{2, 2, 1}, {3, 2, -1}}, floor, RigidTransform::Identity(), aside}, [](const MovingMesh& in) {
+                   const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
+                   Expect e;
+                   e.equal("hit", got.hit, true);
+                   e.near("t", got.t, 0.5, 1e-12);
+                   e.that("point", (got.point - Vec3(3, 2, 0)).norm() <= 1e-12, fmt(got.point), fmt(Vec3(3, 2, 0)),
+                          "the point is the contact on the mesh at its end pose: m1 times the point found in its frame");
                    return e.outcome();
                  });
   check::example("first_hit_moving", "the rising floor stops short of a falling particle",
@@ -329,8 +391,14 @@ auto expect_hit(double t) {
   return [t](const SegmentTrianglePair& in) {
     const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
     Expect e;
-    e.equal("hit", got.hit, true);
-    if (got.hit) e.near("t", got.t, t, 1e-12);
+    const bool coplanar = oracle::segment_triangle(in.segment, in.triangle).coplanar;
+    e.that("hit", got.hit, describe(got.hit), "true",
+           coplanar ? "the segment lies in the triangle's plane, and in the plane it hits where the two meet"
+                    : "the segment touches the triangle exactly on its boundary (an edge, a vertex, or an end on it), "
+                      "and the closed triangle's boundary counts");
+    if (got.hit)
+      e.that("t", std::abs(got.t - t) <= 1e-12, fmt(got.t), fmt(t),
+             coplanar ? "in the plane, t is the first common point from a" : "t is where the segment first touches the triangle");
     const Outcome rules = exact_find(in);
     return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : rules;
   };
@@ -411,4 +479,74 @@ TEST_CASE("L02S7 robustness: random exact degenerate cases", "[lab02][step7][ora
     if (o.verdict == Outcome::Verdict::fail) return o;
     return judge::first_hit(in, first_hit(in.segment, in.mesh), Rules::exact);
   });
+}
+
+// ---- Preconditions: the reference rejects invalid input (not graded) -------------------
+// Tagged [contract], in no step: students are not graded on invalid input. Each kind of
+// invalid argument must throw std::invalid_argument whose message names the argument.
+
+TEST_CASE("L02 preconditions: invalid input throws std::invalid_argument naming the argument", "[lab02][contract]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const auto names = [](const std::string& argument, auto&& call) {
+    INFO("argument " << argument);
+    try {
+      call();
+      FAIL("no std::invalid_argument");
+    } catch (const std::invalid_argument& e) {
+      CHECK(std::string(e.what()).find(argument) != std::string::npos);
+    }
+  };
+  Mesh floor;
+  add_square(floor, 0);
+  for (double bad : {nan, inf, -inf}) {
+    INFO("bad number " << bad);
+    const Vec3 p(1, bad, 0);
+    const Segment bad_a{p, {1, 1, -1}}, bad_b{{1, 1, 3}, p}, good{{1, 1, 3}, {1, 1, -1}};
+    for (int i = 0; i < 3; ++i) {
+      Triangle t = kFloor;
+      t[i] = p;
+      const std::string v = "triangle.v" + std::to_string(i);
+      names(v, [&] { segment_plane(good, t); });
+      names(v, [&] { point_in_triangle_edges({1, 1, 0}, t); });
+      names(v, [&] { barycentric({1, 1, 0}, t); });
+      names(v, [&] { point_in_triangle_barycentric({1, 1, 0}, t); });
+      names(v, [&] { test_segment_triangle(good, t); });
+      names(v, [&] { find_segment_triangle(good, t); });
+    }
+    for (const auto& [name, s] : {std::pair{std::string("segment.a"), bad_a}, std::pair{std::string("segment.b"), bad_b}}) {
+      names(name, [&] { segment_plane(s, kFloor); });
+      names(name, [&] { test_segment_triangle(s, kFloor); });
+      names(name, [&] { find_segment_triangle(s, kFloor); });
+      names(name, [&] { first_hit(s, floor); });
+      names(name, [&] { any_hit(s, floor); });
+      names(name, [&] { all_hits(s, floor); });
+      names(name, [&] { first_hit_moving(s, floor, RigidTransform::Identity(), RigidTransform::Identity()); });
+    }
+    names("x", [&] { point_in_triangle_edges(p, kFloor); });
+    names("x", [&] { barycentric(p, kFloor); });
+    names("x", [&] { point_in_triangle_barycentric(p, kFloor); });
+    Mesh bad_vertex = floor;
+    bad_vertex.vertices[2] = p;
+    names("mesh.vertices[2]", [&] { first_hit(good, bad_vertex); });
+    names("mesh.vertices[2]", [&] { any_hit(good, bad_vertex); });
+    names("mesh.vertices[2]", [&] { all_hits(good, bad_vertex); });
+    RigidTransform pose = RigidTransform::Identity();
+    pose.translation() = p;
+    names("m0", [&] { first_hit_moving(good, floor, pose, RigidTransform::Identity()); });
+    names("m1", [&] { first_hit_moving(good, floor, RigidTransform::Identity(), pose); });
+  }
+  const Segment good{{1, 1, 3}, {1, 1, -1}};
+  for (int index : {-1, 4}) {
+    Mesh bad_index = floor;
+    bad_index.triangles[1][2] = index;
+    names("mesh.triangles[1]", [&] { first_hit(good, bad_index); });
+    names("mesh.triangles[1]", [&] { any_hit(good, bad_index); });
+    names("mesh.triangles[1]", [&] { all_hits(good, bad_index); });
+  }
+  RigidTransform stretched = RigidTransform::Identity();
+  stretched.linear() *= 2;
+  names("m1", [&] { first_hit_moving(good, floor, RigidTransform::Identity(), stretched); });
+  // Not invalid: the documented results of zero length and zero area.
+  CHECK_FALSE(test_segment_triangle({{1, 1, 1}, {1, 1, 1}}, kFloor));
+  CHECK_FALSE(test_segment_triangle(good, kFlat));
 }

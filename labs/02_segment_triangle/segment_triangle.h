@@ -20,16 +20,34 @@
 // hits when a is on the closed triangle. A zero-area triangle (collinear or coincident
 // vertices) has no plane and is never hit.
 //
-// Tolerances. S is the largest absolute coordinate of the input (every point of it,
-// including mesh vertices and transform translations), and tol = 1e-9 * S.
+// Input domain: where answers must match the exact ones (within the tolerances below).
+//  - S, the largest absolute coordinate of the input (every point of it, including mesh
+//    vertices and transform translations), is between 1e-50 and 1e50. Products of
+//    three coordinates must neither overflow nor underflow there.
+//  - Triangles of any shape, among them needles: aspect ratio (longest edge over the
+//    height on it) up to 1e8, in every orientation and position, and zero area.
+//  - Segments of any length and direction, among them zero length, lying in the
+//    triangle's plane, nearly parallel to it, nearly along an edge.
+//
+// Preconditions (not graded; the reference throws std::invalid_argument naming the
+// argument): every coordinate finite (no NaN, no infinity); mesh.triangles index
+// mesh.vertices; m0 and m1 rigid (orthonormal linear part, determinant +1, to 1e-6).
+// Zero-length segments and zero-area triangles are valid: their answers are below.
+//
+// Tolerances. tol = 1e-9 * S.
 //  - Yes/no answers must equal the exact answer, except on ambiguous inputs, whose
 //    exact answer changes under a perturbation of tol: there either answer passes.
-//  - Distances: within tol. Points: within tol of the exact point, or, for a reported
-//    hit, within tol of the segment and within tol + |b - a| * (t's tolerance below) of
-//    the closed triangle.
-//  - The parameter t of a crossing: within tol / |d_a - d_b| of the exact one (a segment
-//    almost parallel to the plane fixes t, and so its crossing point, only loosely).
-//  - t, and the barycentric weights, must reproduce the reported point within tol.
+//  - A needle's plane is known in doubles only to about 1e-16 times its aspect ratio
+//    (rounding its edges tilts it that much): the unit normal must be within 1e-9 + k
+//    of the exact one, k = 64 * 2^-52 * (longest edge)^2 / |n|, and a distance of p
+//    within tol + |p - v0| * k (for a fat triangle k is about 1e-14: just tol).
+//  - Points: within tol of the exact point, or, for a reported hit, within tol of the
+//    segment and within tol + |b - a| * (t's tolerance below) of the closed triangle.
+//  - The parameter t of a crossing: within (the distances' tolerance) / |d_a - d_b| of
+//    the exact one (a segment almost parallel to the plane fixes t, and so its crossing
+//    point, only loosely).
+//  - t, and the barycentric weights (and alpha, beta), must reproduce the reported point
+//    within tol: for a needle, solve them so that they do (handout, step 3).
 #pragma once
 
 #include "common/geometry.h"
@@ -104,6 +122,7 @@ struct MeshHit {
 // The hit with the smallest t (when two triangles tie, either).
 MeshHit first_hit(const Segment& segment, const Mesh& mesh);
 // Whether any triangle is hit; may stop at the first one found.
+// (A mesh may hold the same face twice, wound both ways: both are hit, at the same t.)
 bool any_hit(const Segment& segment, const Mesh& mesh);
 // Every triangle the segment meets, once each, sorted by t (ties: lower index first).
 // A segment through an edge shared by two triangles meets both.
@@ -114,7 +133,9 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh);
 // The mesh (vertices in its own frame) moves from pose m0 to pose m1 while the particle
 // moves from segment.a to segment.b. Use the delta-matrix idea of the lecture: in the
 // mesh's frame the particle goes from m0^-1 a to m1^-1 b. Report the first hit with
-// the mesh at m1: point and normal in world coordinates, t along the particle's path.
+// the mesh at m1: t along that path (in the mesh's frame), the point as the contact on
+// the mesh at its end pose (m1 times the point found in the mesh's frame; not a point
+// of the world segment a-b, nor of the mesh at m0), the normal turned by m1.
 MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0,
                          const RigidTransform& m1);
 

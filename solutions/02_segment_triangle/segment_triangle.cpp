@@ -10,10 +10,106 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace labkit::lab02 {
 
 namespace {
+
+// ---- Preconditions (the header's): finite coordinates, mesh indices in range, poses rigid.
+
+[[noreturn]] void reject(const char* query, const std::string& what) {
+  throw std::invalid_argument(std::string(query) + ": " + what);
+}
+
+std::string text(const Vec3& p) {
+  std::ostringstream o;
+  o << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
+  return o.str();
+}
+
+void require_finite(const char* query, const char* name, const Vec3& p) {
+  if (!p.allFinite()) reject(query, std::string(name) + " must have finite coordinates, got " + text(p));
+}
+void require(const char* query, const Segment& s) {
+  require_finite(query, "segment.a", s.a);
+  require_finite(query, "segment.b", s.b);
+}
+void require(const char* query, const Triangle& t) {
+  require_finite(query, "triangle.v0", t.v0);
+  require_finite(query, "triangle.v1", t.v1);
+  require_finite(query, "triangle.v2", t.v2);
+}
+void require(const char* query, const Mesh& mesh) {
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    if (!mesh.vertices[i].allFinite())
+      reject(query, "mesh.vertices[" + std::to_string(i) + "] must have finite coordinates, got " + text(mesh.vertices[i]));
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+    for (int v : mesh.triangles[i])
+      if (v < 0 || std::size_t(v) >= mesh.vertices.size())
+        reject(query, "mesh.triangles[" + std::to_string(i) + "] must index mesh.vertices (0 to " +
+                          std::to_string(int(mesh.vertices.size()) - 1) + "), got " + std::to_string(v));
+}
+void require_rigid(const char* query, const char* name, const RigidTransform& m) {
+  if (!m.matrix().allFinite()) reject(query, std::string(name) + " must have finite entries");
+  const double off = (m.linear().transpose() * m.linear() - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+  if (!(off <= 1e-6) || m.linear().determinant() < 0)
+    reject(query, std::string(name) + " must be rigid (a rotation and a translation), got a linear part " +
+                      std::to_string(off) + " from orthonormal");
+}
+
+// ---- Scale: one power of two for a whole query --------------------------------------
+
+// Decisions multiply up to three coordinates (a volume), and the in-plane test squares
+// that: at 1e-60 or 1e60 such products underflow to 0 or overflow to infinity, and a
+// plain crossing becomes a miss. Multiplying every input point by 2^-k, with 2^k near
+// the largest coordinate, is exact (only exponents change), keeps every product near 1,
+// and changes no sign, no t and no weight; lengths are multiplied back by 2^k.
+struct Scale {
+  int k = 0;
+  Vec3 in(const Vec3& p) const { return {std::ldexp(p.x(), -k), std::ldexp(p.y(), -k), std::ldexp(p.z(), -k)}; }
+  double out(double length) const { return std::ldexp(length, k); }
+  Segment in(const Segment& s) const { return {in(s.a), in(s.b)}; }
+  Triangle in(const Triangle& t) const { return {in(t.v0), in(t.v1), in(t.v2)}; }
+};
+
+Scale scale_of(std::initializer_list<Vec3> points) {
+  double largest = 0;
+  for (const Vec3& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
+  Scale s;
+  if (largest > 0) std::frexp(largest, &s.k);
+  return s;
+}
+Scale scale_of(const Segment& s, const Triangle& t) { return scale_of({s.a, s.b, t.v0, t.v1, t.v2}); }
+
+// ---- The normal, where a needle keeps it accurate --------------------------------------
+
+// The cross product of two edges is rounded by about 1e-16 |e1| |e2|, while its length
+// is |e1| |e2| sin(angle). At the tip of a needle (a tiny angle between two long edges)
+// the rounding is as large as the normal times the aspect ratio: 1e-8 of its direction
+// for an aspect of 1e8, enough to move a distance measured a few units away by more than
+// tol. At the vertex opposite the longest edge the angle is the largest (at least 60
+// degrees unless all three edges are nearly collinear), so we take the cross product of
+// the two shorter edges there. Same winding: (v_{c+1} - v_c) x (v_{c+2} - v_c) is
+// (v1 - v0) x (v2 - v0) in exact arithmetic, whichever corner c.
+struct Corner {
+  Vec3 v;       // the vertex v_c
+  Vec3 e1, e2;  // v_{c+1} - v_c, v_{c+2} - v_c
+  Vec3 n;       // e1 x e2
+};
+Corner robust_corner(const Triangle& t) {
+  int c = 0;
+  double longest = -1;
+  for (int i = 0; i < 3; ++i) {
+    const double opposite = (t[(i + 2) % 3] - t[(i + 1) % 3]).squaredNorm();
+    if (opposite > longest) longest = opposite, c = i;
+  }
+  Corner r{t[c], t[(c + 1) % 3] - t[c], t[(c + 2) % 3] - t[c], Vec3::Zero()};
+  r.n = r.e1.cross(r.e2);
+  return r;
+}
 
 // The axis of the normal's largest |component| (ties: the lower index). Dropping it
 // projects the triangle onto the coordinate plane where it has the largest area.
@@ -66,9 +162,19 @@ double first_contact_2d(const Vec2& a, const Vec2& b, const Vec2& p, const Vec2&
     return best;
   }
   if (pa * pb > 0 || ap * aq > 0) return none;  // both ends on one side of the other
-  // They meet: solve a + s d on the line P Q.
-  const double s = cross(p - a, q - p) / cross(d, q - p);
-  return std::clamp(s, 0.0, 1.0);
+  // They meet. Solving a + s d on the line P Q divides two cross products that both
+  // vanish when the segment runs nearly along the edge: noise over noise, anywhere on
+  // the segment. Instead, find the meeting point on the edge, P + u (Q - P), from the
+  // sides of P and Q relative to the segment's line (opposite signs: the denominator is
+  // a sum of two magnitudes, never a cancellation), so it lies on the edge; then take
+  // its place along the segment, clamped to it. When the two nearly run along one line
+  // the clamped point is still common to both, to within rounding.
+  const double side_p = cross(d, p - a), side_q = cross(d, q - a);
+  const double u = side_p == side_q ? 0.0 : side_p / (side_p - side_q);
+  const Vec2 x = p + u * (q - p);
+  const double length2 = d.squaredNorm();
+  if (length2 == 0) return 0.0;  // a itself is on the edge
+  return std::clamp((x - a).dot(d) / length2, 0.0, 1.0);
 }
 
 // The answer of both queries, decided once.
@@ -101,14 +207,18 @@ Decision decide_coplanar(const Segment& s, const Triangle& tri, const Vec3& n) {
 
 // Both ends on the plane, to within the rounding error of d_a and d_b: then the volumes
 // below are all zero up to that same rounding, and their signs are pure noise; the 2D
-// test decides instead. A subtraction of two doubles is rounded relative to its result,
-// so the error of d = (p - v0) . n stays below a few units of 1e-16 |p - v0| |e1| |e2|,
-// whatever the coordinates' size; the bound is a thousand times that (compared squared,
-// to spare the roots), and still far below 1 for integer input (|x| <= 1024), which is
-// therefore treated as coplanar only when it is.
-bool in_plane(double d_a, double d_b, const Vec3& a_to_v0, const Vec3& b_to_v0, const Vec3& e1, const Vec3& e2) {
-  const double edges = 1e-26 * e1.squaredNorm() * e2.squaredNorm();
-  return d_a * d_a <= edges * a_to_v0.squaredNorm() && d_b * d_b <= edges * b_to_v0.squaredNorm();
+// test decides instead. d = (p - v_c) . n with n = e1 x e2 is rounded by a few units of
+// 1e-16 |p - v_c| |e1| |e2| (the products, and the rounding of n itself); the bound is
+// 16 units (compared squared, to spare the roots). It is relative to the edges, not to
+// the area, but e1 and e2 are the two shorter edges (robust_corner), so for a needle it
+// is still a slab about 1e-15 of the distances thick, not 1e-15 times the aspect ratio:
+// a short steep segment through a needle is never taken for one lying in its plane. On
+// integer input (|x| <= 1024) it is far below 1, so such input is treated as coplanar
+// only when it is.
+bool in_plane(double d_a, double d_b, const Vec3& a_to_v, const Vec3& b_to_v, const Corner& c) {
+  constexpr double unit = 16 * std::numeric_limits<double>::epsilon();
+  const double edges = unit * unit * c.e1.squaredNorm() * c.e2.squaredNorm();
+  return d_a * d_a <= edges * a_to_v.squaredNorm() && d_b * d_b <= edges * b_to_v.squaredNorm();
 }
 
 //   Derivation (lecture 000, "segment vs. triangle"): with n = (v1 - v0) x (v2 - v0),
@@ -131,17 +241,39 @@ bool in_plane(double d_a, double d_b, const Vec3& a_to_v0, const Vec3& b_to_v0, 
 //       /  x   \      V_2 to edge v2 -> v0.
 //     v0 ------ v1
 //          V_0
-Decision decide(const Segment& s, const Triangle& tri) {
-  const Vec3 e1 = tri.v1 - tri.v0, e2 = tri.v2 - tri.v0;
-  const Vec3 n = e1.cross(e2);
+Decision decide(const Segment& input, const Triangle& input_tri) {
+  const Scale scale = scale_of(input, input_tri);
+  const Segment s = scale.in(input);
+  const Triangle tri = scale.in(input_tri);
+  const Corner c = robust_corner(tri);
+  const Vec3& n = c.n;
   // The vertices as seen from a, and where the segment goes.
   const Vec3 p0 = tri.v0 - s.a, p1 = tri.v1 - s.a, p2 = tri.v2 - s.a;
   const Vec3 direction = s.b - s.a;
-  const double d_a = -p0.dot(n);               // (a - v0) . n
-  const double d_b = d_a + direction.dot(n);  // (b - v0) . n
+  const Vec3 a_to_v = s.a - c.v, b_to_v = s.b - c.v;
+  const double d_a = a_to_v.dot(n);  // (a - v_c) . n
+  const double d_b = b_to_v.dot(n);  // (b - v_c) . n
   if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side
   if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit
   if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);
+
+  // A segment in the plane up to rounding: its volumes below are noise, in 2D.
+  if (in_plane(d_a, d_b, a_to_v, b_to_v, c)) return decide_coplanar(s, tri, n);
+  // The volumes are rounded by a few units of 1e-16 |b - a| |p|^2 (p the longest v_i - a)
+  // and sum to d_b - d_a. A segment so nearly parallel to the plane that this sum is
+  // within that rounding has volumes whose signs are noise, even when one end is clearly
+  // off the plane and the other within rounding of it. Its crossing is then fixed only
+  // loosely anyway (the header's tolerance of t): build it, and test it in 2D. On
+  // integer input (|x| <= 1024) the bound is below 1 and the volumes always decide.
+  const double reach = std::max({p0.squaredNorm(), p1.squaredNorm(), p2.squaredNorm()});
+  constexpr double unit = 16 * std::numeric_limits<double>::epsilon();
+  if (std::abs(d_b - d_a) <= unit * direction.norm() * reach) {
+    const int axis = largest_axis(n);
+    const Vec2 p[3] = {drop(tri.v0, axis), drop(tri.v1, axis), drop(tri.v2, axis)};
+    const double t = d_a / (d_a - d_b);
+    if (!inside_2d(drop(s.point(t), axis), p, n[axis] > 0 ? 1.0 : -1.0)) return {};
+    return {true, t, n, Vec3::Zero()};
+  }
 
   const double side = d_a > d_b ? 1.0 : -1.0;
   const Vec3 m = direction.cross(p0);
@@ -151,15 +283,12 @@ Decision decide(const Segment& s, const Triangle& tri) {
   if (side * v2 > 0) return {};  // outside edge v2 -> v0
   const double v1 = (d_b - d_a) - v0 - v2;
   if (side * v1 > 0) return {};  // outside edge v1 -> v2
-  // A segment in the plane up to rounding passes the volume test by chance: in 2D.
-  if (in_plane(d_a, d_b, p0, p0 - direction, e1, e2)) return decide_coplanar(s, tri, n);
   // The volumes are the crossing's barycentric weights, up to their sum: V_1 belongs to
   // the edge facing v0, and so weighs v0; V_2 weighs v1, V_0 weighs v2. Each V_i is
   // rounded by about 1e-16 |b - a| |p|^2 (p the longest v_i - a), so the weights are
   // good to 1e-11 while the sum is at least 1e-5 |b - a| |p|^2; a segment closer to
   // parallel than that leaves the weights to be measured on the point.
   const double sum = d_b - d_a;
-  const double reach = std::max({p0.squaredNorm(), p1.squaredNorm(), p2.squaredNorm()});
   const bool steep = sum * sum >= 1e-10 * direction.squaredNorm() * reach * reach;
   return {true, d_a / (d_a - d_b), n, steep ? Vec3(Vec3(v1, v2, v0) / sum) : Vec3(Vec3::Zero())};
 }
@@ -189,24 +318,35 @@ MeshHit mesh_hit_from(const SegmentTriangleHit& h, int triangle) {
 }  // namespace
 
 PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
-  const Vec3 n = triangle.normal();
-  const double length = n.norm();
+  require("segment_plane", segment);
+  require("segment_plane", triangle);
+  const Scale scale = scale_of(segment, triangle);
+  const Segment s = scale.in(segment);
+  const Corner corner = robust_corner(scale.in(triangle));
+  const double length = corner.n.norm();
   if (length == 0) return {};  // a zero-area triangle has no plane
+  const Vec3 unit = corner.n / length;
   PlaneCrossing c;
-  c.d_a = (segment.a - triangle.v0).dot(n) / length;
-  c.d_b = (segment.b - triangle.v0).dot(n) / length;
+  const double d_a = (s.a - corner.v).dot(unit), d_b = (s.b - corner.v).dot(unit);
+  c.d_a = scale.out(d_a);
+  c.d_b = scale.out(d_b);
   // Both ends strictly on one side: no crossing. Both on the plane: no single point.
-  if ((c.d_a > 0 && c.d_b > 0) || (c.d_a < 0 && c.d_b < 0)) return c;
-  if (c.d_a == 0 && c.d_b == 0) return c;
+  if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return c;
+  if (d_a == 0 && d_b == 0) return c;
   c.crosses = true;
   // d_a and d_b have opposite signs (or one is 0): d_a - d_b never cancels.
-  c.t = c.d_a / (c.d_a - c.d_b);
-  c.point = (c.d_a * segment.b - c.d_b * segment.a) / (c.d_a - c.d_b);
+  c.t = d_a / (d_a - d_b);
+  c.point = (d_a * segment.b - d_b * segment.a) / (d_a - d_b);
   return c;
 }
 
-bool point_in_triangle_edges(const Vec3& x, const Triangle& triangle) {
-  const Vec3 n = triangle.normal();
+bool point_in_triangle_edges(const Vec3& point, const Triangle& input) {
+  require_finite("point_in_triangle_edges", "x", point);
+  require("point_in_triangle_edges", input);
+  const Scale scale = scale_of({point, input.v0, input.v1, input.v2});
+  const Vec3 x = scale.in(point);
+  const Triangle triangle = scale.in(input);
+  const Vec3 n = robust_corner(triangle).n;
   if (n == Vec3::Zero()) return false;
   for (int i = 0; i < 3; ++i) {
     const Vec3& from = triangle[i];
@@ -217,24 +357,38 @@ bool point_in_triangle_edges(const Vec3& x, const Triangle& triangle) {
   return true;
 }
 
-Barycentric barycentric(const Vec3& x, const Triangle& triangle) {
-  const Vec3 n = triangle.normal();
+Barycentric barycentric(const Vec3& point, const Triangle& input) {
+  require_finite("barycentric", "x", point);
+  require("barycentric", input);
+  const Scale scale = scale_of({point, input.v0, input.v1, input.v2});
+  const Vec3 x = scale.in(point);
+  const Triangle triangle = scale.in(input);
+  const Vec3 n = robust_corner(triangle).n;
   if (n == Vec3::Zero()) return {};
   Barycentric b;
   b.dropped_axis = largest_axis(n);
   const Vec2 e1 = drop(triangle.v1 - triangle.v0, b.dropped_axis);
   const Vec2 e2 = drop(triangle.v2 - triangle.v0, b.dropped_axis);
   const Vec2 p = drop(x - triangle.v0, b.dropped_axis);
-  // p = alpha e1 + beta e2; cross with e2, then with e1 (Cramer's rule). The
-  // denominator is n[axis], the largest component: never zero here.
-  const double denominator = cross(e1, e2);
-  b.alpha = cross(p, e2) / denominator;
-  b.beta = cross(e1, p) / denominator;
+  // p = alpha e1 + beta e2; alpha by Cramer's rule (cross with e2). The denominator is
+  // n[axis], the largest component: never zero here.
+  b.alpha = cross(p, e2) / cross(e1, e2);
+  // beta by Cramer's rule too would divide a second noisy cross product by the same
+  // small denominator: for a needle the two errors do not cancel, and alpha e1 + beta e2
+  // misses p by the rounding times the aspect ratio. Projecting what alpha leaves onto
+  // e2 instead keeps that residual at the rounding of p itself, however thin the
+  // triangle (the weights still describe x, which is what they are for).
+  b.beta = (p - b.alpha * e1).dot(e2) / e2.squaredNorm();
   return b;
 }
 
-bool point_in_triangle_barycentric(const Vec3& x, const Triangle& triangle) {
-  const Vec3 n = triangle.normal();
+bool point_in_triangle_barycentric(const Vec3& point, const Triangle& input) {
+  require_finite("point_in_triangle_barycentric", "x", point);
+  require("point_in_triangle_barycentric", input);
+  const Scale scale = scale_of({point, input.v0, input.v1, input.v2});
+  const Vec3 x = scale.in(point);
+  const Triangle triangle = scale.in(input);
+  const Vec3 n = robust_corner(triangle).n;
   if (n == Vec3::Zero()) return false;
   const int axis = largest_axis(n);
   const Vec2 e1 = drop(triangle.v1 - triangle.v0, axis);
@@ -248,14 +402,20 @@ bool point_in_triangle_barycentric(const Vec3& x, const Triangle& triangle) {
 }
 
 bool test_segment_triangle(const Segment& segment, const Triangle& triangle) {
+  require("test_segment_triangle", segment);
+  require("test_segment_triangle", triangle);
   return decide(segment, triangle).hit;
 }
 
 SegmentTriangleHit find_segment_triangle(const Segment& segment, const Triangle& triangle) {
+  require("find_segment_triangle", segment);
+  require("find_segment_triangle", triangle);
   return hit_from(decide(segment, triangle), segment, triangle);
 }
 
 MeshHit first_hit(const Segment& segment, const Mesh& mesh) {
+  require("first_hit", segment);
+  require("first_hit", mesh);
   MeshHit best;
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const Triangle tri = mesh.triangle(i);
@@ -267,12 +427,16 @@ MeshHit first_hit(const Segment& segment, const Mesh& mesh) {
 }
 
 bool any_hit(const Segment& segment, const Mesh& mesh) {
+  require("any_hit", segment);
+  require("any_hit", mesh);
   for (std::size_t i = 0; i < mesh.size(); ++i)
     if (decide(segment, mesh.triangle(i)).hit) return true;
   return false;
 }
 
 std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
+  require("all_hits", segment);
+  require("all_hits", mesh);
   std::vector<MeshHit> hits;
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const Triangle tri = mesh.triangle(i);
@@ -291,6 +455,10 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
 // end instead of one per mesh vertex. The hit found there goes back to the world by M1.
 MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0,
                          const RigidTransform& m1) {
+  require("first_hit_moving", segment);
+  require("first_hit_moving", mesh);
+  require_rigid("first_hit_moving", "m0", m0);
+  require_rigid("first_hit_moving", "m1", m1);
   const Segment local{m0.inverse() * segment.a, m1.inverse() * segment.b};
   MeshHit hit = first_hit(local, mesh);
   if (!hit.hit) return hit;
