@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
 
 using namespace labkit;
 using namespace labkit::lab06;
@@ -514,6 +516,55 @@ TEST_CASE("L06S7 robustness: random exact degenerate cases", "[lab06][step7][ora
   check::random_cases("robust.overlapping_pairs", judge::exact_sphere_set(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
   });
+}
+
+// ---- The header's preconditions (not a graded step) ---------------------------------------------
+// Tagged [contract]: ctest runs it with the reference only. Students are not graded on
+// invalid input; the reference refuses each kind with std::invalid_argument naming the
+// argument and the rule.
+
+TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[lab06][contract]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const auto refused = [](const std::string& argument, auto&& call) {
+    INFO("invalid " << argument);
+    try {
+      call();
+      FAIL_CHECK("answered instead of throwing std::invalid_argument");
+    } catch (const std::invalid_argument& e) {
+      const std::string message = e.what();
+      INFO("message: " << message);
+      CHECK(message.find(argument) != std::string::npos);
+      CHECK(message.find("must") != std::string::npos);  // the rule, not only the name
+    }
+  };
+  const KdTree tree = handout_tree();
+  const Vec3 finite(0, 1, 1);
+  for (double bad : {nan, inf, -inf}) {
+    const Vec3 v(bad, 1, 1);
+    refused("segment.a", [&] { first_hit(tree, {v, finite}); });
+    refused("segment.b", [&] { first_hit(tree, {finite, v}); });
+    refused("segment.a", [&] { any_hit(tree, {v, finite}); });
+    refused("segment.b", [&] { all_hits(tree, {finite, v}); });
+    Mesh broken = lean_and_stand();
+    broken.vertices[4] = v;
+    refused("mesh.vertices[4]", [&] { build_kd_tree(broken); });
+    refused("mesh.vertices[4]", [&] { build_bsp(broken); });
+    const BspTree bsp = build_bsp(lean_and_stand());
+    refused("point", [&] { classify(bsp, v); });
+    refused("eye", [&] { back_to_front(bsp, v); });
+    refused("spheres[1].center", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {v, 1}, {{1, 0, 0}, 1}}); });
+    refused("spheres[0].radius", [&] { overlapping_pairs({{{0, 0, 0}, bad}, {{1, 0, 0}, 1}}); });
+  }
+  refused("spheres[1].radius", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, -1}}); });
+  Mesh out_of_range = lean_and_stand();
+  out_of_range.triangles[1][2] = 6;
+  refused("mesh.triangles[1]", [&] { build_kd_tree(out_of_range); });
+  out_of_range.triangles[1][2] = -1;
+  refused("mesh.triangles[1]", [&] { build_bsp(out_of_range); });
+  // Valid, with a documented answer: a zero-length segment never hits; a point sphere
+  // (radius 0) is a ball like any other.
+  CHECK_FALSE(first_hit(tree, {finite, finite}).hit);
+  CHECK(overlapping_pairs({{{0, 0, 0}, 0}, {{0, 0, 0}, 0}}).pairs.size() == 1);
 }
 
 // ---- Figures (not a graded step) ----------------------------------------------------------------
