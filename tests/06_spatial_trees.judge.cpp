@@ -790,14 +790,8 @@ std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short
 rc::Gen<TreeQuery> tree_query() {
   return rc::gen::exec([] {
     TreeQuery q;
-    if (*rc::gen::inRange(0, 3) == 0) {
-      const SegmentMeshPair p = *gen::segment_mesh();  // lab 02's family: soups, terrains, octahedra
-      q.mesh = p.mesh;
-      q.segment = p.segment;
-    } else {
-      q.mesh = *gen::any_mesh();
-      q.segment = *gen::segment_near(q.mesh);
-    }
+    q.mesh = *gen::any_mesh();  // lab 02's soups, terrains and octahedra among others
+    q.segment = *gen::segment_near(q.mesh);
     q.tree = *rc::gen::inRange(0, 1000000);
     return q;
   });
