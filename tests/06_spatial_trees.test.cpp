@@ -124,8 +124,9 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
       e.equal("triangle", got.triangle, triangle);
       e.near("t", got.t, t, 1e-12);
       e.that("tests", got.tests <= max_tests, std::to_string(got.tests), "at most " + std::to_string(max_tests),
-             "more tests than the leaves the segment enters before the hit list");
-      return both(e.outcome(), judge_first(in, tree, Rules::exact));
+             "first_hit searches the leaves front to back from a, the near child first (a's side of the plane, or the "
+             "side d goes to when a is on it), and stops once its best hit is at or before the leaf's far end");
+      return both(judge_first(in, tree, Rules::exact), e.outcome());
     };
   };
   // A is found first, in the leaf below, at t = 3/4: beyond that leaf's far end t = 1/2.
@@ -147,7 +148,7 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
                      e.equal("second", got.hits[1].triangle, 0);
                      e.near("second t", got.hits[1].t, 0.75, 1e-12);
                    }
-                   return both(e.outcome(), judge_all(in, tree, Rules::exact));
+                   return both(judge_all(in, tree, Rules::exact), e.outcome());
                  });
   check::example("any_hit", "A, in the first leaf: one test", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0}, [&tree](const TreeQuery& in) {
     const KdHit got = any_hit(tree, in.segment);
@@ -155,7 +156,7 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
     e.equal("hit", got.hit, true);
     e.equal("triangle", got.triangle, 0);
     e.equal("tests", got.tests, 1);
-    return both(e.outcome(), judge_any(in, tree, Rules::exact));
+    return both(judge_any(in, tree, Rules::exact), e.outcome());
   });
   check::example("first_hit", "above the bounds: no leaf, no test", TreeQuery{mesh, {{0, 1, 5}, {8, 1, 5}}, 0},
                  [&tree](const TreeQuery& in) {
@@ -168,6 +169,28 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
                    e.equal("all_hits.tests", all.tests, 0);
                    return e.outcome();
                  });
+  // The header's walk: t_split <= 0 means the segment moves away from the plane (or
+  // starts on it): the near child only, whose leaf lists A alone.
+  const auto near_only = [&tree](const TreeQuery& in) {
+    const KdHit got = first_hit(tree, in.segment);
+    Expect e;
+    e.that("tests", got.tests == 1, std::to_string(got.tests), "1 (A, in the leaf below)",
+           "t_split <= 0: the segment moves away from the plane x = 4 (or starts on it), so the walk visits the near "
+           "child only, never the far one behind a");
+    return both(both(judge_first(in, tree, Rules::exact), judge_all(in, tree, Rules::exact)), e.outcome());
+  };
+  check::example("first_hit", "moving away from the split plane: t_split = -1/3, the leaf below only",
+                 TreeQuery{mesh, {{3, 1, 1}, {0, 1, 1}}, 0}, near_only);
+  check::example("first_hit", "starting on the split plane, moving away: t_split = 0, the leaf below only",
+                 TreeQuery{mesh, {{4, 1, 1}, {0, 1, 1}}, 0}, near_only);
+  // The given test's rule, not lab 02's: a segment in a triangle's plane, or of zero
+  // length, never hits it.
+  const auto no_hit = [&tree](const TreeQuery& in) {
+    return both(judge_first(in, tree, Rules::exact), both(judge_any(in, tree, Rules::exact), judge_all(in, tree, Rules::exact)));
+  };
+  check::example("first_hit", "lying in B's plane x = 5, across B: no hit (the given test's rule)",
+                 TreeQuery{mesh, {{5, 0.5, 0.5}, {5, 2, 0.5}}, 0}, no_hit);
+  check::example("first_hit", "zero length, on B: no hit (the given test's rule)", TreeQuery{mesh, {{5, 1, 1}, {5, 1, 1}}, 0}, no_hit);
 }
 
 TEST_CASE("L06S2 segment queries: random cases", "[lab06][step2][oracle]") {
@@ -200,8 +223,10 @@ auto expect_where(Where where) {
     const BspTree tree = build_bsp(in.mesh);
     const Outcome valid = judge::bsp_tree(in.mesh, tree);
     if (valid.verdict == Outcome::Verdict::fail) return valid;
+    const Where got = classify(tree, in.point);
+    if (got != where) return judge::classify(in, got, Rules::exact);
     Expect e;
-    e.equal("where", classify(tree, in.point), where);
+    e.equal("where", got, where);  // the handout's answer, which the oracle agrees with
     return e.outcome();
   };
 }
@@ -284,7 +309,7 @@ TEST_CASE("L06S4 back to front: worked examples", "[lab06][step4]") {
         if (k >= 0 && std::size_t(k) < tree.pieces.size()) got.push_back(tree.pieces[std::size_t(k)].source);
       Expect e;
       e.equal("triangles in order", got, expected);
-      return both(e.outcome(), judge::back_to_front(in, tree, order, Rules::exact));
+      return both(judge::back_to_front(in, tree, order, Rules::exact), e.outcome());
     };
   };
   check::example("back_to_front", "from above: bottom first", PointQuery{stack_of_three(), {1, 1, 10}}, sources({0, 1, 2}));
@@ -318,7 +343,7 @@ auto expect_pairs(std::vector<std::array<int, 2>> pairs) {
     const SpherePairs got = overlapping_pairs(in.spheres);
     Expect e;
     e.equal("pairs", got.pairs, pairs);
-    return both(e.outcome(), judge::overlapping_pairs(in, got, Rules::exact));
+    return both(judge::overlapping_pairs(in, got, Rules::exact), e.outcome());
   };
 }
 
@@ -408,11 +433,17 @@ Outcome run_efficiency(const EfficiencyCase& in) {
                           fmt(std::round(long_all.mean()));
   const std::string expected = "short: mean <= " + fmt(kShortMean) + ", worst <= " + std::to_string(kShortWorst) +
                                "; long first_hit mean <= " + fmt(kLongFirstMean) + "; long all_hits mean <= " + fmt(kLongAllMean);
+  const std::string leaves = ": are the leaves too big? Split while a split is cheaper than a leaf (the SAH), down to a "
+                             "few triangles per leaf";
   for (const Tally* t : {&short_first, &short_any})
     if (t->mean() > kShortMean || t->worst > kShortWorst)
-      return check::fail(expected, got, "short segments test too many triangles of the " + name);
-  if (long_first.mean() > kLongFirstMean) return check::fail(expected, got, "first_hit does not stop early enough on the " + name);
-  if (long_all.mean() > kLongAllMean) return check::fail(expected, got, "all_hits tests too many triangles of the " + name);
+      return check::fail(expected, got, "a short segment meets few leaves, so its tests per query are bounded: short "
+                                        "segments test too many triangles of the " + name + leaves);
+  if (long_first.mean() > kLongFirstMean)
+    return check::fail(expected, got, "first_hit on long segments must stop early (at the first leaf whose far end t1 is "
+                                      "past the best hit): too many tests on the " + name + leaves);
+  if (long_all.mean() > kLongAllMean)
+    return check::fail(expected, got, "all_hits tests only the leaves the segment meets: too many tests on the " + name + leaves);
   return check::pass();
 }
 
@@ -429,7 +460,8 @@ TEST_CASE("L06S6 efficiency: tests counted on 10,000 triangles", "[lab06][step6]
     if (right.verdict == Outcome::Verdict::fail) return right;
     Expect e;
     e.that("tests", got.tests <= kSphereTests, std::to_string(got.tests), "at most " + std::to_string(kSphereTests),
-           "too many pair tests: the brute force makes " + std::to_string(in.count * (in.count - 1) / 2));
+           "the sweep tests only pairs whose intervals overlap on the sweep axis (stop at the first interval starting "
+           "after high[i]); the brute force makes " + std::to_string(in.count * (in.count - 1) / 2));
     return e.outcome();
   });
 }
