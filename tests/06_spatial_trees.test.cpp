@@ -373,6 +373,55 @@ TEST_CASE("L06S5 broad phase: random cases", "[lab06][step5][oracle]") {
 
 namespace {
 
+// splitmix64: the efficiency segments, the same on every machine.
+struct Random {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t x = (state += 0x9e3779b97f4a7c15ull);
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  }
+  int below(int n) { return int(next() % std::uint64_t(n)); }
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+};
+
+// The segments of an efficiency case, `short_ones` or long ones.
+std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short_ones, std::uint64_t seed) {
+  Random random{seed};
+  Aabb box{mesh.vertices[0], mesh.vertices[0]};
+  for (const Vec3& v : mesh.vertices) box = {box.min.cwiseMin(v), box.max.cwiseMax(v)};
+  const double size = (box.max - box.min).norm();
+  const auto in_ball = [&] {
+    for (;;) {
+      const Vec3 v(2 * random.uniform() - 1, 2 * random.uniform() - 1, 2 * random.uniform() - 1);
+      if (v.squaredNorm() <= 1 && v.squaredNorm() > 1e-6) return v;
+    }
+  };
+  std::vector<Segment> out;
+  while (int(out.size()) < count) {
+    if (short_ones) {
+      // Centred within size / 100 of a random point of a random triangle, size / 50 long.
+      const Triangle t = mesh.triangle(std::size_t(random.below(int(mesh.size()))));
+      double u = random.uniform(), v = random.uniform();
+      if (u + v > 1) u = 1 - u, v = 1 - v;
+      const Vec3 c = t.v0 + u * (t.v1 - t.v0) + v * (t.v2 - t.v0) + size / 100 * in_ball();
+      const Vec3 d = size / 100 * in_ball().normalized();
+      out.push_back({c - d, c + d});
+    } else {
+      // Two points of the box grown by a tenth, at least half its diagonal apart.
+      const auto any = [&] {
+        Vec3 p;
+        for (int i = 0; i < 3; ++i) p[i] = box.min[i] - 0.1 * size + (box.max[i] - box.min[i] + 0.2 * size) * random.uniform();
+        return p;
+      };
+      const Vec3 a = any(), b = any();
+      if ((b - a).norm() >= size / 2) out.push_back({a, b});
+    }
+  }
+  return out;
+}
+
 // Tests per query over a batch of segments.
 struct Tally {
   long long total = 0;
@@ -405,7 +454,7 @@ Outcome run_efficiency(const EfficiencyCase& in) {
   const std::string name = std::string(gen::name_of(kind)) + " of " + std::to_string(mesh.size()) + " triangles";
   Tally short_first, short_any, long_first, long_all;
   for (bool short_ones : {true, false}) {
-    const auto segments = judge::efficiency_segments(mesh, in.segments, short_ones, std::uint64_t(in.seed) * 7 + short_ones);
+    const auto segments = efficiency_segments(mesh, in.segments, short_ones, std::uint64_t(in.seed) * 7 + short_ones);
     const SegmentRuns runs = run_segments(tree, segments, !short_ones);
     for (std::size_t k = 0; k < segments.size(); ++k) {
       const Segment& s = segments[k];
@@ -614,7 +663,7 @@ TEST_CASE("L06 figures: primitive tests per query", "[.][lab06-figures]") {
       const KdTree tree = build_kd_tree(mesh);
       Tally tallies[4];
       for (bool short_ones : {true, false})
-        for (const Segment& s : judge::efficiency_segments(mesh, segments, short_ones, 7 + short_ones)) {
+        for (const Segment& s : efficiency_segments(mesh, segments, short_ones, 7 + short_ones)) {
           if (short_ones) {
             tallies[0].add(first_hit(tree, s).tests);
             tallies[1].add(any_hit(tree, s).tests);
