@@ -27,15 +27,10 @@ constexpr double kRelative = 1e-9;  // tol = 1e-9 S (the header's tolerances)
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 template <class Input>
-double tolerance_of(const Input& in) {
-  return kRelative * check::scale_of_input(in);
-}
+double tolerance_of(const Input& in) { return kRelative * check::scale_of_input(in); }
 
-std::string str(long long n) { return std::to_string(n); }
-std::string str(std::size_t n) { return std::to_string(n); }
-std::string str(int n) { return std::to_string(n); }
-
-bool is_finite(const Vec3& v) { return v.allFinite(); }
+template <class Integer>
+std::string str(Integer n) { return std::to_string(n); }
 
 // The triangle's bounding box, corner by corner.
 Aabb box_of(const Triangle& t) {
@@ -195,15 +190,9 @@ double t_tolerance(const Segment& s, const Triangle& tri, double tol) {
   return change > 0 ? tol / change : kInfinity;
 }
 
-std::string describe_crossings(const std::vector<oracle::Crossing>& hits) {
-  std::string s;
-  for (std::size_t k = 0; k < hits.size() && k < 12; ++k)
-    s += (s.empty() ? "" : ", ") + ("triangle " + str(hits[k].triangle) + " at t = " + fmt(hits[k].t));
-  if (hits.size() > 12) s += ", ... (" + str(hits.size()) + " in all)";
-  return s.empty() ? "no hit" : s;
-}
-
-std::string describe_hits(const std::vector<KdHit>& hits) {
+// "triangle 3 at t = 0.5, ...": the exact crossings or the answer's hits.
+template <class Hit>
+std::string describe_hits(const std::vector<Hit>& hits) {
   std::string s;
   for (std::size_t k = 0; k < hits.size() && k < 12; ++k)
     s += (s.empty() ? "" : ", ") + ("triangle " + str(hits[k].triangle) + " at t = " + fmt(hits[k].t));
@@ -218,7 +207,7 @@ std::string describe_hit(const KdHit& h) { return h.hit ? "triangle " + str(h.tr
 std::string check_hit(const Segment& s, const Mesh& mesh, const KdHit& h, double tol) {
   if (h.triangle < 0 || std::size_t(h.triangle) >= mesh.size()) return "triangle " + str(h.triangle) + " does not exist";
   const Triangle tri = mesh.triangle(std::size_t(h.triangle));
-  if (!is_finite(h.point) || !oracle::within(h.point, tri, tol))
+  if (!h.point.allFinite() || !oracle::within(h.point, tri, tol))
     return "the point " + fmt(h.point) + " is not on triangle " + str(h.triangle) + " (tolerance " + fmt(tol) + ")";
   if (!oracle::within(h.point, s, tol)) return "the point " + fmt(h.point) + " is not on the segment (tolerance " + fmt(tol) + ")";
   if (!oracle::parameter_reproduces(s, h.t, h.point, tol)) return "a + t (b - a) with t = " + fmt(h.t) + " is not the point " + fmt(h.point);
@@ -227,34 +216,60 @@ std::string check_hit(const Segment& s, const Mesh& mesh, const KdHit& h, double
   return "";
 }
 
+// Where a missed hit was: the first leaf listing the triangle whose closed cell the
+// segment meets, which the walk must visit.
+std::string missed_in(const KdTree& tree, const Segment& s, int triangle) {
+  std::vector<LeafCell> leaves;
+  if (!walk_kd_tree(tree, leaves).empty()) return "";
+  for (const LeafCell& leaf : leaves) {
+    const auto [t0, t1] = clip(leaf.cell, s, 0.0);
+    const std::vector<int> l = listed(tree, leaf.node);
+    if (t0 <= t1 && std::binary_search(l.begin(), l.end(), triangle))
+      return ": leaf " + str(leaf.node) + " lists it, and the segment meets that leaf's cell on t = [" + fmt(t0) + ", " +
+             fmt(t1) + "]; the walk must visit every leaf the segment meets";
+  }
+  return "";
+}
+
 // The verdict on "is any triangle hit": the exact answer stands when some hit is not in
 // doubt, or when no triangle is in doubt.
-Outcome mesh_yes_no(const std::vector<Status>& all, bool got, Rules rules) {
+Outcome mesh_yes_no(const TreeQuery& in, const KdTree& tree, const std::vector<Status>& all, bool got, Rules rules) {
   bool expected = false, stable_hit = false, doubt = false;
-  for (const Status& st : all) {
+  int first = -1;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    const Status& st = all[i];
+    if (st.hit && (first < 0 || (all[std::size_t(first)].unstable && !st.unstable))) first = int(i);
     expected = expected || st.hit;
     stable_hit = stable_hit || (st.hit && !st.unstable);
     doubt = doubt || st.unstable;
   }
   if (got == expected) return !stable_hit && doubt ? ambiguous() : pass();
   if (!stable_hit && doubt && rules == Rules::random) return ambiguous();
-  return fail(expected ? "a hit" : "no hit", got ? "a hit" : "no hit",
-              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
-                                    : "the exact answer is stable here: no input within 1e-9 S answers otherwise");
+  const std::string clear = rules == Rules::exact ? "" : " (no input within 1e-9 S answers otherwise)";
+  if (expected)
+    return fail("a hit", "no hit",
+                "the segment hits triangle " + str(first) + " by the given test's rule" + clear + missed_in(tree, in.segment, first));
+  return fail("no hit", "a hit",
+              "by the given test's rule the segment hits no triangle" + clear +
+                  " (a segment in a triangle's plane, or of zero length, never hits here)");
 }
 
 // The counts: equal to the calls, and within the header's bound.
 std::string check_tests(const TreeQuery& in, const KdTree& tree, int reported, std::uint64_t calls, double until) {
   if (std::uint64_t(std::max(reported, 0)) != calls || reported < 0)
-    return "tests = " + str(reported) + ", but given::segment_triangle was called " + str(std::size_t(calls)) + " times";
+    return "`tests` must count every call of given::segment_triangle: you report " + str(reported) + ", it ran " +
+           str(std::size_t(calls)) + " times";
   std::vector<LeafCell> leaves;
   if (!walk_kd_tree(tree, leaves).empty()) return "";  // a hand-made tree the example checks itself
   const long long allowed = allowed_tests(tree, leaves, in.segment, tolerance_of(in), until);
-  if (reported > allowed)
-    return str(reported) + " tests, but the leaves the segment meets" +
-           (until < kInfinity ? " before the hit it returns (by t = " + fmt(until) + ")" : std::string()) + " list only " +
-           str(allowed) + " triangles";
-  return "";
+  if (reported <= allowed) return "";
+  if (until < kInfinity)
+    return "first_hit and any_hit may search only the leaves the segment enters no later than the hit they return (t = " +
+           fmt(until) + "): those list " + str(allowed) + " triangle(s), you made " + str(reported) +
+           " tests (stop once the best hit is at or before the leaf's far end t1)";
+  return "a query may search only the leaves whose closed cell the segment meets: those list " + str(allowed) +
+         " triangle(s), you made " + str(reported) +
+         " tests (the far child is visited only when the segment crosses the plane in the cell: 0 < t_split <= t1)";
 }
 
 }  // namespace
@@ -358,9 +373,17 @@ Outcome kd_tree(const Mesh& mesh, const KdTree& got) {
       if (!meets(leaf.cell)) continue;
       const std::vector<int>& l = lists[leaf.node];
       if (!std::binary_search(l.begin(), l.end(), int(i)))
+      {  // only touching the cell's wall: the classic strict comparison
+        bool touches = false;
+        for (int a = 0; a < 3; ++a) touches = touches || box.max[a] == leaf.cell.min[a] || box.min[a] == leaf.cell.max[a];
         return fail(expected, "leaf " + str(leaf.node) + " without triangle " + str(i),
-                    "triangle " + str(i) + " (" + labkit::describe(t) + ") meets the closed cell of leaf " + str(leaf.node) +
-                        " (" + labkit::describe(leaf.cell) + ") but is not listed in it");
+                    "every triangle that meets a leaf's closed cell, even at one point, is listed in it: triangle " + str(i) +
+                        " (" + labkit::describe(t) + ") meets the closed cell of leaf " + str(leaf.node) + " (" +
+                        labkit::describe(leaf.cell) + ")" +
+                        (touches ? ", touching its wall: a triangle touching the split plane goes to both sides "
+                                   "(min[axis] <= split, max[axis] >= split)"
+                                 : ""));
+      }
     }
   }
   return pass();
@@ -372,8 +395,8 @@ Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std
   const double tol = tolerance_of(in);
   const std::vector<Status> all = statuses(in.segment, in.mesh, tol, rules);
   const std::vector<oracle::Crossing> hits = oracle::segment_mesh_crossings(in.segment, in.mesh);
-  const std::string expected = describe_crossings(hits);
-  const Outcome decision = mesh_yes_no(all, got.hit, rules);
+  const std::string expected = describe_hits(hits);
+  const Outcome decision = mesh_yes_no(in, tree, all, got.hit, rules);
   if (decision.verdict == Outcome::Verdict::fail) return fail(expected, describe_hit(got), decision.why);
   if (got.hit) {
     // A hit on a triangle whose crossing is in doubt (nearly flat, grazed) is not checked
@@ -389,7 +412,10 @@ Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std
       if (all[std::size_t(h.triangle)].unstable) continue;
       const double slack = t_tolerance(in.segment, in.mesh.triangle(std::size_t(h.triangle)), tol) + t_tolerance(in.segment, mine, tol);
       if (got.t > h.t + slack)
-        return fail(expected, describe_hit(got), "a nearer hit exists: triangle " + str(h.triangle) + " at t = " + fmt(h.t));
+        return fail(expected, describe_hit(got),
+                    "first_hit returns the smallest t: triangle " + str(h.triangle) + " is hit at t = " + fmt(h.t) +
+                        ", before yours; a hit beyond the far end t1 of the leaf that found it is not final (a later "
+                        "leaf may hold a nearer one)");
       break;
     }
   }
@@ -401,8 +427,8 @@ Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std
 Outcome any_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls, Rules rules) {
   const double tol = tolerance_of(in);
   const std::vector<Status> all = statuses(in.segment, in.mesh, tol, rules);
-  const Outcome decision = mesh_yes_no(all, got.hit, rules);
-  const auto expected = [&] { return describe_crossings(oracle::segment_mesh_crossings(in.segment, in.mesh)); };
+  const Outcome decision = mesh_yes_no(in, tree, all, got.hit, rules);
+  const auto expected = [&] { return describe_hits(oracle::segment_mesh_crossings(in.segment, in.mesh)); };
   if (decision.verdict == Outcome::Verdict::fail) return fail(expected(), describe_hit(got), decision.why);
   if (got.hit) {
     const bool doubtful = got.triangle >= 0 && std::size_t(got.triangle) < all.size() && all[std::size_t(got.triangle)].unstable;
@@ -419,7 +445,7 @@ Outcome any_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::
 Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std::uint64_t calls, Rules rules) {
   const double tol = tolerance_of(in);
   const std::vector<oracle::Crossing> hits = oracle::segment_mesh_crossings(in.segment, in.mesh);
-  const std::string expected = describe_crossings(hits), answer = describe_hits(got.hits);
+  const std::string expected = describe_hits(hits), answer = describe_hits(got.hits);
   bool doubt = false;
   std::set<int> reported;
   for (std::size_t k = 0; k < got.hits.size(); ++k) {
@@ -429,7 +455,9 @@ Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std
     const bool doubtful = known && unstable(in.segment, in.mesh.triangle(std::size_t(h.triangle)), tol, rules);
     const std::string problem = doubtful ? std::string() : check_hit(in.segment, in.mesh, h, tol);
     if (!problem.empty()) return fail(expected, answer, problem);
-    if (!reported.insert(h.triangle).second) return fail(expected, answer, "triangle " + str(h.triangle) + " is reported twice");
+    if (!reported.insert(h.triangle).second)
+      return fail(expected, answer, "all_hits reports each triangle once: triangle " + str(h.triangle) +
+                                        " is reported twice (a triangle listed in two leaves is tested in both)");
     const Triangle tri = in.mesh.triangle(std::size_t(h.triangle));
     if (!crossing({in.segment, tri})) {
       if (!unstable(in.segment, tri, tol, rules)) return fail(expected, answer, "the segment does not hit triangle " + str(h.triangle));
@@ -438,7 +466,10 @@ Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std
     if (k + 1 < got.hits.size()) {
       const KdHit& next = got.hits[k + 1];
       const bool ordered = h.t < next.t || (h.t == next.t && h.triangle < next.triangle);
-      if (!ordered) return fail(expected, answer, "the hits are not sorted by t (ties: lower index first)");
+      if (!ordered && next.triangle != h.triangle)  // a repeat is named as such next
+        return fail(expected, answer, "all_hits lists its hits sorted by t (ties: lower index first): triangle " +
+                                          str(h.triangle) + " at t = " + fmt(h.t) + " comes before triangle " +
+                                          str(next.triangle) + " at t = " + fmt(next.t));
     }
   }
   for (const oracle::Crossing& h : hits) {
@@ -447,7 +478,8 @@ Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std
       doubt = true;
       continue;
     }
-    return fail(expected, answer, "triangle " + str(h.triangle) + " (hit at t = " + fmt(h.t) + ") is missing");
+    return fail(expected, answer, "all_hits reports every triangle hit: triangle " + str(h.triangle) + " (hit at t = " +
+                                      fmt(h.t) + ") is missing" + missed_in(tree, in.segment, h.triangle));
   }
   const std::string counts = check_tests(in, tree, got.tests, calls, kInfinity);
   if (!counts.empty()) return fail(expected, answer + ", tests = " + str(got.tests), counts);
@@ -565,7 +597,7 @@ std::string check_bsp(const Mesh& mesh, const BspTree& tree, BspShape& shape) {
                str(tree.nodes[std::size_t(node)].plane) + ")";
     for (int v = 0; v < 3; ++v) {
       const Vec3& x = piece.triangle[v];
-      if (!is_finite(x) || !near_triangle(source, x, tol))
+      if (!x.allFinite() || !near_triangle(source, x, tol))
         return name + ": its corner " + fmt(x) + " is not on triangle " + str(piece.source) + " (tolerance " + fmt(tol) + ")";
       for (const auto& [ancestor, side] : shape.path[std::size_t(node)]) {
         const Triangle& cut = mesh.triangle(std::size_t(tree.nodes[std::size_t(ancestor)].plane));
@@ -617,9 +649,16 @@ Outcome classify(const PointQuery& in, Where got, Rules rules) {
   }
   if (got == expected) return doubt ? ambiguous() : pass();
   if (doubt) return ambiguous();
-  return fail(describe(expected), describe(got),
-              rules == Rules::exact ? "this degenerate input has an exact answer (see the header's rules)"
-                                    : "the point is farther than 8 tol from the surface: its answer is stable");
+  std::string why = "the point is " + (expected == Where::on ? std::string("on the surface") : describe(expected) + " the solid") +
+                    " of the closed mesh" +
+                    (rules == Rules::exact ? std::string() : " (more than 8 tol from its surface)") + ", not " + describe(got);
+  if (expected == Where::on)
+    why += ": it lies on a closed triangle of the surface; a point on a node's plane (side = 0) is neither in front nor "
+           "behind: test the node's pieces, then classify it in both subtrees";
+  else
+    why += ": descend strictly in front to the front child, strictly behind to the back child; a missing front child "
+           "is outside, a missing back child inside";
+  return fail(describe(expected), describe(got), why);
 }
 
 Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vector<int>& got, Rules rules) {
@@ -722,22 +761,28 @@ Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rul
     const Sphere& b = spheres[std::size_t(p[1])];
     return rules == Rules::random && std::abs((a.center - b.center).norm() - (a.radius + b.radius)) <= 6 * tol;
   };
-  const auto gap = [&](const std::array<int, 2>& p) {
+  const auto gap_of = [&](const std::array<int, 2>& p) {
     const Sphere& a = spheres[std::size_t(p[0])];
     const Sphere& b = spheres[std::size_t(p[1])];
-    return fmt((a.center - b.center).norm() - (a.radius + b.radius));
+    return (a.center - b.center).norm() - (a.radius + b.radius);
   };
+  const auto gap = [&](const std::array<int, 2>& p) { return fmt(gap_of(p)); };
   bool doubt = false;
   std::size_t i = 0, j = 0;
   while (i < exact.size() || j < got.pairs.size()) {
     if (j == got.pairs.size() || (i < exact.size() && exact[i] < got.pairs[j])) {  // missing
       if (!in_doubt(exact[i]))
-        return fail(expected, answer, "spheres " + str(exact[i][0]) + " and " + str(exact[i][1]) + " meet (|c_i - c_j| - (r_i + r_j) = " + gap(exact[i]) + ") but are missing");
+        return fail(expected, answer,
+                    "closed balls meet when |c_i - c_j| <= r_i + r_j: spheres " + str(exact[i][0]) + " and " + str(exact[i][1]) +
+                        " have |c_i - c_j| - (r_i + r_j) = " + gap(exact[i]) + ", yet the pair is missing" +
+                        (gap_of(exact[i]) == 0 ? " (they touch, and touching counts: intervals that touch overlap, low[j] <= high[i])" : ""));
       doubt = true;
       ++i;
     } else if (i == exact.size() || got.pairs[j] < exact[i]) {  // extra
       if (!in_doubt(got.pairs[j]))
-        return fail(expected, answer, "spheres " + str(got.pairs[j][0]) + " and " + str(got.pairs[j][1]) + " do not meet (|c_i - c_j| - (r_i + r_j) = " + gap(got.pairs[j]) + ")");
+        return fail(expected, answer,
+                    "closed balls meet when |c_i - c_j| <= r_i + r_j: spheres " + str(got.pairs[j][0]) + " and " +
+                        str(got.pairs[j][1]) + " have |c_i - c_j| - (r_i + r_j) = " + gap(got.pairs[j]) + " > 0: apart");
       doubt = true;
       ++j;
     } else {
@@ -748,56 +793,13 @@ Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rul
   return doubt ? ambiguous() : pass();
 }
 
-// ---- Step 6 ------------------------------------------------------------------------------------
-
-std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short_ones, std::uint64_t seed) {
-  Random random{seed};
-  Aabb box{mesh.vertices[0], mesh.vertices[0]};
-  for (const Vec3& v : mesh.vertices) box = {box.min.cwiseMin(v), box.max.cwiseMax(v)};
-  const double size = (box.max - box.min).norm();
-  const auto in_ball = [&] {
-    for (;;) {
-      const Vec3 v(2 * random.uniform() - 1, 2 * random.uniform() - 1, 2 * random.uniform() - 1);
-      if (v.squaredNorm() <= 1 && v.squaredNorm() > 1e-6) return v;
-    }
-  };
-  std::vector<Segment> out;
-  while (int(out.size()) < count) {
-    if (short_ones) {
-      // Centred within size / 100 of a random point of a random triangle, size / 50 long.
-      const Triangle t = mesh.triangle(std::size_t(random.below(int(mesh.size()))));
-      double u = random.uniform(), v = random.uniform();
-      if (u + v > 1) u = 1 - u, v = 1 - v;
-      const Vec3 c = t.v0 + u * (t.v1 - t.v0) + v * (t.v2 - t.v0) + size / 100 * in_ball();
-      const Vec3 d = size / 100 * in_ball().normalized();
-      out.push_back({c - d, c + d});
-    } else {
-      // Two points of the box grown by a tenth, at least half its diagonal apart.
-      const auto any = [&] {
-        Vec3 p;
-        for (int i = 0; i < 3; ++i) p[i] = box.min[i] - 0.1 * size + (box.max[i] - box.min[i] + 0.2 * size) * random.uniform();
-        return p;
-      };
-      const Vec3 a = any(), b = any();
-      if ((b - a).norm() >= size / 2) out.push_back({a, b});
-    }
-  }
-  return out;
-}
-
 // ---- Inputs --------------------------------------------------------------------------------------
 
 rc::Gen<TreeQuery> tree_query() {
   return rc::gen::exec([] {
     TreeQuery q;
-    if (*rc::gen::inRange(0, 3) == 0) {
-      const SegmentMeshPair p = *gen::segment_mesh();  // lab 02's family: soups, terrains, octahedra
-      q.mesh = p.mesh;
-      q.segment = p.segment;
-    } else {
-      q.mesh = *gen::any_mesh();
-      q.segment = *gen::segment_near(q.mesh);
-    }
+    q.mesh = *gen::any_mesh();  // lab 02's soups, terrains and octahedra among others
+    q.segment = *gen::segment_near(q.mesh);
     q.tree = *rc::gen::inRange(0, 1000000);
     return q;
   });
@@ -843,10 +845,7 @@ rc::Gen<PointQuery> exact_eye_query() {
   });
 }
 
-rc::Gen<SphereSet> sphere_set() {
-  return rc::gen::map(gen::sphere_set(), [](std::vector<Sphere> s) { return SphereSet{std::move(s)}; });
-}
-
+rc::Gen<SphereSet> sphere_set() { return rc::gen::map(gen::sphere_set(), [](std::vector<Sphere> s) { return SphereSet{std::move(s)}; }); }
 rc::Gen<SphereSet> exact_sphere_set() {
   return rc::gen::map(gen::exact_sphere_set(), [](std::vector<Sphere> s) { return SphereSet{std::move(s)}; });
 }

@@ -86,9 +86,6 @@ Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vect
 // Step 5.
 Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rules = Rules::random);
 
-// Step 6: the segments of an efficiency case, `short_ones` or long ones.
-std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short_ones, std::uint64_t seed);
-
 // Inputs.
 rc::Gen<TreeQuery> tree_query();
 rc::Gen<TreeQuery> exact_tree_query();

@@ -1,51 +1,63 @@
-# Lab 06's classic mistakes (handouts/06_spatial_trees.md); each must fail its step.
+# Lab 06's classic mistakes (handouts/06_spatial_trees.md); each must fail its step first,
+# and that failure's why must say the words after SAYS (the concept, not a field).
 
 # Step 1: a triangle that only touches the split plane from above is sent above only,
 # though it meets the closed cell below at the plane.
-labkit_mutant(06 spatial_trees NAME touching_goes_one_side STEP 1
+labkit_mutant(06 spatial_trees NAME touching_goes_one_side STEP 1 SAYS "closed cell" "both sides"
   FIND "if (boxes_[std::size_t(i)].min[split.axis] <= split.position) below.push_back(i);"
   REPLACE "if (boxes_[std::size_t(i)].min[split.axis] < split.position) below.push_back(i);")
 
 # Step 2: first_hit stops in the first leaf that has any hit, even one beyond the leaf's
 # far end (a later leaf may hold a nearer one).
-labkit_mutant(06 spatial_trees NAME first_hit_stops_too_soon STEP 2
+labkit_mutant(06 spatial_trees NAME first_hit_stops_too_soon STEP 2 SAYS "smallest t" "not final"
   FIND "return best.hit ? best.t : kInfinity;"
   REPLACE "return best.hit ? -kInfinity : kInfinity;")
 
 # Step 2: all_hits reports a triangle listed in two leaves twice.
-labkit_mutant(06 spatial_trees NAME all_hits_twice STEP 2
+labkit_mutant(06 spatial_trees NAME all_hits_twice STEP 2 SAYS "each triangle once"
   FIND "return x.triangle == y.triangle;"
   REPLACE "return false;")
 
+# Step 2: the near child chosen by a strict comparison alone: a segment starting exactly
+# on a split plane is sent to the side above, whatever way it goes.
+labkit_mutant(06 spatial_trees NAME start_on_plane_wrong_side STEP 2 SAYS "near child" "side d goes to"
+  FIND "(s.a[axis] == n.split && d[axis] <= 0)"
+  REPLACE "false")
+
+# Step 2: the walk read without its t_split <= 0 rule: a segment moving away from the
+# plane is sent into the far cell behind a, which it never meets.
+labkit_mutant(06 spatial_trees NAME far_child_behind_a STEP 2 SAYS "t_split" "far child"
+  FIND "if (t_split > span.t1 || t_split <= 0) {"
+  REPLACE "if (t_split > span.t1) {")
+
 # Step 3: a point on a node's plane is sent in front, as if it were off the plane.
-labkit_mutant(06 spatial_trees NAME on_plane_goes_front STEP 3
+labkit_mutant(06 spatial_trees NAME on_plane_goes_front STEP 3 SAYS "side = 0" "both subtrees"
   FIND "if (side > 0) {"
   REPLACE "if (side >= 0) {")
 
 # Step 4: the subtree on the eye's side drawn first: front to back, not back to front.
-labkit_mutant(06 spatial_trees NAME near_subtree_first STEP 4
+labkit_mutant(06 spatial_trees NAME near_subtree_first STEP 4 SAYS "far subtree"
   FIND "const int near = eye_in_front ? n.front : n.back, far = eye_in_front ? n.back : n.front;"
   REPLACE "const int near = eye_in_front ? n.back : n.front, far = eye_in_front ? n.front : n.back;")
 
 # Step 5: intervals that only touch are taken as apart, so touching balls are missed.
-labkit_mutant(06 spatial_trees NAME touching_intervals_apart STEP 5
+labkit_mutant(06 spatial_trees NAME touching_intervals_apart STEP 5 SAYS "touching counts"
   FIND "intervals[j].low <= intervals[i].high"
   REPLACE "intervals[j].low < intervals[i].high")
 
 # Step 6: the tree stops splitting at depth 2: leaves of thousands of triangles. Every
 # answer is still right; only the count of tests gives it away.
-labkit_mutant(06 spatial_trees NAME leaves_too_big STEP 6
+labkit_mutant(06 spatial_trees NAME leaves_too_big STEP 6 SAYS "leaves too big"
   FIND "const Split split = depth < max_depth_ ?"
   REPLACE "const Split split = depth < 2 ?")
 
 # Step 6: the sweep tests every later interval, overlapping or not: the brute force.
-labkit_mutant(06 spatial_trees NAME sweep_tests_all_pairs STEP 6
+labkit_mutant(06 spatial_trees NAME sweep_tests_all_pairs STEP 6 SAYS "intervals overlap"
   FIND "j < intervals.size() && intervals[j].low <= intervals[i].high; ++j"
   REPLACE "j < intervals.size(); ++j")
 
-# Step 7: a segment starting exactly on a split plane is sent to the side of its start
-# by a strict comparison alone: going down from the plane, it walks the cell above and
-# never the one below.
-labkit_mutant(06 spatial_trees NAME start_on_plane_wrong_side STEP 7
-  FIND "(s.a[axis] == n.split && d[axis] <= 0)"
-  REPLACE "false")
+# Step 7: the clip to the root's box with strict comparisons: a segment lying in the
+# plane of a wall of the root's cell is taken as outside it, and its hits are lost.
+labkit_mutant(06 spatial_trees NAME clip_wall_strict STEP 7 SAYS "every leaf the segment meets"
+  FIND "if (a[i] < box.min[i] || a[i] > box.max[i]) return {1.0, 0.0};  // beside the slab"
+  REPLACE "if (a[i] <= box.min[i] || a[i] >= box.max[i]) return {1.0, 0.0};  // beside the slab")

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
+#include <stdexcept>
 
 using namespace labkit;
 using namespace labkit::lab06;
@@ -122,8 +124,9 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
       e.equal("triangle", got.triangle, triangle);
       e.near("t", got.t, t, 1e-12);
       e.that("tests", got.tests <= max_tests, std::to_string(got.tests), "at most " + std::to_string(max_tests),
-             "more tests than the leaves the segment enters before the hit list");
-      return both(e.outcome(), judge_first(in, tree, Rules::exact));
+             "first_hit searches the leaves front to back from a, the near child first (a's side of the plane, or the "
+             "side d goes to when a is on it), and stops once its best hit is at or before the leaf's far end");
+      return both(judge_first(in, tree, Rules::exact), e.outcome());
     };
   };
   // A is found first, in the leaf below, at t = 3/4: beyond that leaf's far end t = 1/2.
@@ -145,7 +148,7 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
                      e.equal("second", got.hits[1].triangle, 0);
                      e.near("second t", got.hits[1].t, 0.75, 1e-12);
                    }
-                   return both(e.outcome(), judge_all(in, tree, Rules::exact));
+                   return both(judge_all(in, tree, Rules::exact), e.outcome());
                  });
   check::example("any_hit", "A, in the first leaf: one test", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0}, [&tree](const TreeQuery& in) {
     const KdHit got = any_hit(tree, in.segment);
@@ -153,7 +156,7 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
     e.equal("hit", got.hit, true);
     e.equal("triangle", got.triangle, 0);
     e.equal("tests", got.tests, 1);
-    return both(e.outcome(), judge_any(in, tree, Rules::exact));
+    return both(judge_any(in, tree, Rules::exact), e.outcome());
   });
   check::example("first_hit", "above the bounds: no leaf, no test", TreeQuery{mesh, {{0, 1, 5}, {8, 1, 5}}, 0},
                  [&tree](const TreeQuery& in) {
@@ -166,6 +169,28 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
                    e.equal("all_hits.tests", all.tests, 0);
                    return e.outcome();
                  });
+  // The header's walk: t_split <= 0 means the segment moves away from the plane (or
+  // starts on it): the near child only, whose leaf lists A alone.
+  const auto near_only = [&tree](const TreeQuery& in) {
+    const KdHit got = first_hit(tree, in.segment);
+    Expect e;
+    e.that("tests", got.tests == 1, std::to_string(got.tests), "1 (A, in the leaf below)",
+           "t_split <= 0: the segment moves away from the plane x = 4 (or starts on it), so the walk visits the near "
+           "child only, never the far one behind a");
+    return both(both(judge_first(in, tree, Rules::exact), judge_all(in, tree, Rules::exact)), e.outcome());
+  };
+  check::example("first_hit", "moving away from the split plane: t_split = -1/3, the leaf below only",
+                 TreeQuery{mesh, {{3, 1, 1}, {0, 1, 1}}, 0}, near_only);
+  check::example("first_hit", "starting on the split plane, moving away: t_split = 0, the leaf below only",
+                 TreeQuery{mesh, {{4, 1, 1}, {0, 1, 1}}, 0}, near_only);
+  // The given test's rule, not lab 02's: a segment in a triangle's plane, or of zero
+  // length, never hits it.
+  const auto no_hit = [&tree](const TreeQuery& in) {
+    return both(judge_first(in, tree, Rules::exact), both(judge_any(in, tree, Rules::exact), judge_all(in, tree, Rules::exact)));
+  };
+  check::example("first_hit", "lying in B's plane x = 5, across B: no hit (the given test's rule)",
+                 TreeQuery{mesh, {{5, 0.5, 0.5}, {5, 2, 0.5}}, 0}, no_hit);
+  check::example("first_hit", "zero length, on B: no hit (the given test's rule)", TreeQuery{mesh, {{5, 1, 1}, {5, 1, 1}}, 0}, no_hit);
 }
 
 TEST_CASE("L06S2 segment queries: random cases", "[lab06][step2][oracle]") {
@@ -198,8 +223,10 @@ auto expect_where(Where where) {
     const BspTree tree = build_bsp(in.mesh);
     const Outcome valid = judge::bsp_tree(in.mesh, tree);
     if (valid.verdict == Outcome::Verdict::fail) return valid;
+    const Where got = classify(tree, in.point);
+    if (got != where) return judge::classify(in, got, Rules::exact);
     Expect e;
-    e.equal("where", classify(tree, in.point), where);
+    e.equal("where", got, where);  // the handout's answer, which the oracle agrees with
     return e.outcome();
   };
 }
@@ -282,7 +309,7 @@ TEST_CASE("L06S4 back to front: worked examples", "[lab06][step4]") {
         if (k >= 0 && std::size_t(k) < tree.pieces.size()) got.push_back(tree.pieces[std::size_t(k)].source);
       Expect e;
       e.equal("triangles in order", got, expected);
-      return both(e.outcome(), judge::back_to_front(in, tree, order, Rules::exact));
+      return both(judge::back_to_front(in, tree, order, Rules::exact), e.outcome());
     };
   };
   check::example("back_to_front", "from above: bottom first", PointQuery{stack_of_three(), {1, 1, 10}}, sources({0, 1, 2}));
@@ -316,7 +343,7 @@ auto expect_pairs(std::vector<std::array<int, 2>> pairs) {
     const SpherePairs got = overlapping_pairs(in.spheres);
     Expect e;
     e.equal("pairs", got.pairs, pairs);
-    return both(e.outcome(), judge::overlapping_pairs(in, got, Rules::exact));
+    return both(judge::overlapping_pairs(in, got, Rules::exact), e.outcome());
   };
 }
 
@@ -345,6 +372,55 @@ TEST_CASE("L06S5 broad phase: random cases", "[lab06][step5][oracle]") {
 // ---- Step 6 --------------------------------------------------------------------------------------
 
 namespace {
+
+// splitmix64: the efficiency segments, the same on every machine.
+struct Random {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t x = (state += 0x9e3779b97f4a7c15ull);
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  }
+  int below(int n) { return int(next() % std::uint64_t(n)); }
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
+};
+
+// The segments of an efficiency case, `short_ones` or long ones.
+std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short_ones, std::uint64_t seed) {
+  Random random{seed};
+  Aabb box{mesh.vertices[0], mesh.vertices[0]};
+  for (const Vec3& v : mesh.vertices) box = {box.min.cwiseMin(v), box.max.cwiseMax(v)};
+  const double size = (box.max - box.min).norm();
+  const auto in_ball = [&] {
+    for (;;) {
+      const Vec3 v(2 * random.uniform() - 1, 2 * random.uniform() - 1, 2 * random.uniform() - 1);
+      if (v.squaredNorm() <= 1 && v.squaredNorm() > 1e-6) return v;
+    }
+  };
+  std::vector<Segment> out;
+  while (int(out.size()) < count) {
+    if (short_ones) {
+      // Centred within size / 100 of a random point of a random triangle, size / 50 long.
+      const Triangle t = mesh.triangle(std::size_t(random.below(int(mesh.size()))));
+      double u = random.uniform(), v = random.uniform();
+      if (u + v > 1) u = 1 - u, v = 1 - v;
+      const Vec3 c = t.v0 + u * (t.v1 - t.v0) + v * (t.v2 - t.v0) + size / 100 * in_ball();
+      const Vec3 d = size / 100 * in_ball().normalized();
+      out.push_back({c - d, c + d});
+    } else {
+      // Two points of the box grown by a tenth, at least half its diagonal apart.
+      const auto any = [&] {
+        Vec3 p;
+        for (int i = 0; i < 3; ++i) p[i] = box.min[i] - 0.1 * size + (box.max[i] - box.min[i] + 0.2 * size) * random.uniform();
+        return p;
+      };
+      const Vec3 a = any(), b = any();
+      if ((b - a).norm() >= size / 2) out.push_back({a, b});
+    }
+  }
+  return out;
+}
 
 // Tests per query over a batch of segments.
 struct Tally {
@@ -378,7 +454,7 @@ Outcome run_efficiency(const EfficiencyCase& in) {
   const std::string name = std::string(gen::name_of(kind)) + " of " + std::to_string(mesh.size()) + " triangles";
   Tally short_first, short_any, long_first, long_all;
   for (bool short_ones : {true, false}) {
-    const auto segments = judge::efficiency_segments(mesh, in.segments, short_ones, std::uint64_t(in.seed) * 7 + short_ones);
+    const auto segments = efficiency_segments(mesh, in.segments, short_ones, std::uint64_t(in.seed) * 7 + short_ones);
     const SegmentRuns runs = run_segments(tree, segments, !short_ones);
     for (std::size_t k = 0; k < segments.size(); ++k) {
       const Segment& s = segments[k];
@@ -406,11 +482,17 @@ Outcome run_efficiency(const EfficiencyCase& in) {
                           fmt(std::round(long_all.mean()));
   const std::string expected = "short: mean <= " + fmt(kShortMean) + ", worst <= " + std::to_string(kShortWorst) +
                                "; long first_hit mean <= " + fmt(kLongFirstMean) + "; long all_hits mean <= " + fmt(kLongAllMean);
+  const std::string leaves = ": are the leaves too big? Split while a split is cheaper than a leaf (the SAH), down to a "
+                             "few triangles per leaf";
   for (const Tally* t : {&short_first, &short_any})
     if (t->mean() > kShortMean || t->worst > kShortWorst)
-      return check::fail(expected, got, "short segments test too many triangles of the " + name);
-  if (long_first.mean() > kLongFirstMean) return check::fail(expected, got, "first_hit does not stop early enough on the " + name);
-  if (long_all.mean() > kLongAllMean) return check::fail(expected, got, "all_hits tests too many triangles of the " + name);
+      return check::fail(expected, got, "a short segment meets few leaves, so its tests per query are bounded: short "
+                                        "segments test too many triangles of the " + name + leaves);
+  if (long_first.mean() > kLongFirstMean)
+    return check::fail(expected, got, "first_hit on long segments must stop early (at the first leaf whose far end t1 is "
+                                      "past the best hit): too many tests on the " + name + leaves);
+  if (long_all.mean() > kLongAllMean)
+    return check::fail(expected, got, "all_hits tests only the leaves the segment meets: too many tests on the " + name + leaves);
   return check::pass();
 }
 
@@ -427,7 +509,8 @@ TEST_CASE("L06S6 efficiency: tests counted on 10,000 triangles", "[lab06][step6]
     if (right.verdict == Outcome::Verdict::fail) return right;
     Expect e;
     e.that("tests", got.tests <= kSphereTests, std::to_string(got.tests), "at most " + std::to_string(kSphereTests),
-           "too many pair tests: the brute force makes " + std::to_string(in.count * (in.count - 1) / 2));
+           "the sweep tests only pairs whose intervals overlap on the sweep axis (stop at the first interval starting "
+           "after high[i]); the brute force makes " + std::to_string(in.count * (in.count - 1) / 2));
     return e.outcome();
   });
 }
@@ -516,6 +599,55 @@ TEST_CASE("L06S7 robustness: random exact degenerate cases", "[lab06][step7][ora
   });
 }
 
+// ---- The header's preconditions (not a graded step) ---------------------------------------------
+// Tagged [contract]: ctest runs it with the reference only. Students are not graded on
+// invalid input; the reference refuses each kind with std::invalid_argument naming the
+// argument and the rule.
+
+TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[lab06][contract]") {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const auto refused = [](const std::string& argument, auto&& call) {
+    INFO("invalid " << argument);
+    try {
+      call();
+      FAIL_CHECK("answered instead of throwing std::invalid_argument");
+    } catch (const std::invalid_argument& e) {
+      const std::string message = e.what();
+      INFO("message: " << message);
+      CHECK(message.find(argument) != std::string::npos);
+      CHECK(message.find("must") != std::string::npos);  // the rule, not only the name
+    }
+  };
+  const KdTree tree = handout_tree();
+  const Vec3 finite(0, 1, 1);
+  for (double bad : {nan, inf, -inf}) {
+    const Vec3 v(bad, 1, 1);
+    refused("segment.a", [&] { first_hit(tree, {v, finite}); });
+    refused("segment.b", [&] { first_hit(tree, {finite, v}); });
+    refused("segment.a", [&] { any_hit(tree, {v, finite}); });
+    refused("segment.b", [&] { all_hits(tree, {finite, v}); });
+    Mesh broken = lean_and_stand();
+    broken.vertices[4] = v;
+    refused("mesh.vertices[4]", [&] { build_kd_tree(broken); });
+    refused("mesh.vertices[4]", [&] { build_bsp(broken); });
+    const BspTree bsp = build_bsp(lean_and_stand());
+    refused("point", [&] { classify(bsp, v); });
+    refused("eye", [&] { back_to_front(bsp, v); });
+    refused("spheres[1].center", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {v, 1}, {{1, 0, 0}, 1}}); });
+    refused("spheres[0].radius", [&] { overlapping_pairs({{{0, 0, 0}, bad}, {{1, 0, 0}, 1}}); });
+  }
+  refused("spheres[1].radius", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, -1}}); });
+  Mesh out_of_range = lean_and_stand();
+  out_of_range.triangles[1][2] = 6;
+  refused("mesh.triangles[1]", [&] { build_kd_tree(out_of_range); });
+  out_of_range.triangles[1][2] = -1;
+  refused("mesh.triangles[1]", [&] { build_bsp(out_of_range); });
+  // Valid, with a documented answer: a zero-length segment never hits; a point sphere
+  // (radius 0) is a ball like any other.
+  CHECK_FALSE(first_hit(tree, {finite, finite}).hit);
+  CHECK(overlapping_pairs({{{0, 0, 0}, 0}, {{0, 0, 0}, 0}}).pairs.size() == 1);
+}
+
 // ---- Figures (not a graded step) ----------------------------------------------------------------
 // Primitive tests per query on 10k, 100k and 1M triangles, against brute force (every
 // triangle once). Hidden: run it with
@@ -531,7 +663,7 @@ TEST_CASE("L06 figures: primitive tests per query", "[.][lab06-figures]") {
       const KdTree tree = build_kd_tree(mesh);
       Tally tallies[4];
       for (bool short_ones : {true, false})
-        for (const Segment& s : judge::efficiency_segments(mesh, segments, short_ones, 7 + short_ones)) {
+        for (const Segment& s : efficiency_segments(mesh, segments, short_ones, 7 + short_ones)) {
           if (short_ones) {
             tallies[0].add(first_hit(tree, s).tests);
             tallies[1].add(any_hit(tree, s).tests);

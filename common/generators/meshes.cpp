@@ -316,6 +316,45 @@ rc::Gen<Mesh> pile() {
 // The largest |coordinate| of a mesh: the scale S of its tolerances.
 double size_of(const Mesh& m) { return std::max(scale_of(m), 1e-300); }
 
+// Lab 06's domain reaches from S = 1e-50 to S = 1e50: the same shape moved to either
+// end by a power of two (exact), so that only the scale changes.
+double to_range_end(double s, bool huge) { return std::ldexp(1.0, (huge ? 165 : -166) - std::ilogb(std::max(s, 1e-300))); }
+
+rc::Gen<Mesh> at_range_ends(const rc::Gen<Mesh>& g) {
+  return rc::gen::exec([g] {
+    Mesh m = *g;
+    const double factor = to_range_end(size_of(m), *rc::gen::arbitrary<bool>());
+    for (Vec3& v : m.vertices) v *= factor;
+    return m;
+  });
+}
+
+// Needles: triangles whose height is up to 2^-27 (about 1e-8) of their longest side, in
+// every orientation and position: the third vertex near an end (a spike) or near the
+// middle (a cap), a dyadic hair off the line of the other two.
+rc::Gen<Mesh> needles() {
+  return rc::gen::exec([] {
+    const double s = *scale();
+    Mesh m;
+    const int n = *rc::gen::inRange(1, 9);
+    for (int i = 0; i < n; ++i) {
+      const Vec3 a = *point(s), along = *direction(s), across = *direction(s);
+      const double where = *rc::gen::element(0.0, 0.125, 0.5, 0.875, 1.0);
+      const Vec3 c = a + where * along + *tiny(0, 27) * across;
+      const int base = int(m.vertices.size());
+      m.vertices.insert(m.vertices.end(), {a, a + along, c});
+      m.triangles.push_back({base, base + 1, base + 2});
+    }
+    return m;
+  });
+}
+
+// A decisive hair: k 2^-j S with k in 1..4 and j in 12..24, at least 2^-24 S (about 60
+// tol): near-degenerate, yet farther than any perturbation of tol can reach.
+rc::Gen<double> hair(double s) {
+  return rc::gen::exec([s] { return *rc::gen::element(1.0, -1.0) * *rc::gen::inRange(1, 5) * *tiny(12, 24) * s; });
+}
+
 Aabb bounds_of(const Mesh& m) {
   Aabb b{Vec3::Zero(), Vec3::Zero()};
   if (m.vertices.empty()) return b;
@@ -367,8 +406,9 @@ rc::Gen<Triangle> face_of(const Mesh& m) {
 }  // namespace
 
 rc::Gen<Mesh> closed_mesh() {
-  return rc::gen::weightedOneOf<Mesh>({{2, lattice_box()}, {2, lattice_octahedron()}, {3, lattice_voxels()},
-                                       {2, coarse_sphere()}, {2, coarse_torus()}});
+  const rc::Gen<Mesh> solids = rc::gen::weightedOneOf<Mesh>(
+      {{2, lattice_box()}, {2, lattice_octahedron()}, {3, lattice_voxels()}, {2, coarse_sphere()}, {2, coarse_torus()}});
+  return rc::gen::weightedOneOf<Mesh>({{9, solids}, {1, at_range_ends(solids)}});
 }
 
 rc::Gen<Mesh> exact_closed_mesh() {
@@ -376,10 +416,9 @@ rc::Gen<Mesh> exact_closed_mesh() {
 }
 
 rc::Gen<Mesh> any_mesh() {
-  return rc::gen::weightedOneOf<Mesh>({{4, rc::gen::exec([] { return *mesh(*scale()); })},
-                                       {3, closed_mesh()},
-                                       {2, flat_terrain()},
-                                       {1, pile()}});
+  const rc::Gen<Mesh> any = rc::gen::weightedOneOf<Mesh>(
+      {{4, rc::gen::exec([] { return *mesh(*scale()); })}, {3, closed_mesh()}, {2, flat_terrain()}, {1, pile()}, {1, needles()}});
+  return rc::gen::weightedOneOf<Mesh>({{9, any}, {1, at_range_ends(any)}});
 }
 
 rc::Gen<Mesh> exact_mesh() {
@@ -402,36 +441,49 @@ rc::Gen<Vec3> point_near(const Mesh& m, bool exact) {
       p[i] = b.min[i] - margin[i] + (b.max[i] - b.min[i] + 2 * margin[i]) * *rc::gen::inRange(0, 1 << 20) / double(1 << 20);
     return p;
   });
-  // A point of a face moved off it by a tiny multiple of the mesh's scale.
+  // A point of a face (often on an edge or a vertex) moved off it along its normal by a
+  // decisive hair. Points exactly on the surface belong to the exact families.
   const rc::Gen<Vec3> off_face = rc::gen::exec([m, s] {
     const Triangle t = *face_of(m);
     const Vec3 n = t.normal() == Vec3::Zero() ? Vec3(Vec3::UnitZ()) : Vec3(t.normal().normalized());
-    return Vec3(*point_in_triangle(t) + *integer(4) * *tiny(12, 45) * s * n);
+    return Vec3(*point_in_triangle(t) + *hair(s) * n);
   });
-  return rc::gen::weightedOneOf<Vec3>({{2, on_face}, {1, vertex}, {2, lattice}, {4, anywhere}, {2, off_face}});
+  // A vertex or a lattice point (often on faces, edges and their planes) moved by hairs of
+  // 1, 2 and 4 units with any signs: never along a lattice face's plane (axis or (1, 1, 1)
+  // normals: +-1 +-2 +-4 is never 0).
+  const auto nudged = [s](const rc::Gen<Vec3>& near) {
+    return rc::gen::exec([near, s] {
+      const double h = *hair(s);
+      return Vec3(*near + h * Vec3(*rc::gen::element(1, -1), *rc::gen::element(2, -2), *rc::gen::element(4, -4)));
+    });
+  };
+  return rc::gen::weightedOneOf<Vec3>({{1, nudged(vertex)}, {2, nudged(lattice)}, {4, anywhere}, {4, off_face}});
 }
 
 rc::Gen<Segment> segment_near(const Mesh& m) {
   if (m.size() == 0) return rc::gen::exec([] { return Segment{*point(1.0), *point(1.0)}; });
   const double s = size_of(m), unit = unit_of(m);
-  // Through a point of a face: from any side, at any length, sometimes aimed at a vertex
-  // of that face so that it runs along or across the face.
+  // Through a point of a face, pulled off its edges toward the centroid by 2^-1 to 2^-12
+  // of the way (near an edge, not on it): from any side, at any length, sometimes aimed
+  // at a vertex of that face a step off its plane, so that it runs nearly along the face.
   const rc::Gen<Segment> through = rc::gen::exec([m, unit] {
     const Triangle t = *face_of(m);
-    const Vec3 x = *point_in_triangle(t);
+    const Vec3 centroid = (t.v0 + t.v1 + t.v2) / 3;
+    const Vec3 p = *point_in_triangle(t);
+    const Vec3 x = p + *tiny(1, 12) * (centroid - p);
     Vec3 d = *direction(unit);
-    if (*rc::gen::inRange(0, 4) == 0) d = t[*rc::gen::inRange(0, 3)] - x + *integer(2) * unit * t.normal().cwiseSign();
+    if (*rc::gen::inRange(0, 4) == 0) d = t[*rc::gen::inRange(0, 3)] - x + *rc::gen::element(1, -1, 2, -2) * unit * t.normal().cwiseSign();
     if (d == Vec3::Zero()) d = unit * Vec3::UnitX();
     const int k = *rc::gen::inRange(1, 17);
     return Segment{x + d, x - (k / 8.0) * d};
   });
   const rc::Gen<Segment> between = rc::gen::exec([m] { return Segment{*point_near(m, false), *point_near(m, false)}; });
-  // Short segments a tiny distance off a face, along it or ending just before it.
+  // Short segments a decisive hair off a face, along it or ending just before it.
   const rc::Gen<Segment> grazing = rc::gen::exec([m, s, unit] {
     const Triangle t = *face_of(m);
     const Vec3 x = *point_in_triangle(t);
     const Vec3 n = t.normal() == Vec3::Zero() ? Vec3(Vec3::UnitZ()) : Vec3(t.normal().normalized());
-    const double h = *integer(4) * *tiny(12, 45) * s;
+    const double h = std::abs(*hair(s));
     const Vec3 d = *direction(unit / 2);
     return *rc::gen::element(Segment{x + n * h, x + n * h + d}, Segment{x + n * (h + unit), x + n * h});
   });
@@ -496,6 +548,26 @@ rc::Gen<std::vector<Sphere>> touching_chain(double s) {
   });
 }
 
+// The families above make many pairs touch exactly: the robustness step's input. Here
+// each is moved a decisive hair apart or together: a radius changes by 2^-20 S (about
+// 1000 tol) until no pair is within 64 tol of touching. Near-touching stays, ambiguity
+// goes.
+void make_decisive(std::vector<Sphere>& spheres) {
+  double size = 1e-300;
+  for (const Sphere& sp : spheres) size = std::max({size, sp.center.cwiseAbs().maxCoeff(), sp.radius});
+  const double band = 64e-9 * size, step = std::ldexp(size, -20);
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const bool shrink = i % 2 == 1 && spheres[i].radius >= 16 * step;  // apart, or together
+    for (int attempt = 0; attempt < 16; ++attempt) {
+      bool close = false;
+      for (std::size_t j = 0; j < i && !close; ++j)
+        close = std::abs((spheres[i].center - spheres[j].center).norm() - (spheres[i].radius + spheres[j].radius)) <= band;
+      if (!close) break;
+      spheres[i].radius += shrink ? -step : step;
+    }
+  }
+}
+
 }  // namespace
 
 rc::Gen<std::vector<Sphere>> sphere_set() {
@@ -543,6 +615,13 @@ rc::Gen<std::vector<Sphere>> sphere_set() {
       const Vec3 offset = *lattice_point(s * 1024, 64);
       for (Sphere& sp : out) sp.center += offset;
     }
+    if (*rc::gen::inRange(0, 10) == 0) {  // at an end of the domain, S near 1e50 or 1e-50
+      double size = 1e-300;
+      for (const Sphere& sp : out) size = std::max({size, sp.center.cwiseAbs().maxCoeff(), sp.radius});
+      const double factor = to_range_end(size, *rc::gen::arbitrary<bool>());
+      for (Sphere& sp : out) sp = {sp.center * factor, sp.radius * factor};
+    }
+    make_decisive(out);
     return out;
   });
 }

@@ -18,7 +18,16 @@
 // the reference: you write the trees, their traversal and the broad phase, not the
 // primitive. Its rules are this lab's rules for a hit: the triangle is closed (edges and
 // vertices count), but a segment lying in the triangle's plane, a zero-length segment
-// and a zero-area triangle never hit.
+// and a zero-area triangle never hit. Mind the difference with lab 02's contract, where
+// a coplanar segment hits where it meets the triangle and a zero-length one hits when its
+// point is on it: here neither does, and the checker and its exact oracle say the same.
+//
+// Input. Every coordinate and radius is finite, and S (below) lies between 1e-50 and
+// 1e50 (or the input is all zeros); triangles may be needles (a height down to 1e-8 of
+// the longest side) or have zero area. Within that domain every rule below holds. Each
+// query states its preconditions; the reference refuses input that breaks one with
+// std::invalid_argument naming the argument and the rule ("first_hit: segment.a must be
+// finite, got (nan, 0, 0)"). Your code is not graded on invalid input.
 //
 // Tolerances. S is the largest absolute coordinate of the input (mesh vertices, segment
 // ends, points, sphere centres and radii), and tol = 1e-9 S.
@@ -93,6 +102,7 @@ struct KdTree {
 };
 
 // A mesh without triangles gets a tree of one empty leaf (and bounds of zero size).
+// Preconditions: every vertex finite; every index of mesh.triangles names a vertex.
 KdTree build_kd_tree(const Mesh& mesh);
 
 // ---- Step 2 (L06S2): segment queries -------------------------------------------------------
@@ -109,15 +119,22 @@ KdTree build_kd_tree(const Mesh& mesh);
 //           t0   near     |     far    t1       near: the child on a's side of the plane
 //                       split                   (the side b - a leaves, when a is on it)
 //
-// visit the near child on [t0, min(t1, t_split)] and then, if t_split <= t1, the far
-// child on [max(t0, t_split), t1]. A segment parallel to the plane ((b - a)[axis] = 0)
-// stays in the near child: compute no t_split for it (0 / 0 is not a number).
+// visit the children by where the segment meets the plane:
+//  - parallel to it ((b - a)[axis] = 0): the near child only, on [t0, t1]; compute no
+//    t_split (0 / 0 is not a number);
+//  - t_split <= 0 (the plane is behind a, or a lies on it: the segment only moves away
+//    from it) or t_split > t1 (it crosses beyond this cell): the near child only;
+//  - t_split < t0 (it crossed before entering this cell): the far child only;
+//  - otherwise: the near child on [t0, t_split], then the far child on [t_split, t1].
 //
 // Tests. A query may call given::segment_triangle only on triangles listed in leaves
 // whose closed cell the segment meets, once per listing; first_hit and any_hit only in
 // leaves the segment enters no later than the hit they return (at t0 <= its t), or in all
 // of them when they return none. `tests` is how many calls the query made; the checker
 // counts the calls too, and the two must agree.
+//
+// Preconditions: the segment's ends are finite (a zero-length segment is valid and hits
+// nothing); the tree keeps step 1's rule (not checked: that would cost what the tree saves).
 
 struct KdHit {
   bool hit = false;                 // false: no triangle is hit (then only `tests` means anything)
@@ -197,6 +214,8 @@ struct BspTree {
   std::vector<Triangle> triangles;  // triangles[i] = mesh.triangle(i): the planes' triangles
 };
 
+// Preconditions: as build_kd_tree's. Classify: the point is finite; the tree comes from
+// build_bsp of a closed mesh wound outward (not checked).
 BspTree build_bsp(const Mesh& mesh);
 
 enum class Where { outside = -1, on = 0, inside = 1 };
@@ -208,7 +227,7 @@ Where classify(const BspTree& tree, const Vec3& point);
 // subtree on the far side of the plane from the eye first, then the node's own pieces,
 // then the subtree on the eye's side. Then no piece hides any part of a piece listed
 // before it. An eye exactly on a node's plane sees the plane edge on: that node's two
-// subtrees and pieces may come in any order.
+// subtrees and pieces may come in any order. Precondition: the eye is finite.
 std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye);
 
 // ---- Step 5 (L06S5): broad phase for many moving spheres ------------------------------------
@@ -217,7 +236,8 @@ std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye);
 // closed balls meet when |c_i - c_j| <= r_i + r_j: touching counts, so does a ball of zero
 // radius (a point) on another's surface. Find them without testing all n (n - 1) / 2
 // pairs: sort and sweep (the lecture's plane sweep), or a uniform grid. Nothing is kept
-// from one call to the next.
+// from one call to the next. Preconditions: every centre finite, every radius finite and
+// >= 0 (a NaN would break the sort, and pairs between finite balls would be lost).
 
 struct SpherePairs {
   std::vector<std::array<int, 2>> pairs;  // every {i, j}, i < j, whose balls meet, once, sorted

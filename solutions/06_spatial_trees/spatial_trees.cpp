@@ -10,7 +10,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace labkit::lab06 {
@@ -18,6 +21,38 @@ namespace labkit::lab06 {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// ---- Preconditions (the header's "Input") --------------------------------------------------
+// A NaN compares false with everything: a NaN end would make every slab test pass and
+// report a hit, and a NaN centre breaks the sort of the sweep, which then loses pairs
+// between finite spheres. So invalid input is refused, naming the argument and the rule.
+
+std::string text(double x) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.17g", x);
+  return buffer;
+}
+std::string text(const Vec3& v) { return "(" + text(v.x()) + ", " + text(v.y()) + ", " + text(v.z()) + ")"; }
+
+void require_finite(const char* query, const std::string& argument, const Vec3& v) {
+  if (!v.allFinite()) throw std::invalid_argument(std::string(query) + ": " + argument + " must be finite, got " + text(v));
+}
+
+void require_mesh(const char* query, const Mesh& mesh) {
+  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
+    require_finite(query, "mesh.vertices[" + std::to_string(i) + "]", mesh.vertices[i]);
+  for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
+    for (int k : mesh.triangles[i])
+      if (k < 0 || std::size_t(k) >= mesh.vertices.size())
+        throw std::invalid_argument(std::string(query) + ": mesh.triangles[" + std::to_string(i) +
+                                    "] must index mesh.vertices (0 to " + std::to_string(int(mesh.vertices.size()) - 1) +
+                                    "), got " + std::to_string(k));
+}
+
+void require_segment(const char* query, const Segment& s) {
+  require_finite(query, "segment.a", s.a);
+  require_finite(query, "segment.b", s.b);
+}
 
 // ---- k-d tree: build ------------------------------------------------------------------------
 
@@ -337,6 +372,7 @@ bool in_closed_triangle(const Triangle& t, const Vec3& x) {
 // KdBuilder). A cell becomes a leaf when no split is expected to be cheaper, when it
 // holds one triangle, or at depth 8 + 1.3 log2 n (n triangles).
 KdTree build_kd_tree(const Mesh& mesh) {
+  require_mesh("build_kd_tree", mesh);
   KdTree tree;
   tree.triangles.reserve(mesh.size());
   std::vector<Aabb> boxes;
@@ -364,6 +400,7 @@ KdTree build_kd_tree(const Mesh& mesh) {
 // ---- Step 2 ------------------------------------------------------------------------------------
 
 KdHit first_hit(const KdTree& tree, const Segment& segment) {
+  require_segment("first_hit", segment);
   KdHit best;
   int tests = 0;
   front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
@@ -382,6 +419,7 @@ KdHit first_hit(const KdTree& tree, const Segment& segment) {
 }
 
 KdHit any_hit(const KdTree& tree, const Segment& segment) {
+  require_segment("any_hit", segment);
   KdHit found;
   int tests = 0;
   front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
@@ -401,6 +439,7 @@ KdHit any_hit(const KdTree& tree, const Segment& segment) {
 }
 
 KdHits all_hits(const KdTree& tree, const Segment& segment) {
+  require_segment("all_hits", segment);
   KdHits out;
   front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
     for_each_listed(tree, leaf, [&](int i) {
@@ -427,6 +466,7 @@ KdHits all_hits(const KdTree& tree, const Segment& segment) {
 // every plane has all the other triangles behind it, and the tree is a chain as long as
 // the mesh.
 BspTree build_bsp(const Mesh& mesh) {
+  require_mesh("build_bsp", mesh);
   BspTree tree;
   std::vector<Work> all;
   for (std::size_t i = 0; i < mesh.size(); ++i) {
@@ -486,6 +526,7 @@ BspTree build_bsp(const Mesh& mesh) {
 // sides. Every descent ends where a child is missing, which says inside or outside; a
 // point that ends up both inside and outside is on the surface.
 Where classify(const BspTree& tree, const Vec3& point) {
+  require_finite("classify", "point", point);
   if (tree.nodes.empty()) return Where::outside;
   bool inside = false, outside = false;
   std::vector<int> pending{0};
@@ -529,6 +570,7 @@ Where classify(const BspTree& tree, const Vec3& point) {
 // The painter's order with a stack in place of recursion: to draw a node, draw the far
 // subtree, then the node's pieces, then the near subtree; pushed in reverse.
 std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) {
+  require_finite("back_to_front", "eye", eye);
   std::vector<int> order;
   order.reserve(tree.pieces.size());
   if (tree.nodes.empty()) return order;
@@ -568,6 +610,12 @@ std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) {
 //                 B0-------------B1    R meets B (B0 <= R1); B meets C (C0 <= B1);
 //                       C0---C1        A meets nothing; R does not reach C
 SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    require_finite("overlapping_pairs", "spheres[" + std::to_string(i) + "].center", spheres[i].center);
+    if (!(spheres[i].radius >= 0) || !std::isfinite(spheres[i].radius))
+      throw std::invalid_argument("overlapping_pairs: spheres[" + std::to_string(i) +
+                                  "].radius must be finite and >= 0, got " + text(spheres[i].radius));
+  }
   SpherePairs out;
   if (spheres.empty()) return out;
   // Sweep along the axis where the centres spread the most: the fewer intervals overlap
