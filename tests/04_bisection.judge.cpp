@@ -361,7 +361,9 @@ Outcome overlap_at(const MovingPairCase& in, bool got_t0, bool got_t1, Rules rul
       if (in.b.is_box) why += ". Is the box posed (centre moved, axes turned) and the sphere's centre clamped in the box's own axes?";
     } else {
       why = "the posed bodies are apart at t = " + fmt(t) + ", by " + fmt(gap) + ": they are clear (only a gap of 0 counts as touching)";
-      if (gap < 1e-6 * sc.scale_at(t)) why += "; a fuzzy epsilon in the comparison turns this near miss into a contact";
+      // A near miss, relative to the bodies or in absolute units: where a fixed epsilon bites.
+      if (gap < 1e-6 * sc.scale_at(t) || gap < 1e-3)
+        why += "; a fixed epsilon in the comparison (any tolerance in absolute units) turns this near miss into a contact";
     }
     return fail(s.overlap ? yes : no, got ? yes : no, why);
   }

@@ -9,7 +9,7 @@ labkit_mutant(04 bisection NAME clamp_in_world_axes STEP 1 SAYS "own axes"
   FIND "const double excess = std::abs(d.dot(box.axes.col(k))) - box.half_extents[k];"
   REPLACE "const double excess = std::abs(d[k]) - box.half_extents[k];")
 
-labkit_mutant(04 bisection NAME axes_not_turned STEP 1 SAYS "axes" "turned"
+labkit_mutant(04 bisection NAME axes_not_turned STEP 1 SAYS "axes" "rotation"
   FIND "return {pose * box.center, pose.linear() * box.axes, box.half_extents};"
   REPLACE "return {pose * box.center, box.axes, box.half_extents};")
 

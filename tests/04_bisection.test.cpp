@@ -152,10 +152,10 @@ auto both(Run run, Judge judge_it, Expectation expectation) {
   };
 }
 
-Outcome judge_bisect(const MovingPairCase& in, const TimeOfImpact& got) { return judge::bisect(in, got); }
 Outcome judge_sampled(const SampledPair& in, const TimeOfImpact& got) { return judge::sample_then_bisect(in, got); }
 Outcome judge_advance(const AdvancedPair& in, const TimeOfImpact& got) { return judge::advance(in, got); }
-// The robustness step's exact input: the header's rules, with nothing in doubt.
+// Exact input (the robustness step's, and step 2's worked examples): the header's rules,
+// with nothing in doubt.
 Outcome exact_bisect(const MovingPairCase& in, const TimeOfImpact& got) { return judge::bisect(in, got, Rules::exact); }
 Outcome exact_sampled(const SampledPair& in, const TimeOfImpact& got) {
   return judge::sample_then_bisect(in, got, Rules::exact);
@@ -177,9 +177,10 @@ TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
     e.near("box centre", b.center, Vec3(5, 1, 0), 1e-12);
     const bool turned = (Vec3(b.axes.col(0)) - Vec3(0, 1, 0)).norm() <= 1e-12 && (Vec3(b.axes.col(1)) - Vec3(-1, 0, 0)).norm() <= 1e-12;
     e.that("box axes 0, 1", turned, fmt(Vec3(b.axes.col(0))) + ", " + fmt(Vec3(b.axes.col(1))), "(0, 1, 0), (-1, 0, 0)",
-           "a placed box's axes are turned by the pose's rotation, pose.linear() * axes (the quarter turn takes x to y)");
+           "the quarter turn takes axis x to y");
     e.near("box half extents", b.half_extents, Vec3(2, 1, 1), 0);
-    return because(e, "a pose moves a centre by the whole pose, turns a box's axes by its rotation, keeps sizes");
+    return because(e, "a pose moves a centre by the whole pose and turns a box's axes by its rotation, "
+                      "pose.linear() * axes; sizes stay");
   });
 
   const std::string closed = "sets are closed, touching counts: overlap <=> |c_a - c_b|^2 <= (r_a + r_b)^2";
@@ -259,7 +260,7 @@ TEST_CASE("L04S1 overlap at time t: random cases", "[lab04][step1][oracle]") {
 TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][step2]") {
   // The lecture's iterations: 0.5 (overlap), 0.25, 0.375 (clear), 0.4375 (overlap), 0.40625 (clear).
   check::example("bisect", "the lecture's five iterations", ball_and_wall(0, 1, 1.0 / 32),
-                 both<MovingPairCase>(run_bisect, judge_bisect, expect_hit(0.40625, 0.4375, 0, 5)));
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.40625, 0.4375, 0, 5)));
   // Any callable is a motion: this one writes down every time it is asked for a pose.
   // After the two ends, the times asked are the lecture's midpoints, in its order.
   check::example("bisect", "the lecture's midpoints, seen by a recording motion", ball_and_wall(0, 1, 1.0 / 32),
@@ -282,11 +283,11 @@ TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][st
                    return e.outcome();
                  });
   check::example("bisect", "a coarse tolerance: two iterations", ball_and_wall(0, 1, 0.25),
-                 both<MovingPairCase>(run_bisect, judge_bisect, expect_hit(0.25, 0.5, 0, 2)));
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.25, 0.5, 0, 2)));
   check::example("bisect", "already overlapping at t0", ball_and_wall(0.5, 1, 1.0 / 32),
-                 both<MovingPairCase>(run_bisect, judge_bisect, expect_start(0.5)));
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_start(0.5)));
   check::example("bisect", "still clear at t1: no hit", ball_and_wall(0, 0.25, 1.0 / 32),
-                 both<MovingPairCase>(run_bisect, judge_bisect, expect_no_hit(0.25, 0)));
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_no_hit(0.25, 0)));
 }
 
 TEST_CASE("L04S2 bisection to the last clear time: random cases", "[lab04][step2][oracle]") {

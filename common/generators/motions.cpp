@@ -434,7 +434,8 @@ rc::Gen<PointBox> exact_point_box() {
 }
 
 // Sizes from 2^-20 to 2^23, steps of 2^-k: the ratio speed * step / size is a whole
-// number (exactly: on the rule's boundary), a whole number near the cap 2^20, anything,
+// number (exact input: on the rule's boundary; otherwise 2^-20 to either side of it, just
+// outside the band where rounding decides), a whole number near the cap 2^20, anything,
 // or there is no size at all.
 rc::Gen<SubstepRule> substep_rule(bool exact) {
   return rc::gen::exec([exact] {
@@ -442,6 +443,8 @@ rc::Gen<SubstepRule> substep_rule(bool exact) {
     const double step = std::ldexp(1.0, -*pick(0, 8));
     const double fraction = exact ? 0.0 : *pick(1, 1 << 20) / double(1 << 20);
     const int kind = *rc::gen::weightedElement<int>({{exact ? 4 : 1, 0}, {1, 1}, {1, 2}, {exact ? 0 : 4, 3}});
+    if (kind == 0 && !exact)
+      return SubstepRule{size / step * (*pick(1, 2000) + *rc::gen::element(1.0, -1.0) * std::ldexp(1.0, -20)), step, size};
     if (kind == 0) return SubstepRule{size / step * *pick(0, 2000), step, size};
     if (kind == 1) return SubstepRule{size / step * (*pick((1 << 20) - 2, (1 << 20) + 2) + fraction), step, size};
     if (kind == 2) return SubstepRule{*pick(0, 1000) * 1.0, step, 0.0};
