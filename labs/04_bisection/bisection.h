@@ -38,8 +38,9 @@
 // axes are orthonormal up to rounding; spin axes are any non-zero vector. The tests draw
 // scales from 2^-300 to 2^300 and tolerances down to 2^-30 (t1 - t0).
 //
-// Preconditions (each search checks them and throws std::invalid_argument naming the
-// argument and the rule; nothing else is ever thrown or hung on):
+// Preconditions. Outside them the reference throws std::invalid_argument naming the
+// function, the argument and the rule ("bisect: tolerance must be finite and > 0, got
+// 0"); it never hangs. No step grades invalid input: your code may check or not.
 //  - t0 and t1 finite, t0 <= t1;
 //  - tolerance finite, > 0 and at least 2^-50 max(|t0|, |t1|): a tolerance of 0, or one
 //    below the spacing of doubles near t, would halve forever, since a bracket of two
