@@ -548,6 +548,7 @@ TEST_CASE("L04 preconditions: invalid input is rejected, naming the argument", "
     rejects(search + ": t0 NaN", [&] { run(nan, 1, 0.25); }, search + ": t0");
     rejects(search + ": t1 infinite", [&] { run(0, inf, 0.25); }, search + ": t1");
     rejects(search + ": t0 > t1", [&] { run(1, 0, 0.25); }, search + ": t0 <= t1");
+    rejects(search + ": t1 - t0 overflows", [&] { run(-1e308, 1e308, 1e300); }, search + ": t1 - t0");
   }
   rejects("sample_then_bisect: 0 sub-steps", [&] { sample_then_bisect(good, 0, 1, 0, 0.25); }, "sample_then_bisect: substeps");
   rejects("sample_then_bisect: -3 sub-steps", [&] { sample_then_bisect(good, 0, 1, -3, 0.25); }, "sample_then_bisect: substeps");

@@ -41,7 +41,7 @@
 // Preconditions. Outside them the reference throws std::invalid_argument naming the
 // function, the argument and the rule ("bisect: tolerance must be finite and > 0, got
 // 0"); it never hangs. No step grades invalid input: your code may check or not.
-//  - t0 and t1 finite, t0 <= t1;
+//  - t0 and t1 finite, t0 <= t1, and t1 - t0 finite;
 //  - tolerance finite, > 0 and at least 2^-50 max(|t0|, |t1|): a tolerance of 0, or one
 //    below the spacing of doubles near t, would halve forever, since a bracket of two
 //    neighbouring doubles has no midpoint between them;

@@ -69,6 +69,7 @@ void require_times(const char* where, double t0, double t1, double tolerance) {
   if (!std::isfinite(t0)) reject(where, "t0 must be finite", str(t0));
   if (!std::isfinite(t1)) reject(where, "t1 must be finite", str(t1));
   if (!(t0 <= t1)) reject(where, "t0 <= t1 must hold", "t0 = " + str(t0) + ", t1 = " + str(t1));
+  if (!std::isfinite(t1 - t0)) reject(where, "t1 - t0 must be finite", "t0 = " + str(t0) + ", t1 = " + str(t1));
   if (!(std::isfinite(tolerance) && tolerance > 0))
     reject(where, "tolerance must be finite and > 0", str(tolerance));
   const double floor = std::ldexp(std::max(std::abs(t0), std::abs(t1)), -50);
