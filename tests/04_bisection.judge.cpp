@@ -176,7 +176,8 @@ Check start_rule(const Scene& sc, const TimeOfImpact& got, double t0, bool& doub
   }
   if (s.overlap && !s.doubt)
     return fail("overlapping_at_start (the bodies overlap at t0 = " + fmt(t0) + ")", summary(got),
-                "the bodies already overlap at t0: there is no last clear time to search for");
+                "the bodies already overlap at t0 (signed gap " + fmt(sc.signed_gap(t0)) +
+                    "): there is no last clear time to search for; report overlapping_at_start, hit, t = t_contact = t0");
   return std::nullopt;
 }
 
@@ -184,25 +185,33 @@ Check start_rule(const Scene& sc, const TimeOfImpact& got, double t0, bool& doub
 // than the tolerance, clear at t and overlapping at t_contact, exactly.
 Check certify(const Scene& sc, const TimeOfImpact& got, double lo, double hi, double tolerance, bool& doubt) {
   const std::string bracket = "t = " + fmt(got.t) + ", t_contact = " + fmt(got.t_contact);
-  if (!(got.t >= lo - ulps(lo) && got.t_contact <= hi + ulps(hi) && got.t < got.t_contact))
-    return fail("lo <= t < t_contact <= hi with [lo, hi] = [" + fmt(lo) + ", " + fmt(hi) + "]", bracket,
-                "the bracket must lie in the interval searched, t before t_contact");
+  const std::string within = "lo <= t < t_contact <= hi with [lo, hi] = [" + fmt(lo) + ", " + fmt(hi) + "]";
+  if (!(got.t < got.t_contact))
+    return fail(within, bracket,
+                "t is the last clear time and t_contact the first overlapping time found, so t < t_contact" +
+                    std::string(got.t == got.t_contact ? ": your t is the overlapping end; return t = lo, not hi" : ""));
+  if (!(got.t >= lo - ulps(lo) && got.t_contact <= hi + ulps(hi)))
+    return fail(within, bracket, "the bracket must lie in the interval the step searches");
   if (!(got.t_contact - got.t <= tolerance + ulps(got.t_contact) + ulps(got.t)))
     return fail("t_contact - t <= tolerance = " + fmt(tolerance), bracket,
-                "the bracket is " + fmt(got.t_contact - got.t) + " long: halve it until it is within the tolerance");
+                "the bracket is " + fmt(got.t_contact - got.t) +
+                    " long, more than the tolerance: finish with bisection, halving while hi - lo > tolerance");
   const Status clear = sc.at(got.t);
   if (clear.overlap) {
     if (!clear.doubt)
       return fail("clear at t (the last clear time)", bracket,
-                  "the bodies overlap at your t = " + fmt(got.t) + " (signed gap " + fmt(sc.signed_gap(got.t)) + ")");
+                  "t must be the last clear time, but the bodies overlap at your t = " + fmt(got.t) + " (signed gap " +
+                      fmt(sc.signed_gap(got.t)) + "): bisection keeps the half whose ends differ, clear at lo and "
+                      "overlapping at hi, and returns t = lo");
     doubt = true;
   }
   const Status contact = sc.at(got.t_contact);
   if (!contact.overlap) {
     if (!contact.doubt)
       return fail("overlapping at t_contact", bracket,
-                  "the bodies are clear at your t_contact = " + fmt(got.t_contact) + " (distance " +
-                      fmt(sc.distance(got.t_contact)) + ")");
+                  "t_contact must be a time of overlap, but the bodies are clear at your t_contact = " + fmt(got.t_contact) +
+                      " (distance " + fmt(sc.distance(got.t_contact)) +
+                      "): bisection keeps the half whose ends differ, clear at lo and overlapping at hi");
     doubt = true;
   }
   return std::nullopt;
@@ -212,16 +221,20 @@ Check certify(const Scene& sc, const TimeOfImpact& got, double lo, double hi, do
 // Within rounding of the boundary (the last bracket's length equal to the tolerance, up
 // to how differently two programs may round their midpoints) one more or one fewer
 // passes; never on exact input.
-Check halvings(const TimeOfImpact& got, double width, double lo, double hi, double tolerance, Rules rules) {
+Check halvings(const TimeOfImpact& got, double width, double lo, double hi, double tolerance, Rules rules,
+              const std::string& cause = "") {
   int k = 0;
   while (std::ldexp(width, -k) > tolerance && k < 4096) ++k;
   const double band = 64 * DBL_EPSILON * std::max(std::abs(lo), std::abs(hi)) + 1e-12 * tolerance;
   const bool borderline = rules == Rules::random && (std::abs(std::ldexp(width, -k) - tolerance) <= band ||
                                                      (k > 0 && std::abs(std::ldexp(width, 1 - k) - tolerance) <= band));
   if (got.iterations == k || (borderline && std::abs(got.iterations - k) <= 1)) return std::nullopt;
-  return fail("iterations = " + std::to_string(k), "iterations = " + std::to_string(got.iterations),
-              "a bracket " + fmt(width) + " long takes " + std::to_string(k) + " halvings to reach the tolerance " +
-                  fmt(tolerance) + " (halve while hi - lo > tolerance)");
+  const std::string rule = "halve while hi - lo > tolerance: a bracket " + fmt(width) + " long takes " +
+                           std::to_string(k) + " halvings to reach the tolerance " + fmt(tolerance);
+  if (got.iterations == k + 1 && std::ldexp(width, -k) == tolerance)
+    return fail("iterations = " + std::to_string(k), "iterations = " + std::to_string(got.iterations),
+                "one halving too many: " + rule + ", and a bracket exactly the tolerance long is done");
+  return fail("iterations = " + std::to_string(k), "iterations = " + std::to_string(got.iterations), rule + cause);
 }
 
 Outcome settle(bool doubt) { return doubt ? ambiguous() : pass(); }
@@ -260,7 +273,8 @@ Outcome judge_sampled(const Scene& sc, const SearchTimes& T, int n, const Sample
     if (s.first_overlap > 0)
       return fail("a hit: sample " + std::to_string(s.first_overlap) + " at t = " + fmt(s.times[std::size_t(s.first_overlap)]) +
                       " overlaps",
-                  summary(got), "point sampling must stop at the first sample that overlaps");
+                  summary(got), "point sampling tests every sample t_1, ..., t_n in order and stops at the first that "
+                                "overlaps: sample " + std::to_string(s.first_overlap) + " does");
     if (got.t != T.t1 || got.steps != n)
       return fail("no hit with t = t1 = " + fmt(T.t1) + " and steps = " + std::to_string(n), summary(got),
                   "with no overlapping sample, t = t1 and every sample counts as a step");
@@ -279,7 +293,13 @@ Outcome judge_sampled(const Scene& sc, const SearchTimes& T, int n, const Sample
   doubt = doubt || at_k.doubt;
   const double lo = s.times[std::size_t(k - 1)], hi = s.times[std::size_t(k)];
   if (const Check o = certify(sc, got, lo, hi, T.tolerance, doubt)) return *o;
-  if (const Check o = halvings(got, hi - lo, lo, hi, T.tolerance, rules)) return *o;
+  int from_t0 = 0;  // the halvings of [t0, t_k]: what bisecting from the start costs
+  while (std::ldexp(hi - T.t0, -from_t0) > T.tolerance && from_t0 < 4096) ++from_t0;
+  const std::string cause = k > 1 && got.iterations == from_t0
+                                ? " (you bisected [t0, t_" + std::to_string(k) + "]: bisect only the first overlapping "
+                                  "sub-step [t_" + std::to_string(k - 1) + ", t_" + std::to_string(k) + "])"
+                                : "";
+  if (const Check o = halvings(got, hi - lo, lo, hi, T.tolerance, rules, cause)) return *o;
   return settle(doubt);
 }
 
@@ -333,10 +353,19 @@ Outcome overlap_at(const MovingPairCase& in, bool got_t0, bool got_t1, Rules rul
       continue;
     }
     const std::string yes = "overlap at t = " + fmt(t), no = "clear at t = " + fmt(t);
-    return fail(s.overlap ? yes : no, got ? yes : no,
-                rules == Rules::exact ? "on this exact input the bodies " + std::string(s.overlap ? "touch or overlap" : "are apart") +
-                                            " (signed gap " + fmt(sc.signed_gap(t)) + "; touching counts)"
-                                      : "the exact answer is stable here: the signed gap is " + fmt(sc.signed_gap(t)));
+    const double gap = sc.signed_gap(t);
+    std::string why;
+    if (s.overlap) {
+      why = "the posed bodies have a point in common at t = " + fmt(t) + " (signed gap " + fmt(gap) +
+            "; sets are closed, touching counts): they overlap";
+      if (in.b.is_box) why += ". Is the box posed (centre moved, axes turned) and the sphere's centre clamped in the box's own axes?";
+    } else {
+      why = "the posed bodies are apart at t = " + fmt(t) + ", by " + fmt(gap) + ": they are clear (only a gap of 0 counts as touching)";
+      // A near miss, relative to the bodies or in absolute units: where a fixed epsilon bites.
+      if (gap < 1e-6 * sc.scale_at(t) || gap < 1e-3)
+        why += "; a fixed epsilon in the comparison (any tolerance in absolute units) turns this near miss into a contact";
+    }
+    return fail(s.overlap ? yes : no, got ? yes : no, why);
   }
   return settle(doubt);
 }
@@ -373,11 +402,14 @@ Outcome substeps_for(const SubstepRule& in, int got, Rules rules) {
   if (rules == Rules::exact) r.borderline = false;
   if (got == r.n) return r.borderline ? ambiguous() : pass();
   if (r.borderline && std::abs(got - r.n) <= 1) return ambiguous();
-  const std::string why =
+  const double ratio = in.max_speed * in.step / in.smallest_size;
+  std::string why =
       r.n == 0 ? (in.smallest_size > 0 ? "no n up to kMaxSubsteps = 2^20 makes speed * step / n < size: return 0"
                                        : "a size of zero can always be missed: return 0")
-               : "n = " + std::to_string(r.n) + " is the smallest with speed * step / n < size; speed * step / size = " +
-                     fmt(in.max_speed * in.step / in.smallest_size);
+               : "the rule is strict, speed * step / n < size: n = " + std::to_string(r.n) +
+                     " is the smallest n, since speed * step / size = " + fmt(ratio);
+  if (r.n > 0 && got == r.n - 1 && !r.borderline && std::nearbyint(ratio) == got)
+    why += "; with n = " + std::to_string(got) + " a sub-step moves exactly the size, which is not smaller (floor + 1, not ceil)";
   return fail(std::to_string(r.n), std::to_string(got), why);
 }
 
@@ -387,8 +419,21 @@ Outcome sample_then_bisect(const SampledPair& in, const TimeOfImpact& got, Rules
   return judge_sampled(sc, in.pair.times, n, walk(sc, in.pair.times, n), got, rules);
 }
 
-Outcome tunnelling(const MovingPairCase& in, int got_substeps, const TimeOfImpact& frame_only,
+Outcome closing_speed(const MovingPairCase& in, double got) {
+  const double va = body_speed(in.a, in.times.t0, in.times.t1), vb = body_speed(in.b, in.times.t0, in.times.t1);
+  const double exact = va + vb, tol = 1e-9 * exact;
+  if (std::abs(got - exact) <= tol) return pass();
+  std::string why = "two moving bodies close on each other at most at their relative speed, bounded by the sum of "
+                    "their max_speeds (each over its reach): " + fmt(va) + " + " + fmt(vb) + " = " + fmt(exact);
+  if (std::abs(got - std::max(va, vb)) <= tol) why += "; yours is the faster body's speed alone";
+  return fail(fmt(exact), fmt(got), why);
+}
+
+Outcome tunnelling(const MovingPairCase& in, double got_speed, int got_substeps, const TimeOfImpact& frame_only,
                    const TimeOfImpact& substepped) {
+  const Outcome bound = closing_speed(in, got_speed);
+  if (bound.verdict == Outcome::Verdict::fail)
+    return fail("closing_speed = " + bound.expected, bound.got, "the sub-step rule's speed: " + bound.why);
   const double speed = lab04::closing_speed_of(in), span = in.times.t1 - in.times.t0, size = smallest_size_of(in);
   const Outcome count = substeps_for(SubstepRule{speed, span, size}, got_substeps);
   if (count.verdict == Outcome::Verdict::fail)
@@ -421,9 +466,15 @@ Outcome distance_at(const MovingPairCase& in, double got_t0, double got_t1) {
   const Scene sc(in, Rules::random);
   for (const auto& [t, got] : {std::pair<double, double>{in.times.t0, got_t0}, {in.times.t1, got_t1}}) {
     const double exact = sc.distance(t), tol = kRelative * sc.scale_at(t);
-    if (!(std::abs(got - exact) <= tol))
-      return fail(fmt(exact) + " at t = " + fmt(t), fmt(got),
-                  "off by " + fmt(std::abs(got - exact)) + " (tolerance 1e-9 S = " + fmt(tol) + "; 0 when the bodies overlap)");
+    if (std::abs(got - exact) <= tol) continue;
+    const double radii = in.a.sphere.radius + (in.b.is_box ? 0.0 : in.b.sphere.radius);
+    std::string why = "the distance between the closed bodies is the gap between their surfaces, " + fmt(exact) +
+                      " at t = " + fmt(t) + " (0 when they overlap); yours is off by " + fmt(std::abs(got - exact)) +
+                      " (tolerance 1e-9 S = " + fmt(tol) + ")";
+    if (radii > 0 && std::abs(got - exact - radii) <= tol + 1e-9 * radii)
+      why += ": that is the radii " + fmt(radii) + ", as if measured between centres";
+    else if (exact == 0 && got < 0) why += ": overlapping bodies are at distance 0, never negative";
+    return fail(fmt(exact) + " at t = " + fmt(t), fmt(got), why);
   }
   return pass();
 }

@@ -40,10 +40,12 @@ Outcome overlap_at(const MovingPairCase& in, bool got_t0, bool got_t1, Rules rul
 Outcome bisect(const MovingPairCase& in, const TimeOfImpact& got, Rules rules = Rules::random);
 Outcome substeps_for(const SubstepRule& in, int got, Rules rules = Rules::random);
 Outcome sample_then_bisect(const SampledPair& in, const TimeOfImpact& got, Rules rules = Rules::random);
-// The tunnelling demonstration: the sub-step count for the pair's speed and size, point
-// sampling at the frame's ends only (which must miss) and with that many sub-steps
-// (which must find the contact).
-Outcome tunnelling(const MovingPairCase& in, int got_substeps, const TimeOfImpact& frame_only,
+// closing_speed of the pair on [t0, t1]: max_speed of a plus max_speed of b.
+Outcome closing_speed(const MovingPairCase& in, double got);
+// The tunnelling demonstration: the pair's closing speed, the sub-step count for it and
+// the pair's size, point sampling at the frame's ends only (which must miss) and with
+// that many sub-steps (which must find the contact).
+Outcome tunnelling(const MovingPairCase& in, double got_speed, int got_substeps, const TimeOfImpact& frame_only,
                    const TimeOfImpact& substepped);
 // The distance at t0 and at t1 of the case's search.
 Outcome distance_at(const MovingPairCase& in, double got_t0, double got_t1);

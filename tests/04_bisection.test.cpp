@@ -5,7 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 using namespace labkit;
@@ -57,8 +60,16 @@ RigidTransform quarter_turn_then(const Vec3& shift) {
   return m;
 }
 
+// A worked example's numbers, with the rule that yields them as the why of a mismatch.
+Outcome because(const Expect& e, const std::string& rule) {
+  Outcome o = e.outcome();
+  if (o.verdict == Outcome::Verdict::fail && !rule.empty()) o.why = rule + " (" + o.why + ")";
+  return o;
+}
+std::string yes_no(bool b) { return b ? "true" : "false"; }
+
 // Expectations of a search's answer.
-auto expect_hit(double t, double t_contact, int steps, int iterations) {
+auto expect_hit(double t, double t_contact, int steps, int iterations, const std::string& rule = "") {
   return [=](const TimeOfImpact& got) {
     Expect e;
     e.equal("hit", got.hit, true);
@@ -67,7 +78,7 @@ auto expect_hit(double t, double t_contact, int steps, int iterations) {
     e.near("t_contact", got.t_contact, t_contact, 1e-12);
     e.equal("steps", got.steps, steps);
     e.equal("iterations", got.iterations, iterations);
-    return e.outcome();
+    return because(e, rule);
   };
 }
 auto expect_no_hit(double t1, int steps) {
@@ -90,32 +101,61 @@ auto expect_start(double t0) {
   };
 }
 
-// The searches on a case, by query name.
-TimeOfImpact run_bisect(const MovingPairCase& in) {
-  return bisect(pair_of(in), in.times.t0, in.times.t1, in.times.tolerance);
+// A search that did not finish: say the header's bound on its loop, with the numbers.
+template <class Search>
+TimeOfImpact bounded(Search search, const std::string& bound) {
+  try {
+    return search();
+  } catch (const remote::Failed& e) {
+    if (e.got != remote::kNoAnswer) throw;
+    throw remote::Failed(e.got, std::string(e.what()) + ". " + bound);
+  }
 }
-TimeOfImpact run_sampled(const SampledPair& in) {
-  return sample_then_bisect(pair_of(in.pair), in.pair.times.t0, in.pair.times.t1, in.substeps, in.pair.times.tolerance);
-}
-TimeOfImpact run_advance(const AdvancedPair& in) {
-  return advance(pair_of(in.pair), in.pair.times.t0, in.pair.times.t1, judge::closing_speed_of(in),
-                 in.pair.times.tolerance);
+std::string halving_bound(const SearchTimes& T) {
+  const double rounds = std::ceil(std::log2(std::max(1.0, (T.t1 - T.t0) / T.tolerance))) + 2;
+  return "Bisection halves while hi - lo > tolerance, and each halving halves the bracket: at most log2((t1 - t0) / "
+         "tolerance) + 2 = " + fmt(rounds) + " rounds here";
 }
 
-// Both the hand-worked numbers and the exact judge.
+// The searches on a case, by query name.
+TimeOfImpact run_bisect(const MovingPairCase& in) {
+  return bounded([&] { return bisect(pair_of(in), in.times.t0, in.times.t1, in.times.tolerance); }, halving_bound(in.times));
+}
+TimeOfImpact run_sampled(const SampledPair& in) {
+  const SearchTimes& T = in.pair.times;
+  return bounded([&] { return sample_then_bisect(pair_of(in.pair), T.t0, T.t1, in.substeps, T.tolerance); },
+                 "Point sampling tests n = " + std::to_string(in.substeps) + " samples, then bisects one sub-step. " +
+                     halving_bound(T));
+}
+TimeOfImpact run_advance(const AdvancedPair& in) {
+  const SearchTimes& T = in.pair.times;
+  return bounded([&] { return advance(pair_of(in.pair), T.t0, T.t1, judge::closing_speed_of(in), T.tolerance); },
+                 "Conservative advancement moves at least one tolerance per step (next = t + max(d / v, tolerance)): "
+                 "at most (t1 - t0) / tolerance + 1 = " + fmt(std::ceil((T.t1 - T.t0) / T.tolerance) + 1) +
+                     " steps here, then one bisection. " + halving_bound(T));
+}
+// The pair's closing speed, by the code under test.
+double run_closing_speed(const MovingPairCase& in) {
+  return closing_speed(in.a.sphere, motion_of(in.a.motion), shape_of(in.b), motion_of(in.b.motion), in.times.t0,
+                       in.times.t1);
+}
+
+// Both the exact judge (first: it says which rule broke) and the hand-worked numbers.
 template <class Input, class Run, class Judge, class Expectation>
 auto both(Run run, Judge judge_it, Expectation expectation) {
   return [=](const Input& in) {
     const TimeOfImpact got = run(in);
-    const Outcome o = expectation(got);
-    return o.verdict == Outcome::Verdict::fail ? o : judge_it(in, got);
+    const Outcome o = judge_it(in, got);
+    if (o.verdict == Outcome::Verdict::fail) return o;
+    const Outcome e = expectation(got);
+    return e.verdict == Outcome::Verdict::fail ? e : o;
   };
 }
 
-Outcome judge_bisect(const MovingPairCase& in, const TimeOfImpact& got) { return judge::bisect(in, got); }
 Outcome judge_sampled(const SampledPair& in, const TimeOfImpact& got) { return judge::sample_then_bisect(in, got); }
 Outcome judge_advance(const AdvancedPair& in, const TimeOfImpact& got) { return judge::advance(in, got); }
-// The robustness step's exact input: the header's rules, with nothing in doubt.
+// Exact input (the robustness step's, and step 2's worked examples): the header's rules,
+// with nothing in doubt.
 Outcome exact_bisect(const MovingPairCase& in, const TimeOfImpact& got) { return judge::bisect(in, got, Rules::exact); }
 Outcome exact_sampled(const SampledPair& in, const TimeOfImpact& got) {
   return judge::sample_then_bisect(in, got, Rules::exact);
@@ -135,16 +175,20 @@ TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
     e.near("sphere centre", s.center, Vec3(5, 1, 0), 1e-12);
     e.near("sphere radius", s.radius, 2, 0);
     e.near("box centre", b.center, Vec3(5, 1, 0), 1e-12);
-    e.near("box axis 0", Vec3(b.axes.col(0)), Vec3(0, 1, 0), 1e-12);
-    e.near("box axis 1", Vec3(b.axes.col(1)), Vec3(-1, 0, 0), 1e-12);
+    const bool turned = (Vec3(b.axes.col(0)) - Vec3(0, 1, 0)).norm() <= 1e-12 && (Vec3(b.axes.col(1)) - Vec3(-1, 0, 0)).norm() <= 1e-12;
+    e.that("box axes 0, 1", turned, fmt(Vec3(b.axes.col(0))) + ", " + fmt(Vec3(b.axes.col(1))), "(0, 1, 0), (-1, 0, 0)",
+           "the quarter turn takes axis x to y");
     e.near("box half extents", b.half_extents, Vec3(2, 1, 1), 0);
-    return e.outcome();
+    return because(e, "a pose moves a centre by the whole pose and turns a box's axes by its rotation, "
+                      "pose.linear() * axes; sizes stay");
   });
 
-  const auto spheres = [](bool expected) {
-    return [expected](const Sphere& b) {
+  const std::string closed = "sets are closed, touching counts: overlap <=> |c_a - c_b|^2 <= (r_a + r_b)^2";
+  const auto spheres = [closed](bool expected) {
+    return [=](const Sphere& b) {
+      const bool got = overlap(Sphere{Vec3::Zero(), 1}, b);
       Expect e;
-      e.equal("overlap", overlap(Sphere{Vec3::Zero(), 1}, b), expected);
+      e.that("overlap", got == expected, yes_no(got), yes_no(expected), closed);
       return e.outcome();
     };
   };
@@ -168,8 +212,11 @@ TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
 
   const auto sphere_box = [wall](bool expected) {
     return [wall, expected](const Sphere& a) {
+      const bool got = overlap(a, wall);
       Expect e;
-      e.equal("overlap", overlap(a, wall), expected);
+      e.that("overlap", got == expected, yes_no(got), yes_no(expected),
+             "sets are closed, touching counts: overlap <=> |c - closest_point(box, c)|^2 <= r^2, the closest point "
+             "clamped in the box's own axes");
       return e.outcome();
     };
   };
@@ -180,11 +227,13 @@ TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
   const auto at = [](bool at_t0, bool at_t1) {
     return [=](const MovingPairCase& in) {
       const MovingPair pair = pair_of(in);
+      const bool got_t0 = overlap_at(pair, in.times.t0), got_t1 = overlap_at(pair, in.times.t1);
+      const Outcome o = judge::overlap_at(in, got_t0, got_t1);
+      if (o.verdict == Outcome::Verdict::fail) return o;
       Expect e;
-      e.equal("overlap_at(t0)", overlap_at(pair, in.times.t0), at_t0);
-      e.equal("overlap_at(t1)", overlap_at(pair, in.times.t1), at_t1);
-      const Outcome o = e.outcome();
-      return o.verdict == Outcome::Verdict::fail ? o : judge::overlap_at(in, at_t0, at_t1);
+      e.equal("overlap_at(t0)", got_t0, at_t0);
+      e.equal("overlap_at(t1)", got_t1, at_t1);
+      return e.outcome();
     };
   };
   check::example("overlap_at", "the ball at x = -1.125, then at x = -0.75", ball_and_wall(0.40625, 0.4375, 1), at(false, true));
@@ -211,7 +260,7 @@ TEST_CASE("L04S1 overlap at time t: random cases", "[lab04][step1][oracle]") {
 TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][step2]") {
   // The lecture's iterations: 0.5 (overlap), 0.25, 0.375 (clear), 0.4375 (overlap), 0.40625 (clear).
   check::example("bisect", "the lecture's five iterations", ball_and_wall(0, 1, 1.0 / 32),
-                 both<MovingPairCase>(run_bisect, judge_bisect, expect_hit(0.40625, 0.4375, 0, 5)));
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.40625, 0.4375, 0, 5)));
   // Any callable is a motion: this one writes down every time it is asked for a pose.
   // After the two ends, the times asked are the lecture's midpoints, in its order.
   check::example("bisect", "the lecture's midpoints, seen by a recording motion", ball_and_wall(0, 1, 1.0 / 32),
@@ -234,11 +283,11 @@ TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][st
                    return e.outcome();
                  });
   check::example("bisect", "a coarse tolerance: two iterations", ball_and_wall(0, 1, 0.25),
-                 both<MovingPairCase>(run_bisect, judge_bisect, expect_hit(0.25, 0.5, 0, 2)));
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.25, 0.5, 0, 2)));
   check::example("bisect", "already overlapping at t0", ball_and_wall(0.5, 1, 1.0 / 32),
-                 both<MovingPairCase>(run_bisect, judge_bisect, expect_start(0.5)));
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_start(0.5)));
   check::example("bisect", "still clear at t1: no hit", ball_and_wall(0, 0.25, 1.0 / 32),
-                 both<MovingPairCase>(run_bisect, judge_bisect, expect_no_hit(0.25, 0)));
+                 both<MovingPairCase>(run_bisect, exact_bisect, expect_no_hit(0.25, 0)));
 }
 
 TEST_CASE("L04S2 bisection to the last clear time: random cases", "[lab04][step2][oracle]") {
@@ -258,8 +307,11 @@ TEST_CASE("L04S3 tunnelling and sub-steps: worked examples", "[lab04][step3]") {
                  });
   const auto rule = [](int expected) {
     return [expected](const SubstepRule& in) {
+      const int got = substeps_for(in.max_speed, in.step, in.smallest_size);
+      const Outcome o = judge::substeps_for(in, got, Rules::exact);
+      if (o.verdict == Outcome::Verdict::fail) return o;
       Expect e;
-      e.equal("substeps", substeps_for(in.max_speed, in.step, in.smallest_size), expected);
+      e.equal("substeps", got, expected);
       return e.outcome();
     };
   };
@@ -270,16 +322,32 @@ TEST_CASE("L04S3 tunnelling and sub-steps: worked examples", "[lab04][step3]") {
   check::example("substeps_for", "a point can always be missed: 0", SubstepRule{6, 1, 0}, rule(0));
   check::example("substeps_for", "more than 2^20 sub-steps: 0", SubstepRule{1e9, 1, 1e-3}, rule(0));
 
+  // The window flies at the bullet: each moves at 3, and they close at 6, as before.
+  MovingPairCase head_on = bullet_and_window(1.0 / 64);
+  head_on.a.motion = moving({-1.5, 0, 0}, {3, 0, 0});
+  head_on.b.motion = moving({1.5, 0, 0}, {-3, 0, 0});
+  check::example("closing_speed", "the bullet and the window head on, 3 each: 6", head_on, [](const MovingPairCase& in) {
+    const double got = run_closing_speed(in);
+    const Outcome o = judge::closing_speed(in, got);
+    if (o.verdict == Outcome::Verdict::fail) return o;
+    Expect e;
+    e.near("closing_speed", got, 6, 0);
+    return e.outcome();
+  });
   check::example("sample_then_bisect", "the frame's ends only: the bullet tunnels", SampledPair{bullet_and_window(1.0 / 64), 1},
                  both<SampledPair>(run_sampled, judge_sampled, expect_no_hit(1, 1)));
   check::example("sample_then_bisect", "25 sub-steps: sample 11 at t = 0.44 overlaps", SampledPair{bullet_and_window(1.0 / 64), 25},
                  both<SampledPair>(run_sampled, judge_sampled, expect_hit(0.43, 0.44, 11, 2)));
-  check::example("tunnelling", "the bullet and the window", bullet_and_window(1.0 / 64), [](const MovingPairCase& in) {
+  const auto tunnels = [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
-    const int n = substeps_for(closing_speed_of(in), in.times.t1 - in.times.t0, smallest_size_of(in));
-    return judge::tunnelling(in, n, sample_then_bisect(pair, 0, 1, 1, in.times.tolerance),
-                             sample_then_bisect(pair, 0, 1, n, in.times.tolerance));
-  });
+    const SearchTimes& T = in.times;
+    const double speed = run_closing_speed(in);
+    const int n = substeps_for(speed, T.t1 - T.t0, smallest_size_of(in));
+    return judge::tunnelling(in, speed, n, sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
+                             sample_then_bisect(pair, T.t0, T.t1, n < 1 ? 1 : n, T.tolerance));
+  };
+  check::example("tunnelling", "the bullet and the window", bullet_and_window(1.0 / 64), tunnels);
+  check::example("tunnelling", "the bullet and the window, head on", head_on, tunnels);
 }
 
 TEST_CASE("L04S3 tunnelling and sub-steps: random cases", "[lab04][step3][oracle]") {
@@ -288,11 +356,14 @@ TEST_CASE("L04S3 tunnelling and sub-steps: random cases", "[lab04][step3][oracle
   });
   check::random_cases("sample_then_bisect", gen::sampled_pair(),
                       [](const SampledPair& in) { return judge::sample_then_bisect(in, run_sampled(in)); });
+  check::random_cases("closing_speed", gen::moving_pair(),
+                      [](const MovingPairCase& in) { return judge::closing_speed(in, run_closing_speed(in)); });
   check::random_cases("tunnelling", gen::tunnelling_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     const SearchTimes& T = in.times;
-    const int n = substeps_for(closing_speed_of(in), T.t1 - T.t0, smallest_size_of(in));
-    return judge::tunnelling(in, n, sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
+    const double speed = run_closing_speed(in);
+    const int n = substeps_for(speed, T.t1 - T.t0, smallest_size_of(in));
+    return judge::tunnelling(in, speed, n, sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
                              sample_then_bisect(pair, T.t0, T.t1, n < 1 ? 1 : n, T.tolerance));
   });
 }
@@ -300,22 +371,23 @@ TEST_CASE("L04S3 tunnelling and sub-steps: random cases", "[lab04][step3][oracle
 // ---- Step 4 ------------------------------------------------------------------------------------
 
 TEST_CASE("L04S4 conservative advancement: worked examples", "[lab04][step4]") {
-  const auto spheres = [](double expected) {
-    return [expected](const Sphere& b) {
-      Expect e;
-      e.near("distance", distance(Sphere{Vec3::Zero(), 1}, b), expected, 1e-12);
-      return e.outcome();
-    };
+  const auto surfaces = [](double got, double expected, double radii) {
+    Expect e;
+    e.that("distance", std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected),
+           "the distance between the closed bodies is the gap between their surfaces (0 when they overlap)" +
+               std::string(std::abs(got - expected - radii) <= 1e-12 ? ": yours is larger by the radii, measured "
+                                                                       "between centres"
+                                                                     : ""));
+    return e.outcome();
+  };
+  const auto spheres = [surfaces](double expected) {
+    return [=](const Sphere& b) { return surfaces(distance(Sphere{Vec3::Zero(), 1}, b), expected, 1 + b.radius); };
   };
   check::example("distance spheres", "5 apart, radii 1 and 3: 1", Sphere{{3, 4, 0}, 3}, spheres(1));
   check::example("distance spheres", "overlapping: 0", Sphere{{3, 4, 0}, 5}, spheres(0));
   const Box wall{{4, 0, 0}, Mat3::Identity(), {4, 4, 4}};
-  const auto sphere_box = [wall](double expected) {
-    return [wall, expected](const Sphere& a) {
-      Expect e;
-      e.near("distance", distance(a, wall), expected, 1e-12);
-      return e.outcome();
-    };
+  const auto sphere_box = [wall, surfaces](double expected) {
+    return [=](const Sphere& a) { return surfaces(distance(a, wall), expected, a.radius); };
   };
   check::example("distance sphere box", "sqrt(10) - 3", Sphere{{-3, 2, 5}, 3}, sphere_box(std::sqrt(10.0) - 3));
   check::example("distance sphere box", "overlapping: 0", Sphere{{-3, 2, 5}, 4}, sphere_box(0));
@@ -329,7 +401,10 @@ TEST_CASE("L04S4 conservative advancement: worked examples", "[lab04][step4]") {
 
   // The ball closes at 12; advancing with the bound 16 leaves 1/4 of the gap each step.
   check::example("advance", "the ball, bound 16: gaps 5, 1.25, 0.3125, ...", AdvancedPair{ball_and_wall(0, 1, 1.0 / 256), 16.0 / 12},
-                 both<AdvancedPair>(run_advance, judge_advance, expect_hit(0.4150390625, 0.4189453125, 5, 0)));
+                 both<AdvancedPair>(run_advance, judge_advance,
+                                    expect_hit(0.4150390625, 0.4189453125, 5, 0,
+                                               "each advance jumps by the time d / v, the gap over the closing speed "
+                                               "(5 / 16, then 1.25 / 16, ...), at least one tolerance: 5 advances")));
   // The exact bound 6 lands on the first touch, t = 7/16; bisection finishes.
   check::example("advance", "the bullet, exact bound 6: no tunnelling", AdvancedPair{bullet_and_window(1.0 / 64), 1},
                  both<AdvancedPair>(run_advance, judge_advance, expect_hit(0.423828125, 0.4375, 1, 5)));
@@ -422,4 +497,103 @@ TEST_CASE("L04S5 robustness: random exact cases", "[lab04][step5][oracle]") {
   });
   check::random_cases("robust.advance", gen::exact_advanced_pair(),
                       [](const AdvancedPair& in) { return judge::advance(in, run_advance(in), Rules::exact); });
+}
+
+// ---- The header's preconditions -------------------------------------------------------------
+// Run with the reference only (tagged [contract], in no step: students are not graded on
+// invalid input). Every kind of invalid input must throw std::invalid_argument naming the
+// function and the argument; none may hang (a tolerance of 0 used to halve forever).
+
+namespace {
+
+template <class Call>
+void rejects(const std::string& what, Call call, const std::string& names) {
+  INFO(what);
+  try {
+    call();
+    FAIL_CHECK("accepted, though the header's preconditions exclude it");
+  } catch (const std::invalid_argument& e) {
+    INFO("message: " << e.what());
+    CHECK(std::string(e.what()).find(names) != std::string::npos);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("L04 preconditions: invalid input is rejected, naming the argument", "[lab04][contract]") {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  const MovingPair good = pair_of(ball_and_wall(0, 1, 1.0 / 32));
+  const auto with_ball = [&](const Sphere& a) {
+    MovingPair p = good;
+    p.a = a;
+    return p;
+  };
+  const auto with_box = [&](const Box& b) {
+    MovingPair p = good;
+    p.b = shape_of(b);
+    return p;
+  };
+  const Box wall = good.b.box;
+
+  // The searches' times and tolerance.
+  for (const auto& [search, run] : std::vector<std::pair<std::string, std::function<void(double, double, double)>>>{
+           {"bisect", [&](double t0, double t1, double tol) { bisect(good, t0, t1, tol); }},
+           {"sample_then_bisect", [&](double t0, double t1, double tol) { sample_then_bisect(good, t0, t1, 4, tol); }},
+           {"advance", [&](double t0, double t1, double tol) { advance(good, t0, t1, 12, tol); }}}) {
+    rejects(search + ": tolerance 0 (halving forever)", [&] { run(0, 1, 0); }, search + ": tolerance");
+    rejects(search + ": tolerance -1", [&] { run(0, 1, -1); }, search + ": tolerance");
+    rejects(search + ": tolerance NaN", [&] { run(0, 1, nan); }, search + ": tolerance");
+    rejects(search + ": tolerance infinite", [&] { run(0, 1, inf); }, search + ": tolerance");
+    rejects(search + ": tolerance below the spacing of doubles near t", [&] { run(1e6, 1e6 + 1, 1e-20); }, search + ": tolerance");
+    rejects(search + ": t0 NaN", [&] { run(nan, 1, 0.25); }, search + ": t0");
+    rejects(search + ": t1 infinite", [&] { run(0, inf, 0.25); }, search + ": t1");
+    rejects(search + ": t0 > t1", [&] { run(1, 0, 0.25); }, search + ": t0 <= t1");
+    rejects(search + ": t1 - t0 overflows", [&] { run(-1e308, 1e308, 1e300); }, search + ": t1 - t0");
+  }
+  rejects("sample_then_bisect: 0 sub-steps", [&] { sample_then_bisect(good, 0, 1, 0, 0.25); }, "sample_then_bisect: substeps");
+  rejects("sample_then_bisect: -3 sub-steps", [&] { sample_then_bisect(good, 0, 1, -3, 0.25); }, "sample_then_bisect: substeps");
+  rejects("advance: a negative speed bound", [&] { advance(good, 0, 1, -1, 0.25); }, "advance: max_closing_speed");
+  rejects("advance: a NaN speed bound", [&] { advance(good, 0, 1, nan, 0.25); }, "advance: max_closing_speed");
+
+  // The bodies, in every function that takes one.
+  rejects("a negative radius", [&] { bisect(with_ball({Vec3::Zero(), -1}), 0, 1, 0.25); }, "bisect: pair.a.radius");
+  rejects("a NaN radius", [&] { overlap_at(with_ball({Vec3::Zero(), nan}), 0); }, "overlap_at: pair.a.radius");
+  rejects("a NaN centre", [&] { distance_at(with_ball({{nan, 0, 0}, 1}), 0); }, "distance_at: pair.a.center");
+  rejects("a negative half extent", [&] { advance(with_box({wall.center, wall.axes, {4, -1, 4}}), 0, 1, 12, 0.25); },
+          "advance: pair.b.half_extents");
+  rejects("a NaN half extent", [&] { smallest_size(shape_of(Box{wall.center, wall.axes, {nan, 4, 4}})); },
+          "smallest_size: shape.half_extents");
+  rejects("NaN box axes", [&] { sample_then_bisect(with_box({wall.center, Mat3::Constant(nan), wall.half_extents}), 0, 1, 2, 0.25); },
+          "sample_then_bisect: pair.b.axes");
+  rejects("overlap: a negative radius", [] { overlap(Sphere{Vec3::Zero(), -1}, Sphere{Vec3::Zero(), 1}); }, "overlap: a.radius");
+  rejects("overlap: an infinite centre", [&] { overlap(Sphere{{inf, 0, 0}, 1}, wall); }, "overlap: a.center");
+  rejects("distance: a NaN radius", [] { distance(Sphere{Vec3::Zero(), 1}, Sphere{Vec3::Zero(), nan}); }, "distance: b.radius");
+  rejects("distance: a negative half extent", [] { distance(Sphere{Vec3::Zero(), 1}, Box{Vec3::Zero(), Mat3::Identity(), {-1, 1, 1}}); },
+          "distance: b.half_extents");
+  rejects("closest_point: a NaN point", [&] { closest_point(wall, Vec3(nan, 0, 0)); }, "closest_point: p");
+  rejects("overlap_at: a NaN time", [&] { overlap_at(good, nan); }, "overlap_at: t");
+
+  // The motions: a NaN velocity poses the body nowhere.
+  MotionParameters nan_velocity = moving({-6, 0, 0}, {nan, 0, 0});
+  MovingPair lost = good;
+  lost.motion_a = motion_of(nan_velocity);
+  rejects("a motion that returns a NaN pose", [&] { bisect(lost, 0, 1, 0.25); }, "pair.motion_a");
+  rejects("closing_speed: a NaN velocity", [&] {
+    closing_speed(good.a, motion_of(nan_velocity), good.b, motion_of(resting_at({4, 0, 0})), 0, 1);
+  }, "closing_speed: motion_a");
+  rejects("closing_speed: t0 > t1", [&] { closing_speed(good.a, StandardMotion{}, good.b, StandardMotion{}, 1, 0); },
+          "closing_speed: t0 <= t1");
+
+  // The sub-step rule's numbers.
+  rejects("substeps_for: a negative speed", [] { substeps_for(-6, 1, 0.25); }, "substeps_for: closing_speed");
+  rejects("substeps_for: an infinite speed", [] { substeps_for(inf, 1, 0.25); }, "substeps_for: closing_speed");
+  rejects("substeps_for: a NaN step", [] { substeps_for(6, nan, 0.25); }, "substeps_for: step");
+  rejects("substeps_for: a negative size", [] { substeps_for(6, 1, -0.25); }, "substeps_for: smallest_size");
+
+  // What the header allows, at its edges, is answered.
+  CHECK(bisect(good, 0.5, 0.5, 1.0 / 32).overlapping_at_start);  // t0 = t1
+  CHECK(bisect(good, 0, 0.25, 0.25).hit == false);
+  CHECK_NOTHROW(bisect(good, 1e6, 1e6 + 1, std::ldexp(1e6 + 1, -50)));  // the finest tolerance allowed
+  CHECK(substeps_for(6, 1, 0) == 0);  // a size of 0: the documented 0
+  CHECK(advance(good, 0, 0.25, 0, 1.0 / 32).steps == 1);  // a bound of 0 jumps to t1
 }

@@ -78,6 +78,8 @@ struct labkit::wire::Codec<labkit::lab04::Motion> {
   CALL(bool, overlap_at, (const MovingPair&, double))                                               \
   CALL(TimeOfImpact, bisect, (const MovingPair&, double, double, double))                           \
   CALL(double, smallest_size, (const Shape&))                                                       \
+  CALL(double, closing_speed,                                                                       \
+       (const Sphere&, const StandardMotion&, const Shape&, const StandardMotion&, double, double))     \
   CALL(int, substeps_for, (double, double, double))                                                 \
   CALL(TimeOfImpact, sample_then_bisect, (const MovingPair&, double, double, int, double))          \
   CALL(double, distance, (const Sphere&, const Sphere&))                                            \

@@ -66,6 +66,13 @@ namespace {
 // range at small sizes), shrinking toward lo.
 rc::Gen<int> pick(int lo, int hi) { return rc::gen::resize(rc::kNominalSize, rc::gen::inRange(lo, hi)); }
 
+// The kit's scales, and both ends of the domain lab 04's header states (lengths from
+// 1e-100 to 1e100): 2^-300 and 2^300, powers of two, so that exact input stays exact.
+rc::Gen<double> scales() {
+  return rc::gen::weightedOneOf<double>(
+      {{18, scale()}, {1, rc::gen::just(std::ldexp(1.0, -300))}, {1, rc::gen::just(std::ldexp(1.0, 300))}});
+}
+
 double reach_of(const MovingBody& b) {
   return b.is_box ? b.box.center.norm() + b.box.half_extents.norm() : b.sphere.center.norm() + b.sphere.radius;
 }
@@ -171,7 +178,7 @@ Vec3 inner_point(const MovingBody& b, double depth) {
 // direction, at a few times the bodies' reach); linearly or accelerating.
 rc::Gen<MovingPairCase> collision(int finest) {
   return rc::gen::exec([finest] {
-    const double s = *scale();
+    const double s = *scales();
     MovingPairCase c;
     c.times = *times(finest);
     c.b = *body(s);
@@ -193,7 +200,7 @@ rc::Gen<MovingPairCase> collision(int finest) {
 // The sphere already overlaps the other body at t0.
 rc::Gen<MovingPairCase> started(int finest) {
   return rc::gen::exec([finest] {
-    const double s = *scale();
+    const double s = *scales();
     MovingPairCase c;
     c.times = *times(finest);
     c.b = *body(s);
@@ -207,7 +214,7 @@ rc::Gen<MovingPairCase> started(int finest) {
 // Two unrelated bodies: they may meet, or never.
 rc::Gen<MovingPairCase> unrelated(int finest) {
   return rc::gen::exec([finest] {
-    const double s = *scale();
+    const double s = *scales();
     MovingPairCase c;
     c.times = *times(finest);
     c.b = *body(s);
@@ -278,7 +285,7 @@ Touch touch_box(const Box& b, double r, double s) {
 // other body there, and then approaches it, leaves it, or only grazes it.
 rc::Gen<MovingPairCase> touching(bool exact) {
   return rc::gen::exec([exact] {
-    const double s = *scale() * 8;
+    const double s = *scales() * 8;
     MovingPairCase c;
     c.times.t0 = *rc::gen::element(0.0, 0.0, 0.25, 1.0);
     const double span = *rc::gen::element(1.0, 2.0, 0.5);
@@ -328,7 +335,7 @@ rc::Gen<MovingPairCase> touching(bool exact) {
 // A fast small sphere through a thin wall (or a small sphere), between two samples.
 rc::Gen<MovingPairCase> tunnelling() {
   return rc::gen::exec([] {
-    const double s = *scale();
+    const double s = *scales();
     MovingPairCase c;
     c.times = *times(12);
     const double span = c.times.t1 - c.times.t0;
@@ -403,7 +410,7 @@ rc::Gen<MovingPairCase> tunnelling_pair() { return tunnelling(); }
 
 rc::Gen<PointBox> point_box() {
   return rc::gen::exec([] {
-    const double s = *scale();
+    const double s = *scales();
     Box b = *box(s);
     b.center = *point(s);
     // On a face, an edge or a corner, inside, outside, or a hair off any of them.
@@ -417,7 +424,7 @@ rc::Gen<PointBox> point_box() {
 
 rc::Gen<PointBox> exact_point_box() {
   return rc::gen::exec([] {
-    const double s = 8 * *scale();
+    const double s = 8 * *scales();
     Box b{*lattice_point(s), *quarter_turns(), Vec3::Zero()};
     for (int k = 0; k < 3; ++k) b.half_extents[k] = s * *pick(0, 9);
     Vec3 local;
@@ -427,7 +434,8 @@ rc::Gen<PointBox> exact_point_box() {
 }
 
 // Sizes from 2^-20 to 2^23, steps of 2^-k: the ratio speed * step / size is a whole
-// number (exactly: on the rule's boundary), a whole number near the cap 2^20, anything,
+// number (exact input: on the rule's boundary; otherwise 2^-20 to either side of it, just
+// outside the band where rounding decides), a whole number near the cap 2^20, anything,
 // or there is no size at all.
 rc::Gen<SubstepRule> substep_rule(bool exact) {
   return rc::gen::exec([exact] {
@@ -435,9 +443,11 @@ rc::Gen<SubstepRule> substep_rule(bool exact) {
     const double step = std::ldexp(1.0, -*pick(0, 8));
     const double fraction = exact ? 0.0 : *pick(1, 1 << 20) / double(1 << 20);
     const int kind = *rc::gen::weightedElement<int>({{exact ? 4 : 1, 0}, {1, 1}, {1, 2}, {exact ? 0 : 4, 3}});
+    if (kind == 0 && !exact)
+      return SubstepRule{size / step * (*pick(1, 2000) + *rc::gen::element(1.0, -1.0) * std::ldexp(1.0, -20)), step, size};
     if (kind == 0) return SubstepRule{size / step * *pick(0, 2000), step, size};
     if (kind == 1) return SubstepRule{size / step * (*pick((1 << 20) - 2, (1 << 20) + 2) + fraction), step, size};
-    if (kind == 2) return SubstepRule{*pick(0, 1000) * 1.0, step, *rc::gen::element(0.0, -size)};
+    if (kind == 2) return SubstepRule{*pick(0, 1000) * 1.0, step, 0.0};
     return SubstepRule{size / step * (*pick(0, 2000) + fraction), step, size};
   });
 }

@@ -6,8 +6,9 @@
 // midpoint or at a sample time, bodies that graze (touch for one instant) or miss by a
 // hair, fast thin bodies that pass right through each other between two samples
 // (tunnelling), spinning, screwing, orbiting and accelerating bodies, zero radii and
-// zero half extents, every scale from 2^-20 to 2^20, and far from the origin. The exact
-// families use integer coordinates and short binary times, so that every pose is exact.
+// zero half extents, every scale from 2^-20 to 2^20 and both ends of the header's domain
+// (2^-300 and 2^300), and far from the origin. The exact families use integer
+// coordinates and short binary times, so that every pose is exact.
 #pragma once
 
 #include "common/geometry.h"

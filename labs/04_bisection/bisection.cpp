@@ -64,9 +64,21 @@ double smallest_size(const Shape& shape) {
   not_implemented("L04S3");
 }
 
-// L04S3: speed x (step / n) < smallest size.
-int substeps_for(double max_speed, double step, double smallest_size) {
-  (void)max_speed;
+// L04S3: how fast the two bodies can close on each other.
+double closing_speed(const Sphere& a, const StandardMotion& motion_a, const Shape& b, const StandardMotion& motion_b,
+                     double t0, double t1) {
+  (void)a;
+  (void)motion_a;
+  (void)b;
+  (void)motion_b;
+  (void)t0;
+  (void)t1;
+  not_implemented("L04S3");
+}
+
+// L04S3: closing speed x (step / n) < smallest size.
+int substeps_for(double closing_speed, double step, double smallest_size) {
+  (void)closing_speed;
   (void)step;
   (void)smallest_size;
   not_implemented("L04S3");

@@ -31,8 +31,29 @@
 //  - Distances: within 1e-9 S of the exact distance.
 //  - Times are certified, not compared with another root: a search that reports a contact
 //    must be clear at its t, overlap at its t_contact, and t < t_contact <= t + tolerance.
-//    `tolerance` is an argument of each search, a time: positive, and large enough that
-//    t + tolerance > t for every t of the search (the tests use at least 2^-30 (t1 - t0)).
+//
+// The input domain on which these hold: every length (coordinates, radii, half extents,
+// and what a motion adds in the times searched: velocity t, acceleration t^2 / 2) is 0
+// or of magnitude between 1e-100 and 1e100, so that its square is a normal double; box
+// axes are orthonormal up to rounding; spin axes are any non-zero vector. The tests draw
+// scales from 2^-300 to 2^300 and tolerances down to 2^-30 (t1 - t0).
+//
+// Preconditions. Outside them the reference throws std::invalid_argument naming the
+// function, the argument and the rule ("bisect: tolerance must be finite and > 0, got
+// 0"); it never hangs. No step grades invalid input: your code may check or not.
+//  - t0 and t1 finite, t0 <= t1, and t1 - t0 finite;
+//  - tolerance finite, > 0 and at least 2^-50 max(|t0|, |t1|): a tolerance of 0, or one
+//    below the spacing of doubles near t, would halve forever, since a bracket of two
+//    neighbouring doubles has no midpoint between them;
+//  - radii and half extents finite and >= 0, centres and points finite (every function
+//    that takes a body checks it); the poses the motions return at the times asked
+//    finite;
+//  - sample_then_bisect: substeps >= 1; substeps_for, closing_speed and advance: speeds
+//    and the step finite and >= 0, sizes finite and >= 0.
+// The loops this bounds: bisection halves while hi - lo > tolerance, at most
+// log2((t1 - t0) / tolerance) + 2 rounds (+2 for the rounding of midpoints); sampling
+// tests n samples; advancement moves at least one tolerance per step, at most
+// (t1 - t0) / tolerance + 1 steps.
 #pragma once
 
 #include "common/geometry.h"
@@ -164,13 +185,22 @@ TimeOfImpact bisect(const MovingPair& pair, double t0, double t1, double toleran
 // extent (twice its smallest half extent).
 double smallest_size(const Shape& shape);
 
-// The lecture's rule: the fastest speed times the time step must be smaller than the
-// smallest object. The smallest number of sub-steps n >= 1 with
-//   max_speed * (step / n) < smallest_size      (strictly).
+// The speed in the lecture's rule is the speed of one object against another that
+// stands still. When both move, what matters is how fast they close on each other: the
+// speed of a relative to b, at most max_speed(a) + max_speed(b) (two bodies each at 3,
+// head on, close at 6). closing_speed returns that sum, each body's max_speed over its
+// own reach, on [t0, t1]. (The fastest body's speed alone is not a bound on it.)
+double closing_speed(const Sphere& a, const StandardMotion& motion_a, const Shape& b,
+                     const StandardMotion& motion_b, double t0, double t1);
+
+// The lecture's rule: the speed times the time step must be smaller than the smallest
+// object; for two moving bodies the speed is their closing speed (above). The smallest
+// number of sub-steps n >= 1 with
+//   closing_speed * (step / n) < smallest_size      (strictly).
 // When no n up to kMaxSubsteps satisfies it (a size of zero, or a speed too high for
 // the step), return 0: sub-stepping cannot make this motion safe.
 constexpr int kMaxSubsteps = 1 << 20;
-int substeps_for(double max_speed, double step, double smallest_size);
+int substeps_for(double closing_speed, double step, double smallest_size);
 
 // Point sampling with n = substeps sub-steps (n >= 1): test t0, then the sample times
 //   t_k = t0 + (t1 - t0) * k / n   for k = 1, ..., n - 1   (computed exactly so),

@@ -12,10 +12,85 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 
 namespace labkit::lab04 {
 
 namespace {
+
+// ---- The header's preconditions ---------------------------------------------------------
+// Each check names the function, the argument and the rule, then what it got.
+
+std::string str(double x) {
+  std::ostringstream o;
+  o.precision(17);
+  o << x;
+  return o.str();
+}
+std::string str(const Vec3& v) { return "(" + str(v.x()) + ", " + str(v.y()) + ", " + str(v.z()) + ")"; }
+
+[[noreturn]] void reject(const std::string& where, const std::string& what, const std::string& got) {
+  throw std::invalid_argument(where + ": " + what + ", got " + got);
+}
+
+// `name` and `field` name the argument ("a", ".radius"); the strings are only built to
+// reject, never on the way through.
+void require_finite(const char* where, const char* name, const char* field, const Vec3& v) {
+  if (!v.allFinite()) reject(where, std::string(name) + field + " must be finite", str(v));
+}
+void require_size(const char* where, const char* name, const char* field, double x) {
+  if (!(std::isfinite(x) && x >= 0)) reject(where, std::string(name) + field + " must be finite and >= 0", str(x));
+}
+void require_body(const char* where, const char* name, const Sphere& s) {
+  require_finite(where, name, ".center", s.center);
+  require_size(where, name, ".radius", s.radius);
+}
+void require_body(const char* where, const char* name, const Box& b) {
+  require_finite(where, name, ".center", b.center);
+  if (!b.axes.allFinite()) reject(where, std::string(name) + ".axes must be finite", "a NaN or an infinity");
+  require_finite(where, name, ".half_extents", b.half_extents);
+  if (!(b.half_extents.minCoeff() >= 0))
+    reject(where, std::string(name) + ".half_extents must be >= 0", str(b.half_extents));
+}
+void require_body(const char* where, const char* name, const Shape& b) {
+  if (b.kind == Shape::Kind::sphere) require_body(where, name, b.sphere);
+  else require_body(where, name, b.box);
+}
+
+// [t0, t1] and the tolerance. Why the floor on the tolerance: the halving loop stops only
+// when hi - lo <= tolerance. Near t the doubles are about 2^-52 |t| apart, so with a
+// tolerance below that spacing two neighbouring doubles are a bracket longer than the
+// tolerance with no midpoint between them: the loop would run forever. At 2^-50 max|t|
+// every bracket longer than the tolerance holds a few doubles, its computed midpoint
+// lies strictly inside, and each round shrinks it to at most a little over half.
+void require_times(const char* where, double t0, double t1, double tolerance) {
+  if (!std::isfinite(t0)) reject(where, "t0 must be finite", str(t0));
+  if (!std::isfinite(t1)) reject(where, "t1 must be finite", str(t1));
+  if (!(t0 <= t1)) reject(where, "t0 <= t1 must hold", "t0 = " + str(t0) + ", t1 = " + str(t1));
+  if (!std::isfinite(t1 - t0)) reject(where, "t1 - t0 must be finite", "t0 = " + str(t0) + ", t1 = " + str(t1));
+  if (!(std::isfinite(tolerance) && tolerance > 0))
+    reject(where, "tolerance must be finite and > 0", str(tolerance));
+  const double floor = std::ldexp(std::max(std::abs(t0), std::abs(t1)), -50);
+  if (!(tolerance >= floor))
+    reject(where, "tolerance must be at least 2^-50 max(|t0|, |t1|) = " + str(floor) + " (finer times are not distinct doubles)",
+           str(tolerance));
+}
+
+void require_pair(const char* where, const MovingPair& pair) {
+  require_body(where, "pair.a", pair.a);
+  require_body(where, "pair.b", pair.b);
+  if (!pair.motion_a) reject(where, "pair.motion_a must be a motion", "an empty std::function");
+  if (!pair.motion_b) reject(where, "pair.motion_b must be a motion", "an empty std::function");
+}
+
+RigidTransform pose_of(const Motion& motion, const char* name, double t) {
+  const RigidTransform pose = motion(t);
+  if (!pose.matrix().allFinite())
+    throw std::invalid_argument(std::string(name) + " returned a pose that is not finite at t = " + str(t));
+  return pose;
+}
 
 // The squared distance from p to the closed box. In the box's own coordinates
 // s_k = (p - center) . axis_k the box is |s_k| <= h_k, so the nearest point clamps each
@@ -46,8 +121,8 @@ struct Posed {
 
 // Both bodies where their motions put them at time t.
 Posed posed_at(const MovingPair& pair, double t) {
-  Posed p{placed(pair.a, pair.motion_a(t)), pair.b};
-  const RigidTransform pose_b = pair.motion_b(t);
+  Posed p{placed(pair.a, pose_of(pair.motion_a, "pair.motion_a", t)), pair.b};
+  const RigidTransform pose_b = pose_of(pair.motion_b, "pair.motion_b", t);
   if (pair.b.kind == Shape::Kind::sphere) p.b.sphere = placed(pair.b.sphere, pose_b);
   else p.b.box = placed(pair.b.box, pose_b);
   return p;
@@ -72,7 +147,8 @@ TimeOfImpact no_hit(double t1, int steps) {
 // Each test of the midpoint keeps the half whose ends still differ, so the invariant
 // "clear at lo, overlapping at hi" holds throughout and a contact always lies between:
 // lo only ever moves forward to a clear time, hi only backward to an overlapping one.
-// After k halvings the bracket is (t1 - t0) / 2^k long.
+// After k halvings the bracket is (t1 - t0) / 2^k long, so the loop ends after about
+// log2((hi - lo) / tolerance) rounds; require_times makes sure every round does halve.
 TimeOfImpact halve(const MovingPair& pair, double lo, double hi, double tolerance) {
   TimeOfImpact r;
   r.hit = true;
@@ -98,6 +174,8 @@ Box placed(const Box& box, const RigidTransform& pose) {
 }
 
 bool overlap(const Sphere& a, const Sphere& b) {
+  require_body("overlap", "a", a);
+  require_body("overlap", "b", b);
   // |c_a - c_b| <= r_a + r_b, squared: both sides are non-negative, so squaring keeps
   // the order and the equality (touching) exactly.
   const double reach = a.radius + b.radius;
@@ -105,6 +183,8 @@ bool overlap(const Sphere& a, const Sphere& b) {
 }
 
 Vec3 closest_point(const Box& box, const Vec3& p) {
+  require_body("closest_point", "box", box);
+  require_finite("closest_point", "p", "", p);
   const Vec3 d = p - box.center;
   Vec3 q = box.center;
   for (int k = 0; k < 3; ++k) {
@@ -114,9 +194,15 @@ Vec3 closest_point(const Box& box, const Vec3& p) {
   return q;
 }
 
-bool overlap(const Sphere& a, const Box& b) { return squared_distance(b, a.center) <= a.radius * a.radius; }
+bool overlap(const Sphere& a, const Box& b) {
+  require_body("overlap", "a", a);
+  require_body("overlap", "b", b);
+  return squared_distance(b, a.center) <= a.radius * a.radius;
+}
 
 bool overlap_at(const MovingPair& pair, double t) {
+  require_pair("overlap_at", pair);
+  if (!std::isfinite(t)) reject("overlap_at", "t must be finite", str(t));
   const Posed p = posed_at(pair, t);
   return p.b.kind == Shape::Kind::sphere ? overlap(p.a, p.b.sphere) : overlap(p.a, p.b.box);
 }
@@ -127,6 +213,8 @@ bool overlap_at(const MovingPair& pair, double t) {
 // toward the last frame, which it knows to be clear. We test both ends: a start that
 // already overlaps has no "time right before the collision".
 TimeOfImpact bisect(const MovingPair& pair, double t0, double t1, double tolerance) {
+  require_pair("bisect", pair);
+  require_times("bisect", t0, t1, tolerance);
   if (overlap_at(pair, t0)) return overlapping_at_start(t0);
   if (!overlap_at(pair, t1)) return no_hit(t1, 0);  // clear at both ends: nothing seen
   return halve(pair, t0, t1, tolerance);
@@ -135,17 +223,22 @@ TimeOfImpact bisect(const MovingPair& pair, double t0, double t1, double toleran
 // ---- Step 3 ----------------------------------------------------------------------------
 
 double smallest_size(const Shape& shape) {
+  require_body("smallest_size", "shape", shape);
   if (shape.kind == Shape::Kind::sphere) return 2 * shape.sphere.radius;
   return 2 * shape.box.half_extents.minCoeff();
 }
 
-// A body moving at most max_speed covers at most max_speed * step / n in one sub-step.
+// Bodies closing at most at closing_speed get at most closing_speed * step / n closer
+// in one sub-step.
 // The lecture wants that strictly below the smallest size: n > max_speed * step / size,
 // so n = floor(ratio) + 1 (when the ratio is a whole number m, n = m gives equality,
 // which is not "smaller").
-int substeps_for(double max_speed, double step, double smallest_size) {
-  if (!(smallest_size > 0)) return 0;  // a zero size can slip between any two samples
-  const double ratio = max_speed * step / smallest_size;
+int substeps_for(double closing_speed, double step, double smallest_size) {
+  require_size("substeps_for", "closing_speed", "", closing_speed);
+  require_size("substeps_for", "step", "", step);
+  require_size("substeps_for", "smallest_size", "", smallest_size);
+  if (smallest_size == 0) return 0;  // a zero size can slip between any two samples
+  const double ratio = closing_speed * step / smallest_size;
   if (!(ratio < kMaxSubsteps)) return 0;  // too many sub-steps (or not a number)
   return int(std::floor(ratio)) + 1;
 }
@@ -153,6 +246,9 @@ int substeps_for(double max_speed, double step, double smallest_size) {
 // Point sampling at n sub-steps finds every contact that lasts longer than one sub-step;
 // the rule above makes a body that passes right through the other take that long.
 TimeOfImpact sample_then_bisect(const MovingPair& pair, double t0, double t1, int substeps, double tolerance) {
+  require_pair("sample_then_bisect", pair);
+  require_times("sample_then_bisect", t0, t1, tolerance);
+  if (substeps < 1) reject("sample_then_bisect", "substeps must be >= 1", std::to_string(substeps));
   if (overlap_at(pair, t0)) return overlapping_at_start(t0);
   double previous = t0;
   for (int k = 1; k <= substeps; ++k) {
@@ -168,9 +264,29 @@ TimeOfImpact sample_then_bisect(const MovingPair& pair, double t0, double t1, in
   return no_hit(t1, substeps);
 }
 
+// Each body's points move at most its max_speed, so the gap between the two bodies
+// shrinks at most at the sum: that is the speed at which they can close on each other.
+// The faster body's speed alone is not enough: two bodies at 3 each, head on, close at 6.
+double closing_speed(const Sphere& a, const StandardMotion& motion_a, const Shape& b, const StandardMotion& motion_b,
+                     double t0, double t1) {
+  require_body("closing_speed", "a", a);
+  require_body("closing_speed", "b", b);
+  if (!std::isfinite(t0)) reject("closing_speed", "t0 must be finite", str(t0));
+  if (!std::isfinite(t1)) reject("closing_speed", "t1 must be finite", str(t1));
+  if (!(t0 <= t1)) reject("closing_speed", "t0 <= t1 must hold", "t0 = " + str(t0) + ", t1 = " + str(t1));
+  const double reach_b = b.kind == Shape::Kind::sphere ? reach(b.sphere) : reach(b.box);
+  const double speed_a = max_speed(motion_a, reach(a), t0, t1), speed_b = max_speed(motion_b, reach_b, t0, t1);
+  const char* rule = "'s velocity, acceleration and spin must be finite";
+  if (!std::isfinite(speed_a)) reject("closing_speed", std::string("motion_a") + rule, "a speed of " + str(speed_a));
+  if (!std::isfinite(speed_b)) reject("closing_speed", std::string("motion_b") + rule, "a speed of " + str(speed_b));
+  return speed_a + speed_b;
+}
+
 // ---- Step 4 ----------------------------------------------------------------------------
 
 double distance(const Sphere& a, const Sphere& b) {
+  require_body("distance", "a", a);
+  require_body("distance", "b", b);
   const double reach = a.radius + b.radius;
   const double d2 = (a.center - b.center).squaredNorm();
   if (d2 <= reach * reach) return 0.0;  // overlapping: decided as in step 1
@@ -178,12 +294,16 @@ double distance(const Sphere& a, const Sphere& b) {
 }
 
 double distance(const Sphere& a, const Box& b) {
+  require_body("distance", "a", a);
+  require_body("distance", "b", b);
   const double d2 = squared_distance(b, a.center);
   if (d2 <= a.radius * a.radius) return 0.0;
   return std::sqrt(d2) - a.radius;
 }
 
 double distance_at(const MovingPair& pair, double t) {
+  require_pair("distance_at", pair);
+  if (!std::isfinite(t)) reject("distance_at", "t must be finite", str(t));
   const Posed p = posed_at(pair, t);
   return p.b.kind == Shape::Kind::sphere ? distance(p.a, p.b.sphere) : distance(p.a, p.b.box);
 }
@@ -192,8 +312,13 @@ double distance_at(const MovingPair& pair, double t) {
 // at rate v (each of the two nearest points moves at most its own speed, and the bound
 // covers both): d(t + s) >= d(t) - v s. So d(t + s) > 0 for every s < d(t) / v: the
 // advance to t + d / v cannot pass a contact. Far apart the advances are long; close
-// up they shrink with the distance, and the floor of one tolerance ends a near miss.
+// up they shrink with the distance, and the floor of one tolerance ends a near miss:
+// every step moves t forward by at least the tolerance (require_times makes t + tolerance
+// a later double), so there are at most (t1 - t0) / tolerance + 1 steps.
 TimeOfImpact advance(const MovingPair& pair, double t0, double t1, double max_closing_speed, double tolerance) {
+  require_pair("advance", pair);
+  require_times("advance", t0, t1, tolerance);
+  require_size("advance", "max_closing_speed", "", max_closing_speed);
   if (overlap_at(pair, t0)) return overlapping_at_start(t0);
   double t = t0;
   int steps = 0;

@@ -3,7 +3,8 @@
 // A replay token's query picks the mode:
 //   bisection                 overlap_at, bisect, distance_at          steps 1, 2, 4
 //   sub-steps                 sample_then_bisect                       steps 1, 3
-//   tunnelling                bisect on the frame's ends, substeps_for steps 1-3
+//   tunnelling                bisect on the frame's ends, closing_speed,
+//                             substeps_for (a closing_speed token too)  steps 1-3
 //   conservative advancement  advance                                  steps 1, 4
 //   closest point             closest_point                            step 1
 //   sub-step rule             substeps_for                             step 3
@@ -98,6 +99,7 @@ class BisectionScene : public Scene {
   void step_overlap();
   void step_bisect(const char* title);
   void step_sampled(int n, const char* title);
+  void step_closing_speed();  // the rule's speed, by the code under test
   void step_rule(const SubstepRule& rule);
   void step_advance();
   void draw_body(Renderer& r, const MovingBody& body, const RigidTransform& pose, Color c, bool filled) const;
@@ -162,7 +164,7 @@ BisectionScene::BisectionScene(const Setup& setup) {
   const std::string& q = token.query;
   if (q == "overlap_at" || q == "bisect" || q == "distance_at" || q == "robust.overlap_at" || q == "robust.bisect") {
     case_ = input_from_token<MovingPairCase>(token);
-  } else if (q == "tunnelling") {
+  } else if (q == "tunnelling" || q == "closing_speed") {
     mode_ = Mode::tunnelling, case_ = input_from_token<MovingPairCase>(token);
   } else if (q == "sample_then_bisect" || q == "robust.sample_then_bisect") {
     const auto in = input_from_token<SampledPair>(token);
@@ -175,7 +177,7 @@ BisectionScene::BisectionScene(const Setup& setup) {
   } else if (q == "substeps_for" || q == "robust.substeps_for") {
     mode_ = Mode::rule, rule_ = input_from_token<SubstepRule>(token);
   } else {
-    throw unknown_query("04", q, "overlap_at, closest_point, bisect, substeps_for, sample_then_bisect, tunnelling, "
+    throw unknown_query("04", q, "overlap_at, closest_point, bisect, closing_speed, substeps_for, sample_then_bisect, tunnelling, "
                                   "distance_at, advance (and their robust. forms)");
   }
   frame_inputs();
@@ -313,6 +315,18 @@ void BisectionScene::step_bisect(const char* title) {
   steps.push_back(s);
 }
 
+void BisectionScene::step_closing_speed() {
+  const SearchTimes& T = case_.times;
+  const auto got = attempt([&] {
+    return closing_speed(case_.a.sphere, motion_of(case_.a.motion), shape_of(case_.b), motion_of(case_.b.motion), T.t0, T.t1);
+  });
+  Step s = judged("L04S3", "closing_speed: max_speed(a) + max_speed(b)", got,
+                  [&](double v) { return judge::closing_speed(case_, v); });
+  s.rows = {{"closing speed", got ? num(*got) : "", num(closing_speed_of(case_))}};
+  verdict_[3] = s.verdict;
+  steps.push_back(s);
+}
+
 void BisectionScene::step_rule(const SubstepRule& rule) {
   const auto got = attempt([&] { return substeps_for(rule.max_speed, rule.step, rule.smallest_size); });
   Step s = judged("L04S3", "substeps_for: speed x step / n < smallest size", got,
@@ -321,7 +335,7 @@ void BisectionScene::step_rule(const SubstepRule& rule) {
   const int exact = rule.smallest_size > 0 && ratio < kMaxSubsteps ? int(std::floor(ratio)) + 1 : 0;
   s.rows = {{"speed, step, size", num(rule.max_speed) + ", " + num(rule.step) + ", " + num(rule.smallest_size), ""},
             {"substeps", got ? std::to_string(*got) : "", std::to_string(exact) + "  (ratio " + num(ratio) + ")"}};
-  verdict_[3] = s.verdict;
+  verdict_[3] = worse(verdict_[3], s.verdict);  // a wrong closing speed stays shown
   steps.push_back(s);
 }
 
@@ -404,6 +418,7 @@ void BisectionScene::update() {
     case Mode::sampled: step_sampled(substeps_, "sample_then_bisect with n sub-steps"); break;
     case Mode::tunnelling: {
       step_bisect("bisect: the frame's ends only");
+      step_closing_speed();
       const SubstepRule rule{closing_speed_of(case_), T.t1 - T.t0, smallest_size_of(case_)};
       step_rule(rule);
       const Attempt<int> n = attempt([&] { return substeps_for(rule.max_speed, rule.step, rule.smallest_size); });
