@@ -40,8 +40,12 @@ labkit_mutant(03 separating_axes NAME interval_ends_strict STEP 4
   REPLACE "return orient(a.v0, a.v1, b.v0, b.v1) < 0 && orient(a.v0, a.v2, b.v2, b.v0) < 0;")
 
 labkit_mutant(03 separating_axes NAME coplanar_only_when_exactly_zero STEP 4
-  FIND "s.coplanar = s.coplanar && std::abs(d) <= 1e-14 * (of[i] - t.v0).norm() * edges;"
-  REPLACE "s.coplanar = s.coplanar && d == 0;")
+  FIND "const bool in_plane = std::abs(d) <= 4e-15 * (of[i] - plane.at).norm() * plane.edges;"
+  REPLACE "const bool in_plane = d == 0;")
+
+labkit_mutant(03 separating_axes NAME needle_normal_at_any_vertex STEP 4
+  FIND "const Plane3 plane = plane_of(t);"
+  REPLACE "const Plane3 plane{t.v0, t.normal(), (t.v1 - t.v0).norm() * (t.v2 - t.v0).norm()};")
 
 labkit_mutant(03 separating_axes NAME enter_leave_not_swapped STEP 5
   FIND "if (x.ds < 0) std::swap(enter, leave);"

@@ -322,6 +322,67 @@ TrianglePair zero_area(Grid g) {
 
 TrianglePair generic_triangles(Grid g) { return {grid_triangle(g), grid_triangle(g)}; }
 
+// A needle: a long edge p -> p + u and a third vertex 2^-k |u| off its line (k from 6 to
+// 27: aspect ratios up to 1.3e8), beside one end (a spike: two long edges) or part way
+// along (a cap: one angle near 180 degrees), in any orientation, vertices in any order.
+Triangle needle(Grid g, Vec3* unit_normal, Vec3* across) {
+  const Vec3 p = grid_point(g), u = 2 * grid_direction(g);
+  Vec3 side = u.cross(grid_direction(g));
+  if (side.isZero()) side = u.unitOrthogonal();
+  side.normalize();
+  const double height = std::ldexp(u.norm(), -*rc::gen::inRange(6, 28));
+  const double at = *rc::gen::inRange(-2, 11) / 8.0;
+  Triangle t{p, p + u, p + at * u + height * side};
+  const int first = *rc::gen::inRange(0, 3);
+  t = {t[first], t[(first + 1) % 3], t[(first + 2) % 3]};
+  if (unit_normal) *unit_normal = u.cross(side).normalized();
+  if (across) *across = side * u.norm();
+  return t;
+}
+
+// A needle T0 and T1: through a point of the needle; in the needle's plane turned by
+// 2^-j (j from 16 to 30) about a line beside it or through it (so that T1 misses the
+// needle by up to thousands of tol, or crosses it); in a parallel plane; or another
+// needle through it.
+TrianglePair needles() {
+  const Grid g = *grid(false);
+  Vec3 n, w;
+  const Triangle t0 = needle(g, &n, &w);
+  const Vec3 u = t0.v1 - t0.v0;
+  const double size = scale_of({t0.v0, t0.v1, t0.v2});
+  Triangle t1;
+  switch (*rc::gen::inRange(0, 4)) {
+    case 0: {  // through a point of the needle
+      const Vec3 x = *point_in_triangle(t0);
+      const Vec3 d1 = grid_direction(g), d2 = grid_direction(g);
+      t1 = {x + d1, x + d2, x - d1 - d2};
+      break;
+    }
+    case 1: {  // turned by 2^-j about a line of the needle's plane beside the needle
+      const double turn = std::ldexp(1.0, -*rc::gen::inRange(16, 31)), line = *rc::gen::inRange(-8, 9) / 8.0;
+      for (int k = 0; k < 3; ++k) {
+        const double a = *rc::gen::inRange(-8, 17) / 8.0, b = *rc::gen::inRange(-8, 9) / 8.0;
+        t1[k] = t0.v0 + a * u + b * w + (b - line) * turn * u.norm() * n;
+      }
+      break;
+    }
+    case 2: {  // in a parallel plane, a few to hundreds of tol off
+      const double shift = *integer(64) * 1e-8 * size;
+      for (int k = 0; k < 3; ++k)
+        t1[k] = t0.v0 + (*rc::gen::inRange(-8, 17) / 8.0) * u + (*rc::gen::inRange(-8, 9) / 8.0) * w + shift * n;
+      break;
+    }
+    default: {  // another needle, through a point of this one
+      Triangle other = needle(g, nullptr, nullptr);
+      const Vec3 x = *point_in_triangle(t0), y = *point_in_triangle(other);
+      for (int k = 0; k < 3; ++k) t1[k] = other[k] + (x - y);
+      break;
+    }
+  }
+  if (t1.normal() == Vec3::Zero()) t1 = grid_triangle(g);
+  return *rc::gen::element(TrianglePair{t0, t1}, TrianglePair{t1, t0});
+}
+
 TrianglePair far_triangles(TrianglePair p) {
   const double size = std::max(1.0, scale_of(p));
   const Vec3 offset = *lattice_point(size * 1024.0, 64);
@@ -428,18 +489,27 @@ rc::Gen<BoxPair> box_pair() {
 
 rc::Gen<BoxPair> exact_box_pair() { return pair_family(true); }
 
+// The header's domain: zero area, or a smallest height at least 1e-8 of the longest edge
+// (longest^2 <= 1e8 |n|, |n| twice the area).
+bool in_domain(const Triangle& t) {
+  const double longest = std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
+  const double n = t.normal().norm();
+  return n == 0 || longest <= 1e8 * n;
+}
+
 rc::Gen<TrianglePair> triangle_pair() {
-  const rc::Gen<TrianglePair> families = rc::gen::exec([] {
+  const rc::Gen<TrianglePair> families = rc::gen::suchThat(rc::gen::exec([] {
     const Grid g = *grid(false);
-    switch (*rc::gen::weightedElement<int>({{6, 0}, {8, 1}, {3, 2}, {4, 3}, {4, 4}, {2, 5}})) {
+    switch (*rc::gen::weightedElement<int>({{6, 0}, {8, 1}, {3, 2}, {4, 3}, {4, 4}, {2, 5}, {8, 6}})) {
       case 0: return generic_triangles(g);
       case 1: return through_point(g);
       case 2: return coplanar(g);
       case 3: return near_coplanar();
       case 4: return near_touching();
-      default: return zero_area(g);
+      case 5: return zero_area(g);
+      default: return needles();
     }
-  });
+  }), [](const TrianglePair& p) { return in_domain(p.t0) && in_domain(p.t1); });
   return rc::gen::weightedOneOf<TrianglePair>(
       {{7, families}, {1, rc::gen::exec([families] { return far_triangles(*families); })}});
 }

@@ -222,28 +222,49 @@ double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
+// The plane of a triangle, built where rounding hurts least: at the vertex opposite the
+// longest edge, from the two shortest edges. A cross product is off by a few units of
+// 1e-16 of |e_a| |e_b|; with the two long edges of a needle (aspect 1e8) that is 1e8 times
+// its area, and the "normal" then tilts by up to 1e-8 rad: enough to take a triangle
+// turned by 1e-7 for coplanar, or to give a vertex off the plane the wrong side.
+struct Plane3 {
+  Vec3 at;               // the vertex between the two shortest edges
+  Vec3 n;                // e_a x e_b: the normal, |n| twice the area
+  double edges = 0.0;    // |e_a| |e_b|: the scale of n's rounding
+};
+
+Plane3 plane_of(const Triangle& t) {
+  int k = 0;  // the vertex opposite the longest edge
+  double longest = -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const double l = (t[next(i)] - t[after_next(i)]).squaredNorm();
+    if (l > longest) longest = l, k = i;
+  }
+  const Vec3 ea = t[next(k)] - t[k], eb = t[after_next(k)] - t[k];
+  return {t[k], ea.cross(eb), ea.norm() * eb.norm()};
+}
+
 // The side signs of v0, v1, v2 with respect to the plane of `t`, with the test for
-// "all three in the plane". For exactly coplanar input the computed volumes are
-// rounding noise of any sign; a vertex counts as in the plane when its volume is below
-// a bound some ten times its worst rounding error, 8e-16 |v - p| |e1| |e2|. On small
-// integer input (|x| <= 1024) that bound is below 1 while every non-zero volume is an
-// integer: exact input is coplanar only when it truly is.
+// "all three in the plane". d = (q - at) . n is off by at most about 1.2e-15 |q - at|
+// |e_a| |e_b| (the rounding of e_a, e_b, n and the dot product); below a bound of
+// 4e-15 times that its sign is not known, and the vertex counts as in the plane. For a
+// triangle whose shortest edges meet at a good angle, that is a turn of 4e-15 rad. On
+// small integer input (|x| <= 1024) the bound is below 1 while every non-zero volume is
+// an integer: exact input is coplanar only when it truly is.
 struct Sides {
   int sign[3] = {0, 0, 0};
   bool coplanar = false;
 };
 
 Sides sides(const Triangle& t, const Triangle& of) {
-  const Vec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
-  const Vec3 n = e1.cross(e2);
-  const double edges = e1.norm() * e2.norm();
+  const Plane3 plane = plane_of(t);
   Sides s;
-  s.coplanar = true;
   for (int i = 0; i < 3; ++i) {
-    const double d = (of[i] - t.v0).dot(n);
-    s.sign[i] = sign(d);
-    s.coplanar = s.coplanar && std::abs(d) <= 1e-14 * (of[i] - t.v0).norm() * edges;
+    const double d = (of[i] - plane.at).dot(plane.n);
+    const bool in_plane = std::abs(d) <= 4e-15 * (of[i] - plane.at).norm() * plane.edges;
+    s.sign[i] = in_plane ? 0 : sign(d);
   }
+  s.coplanar = s.sign[0] == 0 && s.sign[1] == 0 && s.sign[2] == 0;
   return s;
 }
 
@@ -271,7 +292,7 @@ bool canonical(Triangle& t, const Sides& s) {
 // test with the six edge normals. Projection along a coordinate keeps every
 // separation, and the 2D normals of the edges are exact in the input's numbers.
 bool coplanar_triangles_intersect(const Triangle& t0, const Triangle& t1) {
-  const Vec3 n = t0.normal().cwiseAbs();
+  const Vec3 n = plane_of(t0).n.cwiseAbs();
   const int drop = n.x() >= n.y() && n.x() >= n.z() ? 0 : (n.y() >= n.z() ? 1 : 2);
   const auto flat = [drop](const Vec3& p) { return Vec2(p[next(drop)], p[after_next(drop)]); };
   const Vec2 p[3] = {flat(t0.v0), flat(t0.v1), flat(t0.v2)};
