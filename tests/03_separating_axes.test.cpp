@@ -4,6 +4,9 @@
 #include "separating_axes.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 using namespace labkit;
 using namespace labkit::lab03;
@@ -381,4 +384,76 @@ TEST_CASE("L03S6 robustness: random exact degenerate cases", "[lab03][step6][ora
   check::random_cases("robust.boxes", gen::exact_box_pair(), exact_boxes);
   check::random_cases("robust.triangles", gen::exact_triangle_pair(), exact_triangles);
   check::random_cases("robust.moving_boxes", gen::exact_moving_boxes(), exact_moving);
+}
+
+// ---- The header's preconditions (not graded: tagged [contract], in no step) ----------
+// The reference rejects every kind of invalid input with std::invalid_argument naming
+// the argument; a NaN must never pass for "no axis separates them".
+
+TEST_CASE("L03 preconditions: invalid input is rejected, naming the argument", "[lab03][contract]") {
+  const double nan = std::nan(""), inf = HUGE_VAL;
+  const Box good = cube({0, 0, 0});
+  const auto rejects = [](const std::string& argument, auto&& call) {
+    INFO("the argument " << argument);
+    try {
+      call();
+      FAIL("accepted; the header's preconditions reject it");
+    } catch (const std::invalid_argument& e) {
+      CHECK_THAT(e.what(), Catch::Matchers::Contains(argument));
+    }
+  };
+  std::vector<std::pair<std::string, Box>> bad_boxes;
+  for (const double x : {nan, inf, -inf}) {
+    Box b = good;
+    b.center.y() = x;
+    bad_boxes.push_back({"center", b});
+    b = good;
+    b.half_extents.z() = x;
+    bad_boxes.push_back({"half_extents", b});
+    b = good;
+    b.axes(1, 2) = x;
+    bad_boxes.push_back({"axes", b});
+  }
+  Box negative = good;
+  negative.half_extents.x() = -1;
+  bad_boxes.push_back({"half_extents", negative});
+  Box sheared = good;
+  sheared.axes(0, 1) = 0.5;
+  bad_boxes.push_back({"axes", sheared});
+  Box zero_axes = good;
+  zero_axes.axes = Mat3::Zero();
+  bad_boxes.push_back({"axes", zero_axes});
+
+  for (const auto& [field, bad] : bad_boxes) {
+    rejects("box." + field, [&] { project_box(bad, {1, 0, 0}); });
+    rejects("a." + field, [&] { separated_on_axis(bad, good, {1, 0, 0}); });
+    rejects("b." + field, [&] { separated_on_axis(good, bad, {1, 0, 0}); });
+    rejects("b." + field, [&] { box_axis(good, bad, 0); });
+    rejects("a." + field, [&] { test_boxes(bad, good); });
+    rejects("b." + field, [&] { find_boxes(good, bad); });
+    rejects("a." + field, [&] { test_moving_boxes(bad, {0, 0, 0}, good, {0, 0, 0}, 1); });
+    rejects("b." + field, [&] { find_moving_boxes(good, {0, 0, 0}, bad, {0, 0, 0}, 1); });
+  }
+  for (const double x : {nan, inf}) {
+    rejects("axis", [&] { project_box(good, {x, 0, 0}); });
+    rejects("axis", [&] { separated_on_axis(good, good, {0, x, 0}); });
+    Triangle t = kFloor;
+    t.v1.z() = x;
+    rejects("t0.v1", [&] { test_triangles(t, kFloor); });
+    rejects("t1.v1", [&] { test_triangles(kFloor, t); });
+    rejects("velocity_a", [&] { test_moving_boxes(good, {x, 0, 0}, good, {0, 0, 0}, 1); });
+    rejects("velocity_b", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, x}, 1); });
+    rejects("duration", [&] { test_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, x); });
+    rejects("duration", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, x); });
+  }
+  rejects("duration", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, -1); });
+  rejects("duration", [&] { test_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, -1); });
+  rejects("index", [&] { box_axis(good, good, 15); });
+  rejects("index", [&] { box_axis(good, good, -1); });
+  // The documented results that are not rejections: zero half extents, a zero axis, a
+  // zero-area triangle, a zero duration.
+  CHECK_FALSE(separated_on_axis(good, cube({9, 0, 0}), {0, 0, 0}));
+  CHECK(test_boxes(good, box({1, 1, 1}, {0, 0, 0})));
+  CHECK_FALSE(test_triangles(kFloor, {{1, 1, -1}, {1, 1, 1}, {1, 1, 0}}));
+  CHECK(find_moving_boxes(good, {5, 0, 0}, cube({2, 0, 0}), {0, 0, 0}, 0).contact);
 }
