@@ -437,6 +437,30 @@ MovingBoxes moving(bool exact) {
   return m;
 }
 
+// The ends of the header's scale range: every position (and velocity) times 2^160 or
+// 2^-160 (about 1e48 and 1e-48). Powers of two keep every relation of the case exact.
+double scale_end() { return std::ldexp(1.0, *rc::gen::element(160, -160)); }
+Box scaled(Box b, double f) {
+  b.center *= f;
+  b.half_extents *= f;
+  return b;
+}
+BoxPair scaled(const BoxPair& p, double f) { return {scaled(p.a, f), scaled(p.b, f)}; }
+TrianglePair scaled(TrianglePair p, double f) {
+  for (int k = 0; k < 3; ++k) p.t0[k] *= f, p.t1[k] *= f;
+  return p;
+}
+MovingBoxes scaled(MovingBoxes m, double f) {
+  m.a = scaled(m.a, f), m.b = scaled(m.b, f);
+  m.velocity_a *= f, m.velocity_b *= f;
+  return m;
+}
+// One case in 16 at an end of the scale range.
+template <class T>
+rc::Gen<T> with_scale_ends(rc::Gen<T> gen) {
+  return rc::gen::weightedOneOf<T>({{15, gen}, {1, rc::gen::exec([gen] { return scaled(*gen, scale_end()); })}});
+}
+
 }  // namespace
 
 rc::Gen<Mat3> rotation() {
@@ -459,6 +483,7 @@ rc::Gen<BoxOnAxis> box_on_axis() {
         in.axis = in.box.axes.col(0).cross(in.box.axes.col(*rc::gen::inRange(1, 3)));
     }
     if (*rc::gen::inRange(0, 8) == 0) in.box.center += *lattice_point(1024.0 * std::max(1.0, scale_of(in)), 64);
+    if (*rc::gen::inRange(0, 16) == 0) in.box = scaled(in.box, scale_end());
     return in;
   });
 }
@@ -484,7 +509,8 @@ rc::Gen<BoxPairOnAxis> box_pair_on_axis() {
 
 rc::Gen<BoxPair> box_pair() {
   const rc::Gen<BoxPair> families = pair_family(false);
-  return rc::gen::weightedOneOf<BoxPair>({{7, families}, {1, rc::gen::exec([families] { return far_away(*families); })}});
+  return with_scale_ends(
+      rc::gen::weightedOneOf<BoxPair>({{7, families}, {1, rc::gen::exec([families] { return far_away(*families); })}}));
 }
 
 rc::Gen<BoxPair> exact_box_pair() { return pair_family(true); }
@@ -510,8 +536,8 @@ rc::Gen<TrianglePair> triangle_pair() {
       default: return needles();
     }
   }), [](const TrianglePair& p) { return in_domain(p.t0) && in_domain(p.t1); });
-  return rc::gen::weightedOneOf<TrianglePair>(
-      {{7, families}, {1, rc::gen::exec([families] { return far_triangles(*families); })}});
+  return with_scale_ends(rc::gen::weightedOneOf<TrianglePair>(
+      {{7, families}, {1, rc::gen::exec([families] { return far_triangles(*families); })}}));
 }
 
 rc::Gen<TrianglePair> exact_triangle_pair() {
@@ -526,7 +552,7 @@ rc::Gen<TrianglePair> exact_triangle_pair() {
 }
 
 rc::Gen<MovingBoxes> moving_boxes() {
-  return rc::gen::exec([] { return moving(false); });
+  return with_scale_ends(rc::gen::exec([] { return moving(false); }));
 }
 
 rc::Gen<MovingBoxes> exact_moving_boxes() {
