@@ -97,7 +97,7 @@ std::string why_boxes(const BoxPair& in, bool expected_intersecting) {
   std::string why = "no axis separates the boxes: their projections overlap on all 15 axes (least penetration " +
                     fmt(least) + "), your answer says separated";
   if (least <= 1e-9 * size) why += "; boxes that only touch intersect: separation is strict, |s| > r_A + r_B";
-  if (shortest >= 0 && shortest_length < 1e-6)
+  else if (shortest >= 0 && shortest_length < 1e-6)
     why += "; " + axis_name(shortest) + " has length " + fmt(shortest_length) +
            ": nearly parallel edges (a zero axis separates nothing); compute its radius along the vector itself, "
            "B_m . L, not with R(i, n)";

@@ -32,6 +32,10 @@ labkit_mutant(03 separating_axes NAME axis_not_toward_b STEP 3 SAYS "from A towa
   FIND "if (x.s < 0) c.axis = -c.axis;"
   REPLACE "")
 
+labkit_mutant(03 separating_axes NAME deepest_axis STEP 3 SAYS "least penetration"
+  FIND "if (contact.axis_index < 0 || depth < least) {"
+  REPLACE "if (contact.axis_index < 0 || depth > least) {")
+
 labkit_mutant(03 separating_axes NAME coplanar_is_a_miss STEP 4 SAYS "coplanar" "overlap in their plane"
   FIND "if (s1.coplanar || s0.coplanar) return coplanar_triangles_intersect(t0, t1);"
   REPLACE "if (s1.coplanar || s0.coplanar) return false;")
@@ -67,3 +71,9 @@ labkit_mutant(03 separating_axes NAME times_from_rounding_noise STEP 5 SAYS "fir
 labkit_mutant(03 separating_axes NAME touching_boxes_separate STEP 2 SAYS "nearly parallel" "zero axis"
   FIND "bool separates(const AxisTest& x) { return std::abs(x.s) > x.r; }"
   REPLACE "bool separates(const AxisTest& x) { return std::abs(x.s) >= x.r; }")
+
+# >= for >, with the usual guard that skips short axes (so that parallel edges, a zero
+# axis, no longer give it away): only exactly touching boxes show it.
+labkit_mutant(03 separating_axes NAME touching_faces_apart STEP 6 SAYS "only touch" "strict"
+  FIND "bool separates(const AxisTest& x) { return std::abs(x.s) > x.r; }"
+  REPLACE "bool separates(const AxisTest& x) { return x.length2 > 1e-20 && std::abs(x.s) >= x.r; }")

@@ -330,12 +330,13 @@ Outcome exact_moving(const MovingBoxes& in) {
   return run_moving_find(in, Rules::exact);
 }
 
-// The example's own expectation, then the judge's rules.
+// The example's own expectation, then the judge's rules; a failure of the first shows
+// the judge's reason when the judge fails it too.
 template <class Input, class Own, class Rules>
 auto both(Own own, Rules rules) {
   return [=](const Input& in) {
     const Outcome o = own(in);
-    return o.verdict == Outcome::Verdict::fail ? o : rules(in);
+    return o.verdict == Outcome::Verdict::fail ? with_reason(o, [&] { return rules(in); }) : rules(in);
   };
 }
 
@@ -353,7 +354,7 @@ TEST_CASE("L03S6 robustness: touching and parallel boxes", "[lab03][step6]") {
       e.near("depth", got.depth, 0.0, 0.0);
       if (index >= 0) e.near("axis", got.axis, axis, 0.0);
       const Outcome own = e.outcome();
-      return own.verdict == Outcome::Verdict::fail ? own : exact_boxes(in);
+      return own.verdict == Outcome::Verdict::fail ? with_reason(own, [&] { return exact_boxes(in); }) : exact_boxes(in);
     };
   };
   check::example(q, "face to face: depth exactly 0", BoxPair{a, cube({3, 0, 0})}, touching(0, {1, 0, 0}));
@@ -367,7 +368,7 @@ TEST_CASE("L03S6 robustness: touching and parallel boxes", "[lab03][step6]") {
   check::example(q, "a point on A's face", BoxPair{a, box({2, 1, 1}, {0, 0, 0})}, touching(0, {1, 0, 0}));
   check::example(q, "a gap of 1", BoxPair{a, cube({4, 0, 0})}, [](const BoxPair& in) {
     const Outcome o = expect_bool("test_boxes", test_boxes(in.a, in.b), false);
-    return o.verdict == Outcome::Verdict::fail ? o : exact_boxes(in);
+    return o.verdict == Outcome::Verdict::fail ? with_reason(o, [&] { return exact_boxes(in); }) : exact_boxes(in);
   });
 }
 
