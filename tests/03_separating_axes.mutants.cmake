@@ -64,7 +64,7 @@ labkit_mutant(03 separating_axes NAME an_instant_is_no_contact STEP 5 SAYS "sing
   FIND "if (first - last > first_error + last_error) return {};"
   REPLACE "return {};")
 
-labkit_mutant(03 separating_axes NAME times_from_rounding_noise STEP 5 SAYS "first must be"
+labkit_mutant(03 separating_axes NAME times_from_rounding_noise STEP 5 SAYS "rounding noise"
   FIND "if (std::abs(x.ds) * duration <= noise) {"
   REPLACE "if (x.ds == 0) {")
 
