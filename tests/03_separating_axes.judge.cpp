@@ -164,9 +164,16 @@ Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got) {
   Expect e;
   for (int k = 0; k < 15; ++k) {
     const Vec3 exact = oracle::box_pair_axis(in.a, in.b, k);
-    if ((got[k] - exact).norm() > 1e-12)
-      e.that(axis_name(k), false, fmt(got[k]), fmt(exact),
-             axis_name(k) + " is off by " + fmt((got[k] - exact).norm()) + " (tolerance 1e-12)");
+    if ((got[k] - exact).norm() > 1e-12) {
+      std::string why = k < 3   ? axis_name(k) + " is A's column " + std::to_string(k)
+                        : k < 6 ? axis_name(k) + " is B's column " + std::to_string(k - 3)
+                                : axis_name(k) + " is that cross product as it is (not normalised)";
+      why += ", " + fmt(exact) + "; yours is off by " + fmt((got[k] - exact).norm()) + " (tolerance 1e-12)";
+      if (exact.norm() > 0 && (got[k] + exact).norm() <= 1e-12) why += ": the opposite vector (the order A_i x B_j?)";
+      else if (k >= 6 && exact.norm() > 0 && std::abs(got[k].norm() - 1) <= 1e-12 && got[k].cross(exact).norm() <= 1e-12 * exact.norm())
+        why += ": normalised; box_axis returns it unnormalised";
+      e.that(axis_name(k), false, fmt(got[k]), fmt(exact), why);
+    }
   }
   return e.outcome();
 }

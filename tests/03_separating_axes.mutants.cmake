@@ -9,6 +9,10 @@ labkit_mutant(03 separating_axes NAME touching_intervals_separate STEP 1 SAYS "t
   FIND "return std::abs(s) > r;  // a zero axis gives 0 > 0: never separated"
   REPLACE "return std::abs(s) >= r;")
 
+labkit_mutant(03 separating_axes NAME edge_axis_normalized STEP 2 SAYS "not normalised"
+  FIND "return a.axes.col(i).cross(b.axes.col(j));"
+  REPLACE "return a.axes.col(i).cross(b.axes.col(j)).normalized();")
+
 labkit_mutant(03 separating_axes NAME textbook_radius STEP 2 SAYS "nearly parallel"
   FIND "b[m] * std::abs(C(i, n)) + b[n] * std::abs(C(i, m))"
   REPLACE "b[m] * std::abs(R(i, n)) + b[n] * std::abs(R(i, m))")

@@ -137,7 +137,7 @@ TEST_CASE("L03S2 the 15 axes of two boxes: worked examples", "[lab03][step2]") {
                    e.near("axis 7 = A_0 x B_1", box_axis(in.a, in.b, 7), Vec3(0, 0, 0.6), 1e-15);
                    e.near("axis 12 = A_2 x B_0", box_axis(in.a, in.b, 12), Vec3(-0.8, 0.6, 0), 1e-15);
                    e.near("axis 14 = A_2 x B_2 (parallel: zero)", box_axis(in.a, in.b, 14), Vec3(0, 0, 0), 1e-15);
-                   return e.outcome();
+                   return with_reason(e.outcome(), [&] { return judge::box_axes(in, all_axes(in)); });
                  });
   const auto expect = [](bool intersecting) {
     return [intersecting](const BoxPair& in) {
