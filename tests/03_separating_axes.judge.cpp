@@ -1,6 +1,7 @@
 #include "03_separating_axes.judge.h"
 
 #include "common/oracle/oracle.h"
+#include "common/oracle/predicates.h"
 
 #include <algorithm>
 #include <cmath>
@@ -68,15 +69,65 @@ bool meet(const MovingBoxes& in, double from, double to, double slack) {
   return oracle::moving_boxes_meet(in.a, in.velocity_a, in.b, in.velocity_b, from, to, slack);
 }
 
+// Why a yes/no answer about two static boxes is wrong, in the contract's words: the axis
+// that separates them and its gap, or that none does, and the likely cause.
+std::string why_boxes(const BoxPair& in, bool expected_intersecting) {
+  const double size = scale_of(in);
+  int best = -1, shortest = -1;
+  double gap = 0.0, least = 0.0, shortest_length = 1.0;
+  bool face_separates = false;
+  for (int k = 0; k < 15; ++k) {
+    const Vec3 axis = oracle::box_pair_axis(in.a, in.b, k);
+    const double length = axis.norm();
+    if (k >= 6 && length < shortest_length) shortest_length = length, shortest = k;
+    if (length == 0) continue;
+    const double depth = least_depth_along(in, axis);
+    if (-depth > gap) gap = -depth, best = k;
+    if (depth < 0 && k < 6) face_separates = true;
+    if (depth >= 0 && (k < 6 || length >= kSurelyIncluded) && (least == 0.0 || depth < least)) least = depth;
+  }
+  if (!expected_intersecting) {
+    if (best < 0) return "the boxes are apart (flat boxes, beside each other in a plane), your answer says they intersect";
+    std::string why = axis_name(best) + " is a separating axis: the boxes' projections on it are apart (gap " +
+                      fmt(gap) + " along the unit axis); your answer says they intersect";
+    if (best >= 6 && !face_separates) why += "; only an edge axis A_i x B_j separates them: are all 9 edge axes tested?";
+    else if (gap < 1e-6 * size) why += "; a gap this small is lost to an epsilon added to the radii";
+    return why;
+  }
+  std::string why = "no axis separates the boxes: their projections overlap on all 15 axes (least penetration " +
+                    fmt(least) + "), your answer says separated";
+  if (least <= 1e-9 * size) why += "; boxes that only touch intersect: separation is strict, |s| > r_A + r_B";
+  else if (shortest >= 0 && shortest_length < 1e-6)
+    why += "; " + axis_name(shortest) + " has length " + fmt(shortest_length) +
+           ": nearly parallel edges (a zero axis separates nothing); compute its radius along the vector itself, "
+           "B_m . L, not with R(i, n)";
+  return why;
+}
+
+Outcome boxes_verdict(const BoxPair& in, bool got, bool doubt, Rules rules) {
+  const bool expected = oracle::boxes_intersect(in.a, in.b);
+  Outcome o = verdict(got, expected, doubt, rules, "intersecting", "separated");
+  if (o.verdict == Outcome::Verdict::fail) o.why = why_boxes(in, expected);
+  return o;
+}
+
 }  // namespace
 
 Outcome project_box(const BoxOnAxis& in, const Projection& got) {
   const double tol = tolerance_of(in) * in.axis.norm();
   const oracle::BoxProjection exact = oracle::box_projection(in.box, in.axis);
-  Expect e;
-  e.near("center", got.center, exact.center, tol);
-  e.near("radius", got.radius, exact.radius, tol);
-  return e.outcome();
+  const std::string answer = "center " + fmt(got.center) + ", radius " + fmt(got.radius);
+  const std::string expected = "center " + fmt(exact.center) + ", radius " + fmt(exact.radius);
+  if (!(std::abs(got.center - exact.center) <= tol))
+    return fail(expected, answer, "the centre of the interval is c . L = " + fmt(exact.center) + ", yours is off by " +
+                                      fmt(std::abs(got.center - exact.center)) + " (tolerance " + fmt(tol) + ")");
+  if (!(std::abs(got.radius - exact.radius) <= tol)) {
+    std::string why = "the radius is sum_k h_k |A_k . L| = " + fmt(exact.radius) + ", yours is off by " +
+                      fmt(std::abs(got.radius - exact.radius)) + " (tolerance " + fmt(tol) + ")";
+    if (got.radius < exact.radius) why += "; too small: is each term taken with its absolute value?";
+    return fail(expected, answer, why);
+  }
+  return pass();
 }
 
 Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules) {
@@ -96,30 +147,42 @@ Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules) {
     doubt = kBoxDoubt * tolerance_of(pair) + 2 * std::sqrt(3.0) * 1e-9 * reach;
   }
   const double overlap = least_depth_along(pair, in.axis);
-  return verdict(got, expected, in.axis != Vec3::Zero() && std::abs(overlap) <= doubt, rules, "separated",
-                 "not separated (the projections overlap or touch)");
+  Outcome o = verdict(got, expected, in.axis != Vec3::Zero() && std::abs(overlap) <= doubt, rules, "separated",
+                      "not separated (the projections overlap or touch)");
+  if (o.verdict != Outcome::Verdict::fail) return o;
+  if (in.axis == Vec3::Zero()) o.why = "a zero axis separates nothing (0 > 0 is false); your answer says separated";
+  else if (expected) o.why = "the projections on L are apart by a gap of " + fmt(-overlap) + " (along the unit axis): "
+                             "|(c_B - c_A) . L| > r_A + r_B; your answer says not separated";
+  else if (overlap <= tolerance_of(pair)) o.why = "the projections on L touch (overlap " + fmt(overlap) +
+                                                  "): touching intervals are not separated, the test is strict (>)";
+  else o.why = "the projections on L overlap by " + fmt(overlap) + " (along the unit axis): |(c_B - c_A) . L| <= r_A + "
+               "r_B; your answer says separated (is each radius term h_k |A_k . L| with the absolute value?)";
+  return o;
 }
 
 Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got) {
   Expect e;
   for (int k = 0; k < 15; ++k) {
     const Vec3 exact = oracle::box_pair_axis(in.a, in.b, k);
-    if ((got[k] - exact).norm() > 1e-12)
-      e.that(axis_name(k), false, fmt(got[k]), fmt(exact),
-             axis_name(k) + " is off by " + fmt((got[k] - exact).norm()) + " (tolerance 1e-12)");
+    if ((got[k] - exact).norm() > 1e-12) {
+      std::string why = k < 3   ? axis_name(k) + " is A's column " + std::to_string(k)
+                        : k < 6 ? axis_name(k) + " is B's column " + std::to_string(k - 3)
+                                : axis_name(k) + " is that cross product as it is (not normalised)";
+      why += ", " + fmt(exact) + "; yours is off by " + fmt((got[k] - exact).norm()) + " (tolerance 1e-12)";
+      if (exact.norm() > 0 && (got[k] + exact).norm() <= 1e-12) why += ": the opposite vector (the order A_i x B_j?)";
+      else if (k >= 6 && exact.norm() > 0 && std::abs(got[k].norm() - 1) <= 1e-12 && got[k].cross(exact).norm() <= 1e-12 * exact.norm())
+        why += ": normalised; box_axis returns it unnormalised";
+      e.that(axis_name(k), false, fmt(got[k]), fmt(exact), why);
+    }
   }
   return e.outcome();
 }
 
-Outcome test_boxes(const BoxPair& in, bool got, Rules rules) {
-  return verdict(got, oracle::boxes_intersect(in.a, in.b), boxes_in_doubt(in, rules), rules, "intersecting",
-                 "separated");
-}
+Outcome test_boxes(const BoxPair& in, bool got, Rules rules) { return boxes_verdict(in, got, boxes_in_doubt(in, rules), rules); }
 
 Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules) {
-  const bool expected = oracle::boxes_intersect(in.a, in.b);
   const bool doubt = boxes_in_doubt(in, rules);
-  const Outcome decision = verdict(got.intersecting, expected, doubt, rules, "intersecting", "separated");
+  const Outcome decision = boxes_verdict(in, got.intersecting, doubt, rules);
   if (decision.verdict == Outcome::Verdict::fail) return decision;
 
   const double tol = tolerance_of(in);
@@ -138,11 +201,19 @@ Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules) {
   if (length > 0 && got.axis.cross(numbered / length).norm() > 1e-9 + direction_slack(length, got.axis_index))
     return fail(axis_name(got.axis_index) + " = +-" + fmt(Vec3(numbered / length)), answer,
                 "the axis is not parallel to the axis its index names");
+  const double offset = (in.b.center - in.a.center).dot(got.axis);
+  if (offset < -tol)
+    return fail("the axis pointing from A toward B", answer,
+                "the axis must point from A toward B: (c_B - c_A) . axis = " + fmt(offset) +
+                    " < 0 (flip L when (c_B - c_A) . L < 0)");
   const double depth = oracle::box_depth_along(in.a, in.b, got.axis);
-  if (std::abs(got.depth - depth) > tol)
-    return fail("depth " + fmt(depth) + " along your axis", answer,
-                "the depth is off by " + fmt(std::abs(got.depth - depth)) + " (tolerance " + fmt(tol) +
-                    "); it is r_A + r_B - |(c_B - c_A) . axis|, with the axis pointing from A toward B");
+  if (std::abs(got.depth - depth) > tol) {
+    std::string why = "the depth must be r_A + r_B - |(c_B - c_A) . u| along the unit axis u: " + fmt(depth) +
+                      ", yours is off by " + fmt(std::abs(got.depth - depth)) + " (tolerance " + fmt(tol) + ")";
+    if (got.axis_index >= 6 && std::abs(got.depth - depth * length) <= tol + 1e-12 * std::abs(depth))
+      why += "; " + fmt(got.depth) + " is |L| = " + fmt(length) + " times it: divide by |L| (a unit axis)";
+    return fail("depth " + fmt(depth) + " along your axis", answer, why);
+  }
 
   if (!got.intersecting) {
     // A separating axis must separate, with B on its positive side: exactly, or but for
@@ -165,11 +236,64 @@ Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules) {
     const double least = least_depth_along(in, axis);
     if (got.depth > least + slack)
       return fail(axis_name(k) + " with depth " + fmt(least) + " (or another at most that deep)", answer,
-                  "that is not the least penetration: " + axis_name(k) + " = " + fmt(Vec3(axis / n)) + " has depth " +
-                      fmt(least));
+                  "intersecting boxes report the axis of least penetration: " + axis_name(k) + " = " +
+                      fmt(Vec3(axis / n)) + " has depth " + fmt(least) + ", less than your " + fmt(got.depth));
   }
   return decision;
 }
+
+namespace {
+
+// Longest edge over smallest height: how much of a needle the triangle is.
+double aspect(const Triangle& t) {
+  const double longest = std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
+  const double n = t.normal().norm();
+  return n == 0 ? 0.0 : longest / n;
+}
+
+// The largest distance of `of`'s vertices from t's plane, over S (rounded; for hints).
+double off_plane(const Triangle& t, const Triangle& of, double size) {
+  const Vec3 n = t.normal().normalized();
+  double d = 0.0;
+  for (int k = 0; k < 3; ++k) d = std::max(d, std::abs((of[k] - t.v0).dot(n)));
+  return d / size;
+}
+
+bool coplanar(const TrianglePair& in) {
+  for (int k = 0; k < 3; ++k)
+    if (oracle::orientation(in.t0.v0, in.t0.v1, in.t0.v2, in.t1[k]) != 0) return false;
+  return true;
+}
+
+std::string why_triangles(const TrianglePair& in, bool expected) {
+  const double size = std::max(scale_of(in), 1e-300);
+  if (expected) {
+    if (coplanar(in))
+      return "coplanar triangles intersect when they overlap in their plane, and these do; your answer says they do "
+             "not (all volumes d = 0 is coplanar, not \"all on one side\")";
+    if (oracle::triangle_pair_in_doubt(in.t0, in.t1, 1e-12 * size))
+      return "the triangles touch (at a point or along a segment): closed triangles that touch intersect, and an "
+             "interval end equal to the other's (orient = 0) is an overlap; your answer says they do not";
+    std::string why = "the triangles intersect: their segments on the line where the planes meet overlap; your "
+                      "answer says they do not";
+    if (std::max(off_plane(in.t0, in.t1, size), off_plane(in.t1, in.t0, size)) < 1e-12)
+      why += "; they are coplanar up to rounding: a volume d within its rounding is in the plane (sign 0)";
+    return why;
+  }
+  if (oracle::is_degenerate(in.t0) || oracle::is_degenerate(in.t1))
+    return "a zero-area triangle has no plane and never intersects anything; your answer says they intersect";
+  std::string why = "the triangles are apart: they share no point; your answer says they intersect";
+  const double needle = std::max(aspect(in.t0), aspect(in.t1));
+  if (needle > 1e4)
+    why += "; one is a needle (aspect " + fmt(needle) + "): take its normal from its two shortest edges and count a "
+           "vertex in its plane only within that construction's rounding, not a bound relative to its long edges";
+  else if (std::min(off_plane(in.t0, in.t1, size), off_plane(in.t1, in.t0, size)) < 1e-12)
+    why += "; they are coplanar up to rounding: volumes d of rounding size have noise signs; a vertex counts as in "
+           "the plane when |d| is within its rounding";
+  return why;
+}
+
+}  // namespace
 
 Outcome test_triangles(const TrianglePair& in, bool got, Rules rules) {
   const bool expected = oracle::triangles_intersect(in.t0, in.t1);
@@ -187,8 +311,29 @@ Outcome test_triangles(const TrianglePair& in, bool got, Rules rules) {
         doubt = check::flips_under_perturbation(in, [](const TrianglePair& p) { return oracle::triangles_intersect(p.t0, p.t1); });
     }
   }
-  return verdict(got, expected, doubt, rules, "intersecting", "not intersecting");
+  Outcome o = verdict(got, expected, doubt, rules, "intersecting", "not intersecting");
+  if (o.verdict == Outcome::Verdict::fail) o.why = why_triangles(in, expected);
+  return o;
 }
+
+namespace {
+
+// An axis along which B barely moves relative to A (by less than 1e-12 S over the whole
+// motion, but not at all would be exact): the classic source of noise times.
+std::string noise_hint(const MovingBoxes& in) {
+  const Vec3 w = in.velocity_b - in.velocity_a;
+  for (int k = 0; k < 15; ++k) {
+    const Vec3 axis = oracle::box_pair_axis(in.a, in.b, k);
+    if (axis.norm() < kSurelyIncluded) continue;
+    const double moved = std::abs(w.dot(axis)) / axis.norm() * in.duration;
+    if (moved > 0 && moved <= 1e-3 * tolerance_of(in))
+      return "; along " + axis_name(k) + " B moves by only " + fmt(moved) + " over the whole motion, below the rounding "
+             "of s and r: times (r - s) / ds from it are rounding noise (test that axis as a static one)";
+  }
+  return "";
+}
+
+}  // namespace
 
 Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules) {
   const bool expected = meet(in, 0.0, in.duration, 0.0);
@@ -196,7 +341,41 @@ Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules) {
       rules == Rules::random &&
       std::abs(oracle::moving_boxes_swept_margin(in.a, in.velocity_a, in.b, in.velocity_b, in.duration)) <=
           kMovingDoubt * tolerance_of(in);
-  return verdict(got, expected, doubt, rules, "they touch at some time in [0, duration]", "they never touch");
+  Outcome o = verdict(got, expected, doubt, rules, "they touch at some time in [0, duration]", "they never touch");
+  if (o.verdict != Outcome::Verdict::fail) return o;
+  if (expected) {
+    const oracle::ContactTimes t = oracle::moving_boxes_contact(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
+    o.why = "the boxes touch while t runs from " + fmt(t.first) + " to " + fmt(t.last) +
+            ": contact on all 15 axes at once; your answer says they never touch";
+    const Vec3 w = in.velocity_b - in.velocity_a;
+    if (t.last - t.first <= 1e-9 * std::max(in.duration, 1e-300))
+      o.why += "; they touch for a single instant: first == last (to rounding) is a contact";
+    else if (w.dot(in.b.center - in.a.center) < 0)
+      o.why += "; B approaches A: on an axis where ds = W . L < 0, (r - s) / ds is the entering time, not the leaving";
+    return o;
+  }
+  // Never: which axis keeps the swept boxes apart?
+  Box a_end = in.a, b_end = in.b;
+  a_end.center += in.duration * in.velocity_a;
+  b_end.center += in.duration * in.velocity_b;
+  bool swept_15 = false;
+  for (int k = 0; k < 15 && !swept_15; ++k) {
+    const Vec3 axis = oracle::box_pair_axis(in.a, in.b, k);
+    if (axis.isZero()) continue;
+    for (const double sign : {1.0, -1.0})
+      swept_15 = swept_15 || (oracle::box_depth_along(in.a, in.b, sign * axis) < 0 &&
+                              oracle::box_depth_along(a_end, b_end, sign * axis) < 0);
+  }
+  o.why = "the boxes never touch: a separating axis keeps them apart at every time in [0, duration]; your answer "
+          "says they touch";
+  const double moved = (in.velocity_b - in.velocity_a).norm() * in.duration;
+  if (moved <= 1e-3 * tolerance_of(in))
+    o.why += "; B moves by only " + fmt(moved) + " relative to A over the whole motion, below the rounding of s and r: "
+             "times (r - s) / ds from such motion are rounding noise (test that axis as a static one)";
+  else if (!swept_15)
+    o.why += "; none of the 15 axes separates the swept boxes here: only one of table 6.7's axes W x A_i or W x B_j "
+             "(W = v_B - v_A) does";
+  return o;
 }
 
 Outcome find_moving_boxes(const MovingBoxes& in, const ContactInterval& got, Rules rules) {
@@ -211,14 +390,18 @@ Outcome find_moving_boxes(const MovingBoxes& in, const ContactInterval& got, Rul
   const std::string within = " (tolerance " + fmt(tol) + ")";
   // At the reported times the boxes must be within tol of touching...
   if (!meet(in, got.first, got.first, tol))
-    return fail(expected, answer, "at t = first the boxes are more than tol apart along some axis" + within);
+    return fail(expected, answer, "first must be a time of contact: at your first = " + fmt(got.first) +
+                                      " the boxes are more than tol apart along some axis" + within + noise_hint(in));
   if (!meet(in, got.last, got.last, tol))
-    return fail(expected, answer, "at t = last the boxes are more than tol apart along some axis" + within);
+    return fail(expected, answer, "last must be a time of contact: at your last = " + fmt(got.last) +
+                                      " the boxes are more than tol apart along some axis" + within + noise_hint(in));
   // ...and outside [first, last] never overlap by more than tol.
   if (got.first > 0 && meet(in, 0.0, got.first, -tol))
-    return fail(expected, answer, "before t = first the boxes already overlap by more than tol" + within);
+    return fail(expected, answer, "first must be the first contact: before your first = " + fmt(got.first) +
+                                      " the boxes already overlap by more than tol" + within + noise_hint(in));
   if (got.last < end && meet(in, got.last, end, -tol))
-    return fail(expected, answer, "after t = last the boxes still overlap by more than tol" + within);
+    return fail(expected, answer, "last must be the last contact: after your last = " + fmt(got.last) +
+                                      " the boxes still overlap by more than tol" + within + noise_hint(in));
   return decision;
 }
 

@@ -4,6 +4,9 @@
 #include "separating_axes.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <utility>
+#include <vector>
 
 using namespace labkit;
 using namespace labkit::lab03;
@@ -55,6 +58,15 @@ Outcome expect_bool(const std::string& field, bool got, bool expected) {
   return e.outcome();
 }
 
+// An example's own expectation; when it fails, the judge's reason (the contract's rule
+// the answer broke) replaces the field-by-field one.
+template <class Judge>
+Outcome with_reason(Outcome own, Judge&& judge) {
+  if (own.verdict != Outcome::Verdict::fail) return own;
+  const Outcome o = judge();
+  return o.verdict == Outcome::Verdict::fail ? o : own;
+}
+
 std::array<Vec3, 15> all_axes(const BoxPair& in) {
   std::array<Vec3, 15> axes;
   for (int k = 0; k < 15; ++k) axes[std::size_t(k)] = box_axis(in.a, in.b, k);
@@ -80,7 +92,7 @@ TEST_CASE("L03S1 project a box on an axis: worked examples", "[lab03][step1]") {
       Expect e;
       e.near("center", got.center, center, 1e-12);
       e.near("radius", got.radius, radius, 1e-12);
-      return e.outcome();
+      return with_reason(e.outcome(), [&] { return judge::project_box(in, got); });
     };
   };
   check::example("project_box", "onto x: radius 5 * 0.6 + 2.5 * 0.8 = 5", BoxOnAxis{b, {1, 0, 0}}, expect(1, 5));
@@ -91,7 +103,9 @@ TEST_CASE("L03S1 project a box on an axis: worked examples", "[lab03][step1]") {
   const Box a = cube({0, 0, 0});
   const auto separated = [](bool expected) {
     return [expected](const BoxPairOnAxis& in) {
-      return expect_bool("separated_on_axis", separated_on_axis(in.a, in.b, in.axis), expected);
+      const bool got = separated_on_axis(in.a, in.b, in.axis);
+      return with_reason(expect_bool("separated_on_axis", got, expected),
+                         [&] { return judge::separated_on_axis(in, got, Rules::exact); });
     };
   };
   check::example("separated_on_axis", "apart along x: 7 > 1 + 5", BoxPairOnAxis{a, box({7, 2, 0}, {5, 2.5, 1}, three_four_five()), {1, 0, 0}},
@@ -123,10 +137,13 @@ TEST_CASE("L03S2 the 15 axes of two boxes: worked examples", "[lab03][step2]") {
                    e.near("axis 7 = A_0 x B_1", box_axis(in.a, in.b, 7), Vec3(0, 0, 0.6), 1e-15);
                    e.near("axis 12 = A_2 x B_0", box_axis(in.a, in.b, 12), Vec3(-0.8, 0.6, 0), 1e-15);
                    e.near("axis 14 = A_2 x B_2 (parallel: zero)", box_axis(in.a, in.b, 14), Vec3(0, 0, 0), 1e-15);
-                   return e.outcome();
+                   return with_reason(e.outcome(), [&] { return judge::box_axes(in, all_axes(in)); });
                  });
   const auto expect = [](bool intersecting) {
-    return [intersecting](const BoxPair& in) { return expect_bool("test_boxes", test_boxes(in.a, in.b), intersecting); };
+    return [intersecting](const BoxPair& in) {
+      const bool got = test_boxes(in.a, in.b);
+      return with_reason(expect_bool("test_boxes", got, intersecting), [&] { return judge::test_boxes(in, got, Rules::exact); });
+    };
   };
   check::example("test_boxes", "apart along A_0", BoxPair{cube({0, 0, 0}), cube({3, 0, 0})}, expect(false));
   check::example("test_boxes", "overlapping", BoxPair{cube({0, 0, 0}), turned({0, 0.25, 0.5})}, expect(true));
@@ -170,10 +187,11 @@ TEST_CASE("L03S3 separating or least-penetration axis: worked examples", "[lab03
       e.equal("intersecting", got.intersecting, intersecting);
       e.that("axis_index", got.axis_index == index || got.axis_index == other_index, describe(got.axis_index),
              other_index == index ? describe(index) : describe(index) + " or " + describe(other_index),
-             "a tie between the two: either index");
+             other_index == index ? "the axis is axis " + describe(index)
+                                  : "axes " + describe(index) + " and " + describe(other_index) + " tie: either index");
       e.near("axis", got.axis, axis, 1e-12);
       e.near("depth", got.depth, depth, 1e-12);
-      return e.outcome();
+      return with_reason(e.outcome(), [&] { return judge::find_boxes(in, got, Rules::exact); });
     };
   };
   const Box a = box({0, 0, 0}, {2, 1, 1});
@@ -202,7 +220,9 @@ TEST_CASE("L03S3 separating or least-penetration axis: random cases", "[lab03][s
 TEST_CASE("L03S4 triangle against triangle: worked examples", "[lab03][step4]") {
   const auto expect = [](bool intersecting) {
     return [intersecting](const TrianglePair& in) {
-      return expect_bool("test_triangles", test_triangles(in.t0, in.t1), intersecting);
+      const bool got = test_triangles(in.t0, in.t1);
+      return with_reason(expect_bool("test_triangles", got, intersecting),
+                         [&] { return judge::test_triangles(in, got, Rules::exact); });
     };
   };
   // T1 in the plane x = 1: T0's segment on the common line is y in [0, 3], T1's [-3, 1].
@@ -223,6 +243,23 @@ TEST_CASE("L03S4 triangle against triangle: worked examples", "[lab03][step4]") 
                  expect(true));
   check::example("test_triangles", "a zero-area triangle never intersects", TrianglePair{kFloor, {{1, 1, -1}, {1, 1, 1}, {1, 1, 0}}},
                  expect(false));
+  // The header's zero signs: a vertex in the other's plane.
+  check::example("test_triangles", "an edge in the other's plane, across it (signs 0 0 +)",
+                 TrianglePair{kFloor, {{1, -1, 0}, {1, 3, 0}, {1, 1, 4}}}, expect(true));
+  check::example("test_triangles", "an edge in the other's plane, beyond its long edge (signs 0 0 +)",
+                 TrianglePair{kFloor, {{3, 3, 0}, {5, 1, 0}, {4, 2, 4}}}, expect(false));
+  check::example("test_triangles", "touching the plane at one vertex, inside (signs 0 - -)",
+                 TrianglePair{kFloor, {{1, 1, 0}, {1, 2, -2}, {2, 1, -3}}}, expect(true));
+  check::example("test_triangles", "touching the plane at one vertex, outside (signs 0 - -)",
+                 TrianglePair{kFloor, {{5, 5, 0}, {5, 6, -2}, {6, 5, -3}}}, expect(false));
+  // A needle 2^-24 wide (aspect 6.7e7) and a triangle in the plane z = e (x - 2), turned
+  // by e = 2^-22 against it: each crosses the other's plane, but where T1 passes over the
+  // needle (x from 7/3 to 3) it is at least e/3 (20 tol) above it. Apart. A coplanarity
+  // bound relative to the needle's two long edges instead of its area calls them coplanar.
+  const double e = std::ldexp(1.0, -22);
+  check::example("test_triangles", "a needle and a triangle turned by 2^-22 against it",
+                 TrianglePair{{{0, 0, 0}, {4, 0, 0}, {4, e / 4, 0}}, {{1, 2, -e}, {3, 2, e}, {3, -1, e}}},
+                 expect(false));
 }
 
 TEST_CASE("L03S4 triangle against triangle: random cases", "[lab03][step4][oracle]") {
@@ -237,14 +274,18 @@ TEST_CASE("L03S5 two moving boxes: worked examples", "[lab03][step5]") {
   const auto expect = [](bool contact, double first, double last) {
     return [=](const MovingBoxes& in) {
       const ContactInterval got = find_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
+      const bool tested = test_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
       Expect e;
-      e.equal("test_moving_boxes", test_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration), contact);
+      e.equal("test_moving_boxes", tested, contact);
       e.equal("contact", got.contact, contact);
       if (contact && got.contact) {
         e.near("first", got.first, first, 1e-12);
         e.near("last", got.last, last, 1e-12);
       }
-      return e.outcome();
+      return with_reason(e.outcome(), [&] {
+        const Outcome o = judge::test_moving_boxes(in, tested, Rules::exact);
+        return o.verdict == Outcome::Verdict::fail ? o : judge::find_moving_boxes(in, got, Rules::exact);
+      });
     };
   };
   const Box a = cube({0, 0, 0});
@@ -289,12 +330,13 @@ Outcome exact_moving(const MovingBoxes& in) {
   return run_moving_find(in, Rules::exact);
 }
 
-// The example's own expectation, then the judge's rules.
+// The example's own expectation, then the judge's rules; a failure of the first shows
+// the judge's reason when the judge fails it too.
 template <class Input, class Own, class Rules>
 auto both(Own own, Rules rules) {
   return [=](const Input& in) {
     const Outcome o = own(in);
-    return o.verdict == Outcome::Verdict::fail ? o : rules(in);
+    return o.verdict == Outcome::Verdict::fail ? with_reason(o, [&] { return rules(in); }) : rules(in);
   };
 }
 
@@ -312,7 +354,7 @@ TEST_CASE("L03S6 robustness: touching and parallel boxes", "[lab03][step6]") {
       e.near("depth", got.depth, 0.0, 0.0);
       if (index >= 0) e.near("axis", got.axis, axis, 0.0);
       const Outcome own = e.outcome();
-      return own.verdict == Outcome::Verdict::fail ? own : exact_boxes(in);
+      return own.verdict == Outcome::Verdict::fail ? with_reason(own, [&] { return exact_boxes(in); }) : exact_boxes(in);
     };
   };
   check::example(q, "face to face: depth exactly 0", BoxPair{a, cube({3, 0, 0})}, touching(0, {1, 0, 0}));
@@ -326,7 +368,7 @@ TEST_CASE("L03S6 robustness: touching and parallel boxes", "[lab03][step6]") {
   check::example(q, "a point on A's face", BoxPair{a, box({2, 1, 1}, {0, 0, 0})}, touching(0, {1, 0, 0}));
   check::example(q, "a gap of 1", BoxPair{a, cube({4, 0, 0})}, [](const BoxPair& in) {
     const Outcome o = expect_bool("test_boxes", test_boxes(in.a, in.b), false);
-    return o.verdict == Outcome::Verdict::fail ? o : exact_boxes(in);
+    return o.verdict == Outcome::Verdict::fail ? with_reason(o, [&] { return exact_boxes(in); }) : exact_boxes(in);
   });
 }
 
@@ -381,4 +423,76 @@ TEST_CASE("L03S6 robustness: random exact degenerate cases", "[lab03][step6][ora
   check::random_cases("robust.boxes", gen::exact_box_pair(), exact_boxes);
   check::random_cases("robust.triangles", gen::exact_triangle_pair(), exact_triangles);
   check::random_cases("robust.moving_boxes", gen::exact_moving_boxes(), exact_moving);
+}
+
+// ---- The header's preconditions (not graded: tagged [contract], in no step) ----------
+// The reference rejects every kind of invalid input with std::invalid_argument naming
+// the argument; a NaN must never pass for "no axis separates them".
+
+TEST_CASE("L03 preconditions: invalid input is rejected, naming the argument", "[lab03][contract]") {
+  const double nan = std::nan(""), inf = HUGE_VAL;
+  const Box good = cube({0, 0, 0});
+  const auto rejects = [](const std::string& argument, auto&& call) {
+    INFO("the argument " << argument);
+    try {
+      call();
+      FAIL("accepted; the header's preconditions reject it");
+    } catch (const std::invalid_argument& e) {
+      CHECK_THAT(e.what(), Catch::Matchers::Contains(argument));
+    }
+  };
+  std::vector<std::pair<std::string, Box>> bad_boxes;
+  for (const double x : {nan, inf, -inf}) {
+    Box b = good;
+    b.center.y() = x;
+    bad_boxes.push_back({"center", b});
+    b = good;
+    b.half_extents.z() = x;
+    bad_boxes.push_back({"half_extents", b});
+    b = good;
+    b.axes(1, 2) = x;
+    bad_boxes.push_back({"axes", b});
+  }
+  Box negative = good;
+  negative.half_extents.x() = -1;
+  bad_boxes.push_back({"half_extents", negative});
+  Box sheared = good;
+  sheared.axes(0, 1) = 0.5;
+  bad_boxes.push_back({"axes", sheared});
+  Box zero_axes = good;
+  zero_axes.axes = Mat3::Zero();
+  bad_boxes.push_back({"axes", zero_axes});
+
+  for (const auto& [field, bad] : bad_boxes) {
+    rejects("box." + field, [&] { project_box(bad, {1, 0, 0}); });
+    rejects("a." + field, [&] { separated_on_axis(bad, good, {1, 0, 0}); });
+    rejects("b." + field, [&] { separated_on_axis(good, bad, {1, 0, 0}); });
+    rejects("b." + field, [&] { box_axis(good, bad, 0); });
+    rejects("a." + field, [&] { test_boxes(bad, good); });
+    rejects("b." + field, [&] { find_boxes(good, bad); });
+    rejects("a." + field, [&] { test_moving_boxes(bad, {0, 0, 0}, good, {0, 0, 0}, 1); });
+    rejects("b." + field, [&] { find_moving_boxes(good, {0, 0, 0}, bad, {0, 0, 0}, 1); });
+  }
+  for (const double x : {nan, inf}) {
+    rejects("axis", [&] { project_box(good, {x, 0, 0}); });
+    rejects("axis", [&] { separated_on_axis(good, good, {0, x, 0}); });
+    Triangle t = kFloor;
+    t.v1.z() = x;
+    rejects("t0.v1", [&] { test_triangles(t, kFloor); });
+    rejects("t1.v1", [&] { test_triangles(kFloor, t); });
+    rejects("velocity_a", [&] { test_moving_boxes(good, {x, 0, 0}, good, {0, 0, 0}, 1); });
+    rejects("velocity_b", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, x}, 1); });
+    rejects("duration", [&] { test_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, x); });
+    rejects("duration", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, x); });
+  }
+  rejects("duration", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, -1); });
+  rejects("duration", [&] { test_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, -1); });
+  rejects("index", [&] { box_axis(good, good, 15); });
+  rejects("index", [&] { box_axis(good, good, -1); });
+  // The documented results that are not rejections: zero half extents, a zero axis, a
+  // zero-area triangle, a zero duration.
+  CHECK_FALSE(separated_on_axis(good, cube({9, 0, 0}), {0, 0, 0}));
+  CHECK(test_boxes(good, box({1, 1, 1}, {0, 0, 0})));
+  CHECK_FALSE(test_triangles(kFloor, {{1, 1, -1}, {1, 1, 1}, {1, 1, 0}}));
+  CHECK(find_moving_boxes(good, {5, 0, 0}, cube({2, 0, 0}), {0, 0, 0}, 0).contact);
 }

@@ -35,6 +35,7 @@ constexpr double kFraction = 1.0 / (1 << 20);
 struct Grid {
   double s = 1.0;
   bool exact = false;
+  bool touching = false;  // rounded pairs may touch exactly (the moving boxes' contacts)
 };
 rc::Gen<Grid> grid(bool exact) {
   return rc::gen::map(scale(), [exact](double s) { return Grid{s, exact}; });
@@ -126,14 +127,22 @@ double radius_along(const Box& box, const Vec3& n) {
   return r;
 }
 
-// A gap between the boxes: zero (touching, up to the rounding of rotated axes), or a
-// power of two of the pair's size either way, from clearly apart to far below tol.
-double gap(Grid g, double size) {
+// A gap between the boxes, either way (negative: into each other): a power of two of
+// the pair's size, from clearly apart down to 2^-20 of it, or just outside the band
+// where the check calls a pair ambiguous (2 to 16 times 24 tol, tol = 1e-9 S; `reach`
+// bounds S): near-degenerate but decisive. Exactly touching pairs (zero gap) are the
+// robustness step's, on exact input.
+double gap(Grid g, double size, double reach) {
   if (g.exact) return *rc::gen::weightedElement<double>({{4, 0.0}, {1, 8 * g.s}, {1, -8 * g.s}});
-  const int k = *rc::gen::weightedOneOf<int>({{1, rc::gen::just(0)}, {4, rc::gen::inRange(4, 27)}, {1, rc::gen::inRange(27, 61)}});
-  if (k == 0) return 0.0;
-  return *rc::gen::element(-1.0, 1.0) * size * std::ldexp(1.0, -k);
+  const double sign = *rc::gen::element(-1.0, 1.0);
+  // Moving boxes touch along an axis they then slide along (W nearly perpendicular to
+  // it): s - r is rounding there, and times (r - s) / ds from it are noise.
+  if (g.touching && *rc::gen::inRange(0, 6) == 0) return 0.0;
+  if (*rc::gen::inRange(0, 4) == 0) return sign * *rc::gen::inRange(2, 17) * 24e-9 * reach;
+  return sign * size * std::ldexp(1.0, -*rc::gen::inRange(4, 21));
 }
+// A bound on S for a pair whose box A is `a` and whose B is placed within `size` of it.
+double reach(const Box& a, double size) { return a.center.cwiseAbs().maxCoeff() + 4 * size; }
 
 // The corner offset of `box` that is extreme along -n (the point of B that reaches
 // toward A), on the box's axes other than `free_axis` (-1: all three).
@@ -153,7 +162,7 @@ BoxPair face_contact(Grid g) {
   const int k = *rc::gen::inRange(0, 3);
   Vec3 n = (*rc::gen::element(-1.0, 1.0)) * owner.axes.col(k);
   const double size = std::max(a.half_extents.maxCoeff(), b.half_extents.maxCoeff()) + g.s;
-  const double along = radius_along(a, n) + radius_along(b, n) + gap(g, size);
+  const double along = radius_along(a, n) + radius_along(b, n) + gap(g, size, reach(a, size));
   Vec3 lateral = Vec3::Zero();
   for (int m = 0; m < 3; ++m)
     if (m != k) lateral += (*rc::gen::inRange(-10, 11) / 8.0) * owner.half_extents[m] * owner.axes.col(m);
@@ -175,7 +184,7 @@ BoxPair edge_contact(Grid g) {
   const Vec3 p = a.center - extreme_toward(a, n, i) +
                  (*rc::gen::inRange(-8, 9) / 8.0) * a.half_extents[i] * a.axes.col(i);
   const Vec3 q = extreme_toward(b, n, j) + (*rc::gen::inRange(-8, 9) / 8.0) * b.half_extents[j] * b.axes.col(j);
-  b.center = p + gap(g, size) * n - q;
+  b.center = p + gap(g, size, reach(a, size)) * n - q;
   return {a, b};
 }
 
@@ -188,7 +197,7 @@ BoxPair corner_contact(Grid g) {
   Vec3 p = local_point(g, a);
   p += (a.half_extents[k] - a.axes.col(k).dot(p - a.center) * n.dot(a.axes.col(k))) * n;  // onto the face
   const double size = std::max(a.half_extents.maxCoeff(), b.half_extents.maxCoeff()) + g.s;
-  b.center = p + gap(g, size) * n - extreme_toward(b, n);
+  b.center = p + gap(g, size, reach(a, size)) * n - extreme_toward(b, n);
   return {a, b};
 }
 
@@ -270,10 +279,18 @@ TrianglePair through_point(Grid g) {
                                  rc::gen::just(eighths(t0[i], t0[(i + 1) % 3] - t0[i], *rc::gen::inRange(0, 9), Vec3::Zero(), 0)));
   const Vec3 d1 = grid_direction(g), d2 = grid_direction(g);
   Triangle t1;
-  switch (*rc::gen::inRange(0, 3)) {
+  switch (*rc::gen::weightedElement<int>({{3, 0}, {1, 1}, {1, 2}})) {
     case 0: t1 = {x + d1, x + d2, x - d1 - d2}; break;
     case 1: t1 = {x, x + d1, x + d2}; break;
     default: t1 = {x + d1, x - (*rc::gen::inRange(1, 17) / 8.0) * d1, x + d2}; break;
+  }
+  // On rounded input, three in four are moved off the contact by 1 to 8 times 1e-8 S along
+  // T0's normal (10 tol: just outside the band where the check calls them ambiguous),
+  // into a crossing or a gap; exact contacts are the robustness step's.
+  if (!g.exact && *rc::gen::inRange(0, 4) != 0) {
+    const double lift = *rc::gen::element(-1.0, 1.0) * *rc::gen::inRange(1, 9) * 1e-8 * scale_of(TrianglePair{t0, t1});
+    const Vec3 n = t0.normal().normalized();
+    for (int k = 0; k < 3; ++k) t1[k] += lift * n;
   }
   return *rc::gen::element(TrianglePair{t0, t1}, TrianglePair{t1, t0});
 }
@@ -287,6 +304,17 @@ TrianglePair coplanar(Grid g) {
   return {t0, t1};
 }
 
+// Coplanar, lifted off the plane by 1 to 8 times 1e-8 S (10 tol: just outside the band
+// where the check calls the pair ambiguous), or (one in four) left in it.
+TrianglePair lifted_coplanar() {
+  TrianglePair p = coplanar(*grid(false));
+  if (*rc::gen::inRange(0, 4) == 0) return p;
+  const Vec3 n = p.t0.normal().normalized();
+  const double lift = *rc::gen::element(-1.0, 1.0) * *rc::gen::inRange(1, 9) * 1e-8 * scale_of(p);
+  for (int k = 0; k < 3; ++k) p.t1[k] += lift * n;
+  return p;
+}
+
 // Coplanar, then lifted off the plane by tiny amounts: the same at every vertex
 // (parallel planes) or differing (nearly parallel planes, often crossing).
 TrianglePair near_coplanar() {
@@ -294,8 +322,8 @@ TrianglePair near_coplanar() {
   const Vec3 n = p.t0.normal().normalized();
   const double size = scale_of({p.t0.v0, p.t0.v1, p.t0.v2});
   const bool parallel = *rc::gen::inRange(0, 2) == 0;
-  const double shift = *integer(4) * *tiny(10, 40) * size;
-  for (int k = 0; k < 3; ++k) p.t1[k] += (parallel ? shift : *integer(4) * *tiny(10, 40) * size) * n;
+  const double shift = *rc::gen::element(-3.0, -2.0, -1.0, 1.0, 2.0, 3.0) * *tiny(10, 25) * size;
+  for (int k = 0; k < 3; ++k) p.t1[k] += (parallel ? shift : *integer(4) * *tiny(10, 25) * size) * n;
   return p;
 }
 
@@ -303,7 +331,8 @@ TrianglePair near_coplanar() {
 TrianglePair near_touching() {
   TrianglePair p = through_point(*grid(false));
   const double size = scale_of(p);
-  const Vec3 shift = *integer(4) * *tiny(20, 50) * size * Vec3(*direction(1.0, 4)).normalized();
+  const Vec3 shift = *rc::gen::element(-3.0, -2.0, -1.0, 1.0, 2.0, 3.0) * *tiny(12, 25) * size *
+                     Vec3(*direction(1.0, 4)).normalized();
   for (int k = 0; k < 3; ++k) p.t1[k] += shift;
   return p;
 }
@@ -322,6 +351,67 @@ TrianglePair zero_area(Grid g) {
 
 TrianglePair generic_triangles(Grid g) { return {grid_triangle(g), grid_triangle(g)}; }
 
+// A needle: a long edge p -> p + u and a third vertex 2^-k |u| off its line (k from 6 to
+// 27: aspect ratios up to 1.3e8), beside one end (a spike: two long edges) or part way
+// along (a cap: one angle near 180 degrees), in any orientation, vertices in any order.
+Triangle needle(Grid g, Vec3* unit_normal, Vec3* across) {
+  const Vec3 p = grid_point(g), u = 2 * grid_direction(g);
+  Vec3 side = u.cross(grid_direction(g));
+  if (side.isZero()) side = u.unitOrthogonal();
+  side.normalize();
+  const double height = std::ldexp(u.norm(), -*rc::gen::inRange(6, 28));
+  const double at = *rc::gen::inRange(-2, 11) / 8.0;
+  Triangle t{p, p + u, p + at * u + height * side};
+  const int first = *rc::gen::inRange(0, 3);
+  t = {t[first], t[(first + 1) % 3], t[(first + 2) % 3]};
+  if (unit_normal) *unit_normal = u.cross(side).normalized();
+  if (across) *across = side * u.norm();
+  return t;
+}
+
+// A needle T0 and T1: through a point of the needle; in the needle's plane turned by
+// 2^-j (j from 16 to 30) about a line beside it or through it (so that T1 misses the
+// needle by up to thousands of tol, or crosses it); in a parallel plane; or another
+// needle through it.
+TrianglePair needles() {
+  const Grid g = *grid(false);
+  Vec3 n, w;
+  const Triangle t0 = needle(g, &n, &w);
+  const Vec3 u = t0.v1 - t0.v0;
+  const double size = scale_of({t0.v0, t0.v1, t0.v2});
+  Triangle t1;
+  switch (*rc::gen::inRange(0, 4)) {
+    case 0: {  // through a point of the needle
+      const Vec3 x = *point_in_triangle(t0);
+      const Vec3 d1 = grid_direction(g), d2 = grid_direction(g);
+      t1 = {x + d1, x + d2, x - d1 - d2};
+      break;
+    }
+    case 1: {  // turned by 2^-j about a line of the needle's plane beside the needle
+      const double turn = std::ldexp(1.0, -*rc::gen::inRange(16, 31)), line = *rc::gen::inRange(-8, 9) / 8.0;
+      for (int k = 0; k < 3; ++k) {
+        const double a = *rc::gen::inRange(-8, 17) / 8.0, b = *rc::gen::inRange(-8, 9) / 8.0;
+        t1[k] = t0.v0 + a * u + b * w + (b - line) * turn * u.norm() * n;
+      }
+      break;
+    }
+    case 2: {  // in a parallel plane, a few to hundreds of tol off
+      const double shift = *integer(64) * 1e-8 * size;
+      for (int k = 0; k < 3; ++k)
+        t1[k] = t0.v0 + (*rc::gen::inRange(-8, 17) / 8.0) * u + (*rc::gen::inRange(-8, 9) / 8.0) * w + shift * n;
+      break;
+    }
+    default: {  // another needle, through a point of this one
+      Triangle other = needle(g, nullptr, nullptr);
+      const Vec3 x = *point_in_triangle(t0), y = *point_in_triangle(other);
+      for (int k = 0; k < 3; ++k) t1[k] = other[k] + (x - y);
+      break;
+    }
+  }
+  if (t1.normal() == Vec3::Zero()) t1 = grid_triangle(g);
+  return *rc::gen::element(TrianglePair{t0, t1}, TrianglePair{t1, t0});
+}
+
 TrianglePair far_triangles(TrianglePair p) {
   const double size = std::max(1.0, scale_of(p));
   const Vec3 offset = *lattice_point(size * 1024.0, 64);
@@ -338,7 +428,8 @@ TrianglePair far_triangles(TrianglePair p) {
 // lattice velocities: head on, at an angle, grazing (W perpendicular to the contact
 // axis), or not moving relative to each other.
 MovingBoxes moving(bool exact) {
-  const Grid g = *grid(exact);
+  Grid g = *grid(exact);
+  g.touching = true;
   BoxPair at_contact = pair_of(g);
   const double duration = *rc::gen::weightedElement<double>({{8, 1.0}, {2, 2.0}, {2, 0.5}, {1, 0.0}});
   const double meet = duration * *rc::gen::inRange(-4, 13) / 8.0;
@@ -376,6 +467,30 @@ MovingBoxes moving(bool exact) {
   return m;
 }
 
+// The ends of the header's scale range: every position (and velocity) times 2^160 or
+// 2^-160 (about 1e48 and 1e-48). Powers of two keep every relation of the case exact.
+double scale_end() { return std::ldexp(1.0, *rc::gen::element(160, -160)); }
+Box scaled(Box b, double f) {
+  b.center *= f;
+  b.half_extents *= f;
+  return b;
+}
+BoxPair scaled(const BoxPair& p, double f) { return {scaled(p.a, f), scaled(p.b, f)}; }
+TrianglePair scaled(TrianglePair p, double f) {
+  for (int k = 0; k < 3; ++k) p.t0[k] *= f, p.t1[k] *= f;
+  return p;
+}
+MovingBoxes scaled(MovingBoxes m, double f) {
+  m.a = scaled(m.a, f), m.b = scaled(m.b, f);
+  m.velocity_a *= f, m.velocity_b *= f;
+  return m;
+}
+// One case in 16 at an end of the scale range.
+template <class T>
+rc::Gen<T> with_scale_ends(rc::Gen<T> gen) {
+  return rc::gen::weightedOneOf<T>({{15, gen}, {1, rc::gen::exec([gen] { return scaled(*gen, scale_end()); })}});
+}
+
 }  // namespace
 
 rc::Gen<Mat3> rotation() {
@@ -398,6 +513,7 @@ rc::Gen<BoxOnAxis> box_on_axis() {
         in.axis = in.box.axes.col(0).cross(in.box.axes.col(*rc::gen::inRange(1, 3)));
     }
     if (*rc::gen::inRange(0, 8) == 0) in.box.center += *lattice_point(1024.0 * std::max(1.0, scale_of(in)), 64);
+    if (*rc::gen::inRange(0, 16) == 0) in.box = scaled(in.box, scale_end());
     return in;
   });
 }
@@ -423,25 +539,35 @@ rc::Gen<BoxPairOnAxis> box_pair_on_axis() {
 
 rc::Gen<BoxPair> box_pair() {
   const rc::Gen<BoxPair> families = pair_family(false);
-  return rc::gen::weightedOneOf<BoxPair>({{7, families}, {1, rc::gen::exec([families] { return far_away(*families); })}});
+  return with_scale_ends(
+      rc::gen::weightedOneOf<BoxPair>({{7, families}, {1, rc::gen::exec([families] { return far_away(*families); })}}));
 }
 
 rc::Gen<BoxPair> exact_box_pair() { return pair_family(true); }
 
+// The header's domain: zero area, or a smallest height at least 1e-8 of the longest edge
+// (longest^2 <= 1e8 |n|, |n| twice the area).
+bool in_domain(const Triangle& t) {
+  const double longest = std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
+  const double n = t.normal().norm();
+  return n == 0 || longest <= 1e8 * n;
+}
+
 rc::Gen<TrianglePair> triangle_pair() {
-  const rc::Gen<TrianglePair> families = rc::gen::exec([] {
+  const rc::Gen<TrianglePair> families = rc::gen::suchThat(rc::gen::exec([] {
     const Grid g = *grid(false);
-    switch (*rc::gen::weightedElement<int>({{6, 0}, {8, 1}, {3, 2}, {4, 3}, {4, 4}, {2, 5}})) {
+    switch (*rc::gen::weightedElement<int>({{6, 0}, {8, 1}, {3, 2}, {4, 3}, {4, 4}, {1, 5}, {8, 6}})) {
       case 0: return generic_triangles(g);
       case 1: return through_point(g);
-      case 2: return coplanar(g);
+      case 2: return lifted_coplanar();
       case 3: return near_coplanar();
       case 4: return near_touching();
-      default: return zero_area(g);
+      case 5: return zero_area(g);
+      default: return needles();
     }
-  });
-  return rc::gen::weightedOneOf<TrianglePair>(
-      {{7, families}, {1, rc::gen::exec([families] { return far_triangles(*families); })}});
+  }), [](const TrianglePair& p) { return in_domain(p.t0) && in_domain(p.t1); });
+  return with_scale_ends(rc::gen::weightedOneOf<TrianglePair>(
+      {{7, families}, {1, rc::gen::exec([families] { return far_triangles(*families); })}}));
 }
 
 rc::Gen<TrianglePair> exact_triangle_pair() {
@@ -456,7 +582,7 @@ rc::Gen<TrianglePair> exact_triangle_pair() {
 }
 
 rc::Gen<MovingBoxes> moving_boxes() {
-  return rc::gen::exec([] { return moving(false); });
+  return with_scale_ends(rc::gen::exec([] { return moving(false); }));
 }
 
 rc::Gen<MovingBoxes> exact_moving_boxes() {

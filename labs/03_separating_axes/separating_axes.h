@@ -43,6 +43,20 @@
 // enough). A zero-area triangle (collinear or coincident vertices) has no plane and
 // never intersects anything.
 //
+// Input domain: where answers must match the exact ones (within the tolerances below).
+// S (below) from 1e-50 to 1e50; boxes and triangles in any orientation and position,
+// also far from the origin; an axis L of any non-zero length within the same range;
+// triangles of zero area or whose smallest height is at least 1e-8 of their longest
+// edge (needles up to aspect ratio 1e8 included); velocities and durations whose
+// displacement duration * velocity stays within the range.
+//
+// Preconditions (the reference checks them and throws std::invalid_argument naming the
+// argument and the rule; the check never grades them): every coordinate, half extent,
+// axis entry, velocity and the duration finite; half extents >= 0; box axes orthonormal
+// to 1e-6; duration >= 0; box_axis's index 0 to 14. Not errors, with their results
+// defined above and below: zero half extents, a zero axis L, zero-area triangles, a zero
+// duration.
+//
 // Tolerances. S is the largest absolute coordinate of the input's positions: box
 // centers and half extents (for moving boxes also each box's center at the end,
 // center + duration * velocity), triangle vertices. tol = 1e-9 S.
@@ -112,6 +126,17 @@ BoxContact find_boxes(const Box& a, const Box& b);
 // ---- Step 4 (L03S4): triangle against triangle ---------------------------------------
 
 // Do the closed triangles intersect (coplanar ones included; see the rules above)?
+//
+// Sides and zeros. Each vertex of one triangle is on the positive (+) or negative (-)
+// side of the other's plane, or in it (0: its signed volume is zero, or within the
+// rounding of how you computed it; on exact input, exactly zero). All + or all -: apart.
+// All 0: coplanar (the rule above). Otherwise the triangle meets the plane in a segment
+// (maybe a single point), and is rotated to (p, q, r) with p alone on its side:
+//  - p on one side, q and r on the other or in the plane (+ - -, + - 0, + 0 0, ...):
+//    the segment runs from edge p q to edge p r; a vertex in the plane is its own end;
+//  - p in the plane, q and r strictly on one side (0 - -): it touches the plane at p only.
+// (Flip the other triangle's plane so that p's side is +.) Touching counts: a segment
+// that is one point still intersects the other triangle's segment when it lies on it.
 bool test_triangles(const Triangle& t0, const Triangle& t1);
 
 // ---- Step 5 (L03S5): two moving boxes: first and last contact ------------------------

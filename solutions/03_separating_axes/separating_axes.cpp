@@ -16,11 +16,63 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
+#include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace labkit::lab03 {
 
 namespace {
+
+// ---- The header's preconditions: rejected with std::invalid_argument, naming the
+// argument and the rule. A NaN would otherwise fail every comparison and pass for
+// "no axis separates them", and a negative half extent would shrink the radii.
+
+std::string text(const Vec3& v) {
+  std::ostringstream out;
+  out.precision(17);
+  out << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
+  return out.str();
+}
+
+[[noreturn]] void reject(const char* function, const std::string& argument, const std::string& rule, const std::string& got) {
+  throw std::invalid_argument(std::string(function) + ": " + argument + " " + rule + ", got " + got);
+}
+
+void require_finite(const char* function, const std::string& argument, const Vec3& v) {
+  if (!v.allFinite()) reject(function, argument, "must be finite", text(v));
+}
+
+void require_box(const char* function, const std::string& name, const Box& box) {
+  require_finite(function, name + ".center", box.center);
+  if (!box.half_extents.allFinite() || (box.half_extents.array() < 0).any())
+    reject(function, name + ".half_extents", "must be finite and >= 0", text(box.half_extents));
+  if (!box.axes.allFinite() || (box.axes.transpose() * box.axes - Mat3::Identity()).cwiseAbs().maxCoeff() > 1e-6) {
+    std::ostringstream out;
+    out.precision(17);
+    out << "[" << box.axes.format(Eigen::IOFormat(Eigen::FullPrecision, Eigen::DontAlignCols, ", ", "; ")) << "]";
+    reject(function, name + ".axes", "must be orthonormal (to 1e-6) and finite", out.str());
+  }
+}
+
+void require_triangle(const char* function, const std::string& name, const Triangle& t) {
+  for (int k = 0; k < 3; ++k) require_finite(function, name + ".v" + std::to_string(k), t[k]);
+}
+
+void require_motion(const char* function, const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b,
+                    double duration) {
+  require_box(function, "a", a);
+  require_box(function, "b", b);
+  require_finite(function, "velocity_a", velocity_a);
+  require_finite(function, "velocity_b", velocity_b);
+  if (!(std::isfinite(duration) && duration >= 0)) {
+    std::ostringstream out;
+    out.precision(17);
+    out << duration;
+    reject(function, "duration", "must be finite and >= 0", out.str());
+  }
+}
 
 // Edge axes shorter than this (|A_i x B_j| < 1e-6) are left out of the search for the
 // least penetration: rounding turns them by up to about 1e-16 / |A_i x B_j| radians.
@@ -134,6 +186,8 @@ void describe_axis(BoxContact& c, const AxisTest& x, int index, const Box& a) {
 }  // namespace
 
 Projection project_box(const Box& box, const Vec3& axis) {
+  require_box("project_box", "box", box);
+  require_finite("project_box", "axis", axis);
   Projection p;
   p.center = box.center.dot(axis);
   // The corner farthest along L takes, on each box axis, the side where A_k . L >= 0.
@@ -142,12 +196,18 @@ Projection project_box(const Box& box, const Vec3& axis) {
 }
 
 bool separated_on_axis(const Box& a, const Box& b, const Vec3& axis) {
+  require_box("separated_on_axis", "a", a);
+  require_box("separated_on_axis", "b", b);
+  require_finite("separated_on_axis", "axis", axis);
   const double s = (b.center - a.center).dot(axis);
   const double r = project_box(a, axis).radius + project_box(b, axis).radius;
   return std::abs(s) > r;  // a zero axis gives 0 > 0: never separated
 }
 
 Vec3 box_axis(const Box& a, const Box& b, int index) {
+  require_box("box_axis", "a", a);
+  require_box("box_axis", "b", b);
+  if (index < 0 || index > 14) reject("box_axis", "index", "must be 0 to 14", std::to_string(index));
   if (index < 3) return a.axes.col(index);
   if (index < 6) return b.axes.col(index - 3);
   const int i = (index - 6) / 3, j = (index - 6) % 3;
@@ -155,6 +215,8 @@ Vec3 box_axis(const Box& a, const Box& b, int index) {
 }
 
 bool test_boxes(const Box& a, const Box& b) {
+  require_box("test_boxes", "a", a);
+  require_box("test_boxes", "b", b);
   Pair p(a, b, Vec3::Zero());
   // Face axes first: for boxes far apart one of them nearly always separates.
   for (int i = 0; i < 3; ++i)
@@ -169,6 +231,8 @@ bool test_boxes(const Box& a, const Box& b) {
 }
 
 BoxContact find_boxes(const Box& a, const Box& b) {
+  require_box("find_boxes", "a", a);
+  require_box("find_boxes", "b", b);
   Pair p(a, b, Vec3::Zero());
   p.cofactors();
   BoxContact contact;
@@ -222,28 +286,49 @@ double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
+// The plane of a triangle, built where rounding hurts least: at the vertex opposite the
+// longest edge, from the two shortest edges. A cross product is off by a few units of
+// 1e-16 of |e_a| |e_b|; with the two long edges of a needle (aspect 1e8) that is 1e8 times
+// its area, and the "normal" then tilts by up to 1e-8 rad: enough to take a triangle
+// turned by 1e-7 for coplanar, or to give a vertex off the plane the wrong side.
+struct Plane3 {
+  Vec3 at;               // the vertex between the two shortest edges
+  Vec3 n;                // e_a x e_b: the normal, |n| twice the area
+  double edges = 0.0;    // |e_a| |e_b|: the scale of n's rounding
+};
+
+Plane3 plane_of(const Triangle& t) {
+  int k = 0;  // the vertex opposite the longest edge
+  double longest = -1.0;
+  for (int i = 0; i < 3; ++i) {
+    const double l = (t[next(i)] - t[after_next(i)]).squaredNorm();
+    if (l > longest) longest = l, k = i;
+  }
+  const Vec3 ea = t[next(k)] - t[k], eb = t[after_next(k)] - t[k];
+  return {t[k], ea.cross(eb), ea.norm() * eb.norm()};
+}
+
 // The side signs of v0, v1, v2 with respect to the plane of `t`, with the test for
-// "all three in the plane". For exactly coplanar input the computed volumes are
-// rounding noise of any sign; a vertex counts as in the plane when its volume is below
-// a bound some ten times its worst rounding error, 8e-16 |v - p| |e1| |e2|. On small
-// integer input (|x| <= 1024) that bound is below 1 while every non-zero volume is an
-// integer: exact input is coplanar only when it truly is.
+// "all three in the plane". d = (q - at) . n is off by at most about 1.2e-15 |q - at|
+// |e_a| |e_b| (the rounding of e_a, e_b, n and the dot product); below a bound of
+// 4e-15 times that its sign is not known, and the vertex counts as in the plane. For a
+// triangle whose shortest edges meet at a good angle, that is a turn of 4e-15 rad. On
+// small integer input (|x| <= 1024) the bound is below 1 while every non-zero volume is
+// an integer: exact input is coplanar only when it truly is.
 struct Sides {
   int sign[3] = {0, 0, 0};
   bool coplanar = false;
 };
 
 Sides sides(const Triangle& t, const Triangle& of) {
-  const Vec3 e1 = t.v1 - t.v0, e2 = t.v2 - t.v0;
-  const Vec3 n = e1.cross(e2);
-  const double edges = e1.norm() * e2.norm();
+  const Plane3 plane = plane_of(t);
   Sides s;
-  s.coplanar = true;
   for (int i = 0; i < 3; ++i) {
-    const double d = (of[i] - t.v0).dot(n);
-    s.sign[i] = sign(d);
-    s.coplanar = s.coplanar && std::abs(d) <= 1e-14 * (of[i] - t.v0).norm() * edges;
+    const double d = (of[i] - plane.at).dot(plane.n);
+    const bool in_plane = std::abs(d) <= 4e-15 * (of[i] - plane.at).norm() * plane.edges;
+    s.sign[i] = in_plane ? 0 : sign(d);
   }
+  s.coplanar = s.sign[0] == 0 && s.sign[1] == 0 && s.sign[2] == 0;
   return s;
 }
 
@@ -271,7 +356,7 @@ bool canonical(Triangle& t, const Sides& s) {
 // test with the six edge normals. Projection along a coordinate keeps every
 // separation, and the 2D normals of the edges are exact in the input's numbers.
 bool coplanar_triangles_intersect(const Triangle& t0, const Triangle& t1) {
-  const Vec3 n = t0.normal().cwiseAbs();
+  const Vec3 n = plane_of(t0).n.cwiseAbs();
   const int drop = n.x() >= n.y() && n.x() >= n.z() ? 0 : (n.y() >= n.z() ? 1 : 2);
   const auto flat = [drop](const Vec3& p) { return Vec2(p[next(drop)], p[after_next(drop)]); };
   const Vec2 p[3] = {flat(t0.v0), flat(t0.v1), flat(t0.v2)};
@@ -295,6 +380,8 @@ bool coplanar_triangles_intersect(const Triangle& t0, const Triangle& t1) {
 }  // namespace
 
 bool test_triangles(const Triangle& t0, const Triangle& t1) {
+  require_triangle("test_triangles", "t0", t0);
+  require_triangle("test_triangles", "t1", t1);
   if (t0.normal() == Vec3::Zero() || t1.normal() == Vec3::Zero()) return false;  // zero area: no plane
   const Sides s1 = sides(t0, t1);  // T1's vertices against T0's plane
   if (one_side(s1)) return false;  // T1 lies strictly on one side of T0's plane
@@ -318,6 +405,7 @@ bool test_triangles(const Triangle& t0, const Triangle& t1) {
 // boxes only translate.)
 ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b,
                                   double duration) {
+  require_motion("find_moving_boxes", a, velocity_a, b, velocity_b, duration);
   Pair p(a, b, velocity_b - velocity_a);
   p.cofactors();
   // How far rounding can move a time (r - s) / ds: s and r are sums of products whose
@@ -362,6 +450,7 @@ ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Bo
 // W x B_j: along them nothing moves and the test is the static |s| > r.
 bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b,
                        double duration) {
+  require_motion("test_moving_boxes", a, velocity_a, b, velocity_b, duration);
   Pair p(a, b, velocity_b - velocity_a);
   p.cofactors();
   for (int index = 0; index < 15; ++index) {
