@@ -195,5 +195,7 @@ Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& plane, 
 // the plane, and spheres a hair apart that meet very soon. On such input the tests and
 // statuses must be exactly right (nothing is ambiguous): decide by comparing squared
 // distances without dividing (num <= R^2 den), then construct. Distances keep their tol.
+// (Step 3's random and worked cases still hold you to the rules on lines that are
+// parallel only up to rounding: there the rounded d0 x d1 is noise, so measure the pair.)
 
 }  // namespace labkit::lab05
