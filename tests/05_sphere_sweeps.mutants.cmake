@@ -4,7 +4,7 @@
 # Step 1: clamping the lines' closest pair into [0, 1]^2 instead of re-projecting an end.
 labkit_mutant(05 sphere_sweeps NAME clamp_not_reproject STEP 1 SAYS "re-projected" "nearer pair"
   FIND "const double s = w.cross(d1).dot(n) / nn, t = w.cross(d0).dot(n) / nn;\n    if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {"
-  REPLACE "const double s = std::clamp(w.cross(d1).dot(n) / nn, 0.0, 1.0), t = std::clamp(w.cross(d0).dot(n) / nn, 0.0, 1.0);\n    {")
+  REPLACE "const double s = std::clamp(w.cross(d1).dot(n) / nn, 0.0, 1.0), t = std::clamp(w.cross(d0).dot(n) / nn, 0.0, 1.0);\n    {\n      consider(s, t, point_at(first, s), point_at(second, t));\n      if (nn > 0) return best;")
 
 # Step 1: the textbook denominator a c - b^2, which cancels for nearly parallel segments
 # (caught by the family of segments crossing at an angle of 2^-20 to 2^-26).
@@ -35,7 +35,7 @@ labkit_mutant(05 sphere_sweeps NAME one_lozenges_sides STEP 3 SAYS "the sides of
 # Step 3 (the step 7 recipe read alone): (w . n)^2 <= R^2 |n|^2 for lines that are parallel
 # only up to rounding, where the rounded n says nothing about their distance.
 labkit_mutant(05 sphere_sweeps NAME parallel_in_floating_point STEP 3 SAYS "nearly parallel" "measure the pair"
-  FIND "  if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm())\n    return (point_at(s0, s / nn) - point_at(s1, t / nn)).squaredNorm() <= r2;\n"
+  FIND "  if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm()) return point_segment_within(point_at(s0, s / nn), s1, r2);\n"
   REPLACE "")
 
 # Step 4: a plane whose normal is not unit length, used as if it were.

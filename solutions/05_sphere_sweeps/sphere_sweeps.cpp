@@ -148,8 +148,7 @@ bool segment_segment_within(const Segment& s0, const Segment& s1, double r2) {
   // picks up w's long component along the lines, so it no longer measures their distance.
   // Measure the pair itself: any pair of points is at least the true distance apart, and
   // when the segments really cross at such an angle the pair found is accurate.
-  if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm())
-    return (point_at(s0, s / nn) - point_at(s1, t / nn)).squaredNorm() <= r2;
+  if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm()) return point_segment_within(point_at(s0, s / nn), s1, r2);
   return square(w.dot(n)) <= r2 * nn;
 }
 
@@ -286,7 +285,14 @@ SegmentSegmentDistance segment_segment(const Segment& first, const Segment& seco
     const Vec3 w = second.a - first.a;
     const double s = w.cross(d1).dot(n) / nn, t = w.cross(d0).dot(n) / nn;
     if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
-      consider(s, t, point_at(first, s), point_at(second, t));
+      // The point at s, then its projection onto the second segment. For nearly parallel
+      // segments s and t each carry a rounding error along the lines (a small error of
+      // the numerators over a tiny |n|^2), and the two errors do not cancel: the pair
+      // would lie farther apart than the segments. Projecting ties q to p, so the pair is
+      // as far apart as p from the second segment: the true distance, to rounding.
+      const Vec3 p = point_at(first, s);
+      const PointSegmentDistance q = point_segment(p, second);
+      consider(s, q.t, p, q.closest);
       // Clearly not parallel (sin^2 of the angle above 1e-4): this pair is accurate and,
       // being the unconstrained minimum, no border point beats it.
       if (nn > 1e-4 * d0.squaredNorm() * d1.squaredNorm()) return best;
