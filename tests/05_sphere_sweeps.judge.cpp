@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <initializer_list>
 #include <vector>
 
@@ -52,9 +53,23 @@ double largest(std::initializer_list<Vec3> points, std::initializer_list<double>
   return std::max(s, 1e-300);
 }
 
+// The plane with its normal scaled by a power of two (largest component in [1, 2)): the
+// same plane, whose |n|^2 neither overflows nor underflows.
+Plane scaled(const Plane& p) {
+  const int e = std::ilogb(p.normal.cwiseAbs().maxCoeff());
+  return {Vec3(std::ldexp(p.normal.x(), -e), std::ldexp(p.normal.y(), -e), std::ldexp(p.normal.z(), -e)),
+          std::ldexp(p.offset, -e)};
+}
+
 double plane_distance(const Plane& p) {
-  const double n = p.normal.norm();
-  return n > 0 ? std::abs(p.offset) / n : 0.0;
+  if (p.normal == Vec3::Zero() || !p.normal.allFinite()) return 0.0;
+  const Plane q = scaled(p);
+  return std::abs(q.offset) / q.normal.norm();
+}
+// The distance of x from the plane, rounded (for reports).
+double from_plane(const Plane& p, const Vec3& x) {
+  const Plane q = scaled(p);
+  return std::abs(q.value(x)) / q.normal.norm();
 }
 
 std::string parameter_range_problem(double t, double low, double high, const char* name) {
@@ -73,9 +88,18 @@ Outcome distance_verdict(const oracle::SquaredDistance& exact, double got_square
   if (!(got_squared >= 0) || !std::isfinite(got_squared))
     return fail(expected, "squared_distance = " + fmt(got_squared), "the squared distance must be a finite number >= 0");
   const double got = std::sqrt(got_squared);
-  if (exact.compare(got, tol) > 0 || exact.compare(got, -tol) < 0)
+  if (exact.compare(got, -tol) < 0)  // larger than the minimum: a nearer pair was missed
     return fail(expected, "distance " + fmt(got) + " (squared " + fmt(got_squared) + ")",
-                "the distance is off by " + fmt(std::abs(got - d)) + " (tolerance " + fmt(tol) + ")");
+                "the distance is the smallest over all pairs of points of the two shapes: yours, " + fmt(got) +
+                    ", is " + fmt(got - d) + " above it (tolerance " + fmt(tol) +
+                    "), so a nearer pair was missed (a parameter clamped into range must be re-projected onto the "
+                    "other shape; every candidate counts: the ends, and for a rectangle its four sides)");
+  if (exact.compare(got, tol) > 0)  // smaller than any pair of the shapes can be
+    return fail(expected, "distance " + fmt(got) + " (squared " + fmt(got_squared) + ")",
+                "the distance is the smallest over all pairs of points of the two shapes: yours, " + fmt(got) +
+                    ", is " + fmt(d - got) + " below it (tolerance " + fmt(tol) +
+                    "), so no pair of their points is that close (a point outside its shape? clamp t to [0, 1], "
+                    "s and t to the half-sizes)");
   Expect e;
   shape_checks(e);
   const oracle::SquaredDistance pair = oracle::squared_distance(p0, p1);
@@ -109,14 +133,40 @@ void check_on_rectangle(Expect& e, const char* name, const Rectangle& r, const V
 
 using check::verdict;
 
-// A test of table 6.1: the cores' exact distance against r0 + r1.
-Outcome test_verdict(const oracle::SquaredDistance& cores, double r0, double r1, double tol, bool got, Rules rules) {
+// A test of table 6.1: the cores' exact distance against r0 + r1. The why states the
+// rule with the numbers, then a likely cause where the numbers point at one: r0^2 + r1^2
+// in place of (r0 + r1)^2, or (`missed`) the candidates a "no" most often forgets.
+Outcome test_verdict(const oracle::SquaredDistance& cores, double r0, double r1, double tol, bool got, Rules rules,
+                     const char* missed, const char* parallel_note) {
   const bool expected = cores.compare(r0, r1) <= 0;
   const double margin = kTestDoubt * tol;
-  const bool doubt = cores.compare(r0, r1, margin) <= 0 && cores.compare(r0, r1, -margin) >= 0;
-  const Outcome o = verdict(got, expected, doubt, rules, "they meet", "they do not meet");
-  if (o.verdict != Outcome::Verdict::fail) return o;
-  return fail(o.expected + " (the cores are " + fmt(cores.distance()) + " apart, r0 + r1 = " + fmt(r0 + r1) + ")", o.got, o.why);
+  const bool doubt = rules == Rules::random && cores.compare(r0, r1, margin) <= 0 && cores.compare(r0, r1, -margin) >= 0;
+  if (got == expected) return doubt ? ambiguous() : pass();
+  if (doubt) return ambiguous();
+  const double d = cores.distance();
+  std::string why = "two sphere-swept volumes meet exactly when their cores are within r0 + r1: the cores are " + fmt(d) +
+                    " apart and r0 + r1 = " + fmt(r0 + r1) + ", so they " + (expected ? "meet" : "do not meet") +
+                    ", your answer says they " + (got ? "meet" : "do not");
+  if (expected) {
+    // The likely causes, most telling first: the sum not squared, the exact touch decided
+    // on a rounded distance, a candidate of steps 1 and 2 forgotten.
+    std::vector<std::string> causes;
+    if (d * d > r0 * r0 + r1 * r1)
+      causes.push_back("is it (r0 + r1)^2 you compare with? r0^2 + r1^2 = " + fmt(r0 * r0 + r1 * r1) + " is smaller");
+    if (cores.compare(r0, r1) == 0)
+      causes.push_back("they touch exactly, and touching counts: a rounded distance can come out a hair above r0 + r1, "
+                       "so decide on exact products of the input (num <= (r0 + r1)^2 den), then construct");
+    causes.push_back(missed);
+    why += " (";
+    for (std::size_t i = 0; i < causes.size(); ++i) why += (i ? "; or " : "") + causes[i];
+    why += ")";
+  } else if (d * d <= r0 + r1) {
+    why += " (is it d^2 <= r0 + r1 you test? Square the sum: d^2 <= (r0 + r1)^2)";
+  } else if (parallel_note) {
+    why += parallel_note;
+  }
+  const auto yes_no = [](bool b) { return std::string(b ? "they meet" : "they do not meet"); };
+  return fail(yes_no(expected) + " (the cores are " + fmt(d) + " apart, r0 + r1 = " + fmt(r0 + r1) + ")", yes_no(got), why);
 }
 
 double scale_of_shapes(const Sphere& s) { return largest({s.center}, {s.radius}); }
@@ -135,10 +185,38 @@ oracle::SquaredDistance core_distance(const LozengePair& p) {
   return oracle::squared_distance(p.a.rectangle, p.b.rectangle);
 }
 
+// Where a "no" most often goes wrong, per pair: the candidates of steps 1 and 2.
+const char* missed(const SpherePair&) { return "the centres' distance is the cores' distance"; }
+const char* missed(const SphereCapsule&) { return "the centre's nearest point of the axis is its projection, clamped to the segment"; }
+const char* missed(const SphereLozenge&) { return "the nearest point of the rectangle clamps s and t to the half-sizes"; }
+const char* missed(const CapsulePair&) {
+  return "the lines' closest pair when it lies inside both segments, else an end against the other segment; "
+         "for nearly parallel axes measure the pair itself, the rounded cross product says nothing";
+}
+const char* missed(const CapsuleLozenge&) {
+  return "the crossing, the ends against the rectangle, the segment against its four sides; "
+         "for a side nearly parallel to the axis measure the pair itself, the rounded cross product says nothing";
+}
+const char* missed(const LozengePair&) {
+  return "a closest pair of two rectangles has a point on a side of either one: the sides of both, each against the "
+         "other rectangle";
+}
+
+// Where a "yes" most often goes wrong for cores with segments: the division-free recipe
+// on lines that are parallel only up to rounding.
+constexpr const char* kParallelNote =
+    " (where two of the lines are nearly parallel, the rounded n = d0 x d1 is mostly noise and (w . n)^2 <= R^2 |n|^2 "
+    "says nothing about their distance: measure the pair itself there)";
+template <class Pair>
+const char* parallel_note(const Pair&) { return nullptr; }
+const char* parallel_note(const CapsulePair&) { return kParallelNote; }
+const char* parallel_note(const CapsuleLozenge&) { return kParallelNote; }
+const char* parallel_note(const LozengePair&) { return kParallelNote; }
+
 template <class Pair>
 Outcome test_pair_verdict(const Pair& p, bool got, Rules rules) {
   const double tol = kRelative * std::max(scale_of_shapes(p.a), scale_of_shapes(p.b));
-  return test_verdict(core_distance(p), p.a.radius, p.b.radius, tol, got, rules);
+  return test_verdict(core_distance(p), p.a.radius, p.b.radius, tol, got, rules, missed(p), parallel_note(p));
 }
 
 // ---- Sweeps -----------------------------------------------------------------------------
@@ -156,11 +234,91 @@ std::string describe_sweep(const Sweep& s) {
   return "contact at t = " + fmt(s.time) + ", point " + fmt(s.point);
 }
 
+// What a report says about a sweep beyond the exact signs, in doubles (rounded, for the
+// words only): the gap at a time, the later root, and the likely causes of a wrong
+// status or time that the numbers of this input point at.
+struct Facts {
+  std::function<double(double)> gap;  // the gap at time t
+  double later = -1;                   // the later root (they part again), if any
+  std::string wrong_status;            // a likely cause of a wrong status, or ""
+  std::string wrong_time;              // a likely cause of a time past the first contact, or ""
+};
+
+// A shape whose value f0 + g t against the plane (|n| times the centre's signed distance)
+// must come within reach (|n| times its radius): the facts of steps 4 and 6.
+Facts plane_facts(const Plane& given, const Vec3& c, const Vec3& v, double reach_unit, double signed_reach_unit,
+                  const Sweep& got, double duration) {
+  const Plane p = scaled(given);
+  const double n = p.normal.norm(), f0 = p.value(c), g = p.normal.dot(v), sigma = f0 >= 0 ? 1.0 : -1.0;
+  Facts f;
+  f.gap = [=](double t) { return std::abs(f0 + g * t) / n - reach_unit; };
+  if (sigma * g < 0) f.later = (std::abs(f0) + reach_unit * n) / std::abs(g);
+  const double length = given.normal.norm();
+  const bool unit_mistake = std::isfinite(length) && std::abs(length - 1) > 1e-6;
+  // A normal taken as unit: |value| compared with the reach itself.
+  const double value0 = std::abs(given.value(c)), rate = std::abs(given.normal.dot(v));
+  if (unit_mistake) {  // what that mistake answers, against what was answered
+    const bool toward = sigma * given.normal.dot(v) < 0;
+    const double would_time = rate > 0 ? (value0 - reach_unit) / rate : -1;
+    const SweepStatus would = value0 <= reach_unit                      ? SweepStatus::overlapping
+                              : toward && would_time <= duration ? SweepStatus::contact
+                                                                 : SweepStatus::none;
+    const std::string unit = " (is n unit? n . c + offset is |n| = " + fmt(length) +
+                             " times the centre's distance: compare it with the reach times |n|)";
+    if (got.status == would) f.wrong_status = unit;
+    if (got.status == SweepStatus::contact && std::abs(got.time - would_time) <= 1e-6 * std::max(1.0, would_time))
+      f.wrong_time = unit;
+  }
+  if (f.wrong_status.empty() && sigma < 0 && got.status == SweepStatus::none)
+    f.wrong_status = " (the centre starts behind the plane, n . c + offset < 0: the plane is two-sided, and it is "
+                     "reached from either side)";
+  if (f.wrong_status.empty() && sigma * g >= 0 && got.status == SweepStatus::contact)
+    f.wrong_status = " (it moves away from the plane or along it, sign(f0) (n . v) >= 0: the lecture's \"T < 0\")";
+  if (f.wrong_time.empty() && signed_reach_unit < reach_unit * (1 - 1e-9))
+    f.wrong_time = " (the box reaches rho = sum_i h_i |n . axis_i| / |n| = " + fmt(reach_unit) +
+                   " toward the plane: each term counts with its absolute value; signed, they cancel to " +
+                   fmt(signed_reach_unit) + ")";
+  return f;
+}
+
+Facts facts(const SpherePlaneMotion& in, const Sweep& got) {
+  return plane_facts(in.plane, in.sphere.center, in.velocity, in.sphere.radius, in.sphere.radius, got, in.duration);
+}
+
+Facts facts(const BoxPlaneMotion& in, const Sweep& got) {
+  const Vec3 unit = scaled(in.plane).normal.normalized();
+  double reach = 0, signed_reach = 0;
+  for (int i = 0; i < 3; ++i) {
+    reach += in.box.half_extents[i] * std::abs(unit.dot(in.box.axes.col(i)));
+    signed_reach += in.box.half_extents[i] * unit.dot(in.box.axes.col(i));
+  }
+  return plane_facts(in.plane, in.box.center, in.velocity, reach, std::abs(signed_reach), got, in.duration);
+}
+
+Facts facts(const SphereSphereMotion& in, const Sweep& got) {
+  const Vec3 A = in.s0.center - in.s1.center, B = in.v0 - in.v1;
+  const double R = in.s0.radius + in.s1.radius, a = B.squaredNorm(), b = A.dot(B), c = A.squaredNorm() - R * R;
+  const double disc = a * R * R - A.cross(B).squaredNorm();
+  Facts f;
+  f.gap = [=](double t) { return (A + t * B).norm() - R; };
+  if (a > 0 && disc >= 0) f.later = (-b + std::sqrt(disc)) / a;
+  if (got.status == SweepStatus::contact && b >= 0 && c > 0)
+    f.wrong_status = " (they move apart or sideways, b = A . B = " + fmt(b) +
+                     " >= 0: the distance only grows, so both roots lie before t = 0)";
+  if (got.status == SweepStatus::none && disc == 0 && b < 0)
+    f.wrong_status = " (an exact graze, b^2 - ac = 0, is a contact: touching counts)";
+  if (got.status == SweepStatus::none && c == 0)
+    f.wrong_status = " (c = |A|^2 - R^2 = 0: touching at t = 0 counts as overlapping, sets are closed)";
+  return f;
+}
+
 // The status against the exact one, then a reported contact certified exactly: at its
 // time the gap is at most tol, before it never below -tol, and its point within tol of
 // both shapes. Ambiguous statuses get the slack of the doubt margin in those checks.
-template <class Motion, class PointCheck>
-Outcome sweep_verdict(const Motion& m, double duration, const Sweep& got, double tol, Rules rules, PointCheck&& point_ok) {
+// Each why states the header's rule, the numbers, then a likely cause when one shows.
+template <class Motion, class Input, class PointCheck>
+Outcome sweep_verdict(const Motion& m, const Input& in, const Sweep& got, double tol, Rules rules, PointCheck&& point_ok) {
+  const double duration = in.duration;
   const bool overlapping_now = oracle::gap_sign(m, 0.0, 0.0) <= 0;
   const bool touches = oracle::min_gap_sign(m, duration, 0.0) <= 0;
   const SweepStatus exact = overlapping_now ? SweepStatus::overlapping : (touches ? SweepStatus::contact : SweepStatus::none);
@@ -175,27 +333,47 @@ Outcome sweep_verdict(const Motion& m, double duration, const Sweep& got, double
   const bool accepted = got.status == exact ||
                         (doubt_now && (got.status == SweepStatus::overlapping || got.status == SweepStatus::contact)) ||
                         (doubt_ever && (got.status == SweepStatus::contact || got.status == SweepStatus::none));
+  const Facts f = facts(in, got);
   if (!accepted) {
     if (got.status != SweepStatus::none && got.status != SweepStatus::overlapping && got.status != SweepStatus::contact)
       return fail(expected, describe_sweep(got), "the status is not one of none, overlapping, contact");
-    return fail(expected, describe_sweep(got),
-                rules == Rules::exact ? "this degenerate input has an exact status (see the header's rules)"
-                                      : "the exact status is stable here: no input within 1e-9 S has another");
+    const double first = oracle::first_contact(m, duration);
+    std::string why;
+    if (exact == SweepStatus::overlapping)
+      why = "at t = 0 they already touch or overlap (gap " + fmt(f.gap(0)) +
+            " <= 0): the status is overlapping, whatever the motion";
+    else if (exact == SweepStatus::contact)
+      why = "they are apart at t = 0 (gap " + fmt(f.gap(0)) + ") and first touch at t = " + fmt(first) +
+            ", within [0, T = " + fmt(duration) + "]: the status is contact";
+    else
+      why = "they never touch during [0, T = " + fmt(duration) + "] (the gap at t = 0 is " + fmt(f.gap(0)) +
+            (got.status == SweepStatus::contact && std::isfinite(got.time) ? ", at your time " + fmt(f.gap(got.time)) : "") +
+            "): the status is none";
+    return fail(expected, describe_sweep(got), why + f.wrong_status);
   }
   if (got.status == SweepStatus::contact) {
     const double slack = doubt ? margin : tol;
-    const double t = got.time;
+    const double t = got.time, first = oracle::first_contact(m, duration);
     if (!(std::isfinite(t) && t >= 0 && t <= duration))
       return fail(expected, describe_sweep(got), "the time of contact must be in [0, T], T = " + fmt(duration));
     if (oracle::gap_sign(m, t, slack) > 0)
       return fail(expected, describe_sweep(got),
-                  "at your time they are still more than " + fmt(slack) + " apart: that is not contact yet");
-    if (oracle::min_gap_sign(m, t, -slack) < 0)
+                  "contact is the first time the gap reaches 0: at your t = " + fmt(t) + " the gap is still " +
+                      fmt(f.gap(t)) + " (tolerance " + fmt(slack) + "); they first touch at t = " + fmt(first) +
+                      f.wrong_time);
+    if (oracle::min_gap_sign(m, t, -slack) < 0) {
+      const bool later = f.later >= 0 && std::abs(t - f.later) <= 1e-6 * std::max(f.later, 1e-300);
       return fail(expected, describe_sweep(got),
-                  "before your time they already overlap by more than " + fmt(slack) + ": contact came earlier");
-    if (!point_ok(t, got.point, slack))
+                  "contact is the first time the gap reaches 0: they touch already at t = " + fmt(first) +
+                      " and overlap before your t = " + fmt(t) + " (tolerance " + fmt(slack) + ")" +
+                      (later ? ": your time is the later root, when they part again; the first contact is the "
+                               "smaller root"
+                             : f.wrong_time));
+    }
+    const std::string point = point_ok(t, got.point, slack);
+    if (!point.empty())
       return fail(expected, describe_sweep(got),
-                  "the point is not within " + fmt(slack) + " of both shapes at your time of contact");
+                  "the point must lie on both shapes at your time of contact (within " + fmt(slack) + "): " + point);
   }
   return doubt ? ambiguous() : pass();
 }
@@ -236,11 +414,17 @@ Outcome point_segment(const PointSegmentPair& in, const PointSegmentDistance& go
 
 Outcome segment_segment(const SegmentPair& in, const SegmentSegmentDistance& got) {
   const double tol = kRelative * scale(in);
-  return distance_verdict(oracle::squared_distance(in.first, in.second), got.squared_distance, got.closest0, got.closest1,
-                          tol, [&](Expect& e) {
-                            check_segment_point(e, "closest0", in.first, got.s, "s", got.closest0, tol);
-                            check_segment_point(e, "closest1", in.second, got.t, "t", got.closest1, tol);
-                          });
+  Outcome o = distance_verdict(oracle::squared_distance(in.first, in.second), got.squared_distance, got.closest0,
+                               got.closest1, tol, [&](Expect& e) {
+                                 check_segment_point(e, "closest0", in.first, got.s, "s", got.closest0, tol);
+                                 check_segment_point(e, "closest1", in.second, got.t, "t", got.closest1, tol);
+                               });
+  const Vec3 d0 = in.first.b - in.first.a, d1 = in.second.b - in.second.a;
+  const double nn = d0.cross(d1).squaredNorm(), scale2 = d0.squaredNorm() * d1.squaredNorm();
+  if (o.verdict == Outcome::Verdict::fail && nn > 0 && nn < 1e-8 * scale2)
+    o.why += " (the segments are nearly parallel, sin^2 of their angle " + fmt(nn / scale2) +
+             ": the textbook denominator a c - b^2 cancels there; |d0 x d1|^2 is the same number without the cancellation)";
+  return o;
 }
 
 // ---- Step 2 -------------------------------------------------------------------------------
@@ -282,15 +466,23 @@ Outcome test_pair(const LozengePair& in, bool got, Rules rules) { return test_pa
 
 Outcome sweep_sphere_plane(const SpherePlaneMotion& in, const Sweep& got, Rules rules) {
   const oracle::SpherePlaneSweep m{in.sphere, in.velocity, in.plane};
-  return sweep_verdict(m, in.duration, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
-    return oracle::within_moving_sphere(in.sphere, in.velocity, t, p, slack) && oracle::within_plane(in.plane, p, slack);
+  return sweep_verdict(m, in, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
+    if (oracle::within_moving_sphere(in.sphere, in.velocity, t, p, slack) && oracle::within_plane(in.plane, p, slack))
+      return std::string();
+    return "yours is " + fmt((p - in.sphere.center - t * in.velocity).norm()) + " from the centre (r = " +
+           fmt(in.sphere.radius) + ") and " + fmt(from_plane(in.plane, p)) +
+           " from the plane; the sphere's point nearest the plane is c(t) - sign(s(0)) r n / |n|";
   });
 }
 
 Outcome sweep_sphere_sphere(const SphereSphereMotion& in, const Sweep& got, Rules rules) {
   const oracle::SphereSphereSweep m{in.s0, in.s1, in.v0, in.v1};
-  const Outcome o = sweep_verdict(m, in.duration, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
-    return oracle::within_moving_sphere(in.s0, in.v0, t, p, slack) && oracle::within_moving_sphere(in.s1, in.v1, t, p, slack);
+  const Outcome o = sweep_verdict(m, in, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
+    if (oracle::within_moving_sphere(in.s0, in.v0, t, p, slack) && oracle::within_moving_sphere(in.s1, in.v1, t, p, slack))
+      return std::string();
+    return "yours is " + fmt((p - in.s0.center - t * in.v0).norm()) + " from c0(t) (r0 = " + fmt(in.s0.radius) +
+           ") and " + fmt((p - in.s1.center - t * in.v1).norm()) + " from c1(t) (r1 = " + fmt(in.s1.radius) +
+           "); the point is r0 / R of the way from c0(t) to c1(t)";
   });
   if (o.verdict != Outcome::Verdict::pass || got.status != SweepStatus::contact) return o;
   // Exact coefficients and a steep approach: the time must be right relative to itself,
@@ -298,15 +490,23 @@ Outcome sweep_sphere_sphere(const SphereSphereMotion& in, const Sweep& got, Rule
   if (!oracle::sphere_sweep_exact_and_steep(m)) return o;
   const double low = got.time * (1 - kRelative), high = std::min(got.time * (1 + kRelative), in.duration);
   if (oracle::min_gap_sign(m, low, 0.0) > 0 && oracle::min_gap_sign(m, high, 0.0) <= 0) return o;
+  const double exact = oracle::first_contact(m, in.duration);
   return fail(expected_sweep(m, in.duration), describe_sweep(got),
-              "the coefficients are exact and the approach steep, so the first root must be within a relative 1e-9 "
-              "of the exact one (a root formula that cancels loses it when contact comes very soon)");
+              "with exact coefficients and a steep approach the first root must be within a relative 1e-9 of the exact "
+              "one; yours is off by a relative " + fmt(std::abs(got.time - exact) / exact) +
+                  " (does your root formula cancel? -b - sqrt(b^2 - ac) subtracts nearly equal numbers when contact "
+                  "comes very soon: use q = -b + sqrt(b^2 - ac), t = c / q)");
 }
 
 Outcome sweep_box_plane(const BoxPlaneMotion& in, const Sweep& got, Rules rules) {
   const oracle::BoxPlaneSweep m{in.box, in.velocity, in.plane};
-  return sweep_verdict(m, in.duration, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
-    return oracle::within_moving_box(in.box, in.velocity, t, p, slack) && oracle::within_plane(in.plane, p, slack);
+  return sweep_verdict(m, in, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
+    const bool in_box = oracle::within_moving_box(in.box, in.velocity, t, p, slack);
+    if (in_box && oracle::within_plane(in.plane, p, slack)) return std::string();
+    return std::string("yours is ") + (in_box ? "in the box" : "outside the box") + " and " +
+           fmt(from_plane(in.plane, p)) +
+           " from the plane; any point of the box within tol of the plane passes (the corner nearest the plane is "
+           "c(t) - sign(s(0)) sum_i sign(n . axis_i) h_i axis_i)";
   });
 }
 
@@ -314,15 +514,24 @@ Outcome sweep_box_plane(const BoxPlaneMotion& in, const Sweep& got, Rules rules)
 
 namespace {
 
-// Radii around the cores' exact distance d: exactly d (touching when d is a double),
-// a hair inside or outside (2^-10 to 2^-50 of d), clearly apart or overlapping, or a
-// plain lattice length.
+// A hair just outside the doubt band of the tests (20 tol = 20e-9 S): m * 1e-9 S for m
+// from 24 to 2^24, log-uniform. The near cases stay decisive; exactly touching radii
+// belong to step 7.
+double decisive_hair(double S) {
+  return 24 * std::ldexp(1.0, *rc::gen::inRange(0, 20)) * (1 + *rc::gen::inRange(0, 8) / 8.0) * 1e-9 * S;
+}
+
+// Radii around the cores' exact distance d (S: the pair's scale without the radii): a
+// hair inside or outside, clearly apart or overlapping, or a plain lattice length.
 double radius_total(double d, double size) {
-  switch (*rc::gen::weightedElement<int>({{1, 0}, {3, 1}, {2, 2}, {2, 3}})) {
-    case 0: return d;
-    case 1: return std::max(0.0, d * (1 + *rc::gen::element(-1.0, 1.0) * *gen::tiny(10, 50)));
-    case 2: return d * *rc::gen::element(0.5, 0.875, 1.125, 2.0);
-    default: return *rc::gen::inRange(0, 9) / 4.0 * std::max(size, 1e-300);
+  switch (*rc::gen::weightedElement<int>({{4, 1}, {2, 2}, {2, 3}})) {
+    case 1: {
+      const double hair = decisive_hair(std::max(size, d) * 1.01);
+      return d > hair && *rc::gen::arbitrary<bool>() ? d - hair : d + hair;
+    }
+    // Cores that meet (d = 0) with radii 0 touch exactly: step 7's; here they overlap.
+    case 2: return d > 0 ? d * *rc::gen::element(0.5, 0.875, 1.125, 2.0) : decisive_hair(size);
+    default: return *rc::gen::inRange(1, 9) / 4.0 * std::max(size, 1e-300);
   }
 }
 
@@ -423,9 +632,17 @@ rc::Gen<Pair> pair_generator(const rc::Gen<Cores>& cores, bool exact, FromCores 
     const double d = core_distance(p).distance();
     return with_radii(p, exact ? exact_radius_total(d, lattice_unit(numbers)) : radius_total(d, size));
   });
+  // Cores exactly h apart: radii summing to h (exact, step 7), or a decisive hair off it.
   const rc::Gen<Pair> touching = rc::gen::exec([=] {
     const Canonical k = canonical();
-    return with_radii(canon(k), k.h);
+    const Pair p = canon(k);
+    if (exact) return with_radii(p, k.h);
+    std::vector<double> numbers;
+    core_numbers(p.a, numbers);
+    core_numbers(p.b, numbers);
+    double size = k.h;
+    for (double x : numbers) size = std::max(size, std::abs(x));
+    return with_radii(p, radius_total(k.h, size));
   });
   return rc::gen::weightedOneOf<Pair>({{exact ? 1 : 6, around}, {1, touching}});
 }

@@ -44,6 +44,20 @@ double hair(double size) { return *integer(4) * *tiny(10, 50) * size; }
 
 double largest(std::initializer_list<Vec3> points) { return std::max(1e-300, scale_of(points)); }
 
+// A near miss or a near hit that is still decisive: m * 1e-9 S for m from 30 to 2^24,
+// log-uniform, either sign. The judges count a sweep as ambiguous within 24 tol = 24e-9 S
+// of touching, so these stay just outside that band (the exact touch is step 7's).
+double decisive_hair(double S, bool positive_only = false) {
+  const double m = 30 * std::ldexp(1.0, *rc::gen::inRange(0, 20)) * (1 + *rc::gen::inRange(0, 8) / 8.0);
+  const double sign = positive_only ? 1.0 : *rc::gen::element(-1.0, 1.0);
+  return sign * m * 1e-9 * S;
+}
+
+// The judges' S for a moving sphere or box against a plane (sphere_sweeps.h).
+double motion_scale(const Vec3& center, const Vec3& displacement, double size, const Plane& plane) {
+  return std::max({scale_of({center, displacement}), size, std::abs(plane.offset) / plane.normal.norm(), 1e-300});
+}
+
 // Orthonormal axes: a rotation from a small integer quaternion (rounded), or, exactly, a
 // signed permutation of the coordinate axes.
 Mat3 axes(const Grid& g) {
@@ -118,8 +132,14 @@ rc::Gen<SegmentPair> segment_pair_families(bool exact) {
     const Grid g = *grid(exact);
     const Segment first = segment(g);
     const Vec3 d0 = first.b - first.a;
-    switch (*rc::gen::weightedElement<int>({{2, 0}, {2, 1}, {2, 2}, {3, 3}, {2, 4}, {1, 5}})) {
+    switch (*rc::gen::weightedElement<int>({{2, 0}, {2, 1}, {2, 2}, {3, 3}, {2, 4}, {1, 5}, {exact ? 0 : 1, 6}})) {
       case 0: return SegmentPair{first, segment(g)};
+      case 6: {  // crossing (or a hair apart) at an angle of 2^-20 to 2^-26 inside both: only
+                 // |d0 x d1|^2 keeps the lines' pair; a c - b^2 is then rounding noise
+        const Vec3 x = first.a + *rc::gen::inRange(1, 8) / 8.0 * d0 + hair(largest({first.a, first.b})) * grid_direction(g) / g.s;
+        const Vec3 d1 = d0 + *tiny(20, 26) * grid_direction(g) * (d0.norm() / g.s / 8);
+        return SegmentPair{first, {x - *rc::gen::inRange(1, 8) / 8.0 * d1, x + *rc::gen::inRange(1, 8) / 8.0 * d1}};
+      }
       case 1: {  // the lines cross (at a point of the first), then maybe lifted apart
         const Vec3 x = exact ? first.a : Vec3(first.a + fraction(g) * d0);
         const Vec3 d1 = grid_direction(g);
@@ -283,24 +303,29 @@ rc::Gen<SpherePlaneMotion> sphere_plane_families(bool exact) {
     const double T = duration(g);
     const double side = *rc::gen::element(-1.0, 1.0);
     Vec3 center = grid_point(g);
-    switch (*rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}})) {
+    const int family = *rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}});
+    switch (family) {
       case 0: break;  // anywhere
-      case 1: {  // touching at t = 0 (exactly, on the exact lattice), beside x
+      case 1: {  // touching at t = 0 exactly (exact lattice), or decisively near it, beside x
         Vec3 beside = plane.normal.cross(grid_direction(g));
         if (!exact) beside /= plane.normal.cwiseAbs().maxCoeff();
         center = x + beside + side * r * unit;
         break;
       }
-      case 2: {  // reaching the plane exactly at T, moving straight at it
+      case 2: {  // reaching the plane exactly at T (exact), or just before or after it
         const double gap = grid_length(g) + g.s;
         center = x + side * (r + gap) * unit;
-        return SpherePlaneMotion{{center, r}, -side * gap / T * unit, plane, T};
+        const double travel = exact ? gap : gap + decisive_hair(motion_scale(center, gap * unit, r, plane));
+        return SpherePlaneMotion{{center, r}, -side * travel / T * unit, plane, T};
       }
-      default:  // a hair from touching at 0
-        center = x + side * (r + (exact ? 0.0 : hair(largest({x})))) * unit;
+      default:  // a hair from touching at 0, straight over x
+        center = x + side * r * unit;
         break;
     }
-    return SpherePlaneMotion{{center, r}, velocity_for(g, plane, center), plane, T};
+    const Vec3 velocity = velocity_for(g, plane, center);
+    // Cases 1 and 3 on the fine lattice: move off the exact touch, just outside the doubt band.
+    if (!exact && family != 0) center += side * decisive_hair(motion_scale(center, velocity * T, r, plane)) * unit;
+    return SpherePlaneMotion{{center, r}, velocity, plane, T};
   });
 }
 
@@ -323,6 +348,19 @@ SphereSphereMotion place(const Grid& g, const Vec3& A, const Vec3& B, double R, 
   return {{c1 + A, r0}, v1 + B, {c1, r1}, v1, T};
 }
 
+// The same, on the fine lattice with R moved off the exact touch (at t = 0, at the graze,
+// at T) to just outside the judges' doubt band: decisive, and still very near.
+SphereSphereMotion place_near(const Grid& g, const Vec3& A, const Vec3& B, double R, double T) {
+  SphereSphereMotion m = place(g, A, B, R, T);
+  if (g.exact) return m;
+  const double S = std::max({scale_of({m.s0.center, m.s1.center, m.v0 * T, m.v1 * T}), R, 1e-300});
+  const double hair = decisive_hair(S);
+  const auto [r0, r1] = *split_radius(R + hair >= 0 ? R + hair : R - hair);
+  m.s0.radius = r0;
+  m.s1.radius = r1;
+  return m;
+}
+
 rc::Gen<SphereSphereMotion> sphere_sphere_families(bool exact) {
   return rc::gen::exec([exact] {
     const Grid g = *grid(exact);
@@ -338,13 +376,13 @@ rc::Gen<SphereSphereMotion> sphere_sphere_families(bool exact) {
         const double R = n * g.s + *rc::gen::element(0.0, 0.0, g.s);
         const Vec3 sideways = A.cross(grid_direction(g)) / (exact ? 1.0 : double(n));
         const Vec3 B = *rc::gen::element(Vec3(-A), Vec3(A), sideways, Vec3(Vec3::Zero()), grid_direction(g));
-        return place(g, A, B, R, T);
+        return place_near(g, A, B, R, T);
       }
       case 2: {  // head-on: |A| = n k, R = n (k - j), closing at j / T per unit of dir: contact at T
         int n = 0;
         const Vec3 dir = pythagorean(n);
         const int k = *rc::gen::inRange(1, 5), j = *rc::gen::inRange(1, k + 1);
-        return place(g, dir * (k * g.s), -dir * (j * g.s / T), n * (k - j) * g.s, T);
+        return place_near(g, dir * (k * g.s), -dir * (j * g.s / T), n * (k - j) * g.s, T);
       }
       case 3: {  // no relative motion
         SphereSphereMotion m{{grid_point(g), grid_length(g)}, grid_direction(g), {grid_point(g), grid_length(g)}, Vec3::Zero(), T};
@@ -382,28 +420,76 @@ rc::Gen<BoxPlaneMotion> box_plane_families(bool exact) {
     double reach = 0;
     for (int i = 0; i < 3; ++i) reach += box.half_extents[i] * std::abs(unit.dot(box.axes.col(i)));
     const double side = *rc::gen::element(-1.0, 1.0);
-    switch (*rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}})) {
+    const double size = box.half_extents.maxCoeff();
+    const int family = *rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}});
+    switch (family) {
       case 0: break;
-      case 1:  // resting on the plane at t = 0 (exactly, on the exact lattice)
+      case 1:  // resting on the plane at t = 0 exactly (exact lattice), or decisively near it
         box.center = x + side * reach * unit;
         break;
-      case 2: {  // reaching the plane exactly at T
+      case 2: {  // reaching the plane exactly at T (exact), or just before or after it
         const double gap = grid_length(g) + g.s;
         box.center = x + side * (reach + gap) * unit;
-        return BoxPlaneMotion{box, -side * gap / T * unit, plane, T};
+        const double travel = exact ? gap : gap + decisive_hair(motion_scale(box.center, gap * unit, size, plane));
+        return BoxPlaneMotion{box, -side * travel / T * unit, plane, T};
       }
-      default:  // a hair from resting
-        box.center = x + side * (reach + (exact ? 0.0 : hair(largest({x})))) * unit;
+      default:  // a hair from resting, straight over x
+        box.center = x + side * reach * unit;
         break;
     }
-    return BoxPlaneMotion{box, velocity_for(g, plane, box.center), plane, T};
+    const Vec3 velocity = velocity_for(g, plane, box.center);
+    if (!exact && family != 0) box.center += side * decisive_hair(motion_scale(box.center, velocity * T, size, plane)) * unit;
+    return BoxPlaneMotion{box, velocity, plane, T};
+  });
+}
+
+// Every length of an input times k (a power of two: exact, so every family keeps its
+// structure): the ends of the header's domain, S from about 1e-40 to 1e40.
+void times(Vec3& x, double k) { x *= k; }
+void times(double& x, double k) { x *= k; }
+void times(Segment& x, double k) { times(x.a, k); times(x.b, k); }
+void times(Rectangle& x, double k) { times(x.center, k); times(x.half_u, k); times(x.half_v, k); }
+void times(Sphere& x, double k) { times(x.center, k); times(x.radius, k); }
+void times(Plane& x, double k) { times(x.offset, k); }
+void times(Box& x, double k) { times(x.center, k); times(x.half_extents, k); }
+void times(PointSegmentPair& x, double k) { times(x.p, k); times(x.segment, k); }
+void times(SegmentPair& x, double k) { times(x.first, k); times(x.second, k); }
+void times(PointRectanglePair& x, double k) { times(x.p, k); times(x.rectangle, k); }
+void times(SegmentRectanglePair& x, double k) { times(x.segment, k); times(x.rectangle, k); }
+void times(RectanglePair& x, double k) { times(x.first, k); times(x.second, k); }
+void times(SpherePlaneMotion& x, double k) { times(x.sphere, k); times(x.velocity, k); times(x.plane, k); }
+void times(SphereSphereMotion& x, double k) { times(x.s0, k); times(x.s1, k); times(x.v0, k); times(x.v1, k); }
+void times(BoxPlaneMotion& x, double k) { times(x.box, k); times(x.velocity, k); times(x.plane, k); }
+
+template <class T>
+rc::Gen<T> at_extreme_scale(rc::Gen<T> base) {
+  return rc::gen::exec([base] {
+    T x = *base;
+    times(x, std::ldexp(1.0, *rc::gen::element(-110, -100, 90, 100)));
+    return x;
+  });
+}
+
+// A plane's normal of extreme length, 2^j for j from -1000 to 900, the offset with it:
+// the same plane (when the offset stays a finite double), whose n . n overflows or
+// underflows unless scaled first.
+template <class T>
+rc::Gen<T> with_extreme_normal(rc::Gen<T> base) {
+  return rc::gen::exec([base] {
+    T x = *base;
+    const double k = std::ldexp(1.0, *rc::gen::element(-1000, -700, -540, 500, 520, 700, 900));
+    if (std::isfinite(x.plane.offset * k) && (x.plane.offset == 0 || x.plane.offset * k != 0)) {
+      x.plane.normal *= k;
+      x.plane.offset *= k;
+    }
+    return x;
   });
 }
 
 template <class T>
 rc::Gen<T> with_far(rc::Gen<T> families, bool exact, void (*move)(T&, const Vec3&), double (*size)(const T&)) {
   if (exact) return families;
-  return rc::gen::weightedOneOf<T>({{7, families}, {1, far_away(families, move, size)}});
+  return rc::gen::weightedOneOf<T>({{14, families}, {2, far_away(families, move, size)}, {1, at_extreme_scale(families)}});
 }
 
 }  // namespace
@@ -428,11 +514,10 @@ rc::Gen<SphereSphereMotion> grazing_spheres() {
     if (B == Vec3::Zero()) return SphereSphereMotion{{P * s, n * s}, Vec3::Zero(), {}, Vec3::Zero(), 1.0};
     const double tc = *rc::gen::inRange(1, 16) / 16.0;
     const Vec3 A = P - tc * B;
-    const int k = *rc::gen::inRange(10, 53);
-    const double e = *rc::gen::weightedElement<double>({{1, 0.0}, {3, -1.0}, {3, 1.0}}) * std::ldexp(1.0, -k);
-    const double R = n * (1 + e);
+    // R = n (1 + e): the closest approach is n, within a decisive hair of R (an exact
+    // graze, e = 0, is step 7's).
     const Grid g{s, false};
-    return place(g, A * s, B * s, R * s, *rc::gen::element(1.0, 1.0, 2.0));
+    return place_near(g, A * s, B * s, n * s, *rc::gen::element(1.0, 1.0, 2.0));
   });
 }
 
@@ -469,13 +554,15 @@ rc::Gen<RectanglePair> rectangle_pair(bool exact) {
   return with_far(rectangle_pair_families(exact), exact, move_rectangle_pair, size_rectangle_pair);
 }
 rc::Gen<SpherePlaneMotion> sphere_plane_motion(bool exact) {
-  return with_far(sphere_plane_families(exact), exact, move_sphere_plane, size_sphere_plane);
+  const auto g = with_far(sphere_plane_families(exact), exact, move_sphere_plane, size_sphere_plane);
+  return exact ? g : rc::gen::weightedOneOf<SpherePlaneMotion>({{7, g}, {1, with_extreme_normal(g)}});
 }
 rc::Gen<SphereSphereMotion> sphere_sphere_motion(bool exact) {
   return with_far(sphere_sphere_families(exact), exact, move_sphere_sphere, size_sphere_sphere);
 }
 rc::Gen<BoxPlaneMotion> box_plane_motion(bool exact) {
-  return with_far(box_plane_families(exact), exact, move_box_plane, size_box_plane);
+  const auto g = with_far(box_plane_families(exact), exact, move_box_plane, size_box_plane);
+  return exact ? g : rc::gen::weightedOneOf<BoxPlaneMotion>({{7, g}, {1, with_extreme_normal(g)}});
 }
 
 }  // namespace labkit::gen

@@ -484,9 +484,12 @@ double first_contact(const SphereSphereSweep& in, double t_end) {
 double first_contact(const SpherePlaneSweep& in, double t_end) {
   if (gap_sign(in, 0.0, 0.0) <= 0) return 0.0;
   if (min_gap_sign(in, t_end, 0.0) > 0) return -1.0;
+  // t = (|f0| - r |n|) / |g|, each term divided by |g| exactly before rounding, so that
+  // normals of any length (|n|^2 beyond the doubles) still give the right number.
   const Linear f = linear(in.plane, in.sphere.center, in.velocity);
-  const double reach = std::abs(rounded(f.f0)) - in.sphere.radius * std::sqrt(rounded(normal2(in.plane)));
-  return std::clamp(reach / std::abs(rounded(f.g)), 0.0, t_end);
+  const double t = rounded(CGAL::abs(f.f0) / CGAL::abs(f.g)) -
+                   in.sphere.radius * std::sqrt(rounded(normal2(in.plane) / (f.g * f.g)));
+  return std::clamp(t, 0.0, t_end);
 }
 
 double first_contact(const BoxPlaneSweep& in, double t_end) {

@@ -26,6 +26,20 @@
 // Rectangle axes u and v are unit length and perpendicular (to rounding); box axes are
 // orthonormal columns (to rounding); plane normals need NOT have unit length.
 //
+// Input domain. Every answer must match the exact one (within the tolerances below) on
+// all input where S (below) is 0 or lies in [1e-40, 1e40]: the products the tests need
+// (up to degree 6 in the coordinates) then stay far from overflow and underflow. A
+// plane's normal may have any non-zero length a double holds (components from 1e-300 to
+// 1e300, as long as the offset is a finite double): the answer is that of the plane the
+// numbers describe, so a normal of length 1e200 must not overflow |n|^2.
+//
+// Preconditions (every query). Every number is finite; radii, half-sizes (half_u, half_v,
+// half_extents) and the duration are >= 0; a plane's normal is not zero; rectangle axes
+// and box axes are unit and perpendicular to rounding (the reference checks to 1e-6).
+// The reference throws std::invalid_argument naming the argument and the rule, e.g.
+// "sweep_sphere_plane: plane.normal must be non-zero, got (0, 0, 0)". You are not graded
+// on invalid input: your code may assume the preconditions hold.
+//
 // Tolerances. S is the largest absolute coordinate of the input's points (sphere centres,
 // segment ends, rectangle and box centres), of its lengths (radii, half-sizes), of each
 // motion's displacement (velocity * duration) and of each plane's distance from the
@@ -168,8 +182,9 @@ Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, co
 
 // Project the box's half-sizes onto the unit normal: rho = sum_i h_i |n . axis_i| / |n|
 // is the radius of the box seen along n; then it is step 4 with the centre's distance
-// against rho. The point is the box's point nearest the plane at the time of contact
-// (a corner; a face or edge has many: any point of the box within tol of the plane).
+// against rho. The point is a point of the box (at `time`) within tol of the plane: the
+// corner nearest the plane, or, when a face or an edge touches, any point of it (its
+// middle, a corner of it, ...): every such point passes.
 Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& plane, double duration);
 
 // ---- Step 7 (L05S7): robustness -----------------------------------------------------
@@ -180,5 +195,7 @@ Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& plane, 
 // the plane, and spheres a hair apart that meet very soon. On such input the tests and
 // statuses must be exactly right (nothing is ambiguous): decide by comparing squared
 // distances without dividing (num <= R^2 den), then construct. Distances keep their tol.
+// (Step 3's random and worked cases still hold you to the rules on lines that are
+// parallel only up to rounding: there the rounded d0 x d1 is noise, so measure the pair.)
 
 }  // namespace labkit::lab05

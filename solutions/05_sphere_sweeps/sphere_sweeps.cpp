@@ -17,7 +17,10 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 namespace labkit::lab05 {
 
@@ -26,6 +29,90 @@ namespace {
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 double square(double x) { return x * x; }
+
+// ---- The header's preconditions: std::invalid_argument naming the argument and the rule --
+
+std::string number(double x) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", x);
+  return text;
+}
+std::string vector(const Vec3& x) { return "(" + number(x.x()) + ", " + number(x.y()) + ", " + number(x.z()) + ")"; }
+
+[[noreturn]] void reject(const char* query, const std::string& argument, const char* rule, const std::string& got) {
+  throw std::invalid_argument(std::string(query) + ": " + argument + " must " + rule + ", got " + got);
+}
+void require_finite(const char* query, const std::string& argument, const Vec3& x) {
+  if (!x.allFinite()) reject(query, argument, "be finite", vector(x));
+}
+void require_finite(const char* query, const std::string& argument, double x) {
+  if (!std::isfinite(x)) reject(query, argument, "be finite", number(x));
+}
+void require_size(const char* query, const std::string& argument, double x) {
+  if (!(std::isfinite(x) && x >= 0)) reject(query, argument, "be finite and >= 0", number(x));
+}
+// "Unit length and perpendicular (to rounding)": checked loosely, 1e-6, to catch a
+// forgotten normalisation, never a rounded rotation.
+void require_unit(const char* query, const std::string& argument, const Vec3& x) {
+  require_finite(query, argument, x);
+  if (!(std::abs(x.squaredNorm() - 1) <= 1e-6)) reject(query, argument, "have unit length", vector(x));
+}
+void require_perpendicular(const char* query, const std::string& argument, const Vec3& x, const Vec3& y) {
+  if (!(std::abs(x.dot(y)) <= 1e-6)) reject(query, argument, "be perpendicular", number(x.dot(y)) + " for their dot product");
+}
+void require(const char* query, const std::string& name, const Segment& s) {
+  require_finite(query, name + ".a", s.a);
+  require_finite(query, name + ".b", s.b);
+}
+void require(const char* query, const std::string& name, const Rectangle& r) {
+  require_finite(query, name + ".center", r.center);
+  require_unit(query, name + ".u", r.u);
+  require_unit(query, name + ".v", r.v);
+  require_perpendicular(query, name + ".u and " + name + ".v", r.u, r.v);
+  require_size(query, name + ".half_u", r.half_u);
+  require_size(query, name + ".half_v", r.half_v);
+}
+void require(const char* query, const std::string& name, const Sphere& s) {
+  require_finite(query, name + ".center", s.center);
+  require_size(query, name + ".radius", s.radius);
+}
+void require(const char* query, const std::string& name, const Capsule& c) {
+  require(query, name + ".axis", c.axis);
+  require_size(query, name + ".radius", c.radius);
+}
+void require(const char* query, const std::string& name, const Lozenge& l) {
+  require(query, name + ".rectangle", l.rectangle);
+  require_size(query, name + ".radius", l.radius);
+}
+void require(const char* query, const std::string& name, const Plane& p) {
+  require_finite(query, name + ".normal", p.normal);
+  require_finite(query, name + ".offset", p.offset);
+  if (p.normal == Vec3::Zero()) reject(query, name + ".normal", "be non-zero", vector(p.normal));
+}
+void require(const char* query, const std::string& name, const Box& b) {
+  require_finite(query, name + ".center", b.center);
+  for (int i = 0; i < 3; ++i) {
+    const std::string axis = name + ".axes.col(" + std::to_string(i) + ")";
+    require_unit(query, axis, b.axes.col(i));
+    require_size(query, name + ".half_extents[" + std::to_string(i) + "]", b.half_extents[i]);
+    for (int j = 0; j < i; ++j)
+      require_perpendicular(query, name + ".axes.col(" + std::to_string(j) + ") and " + axis, b.axes.col(j), b.axes.col(i));
+  }
+}
+void require_motion(const char* query, const Vec3& velocity, const char* velocity_name, double duration) {
+  require_finite(query, velocity_name, velocity);
+  require_size(query, "duration", duration);
+}
+
+// The same plane with its normal scaled by a power of two so that the largest component
+// lies in [1, 2): n . n can then neither overflow (|n| above ~1e154) nor underflow (|n|
+// below ~1e-162), and because the factor is a power of two every product stays exactly
+// what it was, only shifted: on small integers the decisions stay exact.
+Plane scaled(const Plane& plane) {
+  const int e = std::ilogb(plane.normal.cwiseAbs().maxCoeff());
+  return {Vec3(std::ldexp(plane.normal.x(), -e), std::ldexp(plane.normal.y(), -e), std::ldexp(plane.normal.z(), -e)),
+          std::ldexp(plane.offset, -e)};
+}
 
 // a + t (b - a), landing exactly on b at t = 1.
 Vec3 point_at(const Segment& s, double t) { return t == 1.0 ? s.b : Vec3(s.a + t * (s.b - s.a)); }
@@ -61,8 +148,7 @@ bool segment_segment_within(const Segment& s0, const Segment& s1, double r2) {
   // picks up w's long component along the lines, so it no longer measures their distance.
   // Measure the pair itself: any pair of points is at least the true distance apart, and
   // when the segments really cross at such an angle the pair found is accurate.
-  if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm())
-    return (point_at(s0, s / nn) - point_at(s1, t / nn)).squaredNorm() <= r2;
+  if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm()) return point_segment_within(point_at(s0, s / nn), s1, r2);
   return square(w.dot(n)) <= r2 * nn;
 }
 
@@ -152,6 +238,8 @@ PlaneApproach approach_plane(double f0, double g, double reach, double reach2, d
 // ---- Step 1 --------------------------------------------------------------------------------
 
 PointSegmentDistance point_segment(const Vec3& p, const Segment& segment) {
+  require_finite("point_segment", "p", p);
+  require("point_segment", "segment", segment);
   // Minimise |a + t d - p|^2 over t: the derivative vanishes at t = (p - a) . d / (d . d);
   // the function is a parabola, so outside [0, 1] the nearer end wins.
   const Vec3 d = segment.b - segment.a;
@@ -181,6 +269,8 @@ PointSegmentDistance point_segment(const Vec3& p, const Segment& segment) {
 //   Parallel segments (n = 0) have no single lines' pair: the border candidates hold a
 //   closest pair, and we return the first minimal one.
 SegmentSegmentDistance segment_segment(const Segment& first, const Segment& second) {
+  require("segment_segment", "first", first);
+  require("segment_segment", "second", second);
   SegmentSegmentDistance best;
   best.squared_distance = kInfinity;
   const auto consider = [&](double s, double t, const Vec3& p, const Vec3& q) {
@@ -195,7 +285,14 @@ SegmentSegmentDistance segment_segment(const Segment& first, const Segment& seco
     const Vec3 w = second.a - first.a;
     const double s = w.cross(d1).dot(n) / nn, t = w.cross(d0).dot(n) / nn;
     if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
-      consider(s, t, point_at(first, s), point_at(second, t));
+      // The point at s, then its projection onto the second segment. For nearly parallel
+      // segments s and t each carry a rounding error along the lines (a small error of
+      // the numerators over a tiny |n|^2), and the two errors do not cancel: the pair
+      // would lie farther apart than the segments. Projecting ties q to p, so the pair is
+      // as far apart as p from the second segment: the true distance, to rounding.
+      const Vec3 p = point_at(first, s);
+      const PointSegmentDistance q = point_segment(p, second);
+      consider(s, q.t, p, q.closest);
       // Clearly not parallel (sin^2 of the angle above 1e-4): this pair is accurate and,
       // being the unconstrained minimum, no border point beats it.
       if (nn > 1e-4 * d0.squaredNorm() * d1.squaredNorm()) return best;
@@ -218,6 +315,8 @@ SegmentSegmentDistance segment_segment(const Segment& first, const Segment& seco
 // ---- Step 2 --------------------------------------------------------------------------------
 
 PointRectangleDistance point_rectangle(const Vec3& p, const Rectangle& rectangle) {
+  require_finite("point_rectangle", "p", p);
+  require("point_rectangle", "rectangle", rectangle);
   // In the rectangle's frame the squared distance is (s - s_p)^2 + (t - t_p)^2 + h^2,
   // with s_p = (p - c) . u, t_p = (p - c) . v: each coordinate is minimised on its own,
   // by clamping to the half-size. h, the height above the plane, is whatever it is.
@@ -236,6 +335,8 @@ PointRectangleDistance point_rectangle(const Vec3& p, const Rectangle& rectangle
 //   to the rectangle there and could slide to an end or the border without getting
 //   farther). So: two ends against the rectangle, the segment against four sides.
 SegmentRectangleDistance segment_rectangle(const Segment& segment, const Rectangle& rectangle) {
+  require("segment_rectangle", "segment", segment);
+  require("segment_rectangle", "rectangle", rectangle);
   SegmentRectangleDistance best;
   const Crossing x = crossing(segment, rectangle);
   if (x.inside) {
@@ -267,6 +368,8 @@ SegmentRectangleDistance segment_rectangle(const Segment& segment, const Rectang
 //   side of one of them, and a side that meets the other rectangle is at distance 0. So
 //   the nearest of the eight sides, each against the other rectangle.
 RectangleRectangleDistance rectangle_rectangle(const Rectangle& first, const Rectangle& second) {
+  require("rectangle_rectangle", "first", first);
+  require("rectangle_rectangle", "second", second);
   RectangleRectangleDistance best;
   best.squared_distance = kInfinity;
   for (int i = 0; i < 4; ++i) {
@@ -286,26 +389,38 @@ RectangleRectangleDistance rectangle_rectangle(const Rectangle& first, const Rec
 // touching capsules could come out a hair apart.)
 
 bool test_sphere_sphere(const Sphere& a, const Sphere& b) {
+  require("test_sphere_sphere", "a", a);
+  require("test_sphere_sphere", "b", b);
   return (a.center - b.center).squaredNorm() <= square(a.radius + b.radius);
 }
 
 bool test_sphere_capsule(const Sphere& a, const Capsule& b) {
+  require("test_sphere_capsule", "a", a);
+  require("test_sphere_capsule", "b", b);
   return point_segment_within(a.center, b.axis, square(a.radius + b.radius));
 }
 
 bool test_sphere_lozenge(const Sphere& a, const Lozenge& b) {
+  require("test_sphere_lozenge", "a", a);
+  require("test_sphere_lozenge", "b", b);
   return point_rectangle_within(a.center, b.rectangle, square(a.radius + b.radius));
 }
 
 bool test_capsule_capsule(const Capsule& a, const Capsule& b) {
+  require("test_capsule_capsule", "a", a);
+  require("test_capsule_capsule", "b", b);
   return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));
 }
 
 bool test_capsule_lozenge(const Capsule& a, const Lozenge& b) {
+  require("test_capsule_lozenge", "a", a);
+  require("test_capsule_lozenge", "b", b);
   return segment_rectangle_within(a.axis, b.rectangle, square(a.radius + b.radius));
 }
 
 bool test_lozenge_lozenge(const Lozenge& a, const Lozenge& b) {
+  require("test_lozenge_lozenge", "a", a);
+  require("test_lozenge_lozenge", "b", b);
   const double r2 = square(a.radius + b.radius);
   for (int i = 0; i < 4; ++i)
     if (segment_rectangle_within(side(a.rectangle, i), b.rectangle, r2)) return true;
@@ -316,9 +431,14 @@ bool test_lozenge_lozenge(const Lozenge& a, const Lozenge& b) {
 
 // ---- Step 4 --------------------------------------------------------------------------------
 
-Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane& plane, double duration) {
+Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane& given, double duration) {
+  require("sweep_sphere_plane", "sphere", sphere);
+  require_motion("sweep_sphere_plane", velocity, "velocity", duration);
+  require("sweep_sphere_plane", "plane", given);
   // With f(t) = normal . c(t) + offset = f0 + g t, the signed distance is f / |normal|:
   // compare f with r |normal| rather than normalising (the normal need not be unit).
+  // First the plane is rescaled by a power of two, so that n . n is a normal double.
+  const Plane plane = scaled(given);
   const double f0 = plane.value(sphere.center), g = plane.normal.dot(velocity);
   const double nn = plane.normal.squaredNorm(), r = sphere.radius;
   if (square(f0) <= square(r) * nn) return overlapping();  // touching or cutting it now
@@ -348,6 +468,10 @@ Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane
 //   The textbook (-b - sqrt(b^2 - ac)) / a subtracts two nearly equal numbers when a c is
 //   small against b^2 (the spheres start a hair apart): its time is then mostly noise.
 Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, const Vec3& v1, double duration) {
+  require("sweep_sphere_sphere", "s0", s0);
+  require("sweep_sphere_sphere", "s1", s1);
+  require_motion("sweep_sphere_sphere", v0, "v0", duration);
+  require_finite("sweep_sphere_sphere", "v1", v1);
   const Vec3 A = s0.center - s1.center, B = v0 - v1;
   const double R = s0.radius + s1.radius;
   const double c = A.squaredNorm() - R * R;
@@ -369,7 +493,11 @@ Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, co
 
 // ---- Step 6 --------------------------------------------------------------------------------
 
-Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& plane, double duration) {
+Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& given, double duration) {
+  require("sweep_box_plane", "box", box);
+  require_motion("sweep_box_plane", velocity, "velocity", duration);
+  require("sweep_box_plane", "plane", given);
+  const Plane plane = scaled(given);  // as in step 4: any normal length, no overflow
   // The box reaches sum_i h_i |n . axis_i| / |n| from its centre along the unit normal
   // (project each half-size on the normal line; the corner that reaches farthest takes
   // every term with its own sign). Multiply through by |n|: then f and the reach are

@@ -128,8 +128,19 @@ void draw_box(Renderer& r, const Box& b, Color c, float width) {
       if (!((i >> k) & 1)) r.line(b.corner(i), b.corner(i | (1 << k)), c, width);
 }
 
+// The same plane with its normal scaled by a power of two (largest component in [1, 2)),
+// for drawing only: n . n of a normal of length 1e200 or 1e-200 is then a normal double.
+// The judge and the code under test always see the numbers as given.
+Plane drawable(const Plane& p) {
+  if (p.normal == Vec3::Zero() || !p.normal.allFinite()) return p;
+  const int e = std::ilogb(p.normal.cwiseAbs().maxCoeff());
+  return {Vec3(std::ldexp(p.normal.x(), -e), std::ldexp(p.normal.y(), -e), std::ldexp(p.normal.z(), -e)),
+          std::ldexp(p.offset, -e)};
+}
+
 // A square of the plane around `near`, `size` across, and its normal.
-void draw_plane(Renderer& r, const Plane& p, const Vec3& near, double size) {
+void draw_plane(Renderer& r, const Plane& given, const Vec3& near, double size) {
+  const Plane p = drawable(given);
   const double nn = p.normal.squaredNorm();
   if (nn == 0) return;
   const Vec3 n = p.normal / std::sqrt(nn), foot = near - p.value(near) / nn * p.normal;
@@ -254,8 +265,9 @@ SphereSweepsScene::SphereSweepsScene(const Setup& setup) {
   const Vec3 c = mode_ == Mode::box_plane ? box_.center : s0_.center;
   end0_ = last_end0_ = c + duration_ * v0_;
   end1_ = last_end1_ = s1_.center + duration_ * v1_;
-  const double nn = plane_.normal.squaredNorm();
-  plane_point_ = last_plane_point_ = nn > 0 ? Vec3(c - plane_.value(c) / nn * plane_.normal) : c;
+  const Plane plane = drawable(plane_);
+  const double nn = plane.normal.squaredNorm();
+  plane_point_ = last_plane_point_ = nn > 0 ? Vec3(c - plane.value(c) / nn * plane.normal) : c;
   frame_inputs();
 }
 
@@ -295,8 +307,9 @@ void SphereSweepsScene::follow_handles() {
   if (plane_point_ != last_plane_point_) plane_.offset = -plane_.normal.dot(plane_point_);
   end0_ = last_end0_ = c0 + duration_ * v0_;
   end1_ = last_end1_ = s1_.center + duration_ * v1_;
-  const double nn = plane_.normal.squaredNorm();
-  if (nn > 0) plane_point_ -= plane_.value(plane_point_) / nn * plane_.normal;
+  const Plane plane = drawable(plane_);
+  const double nn = plane.normal.squaredNorm();
+  if (nn > 0) plane_point_ -= plane.value(plane_point_) / nn * plane.normal;
   last_plane_point_ = plane_point_;
 }
 
@@ -432,9 +445,10 @@ void SphereSweepsScene::update_sweep() {
     Step s = sweep_step("L05S6", "sweep_box_plane", in, sweep_,
                         [](const BoxPlaneMotion& i, const Sweep& g) { return judge::sweep_box_plane(i, g); },
                         exact_time_, exact_overlapping_);
-    const double n = plane_.normal.norm();
+    const Plane plane = drawable(plane_);
+    const double n = plane.normal.norm();
     double reach = 0;
-    for (int i = 0; i < 3; ++i) reach += box_.half_extents[i] * std::abs(plane_.normal.dot(box_.axes.col(i)));
+    for (int i = 0; i < 3; ++i) reach += box_.half_extents[i] * std::abs(plane.normal.dot(box_.axes.col(i)));
     s.rows.push_back({"projected radius", "", n > 0 ? num(reach / n) : "no plane"});
     steps.push_back(s);
   }
