@@ -4,6 +4,8 @@
 #include "particles.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 using namespace labkit;
 using namespace labkit::lab07;
@@ -641,4 +643,133 @@ TEST_CASE("L07S7 invariants: random cases", "[lab07][step7][oracle]") {
   });
   check::random_cases("invariants", judge::collide_case(), run_invariants);
   check::random_cases("system", judge::system_case(), run_system);
+}
+
+// ---- Preconditions (the header's "Preconditions"): the reference only ------------------
+// Tagged [contract], in no step: students are not graded on invalid input. Each call must
+// throw std::invalid_argument whose message names the argument.
+
+namespace {
+
+template <class Call>
+void rejects(const std::string& argument, Call&& call) {
+  INFO("invalid " << argument);
+  try {
+    call();
+    FAIL_CHECK("accepted: no std::invalid_argument");
+  } catch (const std::invalid_argument& e) {
+    CHECK_THAT(std::string(e.what()), Catch::Contains(argument));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("L07 preconditions: invalid input is refused, naming the argument", "[lab07][contract]") {
+  const double nan = std::nan(""), inf = HUGE_VAL;
+  const Vec3 bad(nan, 0, 0);
+  Random random(1);
+  const auto emitter_with = [](auto change) {
+    Emitter e;
+    change(e);
+    return e;
+  };
+  rejects("emitter.position", [&] { emit(emitter_with([&](Emitter& e) { e.position = bad; }), random); });
+  rejects("emitter.half_extents", [&] { emit(emitter_with([](Emitter& e) { e.half_extents = Vec3(-1, 0, 0); }), random); });
+  rejects("emitter.direction", [&] { emit(emitter_with([](Emitter& e) { e.direction = Vec3::Zero(); }), random); });
+  rejects("emitter.cone", [&] { emit(emitter_with([](Emitter& e) { e.cone = 4; }), random); });
+  rejects("emitter.speed", [&] { emit(emitter_with([](Emitter& e) { e.speed_spread = 2; }), random); });
+  rejects("emitter.lifetime", [&] { emit(emitter_with([&](Emitter& e) { e.lifetime = nan; }), random); });
+  rejects("emitter.mass", [&] { emit(emitter_with([](Emitter& e) { e.mass = 0; }), random); });
+  rejects("emitter.mass", [&] { emit(emitter_with([&](Emitter& e) { e.mass = nan; }), random); });
+  rejects("emitter.rate", [&] { births(emitter_with([](Emitter& e) { e.rate = -1; }), 0.1); });
+  rejects("emitter.owed", [&] { births(emitter_with([](Emitter& e) { e.owed = 1; }), 0.1); });
+  rejects("dt", [&] { births(Emitter{}, nan); });
+  rejects("dt", [&] { age({Particle{}}, -1); });
+  Particle nan_age;
+  nan_age.age = nan;
+  rejects("particles[0].age", [&] { age({nan_age}, 0.1); });
+
+  // The issue's: a NaN or zero mass gave a NaN position.
+  for (const double mass : {0.0, -1.0, nan}) {
+    Particle p;
+    p.mass = mass;
+    rejects("p.mass", [&] { force(p, Forces{}); });
+    rejects("p.mass", [&] { euler_step(p, Forces{}, 0.1); });
+    rejects("p.mass", [&] { verlet_step(p, Forces{}, 0.1); });
+  }
+  Particle lost;
+  lost.position = Vec3(inf, 0, 0);
+  rejects("p.position", [&] { euler_step(lost, Forces{}, 0.1); });
+  rejects("forces.gravity", [&] { euler_step(Particle{}, Forces{bad, 0, 0}, 0.1); });
+  rejects("forces.drag", [&] { euler_step(Particle{}, Forces{Vec3::Zero(), -1, 0}, 0.1); });
+  rejects("forces.air_drag", [&] { euler_step(Particle{}, Forces{Vec3::Zero(), 0, nan}, 0.1); });
+  rejects("dt", [&] { start_verlet(Particle{}, Forces{}, 0); });
+  rejects("dt", [&] { verlet_step(Particle{}, Forces{}, nan); });
+
+  rejects("from", [&] { aim(bad, Vec3(1, 0, 0), 1, Vec3(0, 0, -1)); });
+  rejects("target", [&] { aim(Vec3::Zero(), bad, 1, Vec3(0, 0, -1)); });
+  rejects("speed", [&] { aim(Vec3::Zero(), Vec3(1, 0, 0), -1, Vec3(0, 0, -1)); });
+  rejects("speed", [&] { aim(Vec3::Zero(), Vec3(1, 0, 0), nan, Vec3(0, 0, -1)); });
+  rejects("gravity", [&] { aim(Vec3::Zero(), Vec3(1, 0, 0), 1, bad); });
+
+  const Segment down{{0, 0, 1}, {0, 0, -1}};
+  rejects("segment.a", [&] { hit_plane({bad, Vec3::Zero()}, kFloor); });
+  rejects("segment.b", [&] { hit_plane({Vec3::Zero(), Vec3(0, 0, inf)}, kFloor); });
+  rejects("plane.normal", [&] { hit_plane(down, Plane{bad, 0}); });
+  rejects("plane.offset", [&] { hit_plane(down, Plane{Vec3::UnitZ(), nan}); });
+  rejects("segment.a", [&] { hit_triangle({bad, Vec3::Zero()}, kFloorTriangle); });
+  rejects("triangle.v1", [&] { hit_triangle(down, Triangle{Vec3::Zero(), bad, Vec3::UnitY()}); });
+  Scene scene = floor_scene(0.5, 0);
+  scene.planes.push_back(Plane{Vec3::UnitX(), nan});
+  rejects("scene.planes[1].offset", [&] { first_hit(down, scene); });
+  scene = floor_scene(0.5, 0);
+  add_square(scene.mesh, 0);
+  scene.mesh.vertices[2] = bad;
+  rejects("scene.mesh.vertices[2]", [&] { first_hit(down, scene); });
+  scene = floor_scene(0.5, 0);
+  add_square(scene.mesh, 0);
+  scene.mesh.triangles[1][2] = 4;
+  rejects("scene.mesh.triangles[1]", [&] { first_hit(down, scene); });
+  rejects("segment.a", [&] { first_hit({bad, Vec3::Zero()}, floor_scene(0.5, 0)); });
+
+  const Vec3 up(0, 0, 1), v(3, 0, -4);
+  rejects("velocity", [&] { impulse(bad, Vec3::Zero(), up, 1, {0.5, 0}); });
+  rejects("object_velocity", [&] { impulse(v, bad, up, 1, {0.5, 0}); });
+  rejects("normal", [&] { impulse(v, Vec3::Zero(), Vec3(0, 0, 2), 1, {0.5, 0}); });
+  rejects("normal", [&] { impulse(v, Vec3::Zero(), Vec3::Zero(), 1, {0.5, 0}); });
+  rejects("mass", [&] { impulse(v, Vec3::Zero(), up, 0, {0.5, 0}); });
+  rejects("mass", [&] { impulse(v, Vec3::Zero(), up, nan, {0.5, 0}); });
+  rejects("material.restitution", [&] { impulse(v, Vec3::Zero(), up, 1, {-0.5, 0}); });
+  rejects("material.friction", [&] { impulse(v, Vec3::Zero(), up, 1, {0.5, nan}); });
+
+  rejects("step.a", [&] { collide({bad, Vec3::Zero()}, v, 1, 1, floor_scene(1, 0)); });
+  rejects("velocity", [&] { collide(down, bad, 1, 1, floor_scene(1, 0)); });
+  rejects("mass", [&] { collide(down, v, 0, 1, floor_scene(1, 0)); });
+  rejects("mass", [&] { collide(down, v, nan, 1, floor_scene(1, 0)); });
+  rejects("dt", [&] { collide(down, v, 1, 0, floor_scene(1, 0)); });
+  rejects("scene.bounce_cap", [&] { collide(down, v, 1, 1, floor_scene(1, 0, kMaxBounceCap + 1)); });
+  rejects("scene.bounce_cap", [&] { collide(down, v, 1, 1, floor_scene(1, 0, -1)); });
+  rejects("material.restitution", [&] { collide(down, v, 1, 1, floor_scene(nan, 0)); });
+
+  const SurfaceHit floor_hit{true, 0, -1, 0.5, Vec3::Zero(), up};
+  rejects("x", [&] { settle(bad, floor_scene(0, 0), floor_hit); });
+  rejects("last", [&] { settle(Vec3::Zero(), floor_scene(0, 0), SurfaceHit{true, 3, -1, 0.5, Vec3::Zero(), up}); });
+  rejects("last.normal", [&] { settle(Vec3::Zero(), floor_scene(0, 0), SurfaceHit{true, 0, -1, 0.5, Vec3::Zero(), bad}); });
+
+  System system;
+  rejects("dt", [&] { system.step(0); });
+  system.particles = {Particle{}};
+  system.particles[0].mass = 0;
+  rejects("particles[0].mass", [&] { system.step(0.1); });
+  system.particles[0].mass = 1;
+  system.emitter.mass = nan;
+  rejects("emitter.mass", [&] { system.step(0.1); });
+  system.emitter.mass = 1;
+  system.scene.planes = {Plane{bad, 0}};
+  rejects("scene.planes[0].normal", [&] { system.step(0.1); });
+
+  // Documented results, not errors: zero speed or gravity (count 0), a zero normal (no hit).
+  CHECK(aim(Vec3::Zero(), Vec3(1, 0, 0), 0, Vec3(0, 0, -1)).count == 0);
+  CHECK(aim(Vec3::Zero(), Vec3(1, 0, 0), 1, Vec3::Zero()).count == 0);
+  CHECK(!hit_plane(down, Plane{Vec3::Zero(), 0}).hit);
 }
