@@ -138,6 +138,39 @@ bool plane_value_in_doubt(const Plane& p, const Vec3& x, double scale) {
 // beyond doubt), no perturbation makes it a hit, whatever a does: a piece leaving the
 // plane it just bounced off, with a a hair off it, is not in doubt. Otherwise a doubt on
 // either end can flip it.
+// value(x) = n . x + c as the header computes it, and its rounding bound.
+struct Rounded {
+  double value, error;
+};
+Rounded rounded_value(const Plane& p, const Vec3& x) {
+  const Vec3 terms = p.normal.cwiseProduct(x);
+  return {terms.x() + terms.y() + terms.z() + p.offset, 1e-15 * (terms.cwiseAbs().sum() + std::abs(p.offset))};
+}
+
+// Step 4's rule: b behind, exactly; a not behind, where a computed value(a) within its
+// rounding bound counts as 0 (a particle resting on the plane).
+bool plane_hit_by_rule(const Segment& s, const Plane& p) {
+  if (oracle::plane_hit(s, p)) return true;
+  if (p.normal == Vec3::Zero() || oracle::plane_side(p, s.b) >= 0) return false;
+  const Rounded a = rounded_value(p, s.a);
+  return std::abs(a.value) <= a.error;
+}
+
+// Why the step does or does not hit the plane, in the header's words.
+std::string plane_rule(const Segment& s, const Plane& p) {
+  if (p.normal == Vec3::Zero()) return "a plane with a zero normal is never hit";
+  const std::string va = "value(a) = " + fmt(p.value(s.a)), vb = "value(b) = " + fmt(p.value(s.b));
+  if (plane_hit_by_rule(s, p))
+    return oracle::plane_side(p, s.a) < 0 ? "a is on the plane to within value(a)'s rounding bound (" + va +
+                                                "), so it counts as on it, and b is behind it (" + vb + "): a hit at t = 0"
+                                          : "the step starts on or in front of the plane (" + va + " >= 0) and ends behind it (" +
+                                                vb + " < 0): a hit";
+  if (oracle::plane_side(p, s.a) < 0)
+    return "planes are one-sided: the step starts behind the plane (" + va + " < 0), which is no hit";
+  return "the step ends on or in front of the plane (" + vb + " >= 0): on the plane is not behind it, and only a step "
+         "that ends behind a plane hits it";
+}
+
 bool plane_unstable(const Segment& s, const Plane& p, double scale, Rules rules) {
   if (rules == Rules::exact) return false;
   if (plane_value_in_doubt(p, s.b, scale)) return true;
@@ -145,6 +178,24 @@ bool plane_unstable(const Segment& s, const Plane& p, double scale, Rules rules)
 }
 
 bool sheet_hit(const SegmentTrianglePair& p) { return oracle::sheet_hit(p.segment, p.triangle); }
+
+// Why the step does or does not hit the two-sided triangle, in the header's words.
+std::string triangle_rule(const Segment& s, const Triangle& tri) {
+  if (tri.normal() == Vec3::Zero()) return "a zero-area triangle is never hit";
+  const int side = oracle::orientation(tri.v0, tri.v1, tri.v2, s.a);
+  if (side == 0) return "a starts exactly on the triangle's plane: it is leaving the sheet, which is no hit";
+  if (oracle::sheet_hit(s, tri))
+    return "a is off the triangle's plane and the segment meets the closed triangle (edges and vertices count); "
+           "triangles are two-sided: a hit from either side";
+  if (oracle::orientation(tri.v0, tri.v1, tri.v2, s.b) == side) return "the segment stays on one side of the triangle's plane: no hit";
+  return "the segment crosses the triangle's plane outside the closed triangle: no hit";
+}
+
+// A yes/no verdict whose failure says the rule, not only that the answer differs.
+Outcome decide(bool got, bool expected, bool doubt, Rules rules, const std::string& rule) {
+  const Outcome o = verdict(got, expected, doubt, rules, "a hit", "no hit");
+  return o.verdict == Outcome::Verdict::fail ? fail(o.expected, o.got, rule) : o;
+}
 
 // Could a perturbation of tol change whether the segment hits this sheet?
 bool triangle_unstable(const Segment& s, const Triangle& tri, double tol, Rules rules) {
@@ -165,28 +216,45 @@ double triangle_t_tolerance(const Segment& s, const Triangle& t, double tol) {
 
 // The checks every reported hit must pass: the point on the segment and the surface,
 // t reproducing it and near the exact t, the unit normal facing the particle.
+// A hit's numbers must be finite before the exact oracle reads them.
+bool finite_hit(Expect& e, const SurfaceHit& got) {
+  const bool ok = std::isfinite(got.t) && got.point.allFinite() && got.normal.allFinite();
+  e.that("finite", ok, "t = " + fmt(got.t) + ", point " + fmt(got.point) + ", normal " + fmt(got.normal), "finite numbers",
+         "a hit's t, point and normal must be finite numbers (a NaN: 0 / 0 from a step that does not cross?)");
+  return ok;
+}
+
 void check_plane_hit(Expect& e, const Segment& s, const Plane& p, const SurfaceHit& got, double tol) {
+  if (!finite_hit(e, got)) return;
   e.that("point", oracle::within(got.point, p, tol), fmt(got.point), "a point of the plane",
-         "the point is " + fmt(std::abs(oracle::plane_distance(p, got.point))) + " from the plane (tolerance " + fmt(tol) + ")");
+         "the hit point must lie on the plane: yours is " + fmt(std::abs(oracle::plane_distance(p, got.point))) +
+             " from it (tolerance " + fmt(tol) + ")");
   e.that("point on segment", oracle::within(got.point, s, tol), fmt(got.point), "a point of the segment",
-         "the point is " + fmt(oracle::distance(got.point, s)) + " from the segment (tolerance " + fmt(tol) + ")");
+         "the hit point must lie on the step a -> b: yours is " + fmt(oracle::distance(got.point, s)) + " from it (tolerance " +
+             fmt(tol) + ")");
   e.that("t", oracle::parameter_reproduces(s, got.t, got.point, tol), fmt(got.t), "a + t (b - a) = point",
-         "a + t (b - a) is " + fmt((s.point(got.t) - got.point).norm()) + " away from the point");
+         "the point must be a + t (b - a) for your t: it is " + fmt((s.point(got.t) - got.point).norm()) + " away");
   const double exact_t = oracle::plane_hit_t(s, p), slack = plane_t_tolerance(s, p, tol);
   e.that("t exact", std::abs(got.t - exact_t) <= slack, fmt(got.t), fmt(exact_t),
-         "t is off by " + fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
+         "t must be where value changes sign, value(a) / (value(a) - value(b)) = " + fmt(exact_t) + ": yours is off by " +
+             fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
   const Vec3 n = p.normal.normalized();
+  const double length = got.normal.norm();
   e.that("normal", (got.normal - n).norm() <= kRelative, fmt(got.normal), fmt(n),
-         "a plane's normal is its own, made unit length: n / |n|");
+         std::abs(length - 1) > kRelative ? "the normal must be unit length, n / |n|: yours has length " + fmt(length)
+         : got.normal.dot(n) < 0          ? "a plane's normal is its own direction, n / |n|, the side a particle comes from: yours points behind"
+                                          : "a plane's normal is its own direction, made unit length: n / |n|");
 }
 
 void check_triangle_hit(Expect& e, const Segment& s, const Triangle& tri, const SurfaceHit& got, double tol) {
+  if (!finite_hit(e, got)) return;
   e.that("point", oracle::within(got.point, tri, tol), fmt(got.point), "a point of the triangle",
          "the point is " + fmt(oracle::distance(got.point, tri)) + " from the triangle (tolerance " + fmt(tol) + ")");
   e.that("point on segment", oracle::within(got.point, s, tol), fmt(got.point), "a point of the segment",
-         "the point is " + fmt(oracle::distance(got.point, s)) + " from the segment (tolerance " + fmt(tol) + ")");
+         "the hit point must lie on the step a -> b: yours is " + fmt(oracle::distance(got.point, s)) + " from it (tolerance " +
+             fmt(tol) + ")");
   e.that("t", oracle::parameter_reproduces(s, got.t, got.point, tol), fmt(got.t), "a + t (b - a) = point",
-         "a + t (b - a) is " + fmt((s.point(got.t) - got.point).norm()) + " away from the point");
+         "the point must be a + t (b - a) for your t: it is " + fmt((s.point(got.t) - got.point).norm()) + " away");
   // The exact t: of the first common point or, for a hit in doubt that is exactly a miss
   // (a hair outside an edge), of the crossing with the triangle's plane it rounds from.
   const oracle::SegmentHit exact = oracle::segment_triangle(s, tri);
@@ -194,7 +262,8 @@ void check_triangle_hit(Expect& e, const Segment& s, const Triangle& tri, const 
   if (exact.hit || crossing.crosses) {
     const double exact_t = exact.hit ? exact.t : crossing.t, slack = triangle_t_tolerance(s, tri, tol);
     e.that("t exact", std::abs(got.t - exact_t) <= slack, fmt(got.t), fmt(exact_t),
-           "t is off by " + fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
+           "t must be where the step meets the triangle, " + fmt(exact_t) + ": yours is off by " +
+               fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
   }
   // The side a is on: when a is a hair off the plane either side may be reported.
   const int side = oracle::orientation(tri.v0, tri.v1, tri.v2, s.a);
@@ -203,7 +272,10 @@ void check_triangle_hit(Expect& e, const Segment& s, const Triangle& tri, const 
   const bool near_plane = std::abs(oracle::triangle_plane_distance(tri, s.a)) <= 8 * tol;
   e.that("normal", (side > 0 && up) || (side < 0 && down) || (near_plane && (up || down)), fmt(got.normal),
          fmt(side < 0 ? Vec3(-n) : n),
-         "the normal must be the triangle's unit normal, turned to the side a is on");
+         std::abs(got.normal.norm() - 1) > kRelative
+             ? "the normal must be unit length: yours has length " + fmt(got.normal.norm())
+             : "triangles are two-sided: the normal must be the triangle's unit normal turned to the side a is on (" +
+                   std::string(side < 0 ? "behind e1 x e2" : "in front of e1 x e2") + ")");
 }
 
 struct Status {
@@ -219,7 +291,7 @@ struct SceneStatus {
 SceneStatus statuses(const Segment& s, const Scene& scene, double tol, Rules rules) {
   SceneStatus all;
   const double scale = tol / kRelative;
-  for (const Plane& p : scene.planes) all.planes.push_back({oracle::plane_hit(s, p), plane_unstable(s, p, scale, rules)});
+  for (const Plane& p : scene.planes) all.planes.push_back({plane_hit_by_rule(s, p), plane_unstable(s, p, scale, rules)});
   for (std::size_t i = 0; i < scene.mesh.size(); ++i) {
     const Triangle tri = scene.mesh.triangle(i);
     all.triangles.push_back({oracle::sheet_hit(s, tri), triangle_unstable(s, tri, tol, rules)});
@@ -251,12 +323,27 @@ std::string describe_hit(const SurfaceHit& h) {
 bool valid_plane(const Scene& scene, int i) { return i >= 0 && std::size_t(i) < scene.planes.size(); }
 bool valid_triangle(const Scene& scene, int i) { return i >= 0 && std::size_t(i) < scene.mesh.size(); }
 
+// The rule that decides a scene's yes/no: that of a surface certainly hit, else of the
+// surface the answer names.
+std::string scene_rule(const Segment& s, const Scene& scene, const SceneStatus& all, const SurfaceHit& got) {
+  for (std::size_t i = 0; i < all.planes.size(); ++i)
+    if (all.planes[i].hit && !all.planes[i].unstable) return "plane " + std::to_string(i) + ": " + plane_rule(s, scene.planes[i]);
+  for (std::size_t i = 0; i < all.triangles.size(); ++i)
+    if (all.triangles[i].hit && !all.triangles[i].unstable)
+      return "triangle " + std::to_string(i) + ": " + triangle_rule(s, scene.mesh.triangle(i));
+  if (valid_plane(scene, got.plane)) return "plane " + std::to_string(got.plane) + ": " + plane_rule(s, scene.planes[std::size_t(got.plane)]);
+  if (valid_triangle(scene, got.triangle))
+    return "triangle " + std::to_string(got.triangle) + ": " + triangle_rule(s, scene.mesh.triangle(std::size_t(got.triangle)));
+  return "the step hits no plane (it starts behind, or does not end behind, each) and meets no triangle";
+}
+
 // The first hit of a segment on a scene: lab 02's mesh verdict, with planes beside the triangles.
 Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got, Rules rules) {
   const double tol = kRelative * scale_with(scene, {s.a, s.b});
   const SceneStatus all = statuses(s, scene, tol, rules);
   const std::string expected = describe_hits(s, scene, all);
-  const Outcome decision = verdict(got.hit, all.any_hit, !all.any_stable_hit && all.any_unstable, rules, "a hit", "no hit");
+  const Outcome decision =
+      decide(got.hit, all.any_hit, !all.any_stable_hit && all.any_unstable, rules, scene_rule(s, scene, all, got));
   if (decision.verdict == Outcome::Verdict::fail) return fail(expected, describe_hit(got), decision.why);
   if (!got.hit || !all.any_hit) return decision;
 
@@ -269,13 +356,14 @@ Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got
   if (on_plane) {
     const Plane& p = scene.planes[std::size_t(got.plane)];
     const Status& st = all.planes[std::size_t(got.plane)];
-    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "the segment does not hit plane " + std::to_string(got.plane));
+    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "plane " + std::to_string(got.plane) + ": " + plane_rule(s, p));
     check_plane_hit(e, s, p, got, tol);
     slack = plane_t_tolerance(s, p, tol);
   } else {
     const Triangle tri = scene.mesh.triangle(std::size_t(got.triangle));
     const Status& st = all.triangles[std::size_t(got.triangle)];
-    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "the segment does not hit triangle " + std::to_string(got.triangle));
+    if (!st.hit && !st.unstable)
+      return fail(expected, describe_hit(got), "triangle " + std::to_string(got.triangle) + ": " + triangle_rule(s, tri));
     check_triangle_hit(e, s, tri, got, tol);
     slack = triangle_t_tolerance(s, tri, tol);
   }
@@ -284,14 +372,14 @@ Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got
     if (!all.planes[i].hit || all.planes[i].unstable) continue;
     const double t = oracle::plane_hit_t(s, scene.planes[i]);
     if (got.t > t + slack + plane_t_tolerance(s, scene.planes[i], tol))
-      return fail(expected, describe_hit(got), "a nearer hit exists: plane " + std::to_string(i) + " at t = " + fmt(t));
+      return fail(expected, describe_hit(got), "the first hit is the one with the smallest t: plane " + std::to_string(i) + " is hit at t = " + fmt(t) + ", before yours");
   }
   for (std::size_t i = 0; i < all.triangles.size(); ++i) {
     if (!all.triangles[i].hit || all.triangles[i].unstable) continue;
     const Triangle tri = scene.mesh.triangle(i);
     const double t = oracle::segment_triangle(s, tri).t;
     if (got.t > t + slack + triangle_t_tolerance(s, tri, tol))
-      return fail(expected, describe_hit(got), "a nearer hit exists: triangle " + std::to_string(i) + " at t = " + fmt(t));
+      return fail(expected, describe_hit(got), "the first hit is the one with the smallest t: triangle " + std::to_string(i) + " is hit at t = " + fmt(t) + ", before yours");
   }
   const Outcome o = e.outcome();
   return o.verdict == Outcome::Verdict::fail ? o : decision;
@@ -556,8 +644,8 @@ Outcome hit_plane(const SegmentScene& in, const SurfaceHit& got, Rules rules) {
   const Segment& s = in.segment;
   const Plane& p = in.scene.planes.front();
   const double scale = scale_with(in.scene, {s.a, s.b}), tol = kRelative * scale;
-  const bool expected = oracle::plane_hit(s, p);
-  const Outcome decision = verdict(got.hit, expected, plane_unstable(s, p, scale, rules), rules, "a hit", "no hit");
+  const bool expected = plane_hit_by_rule(s, p);
+  const Outcome decision = decide(got.hit, expected, plane_unstable(s, p, scale, rules), rules, plane_rule(s, p));
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
   Expect e;
   check_plane_hit(e, s, p, got, tol);
@@ -568,8 +656,8 @@ Outcome hit_plane(const SegmentScene& in, const SurfaceHit& got, Rules rules) {
 Outcome hit_triangle(const SegmentTrianglePair& in, const SurfaceHit& got) {
   const double tol = kRelative * check::scale_of_input(in);
   const bool expected = sheet_hit(in);
-  const Outcome decision = verdict(got.hit, expected, triangle_unstable(in.segment, in.triangle, tol, Rules::random),
-                                   Rules::random, "a hit", "no hit");
+  const Outcome decision = decide(got.hit, expected, triangle_unstable(in.segment, in.triangle, tol, Rules::random),
+                                  Rules::random, triangle_rule(in.segment, in.triangle));
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
   Expect e;
   check_triangle_hit(e, in.segment, in.triangle, got, tol);
@@ -612,9 +700,11 @@ Outcome collide(const CollideCase& in, const Collision& got) {
   const int cap = std::clamp(scene.bounce_cap, 0, kMaxBounceCap);
   const std::string answer = describe(got);
   if (got.bounces < 0 || got.bounces > cap)
-    return fail("between 0 and " + std::to_string(cap) + " bounces", answer, "the bounce cap is " + std::to_string(cap));
+    return fail("between 0 and " + std::to_string(cap) + " bounces", answer,
+                "the bounce cap is " + std::to_string(cap) + ": at most that many impulses, then the next hit stops the particle");
   if (got.stopped && got.bounces != cap)
-    return fail("no stop before the cap", answer, "a particle stops only when it hits again after " + std::to_string(cap) + " bounces");
+    return fail("no stop before the cap", answer,
+                "the bounce cap: a particle stops only when it hits again after " + std::to_string(cap) + " bounces");
   if (!finite(got.position) || !finite(got.velocity)) return fail("a finite position and velocity", answer, "not finite");
 
   const double e_ = scene.material.restitution, mu = scene.material.friction;
@@ -633,7 +723,8 @@ Outcome collide(const CollideCase& in, const Collision& got) {
       doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
       Expect e;
       e.that("position", (got.position - piece.b).norm() <= tol, fmt(got.position), fmt(piece.b),
-             "the particle must end where " + where + " ends, " + fmt(piece.b) + " (tolerance " + fmt(tol) + ")");
+             "the particle must end where " + where + " ends, " + fmt(piece.b) +
+                 ": after each hit it moves on from the hit point for the remaining time (1 - t) r only (tolerance " + fmt(tol) + ")");
       e.near("velocity", got.velocity, v, tol_v);
       const Outcome end = e.outcome();
       if (end.verdict == Outcome::Verdict::fail) return end;
@@ -644,6 +735,8 @@ Outcome collide(const CollideCase& in, const Collision& got) {
     if (o.verdict == Outcome::Verdict::fail) return fail(o.expected, answer, o.why);
     doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
     if (!b.hit.hit) return fail("a hit", answer, where + ": the trace records no hit");
+    if (!finite(b.from) || !finite(b.velocity))
+      return fail("a finite `from` and velocity", answer, "bounce " + std::to_string(k) + ": not finite");
     if ((b.from - b.hit.point).norm() > tol)
       return fail(fmt(b.hit.point), fmt(b.from), "bounce " + std::to_string(k) + ": `from` must be the hit point (settled by at most tol)");
     if (k == got.bounces) {  // the stop
@@ -672,6 +765,10 @@ Outcome invariants(const CollideCase& in, const Collision& got) {
   const Scene& scene = in.scene;
   const std::string answer = describe(got);
   const int used = std::clamp(got.bounces + (got.stopped ? 1 : 0), 0, kMaxBounceCap + 1);
+  if (!finite(got.position) || !finite(got.velocity)) return fail("a finite position and velocity", answer, "not finite");
+  for (int k = 0; k < used; ++k)
+    if (!finite(got.trace[std::size_t(k)].from))
+      return fail("a finite `from`", answer, "bounce " + std::to_string(k) + "'s `from` is not finite");
   // (1) Never behind a plane the step began in front of.
   for (std::size_t i = 0; i < scene.planes.size(); ++i) {
     const Plane& p = scene.planes[i];
@@ -694,8 +791,8 @@ Outcome invariants(const CollideCase& in, const Collision& got) {
       return fail("a hit on one surface", answer, "bounce " + std::to_string(k) + " names no valid surface");
     if (side_of(b.hit, b.from) <= 0)
       return fail("`from` strictly in front of the surface hit", answer,
-                  "bounce " + std::to_string(k) + ": `from` " + fmt(b.from) +
-                      " is on or behind the surface it bounced off (exactly): settle it");
+                  "every `from` must be strictly in front of the surface it bounced off, exactly: bounce " + std::to_string(k) +
+                      "'s " + fmt(b.from) + " is on or behind it (a rounded hit point: settle it)");
   }
   if (used > 0 && side_of(got.trace[std::size_t(used - 1)].hit, got.position) < 0)
     return fail("an end not behind the last surface hit", answer,
