@@ -142,22 +142,35 @@ LaunchCase edge_of_reach(double length_scale) {
 
 }  // namespace
 
+// Decisive families: the exactly degenerate targets (D = 0 on integers, straight above or
+// below) are exact.aim's; here targets come near them, just outside the ambiguity band.
 rc::Gen<LaunchCase> launch_case() {
   return rc::gen::exec([] {
-    const double s = *gen::scale();
+    const double s = *gen::particle_scale();
     const int family = *rc::gen::inRange(0, 6);
     LaunchCase c;
-    if (family == 0) return edge_of_reach(s);
-    c.from = *gen::point(s);
-    c.gravity = family == 1 ? Vec3(*gen::lattice_point(1.0, 10)) : Vec3(0, 0, -9.81);
-    if (c.gravity == Vec3::Zero()) c.gravity = Vec3(0, -1, 0);
-    c.target = c.from + *gen::point(s);
-    if (family == 2) c.target = c.from - c.gravity * *dyadic(-8, 8, 2) * s;  // straight above or below
-    // A speed near the one that just reaches: v^2 near g (y + |d|) (the minimum), scaled.
-    const Vec3 d = c.target - c.from;
-    const double g = c.gravity.norm(), y = -d.dot(c.gravity) / g;
-    const double least = std::sqrt(std::max(0.0, g * (y + d.norm())));
-    const double factor = family == 3 ? 1 + std::ldexp(double(*gen::integer(4)), -*rc::gen::inRange(10, 50)) : *dyadic(1, 24, 3);
+    c.from = *rc::gen::weightedOneOf<Vec3>({{3, gen::point(s)}, {1, gen::point(1024 * s)}});  // sometimes far off
+    c.gravity = family == 1 ? Vec3(*gen::direction(1.0, 10)) : Vec3(0, 0, -9.81);
+    if (*rc::gen::inRange(0, 4) == 0) c.gravity *= s;  // gravity at the lengths' scale too
+    const Vec3 up = -c.gravity.normalized();
+    Vec3 d = *gen::direction(s, 16);
+    if (family == 2) {  // nearly straight above or below: a horizontal offset 2^-4 to 2^-20 of the height
+      const Vec3 across = up.unitOrthogonal();
+      d = *rc::gen::element(1.0, -1.0) * *dyadic(1, 64, 2) * s * up + *gen::tiny(4, 20) * *dyadic(1, 64, 2) * s * across;
+    }
+    const double g = c.gravity.norm(), y = d.dot(up), x = d.cross(up).norm();
+    if (family == 3) {  // near, fast: g x / v^2 from 2^-10 down to 2^-30 (1e-9), flat or a little up or down
+      d -= (y - *gen::integer(4) / 8.0 * x) * up;
+      c.from = *gen::point(s / 64);
+      c.target = c.from + d;
+      c.speed = std::sqrt(g * x / *gen::tiny(10, 30));
+      return c;
+    }
+    c.target = c.from + d;
+    // The least speed that reaches: v^2 = g (y + |d|). Near it (decisive: 1 +- 2^-8 .. 2^-24),
+    // or any multiple of it.
+    const double least = std::sqrt(g * (y + d.norm()));
+    const double factor = family == 0 ? 1 + *rc::gen::element(1.0, -1.0) * *gen::tiny(8, 24) : *dyadic(1, 24, 3);
     c.speed = family == 4 ? *dyadic(0, 64, 2) * std::sqrt(g * s) : least * factor;
     return c;
   });

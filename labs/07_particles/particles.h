@@ -57,7 +57,8 @@
 //
 // Input domain: answers must match the exact ones (as above) for every input whose
 // coordinates, velocity and gravity components and speeds are 0 or of magnitude 2^-100 to
-// 2^100 (about 1e-30 to 1e30), with masses and time steps of magnitude 2^-20 to 2^20.
+// 2^100 (about 1e-30 to 1e30), with masses and time steps of magnitude 2^-20 to 2^20, and
+// within one input, the gaps between its surfaces (a crack) at least 2^-40 S.
 // Plane normals need not be unit (any non-zero length in that range); triangles may be
 // needles (aspect ratios up to 1e8). The tests draw from all of it, both ends included.
 //
