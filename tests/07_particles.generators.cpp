@@ -47,7 +47,7 @@ rc::Gen<double> time_step() {
 
 rc::Gen<EmitCase> emit_case() {
   return rc::gen::exec([] {
-    const double s = *gen::scale();
+    const double s = *gen::particle_scale();
     EmitCase c;
     Emitter& e = c.emitter;
     e.position = *gen::point(s);
@@ -99,7 +99,7 @@ rc::Gen<AgeCase> age_case() {
 
 rc::Gen<MotionCase> motion_case() {
   return rc::gen::exec([] {
-    const double s = *gen::scale();
+    const double s = *gen::particle_scale();
     MotionCase c;
     c.dt = *time_step();
     Particle& p = c.particle;
@@ -192,18 +192,155 @@ rc::Gen<LaunchCase> exact_launch_case() {
   });
 }
 
+namespace {
+
+// ---- Decisive: just outside the ambiguity band ------------------------------------------
+// The random families of steps 4 to 6 aim at planes and triangles on purpose: ends exactly
+// on a plane, steps through a mesh's shared edges. Exactly there the answer is ambiguous
+// (exact.first_hit and step 7 take those); here each such case is moved just outside the
+// band, by 2^4 to 2^16 times its width, to the side it was on or to either, so that it
+// stays near the degenerate case and its answer is decided.
+
+double push() { return std::ldexp(1.0, *rc::gen::inRange(4, 17)); }
+double away(double value) { return value > 0 ? 1.0 : value < 0 ? -1.0 : *rc::gen::element(1.0, -1.0); }
+
+// The band of a point against a plane, as a distance: the judge's doubt, 2 (sqrt(3) |n| S
+// + sqrt(3) |x| + S) 1e-9, over |n|.
+double plane_band(const Plane& p, const Vec3& x, double scale) {
+  const double root3 = std::sqrt(3.0);
+  return 2e-9 * (p.normal.norm() * root3 * scale + root3 * x.norm() + scale) / p.normal.norm();
+}
+
+void decide_ends(Segment& s, const std::vector<Plane>& planes, const Mesh& mesh, double scale) {
+  for (Vec3* end : {&s.a, &s.b}) {
+    for (const Plane& p : planes) {
+      if (p.normal == Vec3::Zero() || !plane_in_doubt(p, *end, scale)) continue;
+      *end += away(p.value(*end)) * push() * plane_band(p, *end, scale) * p.normal.normalized();
+    }
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+      const Triangle t = mesh.triangle(i);
+      const Vec3 n = t.normal();
+      if (n == Vec3::Zero()) continue;
+      const double distance = (*end - t.v0).dot(n.normalized());
+      if (std::abs(distance) <= 8e-9 * scale) *end += away(distance) * push() * 1e-9 * scale * n.normalized();
+    }
+  }
+}
+
+// A step through a triangle's edge or vertex: moved along the plane, toward the inside
+// or away from it, until no triangle of the mesh is in doubt (a few tries).
+void decide_crossings(Segment& s, const Mesh& mesh, double scale) {
+  const double tol = 1e-9 * scale;
+  for (int round = 0; round < 4; ++round) {
+    std::size_t i = 0;
+    while (i < mesh.size() && !sheet_in_doubt(s, mesh.triangle(i), tol)) ++i;
+    if (i == mesh.size()) return;
+    const Triangle t = mesh.triangle(i);
+    const Vec3 n = t.normal(), centre = (t.v0 + t.v1 + t.v2) / 3;
+    Vec3 along = centre - s.point(0.5);
+    if (n != Vec3::Zero()) along -= along.dot(n) / n.squaredNorm() * n;
+    if (!(along.norm() > 0)) along = n == Vec3::Zero() ? Vec3(Vec3::UnitX()) : Vec3(n.unitOrthogonal());
+    const Vec3 shift = *rc::gen::element(1.0, -1.0) * push() * tol * along.normalized();
+    s.a += shift;
+    s.b += shift;
+  }
+}
+
+// A step into a crease or a corner, crossing one plane exactly where another passes:
+// moved off the other plane (the first bounce would otherwise start on it).
+void decide_creases(Segment& s, const std::vector<Plane>& planes, double scale) {
+  for (const Plane& p : planes) {
+    const double va = p.value(s.a), vb = p.value(s.b);
+    if (p.normal == Vec3::Zero() || !(va >= 0 && vb < 0)) continue;
+    const Vec3 x = s.point(va / (va - vb));
+    for (const Plane& q : planes) {
+      if (&q == &p || q.normal == Vec3::Zero() || !plane_in_doubt(q, x, scale)) continue;
+      const Vec3 shift = push() * plane_band(q, x, scale) * q.normal.normalized();
+      s.a += shift;
+      s.b += shift;
+    }
+  }
+}
+
+double scale_of_case(const Segment& s, const std::vector<Plane>& planes, const Mesh& mesh) {
+  double scale = std::max({largest(s.a), largest(s.b), 1e-300});
+  for (const Vec3& v : mesh.vertices) scale = std::max(scale, largest(v));
+  for (const Plane& p : planes)
+    if (p.normal != Vec3::Zero()) scale = std::max(scale, std::abs(p.offset) / p.normal.norm());
+  return scale;
+}
+
+StepSurfaces decisive(StepSurfaces c) {
+  const double scale = scale_of_case(c.step, c.planes, c.mesh);
+  decide_creases(c.step, c.planes, scale);
+  decide_ends(c.step, c.planes, c.mesh, scale);
+  decide_crossings(c.step, c.mesh, scale);
+  return c;
+}
+
+rc::Gen<StepSurfaces> decisive_steps() {
+  return rc::gen::exec([] { return decisive(*gen::step_surfaces()); });
+}
+
+}  // namespace
+
+// A needle: v2 a hair off the long edge v0 v1, at a height 2^-4 to 2^-27 (1e-8) of its
+// length, in any orientation and anywhere along it.
+rc::Gen<Triangle> needle(double s) {
+  return rc::gen::exec([s] {
+    const Vec3 v0 = *gen::point(s), edge = *gen::direction(s, 16);
+    Vec3 across = edge.cross(*gen::direction(1.0, 4));
+    if (across == Vec3::Zero()) across = edge.unitOrthogonal();
+    const Vec3 v2 = v0 + *dyadic(-4, 12, 3) * edge + *gen::tiny(4, 27) * edge.norm() * across.normalized();
+    return Triangle{v0, v0 + edge, v2};
+  });
+}
+
+namespace {
+
+rc::Gen<SegmentTrianglePair> nudged_sheet_case() {
+  return rc::gen::exec([] {
+    SegmentTrianglePair c = *gen::segment_triangle();
+    if (*rc::gen::inRange(0, 3) == 0) {  // a needle, crossed through or beside it
+      const double s = *gen::particle_scale();
+      c.triangle = *needle(s);
+      const Vec3 x = *gen::point_in_triangle(c.triangle), d = *gen::direction(s, 8);
+      c.segment = {x + d, x - *dyadic(1, 16, 3) * d};
+    }
+    Mesh one;
+    one.vertices = {c.triangle.v0, c.triangle.v1, c.triangle.v2};
+    one.triangles = {{0, 1, 2}};
+    const double scale = scale_of_case(c.segment, {}, one);
+    decide_ends(c.segment, {}, one, scale);
+    decide_crossings(c.segment, one, scale);
+    return c;
+  });
+}
+
+}  // namespace
+
+// What the nudges could not decide (a zero-area triangle crossed exactly, a segment lying
+// along an edge) is drawn again: those exact degeneracies are step 7's and exact.first_hit's.
+rc::Gen<SegmentTrianglePair> sheet_case() {
+  return rc::gen::suchThat(nudged_sheet_case(), [](const SegmentTrianglePair& c) {
+    return !sheet_in_doubt(c.segment, c.triangle, 1e-9 * check::scale_of_input(c));
+  });
+}
+
+
 rc::Gen<SegmentScene> plane_case() {
   return rc::gen::exec([] {
     const StepSurfaces c = *rc::gen::suchThat(gen::step_surfaces(), [](const StepSurfaces& x) { return !x.planes.empty(); });
     SegmentScene out;
     out.segment = c.step;
     out.scene.planes = {c.planes[std::size_t(*rc::gen::inRange(0, int(c.planes.size())))]};
+    decide_ends(out.segment, out.scene.planes, Mesh{}, scale_of_case(out.segment, out.scene.planes, Mesh{}));
     return out;
   });
 }
 
 rc::Gen<SegmentScene> segment_scene() {
-  return rc::gen::map(gen::step_surfaces(), [](const StepSurfaces& c) { return SegmentScene{c.step, scene_of(c)}; });
+  return rc::gen::map(decisive_steps(), [](const StepSurfaces& c) { return SegmentScene{c.step, scene_of(c)}; });
 }
 
 rc::Gen<SegmentScene> exact_segment_scene() {
@@ -212,7 +349,7 @@ rc::Gen<SegmentScene> exact_segment_scene() {
 
 rc::Gen<ImpulseCase> impulse_case() {
   return rc::gen::exec([] {
-    const double s = *gen::scale();
+    const double s = *gen::particle_scale();
     ImpulseCase c;
     c.normal = *rc::gen::weightedOneOf<Vec3>({{1, rc::gen::element(Vec3(Vec3::UnitZ()), Vec3(-Vec3::UnitX()))}, {3, unit_vector()}});
     c.velocity = *gen::point(s);
@@ -223,6 +360,9 @@ rc::Gen<ImpulseCase> impulse_case() {
     c.object_velocity = *rc::gen::weightedOneOf<Vec3>({{2, rc::gen::just(Vec3(Vec3::Zero()))}, {1, gen::point(s)}});
     c.mass = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(1.0)}, {2, dyadic(1, 64, 3)}});
     c.material = *material();
+    // Sliding along (v_close = 0 up to rounding) is ambiguous: moved just outside the band.
+    const double v_close = (c.velocity - c.object_velocity).dot(c.normal), band = closing_band(c);
+    if (std::abs(v_close) <= band) c.velocity += away(v_close) * push() * band * c.normal;
     return c;
   });
 }
@@ -236,20 +376,21 @@ bool starts_valid(const Segment& step, const std::vector<Plane>& planes) {
 }
 
 // Steps that start not behind any plane (reversed if that helps), as a particle's do.
-rc::Gen<StepSurfaces> valid_steps() {
+// Decisive: moved just outside the ambiguity band (step 6), or not (step 7's invariants).
+rc::Gen<StepSurfaces> valid_steps(bool decided = false) {
   const auto reversed_if_behind = [](StepSurfaces c) {
     if (!starts_valid(c.step, c.planes)) std::swap(c.step.a, c.step.b);
     return c;
   };
-  return rc::gen::suchThat(rc::gen::map(gen::step_surfaces(), reversed_if_behind),
+  return rc::gen::suchThat(rc::gen::map(decided ? decisive_steps() : gen::step_surfaces(), reversed_if_behind),
                            [](const StepSurfaces& x) { return starts_valid(x.step, x.planes); });
 }
 
 }  // namespace
 
-rc::Gen<CollideCase> collide_case() {
-  return rc::gen::exec([] {
-    const StepSurfaces c = *valid_steps();
+rc::Gen<CollideCase> collide_case(bool decided) {
+  return rc::gen::exec([decided] {
+    const StepSurfaces c = *valid_steps(decided);
     CollideCase out;
     out.step = c.step;
     out.scene = scene_of(c);

@@ -268,7 +268,11 @@ void check_triangle_hit(Expect& e, const Segment& s, const Triangle& tri, const 
   // The side a is on: when a is a hair off the plane either side may be reported.
   const int side = oracle::orientation(tri.v0, tri.v1, tri.v2, s.a);
   const Vec3 n = oracle::unit_normal(tri);
-  const bool up = (got.normal - n).norm() <= kRelative, down = (got.normal + n).norm() <= kRelative;
+  // A needle's plane is only as well defined as its width: moving the vertices by tol
+  // turns it by up to 2 tol / h, h its smallest height (twice its area over its longest edge).
+  const double longest = std::max({(tri.v1 - tri.v0).norm(), (tri.v2 - tri.v1).norm(), (tri.v0 - tri.v2).norm()});
+  const double turn = kRelative + 2 * tol * longest / tri.normal().norm();
+  const bool up = (got.normal - n).norm() <= turn, down = (got.normal + n).norm() <= turn;
   const bool near_plane = std::abs(oracle::triangle_plane_distance(tri, s.a)) <= 8 * tol;
   e.that("normal", (side > 0 && up) || (side < 0 && down) || (near_plane && (up || down)), fmt(got.normal),
          fmt(side < 0 ? Vec3(-n) : n),
@@ -288,13 +292,19 @@ struct SceneStatus {
   bool any_stable_hit = false, any_hit = false, any_unstable = false;
 };
 
-SceneStatus statuses(const Segment& s, const Scene& scene, double tol, Rules rules) {
+// `left`: the hit the piece s starts from (collide), or none. A piece that starts strictly
+// in front of the sheet it just bounced off and ends clearly in front of it does not hit
+// it, whatever a perturbation of its start would do: its start is the answer's own point.
+SceneStatus statuses(const Segment& s, const Scene& scene, double tol, Rules rules, const SurfaceHit* left = nullptr) {
   SceneStatus all;
   const double scale = tol / kRelative;
   for (const Plane& p : scene.planes) all.planes.push_back({plane_hit_by_rule(s, p), plane_unstable(s, p, scale, rules)});
   for (std::size_t i = 0; i < scene.mesh.size(); ++i) {
     const Triangle tri = scene.mesh.triangle(i);
-    all.triangles.push_back({oracle::sheet_hit(s, tri), triangle_unstable(s, tri, tol, rules)});
+    const int facing = left && left->triangle == int(i) && left->normal.dot(tri.normal()) < 0 ? -1 : 1;
+    const bool leaving = left && left->triangle == int(i) && facing * oracle::orientation(tri.v0, tri.v1, tri.v2, s.a) > 0 &&
+                         facing * oracle::triangle_plane_distance(tri, s.b) > 8 * tol;
+    all.triangles.push_back({oracle::sheet_hit(s, tri), !leaving && triangle_unstable(s, tri, tol, rules)});
   }
   for (const auto* list : {&all.planes, &all.triangles})
     for (const Status& st : *list) {
@@ -338,9 +348,9 @@ std::string scene_rule(const Segment& s, const Scene& scene, const SceneStatus& 
 }
 
 // The first hit of a segment on a scene: lab 02's mesh verdict, with planes beside the triangles.
-Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got, Rules rules) {
+Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got, Rules rules, const SurfaceHit* left = nullptr) {
   const double tol = kRelative * scale_with(scene, {s.a, s.b});
-  const SceneStatus all = statuses(s, scene, tol, rules);
+  const SceneStatus all = statuses(s, scene, tol, rules, left);
   const std::string expected = describe_hits(s, scene, all);
   const Outcome decision =
       decide(got.hit, all.any_hit, !all.any_stable_hit && all.any_unstable, rules, scene_rule(s, scene, all, got));
@@ -724,7 +734,7 @@ Outcome impulse(const ImpulseCase& in, const Impulse& got) {
   const double tol_v = kRelative * V * (2 + e_ + mu * (1 + e_)) + 1e-300;
   // v_close's sign is in doubt when moving every velocity by 1e-9 V, and the normal by
   // 1e-9, could flip it.
-  const bool doubt = std::abs(exact.v_close) <= 2 * kRelative * V * (kRoot3 + 1);
+  const bool doubt = std::abs(exact.v_close) <= closing_band(in);
   Expect e;
   if (got.closing != exact.closing && !doubt)
     return fail("closing = " + describe(exact.closing), "closing = " + describe(got.closing),
@@ -761,9 +771,10 @@ Outcome collide(const CollideCase& in, const Collision& got) {
   bool doubt = false;
   for (int k = 0;; ++k) {
     const std::string where = k == 0 ? "the step a -> b" : "the piece after bounce " + std::to_string(k - 1);
+    const SurfaceHit* left = k == 0 ? nullptr : &got.trace[std::size_t(k - 1)].hit;
     const double tol = kRelative * scale_with(scene, {piece.a, piece.b, in.step.a, in.step.b});
     if (k == got.bounces && !got.stopped) {  // the last piece: clear to its end
-      const Outcome o = within(where, first_hit_on(piece, scene, SurfaceHit{}, Rules::random));
+      const Outcome o = within(where, first_hit_on(piece, scene, SurfaceHit{}, Rules::random, left));
       if (o.verdict == Outcome::Verdict::fail)
         return fail(o.expected, answer, o.why + " (a hit there is another bounce, or the stop when the cap is used up)");
       doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
@@ -777,7 +788,7 @@ Outcome collide(const CollideCase& in, const Collision& got) {
       break;
     }
     const Bounce& b = got.trace[std::size_t(k)];
-    const Outcome o = within(where, first_hit_on(piece, scene, b.hit, Rules::random));
+    const Outcome o = within(where, first_hit_on(piece, scene, b.hit, Rules::random, left));
     if (o.verdict == Outcome::Verdict::fail) return fail(o.expected, answer, o.why);
     doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
     if (!b.hit.hit) return fail("a hit", answer, where + ": the trace records no hit");
@@ -909,6 +920,14 @@ Outcome system_step(const SystemCase& in, const System& after, int step) {
                         fmt(-oracle::plane_distance(in.scene.planes[k], p.position)) + " (exactly)");
   }
   return pass();
+}
+
+// ---- Doubt, for the generators -------------------------------------------------------
+
+bool plane_in_doubt(const Plane& p, const Vec3& x, double scale) { return plane_value_in_doubt(p, x, scale); }
+bool sheet_in_doubt(const Segment& s, const Triangle& tri, double tol) { return triangle_unstable(s, tri, tol, Rules::random); }
+double closing_band(const ImpulseCase& in) {
+  return 2 * kRelative * (in.velocity.norm() + in.object_velocity.norm()) * (kRoot3 + 1);
 }
 
 }  // namespace judge

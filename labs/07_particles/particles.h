@@ -49,6 +49,8 @@
 //    answer changes under a relative perturbation of 1e-9: there either answer passes.
 //  - Points within tol; velocities within tol_v; the parameter t of a hit within
 //    tol / |d_a - d_b| (d: unit-normal signed distances of a and b).
+//  - Unit normals within 1e-9; a triangle's within 1e-9 + 2 tol / h, h its smallest height
+//    (a needle's plane turns that much when its vertices move by tol).
 //  - Launch angles (step 3): each within how far the exact angle moves when the input
 //    moves by a relative 1e-9 (to first order), plus 1e-15. For a near, fast shot this is
 //    about 1e-9 S / x: the low angle must be right to its own size, not to the high one's.
