@@ -350,7 +350,10 @@ std::string scene_rule(const Segment& s, const Scene& scene, const SceneStatus& 
 // The first hit of a segment on a scene: lab 02's mesh verdict, with planes beside the triangles.
 Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got, Rules rules, const SurfaceHit* left = nullptr) {
   const double tol = kRelative * scale_with(scene, {s.a, s.b});
-  const SceneStatus all = statuses(s, scene, tol, rules, left);
+  // An answer that hits the sheet it just left again (at t near 0: its start a hair
+  // behind, unsettled before step 7) is in doubt as before.
+  const bool again = left && got.hit && got.triangle >= 0 && got.triangle == left->triangle;
+  const SceneStatus all = statuses(s, scene, tol, rules, again ? nullptr : left);
   const std::string expected = describe_hits(s, scene, all);
   const Outcome decision =
       decide(got.hit, all.any_hit, !all.any_stable_hit && all.any_unstable, rules, scene_rule(s, scene, all, got));

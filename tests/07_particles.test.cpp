@@ -415,7 +415,7 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
   shelf.scene.planes = {Plane{{0, 0, 2}, -2}};  // z = 1, its normal of length 2
   check::example("hit_plane", "z = 1 written 2 z - 2 = 0: t = 2/3", shelf, plane_hit(2.0 / 3, {0, 0, 1}));
   // The header's rule for a: n . a + c computes to -1.5e-11 here, within its rounding
-  // bound (1.6e-10): a is on the plane, and moving behind it hits at t = 0.
+  // bound (1.7e-10): a is on the plane (exactly, in fact), and moving behind it hits at t = 0.
   SegmentScene resting = on_floor({-33791.999998051404, 16384.000000954293, 16384.00000055659},
                                   {-33791.99999423671, 16384.000000954293, 16384.00000055659});
   resting.scene.planes = {Plane{{-1, 2, 1}, -82944.00000051658}};
