@@ -44,7 +44,9 @@ function(labkit_add_lab number name)
     list(APPEND implementations reference)
   endif()
 
-  add_library(${lab}_judge STATIC "${PROJECT_SOURCE_DIR}/tests/${stem}.judge.cpp")
+  # A judge may keep its generators apart, in tests/NN_name.generators.cpp.
+  file(GLOB generator_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}.generators.cpp")
+  add_library(${lab}_judge STATIC "${PROJECT_SOURCE_DIR}/tests/${stem}.judge.cpp" ${generator_sources})
   target_include_directories(${lab}_judge PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_judge PUBLIC labkit_harness labkit_oracle)
 

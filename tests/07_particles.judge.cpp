@@ -138,6 +138,39 @@ bool plane_value_in_doubt(const Plane& p, const Vec3& x, double scale) {
 // beyond doubt), no perturbation makes it a hit, whatever a does: a piece leaving the
 // plane it just bounced off, with a a hair off it, is not in doubt. Otherwise a doubt on
 // either end can flip it.
+// value(x) = n . x + c as the header computes it, and its rounding bound.
+struct Rounded {
+  double value, error;
+};
+Rounded rounded_value(const Plane& p, const Vec3& x) {
+  const Vec3 terms = p.normal.cwiseProduct(x);
+  return {terms.x() + terms.y() + terms.z() + p.offset, 1e-15 * (terms.cwiseAbs().sum() + std::abs(p.offset))};
+}
+
+// Step 4's rule: b behind, exactly; a not behind, where a computed value(a) within its
+// rounding bound counts as 0 (a particle resting on the plane).
+bool plane_hit_by_rule(const Segment& s, const Plane& p) {
+  if (oracle::plane_hit(s, p)) return true;
+  if (p.normal == Vec3::Zero() || oracle::plane_side(p, s.b) >= 0) return false;
+  const Rounded a = rounded_value(p, s.a);
+  return std::abs(a.value) <= a.error;
+}
+
+// Why the step does or does not hit the plane, in the header's words.
+std::string plane_rule(const Segment& s, const Plane& p) {
+  if (p.normal == Vec3::Zero()) return "a plane with a zero normal is never hit";
+  const std::string va = "value(a) = " + fmt(p.value(s.a)), vb = "value(b) = " + fmt(p.value(s.b));
+  if (plane_hit_by_rule(s, p))
+    return oracle::plane_side(p, s.a) < 0 ? "a is on the plane to within value(a)'s rounding bound (" + va +
+                                                "), so it counts as on it, and b is behind it (" + vb + "): a hit at t = 0"
+                                          : "the step starts on or in front of the plane (" + va + " >= 0) and ends behind it (" +
+                                                vb + " < 0): a hit";
+  if (oracle::plane_side(p, s.a) < 0)
+    return "planes are one-sided: the step starts behind the plane (" + va + " < 0), which is no hit";
+  return "the step ends on or in front of the plane (" + vb + " >= 0): on the plane is not behind it, and only a step "
+         "that ends behind a plane hits it";
+}
+
 bool plane_unstable(const Segment& s, const Plane& p, double scale, Rules rules) {
   if (rules == Rules::exact) return false;
   if (plane_value_in_doubt(p, s.b, scale)) return true;
@@ -145,6 +178,24 @@ bool plane_unstable(const Segment& s, const Plane& p, double scale, Rules rules)
 }
 
 bool sheet_hit(const SegmentTrianglePair& p) { return oracle::sheet_hit(p.segment, p.triangle); }
+
+// Why the step does or does not hit the two-sided triangle, in the header's words.
+std::string triangle_rule(const Segment& s, const Triangle& tri) {
+  if (tri.normal() == Vec3::Zero()) return "a zero-area triangle is never hit";
+  const int side = oracle::orientation(tri.v0, tri.v1, tri.v2, s.a);
+  if (side == 0) return "a starts exactly on the triangle's plane: it is leaving the sheet, which is no hit";
+  if (oracle::sheet_hit(s, tri))
+    return "a is off the triangle's plane and the segment meets the closed triangle (edges and vertices count); "
+           "triangles are two-sided: a hit from either side";
+  if (oracle::orientation(tri.v0, tri.v1, tri.v2, s.b) == side) return "the segment stays on one side of the triangle's plane: no hit";
+  return "the segment crosses the triangle's plane outside the closed triangle: no hit";
+}
+
+// A yes/no verdict whose failure says the rule, not only that the answer differs.
+Outcome decide(bool got, bool expected, bool doubt, Rules rules, const std::string& rule) {
+  const Outcome o = verdict(got, expected, doubt, rules, "a hit", "no hit");
+  return o.verdict == Outcome::Verdict::fail ? fail(o.expected, o.got, rule) : o;
+}
 
 // Could a perturbation of tol change whether the segment hits this sheet?
 bool triangle_unstable(const Segment& s, const Triangle& tri, double tol, Rules rules) {
@@ -165,28 +216,45 @@ double triangle_t_tolerance(const Segment& s, const Triangle& t, double tol) {
 
 // The checks every reported hit must pass: the point on the segment and the surface,
 // t reproducing it and near the exact t, the unit normal facing the particle.
+// A hit's numbers must be finite before the exact oracle reads them.
+bool finite_hit(Expect& e, const SurfaceHit& got) {
+  const bool ok = std::isfinite(got.t) && got.point.allFinite() && got.normal.allFinite();
+  e.that("finite", ok, "t = " + fmt(got.t) + ", point " + fmt(got.point) + ", normal " + fmt(got.normal), "finite numbers",
+         "a hit's t, point and normal must be finite numbers (a NaN: 0 / 0 from a step that does not cross?)");
+  return ok;
+}
+
 void check_plane_hit(Expect& e, const Segment& s, const Plane& p, const SurfaceHit& got, double tol) {
+  if (!finite_hit(e, got)) return;
   e.that("point", oracle::within(got.point, p, tol), fmt(got.point), "a point of the plane",
-         "the point is " + fmt(std::abs(oracle::plane_distance(p, got.point))) + " from the plane (tolerance " + fmt(tol) + ")");
+         "the hit point must lie on the plane: yours is " + fmt(std::abs(oracle::plane_distance(p, got.point))) +
+             " from it (tolerance " + fmt(tol) + ")");
   e.that("point on segment", oracle::within(got.point, s, tol), fmt(got.point), "a point of the segment",
-         "the point is " + fmt(oracle::distance(got.point, s)) + " from the segment (tolerance " + fmt(tol) + ")");
+         "the hit point must lie on the step a -> b: yours is " + fmt(oracle::distance(got.point, s)) + " from it (tolerance " +
+             fmt(tol) + ")");
   e.that("t", oracle::parameter_reproduces(s, got.t, got.point, tol), fmt(got.t), "a + t (b - a) = point",
-         "a + t (b - a) is " + fmt((s.point(got.t) - got.point).norm()) + " away from the point");
+         "the point must be a + t (b - a) for your t: it is " + fmt((s.point(got.t) - got.point).norm()) + " away");
   const double exact_t = oracle::plane_hit_t(s, p), slack = plane_t_tolerance(s, p, tol);
   e.that("t exact", std::abs(got.t - exact_t) <= slack, fmt(got.t), fmt(exact_t),
-         "t is off by " + fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
+         "t must be where value changes sign, value(a) / (value(a) - value(b)) = " + fmt(exact_t) + ": yours is off by " +
+             fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
   const Vec3 n = p.normal.normalized();
+  const double length = got.normal.norm();
   e.that("normal", (got.normal - n).norm() <= kRelative, fmt(got.normal), fmt(n),
-         "a plane's normal is its own, made unit length: n / |n|");
+         std::abs(length - 1) > kRelative ? "the normal must be unit length, n / |n|: yours has length " + fmt(length)
+         : got.normal.dot(n) < 0          ? "a plane's normal is its own direction, n / |n|, the side a particle comes from: yours points behind"
+                                          : "a plane's normal is its own direction, made unit length: n / |n|");
 }
 
 void check_triangle_hit(Expect& e, const Segment& s, const Triangle& tri, const SurfaceHit& got, double tol) {
+  if (!finite_hit(e, got)) return;
   e.that("point", oracle::within(got.point, tri, tol), fmt(got.point), "a point of the triangle",
          "the point is " + fmt(oracle::distance(got.point, tri)) + " from the triangle (tolerance " + fmt(tol) + ")");
   e.that("point on segment", oracle::within(got.point, s, tol), fmt(got.point), "a point of the segment",
-         "the point is " + fmt(oracle::distance(got.point, s)) + " from the segment (tolerance " + fmt(tol) + ")");
+         "the hit point must lie on the step a -> b: yours is " + fmt(oracle::distance(got.point, s)) + " from it (tolerance " +
+             fmt(tol) + ")");
   e.that("t", oracle::parameter_reproduces(s, got.t, got.point, tol), fmt(got.t), "a + t (b - a) = point",
-         "a + t (b - a) is " + fmt((s.point(got.t) - got.point).norm()) + " away from the point");
+         "the point must be a + t (b - a) for your t: it is " + fmt((s.point(got.t) - got.point).norm()) + " away");
   // The exact t: of the first common point or, for a hit in doubt that is exactly a miss
   // (a hair outside an edge), of the crossing with the triangle's plane it rounds from.
   const oracle::SegmentHit exact = oracle::segment_triangle(s, tri);
@@ -194,16 +262,24 @@ void check_triangle_hit(Expect& e, const Segment& s, const Triangle& tri, const 
   if (exact.hit || crossing.crosses) {
     const double exact_t = exact.hit ? exact.t : crossing.t, slack = triangle_t_tolerance(s, tri, tol);
     e.that("t exact", std::abs(got.t - exact_t) <= slack, fmt(got.t), fmt(exact_t),
-           "t is off by " + fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
+           "t must be where the step meets the triangle, " + fmt(exact_t) + ": yours is off by " +
+               fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
   }
   // The side a is on: when a is a hair off the plane either side may be reported.
   const int side = oracle::orientation(tri.v0, tri.v1, tri.v2, s.a);
   const Vec3 n = oracle::unit_normal(tri);
-  const bool up = (got.normal - n).norm() <= kRelative, down = (got.normal + n).norm() <= kRelative;
+  // A needle's plane is only as well defined as its width: moving the vertices by tol
+  // turns it by up to 2 tol / h, h its smallest height (twice its area over its longest edge).
+  const double longest = std::max({(tri.v1 - tri.v0).norm(), (tri.v2 - tri.v1).norm(), (tri.v0 - tri.v2).norm()});
+  const double turn = kRelative + 2 * tol * longest / tri.normal().norm();
+  const bool up = (got.normal - n).norm() <= turn, down = (got.normal + n).norm() <= turn;
   const bool near_plane = std::abs(oracle::triangle_plane_distance(tri, s.a)) <= 8 * tol;
   e.that("normal", (side > 0 && up) || (side < 0 && down) || (near_plane && (up || down)), fmt(got.normal),
          fmt(side < 0 ? Vec3(-n) : n),
-         "the normal must be the triangle's unit normal, turned to the side a is on");
+         std::abs(got.normal.norm() - 1) > kRelative
+             ? "the normal must be unit length: yours has length " + fmt(got.normal.norm())
+             : "triangles are two-sided: the normal must be the triangle's unit normal turned to the side a is on (" +
+                   std::string(side < 0 ? "behind e1 x e2" : "in front of e1 x e2") + ")");
 }
 
 struct Status {
@@ -216,13 +292,19 @@ struct SceneStatus {
   bool any_stable_hit = false, any_hit = false, any_unstable = false;
 };
 
-SceneStatus statuses(const Segment& s, const Scene& scene, double tol, Rules rules) {
+// `left`: the hit the piece s starts from (collide), or none. A piece that starts strictly
+// in front of the sheet it just bounced off and ends clearly in front of it does not hit
+// it, whatever a perturbation of its start would do: its start is the answer's own point.
+SceneStatus statuses(const Segment& s, const Scene& scene, double tol, Rules rules, const SurfaceHit* left = nullptr) {
   SceneStatus all;
   const double scale = tol / kRelative;
-  for (const Plane& p : scene.planes) all.planes.push_back({oracle::plane_hit(s, p), plane_unstable(s, p, scale, rules)});
+  for (const Plane& p : scene.planes) all.planes.push_back({plane_hit_by_rule(s, p), plane_unstable(s, p, scale, rules)});
   for (std::size_t i = 0; i < scene.mesh.size(); ++i) {
     const Triangle tri = scene.mesh.triangle(i);
-    all.triangles.push_back({oracle::sheet_hit(s, tri), triangle_unstable(s, tri, tol, rules)});
+    const int facing = left && left->triangle == int(i) && left->normal.dot(tri.normal()) < 0 ? -1 : 1;
+    const bool leaving = left && left->triangle == int(i) && facing * oracle::orientation(tri.v0, tri.v1, tri.v2, s.a) > 0 &&
+                         facing * oracle::triangle_plane_distance(tri, s.b) > 8 * tol;
+    all.triangles.push_back({oracle::sheet_hit(s, tri), !leaving && triangle_unstable(s, tri, tol, rules)});
   }
   for (const auto* list : {&all.planes, &all.triangles})
     for (const Status& st : *list) {
@@ -251,12 +333,30 @@ std::string describe_hit(const SurfaceHit& h) {
 bool valid_plane(const Scene& scene, int i) { return i >= 0 && std::size_t(i) < scene.planes.size(); }
 bool valid_triangle(const Scene& scene, int i) { return i >= 0 && std::size_t(i) < scene.mesh.size(); }
 
+// The rule that decides a scene's yes/no: that of a surface certainly hit, else of the
+// surface the answer names.
+std::string scene_rule(const Segment& s, const Scene& scene, const SceneStatus& all, const SurfaceHit& got) {
+  for (std::size_t i = 0; i < all.planes.size(); ++i)
+    if (all.planes[i].hit && !all.planes[i].unstable) return "plane " + std::to_string(i) + ": " + plane_rule(s, scene.planes[i]);
+  for (std::size_t i = 0; i < all.triangles.size(); ++i)
+    if (all.triangles[i].hit && !all.triangles[i].unstable)
+      return "triangle " + std::to_string(i) + ": " + triangle_rule(s, scene.mesh.triangle(i));
+  if (valid_plane(scene, got.plane)) return "plane " + std::to_string(got.plane) + ": " + plane_rule(s, scene.planes[std::size_t(got.plane)]);
+  if (valid_triangle(scene, got.triangle))
+    return "triangle " + std::to_string(got.triangle) + ": " + triangle_rule(s, scene.mesh.triangle(std::size_t(got.triangle)));
+  return "the step hits no plane (it starts behind, or does not end behind, each) and meets no triangle";
+}
+
 // The first hit of a segment on a scene: lab 02's mesh verdict, with planes beside the triangles.
-Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got, Rules rules) {
+Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got, Rules rules, const SurfaceHit* left = nullptr) {
   const double tol = kRelative * scale_with(scene, {s.a, s.b});
-  const SceneStatus all = statuses(s, scene, tol, rules);
+  // An answer that hits the sheet it just left again (at t near 0: its start a hair
+  // behind, unsettled before step 7) is in doubt as before.
+  const bool again = left && got.hit && got.triangle >= 0 && got.triangle == left->triangle;
+  const SceneStatus all = statuses(s, scene, tol, rules, again ? nullptr : left);
   const std::string expected = describe_hits(s, scene, all);
-  const Outcome decision = verdict(got.hit, all.any_hit, !all.any_stable_hit && all.any_unstable, rules, "a hit", "no hit");
+  const Outcome decision =
+      decide(got.hit, all.any_hit, !all.any_stable_hit && all.any_unstable, rules, scene_rule(s, scene, all, got));
   if (decision.verdict == Outcome::Verdict::fail) return fail(expected, describe_hit(got), decision.why);
   if (!got.hit || !all.any_hit) return decision;
 
@@ -269,13 +369,14 @@ Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got
   if (on_plane) {
     const Plane& p = scene.planes[std::size_t(got.plane)];
     const Status& st = all.planes[std::size_t(got.plane)];
-    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "the segment does not hit plane " + std::to_string(got.plane));
+    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "plane " + std::to_string(got.plane) + ": " + plane_rule(s, p));
     check_plane_hit(e, s, p, got, tol);
     slack = plane_t_tolerance(s, p, tol);
   } else {
     const Triangle tri = scene.mesh.triangle(std::size_t(got.triangle));
     const Status& st = all.triangles[std::size_t(got.triangle)];
-    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "the segment does not hit triangle " + std::to_string(got.triangle));
+    if (!st.hit && !st.unstable)
+      return fail(expected, describe_hit(got), "triangle " + std::to_string(got.triangle) + ": " + triangle_rule(s, tri));
     check_triangle_hit(e, s, tri, got, tol);
     slack = triangle_t_tolerance(s, tri, tol);
   }
@@ -284,14 +385,14 @@ Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got
     if (!all.planes[i].hit || all.planes[i].unstable) continue;
     const double t = oracle::plane_hit_t(s, scene.planes[i]);
     if (got.t > t + slack + plane_t_tolerance(s, scene.planes[i], tol))
-      return fail(expected, describe_hit(got), "a nearer hit exists: plane " + std::to_string(i) + " at t = " + fmt(t));
+      return fail(expected, describe_hit(got), "the first hit is the one with the smallest t: plane " + std::to_string(i) + " is hit at t = " + fmt(t) + ", before yours");
   }
   for (std::size_t i = 0; i < all.triangles.size(); ++i) {
     if (!all.triangles[i].hit || all.triangles[i].unstable) continue;
     const Triangle tri = scene.mesh.triangle(i);
     const double t = oracle::segment_triangle(s, tri).t;
     if (got.t > t + slack + triangle_t_tolerance(s, tri, tol))
-      return fail(expected, describe_hit(got), "a nearer hit exists: triangle " + std::to_string(i) + " at t = " + fmt(t));
+      return fail(expected, describe_hit(got), "the first hit is the one with the smallest t: triangle " + std::to_string(i) + " is hit at t = " + fmt(t) + ", before yours");
   }
   const Outcome o = e.outcome();
   return o.verdict == Outcome::Verdict::fail ? o : decision;
@@ -503,6 +604,57 @@ void check_shot(Expect& e, const std::string& name, const LaunchCase& in, const 
              fmt(tol) + ")");
 }
 
+// The exact angles, and how far a relative perturbation of 1e-9 of the input moves them.
+// Computed in long double (64-bit significands), each root in a form without
+// cancellation: the high root adds sqrt(D) to v^2; the low root is the product of the
+// roots, (g x^2 + 2 y v^2) / (g x^2), divided by the high one. Their errors, near 1e-19
+// relative, are far below the tolerance.
+//   To first order, with P(u) = g x u^2 - 2 v^2 u + g x + 2 y v^2 / x = 0 (the lecture's
+//   quadratic times 2 v^2 / x) and P'(u) = 2 (g x u - v^2) = -+2 sqrt(D) at the roots:
+//   |du| <= ((1 + u^2) |d(g x)| + 2 |u| |d(v^2)| + |d(2 y v^2 / x)|) / (2 sqrt(D)), and the
+//   angle moves by du / (1 + u^2).
+struct Angles {
+  double low = 0, high = 0, low_tol = 0, high_tol = 0, fast = 0;  // fast: g x / v^2
+};
+Angles exact_angles(const LaunchCase& in, int count) {
+  using Real = long double;
+  const Vec3 d = in.target - in.from;
+  const Real gx = in.gravity.x(), gy = in.gravity.y(), gz = in.gravity.z();
+  const Real dx = d.x(), dy = d.y(), dz = d.z();
+  const Real g = std::sqrt(gx * gx + gy * gy + gz * gz), v2 = Real(in.speed) * in.speed;
+  const Real cx = dy * gz - dz * gy, cy = dz * gx - dx * gz, cz = dx * gy - dy * gx;
+  const Real x = std::sqrt(cx * cx + cy * cy + cz * cz) / g, y = -(dx * gx + dy * gy + dz * gz) / g;
+  const Real D = count == 1 ? 0 : std::max(Real(0), v2 * v2 - 2 * g * y * v2 - g * g * x * x), root = std::sqrt(D);
+  const Real high = (v2 + root) / (g * x), low = (g * x * x + 2 * y * v2) / (x * (v2 + root));
+  const Real eps = kRelative, S = std::max({largest(in.from), largest(in.target), 1e-300});
+  const Real moved = 2 * kRoot3 * eps * S + kRoot3 * eps * std::sqrt(dx * dx + dy * dy + dz * dz);  // of x and y
+  const Real d_gx = g * moved + kRoot3 * eps * g * x, d_v2 = 2 * eps * v2;
+  const Real d_y_term = 2 * v2 * (moved / x + std::abs(y) * moved / (x * x) + 2 * eps * std::abs(y) / x);
+  const auto tolerance = [&](Real u) {
+    if (root == 0) return Real(1e-9) * std::abs(u);  // D = 0 exactly: one root, v^2 / (g x)
+    return 2 * ((1 + u * u) * d_gx + 2 * std::abs(u) * d_v2 + d_y_term) / (2 * root) / (1 + u * u);
+  };
+  return {double(std::atan(low)), double(std::atan(high)), double(tolerance(low) + 1e-15), double(tolerance(high) + 1e-15),
+          double(g * x / v2)};
+}
+
+void check_angles(Expect& e, const LaunchCase& in, const Aim& got, int count) {
+  const Angles exact = exact_angles(in, count);
+  const double low_off = std::abs(got.low.angle - exact.low), high_off = std::abs(got.high.angle - exact.high);
+  const bool swapped = std::abs(got.low.angle - exact.high) <= exact.high_tol;
+  std::string why = "low.angle must be the low root, atan((v^2 - sqrt(D)) / (g x)) = " + fmt(exact.low) + ": yours is off by " +
+                    fmt(low_off) + " (tolerance " + fmt(exact.low_tol) + ")";
+  if (swapped && count == 2) why += "; yours is the high root, the lobbed shot";
+  else if (exact.fast < 1e-4)
+    why += ". Here g x / v^2 = " + fmt(exact.fast) + ": v^2 - sqrt(D) cancels (subtracts two nearly equal numbers) and "
+           "loses the low root's digits; take the product of the roots, (g x^2 + 2 y v^2) / (g x^2), divided by the high root";
+  e.that("low.angle", low_off <= exact.low_tol, fmt(got.low.angle), fmt(exact.low), why);
+  e.that("high.angle", high_off <= exact.high_tol, fmt(got.high.angle), fmt(exact.high),
+         "high.angle must be the high root, atan((v^2 + sqrt(D)) / (g x)) = " + fmt(exact.high) + ": yours is off by " +
+             fmt(high_off) + " (tolerance " + fmt(exact.high_tol) + ")" +
+             (count == 1 ? "; with D = 0 there is one angle and high = low" : ""));
+}
+
 }  // namespace
 
 Outcome aim(const LaunchCase& in, const Aim& got, Rules rules) {
@@ -520,6 +672,10 @@ Outcome aim(const LaunchCase& in, const Aim& got, Rules rules) {
   Expect e;
   const bool vertical = in.speed == 0 || oracle::launch_vertical(in.from, in.target, in.gravity);
   const double radicand = oracle::launch_radicand(in.from, in.target, in.speed, in.gravity);
+  if (!std::isfinite(got.radicand) || !std::isfinite(got.low.angle) || !std::isfinite(got.high.angle) || !finite(got.low.velocity) ||
+      !finite(got.high.velocity) || !std::isfinite(got.low.time) || !std::isfinite(got.high.time))
+    return fail("finite numbers", "radicand " + fmt(got.radicand) + ", angles " + fmt(got.low.angle) + ", " + fmt(got.high.angle),
+                "an aim's radicand, angles, velocities and times must be finite numbers");
   if (vertical) {
     e.equal("radicand", got.radicand, 0.0);
   } else {
@@ -534,16 +690,7 @@ Outcome aim(const LaunchCase& in, const Aim& got, Rules rules) {
     check_shot(e, "high", in, got.high, tol);
     e.that("order", got.low.angle <= got.high.angle + 1e-12, fmt(got.low.angle) + " <= " + fmt(got.high.angle),
            "low.angle <= high.angle", "the low shot must have the lower angle");
-    // The roots lie on either side of the angle of the longest reach, tan = v^2 / (g x):
-    // a shot that reaches the target on the wrong side is the other root.
-    const double x = d.cross(in.gravity).norm() / g, pivot = in.speed * in.speed / (g * x);
-    const auto tan_of = [](const Shot& s) { return std::tan(s.angle); };
-    e.that("low is the low root", tan_of(got.low) <= pivot * (1 + 1e-9) + 1e-12, fmt(got.low.angle),
-           "an angle below atan(v^2 / (g x)) = " + fmt(std::atan(pivot)),
-           "low is above the angle of the longest reach: that is the lobbed shot, which belongs in high");
-    e.that("high is the high root", tan_of(got.high) >= pivot * (1 - 1e-9) - 1e-12, fmt(got.high.angle),
-           "an angle above atan(v^2 / (g x)) = " + fmt(std::atan(pivot)),
-           "high is below the angle of the longest reach: that is the flat shot, which belongs in low");
+    check_angles(e, in, got, expected);
   }
   const Outcome o = e.outcome();
   if (o.verdict == Outcome::Verdict::fail) return doubt && expected == 1 ? ambiguous() : o;
@@ -556,8 +703,8 @@ Outcome hit_plane(const SegmentScene& in, const SurfaceHit& got, Rules rules) {
   const Segment& s = in.segment;
   const Plane& p = in.scene.planes.front();
   const double scale = scale_with(in.scene, {s.a, s.b}), tol = kRelative * scale;
-  const bool expected = oracle::plane_hit(s, p);
-  const Outcome decision = verdict(got.hit, expected, plane_unstable(s, p, scale, rules), rules, "a hit", "no hit");
+  const bool expected = plane_hit_by_rule(s, p);
+  const Outcome decision = decide(got.hit, expected, plane_unstable(s, p, scale, rules), rules, plane_rule(s, p));
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
   Expect e;
   check_plane_hit(e, s, p, got, tol);
@@ -568,8 +715,8 @@ Outcome hit_plane(const SegmentScene& in, const SurfaceHit& got, Rules rules) {
 Outcome hit_triangle(const SegmentTrianglePair& in, const SurfaceHit& got) {
   const double tol = kRelative * check::scale_of_input(in);
   const bool expected = sheet_hit(in);
-  const Outcome decision = verdict(got.hit, expected, triangle_unstable(in.segment, in.triangle, tol, Rules::random),
-                                   Rules::random, "a hit", "no hit");
+  const Outcome decision = decide(got.hit, expected, triangle_unstable(in.segment, in.triangle, tol, Rules::random),
+                                  Rules::random, triangle_rule(in.segment, in.triangle));
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
   Expect e;
   check_triangle_hit(e, in.segment, in.triangle, got, tol);
@@ -590,7 +737,7 @@ Outcome impulse(const ImpulseCase& in, const Impulse& got) {
   const double tol_v = kRelative * V * (2 + e_ + mu * (1 + e_)) + 1e-300;
   // v_close's sign is in doubt when moving every velocity by 1e-9 V, and the normal by
   // 1e-9, could flip it.
-  const bool doubt = std::abs(exact.v_close) <= 2 * kRelative * V * (kRoot3 + 1);
+  const bool doubt = std::abs(exact.v_close) <= closing_band(in);
   Expect e;
   if (got.closing != exact.closing && !doubt)
     return fail("closing = " + describe(exact.closing), "closing = " + describe(got.closing),
@@ -612,9 +759,11 @@ Outcome collide(const CollideCase& in, const Collision& got) {
   const int cap = std::clamp(scene.bounce_cap, 0, kMaxBounceCap);
   const std::string answer = describe(got);
   if (got.bounces < 0 || got.bounces > cap)
-    return fail("between 0 and " + std::to_string(cap) + " bounces", answer, "the bounce cap is " + std::to_string(cap));
+    return fail("between 0 and " + std::to_string(cap) + " bounces", answer,
+                "the bounce cap is " + std::to_string(cap) + ": at most that many impulses, then the next hit stops the particle");
   if (got.stopped && got.bounces != cap)
-    return fail("no stop before the cap", answer, "a particle stops only when it hits again after " + std::to_string(cap) + " bounces");
+    return fail("no stop before the cap", answer,
+                "the bounce cap: a particle stops only when it hits again after " + std::to_string(cap) + " bounces");
   if (!finite(got.position) || !finite(got.velocity)) return fail("a finite position and velocity", answer, "not finite");
 
   const double e_ = scene.material.restitution, mu = scene.material.friction;
@@ -625,25 +774,29 @@ Outcome collide(const CollideCase& in, const Collision& got) {
   bool doubt = false;
   for (int k = 0;; ++k) {
     const std::string where = k == 0 ? "the step a -> b" : "the piece after bounce " + std::to_string(k - 1);
+    const SurfaceHit* left = k == 0 ? nullptr : &got.trace[std::size_t(k - 1)].hit;
     const double tol = kRelative * scale_with(scene, {piece.a, piece.b, in.step.a, in.step.b});
     if (k == got.bounces && !got.stopped) {  // the last piece: clear to its end
-      const Outcome o = within(where, first_hit_on(piece, scene, SurfaceHit{}, Rules::random));
+      const Outcome o = within(where, first_hit_on(piece, scene, SurfaceHit{}, Rules::random, left));
       if (o.verdict == Outcome::Verdict::fail)
         return fail(o.expected, answer, o.why + " (a hit there is another bounce, or the stop when the cap is used up)");
       doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
       Expect e;
       e.that("position", (got.position - piece.b).norm() <= tol, fmt(got.position), fmt(piece.b),
-             "the particle must end where " + where + " ends, " + fmt(piece.b) + " (tolerance " + fmt(tol) + ")");
+             "the particle must end where " + where + " ends, " + fmt(piece.b) +
+                 ": after each hit it moves on from the hit point for the remaining time (1 - t) r only (tolerance " + fmt(tol) + ")");
       e.near("velocity", got.velocity, v, tol_v);
       const Outcome end = e.outcome();
       if (end.verdict == Outcome::Verdict::fail) return end;
       break;
     }
     const Bounce& b = got.trace[std::size_t(k)];
-    const Outcome o = within(where, first_hit_on(piece, scene, b.hit, Rules::random));
+    const Outcome o = within(where, first_hit_on(piece, scene, b.hit, Rules::random, left));
     if (o.verdict == Outcome::Verdict::fail) return fail(o.expected, answer, o.why);
     doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
     if (!b.hit.hit) return fail("a hit", answer, where + ": the trace records no hit");
+    if (!finite(b.from) || !finite(b.velocity))
+      return fail("a finite `from` and velocity", answer, "bounce " + std::to_string(k) + ": not finite");
     if ((b.from - b.hit.point).norm() > tol)
       return fail(fmt(b.hit.point), fmt(b.from), "bounce " + std::to_string(k) + ": `from` must be the hit point (settled by at most tol)");
     if (k == got.bounces) {  // the stop
@@ -672,6 +825,10 @@ Outcome invariants(const CollideCase& in, const Collision& got) {
   const Scene& scene = in.scene;
   const std::string answer = describe(got);
   const int used = std::clamp(got.bounces + (got.stopped ? 1 : 0), 0, kMaxBounceCap + 1);
+  if (!finite(got.position) || !finite(got.velocity)) return fail("a finite position and velocity", answer, "not finite");
+  for (int k = 0; k < used; ++k)
+    if (!finite(got.trace[std::size_t(k)].from))
+      return fail("a finite `from`", answer, "bounce " + std::to_string(k) + "'s `from` is not finite");
   // (1) Never behind a plane the step began in front of.
   for (std::size_t i = 0; i < scene.planes.size(); ++i) {
     const Plane& p = scene.planes[i];
@@ -694,8 +851,8 @@ Outcome invariants(const CollideCase& in, const Collision& got) {
       return fail("a hit on one surface", answer, "bounce " + std::to_string(k) + " names no valid surface");
     if (side_of(b.hit, b.from) <= 0)
       return fail("`from` strictly in front of the surface hit", answer,
-                  "bounce " + std::to_string(k) + ": `from` " + fmt(b.from) +
-                      " is on or behind the surface it bounced off (exactly): settle it");
+                  "every `from` must be strictly in front of the surface it bounced off, exactly: bounce " + std::to_string(k) +
+                      "'s " + fmt(b.from) + " is on or behind it (a rounded hit point: settle it)");
   }
   if (used > 0 && side_of(got.trace[std::size_t(used - 1)].hit, got.position) < 0)
     return fail("an end not behind the last surface hit", answer,
@@ -768,334 +925,12 @@ Outcome system_step(const SystemCase& in, const System& after, int step) {
   return pass();
 }
 
-// ---- Generators ------------------------------------------------------------------------
+// ---- Doubt, for the generators -------------------------------------------------------
 
-namespace {
-
-rc::Gen<double> dyadic(int low, int high, int bits) {
-  return rc::gen::map(rc::gen::inRange(low, high + 1), [bits](int k) { return std::ldexp(double(k), -bits); });
-}
-
-rc::Gen<Vec3> unit_vector() {
-  return rc::gen::map(gen::direction(1.0, 4), [](const Vec3& v) { return Vec3(v.normalized()); });
-}
-
-Scene scene_of(const StepSurfaces& s) {
-  Scene scene;
-  scene.planes = s.planes;
-  scene.mesh = s.mesh;
-  return scene;
-}
-
-rc::Gen<Material> material() {
-  return rc::gen::exec([] {
-    Material m;
-    m.restitution = *rc::gen::weightedOneOf<double>({{2, rc::gen::element(0.0, 0.5, 1.0)}, {2, dyadic(0, 16, 4)}});
-    m.friction = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(0.0)}, {2, dyadic(0, 16, 3)}});
-    return m;
-  });
-}
-
-rc::Gen<double> time_step() {
-  return rc::gen::weightedOneOf<double>({{3, dyadic(1, 8, 4)}, {1, rc::gen::element(1.0 / 60, 0.01, 0.1, 1.0)}});
-}
-
-}  // namespace
-
-rc::Gen<EmitCase> emit_case() {
-  return rc::gen::exec([] {
-    const double s = *gen::scale();
-    EmitCase c;
-    Emitter& e = c.emitter;
-    e.position = *gen::point(s);
-    e.half_extents = (*gen::lattice_point(s, 4)).cwiseAbs();
-    e.direction = *unit_vector();
-    e.cone = *rc::gen::weightedOneOf<double>({{1, rc::gen::element(0.0, M_PI / 2, M_PI)}, {3, dyadic(0, 24, 3)}});
-    e.speed = *dyadic(0, 64, 2) * s;
-    e.speed_spread = e.speed * *dyadic(0, 4, 2);
-    e.lifetime = *dyadic(1, 64, 3);
-    e.lifetime_spread = e.lifetime * *dyadic(0, 3, 2);
-    e.mass = *dyadic(1, 64, 3);
-    c.seed = *rc::gen::inRange(1, 1 << 20);
-    c.count = *rc::gen::inRange(1, 65);
-    return c;
-  });
-}
-
-rc::Gen<BirthsCase> births_case() {
-  return rc::gen::exec([] {
-    BirthsCase c;
-    c.emitter.rate = *rc::gen::weightedOneOf<double>(
-        {{3, dyadic(0, 512, 2)}, {1, rc::gen::element(10.0, 30.0, 1.0 / 3, 1000.0, 0.7)}});
-    c.emitter.owed = *dyadic(0, 15, 4);
-    c.dt = *time_step();
-    c.steps = *rc::gen::inRange(1, 65);
-    return c;
-  });
-}
-
-rc::Gen<AgeCase> age_case() {
-  return rc::gen::exec([] {
-    AgeCase c;
-    c.dt = *time_step();
-    const int n = *rc::gen::inRange(0, 13);
-    for (int i = 0; i < n; ++i) {
-      Particle p;
-      p.position = *gen::point(1.0);
-      p.velocity = *gen::point(1.0);
-      p.previous = p.position;
-      // Ages on the step's grid, so that age + dt hits the lifetime exactly in some cases.
-      p.age = *rc::gen::inRange(0, 9) * c.dt;
-      p.lifetime = *rc::gen::weightedOneOf<double>(
-          {{2, rc::gen::just(p.age + c.dt)}, {3, rc::gen::map(dyadic(1, 64, 3), [](double x) { return x; })}});
-      c.particles.push_back(p);
-    }
-    return c;
-  });
-}
-
-rc::Gen<MotionCase> motion_case() {
-  return rc::gen::exec([] {
-    const double s = *gen::scale();
-    MotionCase c;
-    c.dt = *time_step();
-    Particle& p = c.particle;
-    p.position = *gen::point(s);
-    p.velocity = *gen::point(s);
-    p.previous = p.position - c.dt * p.velocity + *gen::lattice_point(s / 64, 2);
-    p.mass = *rc::gen::weightedOneOf<double>({{3, rc::gen::just(1.0)}, {2, dyadic(1, 64, 3)}, {1, rc::gen::element(1e-3, 1e3)}});
-    p.age = *dyadic(0, 16, 3);
-    p.lifetime = p.age + 1;
-    c.forces.gravity = *rc::gen::oneOf(rc::gen::just(Vec3(0, 0, -9.81)), gen::lattice_point(s, 10));
-    c.forces.drag = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(0.0)}, {1, dyadic(0, 16, 3)}});
-    c.forces.air_drag = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(0.0)}, {1, dyadic(0, 16, 4)}});
-    if (s > 1) c.forces.air_drag /= s;  // keep the drag's size near the others'
-    return c;
-  });
-}
-
-namespace {
-
-// Exactly at the edge of reach (D = 0) on integers: with gravity q^2 along an axis, speed
-// m q, and the target x = m n across and y = (m^2 - n^2) / 2 up, v^4 = 2 g y v^2 + g^2 x^2.
-LaunchCase edge_of_reach(double length_scale) {
-  const int q = *rc::gen::inRange(1, 5), m = *rc::gen::inRange(1, 9), n = *rc::gen::inRange(1, 9);
-  const double x = m * n, y = (m * m - n * n) / 2.0;
-  const int axis = *rc::gen::inRange(0, 3);
-  Vec3 down = Vec3::Zero();
-  down[axis] = -1;
-  Vec3 across = Vec3::Zero();
-  across[(axis + 1 + *rc::gen::inRange(0, 2)) % 3] = *rc::gen::element(1.0, -1.0);
-  // Lengths times 4^k, gravity times 4^j: speed^2 = g s scales by 4^(k+j), exactly.
-  const int k = int(std::log2(length_scale)) / 2, j = *rc::gen::inRange(-2, 3);
-  const double L = std::ldexp(1.0, 2 * k), G = std::ldexp(1.0, 2 * j);
-  LaunchCase c;
-  c.from = *gen::lattice_point(L, 8);
-  c.target = c.from + L * (x * across - y * down);
-  c.gravity = G * q * q * down;
-  c.speed = std::ldexp(double(m * q), k + j);
-  return c;
-}
-
-}  // namespace
-
-rc::Gen<LaunchCase> launch_case() {
-  return rc::gen::exec([] {
-    const double s = *gen::scale();
-    const int family = *rc::gen::inRange(0, 6);
-    LaunchCase c;
-    if (family == 0) return edge_of_reach(s);
-    c.from = *gen::point(s);
-    c.gravity = family == 1 ? Vec3(*gen::lattice_point(1.0, 10)) : Vec3(0, 0, -9.81);
-    if (c.gravity == Vec3::Zero()) c.gravity = Vec3(0, -1, 0);
-    c.target = c.from + *gen::point(s);
-    if (family == 2) c.target = c.from - c.gravity * *dyadic(-8, 8, 2) * s;  // straight above or below
-    // A speed near the one that just reaches: v^2 near g (y + |d|) (the minimum), scaled.
-    const Vec3 d = c.target - c.from;
-    const double g = c.gravity.norm(), y = -d.dot(c.gravity) / g;
-    const double least = std::sqrt(std::max(0.0, g * (y + d.norm())));
-    const double factor = family == 3 ? 1 + std::ldexp(double(*gen::integer(4)), -*rc::gen::inRange(10, 50)) : *dyadic(1, 24, 3);
-    c.speed = family == 4 ? *dyadic(0, 64, 2) * std::sqrt(g * s) : least * factor;
-    return c;
-  });
-}
-
-rc::Gen<LaunchCase> exact_launch_case() {
-  return rc::gen::exec([] {
-    const double s = std::ldexp(1.0, 2 * *rc::gen::inRange(-5, 6));
-    if (*rc::gen::inRange(0, 3) == 0) return edge_of_reach(s);
-    LaunchCase c;
-    c.from = *gen::lattice_point(s, 16);
-    const int axis = *rc::gen::inRange(0, 3);
-    c.gravity = Vec3::Zero();
-    c.gravity[axis] = -double(*rc::gen::inRange(1, 11));
-    c.target = *rc::gen::inRange(0, 3) == 0 ? Vec3(c.from - c.gravity * *gen::integer(4) * s)  // straight above or below
-                                            : Vec3(c.from + *gen::lattice_point(s, 16));
-    c.speed = *rc::gen::inRange(0, 33) * std::sqrt(s);
-    return c;
-  });
-}
-
-rc::Gen<SegmentScene> plane_case() {
-  return rc::gen::exec([] {
-    const StepSurfaces c = *rc::gen::suchThat(gen::step_surfaces(), [](const StepSurfaces& x) { return !x.planes.empty(); });
-    SegmentScene out;
-    out.segment = c.step;
-    out.scene.planes = {c.planes[std::size_t(*rc::gen::inRange(0, int(c.planes.size())))]};
-    return out;
-  });
-}
-
-rc::Gen<SegmentScene> segment_scene() {
-  return rc::gen::map(gen::step_surfaces(), [](const StepSurfaces& c) { return SegmentScene{c.step, scene_of(c)}; });
-}
-
-rc::Gen<SegmentScene> exact_segment_scene() {
-  return rc::gen::map(gen::exact_step_surfaces(), [](const StepSurfaces& c) { return SegmentScene{c.step, scene_of(c)}; });
-}
-
-rc::Gen<ImpulseCase> impulse_case() {
-  return rc::gen::exec([] {
-    const double s = *gen::scale();
-    ImpulseCase c;
-    c.normal = *rc::gen::weightedOneOf<Vec3>({{1, rc::gen::element(Vec3(Vec3::UnitZ()), Vec3(-Vec3::UnitX()))}, {3, unit_vector()}});
-    c.velocity = *gen::point(s);
-    const int family = *rc::gen::inRange(0, 5);
-    if (family == 1) c.velocity -= c.velocity.dot(c.normal) * c.normal;  // (nearly) tangential: v_close about 0
-    if (family == 2) c.velocity = -*dyadic(1, 64, 2) * s * c.normal;    // straight in: no sliding
-    if (family == 3) c.velocity -= 2 * std::abs(c.velocity.dot(c.normal)) * c.normal;  // closing
-    c.object_velocity = *rc::gen::weightedOneOf<Vec3>({{2, rc::gen::just(Vec3(Vec3::Zero()))}, {1, gen::point(s)}});
-    c.mass = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(1.0)}, {2, dyadic(1, 64, 3)}});
-    c.material = *material();
-    return c;
-  });
-}
-
-namespace {
-
-bool starts_valid(const Segment& step, const std::vector<Plane>& planes) {
-  for (const Plane& p : planes)
-    if (oracle::plane_side(p, step.a) < 0) return false;
-  return true;
-}
-
-// Steps that start not behind any plane (reversed if that helps), as a particle's do.
-rc::Gen<StepSurfaces> valid_steps() {
-  const auto reversed_if_behind = [](StepSurfaces c) {
-    if (!starts_valid(c.step, c.planes)) std::swap(c.step.a, c.step.b);
-    return c;
-  };
-  return rc::gen::suchThat(rc::gen::map(gen::step_surfaces(), reversed_if_behind),
-                           [](const StepSurfaces& x) { return starts_valid(x.step, x.planes); });
-}
-
-}  // namespace
-
-rc::Gen<CollideCase> collide_case() {
-  return rc::gen::exec([] {
-    const StepSurfaces c = *valid_steps();
-    CollideCase out;
-    out.step = c.step;
-    out.scene = scene_of(c);
-    out.scene.material = *material();
-    out.scene.bounce_cap = *rc::gen::weightedOneOf<int>({{3, rc::gen::inRange(0, 5)}, {1, rc::gen::just(kMaxBounceCap)}});
-    out.dt = *time_step();
-    out.mass = *rc::gen::weightedOneOf<double>({{3, rc::gen::just(1.0)}, {1, dyadic(1, 64, 3)}});
-    // The integrator's velocity: the step's own, or one that differs from it (Euler's new
-    // velocity is not the one it moved with).
-    const Vec3 along = (c.step.b - c.step.a) / out.dt;
-    const double size = std::max(largest(along), 1e-300);
-    out.velocity = *rc::gen::weightedOneOf<Vec3>(
-        {{3, rc::gen::just(along)}, {1, rc::gen::map(gen::lattice_point(size / 4, 4), [along](const Vec3& d) { return Vec3(along + d); })}});
-    return out;
-  });
-}
-
-// A point on (or a hair from) a surface the step hits or could hit, as collide meets
-// them; the surface is met from the side the step starts on, as a particle would.
-rc::Gen<SettleCase> settle_case() {
-  return rc::gen::exec([] {
-    const StepSurfaces c = *rc::gen::suchThat(valid_steps(), [](const StepSurfaces& x) {
-      return !x.planes.empty() || x.mesh.size() > 0;
-    });
-    SettleCase out;
-    out.scene = scene_of(c);
-    SurfaceHit& last = out.last;
-    const int i = *rc::gen::inRange(0, int(c.planes.size() + c.mesh.size()));
-    const bool on_plane = std::size_t(i) < c.planes.size();
-    const int j = on_plane ? i : i - int(c.planes.size());
-    const Triangle tri = on_plane ? Triangle{} : c.mesh.triangle(std::size_t(j));
-    const int side = on_plane ? 1 : oracle::orientation(tri.v0, tri.v1, tri.v2, c.step.a);
-    if (!on_plane && side == 0) {  // the step starts on the sheet: it cannot hit it
-      out.x = c.step.a;
-      return out;
-    }
-    if (on_plane) {
-      const Plane& p = c.planes[std::size_t(j)];
-      last = {true, j, -1, 0.0, Vec3::Zero(), p.normal.normalized()};
-      // Where a + t (b - a) lands, computed as a student would: a hair either side.
-      const double va = p.value(c.step.a), vb = p.value(c.step.b);
-      Vec3 x = (va != vb) ? c.step.point(va / (va - vb)) : c.step.a;
-      x -= p.normal * (p.value(x) / p.normal.squaredNorm());
-      const double local = std::max(largest(x), std::abs(p.offset) / p.normal.norm());
-      x -= *rc::gen::element(0.0, 1.0, -1.0) * std::ldexp(local, -40) * p.normal.normalized();
-      out.x = x;
-    } else {
-      const Vec3 n = tri.normal();
-      last = {true, -1, j, 0.0, Vec3::Zero(), side * n.normalized()};
-      const Vec3 weights = Vec3(*dyadic(0, 8, 3), *dyadic(0, 8, 3), 0);
-      Vec3 x = tri.v0 + weights.x() * (tri.v1 - tri.v0) + weights.y() * (tri.v2 - tri.v0);
-      x -= n * ((x - tri.v0).dot(n) / n.squaredNorm());  // onto the plane, up to rounding
-      out.x = x;
-    }
-    last.point = out.x;
-    return out;
-  });
-}
-
-rc::Gen<SystemCase> system_case() {
-  return rc::gen::exec([] {
-    const double s = *gen::scale();
-    SystemCase c;
-    Emitter& e = c.emitter;
-    e.position = Vec3(0, 0, 4 * s) + *gen::lattice_point(s / 4, 4);
-    e.half_extents = (*gen::lattice_point(s / 8, 4)).cwiseAbs();
-    e.direction = *unit_vector();
-    e.cone = *dyadic(0, 24, 3);
-    e.speed = *dyadic(1, 32, 2) * s;
-    e.speed_spread = e.speed * *dyadic(0, 3, 2);
-    e.lifetime = *dyadic(1, 32, 3);
-    e.lifetime_spread = e.lifetime * *dyadic(0, 3, 2);
-    e.mass = *dyadic(1, 16, 2);
-    e.rate = *dyadic(1, 64, 0);
-    c.dt = *rc::gen::element(1.0 / 64, 1.0 / 32, 1.0 / 16, 1.0 / 8, 1.0 / 60);
-    c.steps = *rc::gen::inRange(1, 9);
-    e.rate = std::min(e.rate, 16 / (c.dt * c.steps));  // at most about 16 particles
-    c.verlet = *rc::gen::inRange(0, 2);
-    c.seed = *rc::gen::inRange(1, 1 << 20);
-    c.forces.gravity = Vec3(0, 0, -*dyadic(1, 64, 2) * s);
-    c.forces.drag = *rc::gen::weightedOneOf<double>({{3, rc::gen::just(0.0)}, {1, dyadic(0, 8, 4)}});
-    // A floor under the emitter, walls around it, tilted planes; or a terrain or soup.
-    Scene& scene = c.scene;
-    const int kind = *rc::gen::inRange(0, 4);
-    const auto plane = [](const Vec3& n, const Vec3& through) { return Plane{n, -n.dot(through)}; };
-    if (kind <= 2) scene.planes.push_back(plane(Vec3::UnitZ(), Vec3(0, 0, *gen::integer(2) * s)));
-    if (kind == 1)
-      for (const Vec3& n : {Vec3(1, 0, 0), Vec3(-1, 0, 0), Vec3(0, 1, 0), Vec3(0, -1, 0)})
-        scene.planes.push_back(plane(n, -n * *dyadic(8, 32, 2) * s));
-    if (kind == 2)
-      for (int i = 0; i < 2; ++i) {
-        const Vec3 n = *gen::direction(1.0, 3);
-        scene.planes.push_back(plane(n, e.position - n.normalized() * *dyadic(8, 32, 2) * s));
-      }
-    if (kind >= 2) scene.mesh = *gen::mesh(s);
-    scene.material = *material();
-    scene.bounce_cap = *rc::gen::inRange(0, 5);
-    // Every plane faces the emitter's box, with room to spare.
-    for (Plane& p : scene.planes)
-      if (p.value(e.position) < 0) p = Plane{-p.normal, -p.offset};
-    return c;
-  });
+bool plane_in_doubt(const Plane& p, const Vec3& x, double scale) { return plane_value_in_doubt(p, x, scale); }
+bool sheet_in_doubt(const Segment& s, const Triangle& tri, double tol) { return triangle_unstable(s, tri, tol, Rules::random); }
+double closing_band(const ImpulseCase& in) {
+  return 2 * kRelative * (in.velocity.norm() + in.object_velocity.norm()) * (kRoot3 + 1);
 }
 
 }  // namespace judge

@@ -160,6 +160,14 @@ Outcome settle(const SettleCase& in, const Vec3& got);
 // not behind any plane (exactly); the count equal to the births while none can have died.
 Outcome system_step(const SystemCase& in, const System& after, int step);
 
+// The judges' doubt tests, which the generators use to keep decisive families just
+// outside the ambiguity band: a point's side of a plane (at input scale S), a segment
+// against a two-sided triangle (at tol), and the |v_close| below which an impulse's
+// "closing" is in doubt.
+bool plane_in_doubt(const Plane& p, const Vec3& x, double scale);
+bool sheet_in_doubt(const Segment& s, const Triangle& tri, double tol);
+double closing_band(const ImpulseCase& in);
+
 // The lab's generators.
 rc::Gen<EmitCase> emit_case();
 rc::Gen<BirthsCase> births_case();
@@ -168,10 +176,11 @@ rc::Gen<MotionCase> motion_case();
 rc::Gen<LaunchCase> launch_case();
 rc::Gen<LaunchCase> exact_launch_case();
 rc::Gen<SegmentScene> plane_case();
+rc::Gen<SegmentTrianglePair> sheet_case();  // lab 02's families, needles, just outside the band
 rc::Gen<SegmentScene> segment_scene();
 rc::Gen<SegmentScene> exact_segment_scene();
 rc::Gen<ImpulseCase> impulse_case();
-rc::Gen<CollideCase> collide_case();
+rc::Gen<CollideCase> collide_case(bool decided = true);  // step 7: false, exact degenerate steps kept
 rc::Gen<SettleCase> settle_case();
 rc::Gen<SystemCase> system_case();
 

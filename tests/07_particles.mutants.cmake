@@ -1,54 +1,65 @@
-# Lab 07's classic mistakes (handouts/07_particles.md); each must fail its step.
+# Lab 07's classic mistakes (handouts/07_particles.md); each must fail its step first, and
+# its first failure's why must say the SAYS words (the concept, not a field's name).
 
-labkit_mutant(07 particles NAME births_drop_fraction STEP 1
+labkit_mutant(07 particles NAME births_drop_fraction STEP 1 SAYS "fraction" "carried"
   FIND "return {int(whole), due - whole};"
   REPLACE "return {int(whole), 0.0};")
 
-labkit_mutant(07 particles NAME cone_uniform_in_angle STEP 1
+labkit_mutant(07 particles NAME cone_uniform_in_angle STEP 1 SAYS "solid angle"
   FIND "const double cos_theta = random.uniform(std::cos(emitter.cone), 1.0);"
   REPLACE "const double cos_theta = std::cos(random.uniform(0.0, emitter.cone));")
 
-labkit_mutant(07 particles NAME semi_implicit_euler STEP 2
+labkit_mutant(07 particles NAME semi_implicit_euler STEP 2 SAYS "explicit Euler" "start of the step"
   FIND "next.position = p.position + p.velocity * dt;"
   REPLACE "next.position = p.position + (p.velocity + a * dt) * dt;")
 
-labkit_mutant(07 particles NAME verlet_start_without_acceleration STEP 2
+labkit_mutant(07 particles NAME verlet_start_without_acceleration STEP 2 SAYS "Taylor step"
   FIND "next.previous = p.position - p.velocity * dt + 0.5 * a * dt * dt;"
   REPLACE "next.previous = p.position - p.velocity * dt;")
 
-labkit_mutant(07 particles NAME launch_height_sign STEP 3
+labkit_mutant(07 particles NAME launch_height_sign STEP 3 SAYS "height" "gravity points down"
   FIND "const double D = v2 * v2 + 2 * v2 * d.dot(gravity) - gx_squared;"
   REPLACE "const double D = v2 * v2 - 2 * v2 * d.dot(gravity) - gx_squared;")
 
-labkit_mutant(07 particles NAME plane_two_sided STEP 4
+# The issue's: v^2 - sqrt(D) for the low root loses every digit on a near, fast shot.
+labkit_mutant(07 particles NAME low_root_cancels STEP 3 SAYS "low root" "cancels"
+  FIND "const double tan_low = (g * x * x + 2 * y * v2) / (x * (v2 + root));"
+  REPLACE "const double tan_low = (v2 - root) / (g * x);")
+
+labkit_mutant(07 particles NAME plane_two_sided STEP 4 SAYS "one-sided"
   FIND "if (va < 0) return {};   // starts behind: not this step's doing"
   REPLACE "if (va < 0 && vb >= 0) { SurfaceHit h; h.hit = true; h.t = va / (va - vb); h.point = segment.point(h.t); h.normal = -plane.normal / length; return h; }
   if (va < 0) return {};")
 
-labkit_mutant(07 particles NAME touching_is_behind STEP 4
+labkit_mutant(07 particles NAME touching_is_behind STEP 4 SAYS "not behind"
   FIND "if (vb >= 0) return {};  // does not end behind (touching the plane is allowed)"
   REPLACE "if (vb > 0) return {};")
 
-labkit_mutant(07 particles NAME friction_reverses_sliding STEP 5
+# Step 4's rule for a: on the plane to within value(a)'s rounding bound counts as on it.
+labkit_mutant(07 particles NAME start_decided_by_rounded_sign STEP 4 SAYS "rounding bound"
+  FIND "const double va = std::abs(a.value) <= a.error ? 0.0 : a.value, vb"
+  REPLACE "const double va = a.value, vb")
+
+labkit_mutant(07 particles NAME friction_reverses_sliding STEP 5 SAYS "never reverses"
   FIND "const double f = std::min(material.friction * j, mass * slide);  // never reverses v_t"
   REPLACE "const double f = material.friction * j;")
 
-labkit_mutant(07 particles NAME impulse_ignores_object_velocity STEP 5
+labkit_mutant(07 particles NAME impulse_ignores_object_velocity STEP 5 SAYS "relative velocity"
   FIND "const Vec3 relative = velocity - object_velocity;"
   REPLACE "const Vec3 relative = velocity;")
 
-labkit_mutant(07 particles NAME whole_step_after_bounce STEP 6
+labkit_mutant(07 particles NAME whole_step_after_bounce STEP 6 SAYS "remaining time"
   FIND "remaining *= 1 - hit.t;"
   REPLACE "")
 
-labkit_mutant(07 particles NAME cap_off_by_one STEP 6
+labkit_mutant(07 particles NAME cap_off_by_one STEP 6 SAYS "bounce cap"
   FIND "if (c.bounces == cap) {  // one hit too many: stop here, at rest"
   REPLACE "if (c.bounces == cap + 1 || c.bounces == kMaxBounceCap) {")
 
-labkit_mutant(07 particles NAME hit_point_not_settled STEP 7
-  FIND "bounce.from = settle(hit.point, scene, hit);"
+labkit_mutant(07 particles NAME hit_point_not_settled STEP 7 SAYS "strictly in front" "settle"
+  FIND "bounce.from = settle_in(hit.point, scene, hit);"
   REPLACE "bounce.from = hit.point;")
 
-labkit_mutant(07 particles NAME verlet_previous_kept STEP 7
+labkit_mutant(07 particles NAME verlet_previous_kept STEP 7 SAYS "previous" "Verlet"
   FIND "if (integrator == Integrator::verlet && (c.bounces > 0 || c.stopped)) p.previous = p.position - p.velocity * dt;"
   REPLACE "")

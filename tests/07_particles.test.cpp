@@ -4,6 +4,8 @@
 #include "particles.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 using namespace labkit;
 using namespace labkit::lab07;
@@ -20,6 +22,12 @@ Outcome first_failure(std::initializer_list<Outcome> outcomes) {
   for (const Outcome& o : outcomes)
     if (o.verdict == Outcome::Verdict::fail) return o;
   return check::pass();
+}
+
+// A worked example's field-by-field check fails with the rule the example teaches first,
+// then the field and the numbers: the rule is what a student needs to find the mistake.
+Outcome teach(const std::string& rule, const Outcome& o) {
+  return o.verdict == Outcome::Verdict::fail ? check::fail(o.expected, o.got, rule + ": " + o.why) : o;
 }
 
 // ---- Runners: call the code under test, hand the answer to its judge ------------------
@@ -128,7 +136,7 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
         e.equal("count " + std::to_string(k), got[k].count, expected[k]);
         e.near("owed " + std::to_string(k), got[k].owed, owed[k], 1e-12);
       }
-      return e.outcome();
+      return teach("born = floor(owed + rate dt), and the fraction left over is carried to the next step in owed", e.outcome());
     };
   };
   BirthsCase ten{};
@@ -151,7 +159,7 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
     for (const Births& b : run_births_steps(in)) total += b.count;
     Expect e;
     e.equal("births in 64 steps", total, 10);
-    return e.outcome();
+    return teach("the fraction of a particle owed each step (10/64) must be carried, or none is ever born", e.outcome());
   });
 
   AgeCase ages{};
@@ -172,7 +180,9 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
       e.equal("second age", got[1].age, 0.75);
       e.equal("order kept", got[1].position, Vec3(0.5, 0, 0));
     }
-    return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : judge::age(in, got);
+    return e.outcome().verdict == Outcome::Verdict::fail
+               ? teach("age + dt >= lifetime dies; the survivors keep their order", e.outcome())
+               : judge::age(in, got);
   });
 
   EmitCase still{};
@@ -192,7 +202,9 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
     e.equal("mass", p.mass, 0.5);
     e.equal("age", p.age, 0.0);
     e.equal("alive", p.alive, true);
-    return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : run_emit(in);
+    return e.outcome().verdict == Outcome::Verdict::fail
+               ? teach("with no spread a particle is born at the emitter's position, speed along its direction", e.outcome())
+               : run_emit(in);
   });
 
   // A cone at zero speed turns nothing: every particle is the same, and that is right.
@@ -229,12 +241,14 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
     }
     const double n = in.count;
     Expect e;
-    e.near("mean cos(angle to the axis)", cos_sum / n, 0.75, 0.005);
+    e.that("mean cos(angle to the axis)", std::abs(cos_sum / n - 0.75) <= 0.005, fmt(cos_sum / n), "0.75",
+           "directions must be uniform in solid angle: cos(angle) uniform in [cos(cone), 1], mean 0.75 over a 60-degree "
+           "cone; yours is " + fmt(cos_sum / n) + (cos_sum / n > 0.8 ? " (the angle itself drawn uniformly gives 0.827)" : ""));
     e.near("mean sideways direction", side / n, Vec3::Zero(), 0.01);
     e.near("mean speed", speed_sum / n, 10, 0.05);
     e.near("mean lifetime", life_sum / n, 3, 0.02);
     e.near("mean position", where / n, Vec3(0, 0, 1), 0.03);
-    const Outcome stats = e.outcome();
+    const Outcome stats = teach("each attribute is drawn uniformly from its range", e.outcome());
     if (stats.verdict == Outcome::Verdict::fail) return stats;
     EmitCase some = in;
     some.count = 200;
@@ -274,7 +288,8 @@ TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
     e.near("velocity after 1", one.velocity, Vec3(2, 0, -5), 1e-12);
     e.near("position after 2", two.position, Vec3(2, 0, 7.5), 1e-12);
     e.near("velocity after 2", two.velocity, Vec3(2, 0, -10), 1e-12);
-    return e.outcome();
+    return teach("explicit Euler takes both updates from the start of the step: p' = p + v dt with the old v (moving with "
+                 "the new v is semi-implicit Euler)", e.outcome());
   });
   check::example("verlet_step", "two Verlet steps land on the exact parabola", thrown(), [](const MotionCase& in) {
     const Particle start = start_verlet(in.particle, in.forces, in.dt);
@@ -287,7 +302,8 @@ TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
     e.near("position after 2", two.position, Vec3(2, 0, 5), 1e-12);
     e.near("velocity after 2", two.velocity, Vec3(2, 0, -7.5), 1e-12);
     e.near("previous after 2", two.previous, Vec3(1, 0, 8.75), 1e-12);
-    return e.outcome();
+    return teach("start_verlet's previous = p - v dt + a dt^2 / 2 makes the first Verlet step the Taylor step "
+                 "p + v dt + a dt^2 / 2; then p' = 2 p - previous + a dt^2, previous' = p", e.outcome());
   });
   MotionCase dragged{};
   dragged.particle.mass = 2;
@@ -297,14 +313,14 @@ TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
   check::example("force", "gravity and both drags: (-2 - 4, 0, -20)", dragged, [](const MotionCase& in) {
     Expect e;
     e.near("force", force(in.particle, in.forces), Vec3(-6, 0, -20), 1e-12);
-    return e.outcome();
+    return teach("F = m g - k1 v - k2 |v| v: gravity is an acceleration, both drags oppose the velocity", e.outcome());
   });
   check::example("euler_step", "with drag: the velocity loses 6 / 2 * 1/2 along x", dragged, [](const MotionCase& in) {
     const Particle one = euler_step(in.particle, in.forces, in.dt);
     Expect e;
     e.near("position", one.position, Vec3(2, 0, 0), 1e-12);
     e.near("velocity", one.velocity, Vec3(2.5, 0, -5), 1e-12);
-    return e.outcome();
+    return teach("explicit Euler with drag: a = F / m at the start of the step, p' = p + v dt, v' = v + a dt", e.outcome());
   });
 }
 
@@ -330,7 +346,16 @@ auto expect_angles(int count, double radicand, double low, double high, double l
       e.near("low.time", got.low.time, low_time, 1e-9);
       e.near("high.time", got.high.time, high_time, 1e-9);
     }
-    const Outcome o = e.outcome();
+    // The likely mistake: the radicand of a target as far below (y's sign flipped).
+    const Vec3 d = in.target - in.from;
+    const double g = in.gravity.norm(), x = d.cross(in.gravity).norm() / g, y = -d.dot(in.gravity) / g;
+    const double A = g * x * x / (2 * in.speed * in.speed), flipped = x * x - 4 * A * (A - y);
+    const bool sign_flipped = y != 0 && std::abs(got.radicand - flipped) <= 1e-9 * std::abs(flipped);
+    const Outcome o = teach(sign_flipped ? "the height is y = -(d . g) / |g| because gravity points down: yours is the "
+                                           "answer for a target as far below"
+                                         : "tan(angle) = (v^2 +- sqrt(D)) / (g x) with D = v^4 + 2 v^2 (d . g) - |d x g|^2 "
+                                           "(the height y = -(d . g) / |g|: gravity points down)",
+                            e.outcome());
     return o.verdict == Outcome::Verdict::fail ? o : judge::aim(in, got, Rules::exact);
   };
 }
@@ -366,22 +391,21 @@ TEST_CASE("L07S3 launch angle to hit a target: random cases", "[lab07][step3][or
 // ---- Step 4 ----------------------------------------------------------------------------
 
 TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab07][step4]") {
+  // The judge first: its failure says the header's rule for this case.
   const auto plane_hit = [](double t, Vec3 point) {
     return [=](const SegmentScene& in) {
       const SurfaceHit got = hit_plane(in.segment, in.scene.planes[0]);
+      const Outcome judged = judge::hit_plane(in, got, Rules::exact);
+      if (judged.verdict == Outcome::Verdict::fail) return judged;
       Expect e;
-      e.equal("hit", got.hit, true);
       e.near("t", got.t, t, 1e-12);
       e.near("point", got.point, point, 1e-12);
       e.near("normal", got.normal, in.scene.planes[0].normal.normalized(), 1e-12);
-      const Outcome o = e.outcome();
-      return o.verdict == Outcome::Verdict::fail ? o : judge::hit_plane(in, got, Rules::exact);
+      return teach("t = value(a) / (value(a) - value(b)), the point a + t (b - a), the normal n / |n|", e.outcome());
     };
   };
   const auto plane_miss = [](const SegmentScene& in) {
-    Expect e;
-    e.equal("hit", hit_plane(in.segment, in.scene.planes[0]).hit, false);
-    return e.outcome();
+    return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]), Rules::exact);
   };
   check::example("hit_plane", "falling through the floor at t = 3/4", on_floor({1, 1, 3}, {1, 1, -1}), plane_hit(0.75, {1, 1, 0}));
   check::example("hit_plane", "rising from below: one-sided, no hit", on_floor({1, 1, -1}, {1, 1, 3}), plane_miss);
@@ -390,6 +414,21 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
   SegmentScene shelf = on_floor({0, 0, 3}, {0, 0, 0});
   shelf.scene.planes = {Plane{{0, 0, 2}, -2}};  // z = 1, its normal of length 2
   check::example("hit_plane", "z = 1 written 2 z - 2 = 0: t = 2/3", shelf, plane_hit(2.0 / 3, {0, 0, 1}));
+  // The header's rule for a: n . a + c computes to -1.5e-11 here, within its rounding
+  // bound (1.7e-10): a is on the plane (exactly, in fact), and moving behind it hits at t = 0.
+  SegmentScene resting = on_floor({-33791.999998051404, 16384.000000954293, 16384.00000055659},
+                                  {-33791.99999423671, 16384.000000954293, 16384.00000055659});
+  resting.scene.planes = {Plane{{-1, 2, 1}, -82944.00000051658}};
+  check::example("hit_plane", "resting on a plane within value(a)'s rounding bound, moving behind: t = 0", resting,
+                 [](const SegmentScene& in) {
+                   const SurfaceHit got = hit_plane(in.segment, in.scene.planes[0]);
+                   Expect e;
+                   e.equal("hit", got.hit, true);
+                   const Outcome o = teach("a computed value(a) within its rounding bound counts as 0 (the particle rests on "
+                                           "the plane), so a step moving behind hits at t = 0",
+                                           e.outcome());
+                   return o.verdict == Outcome::Verdict::fail ? o : judge::hit_plane(in, got, Rules::exact);
+                 });
 
   const auto triangle_hit = [](double t, Vec3 normal) {
     return [=](const SegmentTrianglePair& in) {
@@ -398,7 +437,8 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
       e.equal("hit", got.hit, true);
       e.near("t", got.t, t, 1e-12);
       e.near("normal", got.normal, normal, 1e-12);
-      const Outcome o = e.outcome();
+      const Outcome o = teach("triangles are two-sided: hit from either side, the unit normal turned to the side a is on",
+                              e.outcome());
       return o.verdict == Outcome::Verdict::fail ? o : judge::hit_triangle(in, got);
     };
   };
@@ -410,7 +450,7 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
                  SegmentTrianglePair{{{1, 1, 0}, {1, 1, -1}}, kFloorTriangle}, [](const SegmentTrianglePair& in) {
                    Expect e;
                    e.equal("hit", hit_triangle(in.segment, in.triangle).hit, false);
-                   return e.outcome();
+                   return teach("a step starting exactly on a triangle's plane is leaving the sheet: no hit", e.outcome());
                  });
 
   SegmentScene floor_and_shelf;
@@ -425,7 +465,7 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
     e.equal("triangle", got.triangle, 1);
     e.near("t", got.t, 0.5, 1e-12);
     e.near("point", got.point, Vec3(1, 3, 2), 1e-12);
-    const Outcome o = e.outcome();
+    const Outcome o = teach("the first hit is the one with the smallest t, and names its triangle (plane -1)", e.outcome());
     return o.verdict == Outcome::Verdict::fail ? o : judge::first_hit(in, got, Rules::exact);
   });
   SegmentScene tie;
@@ -439,7 +479,7 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
     e.equal("plane", got.plane, 0);
     e.equal("triangle", got.triangle, -1);
     e.near("t", got.t, 0.5, 1e-12);
-    return e.outcome();
+    return teach("on a tie in t, planes come before triangles (replace the best only when strictly nearer)", e.outcome());
   });
   // Found by a secret-seed run: the segment passes a hair outside an edge of triangle 5
   // (in doubt, so hitting it is fine); its t is judged against the plane crossing.
@@ -455,7 +495,7 @@ TEST_CASE("L07S4 the step as a segment against surfaces: random cases", "[lab07]
   check::random_cases("hit_plane", judge::plane_case(), [](const SegmentScene& in) {
     return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]));
   });
-  check::random_cases("hit_triangle", gen::segment_triangle(), [](const SegmentTrianglePair& in) {
+  check::random_cases("hit_triangle", judge::sheet_case(), [](const SegmentTrianglePair& in) {
     return judge::hit_triangle(in, hit_triangle(in.segment, in.triangle));
   });
   check::random_cases("first_hit", judge::segment_scene(), run_first_hit);
@@ -466,7 +506,7 @@ TEST_CASE("L07S4 the step as a segment against surfaces: random cases", "[lab07]
 
 namespace {
 
-auto expect_impulse(bool closing, Vec3 normal_impulse, Vec3 friction, Vec3 velocity) {
+auto expect_impulse(std::string rule, bool closing, Vec3 normal_impulse, Vec3 friction, Vec3 velocity) {
   return [=](const ImpulseCase& in) {
     const Impulse got = impulse(in.velocity, in.object_velocity, in.normal, in.mass, in.material);
     Expect e;
@@ -474,7 +514,7 @@ auto expect_impulse(bool closing, Vec3 normal_impulse, Vec3 friction, Vec3 veloc
     e.near("normal_impulse", got.normal_impulse, normal_impulse, 1e-12);
     e.near("friction", got.friction, friction, 1e-12);
     e.near("velocity", got.velocity, velocity, 1e-12);
-    const Outcome o = e.outcome();
+    const Outcome o = teach(rule, e.outcome());
     return o.verdict == Outcome::Verdict::fail ? o : judge::impulse(in, got);
   };
 }
@@ -484,15 +524,24 @@ auto expect_impulse(bool closing, Vec3 normal_impulse, Vec3 friction, Vec3 veloc
 TEST_CASE("L07S5 impulse with restitution and friction: worked examples", "[lab07][step5]") {
   const Vec3 up(0, 0, 1);
   check::example("impulse", "e = 1/2, mu = 1/4: sliding slows", ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 2, {0.5, 0.25}},
-                 expect_impulse(true, {0, 0, 12}, {-3, 0, 0}, {1.5, 0, 2}));
+                 expect_impulse("j_n = -(1 + e) m v_close n; friction opposes the sliding v_t with min(mu |j_n|, m |v_t|)", true,
+                                {0, 0, 12}, {-3, 0, 0}, {1.5, 0, 2}));
   check::example("impulse", "mu = 1: friction stops the sliding, never reverses it",
-                 ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 2, {0.5, 1}}, expect_impulse(true, {0, 0, 12}, {-6, 0, 0}, {0, 0, 2}));
+                 ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 2, {0.5, 1}},
+                 expect_impulse("friction never reverses the sliding: its size is min(mu |j_n|, m |v_t|), at most what stops v_t",
+                                true, {0, 0, 12}, {-6, 0, 0}, {0, 0, 2}));
   check::example("impulse", "e = 1, mu = 0: the speed is kept", ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 1, {1, 0}},
-                 expect_impulse(true, {0, 0, 8}, {0, 0, 0}, {3, 0, 4}));
+                 expect_impulse("e = 1 turns v_close around at full size: j_n = -2 m v_close n", true, {0, 0, 8}, {0, 0, 0},
+                                {3, 0, 4}));
   check::example("impulse", "a paddle rising at 2 meets a ball falling at 3: it leaves at 7",
-                 ImpulseCase{{0, 0, -3}, {0, 0, 2}, up, 1, {1, 0}}, expect_impulse(true, {0, 0, 10}, {0, 0, 0}, {0, 0, 7}));
+                 ImpulseCase{{0, 0, -3}, {0, 0, 2}, up, 1, {1, 0}},
+                 expect_impulse("only the relative velocity v - v_obj matters: v_close = (v - v_obj) . n", true, {0, 0, 10},
+                                {0, 0, 0}, {0, 0, 7}));
   check::example("impulse", "a floor falling faster than the ball: no impulse",
-                 ImpulseCase{{0, 0, -1}, {0, 0, -3}, up, 1, {1, 0}}, expect_impulse(false, {0, 0, 0}, {0, 0, 0}, {0, 0, -1}));
+                 ImpulseCase{{0, 0, -1}, {0, 0, -3}, up, 1, {1, 0}},
+                 expect_impulse("only the relative velocity v - v_obj matters: (v - v_obj) . n = 2 > 0, the particle is not "
+                                "closing, and gets no impulse",
+                                false, {0, 0, 0}, {0, 0, 0}, {0, 0, -1}));
 }
 
 TEST_CASE("L07S5 impulse with restitution and friction: random cases", "[lab07][step5][oracle]") {
@@ -503,7 +552,7 @@ TEST_CASE("L07S5 impulse with restitution and friction: random cases", "[lab07][
 
 namespace {
 
-auto expect_collision(Vec3 position, Vec3 velocity, int bounces, bool stopped) {
+auto expect_collision(std::string rule, Vec3 position, Vec3 velocity, int bounces, bool stopped) {
   return [=](const CollideCase& in) {
     const Collision got = run_collide_only(in);
     Expect e;
@@ -511,7 +560,7 @@ auto expect_collision(Vec3 position, Vec3 velocity, int bounces, bool stopped) {
     e.near("velocity", got.velocity, velocity, 1e-9);
     e.equal("bounces", got.bounces, bounces);
     e.equal("stopped", got.stopped, stopped);
-    const Outcome o = e.outcome();
+    const Outcome o = teach(rule, e.outcome());
     return o.verdict == Outcome::Verdict::fail ? o : judge::collide(in, got);
   };
 }
@@ -522,14 +571,19 @@ CollideCase into_corner(int cap) { return {{{0, 0, 1}, {4, 0, -1}}, {4, 0, -2}, 
 }  // namespace
 
 TEST_CASE("L07S6 bounce in the remaining time, bounce cap: worked examples", "[lab07][step6]") {
+  const std::string remaining = "after a hit at t the particle goes on from the hit point, with the new velocity, for the "
+                                "remaining time (1 - t) r only";
+  const std::string cap = "the bounce cap: after bounce_cap impulses, the next hit stops the particle there, velocity zero";
   check::example("collide", "e = 1: from (1, 0, 0) half a step at (2, 0, 2)", into_floor(1, 0),
-                 expect_collision({2, 0, 1}, {2, 0, 2}, 1, false));
-  check::example("collide", "e = 1/2: up at 1 instead of 2", into_floor(0.5, 0), expect_collision({2, 0, 0.5}, {2, 0, 1}, 1, false));
-  check::example("collide", "floor, then wall: two bounces", into_corner(4), expect_collision({2, 0, 1}, {-4, 0, 2}, 2, false));
-  check::example("collide", "cap 1: stopped at the wall", into_corner(1), expect_collision({3, 0, 0.5}, {0, 0, 0}, 1, true));
-  check::example("collide", "cap 0: stopped at the floor", into_corner(0), expect_collision({2, 0, 0}, {0, 0, 0}, 0, true));
+                 expect_collision(remaining, {2, 0, 1}, {2, 0, 2}, 1, false));
+  check::example("collide", "e = 1/2: up at 1 instead of 2", into_floor(0.5, 0),
+                 expect_collision(remaining, {2, 0, 0.5}, {2, 0, 1}, 1, false));
+  check::example("collide", "floor, then wall: two bounces", into_corner(4),
+                 expect_collision(remaining + ", and that piece is tested again", {2, 0, 1}, {-4, 0, 2}, 2, false));
+  check::example("collide", "cap 1: stopped at the wall", into_corner(1), expect_collision(cap, {3, 0, 0.5}, {0, 0, 0}, 1, true));
+  check::example("collide", "cap 0: stopped at the floor", into_corner(0), expect_collision(cap, {2, 0, 0}, {0, 0, 0}, 0, true));
   check::example("collide", "no hit: the step stands", CollideCase{{{0, 0, 3}, {1, 0, 2}}, {1, 0, -1}, 1, 1, floor_scene(1, 0)},
-                 expect_collision({1, 0, 2}, {1, 0, -1}, 0, false));
+                 expect_collision("a step that hits nothing ends at b with its velocity", {1, 0, 2}, {1, 0, -1}, 0, false));
 }
 
 TEST_CASE("L07S6 bounce in the remaining time, bounce cap: random cases", "[lab07][step6][oracle]") {
@@ -603,7 +657,8 @@ TEST_CASE("L07S7 the handling loop: worked examples", "[lab07][step7]") {
     e.equal("particles", int(system.particles.size()), 3);
     e.near("time", system.time, 1.0, 1e-12);
     for (const Particle& p : system.particles) e.that("above the floor", p.position.z() >= 0, fmt(p.position), "z >= 0", "below the floor");
-    return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : run_system(in);
+    const Outcome o = teach("one birth per step (rate dt = 1), dead at age >= lifetime 0.35, never behind the floor", e.outcome());
+    return o.verdict == Outcome::Verdict::fail ? o : run_system(in);
   });
   // One particle dropped onto the floor with Verlet: after the bounce, previous is
   // rewritten so that the next step goes on upward.
@@ -631,7 +686,9 @@ TEST_CASE("L07S7 the handling loop: worked examples", "[lab07][step7]") {
     }
     system.step(in.dt);
     if (system.particles.size() == 1) e.near("position after 2", system.particles[0].position, Vec3(0, 0, 3), 1e-12);
-    return e.outcome();
+    return teach("Verlet keeps its velocity in position - previous: after a bounce, previous = position - velocity dt, or "
+                 "the next step goes on with the velocity from before the bounce",
+                 e.outcome());
   });
 }
 
@@ -639,6 +696,135 @@ TEST_CASE("L07S7 invariants: random cases", "[lab07][step7][oracle]") {
   check::random_cases("settle", judge::settle_case(), [](const SettleCase& in) {
     return judge::settle(in, settle(in.x, in.scene, in.last));
   });
-  check::random_cases("invariants", judge::collide_case(), run_invariants);
+  check::random_cases("invariants", judge::collide_case(false), run_invariants);
   check::random_cases("system", judge::system_case(), run_system);
+}
+
+// ---- Preconditions (the header's "Preconditions"): the reference only ------------------
+// Tagged [contract], in no step: students are not graded on invalid input. Each call must
+// throw std::invalid_argument whose message names the argument.
+
+namespace {
+
+template <class Call>
+void rejects(const std::string& argument, Call&& call) {
+  INFO("invalid " << argument);
+  try {
+    call();
+    FAIL_CHECK("accepted: no std::invalid_argument");
+  } catch (const std::invalid_argument& e) {
+    CHECK_THAT(std::string(e.what()), Catch::Contains(argument));
+  }
+}
+
+}  // namespace
+
+TEST_CASE("L07 preconditions: invalid input is refused, naming the argument", "[lab07][contract]") {
+  const double nan = std::nan(""), inf = HUGE_VAL;
+  const Vec3 bad(nan, 0, 0);
+  Random random(1);
+  const auto emitter_with = [](auto change) {
+    Emitter e;
+    change(e);
+    return e;
+  };
+  rejects("emitter.position", [&] { emit(emitter_with([&](Emitter& e) { e.position = bad; }), random); });
+  rejects("emitter.half_extents", [&] { emit(emitter_with([](Emitter& e) { e.half_extents = Vec3(-1, 0, 0); }), random); });
+  rejects("emitter.direction", [&] { emit(emitter_with([](Emitter& e) { e.direction = Vec3::Zero(); }), random); });
+  rejects("emitter.cone", [&] { emit(emitter_with([](Emitter& e) { e.cone = 4; }), random); });
+  rejects("emitter.speed", [&] { emit(emitter_with([](Emitter& e) { e.speed_spread = 2; }), random); });
+  rejects("emitter.lifetime", [&] { emit(emitter_with([&](Emitter& e) { e.lifetime = nan; }), random); });
+  rejects("emitter.mass", [&] { emit(emitter_with([](Emitter& e) { e.mass = 0; }), random); });
+  rejects("emitter.mass", [&] { emit(emitter_with([&](Emitter& e) { e.mass = nan; }), random); });
+  rejects("emitter.rate", [&] { births(emitter_with([](Emitter& e) { e.rate = -1; }), 0.1); });
+  rejects("emitter.owed", [&] { births(emitter_with([](Emitter& e) { e.owed = 1; }), 0.1); });
+  rejects("dt", [&] { births(Emitter{}, nan); });
+  rejects("dt", [&] { age({Particle{}}, -1); });
+  Particle nan_age;
+  nan_age.age = nan;
+  rejects("particles[0].age", [&] { age({nan_age}, 0.1); });
+
+  // The issue's: a NaN or zero mass gave a NaN position.
+  for (const double mass : {0.0, -1.0, nan}) {
+    Particle p;
+    p.mass = mass;
+    rejects("p.mass", [&] { force(p, Forces{}); });
+    rejects("p.mass", [&] { euler_step(p, Forces{}, 0.1); });
+    rejects("p.mass", [&] { verlet_step(p, Forces{}, 0.1); });
+  }
+  Particle lost;
+  lost.position = Vec3(inf, 0, 0);
+  rejects("p.position", [&] { euler_step(lost, Forces{}, 0.1); });
+  rejects("forces.gravity", [&] { euler_step(Particle{}, Forces{bad, 0, 0}, 0.1); });
+  rejects("forces.drag", [&] { euler_step(Particle{}, Forces{Vec3::Zero(), -1, 0}, 0.1); });
+  rejects("forces.air_drag", [&] { euler_step(Particle{}, Forces{Vec3::Zero(), 0, nan}, 0.1); });
+  rejects("dt", [&] { start_verlet(Particle{}, Forces{}, 0); });
+  rejects("dt", [&] { verlet_step(Particle{}, Forces{}, nan); });
+
+  rejects("from", [&] { aim(bad, Vec3(1, 0, 0), 1, Vec3(0, 0, -1)); });
+  rejects("target", [&] { aim(Vec3::Zero(), bad, 1, Vec3(0, 0, -1)); });
+  rejects("speed", [&] { aim(Vec3::Zero(), Vec3(1, 0, 0), -1, Vec3(0, 0, -1)); });
+  rejects("speed", [&] { aim(Vec3::Zero(), Vec3(1, 0, 0), nan, Vec3(0, 0, -1)); });
+  rejects("gravity", [&] { aim(Vec3::Zero(), Vec3(1, 0, 0), 1, bad); });
+
+  const Segment down{{0, 0, 1}, {0, 0, -1}};
+  rejects("segment.a", [&] { hit_plane({bad, Vec3::Zero()}, kFloor); });
+  rejects("segment.b", [&] { hit_plane({Vec3::Zero(), Vec3(0, 0, inf)}, kFloor); });
+  rejects("plane.normal", [&] { hit_plane(down, Plane{bad, 0}); });
+  rejects("plane.offset", [&] { hit_plane(down, Plane{Vec3::UnitZ(), nan}); });
+  rejects("segment.a", [&] { hit_triangle({bad, Vec3::Zero()}, kFloorTriangle); });
+  rejects("triangle.v1", [&] { hit_triangle(down, Triangle{Vec3::Zero(), bad, Vec3::UnitY()}); });
+  Scene scene = floor_scene(0.5, 0);
+  scene.planes.push_back(Plane{Vec3::UnitX(), nan});
+  rejects("scene.planes[1].offset", [&] { first_hit(down, scene); });
+  scene = floor_scene(0.5, 0);
+  add_square(scene.mesh, 0);
+  scene.mesh.vertices[2] = bad;
+  rejects("scene.mesh.vertices[2]", [&] { first_hit(down, scene); });
+  scene = floor_scene(0.5, 0);
+  add_square(scene.mesh, 0);
+  scene.mesh.triangles[1][2] = 4;
+  rejects("scene.mesh.triangles[1]", [&] { first_hit(down, scene); });
+  rejects("segment.a", [&] { first_hit({bad, Vec3::Zero()}, floor_scene(0.5, 0)); });
+
+  const Vec3 up(0, 0, 1), v(3, 0, -4);
+  rejects("velocity", [&] { impulse(bad, Vec3::Zero(), up, 1, {0.5, 0}); });
+  rejects("object_velocity", [&] { impulse(v, bad, up, 1, {0.5, 0}); });
+  rejects("normal", [&] { impulse(v, Vec3::Zero(), Vec3(0, 0, 2), 1, {0.5, 0}); });
+  rejects("normal", [&] { impulse(v, Vec3::Zero(), Vec3::Zero(), 1, {0.5, 0}); });
+  rejects("mass", [&] { impulse(v, Vec3::Zero(), up, 0, {0.5, 0}); });
+  rejects("mass", [&] { impulse(v, Vec3::Zero(), up, nan, {0.5, 0}); });
+  rejects("material.restitution", [&] { impulse(v, Vec3::Zero(), up, 1, {-0.5, 0}); });
+  rejects("material.friction", [&] { impulse(v, Vec3::Zero(), up, 1, {0.5, nan}); });
+
+  rejects("step.a", [&] { collide({bad, Vec3::Zero()}, v, 1, 1, floor_scene(1, 0)); });
+  rejects("velocity", [&] { collide(down, bad, 1, 1, floor_scene(1, 0)); });
+  rejects("mass", [&] { collide(down, v, 0, 1, floor_scene(1, 0)); });
+  rejects("mass", [&] { collide(down, v, nan, 1, floor_scene(1, 0)); });
+  rejects("dt", [&] { collide(down, v, 1, 0, floor_scene(1, 0)); });
+  rejects("scene.bounce_cap", [&] { collide(down, v, 1, 1, floor_scene(1, 0, kMaxBounceCap + 1)); });
+  rejects("scene.bounce_cap", [&] { collide(down, v, 1, 1, floor_scene(1, 0, -1)); });
+  rejects("material.restitution", [&] { collide(down, v, 1, 1, floor_scene(nan, 0)); });
+
+  const SurfaceHit floor_hit{true, 0, -1, 0.5, Vec3::Zero(), up};
+  rejects("x", [&] { settle(bad, floor_scene(0, 0), floor_hit); });
+  rejects("last", [&] { settle(Vec3::Zero(), floor_scene(0, 0), SurfaceHit{true, 3, -1, 0.5, Vec3::Zero(), up}); });
+  rejects("last.normal", [&] { settle(Vec3::Zero(), floor_scene(0, 0), SurfaceHit{true, 0, -1, 0.5, Vec3::Zero(), bad}); });
+
+  System system;
+  rejects("dt", [&] { system.step(0); });
+  system.particles = {Particle{}};
+  system.particles[0].mass = 0;
+  rejects("particles[0].mass", [&] { system.step(0.1); });
+  system.particles[0].mass = 1;
+  system.emitter.mass = nan;
+  rejects("emitter.mass", [&] { system.step(0.1); });
+  system.emitter.mass = 1;
+  system.scene.planes = {Plane{bad, 0}};
+  rejects("scene.planes[0].normal", [&] { system.step(0.1); });
+
+  // Documented results, not errors: zero speed or gravity (count 0), a zero normal (no hit).
+  CHECK(aim(Vec3::Zero(), Vec3(1, 0, 0), 0, Vec3(0, 0, -1)).count == 0);
+  CHECK(aim(Vec3::Zero(), Vec3(1, 0, 0), 1, Vec3::Zero()).count == 0);
+  CHECK(!hit_plane(down, Plane{Vec3::Zero(), 0}).hit);
 }

@@ -16,7 +16,7 @@ struct Grid {
 };
 
 rc::Gen<Grid> grid(bool exact) {
-  return rc::gen::map(scale(), [exact](double s) { return Grid{s, exact}; });
+  return rc::gen::map(exact ? scale() : particle_scale(), [exact](double s) { return Grid{s, exact}; });
 }
 rc::Gen<Vec3> grid_point(const Grid& g) { return g.exact ? lattice_point(8 * g.s, 16) : point(g.s); }
 rc::Gen<Vec3> grid_direction(const Grid& g) { return direction(g.exact ? 8 * g.s : g.s, 8); }
@@ -195,7 +195,7 @@ StepSurfaces exact_surfaces() {
 StepSurfaces far_away(StepSurfaces c) {
   double size = scale_of({c.step.a, c.step.b});
   for (const Vec3& v : c.mesh.vertices) size = std::max(size, v.cwiseAbs().maxCoeff());
-  const Vec3 offset = *lattice_point(std::max(1.0, size) * 1024.0, 64);
+  const Vec3 offset = *lattice_point(size * 1024.0, 64);  // at the case's own scale, however small
   c.step.a += offset;
   c.step.b += offset;
   for (Vec3& v : c.mesh.vertices) v += offset;
@@ -204,6 +204,11 @@ StepSurfaces far_away(StepSurfaces c) {
 }
 
 }  // namespace
+
+rc::Gen<double> particle_scale() {
+  return rc::gen::weightedOneOf<double>(
+      {{9, scale()}, {1, rc::gen::element(std::ldexp(1.0, -100), std::ldexp(1.0, -60), std::ldexp(1.0, 60), std::ldexp(1.0, 100))}});
+}
 
 rc::Gen<Plane> plane_through(const Vec3& point, int magnitude) {
   return rc::gen::map(integer_normal(magnitude), [point](const Vec3& n) { return through(point, n); });

@@ -31,6 +31,10 @@ struct StepSurfaces {
 
 namespace labkit::gen {
 
+// The scales lab 07 draws at: mostly those of scale(), and the ends of the header's input
+// domain, 2^-100 and 2^100 (with 2^-60 and 2^60 between).
+rc::Gen<double> particle_scale();
+
 // A plane through `point` with a non-zero integer normal, components in [-magnitude, magnitude].
 rc::Gen<Plane> plane_through(const Vec3& point, int magnitude = 3);
 

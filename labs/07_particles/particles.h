@@ -28,9 +28,13 @@
 // thin sheets, hit from either side (two-sided). The surfaces do not move; `impulse` alone
 // (step 5) also handles a moving object.
 //
-// Degenerate rules (step 4). A segment hits a plane when value(a) >= 0 and value(b) < 0: a
-// particle exactly on the plane is not behind it, and one starting on it hits at t = 0 if
-// it moves behind. A segment hits a triangle when a is strictly off the triangle's plane and
+// Degenerate rules (step 4). A segment hits a plane when a is not behind it and b is:
+// value(a) >= 0 and value(b) < 0, with value(x) = n . x + c. A particle exactly on the plane
+// is not behind it, and one starting on it hits at t = 0 if it moves behind. "On it" for a
+// is decided with value(a)'s rounding bound (step 7's plane bound): a computed value(a)
+// within its bound of 0 counts as 0, because a particle resting on a plane (a bounce's
+// settled point) can compute n . a + c a hair below zero; it must still hit the plane it
+// moves behind. Only b's side is exact. A segment hits a triangle when a is strictly off the triangle's plane and
 // the segment meets the closed triangle (edges and vertices count; use the given watertight
 // labkit::given::segment_triangle); a particle starting on the triangle's plane is leaving
 // it and never hits it. A plane with a zero normal and a zero-area triangle are never hit.
@@ -45,8 +49,36 @@
 //    answer changes under a relative perturbation of 1e-9: there either answer passes.
 //  - Points within tol; velocities within tol_v; the parameter t of a hit within
 //    tol / |d_a - d_b| (d: unit-normal signed distances of a and b).
+//  - Unit normals within 1e-9; a triangle's within 1e-9 + 2 tol / h, h its smallest height
+//    (a needle's plane turns that much when its vertices move by tol).
+//  - Launch angles (step 3): each within how far the exact angle moves when the input
+//    moves by a relative 1e-9 (to first order), plus 1e-15. For a near, fast shot this is
+//    about 1e-9 S / x: the low angle must be right to its own size, not to the high one's.
 //  - Integrators: within 1e-9 times the sum of the magnitudes of the terms added.
 //  - Never behind a surface: exact (step 7). Energy: 1e-12, relative (step 7).
+//
+// Input domain: answers must match the exact ones (as above) for every input whose
+// coordinates, velocity and gravity components and speeds are 0 or of magnitude 2^-100 to
+// 2^100 (about 1e-30 to 1e30), with masses and time steps of magnitude 2^-20 to 2^20, and
+// within one input, the gaps between its surfaces (a crack) at least 2^-40 S.
+// Plane normals need not be unit (any non-zero length in that range); triangles may be
+// needles (aspect ratios up to 1e8). The tests draw from all of it, both ends included.
+//
+// Preconditions. Each function refuses invalid input with std::invalid_argument, its
+// message naming the argument and the rule (e.g. "impulse: mass must be finite and > 0,
+// got 0"); the tests never pass such input except in their [contract] test, which is not
+// graded. Every number must be finite (no NaN, no infinity), and:
+//  - emit, births, System: emitter.half_extents >= 0, direction non-zero, cone in [0, pi],
+//    0 <= speed_spread <= speed, 0 <= lifetime_spread <= lifetime, mass > 0, rate >= 0,
+//    owed in [0, 1);
+//  - births and age: dt >= 0; the integrators, collide and System::step: dt > 0;
+//  - force, the integrators, System: every particle's mass > 0; forces.drag, air_drag >= 0;
+//  - aim: speed >= 0 (a zero speed or gravity is no error: count 0);
+//  - hit_plane, first_hit: a zero normal is no error (never hit); a scene's triangles index
+//    its vertices; bounce_cap in [0, kMaxBounceCap]; restitution and friction >= 0;
+//  - impulse: normal a unit vector (| |n|^2 - 1 | <= 1e-9), mass > 0;
+//  - settle: when last.hit, last names one plane or one triangle of the scene, and
+//    last.normal is non-zero.
 #pragma once
 
 #include "common/geometry.h"
@@ -305,9 +337,8 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
 //  (4) for e = 1 and mu = 0, unless stopped: | |v_end|^2 - |v|^2 | <= 1e-12 |v|^2.
 // (1) and (2) are checked exactly. (3) and (4) allow 1e-12 because each impulse rounds a
 // few times (about 1e-15 relative each); a real mistake changes the energy by far more.
-// (1) needs one more care in hit_plane: a particle resting exactly on a plane can compute
-// n . a + c a hair below zero and skip the plane. Take value(a) within its error bound
-// (the plane's bound above) as 0, so that moving behind hits at t = 0.
+// (1) is why step 4 decides a's side of a plane with value(a)'s rounding bound: a
+// particle resting on a plane whose n . a + c rounds a hair below zero still hits it.
 Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last);
 
 enum class Integrator { euler, verlet };

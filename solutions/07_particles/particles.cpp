@@ -12,13 +12,108 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 namespace labkit::lab07 {
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
+
+// ---- Preconditions (the header's "Preconditions") --------------------------------------
+// Invalid input is refused with std::invalid_argument naming the argument and the rule,
+// before anything is computed: a NaN would otherwise flow through every formula and come
+// out as a NaN position, and a zero mass as an infinite acceleration.
+
+std::string text(double x) {
+  std::ostringstream out;
+  out << std::setprecision(17) << x;
+  return out.str();
+}
+std::string text(const Vec3& v) { return "(" + text(v.x()) + ", " + text(v.y()) + ", " + text(v.z()) + ")"; }
+
+template <class Value>
+void require(bool ok, const char* query, const std::string& argument, const char* rule, const Value& got) {
+  if (!ok) throw std::invalid_argument(std::string(query) + ": " + argument + " " + rule + ", got " + text(got));
+}
+
+void require_finite(const char* query, const std::string& argument, const Vec3& v) {
+  require(v.allFinite(), query, argument, "must be finite", v);
+}
+void require_finite(const char* query, const std::string& argument, double x) {
+  require(std::isfinite(x), query, argument, "must be finite", x);
+}
+void require_positive(const char* query, const std::string& argument, double x) {
+  require(std::isfinite(x) && x > 0, query, argument, "must be finite and > 0", x);
+}
+void require_not_negative(const char* query, const std::string& argument, double x) {
+  require(std::isfinite(x) && x >= 0, query, argument, "must be finite and >= 0", x);
+}
+
+void require_valid(const char* query, const std::string& name, const Emitter& e) {
+  for (const auto& [field, v] : {std::pair{"position", e.position}, {"half_extents", e.half_extents}, {"direction", e.direction}})
+    require_finite(query, name + "." + field, v);
+  require((e.half_extents.array() >= 0).all(), query, name + ".half_extents", "must be >= 0", e.half_extents);
+  require(e.direction != Vec3::Zero(), query, name + ".direction", "must be non-zero", e.direction);
+  require(e.cone >= 0 && e.cone <= kPi, query, name + ".cone", "must be in [0, pi]", e.cone);
+  require_not_negative(query, name + ".speed_spread", e.speed_spread);
+  require(std::isfinite(e.speed) && e.speed >= e.speed_spread, query, name + ".speed", "must be finite and >= speed_spread", e.speed);
+  require_not_negative(query, name + ".lifetime_spread", e.lifetime_spread);
+  require(std::isfinite(e.lifetime) && e.lifetime >= e.lifetime_spread, query, name + ".lifetime",
+          "must be finite and >= lifetime_spread", e.lifetime);
+  require_positive(query, name + ".mass", e.mass);
+  require_not_negative(query, name + ".rate", e.rate);
+  require(e.owed >= 0 && e.owed < 1, query, name + ".owed", "must be in [0, 1)", e.owed);
+}
+
+void require_valid(const char* query, const std::string& name, const Particle& p) {
+  require_finite(query, name + ".position", p.position);
+  require_finite(query, name + ".velocity", p.velocity);
+  require_finite(query, name + ".previous", p.previous);
+  require_positive(query, name + ".mass", p.mass);
+  require_finite(query, name + ".age", p.age);
+  require_finite(query, name + ".lifetime", p.lifetime);
+}
+
+void require_valid(const char* query, const Forces& f) {
+  require_finite(query, "forces.gravity", f.gravity);
+  require_not_negative(query, "forces.drag", f.drag);
+  require_not_negative(query, "forces.air_drag", f.air_drag);
+}
+
+void require_valid(const char* query, const Segment& s, const std::string& name = "segment") {
+  require_finite(query, name + ".a", s.a);
+  require_finite(query, name + ".b", s.b);
+}
+
+void require_valid(const char* query, const Plane& p, const std::string& name = "plane") {
+  require_finite(query, name + ".normal", p.normal);
+  require_finite(query, name + ".offset", p.offset);
+}
+
+void require_valid(const char* query, const Material& m) {
+  require_not_negative(query, "material.restitution", m.restitution);
+  require_not_negative(query, "material.friction", m.friction);
+}
+
+void require_valid(const char* query, const Scene& scene) {
+  for (std::size_t i = 0; i < scene.planes.size(); ++i) require_valid(query, scene.planes[i], "scene.planes[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < scene.mesh.vertices.size(); ++i)
+    require_finite(query, "scene.mesh.vertices[" + std::to_string(i) + "]", scene.mesh.vertices[i]);
+  const double count = double(scene.mesh.vertices.size());
+  for (std::size_t i = 0; i < scene.mesh.size(); ++i)
+    for (const int v : scene.mesh.triangles[i])
+      require(v >= 0 && v < count, query, "scene.mesh.triangles[" + std::to_string(i) + "]",
+              "must index vertices (0 to vertices.size() - 1)", double(v));
+  require_valid(query, scene.material);
+  require(scene.bounce_cap >= 0 && scene.bounce_cap <= kMaxBounceCap, query, "scene.bounce_cap", "must be in [0, kMaxBounceCap]",
+          double(scene.bounce_cap));
+}
 
 }  // namespace
 
@@ -28,6 +123,7 @@ constexpr double kPi = 3.14159265358979323846;
 // and theta is 2 pi (1 - cos theta), linear in cos theta, so cos theta is drawn uniformly
 // (drawing theta itself uniformly would crowd the particles toward the axis).
 Particle emit(const Emitter& emitter, Random& random) {
+  require_valid("emit", "emitter", emitter);
   Particle p;
   for (int i = 0; i < 3; ++i) p.position[i] = emitter.position[i] + emitter.half_extents[i] * random.uniform(-1.0, 1.0);
   const Vec3 axis = emitter.direction.normalized();
@@ -46,12 +142,19 @@ Particle emit(const Emitter& emitter, Random& random) {
 // The fraction is carried, not dropped: at 10 particles per second and 60 steps per
 // second, rate * dt = 1/6 rounds down to 0 every single step.
 Births births(const Emitter& emitter, double dt) {
+  require_valid("births", "emitter", emitter);
+  require_not_negative("births", "dt", dt);
   const double due = emitter.owed + emitter.rate * dt;
   const double whole = std::floor(due);
   return {int(whole), due - whole};
 }
 
 std::vector<Particle> age(std::vector<Particle> particles, double dt) {
+  require_not_negative("age", "dt", dt);
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    require_finite("age", "particles[" + std::to_string(i) + "].age", particles[i].age);
+    require_finite("age", "particles[" + std::to_string(i) + "].lifetime", particles[i].lifetime);
+  }
   for (Particle& p : particles) {
     p.age += dt;
     p.alive = p.age < p.lifetime;  // reaching the lifetime is dying
@@ -65,13 +168,16 @@ std::vector<Particle> age(std::vector<Particle> particles, double dt) {
 
 // Drag always opposes the velocity: viscous drag grows with |v|, air drag with |v|^2.
 Vec3 force(const Particle& p, const Forces& forces) {
+  require_valid("force", "p", p);
+  require_valid("force", forces);
   return p.mass * forces.gravity - forces.drag * p.velocity - forces.air_drag * p.velocity.norm() * p.velocity;
 }
 
 // The state is S = (position, velocity) and dS/dt = (velocity, F / m), both taken at the
 // start of the step: S(t + dt) = S(t) + dS/dt dt.
 Particle euler_step(const Particle& p, const Forces& forces, double dt) {
-  const Vec3 a = force(p, forces) / p.mass;
+  require_positive("euler_step", "dt", dt);
+  const Vec3 a = force(p, forces) / p.mass;  // force() checks p and forces
   Particle next = p;
   next.position = p.position + p.velocity * dt;
   next.velocity = p.velocity + a * dt;
@@ -81,7 +187,8 @@ Particle euler_step(const Particle& p, const Forces& forces, double dt) {
 // Taylor: x(dt) = x + v dt + a dt^2 / 2, and x(-dt) = x - v dt + a dt^2 / 2. With the
 // second as `previous`, the Verlet step 2 x - x(-dt) + a dt^2 gives exactly the first.
 Particle start_verlet(const Particle& p, const Forces& forces, double dt) {
-  const Vec3 a = force(p, forces) / p.mass;
+  require_positive("start_verlet", "dt", dt);
+  const Vec3 a = force(p, forces) / p.mass;  // force() checks p and forces
   Particle next = p;
   next.previous = p.position - p.velocity * dt + 0.5 * a * dt * dt;
   return next;
@@ -91,7 +198,8 @@ Particle start_verlet(const Particle& p, const Forces& forces, double dt) {
 // again, bent by the acceleration. The velocity is not part of the state; the one kept is
 // the average over the step just taken, which is what the collision test moves along.
 Particle verlet_step(const Particle& p, const Forces& forces, double dt) {
-  const Vec3 a = force(p, forces) / p.mass;
+  require_positive("verlet_step", "dt", dt);
+  const Vec3 a = force(p, forces) / p.mass;  // force() checks p and forces
   Particle next = p;
   next.position = 2 * p.position - p.previous + a * dt * dt;
   next.previous = p.position;
@@ -120,6 +228,10 @@ Particle verlet_step(const Particle& p, const Forces& forces, double dt) {
 //          |   .'  low: flat, fast  '*  target (x, y)
 //     from *-----------------------------> horizontal, toward the target
 Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity) {
+  require_finite("aim", "from", from);
+  require_finite("aim", "target", target);
+  require_not_negative("aim", "speed", speed);
+  require_finite("aim", "gravity", gravity);
   const Vec3 d = target - from;
   const double gx_squared = d.cross(gravity).squaredNorm();
   if (gx_squared == 0 || speed == 0) return {};  // straight up or down, no gravity, or no speed
@@ -176,6 +288,8 @@ Signed plane_value(const Plane& plane, const Vec3& x) {
 // zero at t = value(a) / (value(a) - value(b)), a division without cancellation because
 // the two values have opposite signs (or value(a) = 0: t = 0).
 SurfaceHit hit_plane(const Segment& segment, const Plane& plane) {
+  require_valid("hit_plane", segment);
+  require_valid("hit_plane", plane);
   const double length = plane.normal.norm();
   if (length == 0) return {};  // a zero normal: no plane
   // a within rounding error of the plane counts as on it: a particle resting on a plane
@@ -195,6 +309,8 @@ SurfaceHit hit_plane(const Segment& segment, const Plane& plane) {
 // Two-sided: the side the particle comes from is the side a is on, decided from input
 // numbers before the given watertight test builds anything.
 SurfaceHit hit_triangle(const Segment& segment, const Triangle& triangle) {
+  require_valid("hit_triangle", segment);
+  for (int i = 0; i < 3; ++i) require_finite("hit_triangle", "triangle.v" + std::to_string(i), triangle[i]);
   const Vec3 n = triangle.normal();
   const double side = n.dot(segment.a - triangle.v0);
   if (side == 0) return {};  // starts on the plane (or no plane): it is leaving, not hitting
@@ -216,11 +332,9 @@ bool boxes_apart(const Vec3& low, const Vec3& high, const Triangle& t) {
   return (t_low.array() > high.array()).any() || (t_high.array() < low.array()).any();
 }
 
-}  // namespace
-
 // The nearest hit wins; a later surface must be strictly nearer to replace an earlier
 // one, which makes ties go to planes, then to lower indices.
-SurfaceHit first_hit(const Segment& segment, const Scene& scene) {
+SurfaceHit first_hit_in(const Segment& segment, const Scene& scene) {
   SurfaceHit best;
   for (std::size_t i = 0; i < scene.planes.size(); ++i) {
     const SurfaceHit h = hit_plane(segment, scene.planes[i]);
@@ -245,6 +359,14 @@ SurfaceHit first_hit(const Segment& segment, const Scene& scene) {
   return best;
 }
 
+}  // namespace
+
+SurfaceHit first_hit(const Segment& segment, const Scene& scene) {
+  require_valid("first_hit", segment);
+  require_valid("first_hit", scene);
+  return first_hit_in(segment, scene);
+}
+
 // ---- Step 5: impulse with restitution and friction -----------------------------------
 
 //   Derivation (lecture 001). Only the relative velocity v_r = v - v_obj matters. Split
@@ -260,6 +382,13 @@ SurfaceHit first_hit(const Segment& segment, const Scene& scene) {
 //           v  v_close < 0 (before: closing)
 Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& normal, double mass,
                 const Material& material) {
+  require_finite("impulse", "velocity", velocity);
+  require_finite("impulse", "object_velocity", object_velocity);
+  // The formulas take n . n = 1; a normal of another length scales v_close and j_n.
+  require(normal.allFinite() && std::abs(normal.squaredNorm() - 1) <= 1e-9, "impulse", "normal", "must be a unit vector",
+          normal);
+  require_positive("impulse", "mass", mass);
+  require_valid("impulse", material);
   Impulse r;
   const Vec3 relative = velocity - object_velocity;
   r.v_close = relative.dot(normal);
@@ -284,19 +413,28 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
 // velocity within the step), apply the impulse there, move on for the time that is left,
 // and test that new path too. A particle in a crack could bounce forever in one step;
 // after the cap it stops where it hits next.
+namespace {
+Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last);
+}  // namespace
+
 Collision collide(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene) {
-  const int cap = std::clamp(scene.bounce_cap, 0, kMaxBounceCap);
+  require_valid("collide", step, "step");
+  require_finite("collide", "velocity", velocity);
+  require_positive("collide", "mass", mass);
+  require_positive("collide", "dt", dt);
+  require_valid("collide", scene);
+  const int cap = scene.bounce_cap;
   Collision c;
   Segment piece = step;
   Vec3 v = velocity;
   double remaining = dt;
   SurfaceHit last;
   for (;;) {
-    const SurfaceHit hit = first_hit(piece, scene);
+    const SurfaceHit hit = first_hit_in(piece, scene);
     if (!hit.hit) break;  // this piece is clear: the particle gets to its end
     Bounce& bounce = c.trace[std::size_t(c.bounces)];
     bounce.hit = hit;
-    bounce.from = settle(hit.point, scene, hit);
+    bounce.from = settle_in(hit.point, scene, hit);
     if (c.bounces == cap) {  // one hit too many: stop here, at rest
       c.stopped = true;
       c.position = bounce.from;
@@ -310,7 +448,7 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
     last = hit;
     ++c.bounces;
   }
-  c.position = settle(piece.b, scene, last);
+  c.position = settle_in(piece.b, scene, last);
   c.velocity = v;
   return c;
 }
@@ -365,8 +503,6 @@ Vec3 away_from(const std::vector<Vec3>& normals) {
   return best_margin > 0 ? Vec3(best / best_margin) : Vec3::Zero();
 }
 
-}  // namespace
-
 //   Why this is needed: the hit point x = a + t (b - a) is rounded, so it lies a hair on
 //   either side of the surface; after a dead (e = 0) bounce the particle slides with the
 //   surface at "zero" distance, and rounding decides the side. The exact side is known
@@ -375,7 +511,7 @@ Vec3 away_from(const std::vector<Vec3>& normals) {
 //   plus some offset along the normal") by a skin of a few rounding errors, doubled until
 //   nothing is in doubt. Pushing away from all of them together works even in an acute
 //   crease, where pushing off one would push behind the other.
-Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
+Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
   const bool last_triangle = last.hit && last.triangle >= 0 && std::size_t(last.triangle) < scene.mesh.size();
   const Triangle tri = last_triangle ? scene.mesh.triangle(std::size_t(last.triangle)) : Triangle{};
   const double facing = last_triangle && last.normal.dot(tri.normal()) < 0 ? -1.0 : 1.0;
@@ -457,7 +593,28 @@ Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
   return p;  // a corner too sharp to get out of by small pushes: give up near x
 }
 
+}  // namespace
+
+Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
+  require_finite("settle", "x", x);
+  require_valid("settle", scene);
+  if (last.hit) {
+    const bool plane = last.plane >= 0 && std::size_t(last.plane) < scene.planes.size();
+    const bool triangle = last.triangle >= 0 && std::size_t(last.triangle) < scene.mesh.size();
+    require(plane != triangle, "settle", "last", "must name one plane or one triangle of the scene when last.hit (plane, triangle)",
+            Vec3(last.plane, last.triangle, 0));
+    require(last.normal.allFinite() && last.normal != Vec3::Zero(), "settle", "last.normal", "must be finite and non-zero",
+            last.normal);
+  }
+  return settle_in(x, scene, last);
+}
+
 void System::step(double dt) {
+  require_positive("System::step", "dt", dt);
+  require_valid("System::step", "emitter", emitter);
+  require_valid("System::step", forces);
+  require_valid("System::step", scene);
+  for (std::size_t i = 0; i < particles.size(); ++i) require_valid("System::step", "particles[" + std::to_string(i) + "]", particles[i]);
   // 1. Births, with their attributes.
   const Births born = births(emitter, dt);
   emitter.owed = born.owed;
