@@ -15,6 +15,16 @@ using check::Expect;
 using check::Outcome;
 using judge::Rules;
 
+// What keeps each query's calls well defined, in the header's words: a crash in that
+// query says it first (check::rule).
+const bool kRules = [] {
+  check::rule("barycentric", "a zero-area triangle has no weights: its 2D denominator is 0, so answer "
+                             "dropped_axis = -1 before dividing");
+  check::rule("point_in_triangle_barycentric", "a zero-area triangle contains no point: answer false before "
+                                               "dividing by its zero denominator");
+  return true;
+}();
+
 namespace {
 
 // The handout's triangle: the right triangle with legs 4 on the x and y axes, z = 0.

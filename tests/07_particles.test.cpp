@@ -13,6 +13,17 @@ using check::Expect;
 using check::Outcome;
 using judge::Rules;
 
+// What keeps each query's calls finite, in the header's words: a crash or a time-out in
+// that query says it first (check::rule).
+const bool kRules = [] {
+  check::rule("collide", "a step applies at most bounce_cap impulses (at most kMaxBounceCap = 8); "
+                         "the next hit stops the particle: the loop runs at most bounce_cap + 1 times");
+  check::rule("system", check::rule_of("collide"));
+  check::rule("births", "the count is rate * dt plus what earlier steps owed, rounded down: computed once, "
+                        "never counted up in a loop");
+  return true;
+}();
+
 namespace {
 
 constexpr double kDegree = M_PI / 180;
