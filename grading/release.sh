@@ -31,7 +31,13 @@ make_release() {
     [ -d "$folder" ] && cp -pR "$folder" "$out/"
   done
   mkdir -p "$out/tests" "$out/grading"
-  cp -p tests/CMakeLists.txt tests/*.test.cpp tests/*.judge.h tests/*.judge.cpp tests/*.wire.h "$out/tests/"
+  # A judge's pieces: its tests, its cases and verdicts, its wire, and (when it keeps
+  # them apart) its generators. Every file cmake/LabKit.cmake compiles into a judge.
+  local piece
+  for piece in tests/CMakeLists.txt tests/*.test.cpp tests/*.judge.h tests/*.judge.cpp \
+               tests/*.wire.h tests/*.generators.cpp; do
+    if [ -e "$piece" ]; then cp -p "$piece" "$out/tests/"; fi
+  done
   cp -pR tests/kit "$out/tests/"
   cp -p grading/manifest.json "$out/grading/"
   cp -p grading/student-README.md "$out/README.md"
