@@ -295,9 +295,13 @@ int check(const Paths& paths, const CheckOptions& options) {
         continue;
       }
       if (r.status != Status::not_implemented) to_explain.push_back({lab, r});
-      if (next_step.empty())
+      if (next_step.empty()) {
         next_step = "lab " + lab->id + " step " + std::to_string(s.number) + " (" + s.tag + "): " + lab->handout() +
                     ", \"Step " + std::to_string(s.number) + "\"";
+        // A step begun but failing: its hints are one command away (handouts/hints/).
+        if (r.status != Status::not_implemented && std::filesystem::exists(paths.source + "/" + lab->hints()))
+          next_step += "; stuck? ./labkit hint " + lab->id + " " + std::to_string(s.number);
+      }
     }
   }
 

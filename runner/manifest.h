@@ -32,6 +32,7 @@ struct Lab {
   std::string judge_binary() const { return "test_" + stem(); }
   std::string answerer(const std::string& implementation) const { return "answer_" + stem() + "_" + implementation; }
   std::string handout() const { return "handouts/" + stem() + ".md"; }
+  std::string hints() const { return "handouts/hints/" + stem() + ".md"; }
 };
 
 struct Manifest {

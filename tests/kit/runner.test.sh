@@ -55,5 +55,19 @@ for args in "check 99" "check 02 --case nonsense" "check 02 --case no_such_query
   [ "$(wc -l <<<"$out")" -le 2 ] || fail "'$args' says more than one line"
 done
 
+echo "--- 5. hints: every 'Stuck? ./labkit hint NN K' of a handout opens that step's hints"
+pointers=$(grep -oh "\./labkit hint [0-9][0-9]* [0-9][0-9]*" "$root"/handouts/*.md | sort -u)
+while read -r _ _ lab step; do
+  [ -n "$lab" ] || continue
+  out=$("$root/labkit" hint "$lab" "$step" 2>&1); code=$?
+  [ $code -eq 0 ] && grep -q "^## Step $step" <<<"$out" || fail "'./labkit hint $lab $step' (a handout's pointer) exits $code: $out"
+done <<<"$pointers"
+for args in "hint" "hint 99" "hint 02 99" "hint x" "hint 02 1 2"; do
+  out=$("$root/labkit" $args 2>&1); code=$?
+  echo "\$ labkit $args -> exit $code: $out"
+  [ $code -eq 2 ] || fail "'$args' exits $code, not 2"
+  [ "$(wc -l <<<"$out")" -le 2 ] || fail "'$args' says more than one line"
+done
+
 [ $failures -eq 0 ] && echo "all runner checks passed"
 exit $((failures > 0))
