@@ -331,6 +331,21 @@ void FrustumSplitScene::draw(Frame& f) {
     for (int i = 0; i < 3; ++i) r.dashed(t[i], t[(i + 1) % 3], palette::muted, 1.5f);
     if (pieces_ && f.shows(2)) draw_pieces(r, *pieces_, verdict_[2]);
     if (f.show_exact && f.shows(2)) draw_exact(r, t, {p});
+    // The cut points, named as the handout and the lecture's figure name them: c0, c1 in
+    // the order the walk v0 -> v1 -> v2 -> v0 meets them (only sides whose ends have
+    // strictly opposite signs are cut). Each label sits away from the triangle's middle.
+    const Vec3 middle = (t.v0 + t.v1 + t.v2) / 3;
+    int cuts = 0;
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 &a = t[i], &b = t[(i + 1) % 3];
+      const double da = p.value(a), db = p.value(b);
+      if (!((da > 0 && db < 0) || (da < 0 && db > 0))) continue;
+      const Vec3 c = (da * b - db * a) / (da - db);
+      const bool left = (c - middle).dot(r.view().right.cast<double>()) < 0;
+      const bool below = (c - middle).dot(r.view().up.cast<double>()) < 0;
+      r.point(c, palette::muted, 4);
+      r.label(c, "c" + std::to_string(cuts++), palette::input, left ? -24 : 8, below ? 2 : -8);
+    }
     for (int i = 0; i < 3; ++i) {
       const Side side = sides_ ? (*sides_)[std::size_t(i)] : Side::on;
       r.point(t[i], sides_ && f.shows(1) ? side_colour(side) : palette::input, 7);

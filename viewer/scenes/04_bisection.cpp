@@ -197,6 +197,9 @@ void BisectionScene::frame_inputs() {
     box.extend(Vec3(left_, y0_ - (kRows + 1) * row_, z_));
     box.extend(Vec3(left_ + width_, y0_, z_));
     box.extend(bodies_);
+    // Room above the bodies: their near faces look larger in perspective, and the
+    // picture's caption covers the top of the view.
+    box.extend(Vec3(bodies_.center().x(), bodies_.max().y() + 0.6 * bodies_.sizes().y(), bodies_.center().z()));
   }
   center = box.center();
   radius = std::max(0.32 * box.diagonal().norm(), 1e-9);
@@ -505,12 +508,32 @@ void BisectionScene::draw_timeline(Frame& f) const {
   r.label(at(T.t0, 0), "t0 = " + num(T.t0), palette::muted, -70, -8);
   r.label(at(T.t1, 0), "t1 = " + num(T.t1), palette::muted, 10, -8);
   const double tick = 0.4 * row_;
-  // The tests, numbered in the order the search asked, coloured by the exact overlap.
+  // The tests, numbered in the order the search asked, coloured by the exact overlap. In
+  // bisection the ends carry the axis's t0 and t1, and the midpoints are numbered as the
+  // lecture numbers its iterations (1 to 5 in its example). Labels that would overlap are
+  // stacked upward, each on a thin leader down to its tick.
   const std::size_t shown = std::min<std::size_t>(tested_.size(), 40);
+  const double pixel = r.pixels(at(T.t0, 0), 1);  // world length of a pixel on the axis
+  std::vector<std::vector<std::pair<double, double>>> taken;  // per stacking level: label spans, in pixels
+  int number = 0;
   for (std::size_t i = 0; i < shown; ++i) {
     const Color c = tested_overlap_[i] ? palette::surface : palette::input;
-    r.line(at(tested_[i], 0) - Vec3(0, tick, 0), at(tested_[i], 0) + Vec3(0, tick, 0), c, 2.5f);
-    if (shown <= 24) r.label(at(tested_[i], 0) + Vec3(0, tick, 0), std::to_string(i + 1), c, -4, -18);
+    const Vec3 top = at(tested_[i], 0) + Vec3(0, tick, 0);
+    r.line(at(tested_[i], 0) - Vec3(0, tick, 0), top, c, 2.5f);
+    const bool end = mode_ == Mode::bisect && (tested_[i] == T.t0 || tested_[i] == T.t1);
+    if (end) continue;
+    ++number;
+    if (shown > 24) continue;
+    const std::string text = std::to_string(number);
+    const double w = 7.0 * double(text.size()) + 2, x = (top.x() - left_) / pixel - 0.5 * w;
+    const auto clashes = [&](const std::pair<double, double>& s) { return x < s.second + 3 && s.first < x + w + 3; };
+    std::size_t level = 0;
+    while (level < taken.size() && std::any_of(taken[level].begin(), taken[level].end(), clashes)) ++level;
+    if (level == taken.size()) taken.emplace_back();
+    taken[level].push_back({x, x + w});
+    const float lift = 14.0f * float(level);
+    if (level > 0) r.line(top, top + Vec3(0, pixel * (lift + 2), 0), c.with_alpha(0.5f), 1);
+    r.label(top, text, c, float(-0.5 * w), -18 - lift);
   }
   // The bracket the tests imply: the earliest overlapping time tested, and the latest
   // clear time tested before it.
