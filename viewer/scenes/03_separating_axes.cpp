@@ -368,9 +368,9 @@ void SeparatingAxesScene::draw_projection(Frame& f) const {
     const double from = (first.center + first.radius) / n, to = (second.center - second.radius) / n;
     r.line(base + from * u, base + to * u, c, 7);
     r.point(base + from * u, c, 4), r.point(base + to * u, c, 4);
-    r.label(base + 0.5 * (from + to) * u, from < to ? "gap " + num(to - from) : "overlap " + num(from - to), c, 8, 18);
+    const std::string verdict = separated_ ? (*separated_ ? ": separated along L" : ": not separated along L") : "";
+    r.label(base + 0.5 * (from + to) * u, (from < to ? "gap " + num(to - from) : "overlap " + num(from - to)) + verdict, c, 8, 18);
   }
-  if (separated_) r.label(base + 1.6 * radius * u, *separated_ ? "separated along L" : "overlapping along L", c, 8, 16);
 }
 
 // Step 4, the lecture's method: the line of the two planes, and on it each triangle's
@@ -479,7 +479,7 @@ void SeparatingAxesScene::draw(Frame& f) {
   draw_box(r, a_, palette::surface, 0.35f);
   draw_box(r, b_, palette::input, 0.2f);
   r.label(a_.center, "A", palette::surface), r.label(b_.center, "B", palette::input);
-  if (f.shows(1) || f.shows(2)) draw_projection(f);  // step 2 tests along these intervals too
+  if (f.shows(1) || f.shows(2) || f.shows(3)) draw_projection(f);  // steps 2 and 3 work on these intervals too
   if (find_ && f.shows(3)) {
     const Color c = colour(verdict_[3]);
     const double len = std::max(std::abs(find_->depth), 0.3 * radius);
