@@ -295,6 +295,60 @@ std::string why_triangles(const TrianglePair& in, bool expected) {
 
 }  // namespace
 
+Outcome triangles_by_intervals(const TrianglePair& in, const LineIntervals& got, Rules rules) {
+  if (!gen::in_interval_domain(in)) return pass();  // outside the method's domain: not graded
+  const double tol = tolerance_of(in);
+  const std::string answer = got.crossing ? "axis " + std::to_string(got.axis) + ", t0 in [" + fmt(got.low0) + ", " +
+                                                fmt(got.high0) + "], t1 in [" + fmt(got.low1) + ", " + fmt(got.high1) +
+                                                "], " + (got.overlap ? "overlap" : "apart")
+                                          : "not crossing";
+  const Vec3 D = oracle::planes_line_direction(in.t0, in.t1), m = D.cwiseAbs();
+  int k = 0;
+  for (int i = 1; i < 3; ++i)
+    if (m[i] > m[k]) k = i;
+  if (!got.crossing)
+    return fail("crossing", answer, "each triangle has vertices strictly on both sides of the other's plane (no d_i is "
+                                    "0): the lecture's general case, crossing = true");
+  if (got.axis < 0 || got.axis > 2 || m[got.axis] < m[k] * (1 - 1e-9)) {
+    std::string why = "the line of the planes, D = n0 x n1 = " + fmt(D) + ", is read on the coordinate where |D_k| is "
+                      "largest, axis " + std::to_string(k);
+    if (got.axis >= 0 && got.axis <= 2)
+      why += "; yours, axis " + std::to_string(got.axis) + ", has |D_" + std::to_string(got.axis) + "| = " +
+             fmt(m[got.axis]) + (m[got.axis] == 0 ? ": every point of the line has the same coordinate there" : "");
+    return fail("axis " + std::to_string(k), answer, why);
+  }
+  if (got.low0 > got.high0 || got.low1 > got.high1)
+    return fail("low <= high for both intervals", answer,
+                "an interval's two ends come in either order (edge p q's may be the larger): sort them, low <= high");
+  const oracle::TriangleIntervals exact = oracle::triangle_intervals(in.t0, in.t1, got.axis);
+  const std::string expected = "axis " + std::to_string(got.axis) + ", t0 in [" + fmt(exact.low0) + ", " +
+                               fmt(exact.high0) + "], t1 in [" + fmt(exact.low1) + ", " + fmt(exact.high1) + "]";
+  for (int t = 0; t < 2; ++t) {
+    const double low = t ? got.low1 : got.low0, high = t ? got.high1 : got.high0;
+    const double exact_low = t ? exact.low1 : exact.low0, exact_high = t ? exact.high1 : exact.high0;
+    if (std::abs(low - exact_low) <= tol && std::abs(high - exact_high) <= tol) continue;
+    const Triangle& mine = t ? in.t1 : in.t0;
+    const Triangle& other = t ? in.t0 : in.t1;
+    int side[3];
+    for (int i = 0; i < 3; ++i) side[i] = oracle::orientation(other.v0, other.v1, other.v2, mine[i]);
+    const int p = side[0] == side[1] ? 2 : (side[0] == side[2] ? 1 : 0);
+    const std::string me = t ? "t1" : "t0", it = t ? "t0" : "t1";
+    return fail(expected, answer,
+                me + "'s segment in " + it + "'s plane covers [" + fmt(exact_low) + ", " + fmt(exact_high) +
+                    "] (tolerance " + fmt(tol) + "): its ends are where the two edges from the vertex alone on its "
+                    "side, " + me + ".v" + std::to_string(p) + ", cross the plane, x = p + (q - p) d_p / (d_p - d_q)");
+  }
+  const bool expected_overlap = oracle::triangles_intersect(in.t0, in.t1);
+  const bool doubt = rules == Rules::random && oracle::triangle_pair_in_doubt(in.t0, in.t1, tol);
+  Outcome o = verdict(got.overlap, expected_overlap, doubt, rules, "overlap", "apart");
+  if (o.verdict == Outcome::Verdict::fail)
+    o.why = expected_overlap ? "the intervals share a point, so the triangles intersect; ends that touch count "
+                               "(low0 <= high1 and low1 <= high0)"
+                             : "the intervals are apart, so the triangles do not intersect: one interval ends before "
+                               "the other begins";
+  return o;
+}
+
 Outcome test_triangles(const TrianglePair& in, bool got, Rules rules) {
   const bool expected = oracle::triangles_intersect(in.t0, in.t1);
   bool doubt = false;

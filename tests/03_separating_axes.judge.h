@@ -32,6 +32,8 @@ Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules = Rules
 Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got);
 Outcome test_boxes(const BoxPair& in, bool got, Rules rules = Rules::random);
 Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules = Rules::random);
+// The interval method, on its domain (gen::in_interval_domain); outside it any answer passes.
+Outcome triangles_by_intervals(const TrianglePair& in, const LineIntervals& got, Rules rules = Rules::random);
 Outcome test_triangles(const TrianglePair& in, bool got, Rules rules = Rules::random);
 Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules = Rules::random);
 Outcome find_moving_boxes(const MovingBoxes& in, const ContactInterval& got, Rules rules = Rules::random);

@@ -40,6 +40,19 @@ labkit_mutant(03 separating_axes NAME deepest_axis STEP 3 SAYS "least penetratio
   FIND "if (contact.axis_index < 0 || depth < least) {"
   REPLACE "if (contact.axis_index < 0 || depth > least) {")
 
+# The lecture's interval method (triangles_by_intervals).
+labkit_mutant(03 separating_axes NAME intervals_not_sorted STEP 4 SAYS "sort" "low <= high"
+  FIND "return {std::min(end_q, end_r), std::max(end_q, end_r)};"
+  REPLACE "return {end_q, end_r};")
+
+labkit_mutant(03 separating_axes NAME ratio_from_wrong_vertex STEP 4 SAYS "alone on its side"
+  FIND "((d[0] > 0) == (d[2] > 0) ? 1 : 0)"
+  REPLACE "((d[0] > 0) == (d[2] > 0) ? 0 : 1)")
+
+labkit_mutant(03 separating_axes NAME line_on_smallest_coordinate STEP 4 SAYS "largest"
+  FIND "out.axis = m.x() >= m.y() && m.x() >= m.z() ? 0 : (m.y() >= m.z() ? 1 : 2);"
+  REPLACE "out.axis = m.x() <= m.y() && m.x() <= m.z() ? 0 : (m.y() <= m.z() ? 1 : 2);")
+
 labkit_mutant(03 separating_axes NAME coplanar_is_a_miss STEP 4 SAYS "coplanar" "overlap in their plane"
   FIND "if (s1.coplanar || s0.coplanar) return coplanar_triangles_intersect(t0, t1);"
   REPLACE "if (s1.coplanar || s0.coplanar) return false;")

@@ -217,6 +217,41 @@ TEST_CASE("L03S3 separating or least-penetration axis: random cases", "[lab03][s
 
 // ---- Step 4 ------------------------------------------------------------------------
 
+// First the lecture's interval method, then the sign-based test that replaces it.
+TEST_CASE("L03S4 the lecture's interval method: worked examples", "[lab03][step4]") {
+  const auto expect = [](int axis, double low0, double high0, double low1, double high1, bool overlap) {
+    return [=](const TrianglePair& in) {
+      const LineIntervals got = triangles_by_intervals(in.t0, in.t1);
+      Expect e;
+      e.equal("crossing", got.crossing, true);
+      e.equal("axis", got.axis, axis);
+      e.near("low0", got.low0, low0, 1e-12);
+      e.near("high0", got.high0, high0, 1e-12);
+      e.near("low1", got.low1, low1, 1e-12);
+      e.near("high1", got.high1, high1, 1e-12);
+      e.equal("overlap", got.overlap, overlap);
+      return with_reason(e.outcome(), [&] { return judge::triangles_by_intervals(in, got, Rules::exact); });
+    };
+  };
+  // t1 in the plane x = 1; d = 16 z for t1 against the floor (-32, 32, 16), d = 16 (x - 1)
+  // for t0 against x = 1 (-16, 48, -16). D = (0, 256, 0): read on y.
+  check::example("triangles_by_intervals", "crossing: [0, 3] and [-5/3, 1] on y overlap",
+                 TrianglePair{kFloor, {{1, 1, -2}, {1, 1, 2}, {1, -3, 1}}}, expect(1, 0, 3, -5.0 / 3, 1, true));
+  check::example("triangles_by_intervals", "planes cross, intervals apart: [0, 3] and [-20/3, -4]",
+                 TrianglePair{kFloor, {{1, -4, -2}, {1, -4, 2}, {1, -8, 1}}}, expect(1, 0, 3, -20.0 / 3, -4, false));
+  check::example("triangles_by_intervals", "ends that touch: [0, 3] and [-8/3, 0] share y = 0",
+                 TrianglePair{kFloor, {{1, 0, -2}, {1, 0, 2}, {1, -4, 1}}}, expect(1, 0, 3, -8.0 / 3, 0, true));
+  // t1 in the plane 2x + y = 3: n1 = (14, 7, 0), D = (-112, 224, 0): read on y, not x.
+  check::example("triangles_by_intervals", "a slanted plane: D = (-112, 224, 0), read on y: [0, 3] and [-1/3, 2]",
+                 TrianglePair{kFloor, {{1, 1, -2}, {0, 3, 2}, {2, -1, 1}}}, expect(1, 0, 3, -1.0 / 3, 2, true));
+}
+
+TEST_CASE("L03S4 the lecture's interval method: random cases", "[lab03][step4][oracle]") {
+  check::random_cases("triangles_by_intervals", gen::crossing_triangle_pair(), [](const TrianglePair& in) {
+    return judge::triangles_by_intervals(in, triangles_by_intervals(in.t0, in.t1));
+  });
+}
+
 TEST_CASE("L03S4 triangle against triangle: worked examples", "[lab03][step4]") {
   const auto expect = [](bool intersecting) {
     return [intersecting](const TrianglePair& in) {
@@ -480,6 +515,8 @@ TEST_CASE("L03 preconditions: invalid input is rejected, naming the argument", "
     t.v1.z() = x;
     rejects("t0.v1", [&] { test_triangles(t, kFloor); });
     rejects("t1.v1", [&] { test_triangles(kFloor, t); });
+    rejects("t0.v1", [&] { triangles_by_intervals(t, kFloor); });
+    rejects("t1.v1", [&] { triangles_by_intervals(kFloor, t); });
     rejects("velocity_a", [&] { test_moving_boxes(good, {x, 0, 0}, good, {0, 0, 0}, 1); });
     rejects("velocity_b", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, x}, 1); });
     rejects("duration", [&] { test_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, x); });

@@ -570,6 +570,59 @@ rc::Gen<TrianglePair> triangle_pair() {
       {{7, families}, {1, rc::gen::exec([families] { return far_triangles(*families); })}}));
 }
 
+// ---- The interval method's domain ------------------------------------------------------
+
+namespace {
+
+bool fat(const Triangle& t) {
+  const double longest = std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
+  return 100 * t.normal().norm() >= longest;  // smallest height >= longest edge / 100
+}
+
+// Every vertex of `of` at least `reach` off t's plane, on both sides of it.
+bool straddles_by(const Triangle& t, const Triangle& of, double reach) {
+  const Vec3 n = t.normal().normalized();
+  bool above = false, below = false;
+  for (int k = 0; k < 3; ++k) {
+    const double d = n.dot(of[k] - t.v0);
+    if (std::abs(d) < reach) return false;
+    (d > 0 ? above : below) = true;
+  }
+  return above && below;
+}
+
+}  // namespace
+
+bool in_interval_domain(const TrianglePair& p) {
+  const double reach = scale_of(p) / 100;
+  return fat(p.t0) && fat(p.t1) && straddles_by(p.t0, p.t1, reach) && straddles_by(p.t1, p.t0, reach);
+}
+
+rc::Gen<TrianglePair> crossing_triangle_pair() {
+  const rc::Gen<TrianglePair> families = rc::gen::suchThat(rc::gen::exec([] {
+    const Grid g = *grid(false);
+    const Triangle t0 = grid_triangle(g);
+    const Vec3 d1 = grid_direction(g), d2 = grid_direction(g);
+    if (*rc::gen::inRange(0, 3) == 0) {  // through a point inside t0
+      const Vec3 x = *point_in_triangle(t0);
+      return *rc::gen::element(TrianglePair{t0, {x + d1, x + d2, x - d1 - d2}}, TrianglePair{{x + d1, x + d2, x - d1 - d2}, t0});
+    }
+    // An edge of t1 through a point x of an edge of t0: both segments on the line of the
+    // planes end at x. Then t1 slides along that line by 2 to 16 times 1e-8 S (10 tol
+    // and more: outside the band where the check calls them ambiguous): two ends just
+    // apart, or just overlapping.
+    const int i = *rc::gen::inRange(0, 3);
+    const Vec3 x = eighths(t0[i], t0[(i + 1) % 3] - t0[i], *rc::gen::inRange(1, 8), Vec3::Zero(), 0);
+    Triangle t1{x + d1, x - (*rc::gen::inRange(1, 17) / 8.0) * d1, x + d2};
+    const Vec3 line = t0.normal().cross(t1.normal());
+    if (line.isZero()) return TrianglePair{t0, t1};  // rejected below
+    const double slide = *rc::gen::element(-1.0, 1.0) * *rc::gen::inRange(2, 17) * 1e-8 * scale_of(TrianglePair{t0, t1});
+    for (int k = 0; k < 3; ++k) t1[k] += slide * line.normalized();
+    return *rc::gen::element(TrianglePair{t0, t1}, TrianglePair{t1, t0});
+  }), in_interval_domain);
+  return with_scale_ends(families);  // not far from the origin: S/100 off the planes, S counting the offset
+}
+
 rc::Gen<TrianglePair> exact_triangle_pair() {
   return rc::gen::exec([] {
     const Grid g = *grid(true);

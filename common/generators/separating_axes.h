@@ -108,6 +108,12 @@ rc::Gen<BoxPair> box_pair();
 rc::Gen<BoxPair> exact_box_pair();
 
 rc::Gen<TrianglePair> triangle_pair();
+// The interval method's domain (lab 03 step 4, triangles_by_intervals): fat triangles
+// (smallest height >= 1/100 of the longest edge) crossing each other's planes, every
+// vertex at least S/100 off the other's plane; often with two interval ends just apart
+// or just overlapping (10 to 80 tol), and at every scale.
+rc::Gen<TrianglePair> crossing_triangle_pair();
+bool in_interval_domain(const TrianglePair& p);
 // Exactly degenerate triangle pairs on integer coordinates: through vertices and edges,
 // touching, coplanar, zero area.
 rc::Gen<TrianglePair> exact_triangle_pair();

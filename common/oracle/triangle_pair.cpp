@@ -82,6 +82,46 @@ double smallest_height(const Triangle& t) {
 
 }  // namespace
 
+namespace {
+
+// t's segment in the plane of `other`, exact: the two edges from the vertex alone on its
+// side, cut where they cross the plane. False when a vertex lies in it or all on one side.
+bool exact_interval(const Epeck::Triangle_3& t, const Epeck::Triangle_3& other, int k, double& low, double& high) {
+  int side[3];
+  for (int i = 0; i < 3; ++i) side[i] = sign_of(CGAL::orientation(other[0], other[1], other[2], t[i]));
+  if (side[0] == 0 || side[1] == 0 || side[2] == 0 || (side[0] == side[1] && side[1] == side[2])) return false;
+  const int p = side[0] == side[1] ? 2 : (side[0] == side[2] ? 1 : 0);
+  const Epeck::Plane_3 plane(other[0], other[1], other[2]);
+  double ends[2];
+  for (int e = 0; e < 2; ++e) {
+    const Epeck::Segment_3 edge(t[p], t[(p + 1 + e) % 3]);
+    const auto hit = CGAL::intersection(edge, plane);
+    const Epeck::Point_3* x = hit ? boost::get<Epeck::Point_3>(&*hit) : nullptr;
+    if (!x) return false;  // unreachable: the edge's ends are strictly on both sides
+    ends[e] = rounded((*x)[k]);
+  }
+  low = std::min(ends[0], ends[1]), high = std::max(ends[0], ends[1]);
+  return true;
+}
+
+}  // namespace
+
+TriangleIntervals triangle_intervals(const Triangle& t0, const Triangle& t1, int k) {
+  const Epeck::Triangle_3 a = exact(t0), b = exact(t1);
+  if (a.is_degenerate() || b.is_degenerate()) return {};
+  TriangleIntervals out;
+  if (!exact_interval(a, b, k, out.low0, out.high0) || !exact_interval(b, a, k, out.low1, out.high1)) return {};
+  out.crossing = true;
+  return out;
+}
+
+labkit::Vec3 planes_line_direction(const Triangle& t0, const Triangle& t1) {
+  const Epeck::Triangle_3 a = exact(t0), b = exact(t1);
+  const Epeck::Vector_3 n0 = CGAL::cross_product(a[1] - a[0], a[2] - a[0]);
+  const Epeck::Vector_3 n1 = CGAL::cross_product(b[1] - b[0], b[2] - b[0]);
+  return rounded_vector(CGAL::cross_product(n0, n1));
+}
+
 bool triangles_intersect(const Triangle& t0, const Triangle& t1) {
   const Epick::Triangle_3 a = fast(t0), b = fast(t1);
   if (a.is_degenerate() || b.is_degenerate()) return false;

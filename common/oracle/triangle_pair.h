@@ -21,6 +21,20 @@ bool triangles_intersect(const Triangle& t0, const Triangle& t1);
 //    height is below 2 eps can be flattened to zero area (then: no intersection);
 //  - a zero-area triangle (never intersecting) can gain area; it is in doubt when its
 //    segment or point comes within 2 eps of the other triangle.
+// The lecture's interval method (lab 03, step 4), exact: where each triangle meets the
+// other's plane, read on coordinate k of the line of the two planes, each end the exact
+// crossing point of an edge rounded once. crossing: every vertex strictly off the other's
+// plane and each triangle on both sides of it (otherwise the ends stay 0).
+struct TriangleIntervals {
+  bool crossing = false;
+  double low0 = 0.0, high0 = 0.0;  // t0's segment in t1's plane
+  double low1 = 0.0, high1 = 0.0;  // t1's segment in t0's plane
+};
+TriangleIntervals triangle_intervals(const Triangle& t0, const Triangle& t1, int k);
+// D = n0 x n1 with n = (v1 - v0) x (v2 - v0): the direction of the planes' line, exact
+// and rounded once.
+labkit::Vec3 planes_line_direction(const Triangle& t0, const Triangle& t1);
+
 bool triangle_pair_in_doubt(const Triangle& t0, const Triangle& t1, double delta);
 
 }  // namespace oracle

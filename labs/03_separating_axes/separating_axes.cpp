@@ -44,7 +44,14 @@ BoxContact find_boxes(const Box& a, const Box& b) {
   not_implemented("L03S3");
 }
 
-// L03S4: planes, sides, then the intervals on the common line; coplanar in 2D.
+// L03S4 (first): the lecture's method: the intervals on the line of the two planes.
+LineIntervals triangles_by_intervals(const Triangle& t0, const Triangle& t1) {
+  (void)t0;
+  (void)t1;
+  not_implemented("L03S4");
+}
+
+// L03S4: planes, sides, then the intervals' order by signs alone; coplanar in 2D.
 bool test_triangles(const Triangle& t0, const Triangle& t1) {
   (void)t0;
   (void)t1;

@@ -69,6 +69,7 @@
 //    numbered axis (within 1e-9, plus 1e-15 / |A_i x B_j| for an edge axis, whose
 //    direction rounding fixes only that well); depth is within tol of the exact depth
 //    along your axis; see step 3 for which axis.
+//  - Interval ends (step 4, triangles_by_intervals): within tol of the exact ends.
 //  - Moving boxes (step 5): times are checked on the boxes' positions at those times,
 //    not against the exact times (see step 5).
 #pragma once
@@ -124,6 +125,41 @@ struct BoxContact {
 BoxContact find_boxes(const Box& a, const Box& b);
 
 // ---- Step 4 (L03S4): triangle against triangle ---------------------------------------
+// First the lecture's method as it stands (triangles_by_intervals), then the test that
+// replaces it (test_triangles).
+
+// The lecture's interval method (lecture 003). n0, n1 are the normals
+// (v1 - v0) x (v2 - v0), and d_i = n . (v_i - v0) the signed volumes of one triangle's
+// vertices against the other's plane. When each triangle has vertices strictly on both
+// sides of the other's plane, each meets that plane in a segment, both segments lie on
+// the line of the two planes (direction D = n0 x n1), and the triangles intersect
+// exactly when the segments overlap. With p the vertex alone on its side, the segment's
+// ends are where edges p q and p r cross the plane, x = p + (q - p) d_p / (d_p - d_q).
+// The line is read on one coordinate, the one where |D_k| is largest (any coordinate
+// with D_k != 0 keeps the order along the line; the largest keeps it best).
+struct LineIntervals {
+  bool crossing = false;  // each triangle has vertices strictly on both sides of the other's
+                          // plane (every d_i != 0); false: the fields below stay 0 and -1
+  int axis = -1;          // k, the coordinate where |D_k| is largest (ties: either)
+  double low0 = 0.0;      // t0's segment in t1's plane, read on coordinate k: low0 <= high0
+  double high0 = 0.0;
+  double low1 = 0.0;      // t1's segment in t0's plane: low1 <= high1
+  double high1 = 0.0;
+  bool overlap = false;   // the intervals share a point (ends that touch count)
+};
+// Its domain (where it is checked, and where it is exact): both triangles with a smallest
+// height at least 1/100 of their longest edge, every vertex at least S/100 away from the
+// other's plane, on both sides. There its rounding moves each end by far less than tol,
+// the ends are checked within tol of the exact ones, and overlap must be the exact answer
+// (but on ambiguous input, as for test_triangles).
+// Outside it, it is not exact and not complete: a vertex in (or within rounding of) the
+// other's plane leaves p undefined or its sign noise, coplanar triangles give D = 0, nearly
+// parallel planes or needles make the ends ratios of rounding noise, and a zero-area
+// triangle has no plane. Each needs a case of its own, and every comparison of two
+// constructed ends can flip within rounding. That is why test_triangles replaces it:
+// it decides each comparison by the sign of one volume of input points, and never
+// builds an end.
+LineIntervals triangles_by_intervals(const Triangle& t0, const Triangle& t1);
 
 // Do the closed triangles intersect (coplanar ones included; see the rules above)?
 //

@@ -19,6 +19,7 @@
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 
 namespace labkit::lab03 {
@@ -253,6 +254,60 @@ BoxContact find_boxes(const Box& a, const Box& b) {
     }
   }
   return contact;
+}
+
+// ---- Step 4, first: the lecture's interval method, as the slides give it ---------------
+//
+//          p            d_p > 0         t1's plane meets t0 along the line L (direction
+//         / \                           D = n0 x n1); the edges p q and p r cross it at
+//   -----x---x-----     d = 0           x = p + (q - p) d_p / (d_p - d_q), read on the
+//       /     \                         coordinate k of the largest |D_k|: an interval.
+//      q-------r        d_q, d_r < 0    The same for t1 in t0's plane; overlap or not.
+//
+// Exact only where every ratio is well away from 0/0 and rounding (the header's domain):
+// the ends are built numbers, and two ends that (nearly) coincide compare by rounding.
+
+namespace {
+
+// One triangle's segment in the other's plane, on coordinate k. d holds the signed
+// volumes of t's vertices against that plane, all non-zero and not all of one sign.
+std::pair<double, double> interval_on_line(const Triangle& t, const double d[3], int k) {
+  // p: the vertex whose side the other two do not share.
+  const int p = (d[0] > 0) == (d[1] > 0) ? 2 : ((d[0] > 0) == (d[2] > 0) ? 1 : 0);
+  const int q = next(p), r = after_next(p);
+  // Similar triangles: the crossing splits edge p q in the ratio d_p : -d_q.
+  const double end_q = t[p][k] + (t[q][k] - t[p][k]) * (d[p] / (d[p] - d[q]));
+  const double end_r = t[p][k] + (t[r][k] - t[p][k]) * (d[p] / (d[p] - d[r]));
+  return {std::min(end_q, end_r), std::max(end_q, end_r)};  // the ends come in either order
+}
+
+// The signed volumes of `of`'s vertices against t's plane; false when one of them is 0
+// or all three share a sign (the lecture's method then has no segment to build).
+bool straddles(const Triangle& t, const Triangle& of, double d[3]) {
+  const Vec3 n = t.normal();
+  for (int i = 0; i < 3; ++i) d[i] = n.dot(of[i] - t.v0);
+  const bool zero = d[0] == 0 || d[1] == 0 || d[2] == 0;
+  const bool one_side = (d[0] > 0) == (d[1] > 0) && (d[1] > 0) == (d[2] > 0);
+  return !zero && !one_side;
+}
+
+}  // namespace
+
+LineIntervals triangles_by_intervals(const Triangle& t0, const Triangle& t1) {
+  require_triangle("triangles_by_intervals", "t0", t0);
+  require_triangle("triangles_by_intervals", "t1", t1);
+  LineIntervals out;
+  double d0[3], d1[3];  // t0's vertices against t1's plane, t1's against t0's
+  if (!straddles(t1, t0, d0) || !straddles(t0, t1, d1)) return out;  // no crossing segments
+  const Vec3 m = t0.normal().cross(t1.normal()).cwiseAbs();  // |D_k|, D = n0 x n1
+  // The coordinate that varies most along the line (never one where D_k = 0, which
+  // would read every point of the line as the same number).
+  out.axis = m.x() >= m.y() && m.x() >= m.z() ? 0 : (m.y() >= m.z() ? 1 : 2);
+  out.crossing = true;
+  std::tie(out.low0, out.high0) = interval_on_line(t0, d0, out.axis);
+  std::tie(out.low1, out.high1) = interval_on_line(t1, d1, out.axis);
+  out.overlap = out.low0 <= out.high1 && out.low1 <= out.high0;  // closed: touching ends overlap
+  return out;
 }
 
 //   Derivation (lecture 003, "narrow phase between triangles"). If neither triangle

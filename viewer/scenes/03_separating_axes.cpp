@@ -2,7 +2,7 @@
 //
 // A replay token's query picks the mode:
 //   two boxes        project_box, separated_on_axis, box_axis, test_boxes, find_boxes  steps 1-3
-//   two triangles    test_triangles                                                    step 4
+//   two triangles    triangles_by_intervals, test_triangles                            step 4
 //   moving boxes     test_moving_boxes, find_moving_boxes                              step 5
 // The student's answers are drawn in the colour of their verdict; the exact answers
 // (the toggle) are violet beside them.
@@ -31,7 +31,8 @@ const std::vector<Preset> kPresets = {
     {"edge-apart", "apart along A_0 x B_0 only: every face axis overlaps", nullptr, true, -20, 20, 2},
     {"projection", "the projections onto x: radius 5 (0.6) + 2.5 (0.8) = 5, apart as 7 > 1 + 5", nullptr, true, -90, 80, 1},
     {"near-parallel", "B turned by 2^-54: the tiny axis A_0 x B_0 must not separate", nullptr},
-    {"triangles", "crossing triangles: the intervals [0, 3] and [-3, 1] overlap on the common line", nullptr, true, -50, 25, 4},
+    {"triangles", "crossing triangles: t1's vertex t1.v2 lies in t0's plane; they intersect", nullptr, true, -50, 25, 4},
+    {"intervals", "the lecture's intervals on the line of the planes (read on y): t0 [0, 3], t1 [-5/3, 1] overlap", nullptr, true, -8, 38, 4},
     {"coplanar", "coplanar triangles sharing the long edge", nullptr},
     {"plate", "through a thin plate within one step: contact from 0.46875 to 0.53125", nullptr, true, -70, 30, 5},
     {"corner", "past a corner: only W x A_2 separates the swept boxes", nullptr, true, -90, 80, 5},
@@ -90,6 +91,7 @@ class SeparatingAxesScene : public Scene {
   void update_moving();
   void draw_box(Renderer& r, const Box& b, Color c, float alpha, float width = 2) const;
   void draw_projection(Frame& f) const;
+  void draw_line_intervals(Frame& f) const;
 
   Mode mode_ = Mode::boxes;
   Box a_ = make_box({0, 0, 0}, {1, 1, 1});
@@ -106,6 +108,7 @@ class SeparatingAxesScene : public Scene {
   Attempt<std::array<Vec3, 15>> axes_;
   Attempt<BoxContact> find_;
   Attempt<ContactInterval> interval_;
+  Attempt<LineIntervals> line_;
   bool exact_intersect_ = false;
   int exact_index_ = -1;
   Vec3 exact_axis_ = Vec3::Zero();
@@ -128,6 +131,7 @@ void SeparatingAxesScene::preset(const std::string& name) {
     a_ = cube, b_ = make_box({0, 1.75, 0}, {1, 1, 1}, tilted), axis_ = Vec3::UnitY();
   }
   if (name == "triangles") mode_ = Mode::triangles;
+  if (name == "intervals") mode_ = Mode::triangles, t1_ = {{1, 1, -2}, {1, 1, 2}, {1, -3, 1}};
   if (name == "coplanar") mode_ = Mode::triangles, t1_ = {{4, 0, 0}, {4, 4, 0}, {0, 4, 0}};
   if (name == "plate") {
     mode_ = Mode::moving;
@@ -157,7 +161,7 @@ SeparatingAxesScene::SeparatingAxesScene(const Setup& setup) {
     } else if (q == "box_axis" || q == "test_boxes" || q == "find_boxes" || q == "robust.boxes") {
       const auto in = input_from_token<BoxPair>(token);
       a_ = in.a, b_ = in.b;
-    } else if (q == "test_triangles" || q == "robust.triangles") {
+    } else if (q == "test_triangles" || q == "triangles_by_intervals" || q == "robust.triangles") {
       const auto in = input_from_token<TrianglePair>(token);
       mode_ = Mode::triangles, t0_ = in.t0, t1_ = in.t1;
     } else if (q == "test_moving_boxes" || q == "find_moving_boxes" || q == "robust.moving_boxes" ||
@@ -165,8 +169,8 @@ SeparatingAxesScene::SeparatingAxesScene(const Setup& setup) {
       const auto in = input_from_token<MovingBoxes>(token);
       mode_ = Mode::moving, a_ = in.a, va_ = in.velocity_a, b_ = in.b, vb_ = in.velocity_b, duration_ = in.duration;
     } else {
-      throw unknown_query("03", q, "project_box, separated_on_axis, box_axis, test_boxes, find_boxes, test_triangles, "
-                                   "test_moving_boxes, find_moving_boxes");
+      throw unknown_query("03", q, "project_box, separated_on_axis, box_axis, test_boxes, find_boxes, "
+                                   "triangles_by_intervals, test_triangles, test_moving_boxes, find_moving_boxes");
     }
   }
   angles_a_ = angles_of(a_.axes), angles_b_ = angles_of(b_.axes);
@@ -265,9 +269,24 @@ void SeparatingAxesScene::update_boxes() {
 
 void SeparatingAxesScene::update_triangles() {
   const TrianglePair in{t0_, t1_};
+  // The lecture's intervals (graded on their domain only), then the sign-based test.
+  line_ = attempt([&] { return triangles_by_intervals(t0_, t1_); });
   tri_ = attempt([&] { return test_triangles(t0_, t1_); });
-  Step s = judged("L03S4", "test_triangles", tri_, [&](bool got) { return judge::test_triangles(in, got); });
-  s.rows = {{"intersect", tri_ ? yes(*tri_) : "", yes(oracle::triangles_intersect(t0_, t1_))}};
+  Step s = judged("L03S4", "triangles_by_intervals, test_triangles", tri_, [&](bool got) { return judge::test_triangles(in, got); });
+  const Step by_intervals =
+      judged("", "", line_, [&](const LineIntervals& got) { return judge::triangles_by_intervals(in, got); });
+  s.verdict = worse(s.verdict, by_intervals.verdict);
+  if (s.note.empty()) s.note = by_intervals.note;
+  const auto interval = [](double low, double high) { return "[" + num(low) + ", " + num(high) + "]"; };
+  const bool domain = gen::in_interval_domain(in);
+  const int k = line_ && line_->crossing ? line_->axis : 0;
+  const oracle::TriangleIntervals exact = oracle::triangle_intervals(t0_, t1_, k);
+  const auto& l = line_;
+  s.rows = {{"intervals: crossing, axis", l ? yes(l->crossing) + ", " + std::to_string(l->axis) : "",
+             yes(exact.crossing) + (domain ? "" : " (outside the method's domain)")},
+            {"t0 in t1's plane", l && l->crossing ? interval(l->low0, l->high0) : "", exact.crossing ? interval(exact.low0, exact.high0) : ""},
+            {"t1 in t0's plane", l && l->crossing ? interval(l->low1, l->high1) : "", exact.crossing ? interval(exact.low1, exact.high1) : ""},
+            {"intersect", tri_ ? yes(*tri_) : "", yes(oracle::triangles_intersect(t0_, t1_))}};
   verdict_[4] = s.verdict;
   steps.push_back(s);
 }
@@ -312,17 +331,26 @@ void SeparatingAxesScene::draw_projection(Frame& f) const {
   const double n = axis_.norm();
   if (n == 0) return;
   const Vec3 u = axis_ / n;
-  const Vec3 side = (std::abs(u.z()) < 0.9 ? u.cross(Vec3::UnitZ()) : u.cross(Vec3::UnitX())).normalized();
+  // Beside the boxes as seen: across L in the picture (perpendicular to L and to the view).
+  Vec3 side = r.view().forward.cast<double>().cross(u);
+  if (side.norm() < 0.2) side = std::abs(u.z()) < 0.9 ? u.cross(Vec3::UnitZ()) : u.cross(Vec3::UnitX());
+  side.normalize();
   const Vec3 base = side * (0.8 * radius) + center - u * u.dot(center);
   r.line(base - 1.6 * radius * u, base + 1.6 * radius * u, palette::muted, 1.5f);
   r.label(base + 1.6 * radius * u, "L", palette::muted);
   const Color c = colour(verdict_[1]);
   const auto interval = [&](const Attempt<Projection>& p, const Box& b, double lift, const char* name) {
-    const Vec3 up = side.cross(u) * lift;
+    const Vec3 up = -side * lift;  // between the line and the boxes
     if (p) {
       const double lo = (p->center - p->radius) / n, hi = (p->center + p->radius) / n;
       r.line(base + up + lo * u, base + up + hi * u, c, 5);
-      r.label(base + up + hi * u, name, c);
+      r.label(base + up + hi * u, std::string(name) + " [" + num(lo) + ", " + num(hi) + "]", c);
+      // The two corners that project to the ends, and their projectors.
+      for (const double end : {-1.0, 1.0}) {
+        Vec3 corner = b.center;
+        for (int k = 0; k < 3; ++k) corner += end * (b.axes.col(k).dot(u) >= 0 ? 1 : -1) * b.half_extents[k] * b.axes.col(k);
+        r.dashed(corner, base + up + corner.dot(u) * u, palette::muted, 1.0f, 5.0f);
+      }
     }
     if (f.show_exact) {
       const oracle::BoxProjection e = oracle::box_projection(b, axis_);
@@ -332,7 +360,54 @@ void SeparatingAxesScene::draw_projection(Frame& f) const {
   };
   interval(proj_a_, a_, 0.08 * radius, "A");
   interval(proj_b_, b_, 0.16 * radius, "B");
-  if (separated_) r.label(base, *separated_ ? "separated along L" : "overlapping along L", c, 8, 14);
+  if (proj_a_ && proj_b_) {
+    // The gap between the intervals (or their overlap), on the line itself.
+    const bool b_after = proj_b_->center >= proj_a_->center;
+    const Projection& first = b_after ? *proj_a_ : *proj_b_;
+    const Projection& second = b_after ? *proj_b_ : *proj_a_;
+    const double from = (first.center + first.radius) / n, to = (second.center - second.radius) / n;
+    r.line(base + from * u, base + to * u, c, 7);
+    r.point(base + from * u, c, 4), r.point(base + to * u, c, 4);
+    const std::string verdict = separated_ ? (*separated_ ? ": separated along L" : ": not separated along L") : "";
+    r.label(base + 0.5 * (from + to) * u, (from < to ? "gap " + num(to - from) : "overlap " + num(from - to)) + verdict, c, 8, 18);
+  }
+}
+
+// Step 4, the lecture's method: the line of the two planes, and on it each triangle's
+// interval from the student's triangles_by_intervals, drawn a little inside its own
+// triangle (t0's in t0's plane, t1's in t1's) so that both show where they overlap.
+void SeparatingAxesScene::draw_line_intervals(Frame& f) const {
+  if (!line_ || !line_->crossing || line_->axis < 0 || line_->axis > 2) return;
+  Renderer& r = f.render;
+  const Vec3 n0 = t0_.normal(), n1 = t1_.normal(), D = n0.cross(n1);
+  const int k = line_->axis;
+  if (D[k] == 0) return;
+  // A point of both planes: n0 . x = h0, n1 . x = h1.
+  const double h0 = n0.dot(t0_.v0), h1 = n1.dot(t1_.v0);
+  const Vec3 origin = (h0 * n1.cross(D) + h1 * D.cross(n0)) / D.squaredNorm();
+  const auto at = [&](double value) -> Vec3 { return origin + (value - origin[k]) / D[k] * D; };
+  const double lo = std::min(line_->low0, line_->low1), hi = std::max(line_->high0, line_->high1);
+  const double pad = 0.25 * (hi - lo) + 1e-12;
+  const char* coordinate[] = {"x", "y", "z"};
+  r.dashed(at(lo - pad), at(hi + pad), palette::muted, 1.5f);
+  r.label(at(hi + pad), std::string("line of the planes, read on ") + coordinate[k], palette::muted);
+  const Color c = colour(verdict_[4]);
+  const auto interval = [&](double low, double high, const Vec3& normal, const char* name, bool label_low) {
+    const Vec3 inside = D.cross(normal).normalized() * (0.06 * radius);
+    const Vec3 toward = (t0_.v0 + t0_.v1 + t0_.v2 + t1_.v0 + t1_.v1 + t1_.v2) / 6 - at(low);
+    const Vec3 shift = inside.dot(toward) < 0 ? Vec3(-inside) : inside;
+    r.line(at(low) + shift, at(high) + shift, c, 5);
+    r.point(at(low), c, 5), r.point(at(high), c, 5);
+    const std::string text = std::string(name) + " [" + num(low) + ", " + num(high) + "]";
+    r.label((label_low ? at(low) : at(high)) + 2 * shift, text, c, label_low ? -110 : 10, 0);
+  };
+  interval(line_->low0, line_->high0, n0, "t0", false);
+  interval(line_->low1, line_->high1, n1, "t1", true);
+  if (f.show_exact) {
+    const oracle::TriangleIntervals e = oracle::triangle_intervals(t0_, t1_, k);
+    for (const double v : {e.low0, e.high0, e.low1, e.high1})
+      if (e.crossing) r.ring(at(v), palette::exact, 8);
+  }
 }
 
 void SeparatingAxesScene::draw(Frame& f) {
@@ -344,13 +419,38 @@ void SeparatingAxesScene::draw(Frame& f) {
     const Color c = tri_ ? colour(verdict_[4]) : palette::surface;
     r.triangle(t0_.v0, t0_.v1, t0_.v2, palette::surface.with_alpha(0.6f));
     r.triangle(t1_.v0, t1_.v1, t1_.v2, palette::input.with_alpha(0.45f));
+    // The header's names, t0.v0 ... t1.v2, and where each triangle straddles the other's
+    // plane, the vertex roles of the text: p alone on its side, then q and r.
+    // (The header's rule: p alone on its side, q and r on the other side or in the plane;
+    // or p in the plane and q, r strictly on one side.)
+    const auto sides = [](const Triangle& t, const Triangle& other, int side[3]) {
+      for (int i = 0; i < 3; ++i) side[i] = oracle::orientation(other.v0, other.v1, other.v2, t[i]);
+      const bool one_side = (side[0] > 0 && side[1] > 0 && side[2] > 0) || (side[0] < 0 && side[1] < 0 && side[2] < 0);
+      return !one_side && (side[0] != 0 || side[1] != 0 || side[2] != 0);
+    };
+    const auto roles = [](const int side[3], std::string names[3]) {
+      for (int k = 0; k < 3; ++k)
+        for (const int flip : {1, -1}) {
+          const int p = flip * side[k], q = flip * side[(k + 1) % 3], r = flip * side[(k + 2) % 3];
+          if (p >= 0 && q <= 0 && r <= 0 && (p > 0 || (q < 0 && r < 0))) {
+            names[k] += " = p", names[(k + 1) % 3] += " = q", names[(k + 2) % 3] += " = r";
+            return;
+          }
+        }
+    };
+    std::string n0[3], n1[3];
+    for (int i = 0; i < 3; ++i) n0[i] = "t0.v" + std::to_string(i), n1[i] = "t1.v" + std::to_string(i);
+    int s0[3], s1[3];
+    if (t0_.normal() != Vec3::Zero() && t1_.normal() != Vec3::Zero() && sides(t0_, t1_, s0) && sides(t1_, t0_, s1))
+      roles(s0, n0), roles(s1, n1);
     for (int i = 0; i < 3; ++i) {
       r.line(t0_[i], t0_[(i + 1) % 3], palette::surface, 2);
       r.line(t1_[i], t1_[(i + 1) % 3], c, 2.5f);
-      r.label(t0_[i], "p" + std::to_string(i), palette::muted);
-      r.label(t1_[i], "q" + std::to_string(i), palette::muted);
+      r.label(t0_[i], n0[i], palette::surface);
+      r.label(t1_[i], n1[i], palette::input);
     }
-    if (tri_) r.label((t1_.v0 + t1_.v1 + t1_.v2) / 3, *tri_ ? "intersect" : "apart", c, 12, 0);
+    draw_line_intervals(f);
+    if (tri_) r.label((t1_.v0 + t1_.v1 + t1_.v2) / 3, *tri_ ? "intersect" : "apart", c, 12, 34);
     if (f.show_exact && oracle::triangles_intersect(t0_, t1_))
       r.ring((t0_.v0 + t0_.v1 + t0_.v2) / 3, palette::exact, 9);  // violet: they do intersect
     return;
@@ -379,7 +479,7 @@ void SeparatingAxesScene::draw(Frame& f) {
   draw_box(r, a_, palette::surface, 0.35f);
   draw_box(r, b_, palette::input, 0.2f);
   r.label(a_.center, "A", palette::surface), r.label(b_.center, "B", palette::input);
-  if (f.shows(1)) draw_projection(f);
+  if (f.shows(1) || f.shows(2) || f.shows(3)) draw_projection(f);  // steps 2 and 3 work on these intervals too
   if (find_ && f.shows(3)) {
     const Color c = colour(verdict_[3]);
     const double len = std::max(std::abs(find_->depth), 0.3 * radius);
@@ -395,8 +495,8 @@ void SeparatingAxesScene::draw(Frame& f) {
 bool SeparatingAxesScene::inputs() {
   bool changed = false;
   if (mode_ == Mode::triangles) {
-    for (int i = 0; i < 3; ++i) changed |= edit(("p" + std::to_string(i)).c_str(), t0_[i]);
-    for (int i = 0; i < 3; ++i) changed |= edit(("q" + std::to_string(i)).c_str(), t1_[i]);
+    for (int i = 0; i < 3; ++i) changed |= edit(("t0.v" + std::to_string(i)).c_str(), t0_[i]);
+    for (int i = 0; i < 3; ++i) changed |= edit(("t1.v" + std::to_string(i)).c_str(), t1_[i]);
     return changed;
   }
   changed |= edit("A centre", a_.center) | edit("A half extents", a_.half_extents);
@@ -414,7 +514,8 @@ bool SeparatingAxesScene::inputs() {
 
 std::vector<Handle> SeparatingAxesScene::handles() {
   if (mode_ == Mode::triangles)
-    return {{&t0_.v0, "p0"}, {&t0_.v1, "p1"}, {&t0_.v2, "p2"}, {&t1_.v0, "q0"}, {&t1_.v1, "q1"}, {&t1_.v2, "q2"}};
+    return {{&t0_.v0, "t0.v0"}, {&t0_.v1, "t0.v1"}, {&t0_.v2, "t0.v2"},
+            {&t1_.v0, "t1.v0"}, {&t1_.v1, "t1.v1"}, {&t1_.v2, "t1.v2"}};
   return {{&a_.center, "A"}, {&b_.center, "B"}};
 }
 
