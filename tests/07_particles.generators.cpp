@@ -404,6 +404,24 @@ rc::Gen<CollideCase> collide_case(bool decided) {
     const double size = std::max(largest(along), 1e-300);
     out.velocity = *rc::gen::weightedOneOf<Vec3>(
         {{3, rc::gen::just(along)}, {1, rc::gen::map(gen::lattice_point(size / 4, 4), [along](const Vec3& d) { return Vec3(along + d); })}});
+    // A moving scene: the drawn step is the relative one, a' -> b, as the scene sees it.
+    // The world's a is a' - u dt: the scene carries it back to a' (rounding moves a' by
+    // about 1e-16 S, far inside the 1e-9 S the decisive families keep from the band).
+    // Either the surfaces and the particle both move (u dt up to twice the step), or a
+    // particle at rest (a = b) is struck by the scene (u dt = a' - b).
+    const int motion = *rc::gen::weightedOneOf<int>({{4, rc::gen::just(0)}, {2, rc::gen::just(1)}, {1, rc::gen::just(2)}});
+    const Vec3 relative = out.velocity;
+    if (motion == 1) {
+      const double reach = std::max(largest(c.step.b - c.step.a), 0x1p-20 * std::max(largest(c.step.a), 1e-300));
+      const Vec3 carried = *dyadic(1, 16, 3) * reach * *unit_vector();
+      out.scene.velocity = carried / out.dt;
+      out.step.a = c.step.a - carried;
+      out.velocity = relative + out.scene.velocity;
+    } else if (motion == 2 && c.step.a != c.step.b) {
+      out.scene.velocity = (c.step.a - c.step.b) / out.dt;
+      out.step.a = c.step.b;
+      out.velocity = relative + out.scene.velocity;  // at rest, or the integrator's small change
+    }
     return out;
   });
 }
