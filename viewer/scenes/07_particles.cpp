@@ -250,11 +250,14 @@ void ParticlesScene::frame_inputs() {
     const double reach = launch_.speed * launch_.speed / std::max(launch_.gravity.norm(), 1e-9);
     box.extend(launch_.from - launch_.gravity.normalized() * std::min(reach / 2, 2 * (launch_.target - launch_.from).norm()));
   } else {
-    box.extend(one_.step.a), box.extend(one_.step.b), box.extend(one_.step.a + one_.scene.velocity * one_.dt);
+    // A moving scene: also where it carries a (a') and where its surfaces start the step.
+    const Vec3 carried = one_.scene.velocity * one_.dt;
+    box.extend(one_.step.a), box.extend(one_.step.b), box.extend(one_.step.a + carried), box.extend(one_.step.b - carried);
     for (const Vec3& v : one_.scene.mesh.vertices) box.extend(v);
   }
   center = box.center();
   radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
+  if (mode_ == Mode::step && one_.scene.velocity != Vec3::Zero()) radius *= 1.3;  // room for a' above the legend
 }
 
 // ---- update --------------------------------------------------------------------------
@@ -473,9 +476,11 @@ void ParticlesScene::draw_surfaces(Renderer& r) const {
       if (length == 0) continue;
       const Vec3 n = p.normal / length, foot = center - (p.value(center) / length) * n + back;
       const Vec3 u = n.unitOrthogonal(), w = n.cross(u);
-      r.dashed(foot + size * (u + w), foot + size * (-u + w), palette::muted, 1);
-      r.dashed(foot + size * (u - w), foot + size * (-u - w), palette::muted, 1);
-      r.label(foot - size * 0.6 * u, "at the start", palette::muted);
+      const Vec3 q[4] = {foot + size * (u + w), foot + size * (-u + w), foot + size * (-u - w), foot + size * (u - w)};
+      r.triangle(q[0], q[1], q[2], palette::surface.with_alpha(0.08f));
+      r.triangle(q[0], q[2], q[3], palette::surface.with_alpha(0.08f));
+      for (int k = 0; k < 4; ++k) r.dashed(q[k], q[(k + 1) % 4], palette::muted, 1);
+      r.label(foot, "the surface at the start of the step", palette::muted, 10, 10);
     }
     for (std::size_t i = 0; i < scene.mesh.size(); ++i) {
       const Triangle t = scene.mesh.triangle(i);
@@ -572,9 +577,10 @@ void ParticlesScene::draw(Frame& f) {
           prev = p;
         }
         const Vec3 mid = in.from + s->velocity * (s->time / 2) + 0.125 * in.gravity * s->time * s->time;
-        char degrees[32];
-        std::snprintf(degrees, sizeof degrees, "%.3f deg", s->angle * 180 / M_PI);
-        r.label(mid, degrees, c);
+        char degrees[64];
+        std::snprintf(degrees, sizeof degrees, "%.3f deg, arrives at %.3f s", s->angle * 180 / M_PI, s->time);
+        if (s == &aim_->low) r.label(mid, degrees, c, -90, 22);  // below the flat arc, clear of the lobbed one
+        else r.label(mid, degrees, c);
         r.arrow(in.from, in.from + s->velocity * 0.15, c, 2);
       }
     } else if (aim_) {
