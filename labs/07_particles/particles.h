@@ -216,6 +216,9 @@ struct Aim {
 // The radicand is reported when x > 0 (it is (x^2 / v^4) D, negative when out of reach).
 // A target on the vertical through `from` (x = 0, the launch point itself included), zero
 // gravity, or zero speed: count 0, radicand 0.
+// The lecture's example: 25 m/s to a target 40 m away at the same height, g = 9.81: radicand
+// 969.30709504, angles 19.445 and 70.555 degrees (the lecture rounds them to 19.4 and 70.6),
+// times of flight 1.697 s and 4.806 s.
 Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity);
 
 // ---- Step 4 (L07S4): the particle's step as a segment against surfaces -------------
