@@ -404,6 +404,34 @@ rc::Gen<CollideCase> collide_case(bool decided) {
     const double size = std::max(largest(along), 1e-300);
     out.velocity = *rc::gen::weightedOneOf<Vec3>(
         {{3, rc::gen::just(along)}, {1, rc::gen::map(gen::lattice_point(size / 4, 4), [along](const Vec3& d) { return Vec3(along + d); })}});
+    // A moving scene: the drawn step is the relative one, a' -> b, as the scene sees it.
+    // The world's a is a' - u dt, chosen so that a + u dt (computed as the header says)
+    // gives a' back exactly: the relative step keeps the drawn step's exact degeneracies
+    // (a start exactly on a sheet, a step along a plane). Either the surfaces and the
+    // particle both move (u dt up to twice the step, on a grid of 2^-24 of the scale), or a
+    // particle at rest (a = b) is struck by the scene (u dt = a' - b). A draw whose
+    // rounding would move a' stays still.
+    const int motion = *rc::gen::weightedOneOf<int>({{4, rc::gen::just(0)}, {2, rc::gen::just(1)}, {1, rc::gen::just(2)}});
+    const Vec3 relative = out.velocity, start = c.step.a;
+    const auto carry = [&](const Vec3& world_a, const Vec3& u) {
+      if (world_a + u * out.dt != start) return false;  // a' would not come back exactly
+      out.step.a = world_a;
+      out.scene.velocity = u;
+      out.velocity = relative + u;
+      return true;
+    };
+    if (motion == 1) {
+      const double reach = std::max(largest(c.step.b - start), 0x1p-20 * std::max(largest(start), 1e-300));
+      const double grid = std::ldexp(1.0, std::ilogb(std::max(largest(start), reach)) - 24);
+      for (int attempt = 0; attempt < 8; ++attempt) {
+        Vec3 carried = *dyadic(1, 16, 3) * reach * *unit_vector();
+        for (int i = 0; i < 3; ++i) carried[i] = grid * std::round(carried[i] / grid);
+        const Vec3 u = carried / out.dt;
+        if (carry(start - u * out.dt, u)) break;
+      }
+    } else if (motion == 2 && start != c.step.b) {
+      carry(c.step.b, (start - c.step.b) / out.dt);
+    }
     return out;
   });
 }

@@ -52,6 +52,19 @@ labkit_mutant(07 particles NAME whole_step_after_bounce STEP 6 SAYS "remaining t
   FIND "remaining *= 1 - hit.t;"
   REPLACE "")
 
+# A moving scene (step 6): the three ways to leave its motion out.
+labkit_mutant(07 particles NAME collide_impulse_absolute_velocity STEP 6 SAYS "relative velocity" "v - u"
+  FIND "v = impulse(v, u, hit.normal, mass, scene.material).velocity;"
+  REPLACE "v = impulse(v, Vec3::Zero(), hit.normal, mass, scene.material).velocity;")
+
+labkit_mutant(07 particles NAME moving_surface_frozen STEP 6 SAYS "relative step" "a + u dt"
+  FIND "Segment piece = {step.a + u * dt, step.b};"
+  REPLACE "Segment piece = step;")
+
+labkit_mutant(07 particles NAME piece_moves_with_world_velocity STEP 6 SAYS "relative to the moving surfaces"
+  FIND "piece = {bounce.from, bounce.from + (v - u) * remaining};"
+  REPLACE "piece = {bounce.from, bounce.from + v * remaining};")
+
 labkit_mutant(07 particles NAME cap_off_by_one STEP 6 SAYS "bounce cap"
   FIND "if (c.bounces == cap) {  // one hit too many: stop here, at rest"
   REPLACE "if (c.bounces == cap + 1 || c.bounces == kMaxBounceCap) {")

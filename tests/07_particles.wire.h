@@ -39,7 +39,7 @@ template <class V> void fields(Forces& f, V&& v) { v("gravity", f.gravity); v("d
 template <class V> void fields(Material& m, V&& v) { v("restitution", m.restitution); v("friction", m.friction); }
 template <class V> void fields(Scene& s, V&& v) {
   v("planes", s.planes); v("mesh", s.mesh); v("material", s.material); v("bounce_cap", s.bounce_cap);
-  v("mesh_query", s.mesh_query);
+  v("velocity", s.velocity); v("mesh_query", s.mesh_query);
 }
 template <class V> void fields(Collision& c, V&& v) {
   v("position", c.position); v("velocity", c.velocity); v("bounces", c.bounces); v("stopped", c.stopped);

@@ -101,7 +101,7 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
   not_implemented("L07S5");
 }
 
-// L07S6: bounce with the remaining time, up to the cap.
+// L07S6: bounce with the remaining time, up to the cap; a moving scene (scene.velocity) in its own frame.
 Collision collide(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene) {
   (void)step;
   (void)velocity;

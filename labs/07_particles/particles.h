@@ -25,8 +25,9 @@
 //
 // Surfaces. A Plane is the boundary of a solid half-space: the solid is behind it, where
 // n . x + c < 0, and it is hit only from the front (one-sided). The triangles of a mesh are
-// thin sheets, hit from either side (two-sided). The surfaces do not move; `impulse` alone
-// (step 5) also handles a moving object.
+// thin sheets, hit from either side (two-sided). A scene may move (Scene::velocity): all its
+// surfaces translate together at a constant velocity u during the step, like one rigid
+// object (a paddle, a lift), and are given where they are at the END of the step.
 //
 // Degenerate rules (step 4). A segment hits a plane when a is not behind it and b is:
 // value(a) >= 0 and value(b) < 0, with value(x) = n . x + c. A particle exactly on the plane
@@ -215,6 +216,9 @@ struct Aim {
 // The radicand is reported when x > 0 (it is (x^2 / v^4) D, negative when out of reach).
 // A target on the vertical through `from` (x = 0, the launch point itself included), zero
 // gravity, or zero speed: count 0, radicand 0.
+// The lecture's example: 25 m/s to a target 40 m away at the same height, g = 9.81: radicand
+// 969.30709504, angles 19.445 and 70.555 degrees (the lecture rounds them to 19.4 and 70.6),
+// times of flight 1.697 s and 4.806 s.
 Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity);
 
 // ---- Step 4 (L07S4): the particle's step as a segment against surfaces -------------
@@ -242,6 +246,10 @@ struct Scene {
   Mesh mesh;                  // two-sided triangles
   Material material;
   int bounce_cap = 4;         // 0 to kMaxBounceCap
+  // The surfaces' velocity u during the step (collide, step 6): all of them move together,
+  // and planes and mesh are given where they are at the end of the step. Zero: a still
+  // scene. first_hit and settle take the surfaces where they are (they ignore u).
+  Vec3 velocity = Vec3::Zero();
   // Optional: the first hit of a segment on the mesh under this step's rules, used by
   // first_hit instead of trying every triangle (for example through a k-d tree, lab 06).
   // The tests never set it.
@@ -275,7 +283,7 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
 
 struct Bounce {
   SurfaceHit hit;                // what was hit, where, and its normal (from first_hit)
-  Vec3 velocity = Vec3::Zero();  // the velocity after the impulse (zero for the stopping hit)
+  Vec3 velocity = Vec3::Zero();  // the velocity after the impulse (not set for the stopping hit)
   Vec3 from = Vec3::Zero();      // where the particle goes on from: the hit point (step 7:
                                  // settled, see there)
 };
@@ -286,19 +294,28 @@ struct Collision {
   int bounces = 0;               // impulses applied: trace[0 .. bounces)
   bool stopped = false;          // the cap was reached and the particle hit again:
                                  // trace[bounces] is that hit; it stops there, at rest
+                                 // on the surface (velocity: the scene's)
   std::array<Bounce, kMaxBounceCap + 1> trace;
 };
 
 // The particle moved along `step` (a -> b) during dt, and has `velocity` now (the
-// integrator's). Collision handling, as the lecture's "bouncing":
-//   piece 0 is the segment a -> b, with the remaining time r = dt;
+// integrator's). Collision handling, as the lecture's "bouncing", in the frame that moves
+// with the scene (u = scene.velocity; for a still scene that frame is the world):
+//   piece 0 is the relative step a' -> b with a' = a + u dt (computed as
+//   step.a + scene.velocity * dt), and the remaining time r = dt: the scene is given at the
+//   end of the step, and a, seen from the scene, was where the scene carries it in dt
+//   (lecture 004, "segment vs. moving mesh": test a'b against the object where it ends);
 //   on a piece from s to e with remaining time r: find the first hit (step 4); none: the
 //   particle ends at e. Else, at the hit x = s + t (e - s): apply the impulse of step 5
-//   (the scene is static: object velocity zero) to the velocity, and go on from x
-//   (`from`) with the remaining time (1 - t) r: the next piece is from -> from + v' (1 - t) r.
+//   against the moving surface, v' = impulse(v, u, normal, ...).velocity (it takes the
+//   relative velocity v - u), and go on from x (`from`) with the remaining time (1 - t) r,
+//   moving relative to the scene: the next piece is from -> from + (v' - u) (1 - t) r.
 //   After `scene.bounce_cap` impulses, a further hit stops the particle at that hit's
-//   point (its `from`), velocity zero, stopped = true.
-// The trace records each bounce, and the stopping hit.
+//   point (its `from`), at rest on the surface: velocity u, stopped = true.
+// The trace records each bounce, and the stopping hit: hits and `from` points in the
+// scene's frame (where the surfaces are at the end of the step), velocities in the world.
+// The end position is in both (the frames meet at the end of the step); the velocity is
+// the world's. A step of a = b with u != 0 is a particle at rest struck by the scene.
 Collision collide(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene);
 
 // ---- Step 7 (L07S7): never behind, exactly; the handling loop ----------------------
@@ -329,14 +346,16 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
 //
 // collide calls settle on every `from` (with that bounce's hit) and on its end position
 // (with the last hit, or none), so that:
-//  (1) if a is not behind any plane, the end position is not behind any plane;
+//  (1) if a' (a + u dt, above) is not behind any plane, the end position is not behind any plane;
 //  (2) every `from` is strictly in front of the surface hit there; and if the particle
 //      hit anything, it ends not behind the last surface it hit, on the side it came from
 //      (exactly on the surface counts as not behind);
-//  (3) for e <= 1, |v_end|^2 <= (1 + 1e-12) |v|^2: energy never grows in a bounce;
-//  (4) for e = 1 and mu = 0, unless stopped: | |v_end|^2 - |v|^2 | <= 1e-12 |v|^2.
+//  (3) for e <= 1, |v_end - u|^2 <= (1 + 1e-12) |v - u|^2: energy relative to the scene
+//      never grows in a bounce (a moving paddle may well speed a particle up in the world);
+//  (4) for e = 1 and mu = 0, unless stopped: | |v_end - u|^2 - |v - u|^2 | <= 1e-12 |v - u|^2.
 // (1) and (2) are checked exactly. (3) and (4) allow 1e-12 because each impulse rounds a
 // few times (about 1e-15 relative each); a real mistake changes the energy by far more.
+// With u != 0 they also allow the rounding of v_end - u: 1e-12 |v - u| |u| more.
 // (1) is why step 4 decides a's side of a plane with value(a)'s rounding bound: a
 // particle resting on a plane whose n . a + c rounds a hair below zero still hits it.
 Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last);
@@ -360,6 +379,8 @@ struct System {
   //     and bounces; with Verlet, after a bounce or a stop, previous = position - velocity dt
   //     (so that the next step goes on with the new velocity);
   //  3. age(particles, dt); time += dt.
+  // It does not move the scene: with scene.velocity != 0, the caller moves the surfaces to
+  // where they are at the end of each step before calling it.
   void step(double dt);
 };
 

@@ -111,6 +111,7 @@ void require_valid(const char* query, const Scene& scene) {
       require(v >= 0 && v < count, query, "scene.mesh.triangles[" + std::to_string(i) + "]",
               "must index vertices (0 to vertices.size() - 1)", double(v));
   require_valid(query, scene.material);
+  require_finite(query, "scene.velocity", scene.velocity);
   require(scene.bounce_cap >= 0 && scene.bounce_cap <= kMaxBounceCap, query, "scene.bounce_cap", "must be in [0, kMaxBounceCap]",
           double(scene.bounce_cap));
 }
@@ -413,6 +414,13 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
 // velocity within the step), apply the impulse there, move on for the time that is left,
 // and test that new path too. A particle in a crack could bounce forever in one step;
 // after the cap it stops where it hits next.
+//
+// A moving scene (all surfaces at velocity u, given where they end the step) is the same
+// loop in the frame that moves with it (lecture 004's "segment vs. moving mesh"): there the
+// surfaces stand still, the particle starts at a' = a + u dt (where the scene would have
+// carried a), and moves with the relative velocity v - u. Deciding against the surfaces
+// where they end the step keeps the end position exact-checkable against them, as for a
+// still scene.
 namespace {
 Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last);
 }  // namespace
@@ -424,8 +432,9 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
   require_positive("collide", "dt", dt);
   require_valid("collide", scene);
   const int cap = scene.bounce_cap;
+  const Vec3 u = scene.velocity;
   Collision c;
-  Segment piece = step;
+  Segment piece = {step.a + u * dt, step.b};  // the relative step: a carried by the scene, to b
   Vec3 v = velocity;
   double remaining = dt;
   SurfaceHit last;
@@ -438,13 +447,13 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
     if (c.bounces == cap) {  // one hit too many: stop here, at rest
       c.stopped = true;
       c.position = bounce.from;
-      c.velocity = Vec3::Zero();
+      c.velocity = u;  // at rest on the surface, which carries it
       return c;
     }
-    v = impulse(v, Vec3::Zero(), hit.normal, mass, scene.material).velocity;
+    v = impulse(v, u, hit.normal, mass, scene.material).velocity;  // against the moving surface: v - u
     bounce.velocity = v;
     remaining *= 1 - hit.t;
-    piece = {bounce.from, bounce.from + v * remaining};
+    piece = {bounce.from, bounce.from + (v - u) * remaining};  // relative to the scene
     last = hit;
     ++c.bounces;
   }

@@ -6,6 +6,9 @@
 //   target practice  aim, exact.aim: the two shots at a target        step 3
 //   one step         collide, invariants, first_hit, exact.first_hit, hit_plane:
 //                    one particle's step and its bounces               steps 4-7
+//                    (a moving scene, Scene::velocity u: the surfaces drawn where they
+//                    end the step and, faint, where they start it; the bounces in the
+//                    scene's frame from a' = a + u dt, and the world's path, dotted)
 // The fountain runs the handling loop of System::step itself, through the student's
 // functions one by one (births, emit, the integrator, collide, age), so that every
 // particle's step can be judged: a particle whose step breaks an invariant (behind a
@@ -20,6 +23,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 
 namespace viewer {
 namespace {
@@ -31,11 +35,13 @@ enum class Mode { fountain, target, step };
 
 const std::vector<Preset> kPresets = {
     {"fountain", "a fountain bouncing on a terrain: e = 0.6, mu = 0.2", nullptr, true, -50, 22},
-    {"target", "the lecture's target practice: 25 m/s, 40 m away: 19.4 and 70.6 degrees",
+    {"target", "the lecture's target practice: 25 m/s, 40 m away: 19.445 and 70.555 degrees",
      "aim:0,0,0,40,0,0,25,0,0,-9.81", true, -90, 2, 3},
     {"corner", "floor, then wall: two bounces in the remaining time (e = 1)", nullptr, true, -90, 2, 6},
     {"crack", "a crack between floor and ceiling: bounces up to the cap, then stops", nullptr, false, -90, 2, 6},
     {"dead", "a dead bounce (e = 0): the hit point is settled above the floor", nullptr, false, -90, 2, 7},
+    {"paddle", "a floor rising at u = (0, 0, 2) (e = 1/2): the bounce seen from the floor, from a' = a + u dt", nullptr, true,
+     -90, 2, 6},
 };
 
 // Rolling hills of 2 n^2 triangles over [-4, 4]^2, below z = 0.6.
@@ -170,6 +176,10 @@ CollideCase preset_step(const std::string& name) {
     c.scene.material = {1, 0};
     c.scene.bounce_cap = kMaxBounceCap;
     c.step = {{0.5, 0, 0.25}, {8.5, 0, -7.75}}, c.velocity = Vec3(8, 0, -8);
+  } else if (name == "paddle") {  // step 6's moving example: the floor rises at 2, at z = 0 when the step ends
+    c.scene.material = {0.5, 0};
+    c.scene.velocity = Vec3(0, 0, 2);
+    c.step = {{0, 0, 1}, {1, 0, -1}}, c.velocity = Vec3(1, 0, -2);
   } else {  // dead
     c.scene.material = {0, 0};
     c.step = {{0, 0, 0.1}, {1, 0, -0.7}}, c.velocity = Vec3(1, 0, -0.8);
@@ -240,11 +250,14 @@ void ParticlesScene::frame_inputs() {
     const double reach = launch_.speed * launch_.speed / std::max(launch_.gravity.norm(), 1e-9);
     box.extend(launch_.from - launch_.gravity.normalized() * std::min(reach / 2, 2 * (launch_.target - launch_.from).norm()));
   } else {
-    box.extend(one_.step.a), box.extend(one_.step.b);
+    // A moving scene: also where it carries a (a') and where its surfaces start the step.
+    const Vec3 carried = one_.scene.velocity * one_.dt;
+    box.extend(one_.step.a), box.extend(one_.step.b), box.extend(one_.step.a + carried), box.extend(one_.step.b - carried);
     for (const Vec3& v : one_.scene.mesh.vertices) box.extend(v);
   }
   center = box.center();
   radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
+  if (mode_ == Mode::step && one_.scene.velocity != Vec3::Zero()) radius *= 1.3;  // room for a' above the legend
 }
 
 // ---- update --------------------------------------------------------------------------
@@ -401,10 +414,14 @@ void ParticlesScene::update_target() {
 }
 
 void ParticlesScene::update_step(const CollideCase& in, int) {
-  const SegmentScene seg{in.step, in.scene};
-  first_ = attempt([&] { return first_hit(in.step, in.scene); });
-  exact_hit_ = exact_first_hit(in.step, in.scene);
-  Step s4 = judged("L07S4", "first_hit of the step a -> b", first_, [&](const SurfaceHit& got) { return judge::first_hit(seg, got); });
+  // A moving scene is tested in its own frame: the relative step a' -> b, a' = a + u dt.
+  const Vec3 u = in.scene.velocity;
+  const bool moving = u != Vec3::Zero();
+  const SegmentScene seg{{in.step.a + u * in.dt, in.step.b}, in.scene};
+  first_ = attempt([&] { return first_hit(seg.segment, in.scene); });
+  exact_hit_ = exact_first_hit(seg.segment, in.scene);
+  Step s4 = judged("L07S4", moving ? "first_hit of the relative step a' -> b" : "first_hit of the step a -> b", first_,
+                   [&](const SurfaceHit& got) { return judge::first_hit(seg, got); });
   const auto& f = first_;
   s4.rows = {{"hit", f ? (f->hit ? (f->plane >= 0 ? "plane " + std::to_string(f->plane) : "triangle " + std::to_string(f->triangle)) : "none") : "",
               exact_hit_.hit ? "yes" : "none"},
@@ -415,7 +432,7 @@ void ParticlesScene::update_step(const CollideCase& in, int) {
 
   // Step 5: the impulse at the first hit, with the exact normal of what was hit.
   if (exact_hit_.hit && f && f->hit) {
-    const ImpulseCase ic{in.velocity, Vec3::Zero(), f->normal, in.mass, in.scene.material};
+    const ImpulseCase ic{in.velocity, u, f->normal, in.mass, in.scene.material};
     impulse_ = attempt([&] { return impulse(ic.velocity, ic.object_velocity, ic.normal, ic.mass, ic.material); });
     Step s5 = judged("L07S5", "impulse at the first hit", impulse_, [&](const Impulse& got) { return judge::impulse(ic, got); });
     const oracle::Impulse e = oracle::impulse(ic.velocity, ic.object_velocity, ic.normal, ic.mass, ic.material.restitution,
@@ -440,7 +457,8 @@ void ParticlesScene::update_step(const CollideCase& in, int) {
   steps.push_back(s6);
   Step s7 = judged("L07S7", "invariants: never behind, energy", collision_,
                    [&](const Collision& got) { return judge::invariants(in, got); });
-  s7.rows = {{"|v|^2 before, after", collision_ ? num(in.velocity.squaredNorm()) + ", " + num(collision_->velocity.squaredNorm()) : "", ""}};
+  s7.rows = {{moving ? "|v - u|^2 before, after" : "|v|^2 before, after",
+              collision_ ? num((in.velocity - u).squaredNorm()) + ", " + num((collision_->velocity - u).squaredNorm()) : "", ""}};
   verdict_[7] = s7.verdict;
   steps.push_back(s7);
 }
@@ -450,6 +468,25 @@ void ParticlesScene::update_step(const CollideCase& in, int) {
 void ParticlesScene::draw_surfaces(Renderer& r) const {
   const lab07::Scene& scene = mode_ == Mode::fountain ? case_.scene : one_.scene;
   const double size = mode_ == Mode::fountain ? 5 : std::max(2.0, radius);
+  // A moving scene, where it starts the step: faint, u dt behind where it ends.
+  const Vec3 back = mode_ == Mode::step ? Vec3(-one_.scene.velocity * one_.dt) : Vec3(Vec3::Zero());
+  if (back != Vec3::Zero()) {
+    for (const Plane& p : scene.planes) {
+      const double length = p.normal.norm();
+      if (length == 0) continue;
+      const Vec3 n = p.normal / length, foot = center - (p.value(center) / length) * n + back;
+      const Vec3 u = n.unitOrthogonal(), w = n.cross(u);
+      const Vec3 q[4] = {foot + size * (u + w), foot + size * (-u + w), foot + size * (-u - w), foot + size * (u - w)};
+      r.triangle(q[0], q[1], q[2], palette::surface.with_alpha(0.08f));
+      r.triangle(q[0], q[2], q[3], palette::surface.with_alpha(0.08f));
+      for (int k = 0; k < 4; ++k) r.dashed(q[k], q[(k + 1) % 4], palette::muted, 1);
+      r.label(foot, "the surface at the start of the step", palette::muted, 10, 10);
+    }
+    for (std::size_t i = 0; i < scene.mesh.size(); ++i) {
+      const Triangle t = scene.mesh.triangle(i);
+      r.triangle(t.v0 + back, t.v1 + back, t.v2 + back, palette::surface.with_alpha(0.15f));
+    }
+  }
   for (const Plane& p : scene.planes) {  // a square patch of each plane around the scene's centre
     const double length = p.normal.norm();
     if (length == 0) continue;
@@ -470,9 +507,17 @@ void ParticlesScene::draw_surfaces(Renderer& r) const {
 
 void ParticlesScene::draw_collision(Frame& f, const CollideCase& in, const Attempt<Collision>& got) const {
   Renderer& r = f.render;
-  r.dashed(in.step.a, in.step.b, palette::muted, 1.5f);
+  // A moving scene: its frame's start a' = a + u dt, where the scene carries a (lecture 004).
+  const Vec3 u = in.scene.velocity, start = in.step.a + u * in.dt;
+  const bool moving = u != Vec3::Zero();
+  r.dashed(start, in.step.b, palette::muted, 1.5f);
   r.point(in.step.a, palette::input, 5);
   r.label(in.step.a, "a", palette::input), r.label(in.step.b, "b", palette::muted);
+  if (moving) {
+    r.arrow(in.step.a, start, palette::input, 1.5f);
+    r.label(0.5 * (in.step.a + start), "u dt", palette::input, 8, 0);
+    r.point(start, palette::input, 5), r.label(start, "a' = a + u dt", palette::input);
+  }
   if (f.shows(4) && first_ && first_->hit) {
     r.ring(first_->point, colour(verdict_[4]), 14, 2.5f);
     r.arrow(first_->point, first_->point + 0.15 * radius * first_->normal, colour(verdict_[4]), 2);
@@ -480,7 +525,7 @@ void ParticlesScene::draw_collision(Frame& f, const CollideCase& in, const Attem
   if (f.show_exact && exact_hit_.hit) r.ring(exact_hit_.point, palette::exact, 9);
   if (!got) return;
   const Color c = colour(worse(verdict_[6], verdict_[7]));
-  Vec3 from = in.step.a;
+  Vec3 from = start;
   const Collision& col = *got;
   const int used = std::min(col.bounces + (col.stopped ? 1 : 0), kMaxBounceCap + 1);
   for (int k = 0; k < used; ++k) {
@@ -493,6 +538,22 @@ void ParticlesScene::draw_collision(Frame& f, const CollideCase& in, const Attem
   r.line(from, col.position, c, 2.5f);
   r.point(col.position, c, 6);
   r.label(col.position, "end", c);
+  if (!moving) return;
+  // The world's path, dotted: a point of the scene's frame at time tau is u (dt - tau)
+  // ahead of where the particle was then.
+  Vec3 world = in.step.a;
+  double remaining = in.dt;
+  for (int k = 0; k < used; ++k) {
+    const Bounce& b = col.trace[std::size_t(k)];
+    const double elapsed = in.dt - remaining * (1 - b.hit.t);
+    const Vec3 there = b.from - u * (in.dt - elapsed);
+    r.dashed(world, there, palette::input, 1.5f);
+    r.point(there, palette::input, 4);
+    if (f.shows(6)) r.label(there, "the world's bounce " + std::to_string(k + 1), palette::input, 10, 10);
+    world = there;
+    remaining *= 1 - b.hit.t;
+  }
+  r.dashed(world, col.position, palette::input, 1.5f);  // stopped: it rides the surface
 }
 
 void ParticlesScene::draw(Frame& f) {
@@ -516,7 +577,10 @@ void ParticlesScene::draw(Frame& f) {
           prev = p;
         }
         const Vec3 mid = in.from + s->velocity * (s->time / 2) + 0.125 * in.gravity * s->time * s->time;
-        r.label(mid, num(s->angle * 180 / M_PI) + " deg", c);
+        char degrees[64];
+        std::snprintf(degrees, sizeof degrees, "%.3f deg, arrives at %.3f s", s->angle * 180 / M_PI, s->time);
+        if (s == &aim_->low) r.label(mid, degrees, c, -90, 22);  // below the flat arc, clear of the lobbed one
+        else r.label(mid, degrees, c);
         r.arrow(in.from, in.from + s->velocity * 0.15, c, 2);
       }
     } else if (aim_) {
@@ -556,7 +620,7 @@ bool ParticlesScene::inputs() {
   if (mode_ == Mode::step) {
     changed |= edit("a", one_.step.a) | edit("b", one_.step.b) | edit("velocity", one_.velocity) |
                edit("restitution", one_.scene.material.restitution, 0.01f, 0, 1) |
-               edit("friction", one_.scene.material.friction, 0.01f, 0, 2);
+               edit("friction", one_.scene.material.friction, 0.01f, 0, 2) | edit("scene velocity u", one_.scene.velocity);
     int cap = one_.scene.bounce_cap;
     if (ImGui::SliderInt("bounce cap", &cap, 0, kMaxBounceCap)) one_.scene.bounce_cap = cap, changed = true;
     return changed;
