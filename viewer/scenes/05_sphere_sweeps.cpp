@@ -87,7 +87,9 @@ void arc(Renderer& r, const Vec3& c, const Vec3& e1, const Vec3& e2, double radi
 
 // A capsule as a wire hull: the side's four lines, a ring at each end, and each end's
 // hemispherical cap (two half circles across it, facing outward).
-void capsule_hull(Renderer& r, const Segment& axis, double radius, Color hull, float width = 1.2f);
+// `across`: a direction across the axis to draw the side's lines along (default: any).
+void capsule_hull(Renderer& r, const Segment& axis, double radius, Color hull, float width = 1.2f,
+                  const Vec3& across = Vec3::Zero());
 
 void ball(Renderer& r, const Vec3& c, double radius, Color col, float width = 1.2f) {
   if (radius <= 0) return;
@@ -96,14 +98,17 @@ void ball(Renderer& r, const Vec3& c, double radius, Color col, float width = 1.
   circle(r, c, Vec3::UnitZ(), Vec3::UnitX(), radius, col, width);
 }
 
-void capsule_hull(Renderer& r, const Segment& axis, double radius, Color hull, float width) {
+void capsule_hull(Renderer& r, const Segment& axis, double radius, Color hull, float width, const Vec3& across) {
   if (radius <= 0) return;
   const Vec3 d = axis.b - axis.a;
   if (d == Vec3::Zero()) {
     ball(r, axis.a, radius, hull, width);
     return;
   }
-  const Vec3 along = d.normalized(), e1 = perpendicular(d), e2 = along.cross(e1).normalized();
+  const Vec3 along = d.normalized();
+  const Vec3 side = across - across.dot(along) * along;
+  const Vec3 e1 = side.norm() > 1e-9 * across.norm() && across != Vec3::Zero() ? Vec3(side.normalized()) : perpendicular(d);
+  const Vec3 e2 = along.cross(e1).normalized();
   for (const Vec3& end : {axis.a, axis.b}) circle(r, end, e1, e2, radius, hull, width);
   for (const Vec3& off : {e1, Vec3(-e1), e2, Vec3(-e2)}) r.line(axis.a + radius * off, axis.b + radius * off, hull, width);
   for (const Vec3& e : {e1, e2}) {
@@ -539,9 +544,9 @@ void SphereSweepsScene::draw_cores(Frame& f) const {
       if ((s < 0 || s > 1 || t < 0 || t > 1) && wrong > right * (1 + 1e-9) + 1e-12) {
         r.dashed(p, q, palette::disagree, 2.5f);
         r.point(p, palette::disagree, 4), r.point(q, palette::disagree, 4);
-        r.label(0.5 * (p + q), "clamped both: s = " + num(std::clamp(s, 0.0, 1.0)) + ", t = " + num(std::clamp(t, 0.0, 1.0)) +
-                                   ", d = " + num(wrong) + " (not the closest)",
-                palette::disagree, 10, 22);
+        r.label(q, "wrong, clamped: s = " + num(std::clamp(s, 0.0, 1.0)) + ", t = " + num(std::clamp(t, 0.0, 1.0)) +
+                       ", d = " + num(wrong),
+                palette::disagree, 12, -14);
       }
     }
   }
@@ -567,14 +572,20 @@ void SphereSweepsScene::draw_sweep(Frame& f) const {
     r.line(axis.a, axis.b, palette::surface, 2.5f);
     r.point(axis.a, palette::surface, 5), r.point(axis.b, palette::surface, 5);
     r.label(axis.a, "a", palette::surface), r.label(axis.b, "b", palette::surface);
-    capsule_hull(r, axis, capsule_.radius, palette::surface, 1.8f);
-    capsule_hull(r, axis, R, palette::muted.with_alpha(0.55f), 1.0f);
+    // Across the axis toward the sphere's start, so that a view along the motion's plane
+    // shows the side's lines, the slab's ends and the caps in profile.
     const Vec3 d = axis.b - axis.a;
+    Vec3 e1 = d == Vec3::Zero() ? Vec3::UnitY() : perpendicular(d);
     if (d != Vec3::Zero()) {
-      const Vec3 e1 = perpendicular(d);
-      r.label(axis.b + R * e1, "grown: R = r + rc = " + num(R), palette::muted, 8, -8);
+      const Vec3 off = (s0_.center - axis.a) - (s0_.center - axis.a).dot(d) / d.squaredNorm() * d;
+      if (off.norm() > 1e-9 * d.norm()) e1 = off.normalized();
+    }
+    capsule_hull(r, axis, capsule_.radius, palette::surface, 1.8f, e1);
+    capsule_hull(r, axis, R, palette::muted.with_alpha(0.8f), 1.2f, e1);
+    if (d != Vec3::Zero()) {
+      r.label(axis.a - R * e1, "grown capsule: R = r + rc = " + num(R), palette::muted, -40, 22);
       // The slab's end planes, across the grown capsule: the side counts only between them.
-      for (const Vec3& end : {axis.a, axis.b}) r.dashed(end - 1.6 * R * e1, end + 1.6 * R * e1, palette::muted, 1.2f);
+      for (const Vec3& end : {axis.a, axis.b}) r.dashed(end - 1.5 * R * e1, end + 1.5 * R * e1, palette::muted, 1.5f);
       // The side's root (the infinite cylinder's), when it falls outside the slab.
       const Vec3 m = s0_.center - axis.a, md = m.cross(d), vd = v0_.cross(d);
       const double qa = vd.squaredNorm(), qb = md.dot(vd), qc = md.squaredNorm() - R * R * d.squaredNorm();
@@ -584,7 +595,7 @@ void SphereSweepsScene::draw_sweep(Frame& f) const {
         const double along = (x - axis.a).dot(d) / d.squaredNorm();
         if (t <= duration_ && (along < 0 || along > 1)) {
           r.point(x, palette::disagree, 5);
-          r.label(x, "side's root t = " + num(t) + ": outside the slab", palette::disagree, 10, 14);
+          r.label(x, "cylinder's root t = " + num(t) + ": outside the slab", palette::disagree, 30, -6);
         }
       }
     }
