@@ -312,6 +312,75 @@ Facts facts(const SphereSphereMotion& in, const Sweep& got) {
   return f;
 }
 
+// A sphere against a static capsule, in doubles (words only): the distance from the
+// centre to the axis, the pieces' later roots, and the classic mistakes' times (the side's
+// root outside the slab, the capsule grown by one radius only, the caps left out).
+double axis_distance(const Capsule& k, const Vec3& x) {
+  const Vec3 d = k.axis.b - k.axis.a;
+  const double dd = d.squaredNorm();
+  const double t = dd > 0 ? std::clamp((x - k.axis.a).dot(d) / dd, 0.0, 1.0) : 0.0;
+  return (x - k.axis.a - t * d).norm();
+}
+
+Facts facts(const SphereCapsuleMotion& in, const Sweep& got) {
+  const Capsule k = in.capsule;
+  const Vec3 c = in.sphere.center, v = in.velocity, a = k.axis.a, d = k.axis.b - a;
+  const double r = in.sphere.radius, R = r + k.radius, dd = d.squaredNorm();
+  Facts f;
+  f.gap = [=](double t) { return axis_distance(k, c + t * v) - R; };
+  // The roots of |m + t v| = rho (an end sphere) and |(m + t v) x d| = rho |d| (the side).
+  const auto roots = [](double qa, double qb, double qc, double& first, double& later) {
+    const double disc = qb * qb - qa * qc;
+    if (!(qa > 0 && disc >= 0)) return false;
+    first = (-qb - std::sqrt(disc)) / qa;
+    later = (-qb + std::sqrt(disc)) / qa;
+    return true;
+  };
+  const auto side = [&](double rho, double& first, double& later) {
+    if (dd == 0) return false;
+    const Vec3 md = (c - a).cross(d), vd = v.cross(d);
+    return roots(vd.squaredNorm(), md.dot(vd), md.squaredNorm() - rho * rho * dd, first, later);
+  };
+  const auto cap = [&](const Vec3& end, double rho, double& first, double& later) {
+    const Vec3 m = c - end;
+    return roots(v.squaredNorm(), m.dot(v), m.squaredNorm() - rho * rho, first, later);
+  };
+  if (got.status != SweepStatus::contact || !std::isfinite(got.time)) return f;
+  const double t = got.time, S = std::max(scale(in), 1e-300);
+  const auto near = [&](double x) { return std::abs(x - t) <= 1e-6 * std::max({std::abs(x), std::abs(t), 1e-300}); };
+  double first = 0, later = 0;
+  // The later roots: of whichever piece's later root the answer matches.
+  for (int piece = 0; piece < 3; ++piece) {
+    const bool ok = piece == 0 ? side(R, first, later) : cap(piece == 1 ? a : k.axis.b, R, first, later);
+    if (ok && near(later)) f.later = later;
+  }
+  const Vec3 at = c + t * v;
+  const double to_line = dd > 0 ? (at - a).cross(d).norm() / std::sqrt(dd) : (at - a).norm();
+  const double along = dd > 0 ? (at - a).dot(d) / dd : 0.0;
+  const double dist = axis_distance(k, at);
+  if (dd > 0 && std::abs(to_line - R) <= 1e-6 * S && (along < -1e-9 || along > 1 + 1e-9) && dist > R + 1e-9 * S)
+    f.wrong_time = " (at your time the centre is R = r + rc from the axis's infinite line, but beyond the end " +
+                   std::string(along < 0 ? "a" : "b") + " (axial fraction " + fmt(along) +
+                   "): the side's root counts only inside the slab 0 <= (c(t) - a) . d <= d . d; beyond it, the "
+                   "end sphere (cap) decides)";
+  else if (R > 0 && (std::abs(dist - k.radius) <= 1e-6 * S || std::abs(dist - r) <= 1e-6 * S) && std::abs(dist - R) > 1e-6 * S)
+    f.wrong_time = " (at your time the centre is " + fmt(dist) + " from the axis: that is the capsule grown by one radius "
+                   "only; the Minkowski sum grows it by both, R = r + rc = " + fmt(R) + ")";
+  else {
+    // The first contact on a cap while the answer came later: the caps left out?
+    const double exact_first = oracle::first_contact(oracle::SphereCapsuleSweep{in.sphere, v, k}, in.duration);
+    if (exact_first >= 0 && t > exact_first) {
+      const Vec3 there = c + exact_first * v;
+      const double s = dd > 0 ? (there - a).dot(d) / dd : 0.0;
+      if (dd == 0 || s <= 1e-9 || s >= 1 - 1e-9)
+        f.wrong_time = " (the first contact is on the end cap at " + std::string(s <= 0.5 ? "a" : "b") +
+                       ": the grown capsule is the side and the two end spheres (caps) of radius R; did you leave out "
+                       "the caps?)";
+    }
+  }
+  return f;
+}
+
 // The status against the exact one, then a reported contact certified exactly: at its
 // time the gap is at most tol, before it never below -tol, and its point within tol of
 // both shapes. Ambiguous statuses get the slack of the doubt margin in those checks.
@@ -399,6 +468,10 @@ double scale(const SpherePlaneMotion& in) {
 }
 double scale(const SphereSphereMotion& in) {
   return largest({in.s0.center, in.s1.center, in.v0 * in.duration, in.v1 * in.duration}, {in.s0.radius, in.s1.radius});
+}
+double scale(const SphereCapsuleMotion& in) {
+  return largest({in.sphere.center, in.velocity * in.duration, in.capsule.axis.a, in.capsule.axis.b},
+                 {in.sphere.radius, in.capsule.radius});
 }
 double scale(const BoxPlaneMotion& in) {
   return largest({in.box.center, in.velocity * in.duration, in.box.half_extents}, {plane_distance(in.plane)});
@@ -496,6 +569,17 @@ Outcome sweep_sphere_sphere(const SphereSphereMotion& in, const Sweep& got, Rule
               "one; yours is off by a relative " + fmt(std::abs(got.time - exact) / exact) +
                   " (does your root formula cancel? -b - sqrt(b^2 - ac) subtracts nearly equal numbers when contact "
                   "comes very soon: use q = -b + sqrt(b^2 - ac), t = c / q)");
+}
+
+Outcome sweep_sphere_capsule(const SphereCapsuleMotion& in, const Sweep& got, Rules rules) {
+  const oracle::SphereCapsuleSweep m{in.sphere, in.velocity, in.capsule};
+  return sweep_verdict(m, in, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
+    if (oracle::within_moving_sphere(in.sphere, in.velocity, t, p, slack) && oracle::within_capsule(in.capsule, p, slack))
+      return std::string();
+    return "yours is " + fmt((p - in.sphere.center - t * in.velocity).norm()) + " from c(t) (r = " +
+           fmt(in.sphere.radius) + ") and " + fmt(axis_distance(in.capsule, p)) + " from the axis (rc = " +
+           fmt(in.capsule.radius) + "); the point is r / R of the way from c(t) to its nearest point of the axis";
+  });
 }
 
 Outcome sweep_box_plane(const BoxPlaneMotion& in, const Sweep& got, Rules rules) {

@@ -42,6 +42,7 @@ double scale(const SegmentRectanglePair& in);
 double scale(const RectanglePair& in);
 double scale(const SpherePlaneMotion& in);
 double scale(const SphereSphereMotion& in);
+double scale(const SphereCapsuleMotion& in);
 double scale(const BoxPlaneMotion& in);
 
 Outcome point_segment(const PointSegmentPair& in, const PointSegmentDistance& got);
@@ -59,6 +60,7 @@ Outcome test_pair(const LozengePair& in, bool got, Rules rules = Rules::random);
 
 Outcome sweep_sphere_plane(const SpherePlaneMotion& in, const Sweep& got, Rules rules = Rules::random);
 Outcome sweep_sphere_sphere(const SphereSphereMotion& in, const Sweep& got, Rules rules = Rules::random);
+Outcome sweep_sphere_capsule(const SphereCapsuleMotion& in, const Sweep& got, Rules rules = Rules::random);
 Outcome sweep_box_plane(const BoxPlaneMotion& in, const Sweep& got, Rules rules = Rules::random);
 
 // Step 3's inputs: the cores of the distance steps with radii chosen around their exact

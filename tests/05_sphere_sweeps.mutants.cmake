@@ -32,7 +32,7 @@ labkit_mutant(05 sphere_sweeps NAME one_lozenges_sides STEP 3 SAYS "the sides of
   FIND "for (int i = 0; i < 4; ++i)\n    if (segment_rectangle_within(side(b.rectangle, i), a.rectangle, r2)) return true;"
   REPLACE "")
 
-# Step 3 (the step 7 recipe read alone): (w . n)^2 <= R^2 |n|^2 for lines that are parallel
+# Step 3 (the step 8 recipe read alone): (w . n)^2 <= R^2 |n|^2 for lines that are parallel
 # only up to rounding, where the rounded n says nothing about their distance.
 labkit_mutant(05 sphere_sweeps NAME parallel_in_floating_point STEP 3 SAYS "nearly parallel" "measure the pair"
   FIND "  if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm()) return point_segment_within(point_at(s0, s / nn), s1, r2);\n"
@@ -78,12 +78,32 @@ labkit_mutant(05 sphere_sweeps NAME touching_not_overlapping STEP 5 SAYS "touchi
   FIND "if (c <= 0) return overlapping();  // touching or overlapping at t = 0"
   REPLACE "if (c < 0) return overlapping();")
 
-# Step 6: the projected radius without absolute values.
-labkit_mutant(05 sphere_sweeps NAME signed_projection STEP 6 SAYS "absolute value"
+# Step 6: the grown capsule without its caps: only the side's root (and the fallback).
+labkit_mutant(05 sphere_sweeps NAME forgotten_caps STEP 6 SAYS "caps"
+  FIND "                       first_time_sphere(sphere.center - axis.a, velocity, R2),\n                       first_time_sphere(sphere.center - axis.b, velocity, R2)});"
+  REPLACE "                       kInfinity});")
+
+# Step 6: the later root of the side (when the centre leaves the grown capsule).
+labkit_mutant(05 sphere_sweeps NAME capsule_later_root STEP 6 SAYS "later root"
+  FIND "  const double t = c / (-b + std::sqrt(disc));\n  // Clip to the slab"
+  REPLACE "  const double t = (-b + std::sqrt(disc)) / a;\n  // Clip to the slab")
+
+# Step 6: the infinite cylinder's root taken without clipping it to the slab.
+labkit_mutant(05 sphere_sweeps NAME unclipped_cylinder STEP 6 SAYS "slab"
+  FIND "return along >= 0 && along <= dd ? t : kInfinity;"
+  REPLACE "(void)along;\n  return t;")
+
+# Step 6: the capsule grown by its own radius only (the sphere's radius forgotten).
+labkit_mutant(05 sphere_sweeps NAME grown_by_one_radius STEP 6 SAYS "Minkowski"
+  FIND "const double R = sphere.radius + capsule.radius, R2 = square(R);"
+  REPLACE "const double R = capsule.radius, R2 = square(R);")
+
+# Step 7: the projected radius without absolute values.
+labkit_mutant(05 sphere_sweeps NAME signed_projection STEP 7 SAYS "absolute value"
   FIND "reach += box.half_extents[i] * std::abs(plane.normal.dot(box.axes.col(i)));"
   REPLACE "reach += box.half_extents[i] * plane.normal.dot(box.axes.col(i));")
 
-# Step 7: deciding on the constructed (rounded) distance instead of division-free products.
-labkit_mutant(05 sphere_sweeps NAME decide_on_rounded_distance STEP 7 SAYS "exact products"
+# Step 8: deciding on the constructed (rounded) distance instead of division-free products.
+labkit_mutant(05 sphere_sweeps NAME decide_on_rounded_distance STEP 8 SAYS "exact products"
   FIND "return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));"
   REPLACE "return segment_segment(a.axis, b.axis).squared_distance <= square(a.radius + b.radius);")

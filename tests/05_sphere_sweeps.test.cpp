@@ -45,6 +45,12 @@ Outcome run_rectangle_rectangle(const RectanglePair& in) {
 
 Sweep run(const SpherePlaneMotion& in) { return sweep_sphere_plane(in.sphere, in.velocity, in.plane, in.duration); }
 Sweep run(const SphereSphereMotion& in) { return sweep_sphere_sphere(in.s0, in.v0, in.s1, in.v1, in.duration); }
+Sweep run(const SphereCapsuleMotion& in) {
+  return sweep_sphere_capsule(in.sphere, in.velocity, in.capsule, in.duration);
+}
+Outcome run_sweep(const SphereCapsuleMotion& in, Rules rules = Rules::random) {
+  return judge::sweep_sphere_capsule(in, run(in), rules);
+}
 Sweep run(const BoxPlaneMotion& in) { return sweep_box_plane(in.box, in.velocity, in.plane, in.duration); }
 Outcome run_sweep(const SpherePlaneMotion& in, Rules rules = Rules::random) {
   return judge::sweep_sphere_plane(in, run(in), rules);
@@ -348,6 +354,38 @@ TEST_CASE("L05S5 moving sphere against a sphere: random cases", "[lab05][step5][
 // ---- Step 6 ------------------------------------------------------------------------
 
 namespace {
+using SC = SphereCapsuleMotion;
+// The handout's capsule: the axis (0, 0, 0)-(8, 0, 0), radius 1; the spheres have radius
+// 1 too, so the centre meets the capsule grown to R = 2.
+const Capsule kRod{{{0, 0, 0}, {8, 0, 0}}, 1};
+}  // namespace
+
+TEST_CASE("L05S6 moving sphere against a capsule: worked examples", "[lab05][step6]") {
+  const std::string q = "sweep_sphere_capsule";
+  check::example(q, "toward the side: 6 - 2t = R = 2 at t = 2 (it leaves at the later root, t = 4)",
+                 SC{{{4, 6, 0}, 1}, {0, -2, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 2, {4, 1, 0}));
+  check::example(q, "along the axis onto the cap at b: 4 - 2t = 2 at t = 1 (the side's quadratic has a = 0)",
+                 SC{{{12, 0, 0}, 1}, {-2, 0, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 1, {9, 0, 0}));
+  check::example(q, "beyond the end: the side's root t = 2 is outside the slab; the cap's: t = 3 - sqrt(3)/2",
+                 SC{{{9, 6, 0}, 1}, {0, -2, 0}, kRod, 4},
+                 expect_sweep<SC>(SweepStatus::contact, 3 - std::sqrt(3.0) / 2, {8.5, std::sqrt(3.0) / 2, 0}));
+  check::example(q, "passing 3 from the axis: misses", SC{{{4, 6, 3}, 1}, {0, -2, 0}, kRod, 4},
+                 expect_sweep<SC>(SweepStatus::none));
+  check::example(q, "not there by T = 1", SC{{{4, 6, 0}, 1}, {0, -2, 0}, kRod, 1}, expect_sweep<SC>(SweepStatus::none));
+  check::example(q, "sqrt(2) from b at t = 0: overlapping", SC{{{9, 1, 0}, 1}, {1, 0, 0}, kRod, 4},
+                 expect_sweep<SC>(SweepStatus::overlapping));
+  check::example(q, "a zero-length axis is a sphere: 5 - t = 2 at t = 3",
+                 SC{{{5, 0, 0}, 1}, {-1, 0, 0}, {{{0, 0, 0}, {0, 0, 0}}, 1}, 4},
+                 expect_sweep<SC>(SweepStatus::contact, 3, {1, 0, 0}));
+}
+
+TEST_CASE("L05S6 moving sphere against a capsule: random cases", "[lab05][step6][oracle]") {
+  check::random_cases("sweep_sphere_capsule", gen::sphere_capsule_motion(), [](const SC& in) { return run_sweep(in); });
+}
+
+// ---- Step 7 ------------------------------------------------------------------------
+
+namespace {
 using BP = BoxPlaneMotion;
 const Plane kGround{{0, 0, 1}, 0};
 // Turned about x: the axes (1, 0, 0), (0, 0.6, -0.8), (0, 0.8, 0.6).
@@ -358,7 +396,7 @@ Mat3 tilted() {
 }
 }  // namespace
 
-TEST_CASE("L05S6 moving box against a plane: worked examples", "[lab05][step6]") {
+TEST_CASE("L05S7 moving box against a plane: worked examples", "[lab05][step7]") {
   const std::string q = "sweep_box_plane";
   // The bottom face lands flat: every point of it touches, and the header accepts any.
   check::example(q, "an upright box falls: reach 3, contact at t = 2 (any point of the bottom face)",
@@ -384,14 +422,14 @@ TEST_CASE("L05S6 moving box against a plane: worked examples", "[lab05][step6]")
                  expect_sweep<BP>(SweepStatus::none));
 }
 
-TEST_CASE("L05S6 moving box against a plane: random cases", "[lab05][step6][oracle]") {
+TEST_CASE("L05S7 moving box against a plane: random cases", "[lab05][step7][oracle]") {
   check::random_cases("sweep_box_plane", gen::box_plane_motion(), [](const BP& in) { return run_sweep(in); });
 }
 
-// ---- Step 7: robustness --------------------------------------------------------------
+// ---- Step 8: robustness --------------------------------------------------------------
 // Exact degenerate input on small integers: the header's rules hold exactly.
 
-TEST_CASE("L05S7 robustness: parallel, touching, grazing: worked examples", "[lab05][step7]") {
+TEST_CASE("L05S8 robustness: parallel, touching, grazing: worked examples", "[lab05][step8]") {
   const std::string q = "robust.segment_segment";
   check::example(q, "collinear and overlapping: distance 0", SegmentPair{kAxis, {{2, 0, 0}, {7, 0, 0}}},
                  [](const SegmentPair& in) {
@@ -423,11 +461,20 @@ TEST_CASE("L05S7 robustness: parallel, touching, grazing: worked examples", "[la
   // (w . n)^2 <= R^2 |n|^2 alone says "meet" here; measure the pair itself instead.
   check::example("robust.test_capsule_lozenge", "an axis parallel to a flat lozenge in floating point, 532 apart",
                  input_from_token<CapsuleLozenge>(parse_token(kFlatLozengeToken)), expect_test<CapsuleLozenge>(false));
+  check::example("robust.sweep_sphere_capsule", "sliding exactly parallel to the axis, R from it: touches the cap at t = 2",
+                 SC{{{-4, 2, 0}, 1}, {2, 0, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 2, {0, 1, 0}));
+  check::example("robust.sweep_sphere_capsule", "starting exactly touching the side, moving away",
+                 SC{{{3, 0, 2}, 1}, {0, 0, 1}, kRod, 4}, expect_sweep<SC>(SweepStatus::overlapping));
+  check::example("robust.sweep_sphere_capsule", "an exact graze of the side at t = 1",
+                 SC{{{2, -1, 2}, 1}, {0, 1, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 1, {2, 0, 1}));
+  check::example("robust.sweep_sphere_capsule", "a zero-length capsule, reached exactly at T = 3",
+                 SC{{{0, 0, 5}, 1}, {0, 0, -1}, {{{0, 0, 0}, {0, 0, 0}}, 1}, 3},
+                 expect_sweep<SC>(SweepStatus::contact, 3, {0, 0, 1}));
   check::example("robust.sweep_box_plane", "a point box resting on the ground",
                  BP{{{0, 0, 0}, Mat3::Identity(), {0, 0, 0}}, {0, 0, -1}, kGround, 1}, expect_sweep<BP>(SweepStatus::overlapping));
 }
 
-TEST_CASE("L05S7 robustness: random exact degenerate cases", "[lab05][step7][oracle]") {
+TEST_CASE("L05S8 robustness: random exact degenerate cases", "[lab05][step8][oracle]") {
   check::random_cases("robust.segment_segment", gen::segment_pair(true), run_segment_segment);
   check::random_cases("robust.segment_rectangle", gen::segment_rectangle(true), run_segment_rectangle);
   check::random_cases("robust.test_sphere_capsule", judge::sphere_capsule(true), run_exact_test<SphereCapsule>);
@@ -438,6 +485,8 @@ TEST_CASE("L05S7 robustness: random exact degenerate cases", "[lab05][step7][ora
                       [](const SP& in) { return run_sweep(in, Rules::exact); });
   check::random_cases("robust.sweep_sphere_sphere", gen::sphere_sphere_motion(true),
                       [](const SS& in) { return run_sweep(in, Rules::exact); });
+  check::random_cases("robust.sweep_sphere_capsule", gen::sphere_capsule_motion(true),
+                      [](const SC& in) { return run_sweep(in, Rules::exact); });
   check::random_cases("robust.sweep_box_plane", gen::box_plane_motion(true),
                       [](const BP& in) { return run_sweep(in, Rules::exact); });
 }
@@ -508,6 +557,11 @@ TEST_CASE("L05 preconditions: invalid input is rejected, naming the argument", "
   rejects("s1.center", [&] { sweep_sphere_sphere(unit, {1, 0, 0}, {far, 1}, {0, 0, 0}, 1); });
   rejects("v1", [&] { sweep_sphere_sphere(unit, {1, 0, 0}, {{5, 0, 0}, 1}, bad, 1); });
   rejects("duration", [&] { sweep_sphere_sphere(unit, {1, 0, 0}, {{5, 0, 0}, 1}, {0, 0, 0}, inf); });
+  rejects("sphere.radius", [&] { sweep_sphere_capsule({{0, 0, 5}, -1}, {0, 0, -1}, {kAxis, 1}, 1); });
+  rejects("velocity", [&] { sweep_sphere_capsule(unit, far, {kAxis, 1}, 1); });
+  rejects("capsule.axis.b", [&] { sweep_sphere_capsule(unit, {0, 0, -1}, {{{0, 0, 0}, bad}, 1}, 1); });
+  rejects("capsule.radius", [&] { sweep_sphere_capsule(unit, {0, 0, -1}, {kAxis, nan}, 1); });
+  rejects("duration", [&] { sweep_sphere_capsule(unit, {0, 0, -1}, {kAxis, 1}, -1); });
   const Box box{{0, 0, 5}, Mat3::Identity(), {1, 2, 3}};
   Box b = box;
   b.half_extents = {1, -2, 3};

@@ -42,5 +42,6 @@ template <class V> void fields(Sweep& s, V&& v) { v("status", s.status); v("time
   CALL(bool, test_lozenge_lozenge, (const Lozenge&, const Lozenge&))                                  \
   CALL(Sweep, sweep_sphere_plane, (const Sphere&, const Vec3&, const Plane&, double))                 \
   CALL(Sweep, sweep_sphere_sphere, (const Sphere&, const Vec3&, const Sphere&, const Vec3&, double))  \
+  CALL(Sweep, sweep_sphere_capsule, (const Sphere&, const Vec3&, const Capsule&, double))              \
   CALL(Sweep, sweep_box_plane, (const Box&, const Vec3&, const Plane&, double))
 // clang-format on

@@ -394,6 +394,180 @@ rc::Gen<SphereSphereMotion> sphere_sphere_families(bool exact) {
   });
 }
 
+// ---- A sphere against a static capsule ---------------------------------------------------
+
+// The judges' S for it: centre, displacement, axis ends, radii.
+double capsule_motion_scale(const SphereCapsuleMotion& m) {
+  return std::max({scale_of({m.sphere.center, m.velocity * m.duration, m.capsule.axis.a, m.capsule.axis.b}),
+                   m.sphere.radius, m.capsule.radius, 1e-300});
+}
+
+// Radii summing to `total` moved off the exact touch to just outside the judges' doubt band
+// (either side): a near case that stays decisive.
+void set_radii_near(SphereCapsuleMotion& m, double total) {
+  m.sphere.radius = 0;
+  m.capsule.radius = total;
+  const double hair = decisive_hair(capsule_motion_scale(m));
+  const auto [r, rc] = *split_radius(total + hair >= 0 ? total + hair : total - hair);
+  m.sphere.radius = r;
+  m.capsule.radius = rc;
+}
+
+rc::Gen<SphereCapsuleMotion> sphere_capsule_families() {
+  return rc::gen::exec([] {
+    const Grid g = *grid(false);
+    const double T = duration(g);
+    // A frame: the axis along e0 (length L), e1 and e2 across it (rounded, orthonormal).
+    const Mat3 frame = axes(g);
+    const Vec3 e0 = frame.col(0), e1 = frame.col(1), e2 = frame.col(2);
+    const Vec3 a = grid_point(g);
+    const double L = (*rc::gen::inRange(1, 17) / 4.0) * g.s;
+    const Segment axis{a, a + L * e0};
+    const double f = *rc::gen::inRange(1, 16) / 16.0;  // an axial fraction strictly inside
+    const double D = (*rc::gen::inRange(1, 33) / 8.0) * g.s;  // a distance from the axis
+    SphereCapsuleMotion m{{a, 0}, Vec3::Zero(), {axis, 0}, T};
+    switch (*rc::gen::weightedElement<int>({{4, 0}, {2, 1}, {2, 2}, {2, 3}, {2, 4}, {1, 5}, {1, 6}})) {
+      case 0: {  // anywhere, moving anyhow (a zero-length axis now and then)
+        const auto [r, rc] = *split_radius(grid_length(g));
+        return SphereCapsuleMotion{{grid_point(g), r}, grid_direction(g), {segment(g), rc}, T};
+      }
+      case 1: {  // aimed at a point near the axis, from anywhere, radii anyhow
+        const Vec3 target = a + f * L * e0 + (*rc::gen::inRange(-8, 9) / 4.0) * g.s * e1;
+        m.sphere.center = target + grid_direction(g);
+        m.velocity = (target - m.sphere.center) * (*rc::gen::inRange(1, 17) / (8.0 * T));
+        const auto [r, rc] = *split_radius(grid_length(g));
+        m.sphere.radius = r;
+        m.capsule.radius = rc;
+        return m;
+      }
+      case 2: {  // grazing the side: the line of motion passes D from the axis at fraction f,
+                 // across it (and perhaps along it): closest approach D, radii D +- a hair
+        const double tc = *rc::gen::inRange(1, 16) / 16.0 * T;
+        const Vec3 v = ((*rc::gen::inRange(1, 9) / 2.0) * e2 + (*rc::gen::inRange(-2, 3) / 4.0) * e0) * (g.s / T);
+        m.sphere.center = a + f * L * e0 + D * e1 - tc * v;
+        m.velocity = v;
+        set_radii_near(m, D);
+        return m;
+      }
+      case 3: {  // grazing a cap: beyond the end b, across the axis's direction, closest
+                 // approach D from b (the nearest point of the axis stays b)
+        const double k = *rc::gen::inRange(1, 5) / 4.0;
+        const Vec3 off = (k * e0 + e1).normalized() * D;
+        const double tc = *rc::gen::inRange(1, 16) / 16.0 * T;
+        const Vec3 v = e2 * ((*rc::gen::inRange(1, 9) / 2.0) * g.s / T);
+        m.sphere.center = axis.b + off - tc * v;
+        m.velocity = v;
+        set_radii_near(m, D);
+        return m;
+      }
+      case 4: {  // sliding parallel to the axis toward the cap at a, D from its line
+        const double start = (*rc::gen::inRange(1, 9) / 4.0) * g.s;
+        m.sphere.center = a - start * e0 + D * e1;
+        m.velocity = e0 * ((start + (*rc::gen::inRange(0, 9) / 4.0) * g.s) / (T * *rc::gen::element(0.5, 1.0)));
+        set_radii_near(m, D * *rc::gen::element(1.0, 1.0, 1.25));
+        return m;
+      }
+      case 5: {  // near touching at t = 0 (beside the side or beyond an end), moving anyhow
+        const Vec3 out = *rc::gen::element(Vec3(e1), Vec3((e1 - e0).normalized()), Vec3((e2 + e0).normalized()));
+        const Vec3 foot = out.dot(e0) < 0 ? axis.a : (out.dot(e0) > 0 ? axis.b : Vec3(a + f * L * e0));
+        m.sphere.center = foot + D * out;
+        m.velocity = grid_direction(g) * (1.0 / T);
+        set_radii_near(m, D);
+        return m;
+      }
+      default: {  // head-on to the side, reaching it at T (or a hair before or after)
+        const double gap = (*rc::gen::inRange(1, 17) / 4.0) * g.s;
+        m.sphere.center = a + f * L * e0 + (D + gap) * e1;
+        m.velocity = -e1 * (gap / T);
+        set_radii_near(m, D);
+        return m;
+      }
+    }
+  });
+}
+
+// The robustness step's: integers |x| <= 64 times s, axis-aligned capsules, exact touches.
+rc::Gen<SphereCapsuleMotion> exact_sphere_capsule_families() {
+  return rc::gen::exec([] {
+    const Grid g = *grid(true);
+    const double s = g.s, T = duration(g);
+    const int k = *rc::gen::inRange(0, 3), j = (k + 1) % 3, l = (k + 2) % 3;
+    const Vec3 ek = Vec3::Unit(k), ej = Vec3::Unit(j), el = Vec3::Unit(l);
+    const Vec3 a = *lattice_point(s, 16);
+    const int n = *rc::gen::inRange(0, 9);  // the axis's length in units of s (0: a sphere)
+    const Segment axis{a, a + n * s * ek};
+    const int D = *rc::gen::inRange(0, 9);
+    const int inside = n > 0 ? *rc::gen::inRange(0, n + 1) : 0;  // a lattice point of the axis
+    SphereCapsuleMotion m{{a, 0}, Vec3::Zero(), {axis, 0}, T};
+    double R = D * s;
+    switch (*rc::gen::inRange(0, 6)) {
+      case 0: {  // sliding exactly parallel to the axis, D from its line, toward a
+        const int start = *rc::gen::inRange(1, 9);
+        m.sphere.center = a - start * s * ek + D * s * ej;
+        m.velocity = ek * (*rc::gen::inRange(1, 17) * s);
+        R = (D + *rc::gen::inRange(-1, 2)) * s;
+        break;
+      }
+      case 1: {  // starting exactly touching (beside the axis, or beyond the end a)
+        int norm = 0;
+        Vec3 P = pythagorean(norm, 5);
+        if (*rc::gen::arbitrary<bool>()) {
+          P = D * ej;
+          norm = D;
+          m.sphere.center = a + inside * s * ek + P * s;
+        } else {
+          if (P.dot(ek) > 0) P[k] = -P[k];
+          m.sphere.center = a + P * s;
+        }
+        m.velocity = *lattice_point(s, 4);
+        R = norm * s;
+        break;
+      }
+      case 2: {  // a zero-length capsule (a sphere), head-on: contact exactly at T, or near it
+        int norm = 0;
+        const Vec3 P = pythagorean(norm, 5);
+        const int far = *rc::gen::inRange(2, 6), close = *rc::gen::inRange(1, far);
+        m.capsule.axis = {a, a};
+        m.sphere.center = a + far * s * P;
+        m.velocity = -P * (close * s / T);
+        R = (far - close + *rc::gen::inRange(-1, 2)) * norm * s;
+        break;
+      }
+      case 3: {  // an exact graze of the side: across the axis at distance D
+        const int before = *rc::gen::inRange(1, 5);
+        m.sphere.center = a + inside * s * ek + D * s * ej - before * s * el;
+        m.velocity = el * (*rc::gen::inRange(1, 9) * s / T);
+        break;
+      }
+      case 4: {  // head-on to the side: contact exactly at T (or one unit either way)
+        const int gap = *rc::gen::inRange(1, 9);
+        m.sphere.center = a + inside * s * ek + (D + gap) * s * ej;
+        m.velocity = -ej * ((gap + *rc::gen::inRange(-1, 2)) * s / T);
+        break;
+      }
+      default: {  // anywhere on the lattice
+        m.sphere.center = *lattice_point(s, 24);
+        m.velocity = *lattice_point(s, 8);
+        R = *rc::gen::inRange(0, 9) * s;
+        break;
+      }
+    }
+    const auto [r, rc] = *split_radius(std::max(R, 0.0));
+    m.sphere.radius = r;
+    m.capsule.radius = rc;
+    return m;
+  });
+}
+
+void move_sphere_capsule(SphereCapsuleMotion& x, const Vec3& o) {
+  x.sphere.center += o;
+  x.capsule.axis.a += o;
+  x.capsule.axis.b += o;
+}
+double size_sphere_capsule(const SphereCapsuleMotion& x) {
+  return scale_of({x.sphere.center, x.capsule.axis.a, x.capsule.axis.b});
+}
+
 void move_sphere_plane(SpherePlaneMotion& x, const Vec3& o) {
   x.sphere.center += o;
   x.plane.offset -= x.plane.normal.dot(o);
@@ -459,6 +633,9 @@ void times(SegmentRectanglePair& x, double k) { times(x.segment, k); times(x.rec
 void times(RectanglePair& x, double k) { times(x.first, k); times(x.second, k); }
 void times(SpherePlaneMotion& x, double k) { times(x.sphere, k); times(x.velocity, k); times(x.plane, k); }
 void times(SphereSphereMotion& x, double k) { times(x.s0, k); times(x.s1, k); times(x.v0, k); times(x.v1, k); }
+void times(SphereCapsuleMotion& x, double k) {
+  times(x.sphere, k); times(x.velocity, k); times(x.capsule.axis, k); times(x.capsule.radius, k);
+}
 void times(BoxPlaneMotion& x, double k) { times(x.box, k); times(x.velocity, k); times(x.plane, k); }
 
 template <class T>
@@ -559,6 +736,10 @@ rc::Gen<SpherePlaneMotion> sphere_plane_motion(bool exact) {
 }
 rc::Gen<SphereSphereMotion> sphere_sphere_motion(bool exact) {
   return with_far(sphere_sphere_families(exact), exact, move_sphere_sphere, size_sphere_sphere);
+}
+rc::Gen<SphereCapsuleMotion> sphere_capsule_motion(bool exact) {
+  if (exact) return exact_sphere_capsule_families();
+  return with_far(sphere_capsule_families(), false, move_sphere_capsule, size_sphere_capsule);
 }
 rc::Gen<BoxPlaneMotion> box_plane_motion(bool exact) {
   const auto g = with_far(box_plane_families(exact), exact, move_box_plane, size_box_plane);

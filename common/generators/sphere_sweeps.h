@@ -69,6 +69,17 @@ template <class V> void fields(SphereSphereMotion& x, V&& v) {
   v("s0", x.s0); v("v0", x.v0); v("s1", x.s1); v("v1", x.v1); v("duration", x.duration);
 }
 
+// A sphere moving against a static capsule (step 6).
+struct SphereCapsuleMotion {
+  Sphere sphere;
+  Vec3 velocity = Vec3::Zero();
+  Capsule capsule;
+  double duration = 1.0;
+};
+template <class V> void fields(SphereCapsuleMotion& x, V&& v) {
+  v("sphere", x.sphere); v("velocity", x.velocity); v("capsule", x.capsule); v("duration", x.duration);
+}
+
 struct BoxPlaneMotion {
   Box box;
   Vec3 velocity = Vec3::Zero();
@@ -94,6 +105,12 @@ rc::Gen<RectanglePair> rectangle_pair(bool exact = false);
 rc::Gen<SpherePlaneMotion> sphere_plane_motion(bool exact = false);
 rc::Gen<SphereSphereMotion> sphere_sphere_motion(bool exact = false);
 rc::Gen<BoxPlaneMotion> box_plane_motion(bool exact = false);
+// A sphere against a static capsule: anywhere; aimed at the side; grazing the side or a
+// cap (closest approach within a decisive hair of r + rc); sliding parallel to the axis
+// toward a cap; starting near touching; reaching it near T; zero-length axes. `exact`:
+// the robustness step's integer families (exactly parallel, exactly touching at t = 0,
+// exact grazes, contact exactly at T, zero-length capsules).
+rc::Gen<SphereCapsuleMotion> sphere_capsule_motion(bool exact = false);
 
 // The nearly-grazing spheres alone: closest approach (r0 + r1)(1 + e), |e| = 2^-k for k
 // in [10, 52] or e = 0, both signs, at every scale, the spheres' size from 2^-12 to 1 of

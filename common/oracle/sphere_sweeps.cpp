@@ -499,6 +499,61 @@ double first_contact(const BoxPlaneSweep& in, double t_end) {
   return std::clamp(rounded((CGAL::abs(f.f0) - projected_radius(in.box, in.plane)) / CGAL::abs(f.g)), 0.0, t_end);
 }
 
+// The moving centre c + t v, exactly.
+Point centre_at(const SphereCapsuleSweep& in, const FT& t) { return exact(in.sphere.center) + exact_vector(in.velocity) * t; }
+FT grown_radius(const SphereCapsuleSweep& in) { return FT(in.sphere.radius) + FT(in.capsule.radius); }
+
+int gap_sign(const SphereCapsuleSweep& in, double t, double extra) {
+  return distance_sign(distance2<Epeck>(centre_at(in, FT(t)), exact(in.capsule.axis)), grown_radius(in) + FT(extra));
+}
+
+int min_gap_sign(const SphereCapsuleSweep& in, double t_end, double extra) {
+  // The smallest distance over [0, t_end] is that of the path's segment to the axis.
+  const Epeck::Segment_3 path(centre_at(in, FT(0)), centre_at(in, FT(t_end)));
+  return distance_sign(distance2<Epeck>(path, exact(in.capsule.axis)), grown_radius(in) + FT(extra));
+}
+
+double first_contact(const SphereCapsuleSweep& in, double t_end) {
+  if (gap_sign(in, 0.0, 0.0) <= 0) return 0.0;
+  if (min_gap_sign(in, t_end, 0.0) > 0) return -1.0;
+  // Exact decisions found contact; the time (reports only) in long double: the first
+  // root of the side (inside the slab) and of the two end spheres.
+  using L = long double;
+  const auto v = [](const Vec3& x) { return Eigen::Matrix<L, 3, 1>(x.x(), x.y(), x.z()); };
+  const Eigen::Matrix<L, 3, 1> c = v(in.sphere.center), w = v(in.velocity), a = v(in.capsule.axis.a),
+                               d = v(in.capsule.axis.b) - a;
+  const L R = L(in.sphere.radius) + L(in.capsule.radius), R2 = R * R;
+  L best = std::numeric_limits<L>::infinity();
+  const auto quadratic = [&](L qa, L qb, L qc) -> L {  // first root of qa t^2 + 2 qb t + qc, qc > 0
+    if (qa <= 0 || qb >= 0) return std::numeric_limits<L>::infinity();
+    const L disc = qb * qb - qa * qc;
+    if (disc < 0) return std::numeric_limits<L>::infinity();
+    return qc / (-qb + std::sqrt(disc));
+  };
+  for (const auto& end : {a, Eigen::Matrix<L, 3, 1>(a + d)}) {
+    const Eigen::Matrix<L, 3, 1> m = c - end;
+    best = std::min(best, quadratic(w.squaredNorm(), m.dot(w), m.squaredNorm() - R2));
+  }
+  if (d.squaredNorm() > 0) {
+    const Eigen::Matrix<L, 3, 1> md = (c - a).cross(d), wd = w.cross(d);
+    const L t = quadratic(wd.squaredNorm(), md.dot(wd), md.squaredNorm() - R2 * d.squaredNorm());
+    const L along = std::isfinite(t) ? (c - a + t * w).dot(d) : L(-1);
+    if (along >= 0 && along <= d.squaredNorm()) best = std::min(best, t);
+  }
+  if (best <= L(t_end)) return std::clamp(double(best), 0.0, t_end);
+  // A graze lost to rounding: bisection on the exact sign of the smallest gap over [0, t].
+  double low = 0.0, high = t_end;
+  for (int i = 0; i < 60 && high - low > 1e-15 * t_end; ++i) {
+    const double mid = 0.5 * (low + high);
+    (min_gap_sign(in, mid, 0.0) <= 0 ? high : low) = mid;
+  }
+  return high;
+}
+
+bool within_capsule(const Capsule& capsule, const Vec3& x, double tolerance) {
+  return distance_sign(distance2<Epeck>(exact(x), exact(capsule.axis)), FT(capsule.radius) + FT(tolerance)) <= 0;
+}
+
 bool sphere_sweep_exact_and_steep(const SphereSphereSweep& in) {
   const Vec3 A = in.s0.center - in.s1.center, B = in.v0 - in.v1;
   const double R = in.s0.radius + in.s1.radius;

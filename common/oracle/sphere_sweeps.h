@@ -12,6 +12,7 @@
 namespace oracle {
 
 using labkit::Box;
+using labkit::Capsule;
 using labkit::Plane;
 using labkit::Rectangle;
 using labkit::Segment;
@@ -58,6 +59,12 @@ struct SpherePlaneSweep {
   Vec3 velocity = Vec3::Zero();
   Plane plane;
 };
+// A sphere moving against a static capsule: gap(t) = distance(c(t), axis) - (r + rc).
+struct SphereCapsuleSweep {
+  Sphere sphere;
+  Vec3 velocity = Vec3::Zero();
+  Capsule capsule;
+};
 struct BoxPlaneSweep {
   Box box;
   Vec3 velocity = Vec3::Zero();
@@ -68,16 +75,21 @@ struct BoxPlaneSweep {
 int gap_sign(const SphereSphereSweep& in, double t, double extra);
 int gap_sign(const SpherePlaneSweep& in, double t, double extra);
 int gap_sign(const BoxPlaneSweep& in, double t, double extra);
+int gap_sign(const SphereCapsuleSweep& in, double t, double extra);
 // The exact sign of (the smallest gap over [0, t_end]) - extra, t_end >= 0.
 int min_gap_sign(const SphereSphereSweep& in, double t_end, double extra);
 int min_gap_sign(const SpherePlaneSweep& in, double t_end, double extra);
 int min_gap_sign(const BoxPlaneSweep& in, double t_end, double extra);
+// (For the capsule: the distance between the centre's exact path c + [0, t_end] v and
+// the axis, two exact segments.)
+int min_gap_sign(const SphereCapsuleSweep& in, double t_end, double extra);
 
 // The first time of contact in [0, t_end] (0 when touching at 0), or -1 when there is
 // none: exact decisions, the root itself rounded (for reports only).
 double first_contact(const SphereSphereSweep& in, double t_end);
 double first_contact(const SpherePlaneSweep& in, double t_end);
 double first_contact(const BoxPlaneSweep& in, double t_end);
+double first_contact(const SphereCapsuleSweep& in, double t_end);
 
 // Are A = c0 - c1, B = v0 - v1, R = r0 + r1 and the coefficients A.A, A.B, B.B, R^2
 // exact in double (every product and every partial sum), and is the approach not
@@ -86,6 +98,8 @@ bool sphere_sweep_exact_and_steep(const SphereSphereSweep& in);
 
 // Exact: is x within r + tolerance of the sphere's centre at time t?
 bool within_moving_sphere(const Sphere& s, const Vec3& v, double t, const Vec3& x, double tolerance);
+// Exact: is x within rc + tolerance of the capsule's axis?
+bool within_capsule(const Capsule& capsule, const Vec3& x, double tolerance);
 // Exact: |value(x)| <= tolerance |normal|.
 bool within_plane(const Plane& plane, const Vec3& x, double tolerance);
 // Exact: x in the box at time t grown by tolerance along each axis:

@@ -98,13 +98,24 @@ Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, co
   not_implemented("L05S5");
 }
 
-// L05S6: the projected radius, then step 4.
+// L05S6: the centre against the capsule grown by the sphere's radius: decide with
+// step 3's test on the sphere's path, then the first of three roots (the cylinder's,
+// clipped to the slab between the ends, and the two end spheres').
+Sweep sweep_sphere_capsule(const Sphere& sphere, const Vec3& velocity, const Capsule& capsule, double duration) {
+  (void)sphere;
+  (void)velocity;
+  (void)capsule;
+  (void)duration;
+  not_implemented("L05S6");
+}
+
+// L05S7: the projected radius, then step 4.
 Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& plane, double duration) {
   (void)box;
   (void)velocity;
   (void)plane;
   (void)duration;
-  not_implemented("L05S6");
+  not_implemented("L05S7");
 }
 
 }  // namespace labkit::lab05

@@ -142,7 +142,7 @@ bool test_capsule_capsule(const Capsule& a, const Capsule& b);
 bool test_capsule_lozenge(const Capsule& a, const Lozenge& b);
 bool test_lozenge_lozenge(const Lozenge& a, const Lozenge& b);
 
-// ---- Steps 4 to 6: moving shapes ----------------------------------------------------
+// ---- Steps 4 to 7: moving shapes ----------------------------------------------------
 //
 // A shape moves with constant velocity v from its given position at time 0 until time
 // `duration` (T >= 0): its centre at time t is center + t v. The answer is one of three.
@@ -178,7 +178,23 @@ Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane
 // segment between the centres at that time, r0 / R of the way from c0(t) (R = 0: c0(t)).
 Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, const Vec3& v1, double duration);
 
-// ---- Step 6 (L05S6): moving box against a plane -------------------------------------
+// ---- Step 6 (L05S6): moving sphere against a static capsule (Minkowski sum) ---------
+
+// Lecture 000's table 6.6 and lecture 002's swept sphere: shrink the sphere to its centre
+// and grow the capsule by the sphere's radius. The grown capsule has the same axis and
+// radius R = sphere.radius + capsule.radius (a cylinder with two hemispherical caps), and
+// the question becomes where the ray c + t v first enters it.
+// Overlapping when the centre is within R of the axis at t = 0 (touching counts). Else
+// contact at the first t in [0, T] with distance(c(t), axis) = R, or none. Moving exactly
+// parallel to the axis, a zero-length axis (a == b: the capsule is a sphere) and R = 0
+// are all valid. The point is the sphere's point nearest the axis then: on the segment
+// from c(t) to the axis's nearest point q(t), sphere.radius / R of the way (R = 0: c(t)).
+// Decide first, as in step 3 (the sphere's whole path over [0, T] is a capsule: they meet
+// exactly when it meets this one), then build the time; the time is certified as in
+// step 5.
+Sweep sweep_sphere_capsule(const Sphere& sphere, const Vec3& velocity, const Capsule& capsule, double duration);
+
+// ---- Step 7 (L05S7): moving box against a plane -------------------------------------
 
 // Project the box's half-sizes onto the unit normal: rho = sum_i h_i |n . axis_i| / |n|
 // is the radius of the box seen along n; then it is step 4 with the centre's distance
@@ -187,12 +203,13 @@ Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, co
 // middle, a corner of it, ...): every such point passes.
 Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& plane, double duration);
 
-// ---- Step 7 (L05S7): robustness -----------------------------------------------------
-// No new function: steps 1 to 6 on exact degenerate input (small integers, |x| <= 64,
+// ---- Step 8 (L05S8): robustness -----------------------------------------------------
+// No new function: steps 1 to 7 on exact degenerate input (small integers, |x| <= 64,
 // times a power of two): parallel, collinear and crossing segments, zero-length segments
 // and zero-size rectangles, shapes exactly touching, spheres exactly grazing, contact
 // exactly at T, touching at t = 0 while moving away, no relative motion, boxes resting on
-// the plane, and spheres a hair apart that meet very soon. On such input the tests and
+// the plane, spheres a hair apart that meet very soon, and spheres sliding exactly
+// parallel to a capsule's axis, starting on it, or meeting a zero-length one. On such input the tests and
 // statuses must be exactly right (nothing is ambiguous): decide by comparing squared
 // distances without dividing (num <= R^2 den), then construct. Distances keep their tol.
 // (Step 3's random and worked cases still hold you to the rules on lines that are

@@ -493,6 +493,86 @@ Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, co
 
 // ---- Step 6 --------------------------------------------------------------------------------
 
+namespace {
+
+// The first time a point moving along m + t v (m relative to the sphere's centre) comes
+// within sqrt(R2) of it, given that it starts outside: step 5's quadratic with a stable
+// root, or infinity when it never does (no motion, moving away, or the line misses).
+double first_time_sphere(const Vec3& m, const Vec3& v, double R2) {
+  const double a = v.squaredNorm(), b = m.dot(v), c = m.squaredNorm() - R2;
+  if (a == 0 || b >= 0) return kInfinity;
+  const double disc = a * R2 - m.cross(v).squaredNorm();  // b^2 - ac, Lagrange's identity
+  if (disc < 0) return kInfinity;
+  return c / (-b + std::sqrt(disc));
+}
+
+// The first time the point m + t v (m relative to the axis's end a) comes within sqrt(R2)
+// of the axis's infinite line, if it does so between the two end planes (the slab
+// 0 <= x . d <= d . d); else infinity. Distances to the line are |x x d| / |d|, so the
+// quadratic is step 5's with every vector crossed with d:
+//   |(m + t v) x d|^2 = R^2 |d|^2:  a = |v x d|^2, b = (m x d) . (v x d), c = |m x d|^2 - R^2 |d|^2,
+// and b^2 - ac = |d|^2 (a R^2 - ((m x d) . v)^2): the triple product is the lines'
+// distance times |v x d|, taken without subtracting two big squares.
+double first_time_cylinder(const Vec3& m, const Vec3& v, const Vec3& d, double R2) {
+  const double dd = d.squaredNorm();
+  if (dd == 0) return kInfinity;  // a zero-length axis: only the end spheres
+  const Vec3 md = m.cross(d), vd = v.cross(d);
+  const double a = vd.squaredNorm(), b = md.dot(vd), c = md.squaredNorm() - R2 * dd;
+  // Parallel to the axis (a = 0) the distance to the line never changes; moving away from
+  // the line (b >= 0), or starting inside the infinite cylinder (c <= 0; outside the
+  // capsule, so beyond an end: the end sphere is met first), the side is never entered.
+  if (a == 0 || b >= 0 || c <= 0) return kInfinity;
+  const double disc = dd * (a * R2 - square(md.dot(v)));
+  if (disc < 0) return kInfinity;  // the line of motion passes the cylinder by
+  const double t = c / (-b + std::sqrt(disc));
+  // Clip to the slab: a root beyond an end plane hits the infinite cylinder where the
+  // capsule has no side; there the end sphere decides.
+  const double along = (m + t * v).dot(d);
+  return along >= 0 && along <= dd ? t : kInfinity;
+}
+
+}  // namespace
+
+//   Derivation (lecture 000's table 6.6, lecture 002's swept sphere). A sphere of radius
+//   r touches the capsule (axis, rc) exactly when its centre touches the Minkowski sum of
+//   the capsule and the sphere: the capsule (axis, R = r + rc). So the centre is a point
+//   moving on the ray c + t v, and the grown capsule is the union of three pieces: the
+//   side (the infinite cylinder of radius R, clipped to the slab between the end planes)
+//   and two end spheres of radius R at a and b. The first contact with a union is the
+//   earliest first contact with its pieces. The side's own first root is taken only when
+//   it lies in the slab: outside, the ray met the cylinder where the capsule has a cap,
+//   and the cap's sphere is met first (crossing an end plane within R of the axis is being
+//   within R of that end). The later roots are when the centre leaves a piece, never
+//   the first contact.
+//
+//   Decide, then construct. Whether contact happens in [0, T] is step 3's question: the
+//   sphere's path over [0, T] is the capsule (c, c + T v; r), and it meets this capsule
+//   exactly when the segments are within R, decided without dividing. Only then are the
+//   roots built; if rounding loses all three at an exact graze, the path's closest
+//   approach is the contact.
+Sweep sweep_sphere_capsule(const Sphere& sphere, const Vec3& velocity, const Capsule& capsule, double duration) {
+  require("sweep_sphere_capsule", "sphere", sphere);
+  require_motion("sweep_sphere_capsule", velocity, "velocity", duration);
+  require("sweep_sphere_capsule", "capsule", capsule);
+  const Segment& axis = capsule.axis;
+  const double R = sphere.radius + capsule.radius, R2 = square(R);
+  if (point_segment_within(sphere.center, axis, R2)) return overlapping();  // touching or inside now
+  const Segment path{sphere.center, sphere.center + duration * velocity};
+  if (!segment_segment_within(path, axis, R2)) return {};  // the swept sphere misses it
+  const Vec3 d = axis.b - axis.a;
+  double t = std::min({first_time_cylinder(sphere.center - axis.a, velocity, d, R2),
+                       first_time_sphere(sphere.center - axis.a, velocity, R2),
+                       first_time_sphere(sphere.center - axis.b, velocity, R2)});
+  if (!(t <= duration)) t = segment_segment(path, axis).s * duration;  // a graze lost to rounding
+  t = std::clamp(t, 0.0, duration);
+  // The point: the sphere's point nearest the axis, r / R of the way from c(t) to q(t).
+  const Vec3 center = sphere.center + t * velocity;
+  const Vec3 q = point_segment(center, axis).closest;
+  return {SweepStatus::contact, t, R > 0 ? Vec3(center + (sphere.radius / R) * (q - center)) : center};
+}
+
+// ---- Step 7 --------------------------------------------------------------------------------
+
 Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& given, double duration) {
   require("sweep_box_plane", "box", box);
   require_motion("sweep_box_plane", velocity, "velocity", duration);

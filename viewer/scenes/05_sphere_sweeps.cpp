@@ -5,7 +5,8 @@
 //                         segment_rectangle, rectangle_rectangle, test_*
 //   moving sphere, plane  sweep_sphere_plane                                         step 4
 //   two moving spheres    sweep_sphere_sphere                                        step 5
-//   moving box, plane     sweep_box_plane                                            step 6
+//   sphere and capsule    sweep_sphere_capsule                                       step 6
+//   moving box, plane     sweep_box_plane                                            step 7
 // ("robust." tokens open the same modes.) In the cores mode the two cores (point,
 // segment or rectangle) are drawn with their radii as wire hulls; the student's closest
 // points and answers take the colour of their verdict. The exact answers (the toggle)
@@ -18,6 +19,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace viewer {
@@ -26,7 +28,7 @@ namespace {
 using namespace labkit;
 using namespace labkit::lab05;
 
-enum class Mode { cores, sphere_plane, sphere_sphere, box_plane };
+enum class Mode { cores, sphere_plane, sphere_sphere, box_plane, sphere_capsule };
 enum class Core { point, segment, rectangle };
 
 const std::vector<Preset> kPresets = {
@@ -44,8 +46,11 @@ const std::vector<Preset> kPresets = {
     {"spheres", "passing by: first contact at t = 3 - sqrt(3)/2",
      "sweep_sphere_sphere:0,0,0,1,0,0,0,6,1,0,1,-2,0,0,4", true, -90, 80, 5},
     {"graze", "an exact graze at t = 3 (b^2 = ac)", "sweep_sphere_sphere:0,0,0,1,0,0,0,6,2,0,1,-2,0,0,4"},
+    {"sphere-capsule", "beyond the end: the side's root (t = 2) lies outside the slab; the cap's is t = 3 - sqrt(3)/2",
+     "sweep_sphere_capsule:9,6,0,1,0,-2,0,0,0,0,8,0,0,1,4", true, -90, 80, 6},
+    {"capsule-side", "toward the side: 6 - 2t = R = 2 at t = 2", "sweep_sphere_capsule:4,6,0,1,0,-2,0,0,0,0,8,0,0,1,4"},
     {"box", "a tilted box falls: reach 0.8 + 2 * 0.6 = 2, contact at t = 1",
-     "sweep_box_plane:0,0,4,1,0,0,0,0.6,0.8,0,-0.8,0.6,1,1,2,0,0,-2,0,0,1,0,2", true, -80, 12, 6},
+     "sweep_box_plane:0,0,4,1,0,0,0,0.6,0.8,0,-0.8,0.6,1,1,2,0,0,-2,0,0,1,0,2", true, -80, 12, 7},
 };
 
 // One core of a sphere-swept volume, with its radius.
@@ -71,11 +76,45 @@ void circle(Renderer& r, const Vec3& c, const Vec3& e1, const Vec3& e2, double r
   }
 }
 
+// Half a circle: from e1 through e2 to -e1 (e2 points to the half drawn).
+void arc(Renderer& r, const Vec3& c, const Vec3& e1, const Vec3& e2, double radius, Color col, float width = 1.2f) {
+  constexpr int kSides = 24;
+  for (int i = 0; i < kSides; ++i) {
+    const double a = M_PI * i / kSides, b = M_PI * (i + 1) / kSides;
+    r.line(c + radius * (std::cos(a) * e1 + std::sin(a) * e2), c + radius * (std::cos(b) * e1 + std::sin(b) * e2), col, width);
+  }
+}
+
+// A capsule as a wire hull: the side's four lines, a ring at each end, and each end's
+// hemispherical cap (two half circles across it, facing outward).
+// `across`: a direction across the axis to draw the side's lines along (default: any).
+void capsule_hull(Renderer& r, const Segment& axis, double radius, Color hull, float width = 1.2f,
+                  const Vec3& across = Vec3::Zero());
+
 void ball(Renderer& r, const Vec3& c, double radius, Color col, float width = 1.2f) {
   if (radius <= 0) return;
   circle(r, c, Vec3::UnitX(), Vec3::UnitY(), radius, col, width);
   circle(r, c, Vec3::UnitY(), Vec3::UnitZ(), radius, col, width);
   circle(r, c, Vec3::UnitZ(), Vec3::UnitX(), radius, col, width);
+}
+
+void capsule_hull(Renderer& r, const Segment& axis, double radius, Color hull, float width, const Vec3& across) {
+  if (radius <= 0) return;
+  const Vec3 d = axis.b - axis.a;
+  if (d == Vec3::Zero()) {
+    ball(r, axis.a, radius, hull, width);
+    return;
+  }
+  const Vec3 along = d.normalized();
+  const Vec3 side = across - across.dot(along) * along;
+  const Vec3 e1 = side.norm() > 1e-9 * across.norm() && across != Vec3::Zero() ? Vec3(side.normalized()) : perpendicular(d);
+  const Vec3 e2 = along.cross(e1).normalized();
+  for (const Vec3& end : {axis.a, axis.b}) circle(r, end, e1, e2, radius, hull, width);
+  for (const Vec3& off : {e1, Vec3(-e1), e2, Vec3(-e2)}) r.line(axis.a + radius * off, axis.b + radius * off, hull, width);
+  for (const Vec3& e : {e1, e2}) {
+    arc(r, axis.a, e, -along, radius, hull, width);
+    arc(r, axis.b, e, along, radius, hull, width);
+  }
 }
 
 Vec3 corner(const Rectangle& r, int k) {
@@ -95,15 +134,7 @@ void draw_shape(Renderer& r, const Shape& s, const char* name, Color core, Color
       r.line(s.s.a, s.s.b, core, 2.5f);
       r.point(s.s.a, core, 5), r.point(s.s.b, core, 5);
       r.label(s.s.a, std::string(name) + ".a", core), r.label(s.s.b, std::string(name) + ".b", core);
-      if (s.radius <= 0) break;
-      const Vec3 d = s.s.b - s.s.a;
-      if (d == Vec3::Zero()) {
-        ball(r, s.s.a, s.radius, hull);
-        break;
-      }
-      const Vec3 e1 = perpendicular(d), e2 = d.cross(e1).normalized();
-      for (const Vec3& end : {s.s.a, s.s.b}) circle(r, end, e1, e2, s.radius, hull);
-      for (const Vec3& off : {e1, Vec3(-e1), e2, Vec3(-e2)}) r.line(s.s.a + s.radius * off, s.s.b + s.radius * off, hull, 1.2f);
+      capsule_hull(r, s.s, s.radius, hull);
       break;
     }
     case Core::rectangle: {
@@ -180,6 +211,7 @@ class SphereSweepsScene : public Scene {
   Sphere s0_{{0, 0, 5}, 1}, s1_;
   Vec3 v0_ = Vec3::Zero(), v1_ = Vec3::Zero();
   Box box_;
+  Capsule capsule_;
   Plane plane_{{0, 0, 1}, 0};
   double duration_ = 1;
   // Handles on derived points: the ends of the motions (centre + v T) and a point of
@@ -239,7 +271,7 @@ void SphereSweepsScene::read_cores(const std::string& q, const ParsedToken& toke
     throw unknown_query("05", q, "point_segment, segment_segment, point_rectangle, segment_rectangle, rectangle_rectangle, "
                                   "test_sphere_sphere, test_sphere_capsule, test_sphere_lozenge, test_capsule_capsule, "
                                   "test_capsule_lozenge, test_lozenge_lozenge, sweep_sphere_plane, sweep_sphere_sphere, "
-                                  "sweep_box_plane");
+                                  "sweep_sphere_capsule, sweep_box_plane");
   }
   test_query_ = q.rfind("test_", 0) == 0;
 }
@@ -256,6 +288,9 @@ SphereSweepsScene::SphereSweepsScene(const Setup& setup) {
   } else if (q == "sweep_sphere_sphere") {
     const auto in = input_from_token<SphereSphereMotion>(token);
     mode_ = Mode::sphere_sphere, s0_ = in.s0, v0_ = in.v0, s1_ = in.s1, v1_ = in.v1, duration_ = in.duration;
+  } else if (q == "sweep_sphere_capsule") {
+    const auto in = input_from_token<SphereCapsuleMotion>(token);
+    mode_ = Mode::sphere_capsule, s0_ = in.sphere, v0_ = in.velocity, capsule_ = in.capsule, duration_ = in.duration;
   } else if (q == "sweep_box_plane") {
     const auto in = input_from_token<BoxPlaneMotion>(token);
     mode_ = Mode::box_plane, box_ = in.box, v0_ = in.velocity, plane_ = in.plane, duration_ = in.duration;
@@ -272,7 +307,8 @@ SphereSweepsScene::SphereSweepsScene(const Setup& setup) {
 }
 
 void SphereSweepsScene::frame_inputs() {
-  const char* names[] = {"sphere-swept cores", "moving sphere and plane", "two moving spheres", "moving box and plane"};
+  const char* names[] = {"sphere-swept cores", "moving sphere and plane", "two moving spheres", "moving box and plane",
+                         "moving sphere and capsule"};
   mode = names[int(mode_)];
   Eigen::AlignedBox3d box;
   const auto ball_box = [&](const Vec3& c, double r) { box.extend(c - Vec3::Constant(r)), box.extend(c + Vec3::Constant(r)); };
@@ -290,6 +326,8 @@ void SphereSweepsScene::frame_inputs() {
   } else {
     ball_box(s0_.center, s0_.radius), ball_box(end0_, s0_.radius);
     if (mode_ == Mode::sphere_sphere) ball_box(s1_.center, s1_.radius), ball_box(end1_, s1_.radius);
+    else if (mode_ == Mode::sphere_capsule)
+      ball_box(capsule_.axis.a, capsule_.radius + s0_.radius), ball_box(capsule_.axis.b, capsule_.radius + s0_.radius);
     else box.extend(plane_point_);
   }
   center = box.center();
@@ -402,6 +440,17 @@ void SphereSweepsScene::update_cores() {
   verdict_[3] = steps[1].verdict;
 }
 
+int step_of(Mode m) {
+  switch (m) {
+    case Mode::sphere_plane: return 4;
+    case Mode::sphere_sphere: return 5;
+    case Mode::sphere_capsule: return 6;
+    case Mode::box_plane: return 7;
+    case Mode::cores: break;
+  }
+  return 3;
+}
+
 template <class Motion, class Judge>
 Step sweep_step(const char* tag, const char* title, const Motion& in, const Attempt<Sweep>& got, Judge&& judge,
                 double exact_time, bool exact_overlapping) {
@@ -437,12 +486,22 @@ void SphereSweepsScene::update_sweep() {
     const double R = s0_.radius + s1_.radius;
     s.rows.push_back({"a, b, c", "", num(B.squaredNorm()) + ", " + num(A.dot(B)) + ", " + num(A.squaredNorm() - R * R)});
     steps.push_back(s);
+  } else if (mode_ == Mode::sphere_capsule) {
+    const SphereCapsuleMotion in{s0_, v0_, capsule_, duration_};
+    const oracle::SphereCapsuleSweep m{s0_, v0_, capsule_};
+    sweep_ = attempt([&] { return sweep_sphere_capsule(s0_, v0_, capsule_, duration_); });
+    exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
+    Step s = sweep_step("L05S6", "sweep_sphere_capsule", in, sweep_,
+                        [](const SphereCapsuleMotion& i, const Sweep& g) { return judge::sweep_sphere_capsule(i, g); },
+                        exact_time_, exact_overlapping_);
+    s.rows.push_back({"grown radius R = r + rc", "", num(s0_.radius + capsule_.radius)});
+    steps.push_back(s);
   } else {
     const BoxPlaneMotion in{box_, v0_, plane_, duration_};
     const oracle::BoxPlaneSweep m{box_, v0_, plane_};
     sweep_ = attempt([&] { return sweep_box_plane(box_, v0_, plane_, duration_); });
     exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
-    Step s = sweep_step("L05S6", "sweep_box_plane", in, sweep_,
+    Step s = sweep_step("L05S7", "sweep_box_plane", in, sweep_,
                         [](const BoxPlaneMotion& i, const Sweep& g) { return judge::sweep_box_plane(i, g); },
                         exact_time_, exact_overlapping_);
     const Plane plane = drawable(plane_);
@@ -452,7 +511,7 @@ void SphereSweepsScene::update_sweep() {
     s.rows.push_back({"projected radius", "", n > 0 ? num(reach / n) : "no plane"});
     steps.push_back(s);
   }
-  verdict_[mode_ == Mode::sphere_plane ? 4 : mode_ == Mode::sphere_sphere ? 5 : 6] = steps[0].verdict;
+  verdict_[step_of(mode_)] = steps[0].verdict;
 }
 
 // ---- draw ----------------------------------------------------------------------------
@@ -472,6 +531,25 @@ void SphereSweepsScene::draw_cores(Frame& f) const {
     r.point(*closest0_, c, 5), r.point(*closest1_, c, 5);
     r.label(0.5 * (*closest0_ + *closest1_), "d = " + num((*closest0_ - *closest1_).norm()), c, 10, 8);
   }
+  // Two segments whose lines' closest pair lies outside: the classic mistake clamps both
+  // parameters into [0, 1] at once. Its pair (dashed, red) is farther apart than the
+  // closest pair, which re-projects the clamped end onto the other segment.
+  if (a_.kind == Core::segment && b_.kind == Core::segment && f.shows(1)) {
+    const Vec3 d0 = a_.s.b - a_.s.a, d1 = b_.s.b - b_.s.a, w = b_.s.a - a_.s.a, n = d0.cross(d1);
+    const double nn = n.squaredNorm();
+    if (nn > 1e-12 * d0.squaredNorm() * d1.squaredNorm()) {
+      const double s = w.cross(d1).dot(n) / nn, t = w.cross(d0).dot(n) / nn;
+      const Vec3 p = a_.s.a + std::clamp(s, 0.0, 1.0) * d0, q = b_.s.a + std::clamp(t, 0.0, 1.0) * d1;
+      const double wrong = (p - q).norm(), right = oracle::squared_distance(a_.s, b_.s).distance();
+      if ((s < 0 || s > 1 || t < 0 || t > 1) && wrong > right * (1 + 1e-9) + 1e-12) {
+        r.dashed(p, q, palette::disagree, 2.5f);
+        r.point(p, palette::disagree, 4), r.point(q, palette::disagree, 4);
+        r.label(q, "wrong, clamped: s = " + num(std::clamp(s, 0.0, 1.0)) + ", t = " + num(std::clamp(t, 0.0, 1.0)) +
+                       ", d = " + num(wrong),
+                palette::disagree, 12, -14);
+      }
+    }
+  }
   const Vec3 anchor = a_.kind == Core::point ? a_.p : a_.kind == Core::segment ? a_.s.a : a_.r.center;
   if (meet_ && hulls) r.label(anchor, *meet_ ? "they meet" : "apart", colour(verdict_[3]), 12, -28);
   // The exact answer is a number (the panel's exact column); the closest points are
@@ -482,10 +560,46 @@ void SphereSweepsScene::draw_cores(Frame& f) const {
 
 void SphereSweepsScene::draw_sweep(Frame& f) const {
   Renderer& r = f.render;
-  const int step = mode_ == Mode::sphere_plane ? 4 : mode_ == Mode::sphere_sphere ? 5 : 6;
+  const int step = step_of(mode_);
   const Color c = colour(verdict_[step]);
   const Vec3 start0 = mode_ == Mode::box_plane ? box_.center : s0_.center;
-  if (mode_ != Mode::sphere_sphere) draw_plane(r, plane_, start0 + 0.5 * duration_ * v0_, radius);
+  if (mode_ == Mode::sphere_plane || mode_ == Mode::box_plane) draw_plane(r, plane_, start0 + 0.5 * duration_ * v0_, radius);
+  if (mode_ == Mode::sphere_capsule) {
+    // The capsule (its axis and hull), and the Minkowski sum the centre runs into: the
+    // same axis grown to R = r + rc, dashed ends of the slab where the side stops.
+    const Segment& axis = capsule_.axis;
+    const double R = capsule_.radius + s0_.radius;
+    r.line(axis.a, axis.b, palette::surface, 2.5f);
+    r.point(axis.a, palette::surface, 5), r.point(axis.b, palette::surface, 5);
+    r.label(axis.a, "a", palette::surface), r.label(axis.b, "b", palette::surface);
+    // Across the axis toward the sphere's start, so that a view along the motion's plane
+    // shows the side's lines, the slab's ends and the caps in profile.
+    const Vec3 d = axis.b - axis.a;
+    Vec3 e1 = d == Vec3::Zero() ? Vec3::UnitY() : perpendicular(d);
+    if (d != Vec3::Zero()) {
+      const Vec3 off = (s0_.center - axis.a) - (s0_.center - axis.a).dot(d) / d.squaredNorm() * d;
+      if (off.norm() > 1e-9 * d.norm()) e1 = off.normalized();
+    }
+    capsule_hull(r, axis, capsule_.radius, palette::surface, 1.8f, e1);
+    capsule_hull(r, axis, R, palette::muted.with_alpha(0.8f), 1.2f, e1);
+    if (d != Vec3::Zero()) {
+      r.label(axis.a - R * e1, "grown capsule: R = r + rc = " + num(R), palette::muted, -40, 22);
+      // The slab's end planes, across the grown capsule: the side counts only between them.
+      for (const Vec3& end : {axis.a, axis.b}) r.dashed(end - 1.5 * R * e1, end + 1.5 * R * e1, palette::muted, 1.5f);
+      // The side's root (the infinite cylinder's), when it falls outside the slab.
+      const Vec3 m = s0_.center - axis.a, md = m.cross(d), vd = v0_.cross(d);
+      const double qa = vd.squaredNorm(), qb = md.dot(vd), qc = md.squaredNorm() - R * R * d.squaredNorm();
+      if (qa > 0 && qb < 0 && qc > 0 && qb * qb - qa * qc >= 0) {
+        const double t = qc / (-qb + std::sqrt(qb * qb - qa * qc));
+        const Vec3 x = s0_.center + t * v0_;
+        const double along = (x - axis.a).dot(d) / d.squaredNorm();
+        if (t <= duration_ && (along < 0 || along > 1)) {
+          r.point(x, palette::disagree, 5);
+          r.label(x, "cylinder's root t = " + num(t) + ": outside the slab", palette::disagree, 30, -6);
+        }
+      }
+    }
+  }
   // The shapes at t = 0 (input colours) and at T (faint), and their paths.
   r.dashed(start0, end0_, palette::muted, 1.5f);
   r.label(end0_, "t = T", palette::muted);
@@ -514,6 +628,7 @@ void SphereSweepsScene::draw_sweep(Frame& f) const {
       draw_box(r, then, c, 2.5f);
     } else {
       ball(r, s0_.center + t * v0_, s0_.radius, c, 2);
+      if (mode_ == Mode::sphere_capsule) r.point(s0_.center + t * v0_, c, 4);
       if (mode_ == Mode::sphere_sphere) ball(r, s1_.center + t * v1_, s1_.radius, c, 2);
     }
     r.point(sweep_->point, c, 6);
@@ -571,7 +686,10 @@ bool SphereSweepsScene::inputs() {
     changed |= edit("centre 0", s0_.center) | edit("radius 0", s0_.radius, 0.02f, 0, 1e9);
   }
   changed |= edit(mode_ == Mode::sphere_sphere ? "velocity 0" : "velocity", v0_);
-  if (mode_ == Mode::sphere_sphere)
+  if (mode_ == Mode::sphere_capsule)
+    changed |= edit("capsule a", capsule_.axis.a) | edit("capsule b", capsule_.axis.b) |
+               edit("capsule radius", capsule_.radius, 0.02f, 0, 1e9);
+  else if (mode_ == Mode::sphere_sphere)
     changed |= edit("centre 1", s1_.center) | edit("radius 1", s1_.radius, 0.02f, 0, 1e9) | edit("velocity 1", v1_);
   else
     changed |= edit("plane normal", plane_.normal, 0.01f) | edit("plane offset", plane_.offset);
@@ -599,6 +717,7 @@ std::vector<Handle> SphereSweepsScene::handles() {
   h.push_back({mode_ == Mode::box_plane ? &box_.center : &s0_.center, "centre"});
   h.push_back({&end0_, "centre at T"});
   if (mode_ == Mode::sphere_sphere) h.insert(h.end(), {{&s1_.center, "centre 1"}, {&end1_, "centre 1 at T"}});
+  else if (mode_ == Mode::sphere_capsule) h.insert(h.end(), {{&capsule_.axis.a, "capsule a"}, {&capsule_.axis.b, "capsule b"}});
   else h.push_back({&plane_point_, "plane", &plane_});
   return h;
 }
@@ -608,6 +727,8 @@ std::string SphereSweepsScene::token() const {
     case Mode::sphere_plane: return replay_token("sweep_sphere_plane", SpherePlaneMotion{s0_, v0_, plane_, duration_});
     case Mode::sphere_sphere: return replay_token("sweep_sphere_sphere", SphereSphereMotion{s0_, v0_, s1_, v1_, duration_});
     case Mode::box_plane: return replay_token("sweep_box_plane", BoxPlaneMotion{box_, v0_, plane_, duration_});
+    case Mode::sphere_capsule:
+      return replay_token("sweep_sphere_capsule", SphereCapsuleMotion{s0_, v0_, capsule_, duration_});
     case Mode::cores: break;
   }
   const Sphere sa{a_.p, a_.radius}, sb{b_.p, b_.radius};
