@@ -561,10 +561,10 @@ TEST_CASE("L02S8 robustness: moving meshes touching exactly", "[lab02][step8]") 
   // The contact happens exactly at the end of the frame: closed, it counts.
   check::example(q, "touching exactly at t = 1",
                  MovingMeshes{spike(), {0, 0, -2}, floor_square(), {0, 0, 0}}, expect_contact(true, 1, {1, 2, 0}));
-  // A's lowest edge ends exactly on B's top edge: edge-edge at a vertex of each.
+  // The end (2, 0, 1) of A's lowest edge lands exactly on B's top edge.
   Mesh b = upright_b();
   b.vertices = {{2, -2, 0}, {2, 2, 0}, {2, 0, -2}};
-  check::example(q, "edge end on an edge end: (2, 0, 0) at t = 1/2",
+  check::example(q, "the end of an edge onto an edge: (2, 0, 0) at t = 1/2",
                  MovingMeshes{upright_a(), {0, 0, -2}, b, {0, 0, 0}}, expect_contact(true, 0.5, {2, 0, 0}));
   // Coplanar: two triangles in the plane z = 0 slide into each other.
   Mesh flat_a, flat_b;
