@@ -452,14 +452,16 @@ Outcome first_contact_moving_meshes(const MovingMeshes& in, const MeshContact& g
     return oracle::touch_during_frame_fast(m.a, m.velocity_a, m.b, m.velocity_b);
   };
   const bool doubt = rules == Rules::random && check::flips_under_perturbation(in, touches, 4);
-  // What A's motion alone would give: the mistake of moving A by va, not by va - vb.
-  const oracle::MeshContact absolute = oracle::first_contact_translating(in.a, in.velocity_a, in.b, Vec3::Zero());
+  // What A's motion alone would give (the mistake of moving A by va, not by va - vb):
+  // computed only for a failure's message.
   const auto telltale = [&](bool hit, double t) {
-    if (in.velocity_b == Vec3::Zero() || hit != absolute.hit || (hit && std::abs(t - absolute.t) > 1e-6)) return std::string();
+    if (in.velocity_b == Vec3::Zero()) return std::string();
+    const oracle::MeshContact absolute = oracle::first_contact_translating(in.a, in.velocity_a, in.b, Vec3::Zero());
+    if (hit != absolute.hit || (hit && std::abs(t - absolute.t) > 1e-6)) return std::string();
     return std::string("; yours is what A's own motion va gives against a still B: B moves too, so use the relative motion va - vb");
   };
-  const Outcome decision = verdict(got.hit, exact.hit, doubt, rules, "contact", "no contact",
-                                   contact_rule(in, exact) + yours(got.hit) + telltale(got.hit, got.t));
+  Outcome decision = verdict(got.hit, exact.hit, doubt, rules, "contact", "no contact", contact_rule(in, exact) + yours(got.hit));
+  if (decision.verdict == Outcome::Verdict::fail) decision.why += telltale(got.hit, got.t);
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !exact.hit) return decision;
   // t, certified: no contact before t - dt, contact by t + dt. dt = tol over the closing
   // speed along the contact's normal; exact input is held to 1e-9.
