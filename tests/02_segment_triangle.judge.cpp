@@ -1,5 +1,6 @@
 #include "02_segment_triangle.judge.h"
 
+#include "common/oracle/moving_meshes.h"
 #include "common/oracle/oracle.h"
 #include "common/harness/segment_doubt.h"
 
@@ -420,6 +421,85 @@ Outcome first_hit_moving(const MovingMesh& in, const MeshHit& got) {
   return decision;
 }
 
+// ---- Step 7: two meshes moving by translations -----------------------------------------
+
+namespace {
+
+// The exact first contact, in the header's words: which family, which features, when.
+std::string contact_rule(const MovingMeshes& in, const oracle::MeshContact& c) {
+  const Vec3 d = in.velocity_a - in.velocity_b;
+  const std::string seen = " (seen from B, A moves by va - vb = " + fmt(d) + ")";
+  if (!c.hit) return "the meshes never touch during the frame, 0 <= t <= 1" + seen;
+  const std::string at = " at t = " + fmt(c.t) + ", point " + fmt(c.point);
+  if (c.kind == 0)
+    return "the meshes first touch" + at + ": vertex " + std::to_string(c.feature_a) + " of A, on its path p -> p + d, meets face " +
+           std::to_string(c.feature_b) + " of B" + seen;
+  if (c.kind == 1)
+    return "the meshes first touch" + at + ": vertex " + std::to_string(c.feature_b) +
+           " of B, on its path q -> q - d (the other delta matrix), meets face " + std::to_string(c.feature_a) + " of A" + seen;
+  const auto ea = oracle::mesh_edges(in.a)[std::size_t(c.feature_a)], eb = oracle::mesh_edges(in.b)[std::size_t(c.feature_b)];
+  return "the meshes first touch" + at + ": edge-edge, edge (" + std::to_string(ea[0]) + ", " + std::to_string(ea[1]) +
+         ") of A, sweeping its quad (two triangles), meets edge (" + std::to_string(eb[0]) + ", " + std::to_string(eb[1]) +
+         ") of B" + seen;
+}
+
+}  // namespace
+
+Outcome first_contact_moving_meshes(const MovingMeshes& in, const MeshContact& got, Rules rules) {
+  const double tol = tolerance_of(in);
+  const oracle::MeshContact exact = oracle::first_contact_translating(in.a, in.velocity_a, in.b, in.velocity_b);
+  const auto touches = [](const MovingMeshes& m) {
+    return oracle::touch_during_frame_fast(m.a, m.velocity_a, m.b, m.velocity_b);
+  };
+  const bool doubt = rules == Rules::random && check::flips_under_perturbation(in, touches, 4);
+  // What A's motion alone would give (the mistake of moving A by va, not by va - vb):
+  // computed only for a failure's message.
+  const auto telltale = [&](bool hit, double t) {
+    if (in.velocity_b == Vec3::Zero()) return std::string();
+    const oracle::MeshContact absolute = oracle::first_contact_translating(in.a, in.velocity_a, in.b, Vec3::Zero());
+    if (hit != absolute.hit || (hit && std::abs(t - absolute.t) > 1e-6)) return std::string();
+    return std::string("; yours is what A's own motion va gives against a still B: B moves too, so use the relative motion va - vb");
+  };
+  Outcome decision = verdict(got.hit, exact.hit, doubt, rules, "contact", "no contact", contact_rule(in, exact) + yours(got.hit));
+  if (decision.verdict == Outcome::Verdict::fail) decision.why += telltale(got.hit, got.t);
+  if (decision.verdict == Outcome::Verdict::fail || !got.hit || !exact.hit) return decision;
+  // t, certified: no contact before t - dt, contact by t + dt. dt = tol over the closing
+  // speed along the contact's normal; exact input is held to 1e-9.
+  const Vec3 d = in.velocity_a - in.velocity_b;
+  const double dt = rules == Rules::exact ? 1e-9 : exact.approach > 0 ? tol / exact.approach : 1.0;
+  const std::string got_t = "t = " + fmt(got.t) + ", point " + fmt(got.point);
+  const std::string exact_t = "t = " + fmt(exact.t) + ", point " + fmt(exact.point);
+  // Whether a perturbation of tol changes "touching by time x": then either side passes
+  // (a near miss earlier than the exact first contact, or a contact that a hair removes).
+  const auto in_doubt = [&](double x) {
+    return rules == Rules::random && check::flips_under_perturbation(in, [x](const MovingMeshes& m) {
+             return oracle::contact_by(m.a, m.velocity_a, m.b, m.velocity_b, x);
+           });
+  };
+  if (oracle::contact_by(in.a, in.velocity_a, in.b, in.velocity_b, got.t - dt)) {
+    if (in_doubt(got.t - dt)) return ambiguous();
+    return fail(exact_t, got_t,
+                contact_rule(in, exact) + ": the meshes already touch before your t = " + fmt(got.t) +
+                    " (tolerance " + fmt(dt) + "): report the first contact, the smallest t of all three families" +
+                    telltale(true, got.t));
+  }
+  if (!oracle::contact_by(in.a, in.velocity_a, in.b, in.velocity_b, got.t + dt)) {
+    if (in_doubt(got.t + dt)) return ambiguous();
+    return fail(exact_t, got_t,
+                contact_rule(in, exact) + ": the meshes do not touch yet at your t = " + fmt(got.t) + " (tolerance " + fmt(dt) +
+                    ")" + telltale(true, got.t));
+  }
+  const double reach = 2 * tol + d.norm() * std::min(dt, 1.0);
+  const bool on_a = oracle::within_translated(got.point, in.a, got.t * in.velocity_a, reach);
+  const bool on_b = oracle::within_translated(got.point, in.b, got.t * in.velocity_b, reach);
+  if (!on_a || !on_b)
+    return fail(exact_t, got_t,
+                std::string("the point must be where the meshes touch, in the world at your t: on A moved by t va and on B "
+                            "moved by t vb (within ") + fmt(reach) + "), and yours is off " + (on_a ? "B" : "A") +
+                    " (a point found in B's frame moves on by t vb; in A's frame by t va)");
+  return decision;
+}
+
 rc::Gen<PointTriangle> point_triangle() {
   return rc::gen::exec([] {
     const double s = *gen::wide_scale();
@@ -462,6 +542,83 @@ rc::Gen<MovingMesh> moving_mesh() {
     const RigidTransform m1 = *rc::gen::oneOf(rc::gen::just(m0), gen::rigid_transform(s));
     // The segment was aimed at the mesh in its own frame; place it in the world at m0/m1.
     return MovingMesh{{m0 * base.segment.a, m1 * base.segment.b}, base.mesh, m0, m1};
+  });
+}
+
+// ---- Step 7's random meshes ------------------------------------------------------------
+
+namespace {
+
+// A point of the unit-ish cube [-1, 1]^3 on a 1/8 lattice.
+rc::Gen<Vec3> eighth_point() {
+  return rc::gen::exec([]() -> Vec3 { return Vec3(*gen::integer(8), *gen::integer(8), *gen::integer(8)) / 8.0; });
+}
+
+// A small mesh within distance sqrt(3) of the origin: a tetrahedron, a tent (two
+// triangles on a shared edge) or one triangle; its faces have non-zero area.
+Mesh small_mesh() {
+  const int shape = *rc::gen::weightedElement<int>({{5, 0}, {3, 1}, {2, 2}});
+  const int count = shape == 0 ? 4 : shape == 1 ? 4 : 3;
+  Mesh m;
+  for (;;) {
+    m.vertices.clear();
+    for (int i = 0; i < count; ++i) m.vertices.push_back(*eighth_point());
+    const Vec3 e1 = m.vertices[1] - m.vertices[0], e2 = m.vertices[2] - m.vertices[0];
+    const bool flat = e1.cross(e2).squaredNorm() < 1.0 / 64;
+    const bool thin = count == 4 && std::abs(e1.cross(e2).dot(m.vertices[3] - m.vertices[0])) < 1.0 / 16;
+    if (!flat && !thin) break;
+  }
+  if (shape == 0) m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  else if (shape == 1) m.triangles = {{0, 1, 2}, {0, 3, 1}};
+  else m.triangles = {{0, 1, 2}};
+  return m;
+}
+
+// A point of the mesh: a vertex, a point inside an edge, or inside a face, and the
+// feature's kind (0 vertex, 1 edge, 2 face).
+Vec3 feature_point(const Mesh& m, int kind) {
+  const auto& tri = m.triangles[std::size_t(*rc::gen::inRange<int>(0, int(m.triangles.size())))];
+  const Vec3 v0 = m.vertices[std::size_t(tri[0])], v1 = m.vertices[std::size_t(tri[1])], v2 = m.vertices[std::size_t(tri[2])];
+  if (kind == 0) return v0;
+  // On an edge at an odd sixteenth, 3/16 to 13/16 from either end: never at a time t0 of
+  // the aim below, since the swept parallelogram's diagonal (u = t) is an exact
+  // degeneracy, the robustness step's.
+  if (kind == 1) return v0 + (2 * *rc::gen::inRange(1, 7) + 1) / 16.0 * (v1 - v0);
+  const double u = *rc::gen::inRange(1, 8) / 8.0;
+  const double w = *rc::gen::inRange(1, 9 - int(8 * u)) / 8.0 * (1 - u);
+  return v0 + u * (v1 - v0) + w * (v2 - v0);
+}
+
+}  // namespace
+
+rc::Gen<MovingMeshes> moving_meshes() {
+  return rc::gen::exec([] {
+    const double s = *gen::wide_scale();
+    MovingMeshes in;
+    in.a = small_mesh();
+    in.b = small_mesh();
+    // B sits 4 to 6 units away in a random direction: apart at t = 0.
+    Vec3 dir(*gen::integer(4), *gen::integer(4), *gen::integer(4));
+    if (dir == Vec3::Zero()) dir = Vec3(1, 0, 0);
+    const Vec3 centre = dir.normalized() * (4 + *rc::gen::inRange(0, 3));
+    for (Vec3& v : in.b.vertices) v += centre;
+    // Aim: a vertex of A at a face of B, a vertex of B at a face of A, or an edge at an
+    // edge, to meet at t0; t0 > 1 stops short. Sometimes the aim is nudged a little
+    // beside the feature (1e-6 to 1e-3 of the size: far outside the ambiguity band).
+    const int family = *rc::gen::inRange(0, 3);
+    const Vec3 x_a = feature_point(in.a, family == 0 ? 0 : family == 1 ? 2 : 1);
+    const Vec3 x_b = feature_point(in.b, family == 0 ? 2 : family == 1 ? 0 : 1);
+    const double t0 = *rc::gen::weightedElement<double>({{6, 0.25}, {6, 0.5}, {6, 0.75}, {3, 0.9375}, {3, 1.25}, {2, 2.0}});
+    Vec3 nudge = Vec3::Zero();
+    if (*rc::gen::element(0, 0, 1)) nudge = Vec3(*gen::integer(4), *gen::integer(4), *gen::integer(4)) * *gen::tiny(10, 20);
+    const Vec3 d = (x_b + nudge - x_a) / t0;
+    const Vec3 velocity_b = *rc::gen::element(0, 1) ? Vec3::Zero() : Vec3(*gen::integer(8), *gen::integer(8), *gen::integer(8));
+    in.velocity_b = velocity_b;
+    in.velocity_a = *rc::gen::element(0, 0, 0, 0, 0, 0, 0, 0, 0, 1) ? velocity_b : Vec3(d + velocity_b);  // now and then: no relative motion
+    for (Vec3& v : in.a.vertices) v *= s;
+    for (Vec3& v : in.b.vertices) v *= s;
+    in.velocity_a *= s, in.velocity_b *= s;
+    return in;
   });
 }
 

@@ -45,10 +45,26 @@ labkit_mutant(02 segment_triangle NAME moving_one_frame STEP 6 SAYS "m1^-1 b"
   FIND "const Segment local{m0.inverse() * segment.a, m1.inverse() * segment.b};"
   REPLACE "const Segment local{m0.inverse() * segment.a, m0.inverse() * segment.b};")
 
-labkit_mutant(02 segment_triangle NAME crossing_point_edge_tests STEP 7 SAYS "boundary"
+labkit_mutant(02 segment_triangle NAME vertex_face_only STEP 7 SAYS "edge-edge"
+  FIND "for (const auto& [i, j] : edges_of(a)) {"
+  REPLACE "for (const auto& [i, j] : std::vector<std::array<int, 2>>{}) {")
+
+labkit_mutant(02 segment_triangle NAME one_delta_matrix STEP 7 SAYS "vertex" "of B" "other delta matrix"
+  FIND "for (const Vec3& q : b.vertices)"
+  REPLACE "for (const Vec3& q : std::vector<Vec3>{})")
+
+labkit_mutant(02 segment_triangle NAME absolute_motion STEP 7 SAYS "relative motion"
+  FIND "const Vec3 d = velocity_a - velocity_b;  // relative, never absolute: B moves too"
+  REPLACE "const Vec3 d = velocity_a;")
+
+labkit_mutant(02 segment_triangle NAME last_contact STEP 7 SAYS "first contact"
+  FIND "if (best.hit && t >= best.t) return;  // not earlier"
+  REPLACE "if (best.hit && t <= best.t) return;")
+
+labkit_mutant(02 segment_triangle NAME crossing_point_edge_tests STEP 8 SAYS "boundary"
   FIND "const double side = d_a > d_b ? 1.0 : -1.0;"
   REPLACE "if (!point_in_triangle_edges(s.point(d_a / (d_a - d_b)), tri)) return {}; const double side = 0;")
 
-labkit_mutant(02 segment_triangle NAME coplanar_is_a_miss STEP 7 SAYS "in the plane"
+labkit_mutant(02 segment_triangle NAME coplanar_is_a_miss STEP 8 SAYS "in the plane"
   FIND "if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);"
   REPLACE "if (d_a == 0 && d_b == 0) return {};")

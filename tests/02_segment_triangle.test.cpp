@@ -383,7 +383,83 @@ TEST_CASE("L02S6 segment against a moving mesh: random cases", "[lab02][step6][o
   });
 }
 
-// ---- Step 7: robustness --------------------------------------------------------------
+// ---- Step 7 ------------------------------------------------------------------------
+
+namespace {
+
+// The handout's meshes for step 7 (all apart at t = 0).
+// A small tetrahedron whose lowest vertex, the tip (1, 2, 2), points down at the floor.
+Mesh spike(const Vec3& tip = {1, 2, 2}) {
+  Mesh m;
+  m.vertices = {tip, tip + Vec3(1, 0, 1), tip + Vec3(0, 1, 1), tip + Vec3(0, 0, 2)};
+  m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  return m;
+}
+Mesh floor_square() {
+  Mesh m;
+  add_square(m, 0);
+  return m;
+}
+// Two upright triangles, crossed: A in the plane y = 0 with its lowest edge at z = 1
+// from x = -2 to 2; B in the plane x = 1 with its top edge at z = 0 from y = -2 to 2.
+Mesh upright_a() {
+  Mesh m;
+  m.vertices = {{-2, 0, 1}, {2, 0, 1}, {0, 0, 3}};
+  m.triangles = {{0, 1, 2}};
+  return m;
+}
+Mesh upright_b() {
+  Mesh m;
+  m.vertices = {{1, -2, 0}, {1, 2, 0}, {1, 0, -2}};
+  m.triangles = {{0, 1, 2}};
+  return m;
+}
+
+MeshContact run_contact(const MovingMeshes& in) {
+  return first_contact_moving_meshes(in.a, in.velocity_a, in.b, in.velocity_b);
+}
+
+// An example's check: the expected contact, then the judge's rules (exact input).
+auto expect_contact(bool hit, double t, Vec3 point) {
+  return [=](const MovingMeshes& in) {
+    const MeshContact got = run_contact(in);
+    const Outcome rules = judge::first_contact_moving_meshes(in, got, Rules::exact);
+    if (rules.verdict == Outcome::Verdict::fail) return rules;
+    Expect e;
+    e.equal("hit", got.hit, hit);
+    if (hit && got.hit) {
+      e.near("t", got.t, t, 1e-12);
+      e.near("point", got.point, point, 1e-12);
+    }
+    return e.outcome();
+  };
+}
+
+}  // namespace
+
+TEST_CASE("L02S7 moving mesh against moving mesh: worked examples", "[lab02][step7]") {
+  const std::string q = "first_contact_moving_meshes";
+  check::example(q, "a vertex of A falls on B's face: t = 1/2",
+                 MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 2, 0}));
+  check::example(q, "both move: A falls by 2, the floor rises by 2, t = 1/2",
+                 MovingMeshes{spike(), {0, 0, -2}, floor_square(), {0, 0, 2}}, expect_contact(true, 0.5, {1, 2, 1}));
+  check::example(q, "a vertex of B meets A's face: the rising floor lifts into the spike",
+                 MovingMeshes{floor_square(), {0, 0, 4}, spike(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 2, 2}));
+  check::example(q, "edge against edge: crossed triangles, t = 1/2",
+                 MovingMeshes{upright_a(), {0, 0, -2}, upright_b(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 0, 0}));
+  check::example(q, "stops short: the spike falls only 1.5",
+                 MovingMeshes{spike(), {0, 0, -1.5}, floor_square(), {0, 0, 0}}, expect_contact(false, 0, {0, 0, 0}));
+  check::example(q, "the same velocity: never closer",
+                 MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, -4}}, expect_contact(false, 0, {0, 0, 0}));
+}
+
+TEST_CASE("L02S7 moving mesh against moving mesh: random cases", "[lab02][step7][oracle]") {
+  check::random_cases("first_contact_moving_meshes", judge::moving_meshes(), [](const MovingMeshes& in) {
+    return judge::first_contact_moving_meshes(in, run_contact(in));
+  });
+}
+
+// ---- Step 8: robustness --------------------------------------------------------------
 // Exact degenerate input on integer coordinates: the header's rules hold exactly.
 
 namespace {
@@ -423,7 +499,7 @@ Outcome expect_miss(const SegmentTrianglePair& in) {
 
 }  // namespace
 
-TEST_CASE("L02S7 robustness: touching, edges, vertices, coplanar, zero size", "[lab02][step7]") {
+TEST_CASE("L02S8 robustness: touching, edges, vertices, coplanar, zero size", "[lab02][step8]") {
   const std::string q = "robust.find_segment_triangle";
   check::example(q, "an end exactly on the long edge", pair({1, 2, 0}, {1, 2, 5}, kSmall), expect_hit(0));
   check::example(q, "through vertex v0 at t = 1/3", pair({0, 0, 1}, {0, 0, -2}, kSmall), expect_hit(1.0 / 3));
@@ -453,7 +529,7 @@ TEST_CASE("L02S7 robustness: touching, edges, vertices, coplanar, zero size", "[
                  on_boundary);
 }
 
-TEST_CASE("L02S7 robustness: shared edges and vertices in a mesh", "[lab02][step7]") {
+TEST_CASE("L02S8 robustness: shared edges and vertices in a mesh", "[lab02][step8]") {
   Mesh floor;
   add_square(floor, 0);
   const std::string q = "robust.all_hits";
@@ -477,7 +553,30 @@ TEST_CASE("L02S7 robustness: shared edges and vertices in a mesh", "[lab02][step
                  });
 }
 
-TEST_CASE("L02S7 robustness: random exact degenerate cases", "[lab02][step7][oracle]") {
+TEST_CASE("L02S8 robustness: moving meshes touching exactly", "[lab02][step8]") {
+  const std::string q = "robust.first_contact_moving_meshes";
+  // The spike's vertex (1, 1, 2) falls onto the floor's shared diagonal (0,0)-(4,4).
+  check::example(q, "a vertex onto the shared diagonal at t = 1/2",
+                 MovingMeshes{spike({1, 1, 2}), {0, 0, -4}, floor_square(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 1, 0}));
+  // The contact happens exactly at the end of the frame: closed, it counts.
+  check::example(q, "touching exactly at t = 1",
+                 MovingMeshes{spike(), {0, 0, -2}, floor_square(), {0, 0, 0}}, expect_contact(true, 1, {1, 2, 0}));
+  // The end (2, 0, 1) of A's lowest edge lands exactly on B's top edge.
+  Mesh b = upright_b();
+  b.vertices = {{2, -2, 0}, {2, 2, 0}, {2, 0, -2}};
+  check::example(q, "the end of an edge onto an edge: (2, 0, 0) at t = 1/2",
+                 MovingMeshes{upright_a(), {0, 0, -2}, b, {0, 0, 0}}, expect_contact(true, 0.5, {2, 0, 0}));
+  // Coplanar: two triangles in the plane z = 0 slide into each other.
+  Mesh flat_a, flat_b;
+  flat_a.vertices = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}};
+  flat_a.triangles = {{0, 1, 2}};
+  flat_b.vertices = {{4, 0, 0}, {6, 0, 0}, {4, 2, 0}};
+  flat_b.triangles = {{0, 1, 2}};
+  check::example(q, "in one plane: sliding into each other, t = 1/2",
+                 MovingMeshes{flat_a, {4, 0, 0}, flat_b, {0, 0, 0}}, expect_contact(true, 0.5, {4, 0, 0}));
+}
+
+TEST_CASE("L02S8 robustness: random exact degenerate cases", "[lab02][step8][oracle]") {
   check::random_cases("robust.find_segment_triangle", gen::exact_segment_triangle(), exact_find);
   check::random_cases("robust.point_in_triangle", judge::exact_point_triangle(), [](const PointTriangle& in) {
     const Outcome o = judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle), Rules::exact);
@@ -552,6 +651,20 @@ TEST_CASE("L02 preconditions: invalid input throws std::invalid_argument naming 
     names("mesh.triangles[1]", [&] { first_hit(good, bad_index); });
     names("mesh.triangles[1]", [&] { any_hit(good, bad_index); });
     names("mesh.triangles[1]", [&] { all_hits(good, bad_index); });
+  }
+  for (double bad : {nan, inf}) {
+    const Vec3 p(bad, 0, 0);
+    Mesh bad_vertex = floor;
+    bad_vertex.vertices[1] = p;
+    names("velocity_a", [&] { first_contact_moving_meshes(floor, p, floor, Vec3::Zero()); });
+    names("velocity_b", [&] { first_contact_moving_meshes(floor, Vec3::Zero(), floor, p); });
+    names("mesh.vertices[1]", [&] { first_contact_moving_meshes(bad_vertex, Vec3::Zero(), floor, Vec3::Zero()); });
+    names("mesh.vertices[1]", [&] { first_contact_moving_meshes(floor, Vec3::Zero(), bad_vertex, Vec3::Zero()); });
+  }
+  {
+    Mesh bad_index = floor;
+    bad_index.triangles[0][1] = 7;
+    names("mesh.triangles[0]", [&] { first_contact_moving_meshes(bad_index, Vec3::Zero(), floor, Vec3::Zero()); });
   }
   RigidTransform stretched = RigidTransform::Identity();
   stretched.linear() *= 2;

@@ -21,6 +21,8 @@ template <class V> void fields(MeshHit& h, V&& v) {
   v("barycentric", h.barycentric); v("normal", h.normal);
 }
 
+template <class V> void fields(MeshContact& c, V&& v) { v("hit", c.hit); v("t", c.t); v("point", c.point); }
+
 using MeshHits = std::vector<MeshHit>;
 
 }  // namespace labkit::lab02
@@ -36,5 +38,6 @@ using MeshHits = std::vector<MeshHit>;
   CALL(MeshHit, first_hit, (const Segment&, const Mesh&))                                         \
   CALL(bool, any_hit, (const Segment&, const Mesh&))                                              \
   CALL(MeshHits, all_hits, (const Segment&, const Mesh&))                                         \
-  CALL(MeshHit, first_hit_moving, (const Segment&, const Mesh&, const RigidTransform&, const RigidTransform&))
+  CALL(MeshHit, first_hit_moving, (const Segment&, const Mesh&, const RigidTransform&, const RigidTransform&)) \
+  CALL(MeshContact, first_contact_moving_meshes, (const Mesh&, const Vec3&, const Mesh&, const Vec3&))
 // clang-format on

@@ -80,4 +80,14 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
   not_implemented("L02S6");
 }
 
+// L02S7: vertex paths against faces, both ways, and swept edges against edges.
+MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b,
+                                        const Vec3& velocity_b) {
+  (void)a;
+  (void)velocity_a;
+  (void)b;
+  (void)velocity_b;
+  not_implemented("L02S7");
+}
+
 }  // namespace labkit::lab02

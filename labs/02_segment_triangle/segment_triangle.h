@@ -68,7 +68,7 @@ struct PlaneCrossing {
 
 // d_a, d_b always (both 0 for a zero-area triangle); t and point only when `crosses`,
 // which is false when both ends are strictly on one side, and when both are on the
-// plane (the segment lies in it: step 7).
+// plane (the segment lies in it: step 8).
 PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle);
 
 // ---- Step 2 (L02S2): point in triangle by edge tests -------------------------------
@@ -139,9 +139,56 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh);
 MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0,
                          const RigidTransform& m1);
 
-// ---- Step 7 (L02S7): robustness ----------------------------------------------------
-// No new function: steps 1 to 6 must follow the rules at the top of this file on exact
+// ---- Step 7 (L02S7): moving mesh against moving mesh, by extrusion -----------------
+
+// Two meshes move by translations during the frame, t from 0 to 1: a vertex p of A is at
+// p + t velocity_a, a vertex q of B at q + t velocity_b (vertices given at t = 0). Seen
+// from B, only A moves, by d = velocity_a - velocity_b (the delta matrix of step 6 for
+// translations), and the 4D question "when do they first touch?" becomes lab 02's 3D
+// segment-against-triangle queries (lecture 000 and 004, "moving meshes: extrusion"):
+//   - a vertex p of A along the segment p -> p + d, against B's faces;
+//   - a vertex q of B along q -> q - d, against A's faces (the other delta matrix);
+//   - an edge p0 p1 of A sweeps the parallelogram p0, p1, p1 + d, p0 + d: as the two
+//     triangles (p0, p1, p1 + d) and (p0, p1 + d, p0 + d), against each edge q0 q1 of B.
+//     The time of a hit is its weight along d: w2 on the first triangle, w1 + w2 on the
+//     second.
+//            p0 + d ------ p1 + d          edges: the distinct vertex pairs of the
+//              |  second  /  |             triangles (mesh.triangles), each once.
+//              |       /     |
+//              |   /  first  |
+//             p0 ---------- p1
+// The first contact is the smallest such time over the three families (at the first
+// touch of two triangles, a vertex touches a face or an edge touches an edge). Report
+// it, and the contact point in the world at that time (on both meshes as they are
+// then); no contact during [0, 1]: hit = false.
+//
+// Precondition (not checked: it would cost a triangle-triangle test per pair): the
+// meshes do not touch at t = 0. Checked (std::invalid_argument naming the argument):
+// finite coordinates and velocities, triangles indexing their mesh's vertices.
+// Closed sets, as above: touching counts, a grazing contact is a contact, and a
+// contact at t = 1 counts. Equal velocities: the meshes never meet.
+//
+// Tolerances. tol = 1e-9 * S, S the largest absolute coordinate of the input (vertices
+// and velocities).
+//  - hit must equal the exact answer, except where a perturbation of tol changes it.
+//  - t is certified exactly: the meshes must not touch before t - tol / c, and must
+//    touch by t + tol / c, c the closing speed along the contact's unit normal (the
+//    face's normal; for two edges e, f, their cross product e x f). A grazing contact
+//    (small c) fixes t only loosely.
+//  - point: within 2 tol + |d| tol / c of both meshes at your t.
+struct MeshContact {
+  bool hit = false;           // the meshes touch at some t in [0, 1]
+  double t = 0.0;             // the first such time
+  Vec3 point = Vec3::Zero();  // a point where they touch then, in the world
+};
+
+MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b,
+                                        const Vec3& velocity_b);
+
+// ---- Step 8 (L02S8): robustness ----------------------------------------------------
+// No new function: steps 1 to 7 must follow the rules at the top of this file on exact
 // degenerate input (ends on the triangle, through edges and vertices, coplanar
-// segments, zero-length segments, zero-area triangles, edges shared in a mesh).
+// segments, zero-length segments, zero-area triangles, edges shared in a mesh, meshes
+// touching exactly at a vertex or an edge).
 
 }  // namespace labkit::lab02

@@ -7,9 +7,11 @@
 // decision, and only they carry rounding error.
 #include "segment_triangle.h"
 
+#include <array>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -465,6 +467,76 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
   hit.point = m1 * hit.point;
   hit.normal = m1.linear() * hit.normal;
   return hit;
+}
+
+// ---- Step 7: moving mesh against moving mesh, by extrusion ---------------------------
+
+namespace {
+
+// The edges of a mesh: the distinct vertex pairs of its triangles, each once.
+std::vector<std::array<int, 2>> edges_of(const Mesh& mesh) {
+  std::set<std::array<int, 2>> edges;
+  for (const auto& tri : mesh.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const int u = tri[i], v = tri[(i + 1) % 3];
+      if (u != v) edges.insert({std::min(u, v), std::max(u, v)});
+    }
+  return {edges.begin(), edges.end()};
+}
+
+// The earliest contact so far: its time, and its point in the frame it was found in,
+// carried to the world by that frame's own motion at that time.
+struct Earliest {
+  MeshContact best;
+  void offer(double t, const Vec3& point_in_frame, const Vec3& frame_velocity) {
+    if (best.hit && t >= best.t) return;  // not earlier
+    best = {true, t, point_in_frame + t * frame_velocity};
+  }
+};
+
+}  // namespace
+
+// Seen from B, B stands still and A moves by d = va - vb (the delta matrix of step 6,
+// for translations). Every family below is a segment against a still triangle, so the
+// decisions are step 4's exact signs (decide); only t and the point are constructed.
+MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b,
+                                        const Vec3& velocity_b) {
+  require("first_contact_moving_meshes", a);
+  require("first_contact_moving_meshes", b);
+  require_finite("first_contact_moving_meshes", "velocity_a", velocity_a);
+  require_finite("first_contact_moving_meshes", "velocity_b", velocity_b);
+  const Vec3 d = velocity_a - velocity_b;  // relative, never absolute: B moves too
+  Earliest earliest;
+  // 1. A vertex p of A travels p -> p + d past B's faces; the point is in B's frame.
+  for (const Vec3& p : a.vertices)
+    for (std::size_t k = 0; k < b.size(); ++k) {
+      const Decision h = decide({p, p + d}, b.triangle(k));
+      if (h.hit) earliest.offer(h.t, p + h.t * d, velocity_b);
+    }
+  // 2. Seen from A, B moves by -d: B's vertices against A's faces (the other delta matrix).
+  for (const Vec3& q : b.vertices)
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      const Decision h = decide({q, q - d}, a.triangle(k));
+      if (h.hit) earliest.offer(h.t, q - h.t * d, velocity_a);
+    }
+  // 3. An edge p0 p1 of A sweeps the parallelogram p0, p1, p1 + d, p0 + d (the 4D
+  //    extrusion of the edge, in 3D): two triangles, against each edge q0 q1 of B. A hit
+  //    point w0 p0 + w1 p1 + w2 (p1 + d) is reached at t = w2 (the weight of the moved
+  //    corner); on the second triangle (p0, p1 + d, p0 + d) at t = w1 + w2.
+  const auto edges_b = edges_of(b);
+  for (const auto& [i, j] : edges_of(a)) {
+    const Vec3& p0 = a.vertices[std::size_t(i)];
+    const Vec3& p1 = a.vertices[std::size_t(j)];
+    const Triangle first{p0, p1, p1 + d}, second{p0, p1 + d, p0 + d};
+    for (const auto& [k, l] : edges_b) {
+      const Segment edge{b.vertices[std::size_t(k)], b.vertices[std::size_t(l)]};
+      const SegmentTriangleHit h1 = hit_from(decide(edge, first), edge, first);
+      if (h1.hit) earliest.offer(std::clamp(h1.barycentric[2], 0.0, 1.0), h1.point, velocity_b);
+      const SegmentTriangleHit h2 = hit_from(decide(edge, second), edge, second);
+      if (h2.hit) earliest.offer(std::clamp(h2.barycentric[1] + h2.barycentric[2], 0.0, 1.0), h2.point, velocity_b);
+    }
+  }
+  return earliest.best;
 }
 
 }  // namespace labkit::lab02

@@ -5,11 +5,13 @@
 //   point and triangle    point_in_triangle_*, barycentric            steps 2-3
 //   segment and mesh      any_hit, first_hit, all_hits                step 5
 //   moving mesh           first_hit_moving                            step 6
+//   two moving meshes     first_contact_moving_meshes                 step 7
 // The student's answers are drawn in the colour of their verdict; the exact answers
 // (the toggle) are violet rings and arrows beside them.
 #include "viewer/scenes/scenes.h"
 
 #include "02_segment_triangle.judge.h"
+#include "common/oracle/moving_meshes.h"
 #include "common/oracle/oracle.h"
 #include "segment_triangle.h"
 
@@ -23,7 +25,7 @@ namespace {
 using namespace labkit;
 using namespace labkit::lab02;
 
-enum class Mode { triangle, point, mesh, moving };
+enum class Mode { triangle, point, mesh, moving, contact };
 
 const std::vector<Preset> kPresets = {
     {"crossing", "the crossing point: d_a = 3, d_b = -1, so t = 3/4",
@@ -35,6 +37,8 @@ const std::vector<Preset> kPresets = {
     {"coplanar", "in the plane, entering at t = 1/6", "find_segment_triangle:-1,1,0,5,1,0,0,0,0,3,0,0,0,3,0"},
     {"shelf", "a mesh: the shelf is hit before the floor", nullptr, true, -35, 18},
     {"moving", "a rising floor meets a falling particle", nullptr, true, -60, 12},
+    {"extrusion", "edge against edge: A's lowest edge sweeps a parallelogram, B's top edge pierces it at t = 1/2",
+     "first_contact_moving_meshes:3,-2,0,1,2,0,1,0,0,3,1,0,1,2,0,0,-2,3,1,-2,0,1,2,0,1,0,-2,1,0,1,2,0,0,0", true, -52, 8, 7},
     {"mesh-100k", "a terrain of 100,352 triangles", nullptr},
 };
 
@@ -92,6 +96,7 @@ class SegmentTriangleScene : public Scene {
   void draw_mesh(Renderer& r, const Mesh& mesh, const RigidTransform& pose, Color c, bool filled) const;
   void draw_steps_1_to_4(Frame& f) const;
   void draw_hits(Frame& f) const;
+  void draw_contact(Frame& f) const;
 
   Mode mode_ = Mode::triangle;
   Segment segment_{{1, 1, 3}, {1, 1, -1}};
@@ -109,11 +114,14 @@ class SegmentTriangleScene : public Scene {
   Attempt<SegmentTriangleHit> find_;
   Attempt<MeshHit> first_;
   Attempt<std::vector<MeshHit>> all_;
+  MovingMeshes meshes_;            // contact mode: the two meshes and their velocities
+  Attempt<MeshContact> contact_;
+  oracle::MeshContact exact_contact_;
   std::optional<Vec3> probe_;  // the point steps 2 and 3 test
   oracle::PlaneCrossing exact_crossing_;
   oracle::SegmentHit exact_hit_;
   std::vector<oracle::SegmentHit> exact_hits_;
-  Verdict verdict_[8] = {};
+  Verdict verdict_[9] = {};
 };
 
 // ---- setup ---------------------------------------------------------------------------
@@ -150,17 +158,25 @@ SegmentTriangleScene::SegmentTriangleScene(const Setup& setup) {
   } else if (q == "first_hit_moving") {
     const auto in = input_from_token<MovingMesh>(token);
     mode_ = Mode::moving, segment_ = in.segment, mesh_ = in.mesh, m0_ = in.m0, m1_ = in.m1;
+  } else if (q == "first_contact_moving_meshes" || q == "robust.first_contact_moving_meshes") {
+    mode_ = Mode::contact, meshes_ = input_from_token<MovingMeshes>(token);
   } else {
     throw unknown_query("02", q, "segment_plane, point_in_triangle_edges, barycentric, test_segment_triangle, "
-                                  "find_segment_triangle, any_hit, first_hit, all_hits, first_hit_moving");
+                                  "find_segment_triangle, any_hit, first_hit, all_hits, first_hit_moving, "
+                                  "first_contact_moving_meshes");
   }
   frame_inputs();
 }
 
 void SegmentTriangleScene::frame_inputs() {
-  const char* names[] = {"segment and triangle", "point and triangle", "segment and mesh", "moving mesh"};
+  const char* names[] = {"segment and triangle", "point and triangle", "segment and mesh", "moving mesh", "two moving meshes"};
   mode = names[int(mode_)];
   std::vector<Vec3> points{segment_.a, segment_.b};
+  if (mode_ == Mode::contact) {  // both meshes at the start and at the end of the frame
+    points.clear();
+    for (const Vec3& v : meshes_.a.vertices) points.insert(points.end(), {v, v + meshes_.velocity_a});
+    for (const Vec3& v : meshes_.b.vertices) points.insert(points.end(), {v, v + meshes_.velocity_b});
+  }
   if (mode_ == Mode::point) points = {x_};
   if (mode_ <= Mode::point) points.insert(points.end(), {triangle_.v0, triangle_.v1, triangle_.v2});
   for (const Vec3& v : mesh_.vertices) points.push_back(mode_ == Mode::moving ? m1_ * v : v);
@@ -306,6 +322,23 @@ void SegmentTriangleScene::update() {
     verdict_[6] = step.verdict;
     steps.push_back(step);
   }
+
+  if (mode_ == Mode::contact) {
+    const MovingMeshes& in = meshes_;
+    contact_ = attempt([&] { return first_contact_moving_meshes(in.a, in.velocity_a, in.b, in.velocity_b); });
+    exact_contact_ = oracle::first_contact_translating(in.a, in.velocity_a, in.b, in.velocity_b);
+    Step step = judged("L02S7", "first_contact_moving_meshes", contact_,
+                       [&](const MeshContact& got) { return judge::first_contact_moving_meshes(in, got); });
+    const auto& c = contact_;
+    const auto& e = exact_contact_;
+    const char* kinds[] = {"vertex of A on a face of B", "vertex of B on a face of A", "edge against edge"};
+    step.rows = {{"contact", c ? yes(c->hit) : "", yes(e.hit)},
+                 {"t", c && c->hit ? num(c->t) : "", e.hit ? num(e.t) : ""},
+                 {"point", c && c->hit ? num(c->point) : "", e.hit ? num(e.point) : ""},
+                 {"family", "", e.hit ? kinds[e.kind] : ""}};
+    verdict_[7] = step.verdict;
+    steps.push_back(step);
+  }
 }
 
 // ---- draw ----------------------------------------------------------------------------
@@ -409,11 +442,64 @@ void SegmentTriangleScene::draw_hits(Frame& f) const {
   }
 }
 
+// Step 7: A and B at t = 0 (outlines) and at the contact time (filled); the vertex paths
+// of the contact's family, or the parallelogram its edge of A sweeps, seen from B.
+void SegmentTriangleScene::draw_contact(Frame& f) const {
+  Renderer& r = f.render;
+  const MovingMeshes& in = meshes_;
+  const Vec3 d = in.velocity_a - in.velocity_b;
+  const bool got = contact_ && contact_->hit;
+  const double t = got ? contact_->t : exact_contact_.hit ? exact_contact_.t : 1.0;
+  const Color c = colour(verdict_[7]);
+  RigidTransform at0 = RigidTransform::Identity(), a_t = at0, b_t = at0;
+  a_t.translation() = t * in.velocity_a, b_t.translation() = t * in.velocity_b;
+  draw_mesh(r, in.a, at0, palette::muted.with_alpha(0.7f), false);
+  draw_mesh(r, in.b, at0, palette::muted.with_alpha(0.7f), false);
+  if (!in.a.vertices.empty()) r.label(in.a.vertices[0], "A at t = 0", palette::muted);
+  draw_mesh(r, in.b, b_t, palette::surface, true);
+  draw_mesh(r, in.a, a_t, palette::input.with_alpha(0.55f), true);
+  if (!in.a.vertices.empty()) r.label(a_t * in.a.vertices[0], "A at t = " + num(t), palette::input);
+  if (!in.b.vertices.empty()) r.label(b_t * in.b.vertices[0], "B", palette::surface);
+  const auto centre = [](const Mesh& m) {
+    Vec3 sum = Vec3::Zero();
+    for (const Vec3& v : m.vertices) sum += v;
+    return m.vertices.empty() ? sum : Vec3(sum / double(m.vertices.size()));
+  };
+  if (in.velocity_a != Vec3::Zero()) r.arrow(centre(in.a), centre(in.a) + in.velocity_a, palette::input, 2), r.label(centre(in.a) + in.velocity_a, "va", palette::input);
+  if (in.velocity_b != Vec3::Zero()) r.arrow(centre(in.b), centre(in.b) + in.velocity_b, palette::surface, 2), r.label(centre(in.b) + in.velocity_b, "vb", palette::surface);
+  const oracle::MeshContact& e = exact_contact_;
+  if (e.hit && e.kind == 2) {  // the swept parallelogram of the contact's edge of A, in B's frame (B still)
+    const auto edge = oracle::mesh_edges(in.a)[std::size_t(e.feature_a)];
+    const Vec3 p0 = in.a.vertices[std::size_t(edge[0])], p1 = in.a.vertices[std::size_t(edge[1])];
+    const Vec3 o = t * in.velocity_b;  // drawn where B is at the contact
+    r.triangle(o + p0, o + p1, o + p1 + d, palette::exact.with_alpha(0.22f));
+    r.triangle(o + p0, o + p1 + d, o + p0 + d, palette::exact.with_alpha(0.16f));
+    r.dashed(o + p1, o + p0 + d, palette::exact, 1.5f);
+    r.line(o + p0 + d, o + p1 + d, palette::exact, 1.5f);
+    r.label(o + p1 + d, "p1 + d", palette::exact);
+    r.label(o + p0 + d, "p0 + d", palette::exact);
+  } else if (e.hit && e.kind <= 1) {  // the vertex's path seen from the other mesh
+    const Vec3 p = e.kind == 0 ? in.a.vertices[std::size_t(e.feature_a)] : in.b.vertices[std::size_t(e.feature_b)];
+    const Vec3 o = t * (e.kind == 0 ? in.velocity_b : in.velocity_a);
+    r.dashed(o + p, o + p + (e.kind == 0 ? d : Vec3(-d)), palette::exact, 1.5f);
+  }
+  if (got) {
+    r.point(contact_->point, c, 5);
+    r.ring(contact_->point, c, 15, 2.5f);
+    r.label(contact_->point, "contact   t = " + num(contact_->t), c, 18, -16);
+  }
+  if (f.show_exact && e.hit) r.ring(e.point, palette::exact, 9);
+}
+
 void SegmentTriangleScene::draw(Frame& f) {
   Renderer& r = f.render;
   const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
   r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
   r.axes();
+  if (mode_ == Mode::contact) {
+    draw_contact(f);
+    return;
+  }
   if (mode_ <= Mode::point) {
     draw_triangle(r, mode_ == Mode::triangle);
     draw_steps_1_to_4(f);
@@ -445,6 +531,8 @@ bool SegmentTriangleScene::inputs() {
   if (mode_ == Mode::point) changed |= edit("x", x_);
   if (mode_ <= Mode::point)
     changed |= edit("v0", triangle_.v0) | edit("v1", triangle_.v1) | edit("v2", triangle_.v2);
+  if (mode_ == Mode::contact)
+    return edit("velocity_a", meshes_.velocity_a) | edit("velocity_b", meshes_.velocity_b);
   if (mode_ >= Mode::mesh) ImGui::TextDisabled("mesh: %zu vertices, %zu triangles", mesh_.vertices.size(), mesh_.size());
   if (mode_ == Mode::moving) {
     Vec3 t0 = m0_.translation(), t1 = m1_.translation();
@@ -456,6 +544,7 @@ bool SegmentTriangleScene::inputs() {
 
 std::vector<Handle> SegmentTriangleScene::handles() {
   std::vector<Handle> h;
+  if (mode_ == Mode::contact) return h;
   if (mode_ == Mode::point) h.push_back({&x_, "x", &plane_});
   else h.insert(h.end(), {{&segment_.a, "a"}, {&segment_.b, "b"}});
   if (mode_ <= Mode::point) h.insert(h.end(), {{&triangle_.v0, "v0"}, {&triangle_.v1, "v1"}, {&triangle_.v2, "v2"}});
@@ -468,6 +557,7 @@ std::string SegmentTriangleScene::token() const {
     case Mode::point: return replay_token("barycentric", PointTriangle{x_, triangle_});
     case Mode::mesh: return replay_token("first_hit", SegmentMeshPair{segment_, mesh_});
     case Mode::moving: break;
+    case Mode::contact: return replay_token("first_contact_moving_meshes", meshes_);
   }
   return replay_token("first_hit_moving", MovingMesh{segment_, mesh_, m0_, m1_});
 }

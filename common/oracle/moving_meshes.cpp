@@ -1,0 +1,185 @@
+#include "common/oracle/moving_meshes.h"
+#include "common/oracle/kernel.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+
+namespace oracle {
+
+using namespace kernel;
+
+namespace {
+
+using P = Epeck::Point_3;
+using V = Epeck::Vector_3;
+
+FT triple(const V& a, const V& b, const V& c) { return a * CGAL::cross_product(b, c); }
+
+// A candidate contact, exact.
+struct Exact {
+  FT t;
+  P point;  // in the world at time t
+  int kind, fa, fb;
+  double approach;
+};
+
+// t of the point x on the segment p -> p + d (x is known to lie on it).
+FT parameter(const P& p, const V& d, const P& x) { return ((x - p) * d) / (d * d); }
+
+// The first t of the segment p -> p + d against the closed triangle, by CGAL's own
+// intersection: for paths in the triangle's plane (the common part may be a piece).
+std::optional<FT> first_on_segment(const P& p, const V& d, const Epeck::Triangle_3& tri) {
+  if (tri.is_degenerate() || d == CGAL::NULL_VECTOR) return std::nullopt;
+  const auto result = CGAL::intersection(Epeck::Segment_3(p, p + d), tri);
+  if (!result) return std::nullopt;
+  if (const P* x = boost::get<P>(&*result)) return parameter(p, d, *x);
+  const Epeck::Segment_3& piece = boost::get<Epeck::Segment_3>(*result);
+  return CGAL::min(parameter(p, d, piece.source()), parameter(p, d, piece.target()));
+}
+
+// The vertex path p -> p + d against the still triangle (v0, v1, v2): the first t in
+// [0, 1] with p + t d in the closed triangle.
+std::optional<FT> vertex_face(const P& p, const V& d, const P& v0, const P& v1, const P& v2, double* approach) {
+  const V n = CGAL::cross_product(v1 - v0, v2 - v0);
+  const FT den = d * n;
+  if (CGAL::is_zero(den)) {  // parallel to the plane: a contact only if the path lies in it
+    if (n == CGAL::NULL_VECTOR || !CGAL::is_zero((p - v0) * n)) return std::nullopt;
+    *approach = 0;
+    return first_on_segment(p, d, {v0, v1, v2});
+  }
+  const FT t = ((v0 - p) * n) / den;
+  if (t < 0 || t > 1) return std::nullopt;
+  const P x = p + t * d;
+  const P v[3] = {v0, v1, v2};
+  for (int i = 0; i < 3; ++i)
+    if (CGAL::is_negative(triple(v[(i + 1) % 3] - v[i], x - v[i], n))) return std::nullopt;
+  *approach = std::abs(rounded(den)) / std::sqrt(rounded(n * n));
+  return t;
+}
+
+// The edge p0 + u e swept by d against the still edge q0 + s f: p0 + u e + t d = q0 + s f
+// with u, s, t in [0, 1], by Cramer's rule. A zero determinant (e, d, f in one plane) is
+// left out, as above.
+std::optional<std::pair<FT, FT>> edge_edge(const P& p0, const V& e, const V& d, const P& q0, const V& f, double* approach) {
+  const V r = q0 - p0;
+  const V minus_f = -f;
+  const FT det = triple(e, d, minus_f);
+  if (CGAL::is_zero(det)) return std::nullopt;
+  const FT u = triple(r, d, minus_f) / det;
+  if (u < 0 || u > 1) return std::nullopt;
+  const FT t = triple(e, r, minus_f) / det;
+  if (t < 0 || t > 1) return std::nullopt;
+  const FT s = triple(e, d, r) / det;
+  if (s < 0 || s > 1) return std::nullopt;
+  const V n = CGAL::cross_product(e, f);
+  *approach = std::abs(rounded(d * n)) / std::sqrt(rounded(n * n));
+  return std::make_pair(t, s);
+}
+
+// Every candidate, passed to `keep`; `keep` returns true to stop early.
+template <class Keep>
+void candidates(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, Keep&& keep) {
+  const V wa = exact(va) - CGAL::ORIGIN, wb = exact(vb) - CGAL::ORIGIN;
+  const V d = wa - wb;  // A's motion as seen from B
+  std::vector<P> pa, pb;
+  for (const Vec3& v : a.vertices) pa.push_back(exact(v));
+  for (const Vec3& v : b.vertices) pb.push_back(exact(v));
+  double approach = 0;
+  for (std::size_t i = 0; i < pa.size(); ++i)
+    for (std::size_t k = 0; k < b.triangles.size(); ++k) {
+      const auto& tri = b.triangles[k];
+      if (auto t = vertex_face(pa[i], d, pb[tri[0]], pb[tri[1]], pb[tri[2]], &approach))
+        if (keep(Exact{*t, pa[i] + *t * wa, 0, int(i), int(k), approach})) return;
+    }
+  for (std::size_t j = 0; j < pb.size(); ++j)
+    for (std::size_t k = 0; k < a.triangles.size(); ++k) {
+      const auto& tri = a.triangles[k];
+      if (auto t = vertex_face(pb[j], -d, pa[tri[0]], pa[tri[1]], pa[tri[2]], &approach))
+        if (keep(Exact{*t, pb[j] + *t * wb, 1, int(k), int(j), approach})) return;
+    }
+  const auto ea = mesh_edges(a), eb = mesh_edges(b);
+  for (std::size_t i = 0; i < ea.size(); ++i)
+    for (std::size_t j = 0; j < eb.size(); ++j) {
+      const P& p0 = pa[ea[i][0]];
+      const P& q0 = pb[eb[j][0]];
+      const V f = pb[eb[j][1]] - q0;
+      if (auto ts = edge_edge(p0, pa[ea[i][1]] - p0, d, q0, f, &approach))
+        if (keep(Exact{ts->first, q0 + ts->second * f + ts->first * wb, 2, int(i), int(j), approach})) return;
+    }
+}
+
+}  // namespace
+
+std::vector<std::array<int, 2>> mesh_edges(const Mesh& mesh) {
+  std::set<std::array<int, 2>> edges;
+  for (const auto& tri : mesh.triangles)
+    for (int i = 0; i < 3; ++i) {
+      const int u = tri[i], v = tri[(i + 1) % 3];
+      if (u != v) edges.insert({std::min(u, v), std::max(u, v)});
+    }
+  return {edges.begin(), edges.end()};
+}
+
+MeshContact first_contact_translating(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb) {
+  std::optional<Exact> best;
+  candidates(a, va, b, vb, [&](const Exact& c) {
+    if (!best || c.t < best->t) best = c;
+    return false;
+  });
+  if (!best) return {};
+  return {true, rounded(best->t), rounded(best->point), best->kind, best->fa, best->fb, best->approach};
+}
+
+bool contact_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, double t) {
+  if (t < 0) return false;
+  bool found = false;
+  const FT limit(t);
+  candidates(a, va, b, vb, [&](const Exact& c) { return found = c.t <= limit; });
+  return found;
+}
+
+bool touch_during_frame_fast(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb) {
+  using K = Epick;
+  const Vec3 d = va - vb;
+  const auto hits = [](const K::Segment_3& s, const K::Triangle_3& t) {
+    if (t.is_degenerate()) return false;
+    return s.is_degenerate() ? t.has_on(s.source()) : CGAL::do_intersect(s, t);
+  };
+  for (const Vec3& p : a.vertices)
+    for (std::size_t k = 0; k < b.size(); ++k)
+      if (hits({fast(p), fast(p + d)}, {fast(b.triangle(k).v0), fast(b.triangle(k).v1), fast(b.triangle(k).v2)})) return true;
+  for (const Vec3& q : b.vertices)
+    for (std::size_t k = 0; k < a.size(); ++k)
+      if (hits({fast(q), fast(q - d)}, {fast(a.triangle(k).v0), fast(a.triangle(k).v1), fast(a.triangle(k).v2)})) return true;
+  const auto eb = mesh_edges(b);
+  for (const auto& e : mesh_edges(a)) {
+    const Vec3& p0 = a.vertices[std::size_t(e[0])];
+    const Vec3& p1 = a.vertices[std::size_t(e[1])];
+    const K::Triangle_3 first(fast(p0), fast(p1), fast(p1 + d)), second(fast(p0), fast(p1 + d), fast(p0 + d));
+    for (const auto& f : eb) {
+      const K::Segment_3 edge(fast(b.vertices[std::size_t(f[0])]), fast(b.vertices[std::size_t(f[1])]));
+      if (hits(edge, first) || hits(edge, second)) return true;
+    }
+  }
+  return false;
+}
+
+bool within_translated(const Vec3& p, const Mesh& mesh, const Vec3& offset, double tolerance) {
+  const P x = exact(p);
+  const V o = exact(offset) - CGAL::ORIGIN;
+  const FT tol2 = FT(tolerance) * FT(tolerance);
+  for (std::size_t k = 0; k < mesh.size(); ++k) {
+    const Epeck::Triangle_3 tri(exact(mesh.triangle(k).v0) + o, exact(mesh.triangle(k).v1) + o, exact(mesh.triangle(k).v2) + o);
+    if (tri.is_degenerate()) {
+      for (int i = 0; i < 3; ++i)
+        if (CGAL::squared_distance(x, Epeck::Segment_3(tri[i], tri[(i + 1) % 3])) <= tol2) return true;
+      continue;
+    }
+    if (CGAL::squared_distance(x, tri) <= tol2) return true;
+  }
+  return false;
+}
+
+}  // namespace oracle
