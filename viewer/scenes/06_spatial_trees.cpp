@@ -30,11 +30,14 @@ using namespace labkit::lab06;
 enum class Mode { kd, bsp, spheres };
 
 const std::vector<Preset> kPresets = {
-    {"torus", "a k-d tree over a torus of 2,048 triangles: the leaves a segment visits, front to back", nullptr, true, -50, 35, 2},
+    {"torus", "a k-d tree over a torus of 2,048 triangles: the leaves a segment visits, front to back", nullptr, false, -50, 35, 2},
+    {"walk", "step 2: the leaves a segment meets, numbered front to back; first_hit stops in leaf 8, after its hit at t = 0.676 (grey: never visited)", nullptr, true, -90, 89, 2},
     {"handout", "step 2's example: a hit beyond the first leaf's end does not end the search", nullptr, false, -80, 20, 2},
     {"terrain", "a terrain of 20,000 triangles, a long segment across it", nullptr, false, -40, 30, 2},
-    {"bsp", "a BSP tree of an L of three cubes: classify a point, paint back to front", nullptr, true, -35, 25, 3},
-    {"spheres", "sort and sweep: 60 spheres, the pairs that meet", nullptr, true, -60, 30, 5},
+    {"bsp", "a BSP tree of an L of three cubes: classify a point, paint back to front", nullptr, false, -35, 25, 3},
+    {"split", "step 3: the floor's plane z = 0, the root's, cuts the wall in two: a piece in front, one behind", nullptr, true, -75, 18, 3},
+    {"spheres", "sort and sweep: 60 spheres, the pairs that meet", nullptr, false, -60, 30, 5},
+    {"sweep", "step 5: the intervals on x, ends A0 A1 R0 B0 R1 C0 C1 B1; two pairs tested", nullptr, true, -90, 89, 5},
 };
 
 // The leaves of a k-d tree with their cells, or why the tree cannot be walked.
@@ -69,20 +72,70 @@ std::vector<LeafBox> leaves_of(const KdTree& tree) {
   return out;
 }
 
-// Does the closed segment meet the closed box? Slab by slab, as the handout clips.
-bool segment_meets(const Aabb& box, const Segment& s) {
+// A k-d tree for the "walk" figure: the cell halved in x, then y, then x..., `depth`
+// levels, triangles sent by their boxes (step 1's rule). No split in z, so that seen from
+// above every leaf is one rectangle.
+KdTree median_tree(const Mesh& mesh, int depth) {
+  KdTree tree;
+  tree.triangles.resize(mesh.size());
+  std::vector<int> all(mesh.size());
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    tree.triangles[i] = mesh.triangle(i), all[i] = int(i);
+    for (int k = 0; k < 3; ++k) {
+      const Vec3& v = tree.triangles[i][k];
+      tree.bounds.min = i + std::size_t(k) == 0 ? v : Vec3(tree.bounds.min.cwiseMin(v));
+      tree.bounds.max = i + std::size_t(k) == 0 ? v : Vec3(tree.bounds.max.cwiseMax(v));
+    }
+  }
+  const auto build = [&](auto&& self, const Aabb& cell, const std::vector<int>& list, int level) -> void {
+    const std::size_t at = tree.nodes.size();
+    tree.nodes.push_back({});
+    if (level == depth) {
+      tree.nodes[at].index = int(tree.items.size());
+      tree.items.push_back(int(list.size()));
+      tree.items.insert(tree.items.end(), list.begin(), list.end());
+      return;
+    }
+    const int axis = level % 2;
+    const double split = 0.5 * (cell.min[axis] + cell.max[axis]);
+    std::vector<int> below, above;
+    for (int i : list) {
+      const Triangle& t = tree.triangles[std::size_t(i)];
+      const double lo = std::min({t.v0[axis], t.v1[axis], t.v2[axis]}), hi = std::max({t.v0[axis], t.v1[axis], t.v2[axis]});
+      if (lo <= split) below.push_back(i);
+      if (hi >= split) above.push_back(i);
+    }
+    Aabb b = cell, a = cell;
+    b.max[axis] = a.min[axis] = split;
+    tree.nodes[at].axis = axis, tree.nodes[at].split = split;
+    self(self, b, below, level + 1);
+    tree.nodes[at].index = int(tree.nodes.size());
+    self(self, a, above, level + 1);
+  };
+  build(build, tree.bounds, all, 0);
+  return tree;
+}
+
+// The part [t0, t1] of the segment inside the closed box (t0 > t1: it misses the box).
+// Slab by slab, as the handout clips.
+std::array<double, 2> segment_span(const Aabb& box, const Segment& s) {
   double t0 = 0, t1 = 1;
   const Vec3 d = s.b - s.a;
   for (int i = 0; i < 3; ++i) {
     if (d[i] == 0) {
-      if (s.a[i] < box.min[i] || s.a[i] > box.max[i]) return false;
+      if (s.a[i] < box.min[i] || s.a[i] > box.max[i]) return {1, 0};
       continue;
     }
     double enter = (box.min[i] - s.a[i]) / d[i], leave = (box.max[i] - s.a[i]) / d[i];
     if (enter > leave) std::swap(enter, leave);
     t0 = std::max(t0, enter), t1 = std::min(t1, leave);
   }
-  return t0 <= t1;
+  return {t0, t1};
+}
+
+bool segment_meets(const Aabb& box, const Segment& s) {
+  const auto span = segment_span(box, s);
+  return span[0] <= span[1];
 }
 
 void draw_box(Renderer& r, const Aabb& b, Color c, float width) {
@@ -138,6 +191,7 @@ class SpatialTreesScene : public Scene {
   Vec3 point_ = Vec3::Zero();
   std::vector<Sphere> spheres_;
   int tree_seed_ = 0;
+  std::string figure_;  // the preset's name: "walk", "split" and "sweep" draw the handout's figures
   std::optional<KdTree> given_tree_;  // a replayed example's hand-made tree: none here, the checker's otherwise
 
   // Step 1 and 2: the tree the queries ran on, and the answers.
@@ -166,7 +220,31 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
   if (preset) yaw = preset->yaw, pitch = preset->pitch, focus = preset->focus;
   if (setup.token.empty() && (!preset || !preset->token)) {
     const std::string name = preset ? preset->name : "torus";
-    if (name == "handout") {  // A leans across x = 4, B stands in x = 5
+    figure_ = name;
+    if (name == "walk") {  // 48 small tilted triangles in a thin slab, seen from above: the cells are rectangles
+      std::uint64_t state = 7;
+      const auto next = [&state] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return double(state >> 11) / double(1ULL << 53);
+      };
+      for (int i = 0; i < 24; ++i) {
+        const double x = 0.5 + 7 * next(), y = 0.3 + 3.4 * next(), a = 2 * M_PI * next();  // in this order
+        const Vec3 c(x, y, 0);
+        const int base = int(mesh_.vertices.size());
+        for (int k = 0; k < 3; ++k)
+          mesh_.vertices.push_back(c + Vec3(0.35 * std::cos(a + 2.1 * k), 0.35 * std::sin(a + 2.1 * k), 0.12 * (k - 1)));
+        mesh_.triangles.push_back({base, base + 1, base + 2});
+      }
+      segment_ = {{-0.3, 3.9, 0.02}, {8.3, 0.6, -0.02}};
+    } else if (name == "split") {  // the handout's floor and wall
+      mode_ = Mode::bsp;
+      mesh_.vertices = {{0, 0, 0}, {8, 0, 0}, {0, 8, 0}, {2, 0, -2}, {2, 0, 2}, {2, 4, 0}};
+      mesh_.triangles = {{0, 1, 2}, {3, 4, 5}};
+      point_ = {6, 6, 3};
+    } else if (name == "sweep") {  // the handout's A, R, B, C
+      mode_ = Mode::spheres;
+      spheres_ = {{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}};
+    } else if (name == "handout") {  // A leans across x = 4, B stands in x = 5
       mesh_.vertices = {{8, -1, 0}, {8, 3, 0}, {2, 1, 3}, {5, 0, 0}, {5, 3, 0}, {5, 0, 3}};
       mesh_.triangles = {{0, 1, 2}, {3, 4, 5}};
       segment_ = {{0, 1, 1}, {8, 1, 1}};
@@ -221,6 +299,7 @@ void SpatialTreesScene::frame_inputs() {
   if (mode_ == Mode::kd) box.extend(segment_.a), box.extend(segment_.b);
   if (mode_ == Mode::bsp) box.extend(point_);
   for (const Sphere& s : spheres_) box.extend(s.center + Vec3::Constant(s.radius)), box.extend(s.center - Vec3::Constant(s.radius));
+  if (figure_ == "sweep") box.extend(Vec3(0, -7.5, 0));
   if (box.isEmpty()) box.extend(Vec3::Zero()), box.extend(Vec3::Ones());
   center = box.center();
   radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
@@ -252,6 +331,7 @@ void SpatialTreesScene::update_kd() {
   steps.push_back(s1);
   tree_is_students_ = built_ && s1.verdict != Verdict::disagree;
   tree_ = tree_is_students_ ? *built_ : judge::checker_tree(mesh_, tree_seed_);
+  if (figure_ == "walk") tree_ = median_tree(mesh_, 5), tree_is_students_ = false;  // a tree drawn flat
   leaves_ = leaves_of(tree_);
 
   // Step 2: the three queries, with the given test's calls counted.
@@ -344,6 +424,31 @@ void SpatialTreesScene::draw_kd(Frame& f) {
     r.triangle(t.v0, t.v1, t.v2, palette::surface.with_alpha(0.55f));
     if (edges) r.line(t.v0, t.v1, {0.30f, 0.40f, 0.55f}, 1), r.line(t.v1, t.v2, {0.30f, 0.40f, 0.55f}, 1), r.line(t.v2, t.v0, {0.30f, 0.40f, 0.55f}, 1);
   }
+  if (figure_ == "walk") {  // the leaves the segment meets, numbered in the walk's order
+    std::vector<std::pair<double, Aabb>> met;
+    for (const LeafBox& l : leaves_) {
+      const auto span = segment_span(l.cell, segment_);
+      if (span[0] <= span[1]) met.push_back({span[0], l.cell});
+    }
+    std::sort(met.begin(), met.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+    const double stop = first_ && first_->hit ? first_->t : 2.0;
+    int k = 0;
+    for (const auto& [t0, cell] : met) {
+      const bool visited = t0 <= stop;
+      draw_box(r, cell, visited ? palette::agree.with_alpha(0.9f) : palette::muted.with_alpha(0.6f), visited ? 1.8f : 1.0f);
+      const Vec3 at(0.5 * (cell.min.x() + cell.max.x()), 0.5 * (cell.min.y() + cell.max.y()), cell.max.z());
+      r.label(at, std::to_string(++k), visited ? palette::agree : palette::muted, -4, -8);
+    }
+    draw_box(r, tree_.bounds, palette::muted, 1);
+    if (first_ && first_->hit) {
+      r.ring(first_->point, palette::agree, 12, 2.5f);
+      r.label(first_->point, "first hit, t = " + num(first_->t) + ": the walk stops", palette::agree, 10, 28);
+    }
+    r.line(segment_.a, segment_.b, palette::input, 2.5f);
+    r.point(segment_.a, palette::input, 6), r.point(segment_.b, palette::input, 6);
+    r.label(segment_.a, "a", palette::input), r.label(segment_.b, "b", palette::input);
+    return;
+  }
   // The leaves the segment meets: the cells a front-to-back walk may visit.
   const Color cells = f.shows(1) || f.shows(2) ? colour(tree_is_students_ ? verdict_[1] : Verdict::none) : palette::muted;
   for (const LeafBox& l : leaves_)
@@ -376,6 +481,40 @@ void SpatialTreesScene::draw_kd(Frame& f) {
 
 void SpatialTreesScene::draw_bsp(Frame& f) {
   Renderer& r = f.render;
+  if (figure_ == "split" && bsp_ && !bsp_->nodes.empty()) {  // the root's plane and the pieces on each side
+    const BspTree& t = *bsp_;
+    const Triangle& splitter = t.triangles[std::size_t(t.nodes[0].plane)];
+    const Vec3 n = (splitter.v1 - splitter.v0).cross(splitter.v2 - splitter.v0);
+    const Vec3 u = (splitter.v1 - splitter.v0).normalized(), v = n.normalized().cross(u);
+    const Vec3 c = center - n.dot(center - splitter.v0) / n.squaredNorm() * n;
+    const double h = 0.9 * radius;
+    const Color plane{0.95f, 0.72f, 0.25f};
+    r.triangle(c - h * u - h * v, c + h * u - h * v, c + h * u + h * v, plane.with_alpha(0.12f));
+    r.triangle(c - h * u - h * v, c + h * u + h * v, c - h * u + h * v, plane.with_alpha(0.12f));
+    for (int k = 0; k < 4; ++k) {
+      const double s0 = (k == 0 || k == 3) ? -h : h, s1 = k < 2 ? -h : h, s2 = (k == 0 || k == 1) ? h : -h, s3 = (k == 1 || k == 2) ? h : -h;
+      r.dashed(c + s0 * u + s1 * v, c + s2 * u + s3 * v, plane, 1.5f);
+    }
+    r.label(c - h * u - h * v, "the root's plane", plane, 8, -8);
+    const auto side = [&](const Vec3& x) { return n.dot(x - splitter.v0); };
+    for (std::size_t i = 0; i < t.pieces.size(); ++i) {
+      const Triangle& p = t.pieces[i].triangle;
+      const Vec3 mid = (p.v0 + p.v1 + p.v2) / 3;
+      const double d = side(mid);
+      const bool at_root = int(i) >= t.nodes[0].first && int(i) < t.nodes[0].first + t.nodes[0].count;
+      const Color col = at_root ? plane : d > 0 ? palette::agree : palette::surface;
+      r.triangle(p.v0, p.v1, p.v2, col.with_alpha(0.45f));
+      for (int e = 0; e < 3; ++e) r.line(p[e], p[(e + 1) % 3], col, 2);
+      r.label(at_root ? p.v1 : mid, "piece " + std::to_string(i) + (at_root ? ": the splitter" : d > 0 ? ": front" : ": back"), col,
+              at_root ? -40.0f : 14.0f, at_root ? 18.0f : 0.0f);
+      for (int e = 0; e < 3; ++e) {  // the cut points: on the plane, not a vertex of the mesh
+        bool vertex = false;
+        for (const Vec3& m : mesh_.vertices) vertex |= (m - p[e]).norm() == 0;
+        if (!vertex && !at_root && side(p[e]) == 0) r.point(p[e], palette::input, 5);
+      }
+    }
+    return;
+  }
   if (order_ && bsp_ && f.shows(4)) {  // pieces shaded by their place in the painter's order: dark first, light last
     const std::size_t n = order_->size();
     for (std::size_t k = 0; k < n; ++k) {
@@ -404,6 +543,36 @@ void SpatialTreesScene::draw_bsp(Frame& f) {
 
 void SpatialTreesScene::draw_spheres(Frame& f) {
   Renderer& r = f.render;
+  if (figure_ == "sweep") {  // circles in z = 0 seen from above, their x intervals below, the ends on one axis
+    const char* names[] = {"A", "R", "B", "C"};
+    const Color col[] = {palette::surface, palette::agree, {0.95f, 0.72f, 0.25f}, {0.85f, 0.50f, 0.85f}};
+    constexpr int kCircle = 64;
+    for (std::size_t i = 0; i < spheres_.size() && i < 4; ++i) {
+      const Sphere& b = spheres_[i];
+      for (int k = 0; k < kCircle; ++k) {
+        const double a0 = 2 * M_PI * k / kCircle, a1 = 2 * M_PI * (k + 1) / kCircle;
+        r.line(b.center + b.radius * Vec3(std::cos(a0), std::sin(a0), 0), b.center + b.radius * Vec3(std::cos(a1), std::sin(a1), 0), col[i], 2);
+      }
+      r.point(b.center, col[i], 4);
+      r.label(b.center, names[i], col[i], 6, -6);
+      const double y = -2.2 - 1.1 * double(i), lo = b.center.x() - b.radius, hi = b.center.x() + b.radius;
+      r.line({lo, y, 0}, {hi, y, 0}, col[i], 4);
+      r.dashed({lo, y, 0}, {lo, -7, 0}, col[i].with_alpha(0.5f), 1);
+      r.dashed({hi, y, 0}, {hi, -7, 0}, col[i].with_alpha(0.5f), 1);
+      r.label({hi, y, 0}, std::string(names[i]) + " [" + num(lo) + ", " + num(hi) + "]", col[i], 8, -8);
+      r.label({lo, -7, 0}, std::string(names[i]) + "0", col[i], -8, 6);
+      r.label({hi, -7, 0}, std::string(names[i]) + "1", col[i], -8, 6);
+    }
+    r.arrow({-0.5, -7, 0}, {14, -7, 0}, palette::muted, 1.5f);
+    r.label({14, -7, 0}, "x", palette::muted, 6, -6);
+    if (spheres_.size() >= 4) {
+      r.line(spheres_[1].center, spheres_[2].center, palette::agree, 3);
+      r.label(0.5 * (spheres_[1].center + spheres_[2].center), "R, B tested: |(4, 3, 0)| = 5 <= 2 + 4, meet", palette::agree, 8, 8);
+      r.dashed(spheres_[2].center, spheres_[3].center, palette::muted, 2);
+      r.label(0.5 * (spheres_[2].center + spheres_[3].center), "B, C tested: 6 > 4 + 1, apart", palette::muted, 8, -8);
+    }
+    return;
+  }
   std::vector<char> paired(spheres_.size(), 0);
   const Color c = colour(verdict_[5]);
   if (pairs_)
