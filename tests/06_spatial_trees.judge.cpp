@@ -793,6 +793,87 @@ Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rul
   return doubt ? ambiguous() : pass();
 }
 
+// ---- Step 6 ---------------------------------------------------------------------------------------
+
+namespace {
+
+std::vector<double> end_values(const std::vector<Sphere>& spheres) {
+  std::vector<double> v;
+  for (const Sphere& s : spheres) v.push_back(s.center.x() - s.radius), v.push_back(s.center.x() + s.radius);
+  return v;
+}
+
+int sign(double x) { return (x > 0) - (x < 0); }
+
+long long overlapping_on_x(const std::vector<Sphere>& spheres) {
+  long long n = 0;
+  for (std::size_t i = 0; i < spheres.size(); ++i)
+    for (std::size_t j = i + 1; j < spheres.size(); ++j) {
+      const double lo_i = spheres[i].center.x() - spheres[i].radius, hi_i = spheres[i].center.x() + spheres[i].radius;
+      const double lo_j = spheres[j].center.x() - spheres[j].radius, hi_j = spheres[j].center.x() + spheres[j].radius;
+      n += lo_j <= hi_i && lo_i <= hi_j;
+    }
+  return n;
+}
+
+}  // namespace
+
+long long changed_order(const std::vector<Sphere>& before, const std::vector<Sphere>& after) {
+  const std::vector<double> a = end_values(before), b = end_values(after);
+  long long n = 0;
+  for (std::size_t p = 0; p < a.size() && p < b.size(); ++p)
+    for (std::size_t q = p + 1; q < a.size() && q < b.size(); ++q) n += sign(a[p] - a[q]) != sign(b[p] - b[q]);
+  return n;
+}
+
+SweepCase moving_spheres(const MovingSpheres& m) {
+  SweepCase c{{gen::spread_spheres(m.count, 100, 0.25, 1, std::uint64_t(m.seed))}};
+  for (int k = 1; k < m.frames; ++k) {
+    std::vector<Sphere> next = c.frames.back();
+    for (std::size_t i = 0; i < next.size(); ++i) next[i].center.x() += 0.05 * std::sin(double(i * 7 + std::size_t(k)));
+    c.frames.push_back(next);
+  }
+  return c;
+}
+
+Outcome sweep_frames(const SweepCase& in, const SweepRuns& got, Rules rules) {
+  const std::string expected = str(in.frames.size()) + " frames", answer = str(got.size()) + " frames";
+  if (got.size() != in.frames.size()) return fail(expected, answer, "update answers once per frame");
+  bool doubt = false;
+  for (std::size_t k = 0; k < in.frames.size(); ++k) {
+    const std::vector<Sphere>& spheres = in.frames[k];
+    const SweepFrame& f = got[k].frame;
+    const std::string frame = "frame " + str(int(k) + 1) + " of " + str(in.frames.size()) + ": ";
+    Outcome right = overlapping_pairs(SphereSet{spheres}, SpherePairs{f.pairs, f.tests}, rules);
+    if (right.verdict == Outcome::Verdict::fail) {
+      right.why = frame + right.why +
+                  (k > 0 ? " (the pairs overlapping on x change only when a low end and a high end swap: add the pair when a low "
+                           "end passes a high end, remove it when a high end passes a low end)"
+                         : "");
+      return right;
+    }
+    doubt = doubt || right.verdict == Outcome::Verdict::ambiguous;
+    const long long on_x = overlapping_on_x(spheres);
+    if (f.tests > on_x)
+      return fail(str(on_x) + " pairs overlap on x", "tests = " + str(f.tests),
+                  frame + "test only the pairs whose intervals overlap on x; a pair leaves the set when a high end passes its "
+                          "low end (a swap), and must not be tested after");
+    if (k == 0) continue;
+    const long long changed = changed_order(in.frames[k - 1], spheres);
+    const long long ends = 2 * (long long)spheres.size();
+    if (f.swaps > changed)
+      return fail("swaps <= " + str(changed) + " (pairs of ends whose order changed)", "swaps = " + str(f.swaps),
+                  frame + "frame coherence: insertion sort on the kept list swaps only ends whose order changed since the "
+                          "last frame; more swaps mean the list was not kept (or not sorted) from the frame before");
+    if (got[k].comparisons > ends + changed)
+      return fail("compare_ends calls <= " + str(ends) + " + " + str(changed), "compare_ends calls = " + str(got[k].comparisons),
+                  frame + "frame coherence: keep the sorted ends between frames and re-sort by insertion, about one "
+                          "comparison per end plus one per swap; sorting from scratch costs n log n however little the "
+                          "spheres moved");
+  }
+  return doubt ? ambiguous() : pass();
+}
+
 // ---- Inputs --------------------------------------------------------------------------------------
 
 rc::Gen<TreeQuery> tree_query() {
@@ -848,6 +929,46 @@ rc::Gen<PointQuery> exact_eye_query() {
 rc::Gen<SphereSet> sphere_set() { return rc::gen::map(gen::sphere_set(), [](std::vector<Sphere> s) { return SphereSet{std::move(s)}; }); }
 rc::Gen<SphereSet> exact_sphere_set() {
   return rc::gen::map(gen::exact_sphere_set(), [](std::vector<Sphere> s) { return SphereSet{std::move(s)}; });
+}
+
+// Step 6: a set of spheres (step 5's kinds), then frames in which every centre moves a
+// little: up to a few hundredths of the set's scale, so the order of ends changes in a
+// few places per frame. Radii stay.
+rc::Gen<SweepCase> sweep_case() {
+  return rc::gen::exec([] {
+    SweepCase c;
+    c.frames.push_back(*gen::sphere_set());
+    double s = 0;
+    for (const Sphere& b : c.frames[0]) s = std::max({s, b.center.cwiseAbs().maxCoeff(), b.radius});
+    if (s == 0) s = 1;
+    const int frames = *rc::gen::inRange(2, 7);
+    for (int k = 1; k < frames; ++k) {
+      std::vector<Sphere> next = c.frames.back();
+      for (Sphere& b : next)
+        for (int i = 0; i < 3; ++i) b.center[i] += s * *rc::gen::inRange(-1024, 1024) / 32768.0;
+      c.frames.push_back(next);
+    }
+    return c;
+  });
+}
+
+// Exact: step 5's exact spheres (touching chains on integers), moved by whole units
+// of their scale along x and y, so ends meet and pass exactly, and balls come to touch.
+rc::Gen<SweepCase> exact_sweep_case() {
+  return rc::gen::exec([] {
+    SweepCase c;
+    c.frames.push_back(*gen::exact_sphere_set());
+    double unit = 0;
+    for (const Sphere& b : c.frames[0]) unit = std::max(unit, b.radius);
+    if (unit == 0) unit = 1;
+    const int frames = *rc::gen::inRange(2, 6);
+    for (int k = 1; k < frames; ++k) {
+      std::vector<Sphere> next = c.frames.back();
+      for (Sphere& b : next) b.center.x() += unit * *rc::gen::inRange(-1, 2), b.center.y() += unit * *rc::gen::inRange(-1, 2);
+      c.frames.push_back(next);
+    }
+    return c;
+  });
 }
 
 }  // namespace judge

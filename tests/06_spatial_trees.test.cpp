@@ -388,6 +388,57 @@ TEST_CASE("L06S5 broad phase: random cases", "[lab06][step5][oracle]") {
 
 namespace {
 
+// Each frame's expected pairs, tests and swaps (the handout's tables), after the judge.
+struct FrameCounts {
+  std::vector<std::array<int, 2>> pairs;
+  long long tests, swaps;
+};
+
+auto expect_frames(std::vector<FrameCounts> expected, Rules rules = Rules::exact) {
+  return [expected, rules](const SweepCase& in) {
+    const SweepRuns got = run_sweep(in.frames);
+    const Outcome right = judge::sweep_frames(in, got, rules);
+    if (right.verdict == Outcome::Verdict::fail || expected.empty()) return right;
+    Expect e;
+    for (std::size_t k = 0; k < got.size() && k < expected.size(); ++k) {
+      const std::string frame = "frame " + std::to_string(k + 1) + " ";
+      e.equal(frame + "pairs", got[k].frame.pairs, expected[k].pairs);
+      e.equal(frame + "tests", int(got[k].frame.tests), int(expected[k].tests));
+      if (k > 0) e.equal(frame + "swaps", int(got[k].frame.swaps), int(expected[k].swaps));  // the first sort is free
+    }
+    return e.outcome();
+  };
+}
+
+std::vector<Sphere> with_b_at(double x) { return {{{0, 0, 0}, 1}, {{x, 0, 0}, 1}}; }
+
+}  // namespace
+
+TEST_CASE("L06S6 sort and sweep with frame coherence: worked examples", "[lab06][step6]") {
+  // A at 0 and B sliding along x (radius 1 each): ends A0 = -1, A1 = 1, B0 = x - 1, B1 = x + 1.
+  check::example("sweep_frames", "B slides to touch A, into it, and away: x = 5, 2.5, 2, 1.5, 4",
+                 SweepCase{{with_b_at(5), with_b_at(2.5), with_b_at(2), with_b_at(1.5), with_b_at(4)}},
+                 expect_frames({{{}, 0, 0}, {{}, 0, 0}, {{{0, 1}}, 1, 1}, {{{0, 1}}, 1, 0}, {{}, 0, 1}}));
+  // The lecture's A R B C; then C moves 2 to the left: C0 = 6 passes R1 = 7.
+  const std::vector<Sphere> lecture{{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}};
+  std::vector<Sphere> moved = lecture;
+  moved[3].center = {7, 9, 0};
+  check::example("sweep_frames", "the lecture's A R B C, then C 2 to the left", SweepCase{{lecture, moved}},
+                 expect_frames({{{{1, 2}}, 2, 0}, {{{1, 2}}, 3, 1}}));
+  check::example("sweep_frames", "no spheres, twice", SweepCase{{{}, {}}}, expect_frames({{{}, 0, 0}, {{}, 0, 0}}));
+  check::example("sweep_frames.moving", "1,000 spheres, 10 frames of small moves along x", MovingSpheres{1000, 10, 6},
+                 [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(judge::moving_spheres(m)); });
+}
+
+TEST_CASE("L06S6 sort and sweep with frame coherence: random cases", "[lab06][step6][oracle]") {
+  check::random_cases("sweep_frames", judge::sweep_case(),
+                      [](const SweepCase& in) { return judge::sweep_frames(in, run_sweep(in.frames)); });
+}
+
+// ---- Step 7 --------------------------------------------------------------------------------------
+
+namespace {
+
 // splitmix64: the efficiency segments, the same on every machine.
 struct Random {
   std::uint64_t state;
@@ -513,7 +564,7 @@ Outcome run_efficiency(const EfficiencyCase& in) {
 
 }  // namespace
 
-TEST_CASE("L06S6 efficiency: tests counted on 10,000 triangles", "[lab06][step6]") {
+TEST_CASE("L06S7 efficiency: tests counted on 10,000 triangles", "[lab06][step7]") {
   const int seed = int(check::settings().seed % 1000000);
   for (int kind = 0; kind < 4; ++kind)
     check::example("efficiency.segments", gen::name_of(gen::MeshKind(kind)), EfficiencyCase{kind, 10000, 1000, seed}, run_efficiency);
@@ -530,7 +581,7 @@ TEST_CASE("L06S6 efficiency: tests counted on 10,000 triangles", "[lab06][step6]
   });
 }
 
-// ---- Step 7: robustness ----------------------------------------------------------------------------
+// ---- Step 8: robustness ----------------------------------------------------------------------------
 // Exact degenerate input on integers: the header's rules hold exactly.
 
 namespace {
@@ -565,7 +616,7 @@ KdTree cubes_tree() {
 
 }  // namespace
 
-TEST_CASE("L06S7 robustness: k-d trees on exact input", "[lab06][step7]") {
+TEST_CASE("L06S8 robustness: k-d trees on exact input", "[lab06][step8]") {
   const KdTree tree = cubes_tree();
   const Mesh mesh = two_cubes();
   const auto exact_all = [&tree](const TreeQuery& in) {
@@ -582,7 +633,7 @@ TEST_CASE("L06S7 robustness: k-d trees on exact input", "[lab06][step7]") {
                  [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
 }
 
-TEST_CASE("L06S7 robustness: BSP trees and spheres on exact input", "[lab06][step7]") {
+TEST_CASE("L06S8 robustness: BSP trees and spheres on exact input", "[lab06][step8]") {
   // An L of three cubes (scaled by 2): faces share planes, points lie on them.
   const Mesh l = gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Vec3::Zero(), 2.0);
   const std::string q = "robust.classify";
@@ -596,9 +647,16 @@ TEST_CASE("L06S7 robustness: BSP trees and spheres on exact input", "[lab06][ste
                  [](const PointQuery& in) { return judge_order(in, Rules::exact); });
   check::example("robust.overlapping_pairs", "a chain touching along x, listed backwards",
                  SphereSet{{{{6, 0, 0}, 1}, {{3, 0, 0}, 2}, {{0, 0, 0}, 1}}}, expect_pairs({{0, 1}, {1, 2}}));
+  // Three equal balls whose ends meet exactly: a low end arrives at a high end's value
+  // (touching: the low end must pass it), twice.
+  check::example("robust.sweep_frames", "ends arriving exactly on ends",
+                 SweepCase{{{{{0, 0, 0}, 1}, {{4, 0, 0}, 1}, {{8, 0, 0}, 1}},
+                                   {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{8, 0, 0}, 1}},
+                                   {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{4, 0, 0}, 1}}}},
+                 expect_frames({{{}, 0, 0}, {{{0, 1}}, 1, 1}, {{{0, 1}, {1, 2}}, 2, 1}}));
 }
 
-TEST_CASE("L06S7 robustness: random exact degenerate cases", "[lab06][step7][oracle]") {
+TEST_CASE("L06S8 robustness: random exact degenerate cases", "[lab06][step8][oracle]") {
   check::random_cases("robust.segment_queries", judge::exact_tree_query(),
                       [](const TreeQuery& in) { return all_three(in, Rules::exact); });
   check::random_cases("robust.build_kd_tree", gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
@@ -611,6 +669,9 @@ TEST_CASE("L06S7 robustness: random exact degenerate cases", "[lab06][step7][ora
   });
   check::random_cases("robust.overlapping_pairs", judge::exact_sphere_set(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
+  });
+  check::random_cases("robust.sweep_frames", judge::exact_sweep_case(), [](const SweepCase& in) {
+    return judge::sweep_frames(in, run_sweep(in.frames), Rules::exact);
   });
 }
 
@@ -650,7 +711,11 @@ TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[
     refused("eye", [&] { back_to_front(bsp, v); });
     refused("spheres[1].center", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {v, 1}, {{1, 0, 0}, 1}}); });
     refused("spheres[0].radius", [&] { overlapping_pairs({{{0, 0, 0}, bad}, {{1, 0, 0}, 1}}); });
+    refused("spheres[1].center", [&] { run_sweep({{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {v, 1}}}); });
+    refused("spheres[0].radius", [&] { run_sweep({{{{0, 0, 0}, bad}}}); });
   }
+  refused("spheres[0].radius", [&] { run_sweep({{{{0, 0, 0}, -1}}}); });
+  refused("spheres", [&] { run_sweep({{{{0, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}}); });
   refused("spheres[1].radius", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, -1}}); });
   Mesh out_of_range = lean_and_stand();
   out_of_range.triangles[1][2] = 6;

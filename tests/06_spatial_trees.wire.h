@@ -27,11 +27,12 @@ template <class V> void fields(BspNode& n, V&& v) {
 }
 template <class V> void fields(BspTree& t, V&& v) { v("nodes", t.nodes); v("pieces", t.pieces); v("triangles", t.triangles); }
 template <class V> void fields(SpherePairs& p, V&& v) { v("pairs", p.pairs); v("tests", p.tests); }
+template <class V> void fields(SweepFrame& f, V&& v) { v("pairs", f.pairs); v("tests", f.tests); v("swaps", f.swaps); }
 
 using Indices = std::vector<int>;
 using Spheres = std::vector<Sphere>;
 
-// Step 6 asks thousands of queries of one tree of 10,000 triangles. They run in the
+// Step 7 asks thousands of queries of one tree of 10,000 triangles. They run in the
 // answerer in one call, so that the tree crosses once; each query's calls of
 // given::segment_triangle are counted there, around it.
 struct SegmentRun {
@@ -50,6 +51,18 @@ using Segments = std::vector<Segment>;
 
 SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bool with_all);
 
+// Step 6: one SweepAndPrune fed the frames in turn, in the answerer (the object keeps its
+// state there); the calls of compare_ends are counted around each update.
+struct SweepRun {
+  SweepFrame frame;
+  long long comparisons = 0;
+};
+template <class V> void fields(SweepRun& r, V&& v) { v("frame", r.frame); v("comparisons", r.comparisons); }
+using SweepRuns = std::vector<SweepRun>;
+using Frames = std::vector<std::vector<Sphere>>;
+
+SweepRuns run_sweep(const Frames& frames);
+
 #ifdef LABKIT_IN_ANSWERER
 inline SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bool with_all) {
   SegmentRuns runs;
@@ -62,6 +75,19 @@ inline SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bo
     r.first_calls = int(c1 - c0);
     r.any_calls = int(given::segment_triangle_calls() - c1);
     if (with_all) r.all_tests = all_hits(tree, s).tests;
+    runs.push_back(r);
+  }
+  return runs;
+}
+
+inline SweepRuns run_sweep(const Frames& frames) {
+  SweepAndPrune sweep;
+  SweepRuns runs;
+  for (const std::vector<Sphere>& spheres : frames) {
+    SweepRun r;
+    const long long before = compare_ends_calls();
+    r.frame = sweep.update(spheres);
+    r.comparisons = compare_ends_calls() - before;
     runs.push_back(r);
   }
   return runs;
@@ -80,5 +106,6 @@ inline SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bo
   CALL(Where, classify, (const BspTree&, const Vec3&))                     \
   CALL(Indices, back_to_front, (const BspTree&, const Vec3&))              \
   CALL(SpherePairs, overlapping_pairs, (const Spheres&))                   \
-  CALL(SegmentRuns, run_segments, (const KdTree&, const Segments&, bool))
+  CALL(SegmentRuns, run_segments, (const KdTree&, const Segments&, bool)) \
+  CALL(SweepRuns, run_sweep, (const Frames&))
 // clang-format on

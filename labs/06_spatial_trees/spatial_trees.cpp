@@ -63,4 +63,11 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
   not_implemented("L06S5");
 }
 
+// L06S6: keep the sorted ends between frames, re-sort them by insertion, update the
+// pairs overlapping on x at each swap, test only those. Compare ends with compare_ends.
+SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
+  (void)spheres;
+  not_implemented("L06S6");
+}
+
 }  // namespace labkit::lab06

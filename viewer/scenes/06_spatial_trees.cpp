@@ -4,6 +4,8 @@
 //   k-d tree   build_kd_tree, first_hit, any_hit, all_hits (and robust.*)    steps 1-2
 //   BSP tree   build_bsp, classify, back_to_front (and robust.*)             steps 3-4
 //   spheres    overlapping_pairs (and robust.*)                              step 5
+//   frames     sweep_frames (and robust.*): the last two frames' ends on x     step 6
+//              (handles move the last frame's spheres; the swapped ends are orange)
 // In the k-d tree mode the segment's ends are handles: the leaves whose cells it meets
 // are drawn as boxes, the student's first hit in its verdict's colour, the exact hits
 // (the toggle) as violet rings. When step 1 is still a stub, the queries run on the
@@ -27,7 +29,7 @@ namespace {
 using namespace labkit;
 using namespace labkit::lab06;
 
-enum class Mode { kd, bsp, spheres };
+enum class Mode { kd, bsp, spheres, frames };
 
 const std::vector<Preset> kPresets = {
     {"torus", "a k-d tree over a torus of 2,048 triangles: the leaves a segment visits, front to back", nullptr, false, -50, 35, 2},
@@ -38,6 +40,7 @@ const std::vector<Preset> kPresets = {
     {"split", "step 3: the floor's plane z = 0, the root's, cuts the wall in two: a piece in front, one behind", nullptr, true, -75, 18, 3},
     {"spheres", "sort and sweep: 60 spheres, the pairs that meet", nullptr, false, -60, 30, 5},
     {"sweep", "step 5: the intervals on x, ends A0 A1 R0 B0 R1 C0 C1 B1; two pairs tested", nullptr, true, -90, 89, 5},
+    {"coherence", "step 6: C moves 2 to the left; its end C0 = 6 passes R1 = 7: one swap, and {R, C} joins the pairs on x", nullptr, true, -90, 89, 6},
 };
 
 // The leaves of a k-d tree with their cells, or why the tree cannot be walked.
@@ -181,6 +184,8 @@ class SpatialTreesScene : public Scene {
   void update_kd();
   void update_bsp();
   void update_spheres();
+  void update_frames();
+  void draw_frames(Frame& f);
   void draw_kd(Frame& f);
   void draw_bsp(Frame& f);
   void draw_spheres(Frame& f);
@@ -210,6 +215,9 @@ class SpatialTreesScene : public Scene {
   // Step 5.
   Attempt<SpherePairs> pairs_;
   std::vector<std::array<int, 2>> exact_pairs_;
+  // Step 6: the frames (the last one is spheres_, which the handles move) and the runs.
+  std::vector<std::vector<Sphere>> frames_;
+  Attempt<SweepRuns> runs_;
   Verdict verdict_[8] = {};
 };
 
@@ -244,6 +252,12 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
     } else if (name == "sweep") {  // the handout's A, R, B, C
       mode_ = Mode::spheres;
       spheres_ = {{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}};
+    } else if (name == "coherence") {  // step 6's example: the lecture's A R B C, then C moves 2 to the left
+      mode_ = Mode::frames;
+      frames_ = {{{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}}};
+      frames_.push_back(frames_[0]);
+      frames_[1][3].center = {7, 9, 0};
+      spheres_ = frames_.back();
     } else if (name == "handout") {  // A leans across x = 4, B stands in x = 5
       mesh_.vertices = {{8, -1, 0}, {8, 3, 0}, {2, 1, 3}, {5, 0, 0}, {5, 3, 0}, {5, 0, 3}};
       mesh_.triangles = {{0, 1, 2}, {3, 4, 5}};
@@ -284,15 +298,20 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
   } else if (q == "overlapping_pairs") {
     mode_ = Mode::spheres;
     spheres_ = input_from_token<SphereSet>(token).spheres;
+  } else if (q == "sweep_frames" || q == "sweep_frames.moving") {
+    mode_ = Mode::frames;
+    frames_ = q == "sweep_frames" ? input_from_token<SweepCase>(token).frames : judge::moving_spheres(input_from_token<MovingSpheres>(token)).frames;
+    if (frames_.empty()) frames_.push_back({});
+    spheres_ = frames_.back();
   } else {
     throw unknown_query("06", token.query, "build_kd_tree, first_hit, any_hit, all_hits, build_bsp, classify, back_to_front, "
-                                           "overlapping_pairs (and their robust. forms)");
+                                           "overlapping_pairs, sweep_frames (and their robust. forms)");
   }
   frame_inputs();
 }
 
 void SpatialTreesScene::frame_inputs() {
-  const char* names[] = {"k-d tree and segment", "BSP tree and point", "spheres"};
+  const char* names[] = {"k-d tree and segment", "BSP tree and point", "spheres", "spheres over frames"};
   mode = names[int(mode_)];
   Eigen::AlignedBox3d box;
   for (const Vec3& v : mesh_.vertices) box.extend(v);
@@ -300,6 +319,7 @@ void SpatialTreesScene::frame_inputs() {
   if (mode_ == Mode::bsp) box.extend(point_);
   for (const Sphere& s : spheres_) box.extend(s.center + Vec3::Constant(s.radius)), box.extend(s.center - Vec3::Constant(s.radius));
   if (figure_ == "sweep") box.extend(Vec3(0, -7.5, 0));
+  if (mode_ == Mode::frames && !box.isEmpty()) box.extend(Vec3(box.min().x(), box.min().y() - 0.3 * box.diagonal().norm(), 0));
   if (box.isEmpty()) box.extend(Vec3::Zero()), box.extend(Vec3::Ones());
   center = box.center();
   radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
@@ -312,6 +332,7 @@ void SpatialTreesScene::update() {
   if (mode_ == Mode::kd) update_kd();
   if (mode_ == Mode::bsp) update_bsp();
   if (mode_ == Mode::spheres) update_spheres();
+  if (mode_ == Mode::frames) update_frames();
 }
 
 void SpatialTreesScene::update_kd() {
@@ -412,6 +433,93 @@ void SpatialTreesScene::update_spheres() {
              {"pair tests", pairs_ ? std::to_string(pairs_->tests) : "", "brute force: " + std::to_string(n * (n - 1) / 2)}};
   verdict_[5] = s5.verdict;
   steps.push_back(s5);
+}
+
+void SpatialTreesScene::update_frames() {
+  frames_.back() = spheres_;
+  const SweepCase in{frames_};
+  runs_ = attempt([&] {
+    SweepAndPrune sweep;
+    SweepRuns runs;
+    for (const std::vector<Sphere>& spheres : frames_) {
+      const long long before = compare_ends_calls();
+      SweepRun r;
+      r.frame = sweep.update(spheres);
+      r.comparisons = compare_ends_calls() - before;
+      runs.push_back(r);
+    }
+    return runs;
+  });
+  exact_pairs_ = oracle::meeting_pairs(spheres_);
+  Step s6 = judged("L06S6", "SweepAndPrune::update, frame after frame", runs_, [&](const SweepRuns& got) { return judge::sweep_frames(in, got); });
+  if (runs_ && !runs_->empty()) {
+    const SweepRun& last = runs_->back();
+    const std::size_t k = frames_.size();
+    const long long changed = k > 1 ? judge::changed_order(frames_[k - 2], frames_[k - 1]) : 0;
+    s6.rows = {{"pairs (last frame)", std::to_string(last.frame.pairs.size()), std::to_string(exact_pairs_.size())},
+               {"swaps", std::to_string(last.frame.swaps), k > 1 ? "at most " + std::to_string(changed) + " (ends whose order changed)" : "first frame: any sort"},
+               {"compare_ends calls", std::to_string(last.comparisons), k > 1 ? "at most " + std::to_string(2 * spheres_.size() + std::size_t(changed)) : ""},
+               {"tests", std::to_string(last.frame.tests), "brute force: " + std::to_string(spheres_.size() * (spheres_.size() - 1) / 2)}};
+  }
+  verdict_[6] = s6.verdict;
+  steps.push_back(s6);
+}
+
+// The last two frames: the spheres now (the previous centres as faint points), and below
+// them each frame's ends on x, the ends whose order changed in orange.
+void SpatialTreesScene::draw_frames(Frame& f) {
+  Renderer& r = f.render;
+  const std::vector<Sphere>& now = frames_.back();
+  const std::vector<Sphere>& was = frames_.size() > 1 ? frames_[frames_.size() - 2] : frames_.back();
+  const bool figure = figure_ == "coherence";
+  const auto name = [&](std::size_t i) { return figure && i < 4 ? std::string(1, "ARBC"[i]) : std::to_string(i); };
+  const Color c = colour(verdict_[6]);
+  std::vector<char> paired(now.size(), 0);
+  if (runs_ && !runs_->empty())
+    for (const auto& p : runs_->back().frame.pairs)
+      if (p[0] >= 0 && p[1] >= 0 && std::size_t(p[0]) < now.size() && std::size_t(p[1]) < now.size()) {
+        paired[std::size_t(p[0])] = paired[std::size_t(p[1])] = 1;
+        r.line(now[std::size_t(p[0])].center, now[std::size_t(p[1])].center, c, 3);
+      }
+  double low = 0, left = 0, right = 1;
+  for (std::size_t i = 0; i < now.size(); ++i) {
+    const Sphere& b = now[i];
+    constexpr int kCircle = 48;
+    for (int k = 0; k < kCircle; ++k) {
+      const double a0 = 2 * M_PI * k / kCircle, a1 = 2 * M_PI * (k + 1) / kCircle;
+      r.line(b.center + b.radius * Vec3(std::cos(a0), std::sin(a0), 0), b.center + b.radius * Vec3(std::cos(a1), std::sin(a1), 0),
+             paired[i] ? c : palette::surface, paired[i] ? 2.0f : 1.2f);
+    }
+    if (was[i].center != b.center) r.point(was[i].center, palette::muted, 3), r.arrow(was[i].center, b.center, palette::muted, 1.5f);
+    if (now.size() <= 16) r.label(b.center, name(i), palette::input, 6, -6);
+    low = i == 0 ? b.center.y() - b.radius : std::min(low, b.center.y() - b.radius);
+    left = i == 0 ? b.center.x() - b.radius : std::min({left, b.center.x() - b.radius, was[i].center.x() - was[i].radius});
+    right = i == 0 ? b.center.x() + b.radius : std::max({right, b.center.x() + b.radius, was[i].center.x() + was[i].radius});
+  }
+  if (now.empty() || now.size() > 64) return;
+  // The ends of both frames on two axes; an end is orange when its order against some other end changed.
+  const double gap = 0.08 * (right - left + 1e-300);
+  const double y_was = low - 2 * gap, y_now = low - 5 * gap;
+  std::vector<char> moved(2 * now.size(), 0);
+  const auto value = [](const std::vector<Sphere>& s, std::size_t e) { return e % 2 ? s[e / 2].center.x() + s[e / 2].radius : s[e / 2].center.x() - s[e / 2].radius; };
+  for (std::size_t p = 0; p < moved.size(); ++p)
+    for (std::size_t q = 0; q < moved.size(); ++q) {
+      const double a = value(was, p) - value(was, q), b = value(now, p) - value(now, q);
+      if ((a > 0) - (a < 0) != (b > 0) - (b < 0)) moved[p] = 1;
+    }
+  const Color swapped{0.95f, 0.62f, 0.20f};
+  for (const auto& [y, frame, title] : {std::tuple{y_was, &was, "previous frame"}, std::tuple{y_now, &now, "this frame"}}) {
+    r.arrow({left - gap, y, 0}, {right + 2 * gap, y, 0}, palette::muted, 1.2f);
+    r.label({right + 2 * gap, y, 0}, title, palette::muted, 8, -6);
+    for (std::size_t e = 0; e < moved.size(); ++e) {
+      const double x = value(*frame, e);
+      const Color col = moved[e] && frame == &now ? swapped : palette::input;
+      r.point({x, y, 0}, col, 4);
+      if (now.size() <= 12) r.label({x, y, 0}, name(e / 2) + (e % 2 ? "1" : "0"), col, -8, (e % 2 ? 8.0f : -22.0f));
+    }
+  }
+  for (std::size_t e = 0; e < moved.size(); ++e)
+    if (moved[e]) r.dashed({value(was, e), y_was, 0}, {value(now, e), y_now, 0}, swapped, 1.5f);
 }
 
 // ---- draw ----------------------------------------------------------------------------
@@ -594,6 +702,7 @@ void SpatialTreesScene::draw(Frame& f) {
   if (mode_ == Mode::kd) draw_kd(f);
   if (mode_ == Mode::bsp) draw_bsp(f);
   if (mode_ == Mode::spheres) draw_spheres(f);
+  if (mode_ == Mode::frames) draw_frames(f);
 }
 
 bool SpatialTreesScene::inputs() {
@@ -604,6 +713,7 @@ bool SpatialTreesScene::inputs() {
   }
   if (mode_ == Mode::bsp) changed |= edit("point (and eye)", point_);
   if (mode_ == Mode::spheres) ImGui::TextDisabled("%zu spheres", spheres_.size());
+  if (mode_ == Mode::frames) ImGui::TextDisabled("%zu spheres, %zu frames: the handles move the last", spheres_.size(), frames_.size());
   return changed;
 }
 
@@ -619,6 +729,7 @@ std::string SpatialTreesScene::token() const {
   switch (mode_) {
     case Mode::kd: return replay_token("first_hit", TreeQuery{mesh_, segment_, tree_seed_});
     case Mode::bsp: return replay_token("classify", PointQuery{mesh_, point_});
+    case Mode::frames: return replay_token("sweep_frames", SweepCase{frames_});
     case Mode::spheres: break;
   }
   return replay_token("overlapping_pairs", SphereSet{spheres_});
