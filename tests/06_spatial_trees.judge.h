@@ -49,7 +49,18 @@ struct MovingSpheres {
 };
 template <class V> void fields(MovingSpheres& m, V&& v) { v("count", m.count); v("frames", m.frames); v("seed", m.seed); }
 
-// Step 7: one of the four big meshes (gen::MeshKind), its size, and a seed for the mesh
+// Step 7: two meshes, the checker's OBB trees over them (seeds), and whether every pair
+// is asked for.
+struct BvhQuery {
+  Mesh a, b;
+  int tree_a = 0, tree_b = 0;
+  bool every = true;
+};
+template <class V> void fields(BvhQuery& q, V&& v) {
+  v("a", q.a); v("b", q.b); v("tree_a", q.tree_a); v("tree_b", q.tree_b); v("every", q.every);
+}
+
+// Step 8: one of the four big meshes (gen::MeshKind), its size, and a seed for the mesh
 // (terrain, soup) and for the random segments.
 struct EfficiencyCase {
   int kind = 0;
@@ -61,7 +72,7 @@ template <class V> void fields(EfficiencyCase& c, V&& v) {
   v("kind", c.kind); v("triangles", c.triangles); v("segments", c.segments); v("seed", c.seed);
 }
 
-// Step 7's spheres: n spread over a cube of side 100, radii from 0.25 to 1.
+// Step 8's spheres: n spread over a cube of side 100, radii from 0.25 to 1.
 struct SpreadSpheres {
   int count = 2000;
   int seed = 1;
@@ -109,6 +120,14 @@ Outcome sweep_frames(const SweepCase& in, const SweepRuns& got, Rules rules = Ru
 // values differs between two frames: the header's `changed`.
 long long changed_order(const std::vector<Sphere>& before, const std::vector<Sphere>& after);
 
+// Step 7: the checker's OBB trees. Seed 0: axis-aligned boxes, one triangle per leaf,
+// split at the median along the longest axis (the handout's examples). Other seeds: each
+// node's box turned by a rotation of its own, leaves of 1 to 4 triangles.
+ObbTree obb_tree(const Mesh& mesh, int seed);
+// Step 7: the pairs against the exact brute force over all triangle pairs, and the counts
+// against the header's traversal (box tests, triangle tests) run on the same trees.
+Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got, Rules rules = Rules::random);
+
 // Inputs.
 rc::Gen<TreeQuery> tree_query();
 rc::Gen<TreeQuery> exact_tree_query();
@@ -122,6 +141,7 @@ rc::Gen<SphereSet> exact_sphere_set();
 rc::Gen<SweepCase> sweep_case();
 SweepCase moving_spheres(const MovingSpheres& m);
 rc::Gen<SweepCase> exact_sweep_case();
+rc::Gen<BvhQuery> bvh_query();
 
 }  // namespace judge
 }  // namespace labkit::lab06

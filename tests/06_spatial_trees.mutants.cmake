@@ -63,19 +63,36 @@ labkit_mutant(06 spatial_trees NAME sweep_pairs_never_removed STEP 6 SAYS "overl
   FIND "overlapping.erase(std::find(overlapping.begin(), overlapping.end(), pair));"
   REPLACE "(void)0;")
 
-# Step 7: the tree stops splitting at depth 2: leaves of thousands of triangles. Every
+# Step 7: one tree descended only: a leaf of a is tested against b's node as it is, whose
+# triangles lie in leaves below it, so pairs are lost.
+labkit_mutant(06 spatial_trees NAME bvh_one_tree_only STEP 7 SAYS "both trees" "leaves"
+  FIND "if (leaf_a && leaf_b) {"
+  REPLACE "if (leaf_a) {")
+
+# Step 7: the smaller box descended first: right pairs, more box tests than the header's
+# traversal.
+labkit_mutant(06 spatial_trees NAME bvh_descends_smaller STEP 7 SAYS "larger box"
+  FIND "const bool descend_a = leaf_b || (!leaf_a && volume(na) >= volume(nb));"
+  REPLACE "const bool descend_a = leaf_b || (!leaf_a && volume(na) <= volume(nb));")
+
+# Step 7: the traversal stops at the first pair found even when every pair is asked for.
+labkit_mutant(06 spatial_trees NAME bvh_stops_at_first_pair STEP 7 SAYS "every pair"
+  FIND "if (!every) return out;"
+  REPLACE "return out;")
+
+# Step 8: the tree stops splitting at depth 2: leaves of thousands of triangles. Every
 # answer is still right; only the count of tests gives it away.
-labkit_mutant(06 spatial_trees NAME leaves_too_big STEP 7 SAYS "leaves too big"
+labkit_mutant(06 spatial_trees NAME leaves_too_big STEP 8 SAYS "leaves too big"
   FIND "const Split split = depth < max_depth_ ?"
   REPLACE "const Split split = depth < 2 ?")
 
-# Step 7: the sweep tests every later interval, overlapping or not: the brute force.
-labkit_mutant(06 spatial_trees NAME sweep_tests_all_pairs STEP 7 SAYS "intervals overlap"
+# Step 8: the sweep tests every later interval, overlapping or not: the brute force.
+labkit_mutant(06 spatial_trees NAME sweep_tests_all_pairs STEP 8 SAYS "intervals overlap"
   FIND "j < intervals.size() && intervals[j].low <= intervals[i].high; ++j"
   REPLACE "j < intervals.size(); ++j")
 
-# Step 8: the clip to the root's box with strict comparisons: a segment lying in the
+# Step 9: the clip to the root's box with strict comparisons: a segment lying in the
 # plane of a wall of the root's cell is taken as outside it, and its hits are lost.
-labkit_mutant(06 spatial_trees NAME clip_wall_strict STEP 8 SAYS "every leaf the segment meets"
+labkit_mutant(06 spatial_trees NAME clip_wall_strict STEP 9 SAYS "every leaf the segment meets"
   FIND "if (a[i] < box.min[i] || a[i] > box.max[i]) return {1.0, 0.0};  // beside the slab"
   REPLACE "if (a[i] <= box.min[i] || a[i] >= box.max[i]) return {1.0, 0.0};  // beside the slab")

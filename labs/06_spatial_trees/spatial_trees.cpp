@@ -70,4 +70,12 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
   not_implemented("L06S6");
 }
 
+// L06S7: the dual traversal of two OBB trees (lecture 001's TestBVH), counted.
+TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every) {
+  (void)a;
+  (void)b;
+  (void)every;
+  not_implemented("L06S7");
+}
+
 }  // namespace labkit::lab06

@@ -273,7 +273,7 @@ double side_value(const Triangle& t, const Vec3& x) { return (t.v1 - t.v0).cross
 // into a sliver on the wrong side, and that sliver's node would claim a whole wedge of
 // space for the wrong side of the solid. The rounding error is at most a few units of
 // 2^-53 of |e0| |e1| |x - v0| (1-norms); 1e-13 of it is far above that, and on the
-// integer input of step 8 (|x| <= 1024 times a power of two) far below the smallest
+// integer input of step 9 (|x| <= 1024 times a power of two) far below the smallest
 // non-zero value, so there the sign stays exact.
 double build_side(const Triangle& t, const Vec3& x) {
   const Vec3 e0 = t.v1 - t.v0, e1 = t.v2 - t.v0, r = x - t.v0;
@@ -737,6 +737,49 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
     if ((a.center - b.center).squaredNorm() <= reach * reach) out.pairs.push_back(p);
   }
   std::sort(out.pairs.begin(), out.pairs.end());
+  return out;
+}
+
+// ---- Step 7 ------------------------------------------------------------------------------------
+
+// Lecture 001's TestBVH, with an explicit stack of node pairs. Boxes apart: nothing below
+// them meets. Both leaves: the triangle pairs. Otherwise descend the node that is not a
+// leaf, or the larger box (the bigger half of the problem), keeping the other.
+TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every) {
+  TrianglePairs out;
+  if (a.nodes.empty() || b.nodes.empty()) return out;
+  const auto volume = [](const ObbNode& n) { return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2]; };
+  std::vector<std::array<int, 2>> todo{{0, 0}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    const ObbNode& na = a.nodes[std::size_t(i)];
+    const ObbNode& nb = b.nodes[std::size_t(j)];
+    ++out.box_tests;
+    if (!given_boxes_overlap(na.box, nb.box)) continue;
+    const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
+    if (leaf_a && leaf_b) {
+      for (int p = na.first; p < na.first + na.count; ++p)
+        for (int q = nb.first; q < nb.first + nb.count; ++q) {
+          const int s = a.items[std::size_t(p)], t = b.items[std::size_t(q)];
+          ++out.triangle_tests;
+          if (given_triangles_meet(a.triangles[std::size_t(s)], b.triangles[std::size_t(t)])) {
+            out.pairs.push_back({s, t});
+            if (!every) return out;
+          }
+        }
+      continue;
+    }
+    const bool descend_a = leaf_b || (!leaf_a && volume(na) >= volume(nb));
+    if (descend_a) {
+      todo.push_back({na.right, j}), todo.push_back({na.left, j});
+    } else {
+      todo.push_back({i, nb.right}), todo.push_back({i, nb.left});
+    }
+  }
+  // A triangle listed in two leaves (the checker's trees never do it) would give a pair twice.
+  std::sort(out.pairs.begin(), out.pairs.end());
+  out.pairs.erase(std::unique(out.pairs.begin(), out.pairs.end()), out.pairs.end());
   return out;
 }
 

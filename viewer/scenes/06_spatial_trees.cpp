@@ -6,6 +6,7 @@
 //   spheres    overlapping_pairs (and robust.*)                              step 5
 //   frames     sweep_frames (and robust.*): the last two frames' ends on x     step 6
 //              (handles move the last frame's spheres; the swapped ends are orange)
+//   OBB trees  colliding_triangles: two meshes, the leaf boxes reached, the pairs step 7
 // In the k-d tree mode the segment's ends are handles: the leaves whose cells it meets
 // are drawn as boxes, the student's first hit in its verdict's colour, the exact hits
 // (the toggle) as violet rings. When step 1 is still a stub, the queries run on the
@@ -29,7 +30,7 @@ namespace {
 using namespace labkit;
 using namespace labkit::lab06;
 
-enum class Mode { kd, bsp, spheres, frames };
+enum class Mode { kd, bsp, spheres, frames, bvh };
 
 const std::vector<Preset> kPresets = {
     {"torus", "a k-d tree over a torus of 2,048 triangles: the leaves a segment visits, front to back", nullptr, false, -50, 35, 2},
@@ -40,6 +41,7 @@ const std::vector<Preset> kPresets = {
     {"split", "step 3: the floor's plane z = 0, the root's, cuts the wall in two: a piece in front, one behind", nullptr, true, -75, 18, 3},
     {"spheres", "sort and sweep: 60 spheres, the pairs that meet", nullptr, false, -60, 30, 5},
     {"sweep", "step 5: the intervals on x, ends A0 A1 R0 B0 R1 C0 C1 B1; two pairs tested", nullptr, true, -90, 89, 5},
+    {"bvh", "step 7: two OBB trees; the leaf boxes whose pairs the traversal reaches, the triangles that meet", nullptr, true, -60, 30, 7},
     {"coherence", "step 6: C moves 2 to the left; its end C0 = 6 passes R1 = 7: one swap, and {R, C} joins the pairs on x", nullptr, true, -90, 89, 6},
 };
 
@@ -185,6 +187,8 @@ class SpatialTreesScene : public Scene {
   void update_bsp();
   void update_spheres();
   void update_frames();
+  void update_bvh();
+  void draw_bvh(Frame& f);
   void draw_frames(Frame& f);
   void draw_kd(Frame& f);
   void draw_bsp(Frame& f);
@@ -218,7 +222,13 @@ class SpatialTreesScene : public Scene {
   // Step 6: the frames (the last one is spheres_, which the handles move) and the runs.
   std::vector<std::vector<Sphere>> frames_;
   Attempt<SweepRuns> runs_;
-  Verdict verdict_[8] = {};
+  // Step 7: the second mesh, the checker's trees, the answer, the leaf pairs reached.
+  Mesh mesh_b_;
+  int tree_seed_b_ = 0;
+  ObbTree tree_a_, tree_b_;
+  Attempt<BvhRun> bvh_;
+  std::vector<std::array<int, 2>> leaf_pairs_;
+  Verdict verdict_[10] = {};
 };
 
 // ---- setup ---------------------------------------------------------------------------
@@ -252,6 +262,11 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
     } else if (name == "sweep") {  // the handout's A, R, B, C
       mode_ = Mode::spheres;
       spheres_ = {{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}};
+    } else if (name == "bvh") {  // two spheres, overlapping in part
+      mode_ = Mode::bvh;
+      mesh_ = gen::sphere_mesh(40, {0, 0, 0}, 1);
+      mesh_b_ = gen::sphere_mesh(40, {1.3, 0.3, 0.1}, 0.8);
+      tree_seed_ = 3, tree_seed_b_ = 5;
     } else if (name == "coherence") {  // step 6's example: the lecture's A R B C, then C moves 2 to the left
       mode_ = Mode::frames;
       frames_ = {{{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}}};
@@ -298,6 +313,10 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
   } else if (q == "overlapping_pairs") {
     mode_ = Mode::spheres;
     spheres_ = input_from_token<SphereSet>(token).spheres;
+  } else if (q == "colliding_triangles") {
+    mode_ = Mode::bvh;
+    const auto in = input_from_token<BvhQuery>(token);
+    mesh_ = in.a, mesh_b_ = in.b, tree_seed_ = in.tree_a, tree_seed_b_ = in.tree_b;
   } else if (q == "sweep_frames" || q == "sweep_frames.moving") {
     mode_ = Mode::frames;
     frames_ = q == "sweep_frames" ? input_from_token<SweepCase>(token).frames : judge::moving_spheres(input_from_token<MovingSpheres>(token)).frames;
@@ -305,16 +324,17 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
     spheres_ = frames_.back();
   } else {
     throw unknown_query("06", token.query, "build_kd_tree, first_hit, any_hit, all_hits, build_bsp, classify, back_to_front, "
-                                           "overlapping_pairs, sweep_frames (and their robust. forms)");
+                                           "overlapping_pairs, sweep_frames, colliding_triangles (and their robust. forms)");
   }
   frame_inputs();
 }
 
 void SpatialTreesScene::frame_inputs() {
-  const char* names[] = {"k-d tree and segment", "BSP tree and point", "spheres", "spheres over frames"};
+  const char* names[] = {"k-d tree and segment", "BSP tree and point", "spheres", "spheres over frames", "two OBB trees"};
   mode = names[int(mode_)];
   Eigen::AlignedBox3d box;
   for (const Vec3& v : mesh_.vertices) box.extend(v);
+  for (const Vec3& v : mesh_b_.vertices) box.extend(v);
   if (mode_ == Mode::kd) box.extend(segment_.a), box.extend(segment_.b);
   if (mode_ == Mode::bsp) box.extend(point_);
   for (const Sphere& s : spheres_) box.extend(s.center + Vec3::Constant(s.radius)), box.extend(s.center - Vec3::Constant(s.radius));
@@ -333,6 +353,7 @@ void SpatialTreesScene::update() {
   if (mode_ == Mode::bsp) update_bsp();
   if (mode_ == Mode::spheres) update_spheres();
   if (mode_ == Mode::frames) update_frames();
+  if (mode_ == Mode::bvh) update_bvh();
 }
 
 void SpatialTreesScene::update_kd() {
@@ -522,6 +543,93 @@ void SpatialTreesScene::draw_frames(Frame& f) {
     if (moved[e]) r.dashed({value(was, e), y_was, 0}, {value(now, e), y_now, 0}, swapped, 1.5f);
 }
 
+void SpatialTreesScene::update_bvh() {
+  tree_a_ = judge::obb_tree(mesh_, tree_seed_), tree_b_ = judge::obb_tree(mesh_b_, tree_seed_b_);
+  const BvhQuery in{mesh_, mesh_b_, tree_seed_, tree_seed_b_, true};
+  bvh_ = attempt([&] {
+    BvhRun r;
+    const long long boxes = given_box_tests(), triangles = given_triangle_tests();
+    r.answer = colliding_triangles(tree_a_, tree_b_, true);
+    r.box_calls = given_box_tests() - boxes, r.triangle_calls = given_triangle_tests() - triangles;
+    return r;
+  });
+  Step s7 = judged("L06S7", "colliding_triangles on the checker's OBB trees", bvh_,
+                   [&](const BvhRun& got) { return judge::colliding_triangles(in, tree_a_, tree_b_, got); });
+  // The leaf pairs the header's traversal reaches with overlapping boxes: drawn as boxes.
+  leaf_pairs_.clear();
+  if (!tree_a_.nodes.empty() && !tree_b_.nodes.empty()) {
+    std::vector<std::array<int, 2>> todo{{0, 0}};
+    while (!todo.empty()) {
+      const auto [i, j] = todo.back();
+      todo.pop_back();
+      const ObbNode& na = tree_a_.nodes[std::size_t(i)];
+      const ObbNode& nb = tree_b_.nodes[std::size_t(j)];
+      if (!given_boxes_overlap(na.box, nb.box)) continue;
+      const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
+      if (leaf_a && leaf_b) {
+        leaf_pairs_.push_back({i, j});
+        continue;
+      }
+      const auto volume = [](const ObbNode& n) { return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2]; };
+      if (leaf_b || (!leaf_a && volume(na) >= volume(nb))) {
+        todo.push_back({na.right, j}), todo.push_back({na.left, j});
+      } else {
+        todo.push_back({i, nb.right}), todo.push_back({i, nb.left});
+      }
+    }
+  }
+  if (bvh_)
+    s7.rows = {{"pairs that meet", std::to_string(bvh_->answer.pairs.size()), ""},
+               {"box tests", std::to_string(bvh_->answer.box_tests), "brute force: no boxes, " + std::to_string(mesh_.size() * mesh_b_.size()) + " triangle pairs"},
+               {"triangle tests", std::to_string(bvh_->answer.triangle_tests), "leaf pairs reached: " + std::to_string(leaf_pairs_.size())}};
+  verdict_[7] = s7.verdict;
+  steps.push_back(s7);
+}
+
+void SpatialTreesScene::draw_bvh(Frame& f) {
+  Renderer& r = f.render;
+  const Color other{0.95f, 0.62f, 0.20f};
+  for (std::size_t i = 0; i < mesh_.size(); ++i) {
+    const Triangle t = mesh_.triangle(i);
+    r.triangle(t.v0, t.v1, t.v2, palette::surface.with_alpha(0.35f));
+  }
+  for (std::size_t i = 0; i < mesh_b_.size(); ++i) {
+    const Triangle t = mesh_b_.triangle(i);
+    r.triangle(t.v0, t.v1, t.v2, other.with_alpha(0.35f));
+  }
+  const auto draw_obb = [&](const Box& b, Color c, float width) {
+    for (int i = 0; i < 8; ++i)
+      for (int k = 0; k < 3; ++k)
+        if (!((i >> k) & 1)) r.line(b.corner(i), b.corner(i | (1 << k)), c, width);
+  };
+  if (!tree_a_.nodes.empty()) {
+    draw_obb(tree_a_.nodes[0].box, palette::surface, 1.5f);
+    const Box& b = tree_a_.nodes[0].box;
+    int left = 0;
+    for (int i = 1; i < 8; ++i) left = b.corner(i).x() < b.corner(left).x() ? i : left;
+    r.label(b.corner(left), "a's root box", palette::surface, -100, -8);
+  }
+  if (!tree_b_.nodes.empty()) {
+    draw_obb(tree_b_.nodes[0].box, other, 1.5f);
+    const Box& b = tree_b_.nodes[0].box;
+    int right = 0;
+    for (int i = 1; i < 8; ++i) right = b.corner(i).x() > b.corner(right).x() ? i : right;
+    r.label(b.corner(right), "b's root box", other, 8, -8);
+  }
+  for (const auto& [i, j] : leaf_pairs_) {
+    draw_obb(tree_a_.nodes[std::size_t(i)].box, palette::surface.with_alpha(0.8f), 1.0f);
+    draw_obb(tree_b_.nodes[std::size_t(j)].box, other.with_alpha(0.8f), 1.0f);
+  }
+  const Color c = colour(verdict_[7]);
+  if (bvh_)
+    for (const auto& p : bvh_->answer.pairs) {
+      if (p[0] < 0 || p[1] < 0 || std::size_t(p[0]) >= mesh_.size() || std::size_t(p[1]) >= mesh_b_.size()) continue;
+      const Triangle s = mesh_.triangle(std::size_t(p[0])), t = mesh_b_.triangle(std::size_t(p[1]));
+      r.triangle(s.v0, s.v1, s.v2, c.with_alpha(0.8f)), r.triangle(t.v0, t.v1, t.v2, c.with_alpha(0.8f));
+    }
+  (void)f;
+}
+
 // ---- draw ----------------------------------------------------------------------------
 
 void SpatialTreesScene::draw_kd(Frame& f) {
@@ -703,6 +811,7 @@ void SpatialTreesScene::draw(Frame& f) {
   if (mode_ == Mode::bsp) draw_bsp(f);
   if (mode_ == Mode::spheres) draw_spheres(f);
   if (mode_ == Mode::frames) draw_frames(f);
+  if (mode_ == Mode::bvh) draw_bvh(f);
 }
 
 bool SpatialTreesScene::inputs() {
@@ -720,6 +829,7 @@ bool SpatialTreesScene::inputs() {
 std::vector<Handle> SpatialTreesScene::handles() {
   if (mode_ == Mode::kd) return {{&segment_.a, "a"}, {&segment_.b, "b"}};
   if (mode_ == Mode::bsp) return {{&point_, "p"}};
+  if (mode_ == Mode::bvh) return {};
   std::vector<Handle> h;
   for (std::size_t i = 0; i < spheres_.size() && i < 64; ++i) h.push_back({&spheres_[i].center, "sphere " + std::to_string(i)});
   return h;
@@ -729,6 +839,7 @@ std::string SpatialTreesScene::token() const {
   switch (mode_) {
     case Mode::kd: return replay_token("first_hit", TreeQuery{mesh_, segment_, tree_seed_});
     case Mode::bsp: return replay_token("classify", PointQuery{mesh_, point_});
+    case Mode::bvh: return replay_token("colliding_triangles", BvhQuery{mesh_, mesh_b_, tree_seed_, tree_seed_b_, true});
     case Mode::frames: return replay_token("sweep_frames", SweepCase{frames_});
     case Mode::spheres: break;
   }
