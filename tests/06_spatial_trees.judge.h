@@ -34,7 +34,33 @@ struct SphereSet {
 };
 template <class V> void fields(SphereSet& s, V&& v) { v("spheres", s.spheres); }
 
-// Step 6: one of the four big meshes (gen::MeshKind), its size, and a seed for the mesh
+// Step 6: the frames of one simulation, the same spheres moved a little each time.
+struct SweepCase {
+  std::vector<std::vector<Sphere>> frames;
+};
+template <class V> void fields(SweepCase& c, V&& v) { v("frames", c.frames); }
+
+// Step 6's big case: `count` spheres spread over a cube of side 100 (radii 0.25 to 1),
+// then `frames` frames in which each centre moves along x by at most 0.05.
+struct MovingSpheres {
+  int count = 1000;
+  int frames = 10;
+  int seed = 1;
+};
+template <class V> void fields(MovingSpheres& m, V&& v) { v("count", m.count); v("frames", m.frames); v("seed", m.seed); }
+
+// Step 7: two meshes, the checker's OBB trees over them (seeds), and whether every pair
+// is asked for.
+struct BvhQuery {
+  Mesh a, b;
+  int tree_a = 0, tree_b = 0;
+  bool every = true;
+};
+template <class V> void fields(BvhQuery& q, V&& v) {
+  v("a", q.a); v("b", q.b); v("tree_a", q.tree_a); v("tree_b", q.tree_b); v("every", q.every);
+}
+
+// Step 8: one of the four big meshes (gen::MeshKind), its size, and a seed for the mesh
 // (terrain, soup) and for the random segments.
 struct EfficiencyCase {
   int kind = 0;
@@ -46,7 +72,7 @@ template <class V> void fields(EfficiencyCase& c, V&& v) {
   v("kind", c.kind); v("triangles", c.triangles); v("segments", c.segments); v("seed", c.seed);
 }
 
-// Step 6's spheres: n spread over a cube of side 100, radii from 0.25 to 1.
+// Step 8's spheres: n spread over a cube of side 100, radii from 0.25 to 1.
 struct SpreadSpheres {
   int count = 2000;
   int seed = 1;
@@ -86,6 +112,22 @@ Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vect
 // Step 5.
 Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rules = Rules::random);
 
+// Step 6: every frame's pairs (as overlapping_pairs), its tests (only pairs overlapping on
+// x), and, from the second frame on, its swaps and compare_ends calls within the header's
+// bounds for the ends whose order changed since the previous frame.
+Outcome sweep_frames(const SweepCase& in, const SweepRuns& got, Rules rules = Rules::random);
+// The number of pairs of ends (values on x, as the header computes them) whose order of
+// values differs between two frames: the header's `changed`.
+long long changed_order(const std::vector<Sphere>& before, const std::vector<Sphere>& after);
+
+// Step 7: the checker's OBB trees. Seed 0: axis-aligned boxes, one triangle per leaf,
+// split at the median along the longest axis (the handout's examples). Other seeds: each
+// node's box turned by a rotation of its own, leaves of 1 to 4 triangles.
+ObbTree obb_tree(const Mesh& mesh, int seed);
+// Step 7: the pairs against the exact brute force over all triangle pairs, and the counts
+// against the header's traversal (box tests, triangle tests) run on the same trees.
+Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got, Rules rules = Rules::random);
+
 // Inputs.
 rc::Gen<TreeQuery> tree_query();
 rc::Gen<TreeQuery> exact_tree_query();
@@ -96,6 +138,10 @@ rc::Gen<PointQuery> eye_query();
 rc::Gen<PointQuery> exact_eye_query();
 rc::Gen<SphereSet> sphere_set();
 rc::Gen<SphereSet> exact_sphere_set();
+rc::Gen<SweepCase> sweep_case();
+SweepCase moving_spheres(const MovingSpheres& m);
+rc::Gen<SweepCase> exact_sweep_case();
+rc::Gen<BvhQuery> bvh_query();
 
 }  // namespace judge
 }  // namespace labkit::lab06

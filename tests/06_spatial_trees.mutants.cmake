@@ -45,19 +45,54 @@ labkit_mutant(06 spatial_trees NAME touching_intervals_apart STEP 5 SAYS "touchi
   FIND "intervals[j].low <= intervals[i].high"
   REPLACE "intervals[j].low < intervals[i].high")
 
-# Step 6: the tree stops splitting at depth 2: leaves of thousands of triangles. Every
+# Step 6: the ends re-sorted from scratch every frame (the list rebuilt in sphere order):
+# right pairs, but n log n or worse comparisons and swaps however little the spheres moved.
+labkit_mutant(06 spatial_trees NAME sweep_resorted_each_frame STEP 6 SAYS "frame coherence"
+  FIND "if (!started) {  // the first frame"
+  REPLACE "if (true) {  // the first frame")
+
+# Step 6: ends compared strictly: a low end arriving exactly at a high end's value does not
+# pass it, so two balls that come to touch are never paired.
+labkit_mutant(06 spatial_trees NAME sweep_ties_strict STEP 6 SAYS "touching counts"
+  FIND "return c < 0 || (c == 0 && !a.high && b.high);"
+  REPLACE "return c < 0;")
+
+# Step 6: a pair is added when a low end passes a high end but never removed when the
+# high end passes back: pairs apart on x stay in the set and are tested every frame.
+labkit_mutant(06 spatial_trees NAME sweep_pairs_never_removed STEP 6 SAYS "overlap on x" "swap"
+  FIND "overlapping.erase(std::find(overlapping.begin(), overlapping.end(), pair));"
+  REPLACE "(void)0;")
+
+# Step 7: one tree descended only: a leaf of a is tested against b's node as it is, whose
+# triangles lie in leaves below it, so pairs are lost.
+labkit_mutant(06 spatial_trees NAME bvh_one_tree_only STEP 7 SAYS "both trees" "leaves"
+  FIND "if (leaf_a && leaf_b) {"
+  REPLACE "if (leaf_a) {")
+
+# Step 7: the smaller box descended first: right pairs, more box tests than the header's
+# traversal.
+labkit_mutant(06 spatial_trees NAME bvh_descends_smaller STEP 7 SAYS "larger box"
+  FIND "const bool descend_a = leaf_b || (!leaf_a && volume(na) >= volume(nb));"
+  REPLACE "const bool descend_a = leaf_b || (!leaf_a && volume(na) <= volume(nb));")
+
+# Step 7: the traversal stops at the first pair found even when every pair is asked for.
+labkit_mutant(06 spatial_trees NAME bvh_stops_at_first_pair STEP 7 SAYS "every pair"
+  FIND "if (!every) return out;"
+  REPLACE "return out;")
+
+# Step 8: the tree stops splitting at depth 2: leaves of thousands of triangles. Every
 # answer is still right; only the count of tests gives it away.
-labkit_mutant(06 spatial_trees NAME leaves_too_big STEP 6 SAYS "leaves too big"
+labkit_mutant(06 spatial_trees NAME leaves_too_big STEP 8 SAYS "leaves too big"
   FIND "const Split split = depth < max_depth_ ?"
   REPLACE "const Split split = depth < 2 ?")
 
-# Step 6: the sweep tests every later interval, overlapping or not: the brute force.
-labkit_mutant(06 spatial_trees NAME sweep_tests_all_pairs STEP 6 SAYS "intervals overlap"
+# Step 8: the sweep tests every later interval, overlapping or not: the brute force.
+labkit_mutant(06 spatial_trees NAME sweep_tests_all_pairs STEP 8 SAYS "intervals overlap"
   FIND "j < intervals.size() && intervals[j].low <= intervals[i].high; ++j"
   REPLACE "j < intervals.size(); ++j")
 
-# Step 7: the clip to the root's box with strict comparisons: a segment lying in the
+# Step 9: the clip to the root's box with strict comparisons: a segment lying in the
 # plane of a wall of the root's cell is taken as outside it, and its hits are lost.
-labkit_mutant(06 spatial_trees NAME clip_wall_strict STEP 7 SAYS "every leaf the segment meets"
+labkit_mutant(06 spatial_trees NAME clip_wall_strict STEP 9 SAYS "every leaf the segment meets"
   FIND "if (a[i] < box.min[i] || a[i] > box.max[i]) return {1.0, 0.0};  // beside the slab"
   REPLACE "if (a[i] <= box.min[i] || a[i] >= box.max[i]) return {1.0, 0.0};  // beside the slab")

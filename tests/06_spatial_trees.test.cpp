@@ -388,6 +388,109 @@ TEST_CASE("L06S5 broad phase: random cases", "[lab06][step5][oracle]") {
 
 namespace {
 
+// Each frame's expected pairs, tests and swaps (the handout's tables), after the judge.
+struct FrameCounts {
+  std::vector<std::array<int, 2>> pairs;
+  long long tests, swaps;
+};
+
+auto expect_frames(std::vector<FrameCounts> expected, Rules rules = Rules::exact) {
+  return [expected, rules](const SweepCase& in) {
+    const SweepRuns got = run_sweep(in.frames);
+    const Outcome right = judge::sweep_frames(in, got, rules);
+    if (right.verdict == Outcome::Verdict::fail || expected.empty()) return right;
+    Expect e;
+    for (std::size_t k = 0; k < got.size() && k < expected.size(); ++k) {
+      const std::string frame = "frame " + std::to_string(k + 1) + " ";
+      e.equal(frame + "pairs", got[k].frame.pairs, expected[k].pairs);
+      e.equal(frame + "tests", int(got[k].frame.tests), int(expected[k].tests));
+      if (k > 0) e.equal(frame + "swaps", int(got[k].frame.swaps), int(expected[k].swaps));  // the first sort is free
+    }
+    return e.outcome();
+  };
+}
+
+std::vector<Sphere> with_b_at(double x) { return {{{0, 0, 0}, 1}, {{x, 0, 0}, 1}}; }
+
+}  // namespace
+
+TEST_CASE("L06S6 sort and sweep with frame coherence: worked examples", "[lab06][step6]") {
+  // A at 0 and B sliding along x (radius 1 each): ends A0 = -1, A1 = 1, B0 = x - 1, B1 = x + 1.
+  check::example("sweep_frames", "B slides to touch A, into it, and away: x = 5, 2.5, 2, 1.5, 4",
+                 SweepCase{{with_b_at(5), with_b_at(2.5), with_b_at(2), with_b_at(1.5), with_b_at(4)}},
+                 expect_frames({{{}, 0, 0}, {{}, 0, 0}, {{{0, 1}}, 1, 1}, {{{0, 1}}, 1, 0}, {{}, 0, 1}}));
+  // The lecture's A R B C; then C moves 2 to the left: C0 = 6 passes R1 = 7.
+  const std::vector<Sphere> lecture{{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}};
+  std::vector<Sphere> moved = lecture;
+  moved[3].center = {7, 9, 0};
+  check::example("sweep_frames", "the lecture's A R B C, then C 2 to the left", SweepCase{{lecture, moved}},
+                 expect_frames({{{{1, 2}}, 2, 0}, {{{1, 2}}, 3, 1}}));
+  check::example("sweep_frames", "no spheres, twice", SweepCase{{{}, {}}}, expect_frames({{{}, 0, 0}, {{}, 0, 0}}));
+  check::example("sweep_frames.moving", "1,000 spheres, 10 frames of small moves along x", MovingSpheres{1000, 10, 6},
+                 [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(judge::moving_spheres(m)); });
+}
+
+TEST_CASE("L06S6 sort and sweep with frame coherence: random cases", "[lab06][step6][oracle]") {
+  check::random_cases("sweep_frames", judge::sweep_case(),
+                      [](const SweepCase& in) { return judge::sweep_frames(in, run_sweep(in.frames)); });
+}
+
+// ---- Step 7 --------------------------------------------------------------------------------------
+
+namespace {
+
+Outcome judge_bvh(const BvhQuery& in, Rules rules = Rules::random) {
+  const ObbTree a = judge::obb_tree(in.a, in.tree_a), b = judge::obb_tree(in.b, in.tree_b);
+  return judge::colliding_triangles(in, a, b, run_bvh(a, b, in.every), rules);
+}
+
+auto expect_bvh(std::vector<std::array<int, 2>> pairs, int box_tests, int triangle_tests) {
+  return [=](const BvhQuery& in) {
+    const ObbTree a = judge::obb_tree(in.a, in.tree_a), b = judge::obb_tree(in.b, in.tree_b);
+    const BvhRun got = run_bvh(a, b, in.every);
+    const Outcome right = judge::colliding_triangles(in, a, b, got, Rules::exact);
+    if (right.verdict == Outcome::Verdict::fail) return right;
+    Expect e;
+    e.equal("pairs", got.answer.pairs, pairs);
+    e.equal("box_tests", int(got.answer.box_tests), box_tests);
+    e.equal("triangle_tests", int(got.answer.triangle_tests), triangle_tests);
+    return e.outcome();
+  };
+}
+
+// a: two triangles 10 apart along x; b: one triangle piercing a's second one.
+Mesh two_apart() { return mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, {{10, 0, 0}, {12, 0, 0}, {10, 2, 0}}}); }
+Mesh piercing() { return mesh_of({{{10.5, 0.5, -1}, {10.5, 0.5, 1}, {11.5, 3, 0}}}); }
+
+}  // namespace
+
+TEST_CASE("L06S7 OBB trees, dual traversal: worked examples", "[lab06][step7]") {
+  check::example("colliding_triangles", "one triangle through another: 1 box test, 1 triangle test",
+                 BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}), mesh_of({{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, 3, 0}}}), 0, 0, true},
+                 expect_bvh({{0, 0}}, 1, 1));
+  check::example("colliding_triangles", "a's root, then its two leaves against b: 3 box tests, 1 triangle test",
+                 BvhQuery{two_apart(), piercing(), 0, 0, true}, expect_bvh({{1, 0}}, 3, 1));
+  check::example("colliding_triangles", "b far away: the roots' boxes are apart, 1 box test",
+                 BvhQuery{two_apart(), mesh_of({{{0, 0, 50}, {2, 0, 50}, {0, 2, 50}}}), 0, 0, true}, expect_bvh({}, 1, 0));
+  check::example("colliding_triangles", "coplanar overlapping triangles never meet here",
+                 BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}), mesh_of({{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}}), 0, 0, true},
+                 expect_bvh({}, 1, 1));
+  check::example("colliding_triangles", "two spheres of 80 triangles overlapping, every pair",
+                 BvhQuery{gen::sphere_mesh(80, {0, 0, 0}, 1), gen::sphere_mesh(80, {1.2, 0.3, 0.1}, 0.8), 3, 5, true},
+                 [](const BvhQuery& in) { return judge_bvh(in, Rules::random); });
+  check::example("colliding_triangles", "the same, one pair asked for",
+                 BvhQuery{gen::sphere_mesh(80, {0, 0, 0}, 1), gen::sphere_mesh(80, {1.2, 0.3, 0.1}, 0.8), 3, 5, false},
+                 [](const BvhQuery& in) { return judge_bvh(in, Rules::random); });
+}
+
+TEST_CASE("L06S7 OBB trees, dual traversal: random cases", "[lab06][step7][oracle]") {
+  check::random_cases("colliding_triangles", judge::bvh_query(), [](const BvhQuery& in) { return judge_bvh(in); });
+}
+
+// ---- Step 8 --------------------------------------------------------------------------------------
+
+namespace {
+
 // splitmix64: the efficiency segments, the same on every machine.
 struct Random {
   std::uint64_t state;
@@ -513,7 +616,7 @@ Outcome run_efficiency(const EfficiencyCase& in) {
 
 }  // namespace
 
-TEST_CASE("L06S6 efficiency: tests counted on 10,000 triangles", "[lab06][step6]") {
+TEST_CASE("L06S8 efficiency: tests counted on 10,000 triangles", "[lab06][step8]") {
   const int seed = int(check::settings().seed % 1000000);
   for (int kind = 0; kind < 4; ++kind)
     check::example("efficiency.segments", gen::name_of(gen::MeshKind(kind)), EfficiencyCase{kind, 10000, 1000, seed}, run_efficiency);
@@ -530,7 +633,7 @@ TEST_CASE("L06S6 efficiency: tests counted on 10,000 triangles", "[lab06][step6]
   });
 }
 
-// ---- Step 7: robustness ----------------------------------------------------------------------------
+// ---- Step 9: robustness ----------------------------------------------------------------------------
 // Exact degenerate input on integers: the header's rules hold exactly.
 
 namespace {
@@ -565,7 +668,7 @@ KdTree cubes_tree() {
 
 }  // namespace
 
-TEST_CASE("L06S7 robustness: k-d trees on exact input", "[lab06][step7]") {
+TEST_CASE("L06S9 robustness: k-d trees on exact input", "[lab06][step9]") {
   const KdTree tree = cubes_tree();
   const Mesh mesh = two_cubes();
   const auto exact_all = [&tree](const TreeQuery& in) {
@@ -582,7 +685,7 @@ TEST_CASE("L06S7 robustness: k-d trees on exact input", "[lab06][step7]") {
                  [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
 }
 
-TEST_CASE("L06S7 robustness: BSP trees and spheres on exact input", "[lab06][step7]") {
+TEST_CASE("L06S9 robustness: BSP trees and spheres on exact input", "[lab06][step9]") {
   // An L of three cubes (scaled by 2): faces share planes, points lie on them.
   const Mesh l = gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Vec3::Zero(), 2.0);
   const std::string q = "robust.classify";
@@ -596,9 +699,23 @@ TEST_CASE("L06S7 robustness: BSP trees and spheres on exact input", "[lab06][ste
                  [](const PointQuery& in) { return judge_order(in, Rules::exact); });
   check::example("robust.overlapping_pairs", "a chain touching along x, listed backwards",
                  SphereSet{{{{6, 0, 0}, 1}, {{3, 0, 0}, 2}, {{0, 0, 0}, 1}}}, expect_pairs({{0, 1}, {1, 2}}));
+  // Step 7 on exact contacts (every edge's largest |component| a power of two: the given
+  // test is exact): an edge through the other triangle's edge, an edge starting on it.
+  const Mesh floor = mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}});
+  check::example("robust.colliding_triangles", "an edge crossing the other's edge at (1, 0, 0)",
+                 BvhQuery{floor, mesh_of({{{1, 0, -1}, {1, 0, 1}, {1, -2, 0}}}), 0, 0, true}, expect_bvh({{0, 0}}, 1, 1));
+  check::example("robust.colliding_triangles", "a vertex exactly on the other's edge, at (1, 1, 0)",
+                 BvhQuery{floor, mesh_of({{{1, 1, 0}, {1, 1, 2}, {3, 3, 2}}}), 0, 0, true}, expect_bvh({{0, 0}}, 1, 1));
+  // Three equal balls whose ends meet exactly: a low end arrives at a high end's value
+  // (touching: the low end must pass it), twice.
+  check::example("robust.sweep_frames", "ends arriving exactly on ends",
+                 SweepCase{{{{{0, 0, 0}, 1}, {{4, 0, 0}, 1}, {{8, 0, 0}, 1}},
+                                   {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{8, 0, 0}, 1}},
+                                   {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{4, 0, 0}, 1}}}},
+                 expect_frames({{{}, 0, 0}, {{{0, 1}}, 1, 1}, {{{0, 1}, {1, 2}}, 2, 1}}));
 }
 
-TEST_CASE("L06S7 robustness: random exact degenerate cases", "[lab06][step7][oracle]") {
+TEST_CASE("L06S9 robustness: random exact degenerate cases", "[lab06][step9][oracle]") {
   check::random_cases("robust.segment_queries", judge::exact_tree_query(),
                       [](const TreeQuery& in) { return all_three(in, Rules::exact); });
   check::random_cases("robust.build_kd_tree", gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
@@ -611,6 +728,9 @@ TEST_CASE("L06S7 robustness: random exact degenerate cases", "[lab06][step7][ora
   });
   check::random_cases("robust.overlapping_pairs", judge::exact_sphere_set(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
+  });
+  check::random_cases("robust.sweep_frames", judge::exact_sweep_case(), [](const SweepCase& in) {
+    return judge::sweep_frames(in, run_sweep(in.frames), Rules::exact);
   });
 }
 
@@ -650,7 +770,11 @@ TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[
     refused("eye", [&] { back_to_front(bsp, v); });
     refused("spheres[1].center", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {v, 1}, {{1, 0, 0}, 1}}); });
     refused("spheres[0].radius", [&] { overlapping_pairs({{{0, 0, 0}, bad}, {{1, 0, 0}, 1}}); });
+    refused("spheres[1].center", [&] { run_sweep({{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {v, 1}}}); });
+    refused("spheres[0].radius", [&] { run_sweep({{{{0, 0, 0}, bad}}}); });
   }
+  refused("spheres[0].radius", [&] { run_sweep({{{{0, 0, 0}, -1}}}); });
+  refused("spheres", [&] { run_sweep({{{{0, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}}); });
   refused("spheres[1].radius", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, -1}}); });
   Mesh out_of_range = lean_and_stand();
   out_of_range.triangles[1][2] = 6;
@@ -661,6 +785,11 @@ TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[
   // (radius 0) is a ball like any other.
   CHECK_FALSE(first_hit(tree, {finite, finite}).hit);
   CHECK(overlapping_pairs({{{0, 0, 0}, 0}, {{0, 0, 0}, 0}}).pairs.size() == 1);
+  // Step 7's trees are not checked (that would cost what they save); trees without nodes
+  // (meshes without triangles) have no pair and cost no test.
+  const BvhRun none = run_bvh(ObbTree{}, judge::obb_tree(lean_and_stand(), 0), true);
+  CHECK(none.answer.pairs.empty());
+  CHECK(none.box_calls == 0);
 }
 
 // ---- Figures (not a graded step) ----------------------------------------------------------------

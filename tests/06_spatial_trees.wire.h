@@ -27,11 +27,19 @@ template <class V> void fields(BspNode& n, V&& v) {
 }
 template <class V> void fields(BspTree& t, V&& v) { v("nodes", t.nodes); v("pieces", t.pieces); v("triangles", t.triangles); }
 template <class V> void fields(SpherePairs& p, V&& v) { v("pairs", p.pairs); v("tests", p.tests); }
+template <class V> void fields(ObbNode& n, V&& v) {
+  v("box", n.box); v("left", n.left); v("right", n.right); v("first", n.first); v("count", n.count);
+}
+template <class V> void fields(ObbTree& t, V&& v) { v("nodes", t.nodes); v("items", t.items); v("triangles", t.triangles); }
+template <class V> void fields(TrianglePairs& p, V&& v) {
+  v("pairs", p.pairs); v("box_tests", p.box_tests); v("triangle_tests", p.triangle_tests);
+}
+template <class V> void fields(SweepFrame& f, V&& v) { v("pairs", f.pairs); v("tests", f.tests); v("swaps", f.swaps); }
 
 using Indices = std::vector<int>;
 using Spheres = std::vector<Sphere>;
 
-// Step 6 asks thousands of queries of one tree of 10,000 triangles. They run in the
+// Step 8 asks thousands of queries of one tree of 10,000 triangles. They run in the
 // answerer in one call, so that the tree crosses once; each query's calls of
 // given::segment_triangle are counted there, around it.
 struct SegmentRun {
@@ -50,6 +58,28 @@ using Segments = std::vector<Segment>;
 
 SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bool with_all);
 
+// Step 6: one SweepAndPrune fed the frames in turn, in the answerer (the object keeps its
+// state there); the calls of compare_ends are counted around each update.
+struct SweepRun {
+  SweepFrame frame;
+  long long comparisons = 0;
+};
+template <class V> void fields(SweepRun& r, V&& v) { v("frame", r.frame); v("comparisons", r.comparisons); }
+using SweepRuns = std::vector<SweepRun>;
+using Frames = std::vector<std::vector<Sphere>>;
+
+SweepRuns run_sweep(const Frames& frames);
+
+// Step 7: the dual traversal, with the given tests' calls counted around it.
+struct BvhRun {
+  TrianglePairs answer;
+  long long box_calls = 0;
+  long long triangle_calls = 0;
+};
+template <class V> void fields(BvhRun& r, V&& v) { v("answer", r.answer); v("box_calls", r.box_calls); v("triangle_calls", r.triangle_calls); }
+
+BvhRun run_bvh(const ObbTree& a, const ObbTree& b, bool every);
+
 #ifdef LABKIT_IN_ANSWERER
 inline SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bool with_all) {
   SegmentRuns runs;
@@ -66,6 +96,28 @@ inline SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bo
   }
   return runs;
 }
+
+inline SweepRuns run_sweep(const Frames& frames) {
+  SweepAndPrune sweep;
+  SweepRuns runs;
+  for (const std::vector<Sphere>& spheres : frames) {
+    SweepRun r;
+    const long long before = compare_ends_calls();
+    r.frame = sweep.update(spheres);
+    r.comparisons = compare_ends_calls() - before;
+    runs.push_back(r);
+  }
+  return runs;
+}
+
+inline BvhRun run_bvh(const ObbTree& a, const ObbTree& b, bool every) {
+  BvhRun r;
+  const long long boxes = given_box_tests(), triangles = given_triangle_tests();
+  r.answer = colliding_triangles(a, b, every);
+  r.box_calls = given_box_tests() - boxes;
+  r.triangle_calls = given_triangle_tests() - triangles;
+  return r;
+}
 #endif
 
 }  // namespace labkit::lab06
@@ -80,5 +132,7 @@ inline SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bo
   CALL(Where, classify, (const BspTree&, const Vec3&))                     \
   CALL(Indices, back_to_front, (const BspTree&, const Vec3&))              \
   CALL(SpherePairs, overlapping_pairs, (const Spheres&))                   \
-  CALL(SegmentRuns, run_segments, (const KdTree&, const Segments&, bool))
+  CALL(SegmentRuns, run_segments, (const KdTree&, const Segments&, bool)) \
+  CALL(SweepRuns, run_sweep, (const Frames&))                              \
+  CALL(BvhRun, run_bvh, (const ObbTree&, const ObbTree&, bool))
 // clang-format on

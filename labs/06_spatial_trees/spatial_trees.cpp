@@ -63,4 +63,19 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
   not_implemented("L06S5");
 }
 
+// L06S6: keep the sorted ends between frames, re-sort them by insertion, update the
+// pairs overlapping on x at each swap, test only those. Compare ends with compare_ends.
+SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
+  (void)spheres;
+  not_implemented("L06S6");
+}
+
+// L06S7: the dual traversal of two OBB trees (lecture 001's TestBVH), counted.
+TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every) {
+  (void)a;
+  (void)b;
+  (void)every;
+  not_implemented("L06S7");
+}
+
 }  // namespace labkit::lab06

@@ -6,12 +6,16 @@
 //
 // You write labs/06_spatial_trees/spatial_trees.cpp; this header is the contract.
 //
-// Three structures that spare a search most of its tests:
+// Four structures that spare a search most of its tests:
 //  - a k-d tree over a mesh's triangles answers segment queries (steps 1, 2);
 //  - a BSP tree cut along the mesh's own triangles tells inside from outside and lists
 //    the triangles back to front (steps 3, 4);
-//  - a sweep (or a grid) finds the overlapping pairs among many spheres (step 5).
-// Step 6 counts their tests; step 7 feeds them exact degenerate input.
+//  - a sweep (or a grid) finds the overlapping pairs among many spheres (step 5), and
+//    keeps its sorted list from frame to frame (frame coherence, step 6);
+//  - two trees of oriented boxes, traversed together, find the triangle pairs of two
+//    meshes that meet (step 7).
+// Step 8 counts the tests of steps 1, 2 and 5; step 9 feeds steps 1 to 7 exact
+// degenerate input.
 //
 // The primitive is given. Whether a segment hits a triangle is decided by the watertight
 // test labkit::given::segment_triangle (common/given/segment_triangle.h), here and in
@@ -42,7 +46,7 @@
 //  - BSP pieces lie within tol of their triangle and of their node's cell; their areas
 //    add up to their triangle's within 1e-9 S L (L its longest edge) per piece.
 //  - Test counts are exact: the checker counts the calls of given::segment_triangle.
-// Step 7's input is on integers (|x| <= 1024 times a power of two; segments whose
+// Step 9's input is on integers (|x| <= 1024 times a power of two; segments whose
 // b - a has a power of two as its largest |component|, where the given test is exact):
 // there nothing is ambiguous, and every rule below holds exactly.
 #pragma once
@@ -51,6 +55,7 @@
 #include "common/given/segment_triangle.h"
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace labkit::lab06 {
@@ -82,7 +87,7 @@ namespace labkit::lab06 {
 //
 // Your choice, stated in your file: the split rule (spatial median, object median, or
 // the surface area heuristic of the handout), and when to stop (a leaf size, no more
-// progress). Any valid tree passes this step; step 6 measures how good it is.
+// progress). Any valid tree passes this step; step 8 measures how good it is.
 
 constexpr int kLeaf = 3;       // KdNode::axis of a leaf
 constexpr int kMaxDepth = 64;  // no root-to-leaf path has more interior nodes than this
@@ -185,7 +190,7 @@ KdHits all_hits(const KdTree& tree, const Segment& segment);
 // |d| <= 1e-13 |e0|_1 |e1|_1 |x - v0|_1 (e0 = v1 - v0, e1 = v2 - v0), as zero: a neighbour
 // sharing an edge with the plane's triangle would otherwise be cut into a sliver on the
 // wrong side, whose node then answers for a whole wedge of space (classify fails far from
-// the surface). On step 7's integers the snap never fires. Zero-area triangles are left
+// the surface). On step 9's integers the snap never fires. Zero-area triangles are left
 // out altogether.
 //
 // Classify, for a closed mesh wound outward (every normal pointing out of the solid):
@@ -246,7 +251,152 @@ struct SpherePairs {
 
 SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres);
 
-// ---- Step 6 (L06S6): efficiency, counted -------------------------------------------------------
+// ---- Step 6 (L06S6): sort and sweep with frame coherence ------------------------------------
+//
+// Between two frames the spheres move little, so the sorted list of interval ends on x
+// barely changes: keep it, and re-sort it by insertion (each end slides left past the
+// few ends it overtook). Every adjacent swap of a low end past a high end (or back)
+// is exactly when two intervals start (or stop) overlapping: update the set of pairs
+// overlapping on x there, then test only those pairs with |c_i - c_j| <= r_i + r_j.
+//
+// The ends. Sphere i has a low end c_i.x - r_i and a high end c_i.x + r_i, computed
+// in doubles exactly so. The list is sorted by value; at equal values a low end comes
+// before a high end (touching counts: [0, 1] and [1, 2] overlap). Then two intervals
+// overlap on x exactly when each one's low end comes before the other's high end.
+// Compare two ends' values only with compare_ends below: it counts its calls, and the
+// checker reads the count, as step 2 counts given::segment_triangle.
+//
+// Counts. The first update sorts from scratch (any sort). Every later update, with
+// changed = the number of pairs of ends whose order of values (<, = or >) is not the
+// same as in the previous frame, must make
+//   swaps <= changed   and   compare_ends calls <= 2 n_ends + changed   (n_ends = 2 n)
+// as insertion sort does on the kept list: a re-sort from scratch makes about
+// n_ends log2(n_ends) comparisons however little the spheres moved. `tests` is how many
+// pairs you tested with |c_i - c_j| <= r_i + r_j this frame: at most the number of
+// pairs whose intervals overlap on x.
+//
+// Preconditions: every centre finite, every radius finite and >= 0; every update after
+// the first has as many spheres as the first (sphere i is the same body in every frame).
+
+struct Endpoint {
+  double value = 0.0;  // c.x - r (low end) or c.x + r (high end)
+  int sphere = -1;     // whose end it is
+  bool high = false;   // false: the low end
+};
+
+// Given: the sign of a.value - b.value (-1, 0 or 1), counting its calls.
+inline long long& compare_ends_calls() {
+  static long long calls = 0;
+  return calls;
+}
+inline int compare_ends(const Endpoint& a, const Endpoint& b) {
+  ++compare_ends_calls();
+  return (a.value > b.value) - (a.value < b.value);
+}
+
+struct SweepFrame {
+  std::vector<std::array<int, 2>> pairs;  // every {i, j}, i < j, whose balls meet this frame, once, sorted
+  long long tests = 0;                    // pairs tested with |c_i - c_j| <= r_i + r_j this frame
+  long long swaps = 0;                    // adjacent swaps of ends this frame
+};
+
+// The state kept from one frame to the next. You may use these members as you like; the
+// checker reads only update's answers (and the calls of compare_ends).
+class SweepAndPrune {
+ public:
+  SweepFrame update(const std::vector<Sphere>& spheres);
+
+  std::vector<Endpoint> ends;                   // the sorted ends on x, 2 n of them
+  std::vector<std::array<int, 2>> overlapping;  // the pairs {i, j}, i < j, whose intervals overlap on x
+  bool started = false;                         // false until the first update
+};
+
+// ---- Step 7 (L06S7): bounding-volume hierarchies, dual traversal ---------------------------
+//
+// Two meshes, each under a tree of oriented boxes (an OBB tree; the checker builds them):
+// which triangle of the one meets which triangle of the other? Lecture 001's TestBVH:
+//
+//    test(A, B):  boxes apart                 -> nothing below A and B can meet: stop
+//                 both leaves                 -> test every triangle pair of the two leaves
+//                 otherwise                   -> test(child, other) for both children of the
+//                                                node to descend, the other node as it is
+//
+// The node to descend: the one that is not a leaf; when neither is a leaf, the one with
+// the larger box, by volume h[0] * h[1] * h[2] (its half extents, multiplied in that
+// order); at equal volumes, A's. Descending the larger box splits the bigger problem
+// first; the checker counts the box tests of exactly this traversal and allows no more.
+//
+// The tests are given (lab 03 taught them; here you only call them): given_boxes_overlap
+// is lab 03's fifteen-axis test of two oriented boxes, conservative (it may call boxes a
+// hair apart overlapping, never the reverse); given_triangles_meet decides a pair by this
+// lab's hit rule: some edge of one hits the other as given::segment_triangle says, so
+// touching counts and coplanar triangles never meet (a segment in a triangle's plane never
+// hits). Both count their calls, and the checker reads the counts.
+//
+// Preconditions: the trees are valid (every node's box holds its subtree's triangles,
+// children indices in range; not checked: that would cost what the tree saves).
+
+struct ObbNode {
+  Box box;         // holds every triangle of the node's subtree (closed)
+  int left = -1;   // an interior node's children are nodes[left] and nodes[right]; -1: a leaf
+  int right = -1;
+  int first = 0;   // a leaf's triangles are items[first], ..., items[first + count - 1]
+  int count = 0;
+};
+
+struct ObbTree {
+  std::vector<ObbNode> nodes;       // nodes[0] is the root; none when the mesh has no triangle
+  std::vector<int> items;           // the leaves' triangle indices
+  std::vector<Triangle> triangles;  // triangles[i] = mesh.triangle(i)
+};
+
+inline long long& given_box_tests() {
+  static long long calls = 0;
+  return calls;
+}
+inline long long& given_triangle_tests() {
+  static long long calls = 0;
+  return calls;
+}
+// Lab 03's separating-axis test: the boxes' three axes each, and the nine cross products
+// (those too short to mean a direction are skipped: that only says "overlap" more often).
+// Apart only when a gap shows beyond a relative margin of 1e-12: conservative.
+inline bool given_boxes_overlap(const Box& a, const Box& b) {
+  ++given_box_tests();
+  const Vec3 d = b.center - a.center;
+  const auto apart_along = [&](const Vec3& u) {
+    const double length = u.norm();
+    if (!(length > 1e-9)) return false;
+    double ra = 0, rb = 0;
+    for (int k = 0; k < 3; ++k) ra += a.half_extents[k] * std::abs(a.axes.col(k).dot(u)), rb += b.half_extents[k] * std::abs(b.axes.col(k).dot(u));
+    const double gap = std::abs(d.dot(u)) - ra - rb;
+    return gap > 1e-12 * (std::abs(d.dot(u)) + ra + rb + length * (a.center.cwiseAbs().maxCoeff() + b.center.cwiseAbs().maxCoeff()));
+  };
+  for (int k = 0; k < 3; ++k)
+    if (apart_along(a.axes.col(k)) || apart_along(b.axes.col(k))) return false;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (apart_along(a.axes.col(i).cross(b.axes.col(j)))) return false;
+  return true;
+}
+// Some edge of one triangle hits the other (given::segment_triangle's rule).
+inline bool given_triangles_meet(const Triangle& s, const Triangle& t) {
+  ++given_triangle_tests();
+  for (int k = 0; k < 3; ++k)
+    if (given::segment_triangle({s[k], s[(k + 1) % 3]}, t).hit || given::segment_triangle({t[k], t[(k + 1) % 3]}, s).hit) return true;
+  return false;
+}
+
+struct TrianglePairs {
+  std::vector<std::array<int, 2>> pairs;  // every {i, j} (i in a's mesh, j in b's) that meets, once, sorted
+  long long box_tests = 0;                // calls of given_boxes_overlap this query made
+  long long triangle_tests = 0;           // calls of given_triangles_meet this query made
+};
+
+// every = true: all pairs that meet. every = false: one pair (any), or none, and stop there.
+TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every);
+
+// ---- Step 8 (L06S8): efficiency, counted -------------------------------------------------------
 // No new function: steps 1, 2 and 5 must also be fast, measured by counting tests, never
 // by timing. On 10,000-triangle meshes (a sphere, a torus, a terrain and a soup, from
 // common/generators/meshes.h) with your own tree, over 1,000 random segments per mesh and
@@ -263,10 +413,11 @@ constexpr double kLongFirstMean = 150;
 constexpr double kLongAllMean = 600;
 constexpr long long kSphereTests = 100000;
 
-// ---- Step 7 (L06S7): robustness: splits through vertices ------------------------------------
-// No new function: steps 1 to 5 on exact degenerate input. Split planes through vertices
+// ---- Step 9 (L06S9): robustness: splits through vertices ------------------------------------
+// No new function: steps 1 to 7 on exact degenerate input. Split planes through vertices
 // and along faces (a triangle in the plane goes to both sides), segments lying in a split
 // plane or on a wall of the root's cell, ending or starting exactly on one; points and
-// eyes exactly on planes, faces, edges and vertices; balls touching exactly, even along x.
+// eyes exactly on planes, faces, edges and vertices; balls touching exactly, even along x;
+// triangles of two meshes touching exactly, an edge through an edge or a vertex on one.
 
 }  // namespace labkit::lab06

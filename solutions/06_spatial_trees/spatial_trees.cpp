@@ -273,7 +273,7 @@ double side_value(const Triangle& t, const Vec3& x) { return (t.v1 - t.v0).cross
 // into a sliver on the wrong side, and that sliver's node would claim a whole wedge of
 // space for the wrong side of the solid. The rounding error is at most a few units of
 // 2^-53 of |e0| |e1| |x - v0| (1-norms); 1e-13 of it is far above that, and on the
-// integer input of step 7 (|x| <= 1024 times a power of two) far below the smallest
+// integer input of step 9 (|x| <= 1024 times a power of two) far below the smallest
 // non-zero value, so there the sign stays exact.
 double build_side(const Triangle& t, const Vec3& x) {
   const Vec3 e0 = t.v1 - t.v0, e1 = t.v2 - t.v0, r = x - t.v0;
@@ -648,6 +648,138 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
         out.pairs.push_back({std::min(intervals[i].sphere, intervals[j].sphere), std::max(intervals[i].sphere, intervals[j].sphere)});
     }
   std::sort(out.pairs.begin(), out.pairs.end());
+  return out;
+}
+
+// ---- Step 6 ------------------------------------------------------------------------------------
+
+namespace {
+
+// The list's order: by value, and at equal values a low end before a high end, so that
+// intervals that touch come out overlapping (closed balls: touching counts). Two lows or
+// two highs at one value keep their order (the sort is stable): no swap, nothing to do.
+bool before(const Endpoint& a, const Endpoint& b) {
+  const int c = compare_ends(a, b);
+  return c < 0 || (c == 0 && !a.high && b.high);
+}
+
+std::array<int, 2> ordered(int i, int j) { return {std::min(i, j), std::max(i, j)}; }
+
+}  // namespace
+
+// Incremental sort and sweep (lecture 002: O(n) per frame when objects move little).
+// The sorted ends are kept; each frame refreshes their values and insertion-sorts them.
+// An end moving left past another is one adjacent swap, and the swaps that matter are a
+// low end passing a high end (those intervals now overlap) or a high end passing a low
+// end (they stop overlapping); two lows or two highs passing change nothing.
+//
+//   frame k:    A0  A1  B0  B1        A and B apart
+//   frame k+1:  A0  B0  A1  B1        B0 slid left past A1: one swap, {A, B} added
+SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    require_finite("SweepAndPrune::update", "spheres[" + std::to_string(i) + "].center", spheres[i].center);
+    if (!(spheres[i].radius >= 0) || !std::isfinite(spheres[i].radius))
+      throw std::invalid_argument("SweepAndPrune::update: spheres[" + std::to_string(i) + "].radius must be finite and >= 0, got " +
+                                  text(spheres[i].radius));
+  }
+  if (started && spheres.size() * 2 != ends.size())
+    throw std::invalid_argument("SweepAndPrune::update: spheres must keep the first frame's count, " + std::to_string(ends.size() / 2) +
+                                ", got " + std::to_string(spheres.size()));
+  SweepFrame out;
+  for (Endpoint& e : ends) {
+    const Sphere& s = spheres[std::size_t(e.sphere)];
+    e.value = e.high ? s.center.x() + s.radius : s.center.x() - s.radius;
+  }
+  if (!started) {  // the first frame: a sort from scratch, then the overlaps by one sweep
+    started = true;
+    ends.clear();
+    for (int i = 0; i < int(spheres.size()); ++i) {
+      const Sphere& s = spheres[std::size_t(i)];
+      ends.push_back({s.center.x() - s.radius, i, false}), ends.push_back({s.center.x() + s.radius, i, true});
+    }
+    std::sort(ends.begin(), ends.end(), before);
+    // Walking the sorted ends, the spheres whose low end is passed and high end is not
+    // are open; each low end overlaps every open interval.
+    overlapping.clear();
+    std::vector<int> open;
+    for (const Endpoint& e : ends) {
+      if (e.high) {
+        open.erase(std::find(open.begin(), open.end(), e.sphere));
+      } else {
+        for (int other : open) overlapping.push_back(ordered(other, e.sphere));
+        open.push_back(e.sphere);
+      }
+    }
+  }
+  // Insertion sort. Each swap of a low end left past a high end makes their intervals
+  // overlap; a high end left past a low end parts them.
+  for (std::size_t k = 1; k < ends.size(); ++k)
+    for (std::size_t m = k; m > 0 && before(ends[m], ends[m - 1]); --m) {
+      const Endpoint& moving = ends[m];
+      const Endpoint& passed = ends[m - 1];
+      if (moving.sphere != passed.sphere && moving.high != passed.high) {
+        const std::array<int, 2> pair = ordered(moving.sphere, passed.sphere);
+        if (!moving.high) {
+          overlapping.push_back(pair);
+        } else {
+          overlapping.erase(std::find(overlapping.begin(), overlapping.end(), pair));
+        }
+      }
+      std::swap(ends[m], ends[m - 1]);
+      ++out.swaps;
+    }
+  // Only the pairs overlapping on x get the full test.
+  for (const std::array<int, 2>& p : overlapping) {
+    const Sphere& a = spheres[std::size_t(p[0])];
+    const Sphere& b = spheres[std::size_t(p[1])];
+    ++out.tests;
+    const double reach = a.radius + b.radius;
+    if ((a.center - b.center).squaredNorm() <= reach * reach) out.pairs.push_back(p);
+  }
+  std::sort(out.pairs.begin(), out.pairs.end());
+  return out;
+}
+
+// ---- Step 7 ------------------------------------------------------------------------------------
+
+// Lecture 001's TestBVH, with an explicit stack of node pairs. Boxes apart: nothing below
+// them meets. Both leaves: the triangle pairs. Otherwise descend the node that is not a
+// leaf, or the larger box (the bigger half of the problem), keeping the other.
+TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every) {
+  TrianglePairs out;
+  if (a.nodes.empty() || b.nodes.empty()) return out;
+  const auto volume = [](const ObbNode& n) { return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2]; };
+  std::vector<std::array<int, 2>> todo{{0, 0}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    const ObbNode& na = a.nodes[std::size_t(i)];
+    const ObbNode& nb = b.nodes[std::size_t(j)];
+    ++out.box_tests;
+    if (!given_boxes_overlap(na.box, nb.box)) continue;
+    const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
+    if (leaf_a && leaf_b) {
+      for (int p = na.first; p < na.first + na.count; ++p)
+        for (int q = nb.first; q < nb.first + nb.count; ++q) {
+          const int s = a.items[std::size_t(p)], t = b.items[std::size_t(q)];
+          ++out.triangle_tests;
+          if (given_triangles_meet(a.triangles[std::size_t(s)], b.triangles[std::size_t(t)])) {
+            out.pairs.push_back({s, t});
+            if (!every) return out;
+          }
+        }
+      continue;
+    }
+    const bool descend_a = leaf_b || (!leaf_a && volume(na) >= volume(nb));
+    if (descend_a) {
+      todo.push_back({na.right, j}), todo.push_back({na.left, j});
+    } else {
+      todo.push_back({i, nb.right}), todo.push_back({i, nb.left});
+    }
+  }
+  // A triangle listed in two leaves (the checker's trees never do it) would give a pair twice.
+  std::sort(out.pairs.begin(), out.pairs.end());
+  out.pairs.erase(std::unique(out.pairs.begin(), out.pairs.end()), out.pairs.end());
   return out;
 }
 
