@@ -69,5 +69,28 @@ for args in "hint" "hint 99" "hint 02 99" "hint x" "hint 02 1 2"; do
   [ "$(wc -l <<<"$out")" -le 2 ] || fail "'$args' says more than one line"
 done
 
+echo "--- 6. handouts: one session each, every step where the runner points, every link resolves"
+manifest="$root/grading/manifest.json"
+for handout in "$root"/handouts/[0-9][0-9]_*.md; do
+  name=${handout#$root/}
+  lines=$(wc -l <"$handout")
+  [ "$lines" -le 450 ] || fail "$name has $lines lines; a handout is one lab session, at most 450"
+done
+if [ -f "$manifest" ]; then
+  # "Next: ... handouts/NN_name.md, \"Step K\"": each manifest step has its heading, with its tag.
+  while read -r stem step tag; do
+    grep -q "^## Step $step: .*($tag)" "$root/handouts/$stem.md" ||
+      fail "handouts/$stem.md has no heading '## Step $step: ... ($tag)' (the manifest's step, where the runner points)"
+  done < <(sed -n 's/^ *"id": *"\([0-9]*\)".*/ID \1/p; s/^ *"name": *"\([^"]*\)".*/NAME \1/p
+                  s/.*"step": *\([0-9]*\), *"tag": *"\([^"]*\)".*/STEP \1 \2/p' "$manifest" |
+           awk '$1 == "ID" { id = $2 } $1 == "NAME" { stem = id "_" $2 } $1 == "STEP" { print stem, $2, $3 }')
+fi
+for page in "$root"/handouts/*.md "$root"/handouts/hints/*.md; do
+  folder=$(dirname "$page")
+  while read -r link; do
+    [ -e "$folder/$link" ] || fail "${page#$root/} links $link, which does not exist"
+  done < <(grep -o '](\([^)#]*\)' "$page" | sed 's/^](//' | grep -v -e '^http' -e '^$' | sort -u)
+done
+
 [ $failures -eq 0 ] && echo "all runner checks passed"
 exit $((failures > 0))
