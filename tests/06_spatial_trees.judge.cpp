@@ -980,8 +980,6 @@ bool pair_in_doubt(const Triangle& s, const Triangle& t, double tol) {
   return false;
 }
 
-Aabb bounds_of(const Triangle& t) { return {t.v0.cwiseMin(t.v1).cwiseMin(t.v2), t.v0.cwiseMax(t.v1).cwiseMax(t.v2)}; }
-
 }  // namespace
 
 Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got, Rules rules) {
@@ -990,9 +988,7 @@ Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree&
   for (std::size_t i = 0; i < in.a.size(); ++i)
     for (std::size_t j = 0; j < in.b.size(); ++j) {
       const Triangle s = in.a.triangle(i), t = in.b.triangle(j);
-      const Aabb p = bounds_of(s), q = bounds_of(t);
-      if ((p.min.array() > q.max.array()).any() || (q.min.array() > p.max.array()).any()) continue;
-      if (pair_meets(s, t)) exact.push_back({int(i), int(j)});
+      if (boxes_meet(box_of(s), box_of(t)) && pair_meets(s, t)) exact.push_back({int(i), int(j)});
     }
   const std::string expected = describe_pairs(exact), answer = describe_pairs(got.answer.pairs);
   const TrianglePairs bound = header_traversal(a, b);

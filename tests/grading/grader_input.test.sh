@@ -250,6 +250,9 @@ code=$?
 [ $code -eq 0 ] || { cat "$work/broken.log"; fail "labkit grade on a broken kit exits $code (124: it hung)"; }
 steps=$(awk -F'\t' 'NR > 1 { print $4 }' "$broken_out/steps.tsv" | paste -sd ,)
 expected="exited early,exited early,exited early,exited early,exited early,crashed,failing"
+# Lab 02's later steps (if the manifest has more than 7) write no report: exited early.
+lab02_steps=$(awk '/"id": "02"/ { on = 1 } on && /"step":/ { n++ } on && /^ *\]/ { exit } END { print n }' "$kit/grading/manifest.json")
+for ((k = 8; k <= lab02_steps; k++)); do expected+=",exited early"; done
 [ "$steps" = "$expected" ] || fail "broken kit: the steps are '$steps', expected '$expected'"
 grep -qF "replay    none (the case it reported is not a replay token the kit writes)" "$broken_out/report.txt" ||
   fail "broken kit: the crafted token is not refused"

@@ -286,11 +286,12 @@ expect symlink "not submitted"
 # A fault costs the cases that reach the function it is in (the reference calls some of
 # its functions from others): a crash or a time-out costs its case, not its step, so a
 # step with partial credit keeps the points of its other queries.
-# point_in_triangle_barycentric is steps 3 and 7's, point_in_triangle_edges steps 2 and
-# 7's, all_hits steps 5 and 7's, segment_plane step 1's, any_hit step 5's.
-expect segfault graded 3="failing*" 7="failing*"
-expect endless_loop graded 2=failing 7="failing*"
-expect allocate_50gb graded 5="failing*" 7="failing*"
+# point_in_triangle_barycentric is steps 3 and 8's, point_in_triangle_edges steps 2 and
+# 8's, all_hits steps 5 and 8's, segment_plane step 1's, any_hit step 5's (step 8 is the
+# robustness step; step 7, two moving meshes, calls none of them).
+expect segfault graded 3="failing*" 8="failing*"
+expect endless_loop graded 2=failing 8="failing*"
+expect allocate_50gb graded 5="failing*" 8="failing*"
 expect print_100mb graded 1="too much output"
 expect exit_0 graded 5="failing*"
 expect all_or_nothing graded 1=failing
@@ -322,9 +323,9 @@ done
 grep -q "not submitted" "$out/empty/steps.tsv" || fail "empty: its labs are not 'not submitted'"
 [ "$(awk -F'\t' 'NR > 1 && $4 != "not implemented yet"' "$out/stubs/steps.tsv" | wc -l)" = 0 ] || fail "stubs: a step is not 'not implemented yet'"
 # Partial credit: the wrong sign of beta (barycentric, which find_segment_triangle uses
-# too) keeps some of the points of steps 3, 4, 5 and 7, never all; the rest is full.
-awk -F'\t' 'NR > 1 && !($1 == "02" && $2 ~ /^[3457]$/) && $5 != $6 { print "FAIL: partial: lab " $1 " step " $2 " scores " $5 " of " $6; bad = 1 }
-            NR > 1 && $1 == "02" && $2 ~ /^[3457]$/ && !($4 == "failing" && $5 > 0 && $5 < $6) { print "FAIL: partial: step " $2 " is " $4 " with " $5 " of " $6; bad = 1 }
+# too) keeps some of the points of steps 3, 4, 5 and 8, never all; the rest is full.
+awk -F'\t' 'NR > 1 && !($1 == "02" && $2 ~ /^[3458]$/) && $5 != $6 { print "FAIL: partial: lab " $1 " step " $2 " scores " $5 " of " $6; bad = 1 }
+            NR > 1 && $1 == "02" && $2 ~ /^[3458]$/ && !($4 == "failing" && $5 > 0 && $5 < $6) { print "FAIL: partial: step " $2 " is " $4 " with " $5 " of " $6; bad = 1 }
             END { exit bad }' "$out/partial/steps.tsv" || failures=$((failures + 1))
 
 # What the feedback says, in the student's words.
