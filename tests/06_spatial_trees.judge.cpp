@@ -1,6 +1,7 @@
 #include "06_spatial_trees.judge.h"
 
 #include "common/generators/generators.h"
+#include "common/generators/splitmix.h"
 #include "common/oracle/oracle.h"
 #include "common/harness/segment_doubt.h"
 
@@ -45,18 +46,7 @@ bool boxes_meet(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
 }
 
-// splitmix64, for the checker's trees and the efficiency segments.
-struct Random {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t x = (state += 0x9e3779b97f4a7c15ull);
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-  }
-  int below(int n) { return int(next() % std::uint64_t(n)); }
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
-};
+using Random = gen::SplitMix64;  // the checker's trees and the efficiency segments
 
 // ---- k-d trees: shape, cells, leaves ----------------------------------------------------------
 

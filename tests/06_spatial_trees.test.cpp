@@ -3,6 +3,7 @@
 #include "06_spatial_trees.judge.h"
 #include "spatial_trees.h"
 
+#include "common/generators/splitmix.h"
 #include "common/given/segment_triangle.h"
 #include "common/oracle/oracle.h"
 
@@ -491,18 +492,7 @@ TEST_CASE("L06S7 OBB trees, dual traversal: random cases", "[lab06][step7][oracl
 
 namespace {
 
-// splitmix64: the efficiency segments, the same on every machine.
-struct Random {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t x = (state += 0x9e3779b97f4a7c15ull);
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-  }
-  int below(int n) { return int(next() % std::uint64_t(n)); }
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
-};
+using Random = gen::SplitMix64;  // the efficiency segments, the same on every machine
 
 // The segments of an efficiency case, `short_ones` or long ones.
 std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short_ones, std::uint64_t seed) {

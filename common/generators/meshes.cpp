@@ -1,6 +1,7 @@
 #include "common/generators/meshes.h"
 
 #include "common/generators/generators.h"
+#include "common/generators/splitmix.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,18 +13,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// splitmix64: a tiny, portable stream of random numbers from a seed.
-struct Random {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t x = (state += 0x9e3779b97f4a7c15ull);
-    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-    return x ^ (x >> 31);
-  }
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; }  // [0, 1)
-  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }
-};
+using Random = SplitMix64;
 
 // Adds vertices once each, so that faces of a closed surface share them.
 class Builder {

@@ -1,0 +1,23 @@
+#pragma once
+// splitmix64 (Steele, Lea and Flood, 2014): a tiny, portable stream of random numbers
+// from a seed, the same on every machine and compiler. For inputs that must be fixed by
+// a number of their own (meshes drawn from a seed, the efficiency segments, the
+// checker's trees), apart from RapidCheck's random cases.
+#include <cstdint>
+
+namespace labkit::gen {
+
+struct SplitMix64 {
+  std::uint64_t state;
+  std::uint64_t next() {
+    std::uint64_t x = (state += 0x9e3779b97f4a7c15ull);
+    x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
+    x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
+    return x ^ (x >> 31);
+  }
+  int below(int n) { return int(next() % std::uint64_t(n)); }       // [0, n)
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }     // [0, 1)
+  double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }  // [lo, hi)
+};
+
+}  // namespace labkit::gen
