@@ -24,6 +24,21 @@
 # read from grading/manifest.json.
 file(READ "${PROJECT_SOURCE_DIR}/grading/manifest.json" LABKIT_MANIFEST)
 
+# labkit_kit_code(target [LIGHT]): the kit's own code (oracle, judges, harness, runner) is
+# built without debug information in the default RelWithDebInfo build. Students debug
+# their own files, which keep -g; on the template-heavy judges and generators -g costs a
+# third of the first build, the one a new student waits for. LIGHT: code whose speed
+# barely shows (test programs, generators, Catch2's runner, the runner), at -O1.
+function(labkit_kit_code target)
+  cmake_parse_arguments(K "LIGHT" "" "" ${ARGN})
+  if(CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo")
+    target_compile_options(${target} PRIVATE -g0)
+    if(K_LIGHT)
+      target_compile_options(${target} PRIVATE -O1)
+    endif()
+  endif()
+endfunction()
+
 function(labkit_add_lab number name)
   set(stem ${number}_${name})
   set(lab lab${number})
@@ -49,6 +64,7 @@ function(labkit_add_lab number name)
   add_library(${lab}_judge STATIC "${PROJECT_SOURCE_DIR}/tests/${stem}.judge.cpp" ${generator_sources})
   target_include_directories(${lab}_judge PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_judge PUBLIC labkit_harness labkit_oracle)
+  labkit_kit_code(${lab}_judge)
 
   # The lab's list of calls (tests/NN_name.wire.h), expanded on both sides of the pipe.
   set(wire_definitions LABKIT_LAB_WIRE="${stem}.wire.h" LABKIT_LAB_NAMESPACE=${lab}
@@ -64,6 +80,8 @@ function(labkit_add_lab number name)
 
   add_executable(test_${stem} "${PROJECT_SOURCE_DIR}/tests/${stem}.test.cpp")
   target_link_libraries(test_${stem} PRIVATE ${lab}_judge ${lab}_calls labkit_catch_main)
+  labkit_kit_code(test_${stem} LIGHT)
+  labkit_kit_code(${lab}_calls)
 
   foreach(impl IN LISTS implementations)
     labkit_add_answerer(${number} ${name} ${impl} ${lab}_${impl})

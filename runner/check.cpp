@@ -5,10 +5,13 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
 #include <thread>
+
+#include <unistd.h>
 
 namespace runner {
 
@@ -137,13 +140,68 @@ std::string first_errors(const std::string& log, const std::string& root) {
   return excerpt;
 }
 
-std::string build_targets(const Paths& paths, const std::vector<std::string>& targets, bool* ok) {
+namespace {
+
+// A build's progress on stderr, from Ninja's "[12/135] Building CXX object ..." lines:
+// how far it is, for how long, and what it is building. On a terminal one line is
+// rewritten in place and cleared at the end; in a log, a line every 15 seconds.
+class BuildProgress {
+ public:
+  BuildProgress() : terminal_(isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
+  ~BuildProgress() {
+    if (shown_ && terminal_) std::cerr << "\r\033[K" << std::flush;
+  }
+  void operator()(const char* data, std::size_t size) {
+    pending_.append(data, size);
+    for (std::size_t end; (end = pending_.find('\n')) != std::string::npos; pending_.erase(0, end + 1))
+      line(pending_.substr(0, end));
+  }
+
+ private:
+  void line(const std::string& text) {
+    // "[N/M] Building CXX object common/CMakeFiles/labkit_oracle.dir/oracle/boxes.cpp.o"
+    if (text.size() < 5 || text[0] != '[') return;
+    const std::size_t close = text.find("] ");
+    if (close == std::string::npos) return;
+    std::string what = text.substr(close + 2);
+    for (const char* verb : {"Building CXX object ", "Linking CXX executable ", "Linking CXX static library "})
+      if (what.rfind(verb, 0) == 0) what = (verb[0] == 'L' ? "linking " : "") + what.substr(std::strlen(verb));
+    // common/CMakeFiles/labkit_oracle.dir/oracle/boxes.cpp.o -> common/oracle/boxes.cpp
+    const std::size_t dir = what.find("CMakeFiles/");
+    const std::size_t inner = dir == std::string::npos ? dir : what.find(".dir/", dir);
+    if (inner != std::string::npos) what = what.substr(0, dir) + what.substr(inner + 5);
+    if (what.size() > 2 && what.compare(what.size() - 2, 2, ".o") == 0) what.resize(what.size() - 2);
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if (!terminal_ && shown_ && seconds < last_ + 15) return;
+    last_ = seconds;
+    shown_ = true;
+    std::ostringstream out;
+    out << "labkit: building " << text.substr(0, close + 1) << " " << int(seconds) / 60 << "m"
+        << (int(seconds) % 60 < 10 ? "0" : "") << int(seconds) % 60 << "s  " << what;
+    std::string shown = out.str();
+    if (terminal_ && shown.size() > 99) shown = shown.substr(0, 96) + "...";
+    std::cerr << (terminal_ ? "\r\033[K" : "") << shown << (terminal_ ? "" : "\n") << std::flush;
+  }
+
+  bool terminal_;
+  std::chrono::steady_clock::time_point start_;
+  std::string pending_;
+  bool shown_ = false;
+  double last_ = 0;
+};
+
+}  // namespace
+
+std::string build_targets(const Paths& paths, const std::vector<std::string>& targets, bool* ok, bool keep_going) {
   Limits limits;
   limits.seconds = 3600;
   limits.kept_bytes = 1 << 20;
   std::vector<std::string> argv = {"cmake", "--build", paths.build, "--target"};
   argv.insert(argv.end(), targets.begin(), targets.end());
-  const Run run = runner::run(argv, {}, limits);
+  if (keep_going) argv.insert(argv.end(), {"--", "-k", "0"});
+  BuildProgress progress;
+  const Run run = runner::run(argv, {}, limits, "", std::ref(progress));
   *ok = run.ok();
   return *ok ? "" : first_errors(run.output, paths.source);
 }
@@ -238,6 +296,16 @@ int check(const Paths& paths, const CheckOptions& options) {
     std::cout << bold("labkit check") << dim(": " + std::string(options.cases ? std::to_string(options.cases) : "the default") +
                                              " random cases per query, seed " + (options.seed.empty() ? "public" : options.seed))
               << "\n";
+
+  // Every lab's programs in one build first, so that all cores stay busy from the first
+  // file to the last; a lab that does not compile is built again below, alone, for its
+  // errors (and the other labs' programs are ready by then).
+  if (labs.size() > 1) {
+    std::vector<std::string> all;
+    for (const Lab* lab : labs) all.insert(all.end(), {lab->judge_binary(), lab->answerer(options.implementation)});
+    bool built = false;
+    build_targets(paths, all, &built, true);
+  }
 
   for (std::size_t l = 0; l < labs.size(); ++l) {
     const Lab* lab = labs[l];

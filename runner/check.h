@@ -33,8 +33,10 @@ int check(const Paths& paths, const CheckOptions& options);
 // The first compiler errors of a build log (24 lines), with `root/` taken out of paths.
 std::string first_errors(const std::string& log, const std::string& root);
 
-// Builds the targets; on failure returns the first compiler errors, else "".
-std::string build_targets(const Paths& paths, const std::vector<std::string>& targets, bool* ok);
+// Builds the targets, showing its progress on stderr; on failure returns the first
+// compiler errors, else "". keep_going: build all that can be built past a failure.
+std::string build_targets(const Paths& paths, const std::vector<std::string>& targets, bool* ok,
+                          bool keep_going = false);
 
 // Runs the given steps of a lab, `jobs` at a time, in the order given.
 std::vector<StepResult> run_steps(const Programs& programs, const Lab& lab, const std::vector<const Step*>& steps,

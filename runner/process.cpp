@@ -103,7 +103,8 @@ bool apply_limits(const Limits& limits) {
   return true;
 }
 
-Run run(const std::vector<std::string>& argv, const Environment& env, const Limits& limits, const std::string& directory) {
+Run run(const std::vector<std::string>& argv, const Environment& env, const Limits& limits, const std::string& directory,
+        const Observer& observe) {
   Run result;
   int pipe_fds[2];
   if (argv.empty() || pipe2(pipe_fds, O_CLOEXEC) != 0) {
@@ -160,6 +161,7 @@ Run run(const std::vector<std::string>& argv, const Environment& env, const Limi
       continue;
     }
     capture.add(buffer, std::size_t(n));
+    if (observe) observe(buffer, std::size_t(n));
     if (!result.flooded && capture.total() > limits.flood_bytes) {
       result.flooded = true;
       kill(-pid, SIGKILL);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -38,8 +39,10 @@ struct Run {
 using Environment = std::vector<std::pair<std::string, std::string>>;
 
 // The child runs in its own session (so its own process group, and no terminal).
+// `observe`, when given, sees the output as it arrives (a build's progress line).
+using Observer = std::function<void(const char* data, std::size_t size)>;
 Run run(const std::vector<std::string>& argv, const Environment& extra_environment = {}, const Limits& limits = {},
-        const std::string& directory = "");
+        const std::string& directory = "", const Observer& observe = {});
 
 // Applies the limits to this process (no core files; its control groups, while it may
 // still join them; then the uid last). False, with the reason on stderr, when a group

@@ -4,6 +4,7 @@
 #include "common/oracle/oracle.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <initializer_list>
@@ -749,10 +750,44 @@ rc::Gen<SphereLozenge> sphere_lozenge(bool exact) {
       [](const PointRectanglePair& c) { return SphereLozenge{{c.p, 0}, {c.rectangle, 0}}; },
       [](const Canonical& k) { return SphereLozenge{{canonical_point(k, k.h), 0}, {canonical_rectangle(k, 0), 0}}; });
 }
+// Parallel axes exactly n apart where finding the closest pair needs a division: the
+// first axis runs along an integer d, the second starts at an integer w whose projection
+// onto the first, t = (w . d) / |d|^2, lies inside it but is not a dyadic fraction, and
+// |w|^2 |d|^2 - (w . d)^2 = n^2 |d|^2 for an integer n. The constructed closest points
+// are rounded, so a rounded distance can come out a hair above r0 + r1 = n: only exact
+// products of the input decide it. (The small table of such d and w is searched once.)
+CapsulePair parallel_touching() {
+  struct Triple {
+    Vec3 d, w;
+    double n;
+  };
+  static const std::vector<Triple> table = [] {
+    std::vector<Triple> out;
+    for (int i = 0; i < 9 * 9 * 9 * 9 * 9 * 9; ++i) {
+      int c[6], k = i;
+      for (int& x : c) x = k % 9 - 4, k /= 9;
+      const long dd = c[0] * c[0] + c[1] * c[1] + c[2] * c[2], ww = c[3] * c[3] + c[4] * c[4] + c[5] * c[5];
+      const long wd = c[0] * c[3] + c[1] * c[4] + c[2] * c[5];
+      if (dd == 0 || (dd & (dd - 1)) == 0 || wd <= 0 || wd >= dd || (ww * dd - wd * wd) % dd != 0) continue;
+      const long n2 = (ww * dd - wd * wd) / dd, n = std::lround(std::sqrt(double(n2)));
+      if (n > 0 && n * n == n2) out.push_back({Vec3(c[0], c[1], c[2]), Vec3(c[3], c[4], c[5]), double(n)});
+    }
+    return out;
+  }();
+  const Triple& x = *rc::gen::elementOf(table);
+  const double s = *gen::scale();
+  const Vec3 a = *gen::lattice_point(s, 8);
+  const double along = *rc::gen::element(-2.0, -1.0, 1.0, 2.0);
+  const CapsulePair p{{{a, a + s * x.d}, 0}, {{a + s * x.w, a + s * (x.w + along * x.d)}, 0}};
+  return with_radii(p, x.n * s);
+}
+
 rc::Gen<CapsulePair> capsule_pair(bool exact) {
-  return pair_generator<CapsulePair>(
+  const rc::Gen<CapsulePair> families = pair_generator<CapsulePair>(
       gen::segment_pair(exact), exact, [](const SegmentPair& c) { return CapsulePair{{c.first, 0}, {c.second, 0}}; },
       [](const Canonical& k) { return CapsulePair{{canonical_segment(k, 0), 0}, {canonical_segment(k, k.h), 0}}; });
+  if (!exact) return families;
+  return rc::gen::weightedOneOf<CapsulePair>({{4, families}, {1, rc::gen::exec(parallel_touching)}});
 }
 rc::Gen<CapsuleLozenge> capsule_lozenge(bool exact) {
   return pair_generator<CapsuleLozenge>(

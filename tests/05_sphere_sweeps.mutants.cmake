@@ -7,7 +7,7 @@ labkit_mutant(05 sphere_sweeps NAME clamp_not_reproject STEP 1 SAYS "re-projecte
   REPLACE "const double s = std::clamp(w.cross(d1).dot(n) / nn, 0.0, 1.0), t = std::clamp(w.cross(d0).dot(n) / nn, 0.0, 1.0);\n    {\n      consider(s, t, point_at(first, s), point_at(second, t));\n      if (nn > 0) return best;")
 
 # Step 1: the textbook denominator a c - b^2, which cancels for nearly parallel segments
-# (caught by the family of segments crossing at an angle of 2^-20 to 2^-26).
+# (caught by the family of segments crossing at an angle of 2^-20 to 2^-27).
 labkit_mutant(05 sphere_sweeps NAME textbook_denominator STEP 1 SAYS "nearly parallel" "|d0 x d1|^2"
   FIND "const double nn = n.squaredNorm();\n  if (nn > 0) {"
   REPLACE "const double nn = d0.squaredNorm() * d1.squaredNorm() - square(d0.dot(d1));\n  if (nn > 0) {")

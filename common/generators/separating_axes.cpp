@@ -424,13 +424,32 @@ TrianglePair far_triangles(TrianglePair p) {
 
 // ---- Moving boxes ----------------------------------------------------------------------
 
+// Two boxes flat across the same axis A_k (half extent 0 along it), overlapping in one
+// plane at time t*, and moving across that plane: they touch for a single instant, where
+// the enter time of one axis equals the leave time of another (and rounding may put the
+// two in either order).
+BoxPair flat_crossing(Grid g, Vec3* across) {
+  Box a = grid_box(g), b = grid_box(g);
+  b.axes = a.axes;
+  const int k = *rc::gen::inRange(0, 3);
+  a.half_extents[k] = 0;
+  b.half_extents[k] = 0;
+  b.center = a.center;
+  for (int m = 0; m < 3; ++m)
+    if (m != k) b.center += (*rc::gen::inRange(-7, 8) / 8.0) * (a.half_extents[m] + b.half_extents[m]) * a.axes.col(m);
+  *across = a.axes.col(k);
+  return {a, b};
+}
+
 // A pair in contact (or a gap apart) at time t* = duration k / 8, moved back along
 // lattice velocities: head on, at an angle, grazing (W perpendicular to the contact
-// axis), or not moving relative to each other.
+// axis), not moving relative to each other, or flat boxes crossing for an instant.
 MovingBoxes moving(bool exact) {
   Grid g = *grid(exact);
   g.touching = true;
-  BoxPair at_contact = pair_of(g);
+  const bool flat = *rc::gen::inRange(0, 8) == 0;
+  Vec3 across = Vec3::Zero();
+  BoxPair at_contact = flat ? flat_crossing(g, &across) : pair_of(g);
   const double duration = *rc::gen::weightedElement<double>({{8, 1.0}, {2, 2.0}, {2, 0.5}, {1, 0.0}});
   const double meet = duration * *rc::gen::inRange(-4, 13) / 8.0;
   const double size = std::max({at_contact.a.half_extents.maxCoeff(), at_contact.b.half_extents.maxCoeff(), g.s});
@@ -438,7 +457,7 @@ MovingBoxes moving(bool exact) {
   const double unit = exact ? 8 * g.s : std::ldexp(1.0, std::ilogb(size));
   const Vec3 va = *rc::gen::weightedElement<int>({{2, 0}, {1, 1}}) ? Vec3(*lattice_point(unit, 8)) : Vec3::Zero();
   Vec3 w;
-  switch (*rc::gen::inRange(0, 4)) {
+  switch (flat ? 4 : *rc::gen::inRange(0, 4)) {
     case 0:  // at any angle
       w = *direction(unit, 8);
       break;
@@ -453,8 +472,12 @@ MovingBoxes moving(bool exact) {
       w = (*integer(8) + 0.5) * unit * owner->axes.col(*rc::gen::inRange(0, 3));
       break;
     }
-    default:  // moving together
+    case 3:  // moving together
       w = Vec3::Zero();
+      break;
+    default:  // across the flat boxes' common plane, maybe sliding along it too
+      w = *rc::gen::element(-1.0, 1.0) * *rc::gen::inRange(1, 9) * unit * across;
+      if (*rc::gen::inRange(0, 2) == 0) w += *direction(unit, 2);
   }
   MovingBoxes m;
   m.a = at_contact.a;

@@ -35,7 +35,7 @@ namespace labkit::check {
 // Everything a run can be told, read once from the environment (the runner sets them):
 //   LABKIT_SEED    seed of the random cases (default: the public seed 1); any text
 //   LABKIT_SEED_FILE  graded runs: a file holding the seed, deleted once read
-//   LABKIT_CASES   random cases per query (default 10000)
+//   LABKIT_CASES   random cases per query (default 1000)
 //   LABKIT_REPLAY  a replay token: run that one case and nothing else
 //   LABKIT_REPORT  where to write the JSON report
 //   LABKIT_HIDE_SEED=1  graded runs: reports never show the seed, and the seed is wiped
@@ -46,7 +46,7 @@ namespace labkit::check {
 //                       the first failure is still shrunk and reported
 struct Settings {
   std::uint64_t seed = 1;
-  int cases = 10000;
+  int cases = 1000;
   std::string replay;
   std::string report;
   bool hide_seed = false;
