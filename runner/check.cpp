@@ -144,7 +144,8 @@ namespace {
 
 // A build's progress on stderr, from Ninja's "[12/135] Building CXX object ..." lines:
 // how far it is, for how long, and what it is building. On a terminal one line is
-// rewritten in place and cleared at the end; in a log, a line every 15 seconds.
+// rewritten in place and cleared at the end; in a log, a line every 15 seconds
+// (none for a build shorter than that).
 class BuildProgress {
  public:
   BuildProgress() : terminal_(isatty(2) != 0), start_(std::chrono::steady_clock::now()) {}
@@ -160,7 +161,7 @@ class BuildProgress {
  private:
   void line(const std::string& text) {
     // "[N/M] Building CXX object common/CMakeFiles/labkit_oracle.dir/oracle/boxes.cpp.o"
-    if (text.size() < 5 || text[0] != '[') return;
+    if (text.size() < 5 || text[0] != '[' || text.find("Re-checking globbed") != std::string::npos) return;
     const std::size_t close = text.find("] ");
     if (close == std::string::npos) return;
     std::string what = text.substr(close + 2);
@@ -173,7 +174,7 @@ class BuildProgress {
     if (what.size() > 2 && what.compare(what.size() - 2, 2, ".o") == 0) what.resize(what.size() - 2);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    if (!terminal_ && shown_ && seconds < last_ + 15) return;
+    if (!terminal_ && seconds < last_ + 15) return;
     last_ = seconds;
     shown_ = true;
     std::ostringstream out;
