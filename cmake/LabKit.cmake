@@ -36,6 +36,18 @@ function(labkit_kit_code target)
   endif()
 endfunction()
 
+# labkit_student_code(target): a student's file, recompiled at every save. Line tables
+# (-g1) are enough for a crash's backtrace with file and line (`./labkit check --debug`)
+# and save about a second per save on an Eigen-heavy file; for a debugger that shows
+# local variables, configure with -DLABKIT_FULL_DEBUG_INFO=ON (only the students' files
+# are rebuilt).
+option(LABKIT_FULL_DEBUG_INFO "Full debug information (-g) for the students' files" OFF)
+function(labkit_student_code target)
+  if(CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo" AND NOT LABKIT_FULL_DEBUG_INFO)
+    target_compile_options(${target} PRIVATE -g1)
+  endif()
+endfunction()
+
 function(labkit_add_lab number name)
   set(stem ${number}_${name})
   set(lab lab${number})
@@ -45,6 +57,7 @@ function(labkit_add_lab number name)
   target_include_directories(${lab}_student PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
   target_link_libraries(${lab}_student PUBLIC labkit_geometry labkit_given)
   target_precompile_headers(${lab}_student REUSE_FROM labkit_geometry)
+  labkit_student_code(${lab}_student)
 
   set(implementations student)
   if(EXISTS "${PROJECT_SOURCE_DIR}/solutions/${stem}")
@@ -53,6 +66,7 @@ function(labkit_add_lab number name)
     target_include_directories(${lab}_reference PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
     target_link_libraries(${lab}_reference PUBLIC labkit_geometry labkit_given)
     target_precompile_headers(${lab}_reference REUSE_FROM labkit_geometry)
+    labkit_kit_code(${lab}_reference)
     list(APPEND implementations reference)
   endif()
 
@@ -74,6 +88,7 @@ function(labkit_add_lab number name)
   target_compile_definitions(${lab}_answerer_main PRIVATE ${wire_definitions})
   target_include_directories(${lab}_answerer_main PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_answerer_main PUBLIC labkit_protocol)
+  labkit_kit_code(${lab}_answerer_main)
 
   add_executable(test_${stem} "${PROJECT_SOURCE_DIR}/tests/${stem}.test.cpp")
   target_link_libraries(test_${stem} PRIVATE ${lab}_judge ${lab}_calls labkit_catch_main)
@@ -194,6 +209,7 @@ function(labkit_mutant number name)
   target_link_libraries(${library} PUBLIC labkit_geometry labkit_given)
   target_precompile_headers(${library} REUSE_FROM labkit_geometry)
   target_compile_options(${library} PRIVATE -w)  # a mistake may well leave a variable unused
+  labkit_kit_code(${library})
   set_target_properties(${library} PROPERTIES EXCLUDE_FROM_ALL FALSE)
   labkit_add_answerer(${number} ${name} mutant_${M_NAME} ${library})
   # Its steps run in order as a student's would (runner/mutant.h): the ones before STEP
