@@ -172,7 +172,31 @@ int main(int argc, char** argv) {
         if (r.implementation == peer) other = &r;
       }
     std::string measured = "not measured", met = "-";
-    if (ref && other && other->items_per_second > 0) {
+    if (t.contains("counter")) {  // a counter of the reference's row: at most this much
+      const std::string key = t.value("counter", "");
+      if (ref && ref->counters.contains(key)) {
+        const double value = ref->counters[key].get<double>();
+        measured = number(value) + " " + key;
+        met = value <= t.value("at_most", 0.0) ? "yes" : "**no**";
+      }
+    } else if (t.contains("exponent_at_most")) {  // the reference's time per item, size^k from the extremes
+      const Variants& variants = groups.count(group) ? groups[group] : Variants{};
+      const Row* r0 = nullptr;
+      const Row* r1 = nullptr;
+      if (variants.size() >= 2 && is_number(variants.front().first) && is_number(variants.back().first)) {
+        for (const Row& r : variants.front().second)
+          if (r.implementation == "reference") r0 = &r;
+        for (const Row& r : variants.back().second)
+          if (r.implementation == "reference") r1 = &r;
+      }
+      if (r0 && r1 && r0->nanoseconds_per_item > 0 && r1->nanoseconds_per_item > 0) {
+        const double k = std::log(r1->nanoseconds_per_item / r0->nanoseconds_per_item) /
+                         std::log(std::stod(variants.back().first) / std::stod(variants.front().first));
+        measured = "time per item grows as size^" + number(k, 2) + " (" + variants.front().first + " to " +
+                   variants.back().first + ")";
+        met = k <= t.value("exponent_at_most", 0.0) ? "yes" : "**no**";
+      }
+    } else if (ref && other && other->items_per_second > 0) {
       const double ratio = ref->items_per_second / other->items_per_second;
       const double disagree = ref->counters.value("disagree", 0.0);
       measured = number(ratio) + "x" + (ref->counters.contains("disagree") ? ", " + number(disagree) + " disagreements" : "");

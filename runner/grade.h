@@ -20,9 +20,11 @@
 
 namespace runner {
 
-// Random cases per query when grading. Students' checks run 10,000 per query on the
-// public seed; grading draws fewer from the secret seed, enough for every generator
-// family to come up hundreds of times, so that a class grades in minutes.
+// Random cases per query when grading. Students' checks run 1,000 per query on the
+// public seed (enough to catch every classic mistake of tests/*.mutants.cmake, and
+// quick after each save); grading draws three times as many from the secret seed, so
+// that every generator family comes up hundreds of times, and a class still grades in
+// minutes. A student rehearses it with ./labkit check --cases 3000 --seed anything.
 constexpr int kGradingCases = 3000;
 
 struct GradeOptions {

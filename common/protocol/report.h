@@ -17,7 +17,7 @@ namespace labkit::report {
 
 // The first failing case of a query, as the student reads it.
 struct Failure {
-  std::string title;     // "random case 6 of 10000", "example \"through the middle\""
+  std::string title;     // "random case 6 of 1000", "example \"through the middle\""
   std::string input;     // the input, described
   std::string expected;  // the exact answer
   std::string got;       // the answer under test
@@ -63,7 +63,7 @@ nlohmann::json to_json(const Step& step);
 Step step_from_json(const nlohmann::json& json);
 
 // A failure as a person reads it, one field a line, each under a label column:
-//   query     segment_plane, random case 6 of 10000 (shrunk 3 times)
+//   query     segment_plane, random case 6 of 1000 (shrunk 3 times)
 //   input     ...
 // `indent` starts each line; continuation lines line up under the values.
 std::string format(const Failure& f, const std::string& query, const std::string& indent);

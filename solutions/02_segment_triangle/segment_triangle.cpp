@@ -69,9 +69,12 @@ void require_rigid(const char* query, const char* name, const RigidTransform& m)
 // plain crossing becomes a miss. Multiplying every input point by 2^-k, with 2^k near
 // the largest coordinate, is exact (only exponents change), keeps every product near 1,
 // and changes no sign, no t and no weight; lengths are multiplied back by 2^k.
+// (Multiplying by the power of two 2^-k rounds exactly as ldexp does, and costs one
+// product instead of a library call per coordinate: this runs on every pair tested.)
 struct Scale {
   int k = 0;
-  Vec3 in(const Vec3& p) const { return {std::ldexp(p.x(), -k), std::ldexp(p.y(), -k), std::ldexp(p.z(), -k)}; }
+  double factor = 1.0;  // 2^-k
+  Vec3 in(const Vec3& p) const { return p * factor; }
   double out(double length) const { return std::ldexp(length, k); }
   Segment in(const Segment& s) const { return {in(s.a), in(s.b)}; }
   Triangle in(const Triangle& t) const { return {in(t.v0), in(t.v1), in(t.v2)}; }
@@ -82,6 +85,8 @@ Scale scale_of(std::initializer_list<Vec3> points) {
   for (const Vec3& p : points) largest = std::max(largest, p.cwiseAbs().maxCoeff());
   Scale s;
   if (largest > 0) std::frexp(largest, &s.k);
+  s.k = std::clamp(s.k, -1000, 1000);  // 2^-k stays a normal double: the largest point still lands near 1
+  s.factor = std::ldexp(1.0, -s.k);
   return s;
 }
 Scale scale_of(const Segment& s, const Triangle& t) { return scale_of({s.a, s.b, t.v0, t.v1, t.v2}); }
