@@ -96,6 +96,11 @@ KdTree tree_of(const Mesh& mesh, const Aabb& bounds, std::vector<KdNode> nodes, 
 
 // Step 1: the tree is well formed and every leaf lists every triangle meeting its cell.
 Outcome kd_tree(const Mesh& mesh, const KdTree& got);
+// The first hit by brute force: given::segment_triangle on every triangle whose box meets
+// the segment's (the others cannot be hit), lowest t first (ties: the lower index). The
+// efficiency step's yardstick; `boxes` is triangle_boxes(triangles).
+std::vector<Aabb> triangle_boxes(const std::vector<Triangle>& triangles);
+KdHit brute_first_hit(const std::vector<Triangle>& triangles, const std::vector<Aabb>& boxes, const Segment& segment);
 
 // Step 2. `calls`: how many times given::segment_triangle ran during the query.
 Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls, Rules rules = Rules::random);

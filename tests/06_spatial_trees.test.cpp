@@ -551,14 +551,8 @@ Outcome run_efficiency(const EfficiencyCase& in) {
   const KdTree tree = build_kd_tree(mesh);
   const Outcome valid = judge::kd_tree(mesh, tree);
   if (valid.verdict == Outcome::Verdict::fail) return valid;
-  const auto brute_first = [&](const Segment& s) {
-    KdHit best;
-    for (std::size_t i = 0; i < mesh.size(); ++i) {
-      const given::SegmentHit h = given::segment_triangle(s, tree.triangles[i]);
-      if (h.hit && (!best.hit || h.t < best.t)) best = {true, int(i), h.t, h.point, h.barycentric, 0};
-    }
-    return best;
-  };
+  const std::vector<Aabb> boxes = judge::triangle_boxes(tree.triangles);
+  const auto brute_first = [&](const Segment& s) { return judge::brute_first_hit(tree.triangles, boxes, s); };
   const std::string name = std::string(gen::name_of(kind)) + " of " + std::to_string(mesh.size()) + " triangles";
   Tally short_first, short_any, long_first, long_all;
   for (bool short_ones : {true, false}) {

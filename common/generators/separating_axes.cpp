@@ -154,12 +154,14 @@ Vec3 extreme_toward(const Box& box, const Vec3& n, int free_axis = -1) {
 }
 
 // B against a face of A (or A against a face of B), shifted sideways within the face.
-BoxPair face_contact(Grid g) {
+// `along_face`, when asked for: another axis of the face's owner, so along that face.
+BoxPair face_contact(Grid g, Vec3* along_face = nullptr) {
   Box a = grid_box(g), b = grid_box(g);
   b.axes = related_axes(a.axes, g.exact);
   const bool on_b = *rc::gen::inRange(0, 3) == 0;
   const Box& owner = on_b ? b : a;
   const int k = *rc::gen::inRange(0, 3);
+  if (along_face) *along_face = owner.axes.col((k + *rc::gen::inRange(1, 3)) % 3);
   Vec3 n = (*rc::gen::element(-1.0, 1.0)) * owner.axes.col(k);
   const double size = std::max(a.half_extents.maxCoeff(), b.half_extents.maxCoeff()) + g.s;
   const double along = radius_along(a, n) + radius_along(b, n) + gap(g, size, reach(a, size));
@@ -442,14 +444,25 @@ BoxPair flat_crossing(Grid g, Vec3* across) {
 }
 
 // A pair in contact (or a gap apart) at time t* = duration k / 8, moved back along
-// lattice velocities: head on, at an angle, grazing (W perpendicular to the contact
-// axis), not moving relative to each other, or flat boxes crossing for an instant.
+// lattice velocities: head on, at an angle, grazing (W perpendicular to one box's axis),
+// not moving relative to each other, flat boxes crossing for an instant, or sliding
+// along a face or a shared axis: then W . L on the other axes is zero in exact arithmetic
+// but rounding noise in doubles, and times computed from it are noise too.
 MovingBoxes moving(bool exact) {
   Grid g = *grid(exact);
   g.touching = true;
-  const bool flat = *rc::gen::inRange(0, 8) == 0;
-  Vec3 across = Vec3::Zero();
-  BoxPair at_contact = flat ? flat_crossing(g, &across) : pair_of(g);
+  const int kind = *rc::gen::weightedElement<int>({{6, 0}, {1, 1}, {1, 2}, {1, 3}});
+  const bool flat = kind == 1, sliding = kind >= 2;
+  Vec3 across = Vec3::Zero(), along = Vec3::Zero();
+  BoxPair at_contact = flat ? flat_crossing(g, &across) : kind == 2 ? face_contact(g, &along) : pair_of(g);
+  if (kind == 3) {  // the same axes, B beside or across A, sliding along one of them
+    at_contact.b.axes = at_contact.a.axes;
+    at_contact.b.center = at_contact.a.center;
+    for (int m = 0; m < 3; ++m)
+      at_contact.b.center += (*rc::gen::inRange(-8, 9) / 8.0) *
+                             (at_contact.a.half_extents[m] + at_contact.b.half_extents[m]) * at_contact.a.axes.col(m);
+    along = at_contact.a.axes.col(*rc::gen::inRange(0, 3));
+  }
   const double duration = *rc::gen::weightedElement<double>({{8, 1.0}, {2, 2.0}, {2, 0.5}, {1, 0.0}});
   const double meet = duration * *rc::gen::inRange(-4, 13) / 8.0;
   const double size = std::max({at_contact.a.half_extents.maxCoeff(), at_contact.b.half_extents.maxCoeff(), g.s});
@@ -457,7 +470,7 @@ MovingBoxes moving(bool exact) {
   const double unit = exact ? 8 * g.s : std::ldexp(1.0, std::ilogb(size));
   const Vec3 va = *rc::gen::weightedElement<int>({{2, 0}, {1, 1}}) ? Vec3(*lattice_point(unit, 8)) : Vec3::Zero();
   Vec3 w;
-  switch (flat ? 4 : *rc::gen::inRange(0, 4)) {
+  switch (flat ? 4 : sliding ? 5 : *rc::gen::inRange(0, 4)) {
     case 0:  // at any angle
       w = *direction(unit, 8);
       break;
@@ -475,9 +488,12 @@ MovingBoxes moving(bool exact) {
     case 3:  // moving together
       w = Vec3::Zero();
       break;
-    default:  // across the flat boxes' common plane, maybe sliding along it too
+    case 4:  // across the flat boxes' common plane, maybe sliding along it too
       w = *rc::gen::element(-1.0, 1.0) * *rc::gen::inRange(1, 9) * unit * across;
       if (*rc::gen::inRange(0, 2) == 0) w += *direction(unit, 2);
+      break;
+    default:  // sliding along a face, or along a shared axis
+      w = (*integer(8) + 0.5) * unit * along;
   }
   MovingBoxes m;
   m.a = at_contact.a;
