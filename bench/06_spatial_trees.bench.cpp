@@ -348,7 +348,7 @@ struct Spheres {
   // Frame f: every centre moved f steps along its velocity.
   void frame(int f, std::vector<Sphere>& out) const {
     out = start;
-    for (std::size_t i = 0; i < out.size(); ++i) out[i].center += f * velocity[i];
+    for (std::size_t i = 0; i < out.size(); ++i) out[i].center += double(f) * velocity[i];
   }
   std::vector<Sphere> start;
   std::vector<Vec3> velocity;
