@@ -767,6 +767,7 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
         open.push_back(e.sphere);
       }
     }
+    std::sort(overlapping.begin(), overlapping.end());  // kept sorted from now on (below)
   }
   // Insertion sort. Each swap of a low end left past a high end makes their intervals
   // overlap (+1); a high end left past a low end parts them (-1). The changes are noted
@@ -785,30 +786,38 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
   // A sphere that jumped clear over another in one frame makes both changes to the pair:
   // what counts is their sum.
   std::sort(changes.begin(), changes.end());
-  std::vector<std::array<int, 2>> gone_pairs;   // sorted
-  std::vector<char> loses_a_pair(spheres.size(), 0);  // by the pair's lower index: most pairs skip the search
+  std::vector<std::array<int, 2>> added, gone_pairs;  // both sorted
   for (std::size_t k = 0; k < changes.size();) {
     std::size_t next = k;
     int sum = 0;
     for (; next < changes.size() && changes[next].first == changes[k].first; ++next) sum += changes[next].second;
-    if (sum > 0) overlapping.push_back(changes[k].first);
-    if (sum < 0) gone_pairs.push_back(changes[k].first), loses_a_pair[std::size_t(changes[k].first[0])] = 1;
+    if (sum > 0) added.push_back(changes[k].first);
+    if (sum < 0) gone_pairs.push_back(changes[k].first);
     k = next;
   }
-  // One pass over the set: drop the pairs that stopped overlapping on x, and give the
-  // others (only those) the full test.
-  std::size_t kept = 0;
-  for (const std::array<int, 2>& p : overlapping) {
-    const bool gone = loses_a_pair[std::size_t(p[0])] && std::binary_search(gone_pairs.begin(), gone_pairs.end(), p);
-    if (gone) continue;  // its intervals no longer overlap on x: out of the set
-    overlapping[kept++] = p;
+  const auto test = [&](const std::array<int, 2>& p) {
     const Sphere& a = spheres[std::size_t(p[0])];
     const Sphere& b = spheres[std::size_t(p[1])];
     ++out.tests;
     const double reach = a.radius + b.radius;
     if ((a.center - b.center).squaredNorm() <= reach * reach) out.pairs.push_back(p);
+  };
+  // The set is kept sorted, so one pass merged with the sorted list of pairs that
+  // stopped overlapping on x drops them, and gives the others (only those) the full test.
+  std::size_t kept = 0, g = 0;
+  for (std::size_t k = 0; k < overlapping.size(); ++k) {
+    const std::array<int, 2> p = overlapping[k];
+    while (g < gone_pairs.size() && gone_pairs[g] < p) ++g;
+    const bool gone = g < gone_pairs.size() && gone_pairs[g] == p;
+    if (gone) continue;  // its intervals no longer overlap on x: out of the set
+    overlapping[kept++] = p;
+    test(p);
   }
-  overlapping.resize(kept);
+  // The new pairs: tested, then merged in from the back end (no second copy of the set).
+  for (const std::array<int, 2>& p : added) test(p);
+  std::size_t from = kept, next = added.size(), to = kept + added.size();
+  overlapping.resize(to);
+  while (next > 0) overlapping[--to] = from > 0 && overlapping[from - 1] > added[next - 1] ? overlapping[--from] : added[--next];
   std::sort(out.pairs.begin(), out.pairs.end());
   return out;
 }
