@@ -19,7 +19,10 @@
 // outside for points, against CGAL's Side_of_triangle_mesh.
 //
 // broad_phase/IMPL/SIZE: overlapping pairs among SIZE moving spheres, as dense as the
-// lab's 2,000 in a cube of side 100; items are the n (n - 1) / 2 pairs a frame covers.
+// lab's 2,000 in a cube of side 100, over a run of 100 frames of motion (so that a
+// structure kept from frame to frame pays off): the reference is lab 06's SweepAndPrune
+// (step 6), nanoflann a k-d tree rebuilt every frame. Items are the n (n - 1) / 2 pairs
+// each frame covers.
 #include "inputs.h"
 #include "common/generators/meshes.h"
 
@@ -329,22 +332,26 @@ void first_hit_brute_force(benchmark::State& state) {
 
 // ---- Broad phase ------------------------------------------------------------------------------
 
-constexpr int kFrames = 4;
+constexpr int kFrames = 100;  // one run of motion: what an iteration of broad_phase times
 constexpr int kBruteSubset = 10000;  // brute force at 100k: all pairs among the first 10,000
 
-// Frames of moving spheres: spread_spheres at the lab's density, then each centre moves
-// by its own velocity (up to 1 per axis per frame).
+// Spheres in motion: spread_spheres at the lab's density, each moving at its own constant
+// velocity of up to 1 per axis per second, 60 frames a second (so up to 1/60 per axis per
+// frame, a small fraction of a radius: the frame-to-frame coherence of a simulation).
 struct Spheres {
   explicit Spheres(int n) {
     const double side = 100 * std::cbrt(n / 2000.0);
-    const std::vector<Sphere> start = gen::spread_spheres(n, side, 0.25, 1.0, 7000 + n);
+    start = gen::spread_spheres(n, side, 0.25, 1.0, 7000 + n);
     const std::vector<Sphere> pace = gen::spread_spheres(n, 2.0, 0.0, 0.0, 8000 + n);
-    for (int f = 0; f < kFrames; ++f) {
-      frames.push_back(start);
-      for (int i = 0; i < n; ++i) frames[f][i].center += f * (pace[i].center - Vec3(1, 1, 1));
-    }
+    for (int i = 0; i < n; ++i) velocity.push_back((pace[i].center - Vec3(1, 1, 1)) / 60);
   }
-  std::vector<std::vector<Sphere>> frames;
+  // Frame f: every centre moved f steps along its velocity.
+  void frame(int f, std::vector<Sphere>& out) const {
+    out = start;
+    for (std::size_t i = 0; i < out.size(); ++i) out[i].center += double(f) * velocity[i];
+  }
+  std::vector<Sphere> start;
+  std::vector<Vec3> velocity;
 };
 
 const Spheres& spheres(int n) {
@@ -363,7 +370,7 @@ std::set<std::array<int, 2>> brute_pairs(const std::vector<Sphere>& s, int m) {
 }
 
 // Pairs that `got` and brute force disagree on, over the pairs brute force tests on
-// frame 0 (all of them, or those among the subset).
+// `frame` (all of them, or those among the subset).
 int disagreements(const std::vector<std::array<int, 2>>& got, const std::vector<Sphere>& frame, int n) {
   const int m = std::min(n, kBruteSubset);
   const std::set<std::array<int, 2>> exact = brute_pairs(frame, m);
@@ -376,17 +383,27 @@ int disagreements(const std::vector<std::array<int, 2>>& got, const std::vector<
   return differ;
 }
 
+// The reference: lab 06's SweepAndPrune (step 6), one object for the whole run, so that
+// every frame after the first re-sorts the kept list by insertion and updates the kept
+// pairs. Each iteration is a fresh run of kFrames frames (its first frame sorts from scratch).
 void broad_phase_reference(benchmark::State& state) {
   const int n = int(state.range(0));
   const Spheres& in = spheres(n);
+  std::vector<Sphere> current;
   long long tests = 0, frames = 0;
+  std::vector<std::array<int, 2>> last;
   for (auto _ : state) {
-    const lab06::SpherePairs p = lab06::overlapping_pairs(in.frames[frames % kFrames]);
-    tests += p.tests, ++frames;
-    benchmark::DoNotOptimize(p.pairs.data());
+    lab06::SweepAndPrune sweep;
+    for (int f = 0; f < kFrames; ++f) {
+      in.frame(f, current);
+      lab06::SweepFrame p = sweep.update(current);
+      tests += p.tests, ++frames;
+      if (f == kFrames - 1) last = std::move(p.pairs);
+    }
   }
-  state.SetItemsProcessed(state.iterations() * (int64_t(n) * (n - 1) / 2));
-  state.counters["disagree"] = disagreements(lab06::overlapping_pairs(in.frames[0]).pairs, in.frames[0], n);
+  state.SetItemsProcessed(state.iterations() * kFrames * (int64_t(n) * (n - 1) / 2));
+  in.frame(kFrames - 1, current);
+  state.counters["disagree"] = disagreements(last, current, n);  // on the run's last frame
   state.counters["tests_per_query"] = double(tests) / double(frames);  // sphere tests per frame
 }
 
@@ -427,26 +444,33 @@ std::vector<std::array<int, 2>> nanoflann_pairs(const std::vector<Sphere>& s, lo
 void broad_phase_nanoflann(benchmark::State& state) {
   const int n = int(state.range(0));
   const Spheres& in = spheres(n);
+  std::vector<Sphere> current;
   long long tests = 0, frames = 0;
-  for (auto _ : state) {
-    const std::vector<std::array<int, 2>> pairs = nanoflann_pairs(in.frames[frames++ % kFrames], tests);
-    benchmark::DoNotOptimize(pairs.data());
-  }
-  state.SetItemsProcessed(state.iterations() * (int64_t(n) * (n - 1) / 2));
-  long long unused = 0;
-  state.counters["disagree"] = disagreements(nanoflann_pairs(in.frames[0], unused), in.frames[0], n);
+  std::vector<std::array<int, 2>> last;
+  for (auto _ : state)
+    for (int f = 0; f < kFrames; ++f) {
+      in.frame(f, current);
+      std::vector<std::array<int, 2>> pairs = nanoflann_pairs(current, tests);
+      ++frames;
+      if (f == kFrames - 1) last = std::move(pairs);
+    }
+  state.SetItemsProcessed(state.iterations() * kFrames * (int64_t(n) * (n - 1) / 2));
+  in.frame(kFrames - 1, current);
+  state.counters["disagree"] = disagreements(last, current, n);
   state.counters["tests_per_query"] = double(tests) / double(frames);  // candidates per frame
 }
 #endif
 
-// At 100k (5e9 pairs a frame), brute force covers the first kBruteSubset spheres: its
+// One frame per iteration (brute force over kFrames frames would take minutes). At 100k
+// (5e9 pairs a frame), brute force covers the first kBruteSubset spheres: its
 // items are the pairs it tested, so its pairs per second stand for the whole frame's.
 void broad_phase_brute_force(benchmark::State& state) {
   const int n = int(state.range(0)), m = std::min(n, kBruteSubset);
   const Spheres& in = spheres(n);
+  std::vector<Sphere> s;
   long long frames = 0, found = 0;
   for (auto _ : state) {
-    const std::vector<Sphere>& s = in.frames[frames++ % kFrames];
+    in.frame(int(frames++ % kFrames), s);
     for (int i = 0; i < m; ++i)
       for (int j = i + 1; j < m; ++j) found += (s[i].center - s[j].center).norm() <= s[i].radius + s[j].radius;
   }

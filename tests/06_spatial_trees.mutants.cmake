@@ -4,8 +4,8 @@
 # Step 1: a triangle that only touches the split plane from above is sent above only,
 # though it meets the closed cell below at the plane.
 labkit_mutant(06 spatial_trees NAME touching_goes_one_side STEP 1 SAYS "closed cell" "both sides"
-  FIND "if (boxes_[std::size_t(i)].min[split.axis] <= split.position) below.push_back(i);"
-  REPLACE "if (boxes_[std::size_t(i)].min[split.axis] < split.position) below.push_back(i);")
+  FIND "if (box.min[axis] <= split.position) refs_[below_last++] = i;"
+  REPLACE "if (box.min[axis] < split.position) refs_[below_last++] = i;")
 
 # Step 2: first_hit stops in the first leaf that has any hit, even one beyond the leaf's
 # far end (a later leaf may hold a nearer one).
@@ -60,8 +60,8 @@ labkit_mutant(06 spatial_trees NAME sweep_ties_strict STEP 6 SAYS "touching coun
 # Step 6: a pair is added when a low end passes a high end but never removed when the
 # high end passes back: pairs apart on x stay in the set and are tested every frame.
 labkit_mutant(06 spatial_trees NAME sweep_pairs_never_removed STEP 6 SAYS "overlap on x" "swap"
-  FIND "overlapping.erase(std::find(overlapping.begin(), overlapping.end(), pair));"
-  REPLACE "(void)0;")
+  FIND "if (gone) continue;"
+  REPLACE "(void)gone;")
 
 # Step 7: one tree descended only: a leaf of a is tested against b's node as it is, whose
 # triangles lie in leaves below it, so pairs are lost.

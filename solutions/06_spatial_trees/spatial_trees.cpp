@@ -1,6 +1,6 @@
 // Lab 06 reference: k-d tree, BSP tree, sweep and prune.
 //
-// The k-d tree is built for speed: the surface area heuristic picks each split among 32
+// The k-d tree is built for speed: the surface area heuristic picks each split among 16
 // binned candidates per axis (O(n) per level, O(n log n) in all), nodes are 16 bytes in
 // one array, depth first, so that a descent mostly reads the next node, and queries walk
 // it with a fixed stack and no allocation. The BSP tree and the sweep are written
@@ -62,13 +62,22 @@ void require_segment(const char* query, const Segment& s) {
 //
 //   traversal + test (A_below n_below + A_above n_above) / A_cell,
 //
-// against test n for keeping the cell as a leaf. The costs are in units of one
-// segment-triangle test; a split that leaves one side empty cuts away empty space, which
-// lets a query skip it at once, and gets a bonus.
-constexpr double kTraversalCost = 0.35;
+// against test n for keeping the cell as a leaf: that comparison is the only stop rule
+// (besides the depth limit), so a cell becomes a leaf exactly when splitting it no longer
+// pays. The costs are in units of one segment-triangle test. A step down the tree costs
+// less than a test in instructions, but on a large mesh each step reads a node that is
+// rarely in the cache, about as slow as a test: hence 1, not the textbook 0.3. A split
+// that leaves one side empty cuts away empty space, which lets a query skip it at once,
+// and gets a bonus.
+constexpr double kTraversalCost = 3.0;
 constexpr double kTestCost = 1.0;
 constexpr double kEmptyBonus = 0.2;
-constexpr int kBins = 32;  // candidate planes per axis: the inner walls of 32 equal bins
+// Binned SAH: the candidate planes are the inner walls of kBins equal bins per axis, not
+// every triangle's box side. Counting triangles per bin is one pass over the cell's list,
+// with no sorting, so a level of the tree costs O(n); a sort per node would make the
+// build O(n log^2 n). More bins barely improve the tree (the planes are already within
+// 1/16 of the cell of the best one) and cost a longer sweep per node.
+constexpr int kBins = 16;
 
 double surface_area(const Aabb& box) {
   const Vec3 e = box.max - box.min;
@@ -81,81 +90,104 @@ struct Split {
   double cost = kInfinity;
 };
 
+// Builds depth first, so that each node is appended where the header's layout puts it.
+// Lists live in one scratch array, refs_, used as a stack: a node's list is a range of it;
+// splitting compacts the list below in place (its front part) and appends the list above
+// at the end; the subtree below appends its own lists after that and gives the space back
+// when it is done. No allocation per node, and the scratch array stays a few times n.
 class KdBuilder {
  public:
   // The depth limit grows with the number of triangles as in pbrt (8 + 1.3 log2 n): deep
   // enough for any useful split, shallow enough that a bad case cannot run away.
-  KdBuilder(KdTree& tree, std::vector<Aabb> boxes)
-      : tree_(tree), boxes_(std::move(boxes)),
-        max_depth_(std::min(kMaxDepth, int(8 + 1.3 * std::log2(double(std::max<std::size_t>(boxes_.size(), 1)))))) {}
+  KdBuilder(KdTree& tree, std::vector<Aabb> boxes, std::vector<int> list)
+      : tree_(tree), boxes_(std::move(boxes)), refs_(std::move(list)),
+        max_depth_(std::min(kMaxDepth, int(8 + 1.3 * std::log2(double(std::max<std::size_t>(boxes_.size(), 1)))))) {
+    refs_.reserve(3 * refs_.size() + 64);
+  }
 
-  // Appends the subtree of `cell` holding `list` to the tree, depth first.
-  void build(const Aabb& cell, std::vector<int> list, int depth) {
-    const Split split = depth < max_depth_ ? best_split(cell, list) : Split{};
+  // Appends the subtree of `cell`, which holds refs_[first, last), to the tree.
+  void build(const Aabb& cell, std::size_t first, std::size_t last, int depth) {
+    const Split split = depth < max_depth_ ? best_split(cell, first, last) : Split{};
     if (split.axis < 0) {
-      add_leaf(list);
+      add_leaf(first, last);
       return;
     }
     // Closed cells: a triangle touching the plane, or lying in it, goes to both sides.
-    std::vector<int> below, above;
-    for (int i : list) {
-      if (boxes_[std::size_t(i)].min[split.axis] <= split.position) below.push_back(i);
-      if (boxes_[std::size_t(i)].max[split.axis] >= split.position) above.push_back(i);
+    // Writing below never overtakes reading (below_last <= k), so it can share the range.
+    const int axis = split.axis;
+    const std::size_t above_first = refs_.size();
+    std::size_t below_last = first;
+    for (std::size_t k = first; k < last; ++k) {
+      const int i = refs_[k];
+      const Aabb& box = boxes_[std::size_t(i)];
+      if (box.max[axis] >= split.position) refs_.push_back(i);
+      if (box.min[axis] <= split.position) refs_[below_last++] = i;
     }
-    list = {};  // no longer needed: free it before going deeper
+    const std::size_t above_last = refs_.size();
     const std::size_t self = tree_.nodes.size();
-    tree_.nodes.push_back({split.position, split.axis, 0});
+    tree_.nodes.push_back({split.position, axis, 0});
     Aabb below_cell = cell, above_cell = cell;
-    below_cell.max[split.axis] = above_cell.min[split.axis] = split.position;
-    build(below_cell, std::move(below), depth + 1);  // lands at self + 1
+    below_cell.max[axis] = above_cell.min[axis] = split.position;
+    build(below_cell, first, below_last, depth + 1);  // lands at self + 1
+    refs_.resize(above_last);                         // what the subtree below appended
     tree_.nodes[self].index = int(tree_.nodes.size());
-    build(above_cell, std::move(above), depth + 1);
+    build(above_cell, above_first, above_last, depth + 1);
   }
 
  private:
-  void add_leaf(const std::vector<int>& list) {
+  // Every empty leaf shares the list at items[0] (count 0): empty cells are many (they
+  // are what the empty-space splits cut off), and a query crossing one then reads a
+  // list that is already in the cache.
+  void add_leaf(std::size_t first, std::size_t last) {
+    if (first == last) {
+      tree_.nodes.push_back({0.0, kLeaf, 0});
+      return;
+    }
     tree_.nodes.push_back({0.0, kLeaf, int(tree_.items.size())});
-    tree_.items.push_back(int(list.size()));
-    tree_.items.insert(tree_.items.end(), list.begin(), list.end());
+    tree_.items.push_back(int(last - first));
+    tree_.items.insert(tree_.items.end(), refs_.begin() + std::ptrdiff_t(first), refs_.begin() + std::ptrdiff_t(last));
   }
 
   // The cheapest of the candidate planes, or no split when a leaf is cheaper. Each
-  // triangle's box, clipped to the cell, starts in one bin and ends in one; a sweep over
-  // the bin walls then counts the triangles on each side of every wall at once.
-  Split best_split(const Aabb& cell, const std::vector<int>& list) const {
-    const double n = double(list.size());
+  // triangle's box, clipped to the cell, starts in one bin and ends in one per axis; one
+  // pass over the list counts both for the three axes, then a sweep over the bin walls
+  // counts the triangles on each side of every wall at once.
+  Split best_split(const Aabb& cell, std::size_t first, std::size_t last) const {
+    const int n = int(last - first);
     const double area = surface_area(cell);
     Split best;
     best.cost = kTestCost * n;  // the cost of a leaf
-    if (list.size() <= 1 || !(area > 0)) return best;
-    for (int axis = 0; axis < 3; ++axis) {
-      const double lo = cell.min[axis], hi = cell.max[axis];
-      if (!(hi > lo)) continue;  // the cell is flat along this axis
-      const double bins_per_unit = kBins / (hi - lo);
-      const auto bin = [&](double x) { return std::clamp(int((x - lo) * bins_per_unit), 0, kBins - 1); };
-      int starts[kBins] = {}, ends[kBins] = {};
-      for (int i : list) {
-        const Aabb& box = boxes_[std::size_t(i)];
-        ++starts[bin(box.min[axis])];
-        ++ends[bin(box.max[axis])];
+    if (n <= 1 || !(area > 0)) return best;
+    const Vec3 lo = cell.min, extent = cell.max - cell.min;
+    double bins_per_unit[3];
+    for (int axis = 0; axis < 3; ++axis) bins_per_unit[axis] = extent[axis] > 0 ? kBins / extent[axis] : 0.0;
+    const auto bin = [&](double x, int axis) { return std::clamp(int((x - lo[axis]) * bins_per_unit[axis]), 0, kBins - 1); };
+    int starts[3][kBins] = {}, ends[3][kBins] = {};
+    for (std::size_t k = first; k < last; ++k) {
+      const Aabb& box = boxes_[std::size_t(refs_[k])];
+      for (int axis = 0; axis < 3; ++axis) {
+        ++starts[axis][bin(box.min[axis], axis)];
+        ++ends[axis][bin(box.max[axis], axis)];
       }
+    }
+    for (int axis = 0; axis < 3; ++axis) {
+      if (!(extent[axis] > 0)) continue;  // the cell is flat along this axis
       // Wall k lies between bins k - 1 and k. Below it: the triangles starting in a bin
       // before it; above it: those ending in a bin after it.
-      int below = 0, above = int(list.size());
-      const Vec3 extent = cell.max - cell.min;
+      int below = 0, above = n;
       const double across = extent[(axis + 1) % 3] * extent[(axis + 2) % 3];  // one face of the cut
       const double around = extent[(axis + 1) % 3] + extent[(axis + 2) % 3];
       for (int k = 1; k < kBins; ++k) {
-        below += starts[k - 1];
-        above -= ends[k - 1];
-        const double position = lo + (hi - lo) * k / kBins;
-        const double area_below = 2 * (across + (position - lo) * around);
-        const double area_above = 2 * (across + (hi - position) * around);
+        below += starts[axis][k - 1];
+        above -= ends[axis][k - 1];
+        const double position = lo[axis] + extent[axis] * k / kBins;
+        const double area_below = 2 * (across + (position - lo[axis]) * around);
+        const double area_above = 2 * (across + (cell.max[axis] - position) * around);
         // Progress: both sides hold fewer triangles, or one side is empty space. (A cut
         // that keeps them all on one side and some on the other could be repeated on
         // ever thinner slabs.)
         const bool empty_side = below == 0 || above == 0;
-        if (!empty_side && (below == int(list.size()) || above == int(list.size()))) continue;
+        if (!empty_side && (below == n || above == n)) continue;
         const double bonus = empty_side ? 1 - kEmptyBonus : 1.0;
         const double cost = kTraversalCost + kTestCost * bonus * (area_below * below + area_above * above) / area;
         if (cost < best.cost) best = {axis, position, cost};
@@ -166,6 +198,7 @@ class KdBuilder {
 
   KdTree& tree_;
   std::vector<Aabb> boxes_;  // each triangle's bounding box
+  std::vector<int> refs_;    // the lists of the nodes being built (see above)
   int max_depth_;
 };
 
@@ -215,6 +248,9 @@ void front_to_back(const KdTree& tree, const Segment& s, Leaf&& leaf) {
   for (;;) {
     const KdNode& n = tree.nodes[std::size_t(node)];
     if (n.axis != kLeaf) {
+      // The child below is the next node, most likely in the same cache line; the child
+      // above is far away in the array. Ask for it now, while deciding where to go.
+      __builtin_prefetch(&tree.nodes[std::size_t(n.index)]);
       const int axis = n.axis;
       // The near child is on a's side; from the plane itself, on the side d leaves to.
       const bool below_first = s.a[axis] < n.split || (s.a[axis] == n.split && d[axis] <= 0);
@@ -244,11 +280,23 @@ void front_to_back(const KdTree& tree, const Segment& s, Leaf&& leaf) {
   }
 }
 
+// A leaf's triangles lie scattered over the triangle array, and on a large mesh each is a
+// cache miss (72 bytes: two lines). Asking for all of them before testing the first lets
+// the memory fetch them at once instead of one after the other.
+void prefetch_triangles(const KdTree& tree, const int* list) {
+  for (int k = 1; k <= list[0]; ++k) {
+    const char* t = reinterpret_cast<const char*>(&tree.triangles[std::size_t(list[k])]);
+    __builtin_prefetch(t);
+    __builtin_prefetch(t + sizeof(Triangle) - 1);
+  }
+}
+
 // One leaf's triangles: calls test(triangle index) for each.
 template <class Test>
 void for_each_listed(const KdTree& tree, const KdNode& leaf, Test&& test) {
   const int* list = &tree.items[std::size_t(leaf.index)];
   const int count = list[0];
+  prefetch_triangles(tree, list);
   for (int k = 1; k <= count; ++k) test(list[k]);
 }
 
@@ -368,9 +416,9 @@ bool in_closed_triangle(const Triangle& t, const Vec3& x) {
 
 // ---- Step 1 ------------------------------------------------------------------------------------
 
-// Split rule: the surface area heuristic over 32 binned candidate planes per axis (see
-// KdBuilder). A cell becomes a leaf when no split is expected to be cheaper, when it
-// holds one triangle, or at depth 8 + 1.3 log2 n (n triangles).
+// Split rule: the binned surface area heuristic (see KdBuilder). A cell becomes a leaf
+// when no split is expected to be cheaper, when it holds one triangle, or at depth
+// 8 + 1.3 log2 n (n triangles).
 KdTree build_kd_tree(const Mesh& mesh) {
   require_mesh("build_kd_tree", mesh);
   KdTree tree;
@@ -392,8 +440,12 @@ KdTree build_kd_tree(const Mesh& mesh) {
       tree.bounds.max = tree.bounds.max.cwiseMax(b.max);
     }
   }
-  tree.nodes.reserve(2 * mesh.size() + 1);
-  KdBuilder(tree, std::move(boxes)).build(tree.bounds, std::move(list), 0);
+  tree.items.push_back(0);  // items[0]: the empty list every empty leaf shares
+  const std::size_t count = list.size();
+  KdBuilder(tree, std::move(boxes), std::move(list)).build(tree.bounds, 0, count, 0);
+  // The vectors grew by doubling: give back what they reserved and do not use.
+  tree.nodes.shrink_to_fit();
+  tree.items.shrink_to_fit();
   return tree;
 }
 
@@ -424,6 +476,7 @@ KdHit any_hit(const KdTree& tree, const Segment& segment) {
   int tests = 0;
   front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
     const int* list = &tree.items[std::size_t(leaf.index)];
+    prefetch_triangles(tree, list);
     for (int k = 1; k <= list[0]; ++k) {
       ++tests;
       const given::SegmentHit h = given::segment_triangle(segment, tree.triangles[std::size_t(list[k])]);
@@ -675,6 +728,10 @@ std::array<int, 2> ordered(int i, int j) { return {std::min(i, j), std::max(i, j
 //
 //   frame k:    A0  A1  B0  B1        A and B apart
 //   frame k+1:  A0  B0  A1  B1        B0 slid left past A1: one swap, {A, B} added
+//
+// The swaps are O(n + changes); the pairs overlapping on x are what costs the most on
+// many spheres (each is tested every frame), so the set is touched once per frame, in
+// one pass that also tests it, never searched swap by swap.
 SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     require_finite("SweepAndPrune::update", "spheres[" + std::to_string(i) + "].center", spheres[i].center);
@@ -710,32 +767,57 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
         open.push_back(e.sphere);
       }
     }
+    std::sort(overlapping.begin(), overlapping.end());  // kept sorted from now on (below)
   }
   // Insertion sort. Each swap of a low end left past a high end makes their intervals
-  // overlap; a high end left past a low end parts them.
+  // overlap (+1); a high end left past a low end parts them (-1). The changes are noted
+  // here and applied to the set below, in one pass: finding a pair in the set at each
+  // swap would cost the whole set per swap.
+  std::vector<std::pair<std::array<int, 2>, int>> changes;
   for (std::size_t k = 1; k < ends.size(); ++k)
     for (std::size_t m = k; m > 0 && before(ends[m], ends[m - 1]); --m) {
       const Endpoint& moving = ends[m];
       const Endpoint& passed = ends[m - 1];
-      if (moving.sphere != passed.sphere && moving.high != passed.high) {
-        const std::array<int, 2> pair = ordered(moving.sphere, passed.sphere);
-        if (!moving.high) {
-          overlapping.push_back(pair);
-        } else {
-          overlapping.erase(std::find(overlapping.begin(), overlapping.end(), pair));
-        }
-      }
+      if (moving.sphere != passed.sphere && moving.high != passed.high)
+        changes.push_back({ordered(moving.sphere, passed.sphere), moving.high ? -1 : +1});
       std::swap(ends[m], ends[m - 1]);
       ++out.swaps;
     }
-  // Only the pairs overlapping on x get the full test.
-  for (const std::array<int, 2>& p : overlapping) {
+  // A sphere that jumped clear over another in one frame makes both changes to the pair:
+  // what counts is their sum.
+  std::sort(changes.begin(), changes.end());
+  std::vector<std::array<int, 2>> added, gone_pairs;  // both sorted
+  for (std::size_t k = 0; k < changes.size();) {
+    std::size_t next = k;
+    int sum = 0;
+    for (; next < changes.size() && changes[next].first == changes[k].first; ++next) sum += changes[next].second;
+    if (sum > 0) added.push_back(changes[k].first);
+    if (sum < 0) gone_pairs.push_back(changes[k].first);
+    k = next;
+  }
+  const auto test = [&](const std::array<int, 2>& p) {
     const Sphere& a = spheres[std::size_t(p[0])];
     const Sphere& b = spheres[std::size_t(p[1])];
     ++out.tests;
     const double reach = a.radius + b.radius;
     if ((a.center - b.center).squaredNorm() <= reach * reach) out.pairs.push_back(p);
+  };
+  // The set is kept sorted, so one pass merged with the sorted list of pairs that
+  // stopped overlapping on x drops them, and gives the others (only those) the full test.
+  std::size_t kept = 0, g = 0;
+  for (std::size_t k = 0; k < overlapping.size(); ++k) {
+    const std::array<int, 2> p = overlapping[k];
+    while (g < gone_pairs.size() && gone_pairs[g] < p) ++g;
+    const bool gone = g < gone_pairs.size() && gone_pairs[g] == p;
+    if (gone) continue;  // its intervals no longer overlap on x: out of the set
+    overlapping[kept++] = p;
+    test(p);
   }
+  // The new pairs: tested, then merged in from the back end (no second copy of the set).
+  for (const std::array<int, 2>& p : added) test(p);
+  std::size_t from = kept, next = added.size(), to = kept + added.size();
+  overlapping.resize(to);
+  while (next > 0) overlapping[--to] = from > 0 && overlapping[from - 1] > added[next - 1] ? overlapping[--from] : added[--next];
   std::sort(out.pairs.begin(), out.pairs.end());
   return out;
 }
