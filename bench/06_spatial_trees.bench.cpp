@@ -20,9 +20,10 @@
 //
 // broad_phase/IMPL/SIZE: overlapping pairs among SIZE moving spheres, as dense as the
 // lab's 2,000 in a cube of side 100, over a run of 100 frames of motion (so that a
-// structure kept from frame to frame pays off): the reference is lab 06's SweepAndPrune
-// (step 6), nanoflann a k-d tree rebuilt every frame. Items are the n (n - 1) / 2 pairs
-// each frame covers.
+// structure kept from frame to frame pays off): the reference is lab 06's
+// overlapping_pairs (step 5, a uniform grid built every frame), sweep_and_prune its
+// SweepAndPrune (step 6, the sorted ends kept from frame to frame), nanoflann a k-d tree
+// rebuilt every frame. Items are the n (n - 1) / 2 pairs each frame covers.
 #include "inputs.h"
 #include "common/generators/meshes.h"
 
@@ -383,10 +384,30 @@ int disagreements(const std::vector<std::array<int, 2>>& got, const std::vector<
   return differ;
 }
 
-// The reference: lab 06's SweepAndPrune (step 6), one object for the whole run, so that
-// every frame after the first re-sorts the kept list by insertion and updates the kept
-// pairs. Each iteration is a fresh run of kFrames frames (its first frame sorts from scratch).
+// The reference: lab 06's overlapping_pairs (step 5), a uniform grid, every frame.
 void broad_phase_reference(benchmark::State& state) {
+  const int n = int(state.range(0));
+  const Spheres& in = spheres(n);
+  std::vector<Sphere> current;
+  long long tests = 0, frames = 0;
+  std::vector<std::array<int, 2>> last;
+  for (auto _ : state)
+    for (int f = 0; f < kFrames; ++f) {
+      in.frame(f, current);
+      lab06::SpherePairs p = lab06::overlapping_pairs(current);
+      tests += p.tests, ++frames;
+      if (f == kFrames - 1) last = std::move(p.pairs);
+    }
+  state.SetItemsProcessed(state.iterations() * kFrames * (int64_t(n) * (n - 1) / 2));
+  in.frame(kFrames - 1, current);
+  state.counters["disagree"] = disagreements(last, current, n);  // on the run's last frame
+  state.counters["tests_per_query"] = double(tests) / double(frames);  // sphere tests per frame
+}
+
+// Lab 06's SweepAndPrune (step 6), one object for the whole run, so that every frame
+// after the first re-sorts the kept list by insertion and updates the kept pairs. Each
+// iteration is a fresh run of kFrames frames (its first frame sorts from scratch).
+void broad_phase_sweep_and_prune(benchmark::State& state) {
   const int n = int(state.range(0));
   const Spheres& in = spheres(n);
   std::vector<Sphere> current;
@@ -585,6 +606,7 @@ BENCHMARK(bsp_classify_reference)->Name("bsp_classify/reference")->Arg(10000);
 BENCHMARK(bsp_classify_cgal)->Name("bsp_classify/cgal_side_of_triangle_mesh")->Arg(10000);
 
 BENCHMARK(broad_phase_reference)->Name("broad_phase/reference")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(broad_phase_sweep_and_prune)->Name("broad_phase/sweep_and_prune")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 #ifdef LABKIT_HAS_NANOFLANN
 BENCHMARK(broad_phase_nanoflann)->Name("broad_phase/nanoflann")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 #endif

@@ -166,7 +166,7 @@ int main(int argc, char** argv) {
     const double at_least = t.value("at_least", 0.0);
     const Row* ref = nullptr;
     const Row* other = nullptr;
-    if (groups.count(group))
+    if (groups.count(group) && !size.empty())  // (rows_of adds the size it is asked for)
       for (const Row& r : rows_of(groups[group], size)) {
         if (r.implementation == "reference") ref = &r;
         if (r.implementation == peer) other = &r;

@@ -804,7 +804,10 @@ Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rul
         return fail(expected, answer,
                     "closed balls meet when |c_i - c_j| <= r_i + r_j: spheres " + str(exact[i][0]) + " and " + str(exact[i][1]) +
                         " have |c_i - c_j| - (r_i + r_j) = " + gap(exact[i]) + ", yet the pair is missing" +
-                        (gap_of(exact[i]) == 0 ? " (they touch, and touching counts: intervals that touch overlap, low[j] <= high[i])" : ""));
+                        (gap_of(exact[i]) == 0 ? " (they touch, and touching counts: compare with <=, never <)" : "") +
+                        ". A pair is lost before its test when a sweep stops too early (keep going while low[j] <= "
+                        "high[i]) or a grid's cells are narrower than the largest diameter 2 r_max (balls that meet "
+                        "then sit two cells apart)");
       doubt = true;
       ++i;
     } else if (i == exact.size() || got.pairs[j] < exact[i]) {  // extra

@@ -40,10 +40,16 @@ labkit_mutant(06 spatial_trees NAME near_subtree_first STEP 4 SAYS "far subtree"
   FIND "const int near = eye_in_front ? n.front : n.back, far = eye_in_front ? n.back : n.front;"
   REPLACE "const int near = eye_in_front ? n.back : n.front, far = eye_in_front ? n.front : n.back;")
 
-# Step 5: intervals that only touch are taken as apart, so touching balls are missed.
-labkit_mutant(06 spatial_trees NAME touching_intervals_apart STEP 5 SAYS "touching counts"
-  FIND "intervals[j].low <= intervals[i].high"
-  REPLACE "intervals[j].low < intervals[i].high")
+# Step 5: balls that only touch are taken as apart (< where the rule says <=).
+labkit_mutant(06 spatial_trees NAME touching_balls_apart STEP 5 SAYS "touching counts"
+  FIND "return (a.center - b.center).squaredNorm() <= reach * reach;  // closed balls"
+  REPLACE "return (a.center - b.center).squaredNorm() < reach * reach;  // closed balls")
+
+# Step 5: the grid's cells one radius wide instead of one diameter: two balls that meet
+# can sit two cells apart, outside each other's block, and their pair is lost.
+labkit_mutant(06 spatial_trees NAME grid_cells_one_radius STEP 5 SAYS "missing" "largest diameter"
+  FIND "double side = std::max(2 * r_max * (1 + 1e-6), extent.maxCoeff() / kMaxCells);"
+  REPLACE "double side = std::max(r_max, extent.maxCoeff() / kMaxCells);")
 
 # Step 6: the ends re-sorted from scratch every frame (the list rebuilt in sphere order):
 # right pairs, but n log n or worse comparisons and swaps however little the spheres moved.
@@ -86,10 +92,11 @@ labkit_mutant(06 spatial_trees NAME leaves_too_big STEP 8 SAYS "leaves too big"
   FIND "const Split split = depth < max_depth_ ?"
   REPLACE "const Split split = depth < 2 ?")
 
-# Step 8: the sweep tests every later interval, overlapping or not: the brute force.
-labkit_mutant(06 spatial_trees NAME sweep_tests_all_pairs STEP 8 SAYS "intervals overlap"
-  FIND "j < intervals.size() && intervals[j].low <= intervals[i].high; ++j"
-  REPLACE "j < intervals.size(); ++j")
+# Step 8: one grid cell holds every ball, so every pair is tested: the brute force.
+# Every answer is still right; only the count of tests gives it away.
+labkit_mutant(06 spatial_trees NAME grid_of_one_cell STEP 8 SAYS "adjacent cells"
+  FIND "if (!(side > 0) || !std::isfinite(side)) side"
+  REPLACE "side = 1e300; if (!(side > 0) || !std::isfinite(side)) side")
 
 # Step 9: the clip to the root's box with strict comparisons: a segment lying in the
 # plane of a wall of the root's cell is taken as outside it, and its hits are lost.

@@ -611,8 +611,9 @@ TEST_CASE("L06S8 efficiency: tests counted on 10,000 triangles", "[lab06][step8]
     if (right.verdict == Outcome::Verdict::fail) return right;
     Expect e;
     e.that("tests", got.tests <= kSphereTests, std::to_string(got.tests), "at most " + std::to_string(kSphereTests),
-           "the sweep tests only pairs whose intervals overlap on the sweep axis (stop at the first interval starting "
-           "after high[i]); the brute force makes " + std::to_string(in.count * (in.count - 1) / 2));
+           "a broad phase tests only pairs that can meet: a sweep, those whose intervals overlap on the sweep axis "
+           "(stop at the first interval starting after high[i]); a grid, those in the same or adjacent cells (cells at "
+           "least one diameter wide, not much more); the brute force makes " + std::to_string(in.count * (in.count - 1) / 2));
     return e.outcome();
   });
 }

@@ -322,6 +322,57 @@ MeshHit mesh_hit_from(const SegmentTriangleHit& h, int triangle) {
   return {h.hit, triangle, h.t, h.point, h.barycentric, h.normal};
 }
 
+// ---- A quick answer when plain doubles are already sure --------------------------------
+//
+// Most pairs are nowhere near a tie: both ends clearly on one side, or the crossing
+// clearly inside or clearly outside an edge. For them the five signs that decide (d_a,
+// d_b and the three volumes) can be read straight off the input, without scaling and
+// without the needle's careful normal, provided the rounding cannot have flipped them.
+// Each is a determinant of differences of input points; computed in doubles it is off
+// by at most about 3.5 eps times its "permanent", the same sum with every product taken
+// in absolute value (Shewchuk's static filter for orient3d; eps = 2^-52). The bound used
+// here is 8 eps times the permanent, plus 1e-290 for products that underflow. Each
+// triple product is formed as decide() forms it: a cross product, then a dot product. When a
+// sign clears its bound it is the exact sign, so the answer below is the exact answer;
+// otherwise (a tie, a needle, a nearly parallel segment, all zeros) decide() answers.
+enum class Quick { hit, miss, unsure };
+
+// The permanent's cross product: |y| x |z| with + in place of -.
+inline Vec3 abs_cross(const Vec3& y, const Vec3& z) {
+  const Vec3 a = y.cwiseAbs(), b = z.cwiseAbs();
+  return {a.y() * b.z() + a.z() * b.y(), a.z() * b.x() + a.x() * b.z(), a.x() * b.y() + a.y() * b.x()};
+}
+
+// +1 or -1 when `value` (a triple product x . (y cross z), whose permanent is `permanent`)
+// certainly has that sign, 0 when rounding could have changed it.
+inline int sure_sign(double value, double permanent) {
+  constexpr double relative = 8 * std::numeric_limits<double>::epsilon(), underflow = 1e-290;
+  const double bound = relative * permanent + underflow;
+  return value > bound ? 1 : value < -bound ? -1 : 0;
+}
+
+Quick quick_answer(const Segment& s, const Triangle& tri) {
+  const Vec3 e1 = tri.v1 - tri.v0, e2 = tri.v2 - tri.v0;
+  const Vec3 n = e1.cross(e2), n_abs = abs_cross(e1, e2);
+  const Vec3 a_rel = s.a - tri.v0, b_rel = s.b - tri.v0;
+  const int side_a = sure_sign(a_rel.dot(n), a_rel.cwiseAbs().dot(n_abs));  // the sign of d_a
+  const int side_b = sure_sign(b_rel.dot(n), b_rel.cwiseAbs().dot(n_abs));  // the sign of d_b
+  if (side_a == 0 || side_b == 0) return Quick::unsure;
+  if (side_a == side_b) return Quick::miss;  // both ends strictly on one side
+  // The segment crosses the plane strictly; the volumes say on which side of each edge's
+  // line the crossing falls (as in decide(): all of sign -side_a inside, any of sign
+  // side_a outside). V_0 and V_2 share m = (b - a) x p0, as in decide().
+  const Vec3 direction = s.b - s.a, p0 = tri.v0 - s.a, p1 = tri.v1 - s.a, p2 = tri.v2 - s.a;
+  const Vec3 m = direction.cross(p0), m_abs = abs_cross(direction, p0);
+  const int v0 = sure_sign(m.dot(p1), m_abs.dot(p1.cwiseAbs()));
+  if (v0 == side_a) return Quick::miss;  // strictly outside edge v0 -> v1
+  const int v2 = sure_sign(-m.dot(p2), m_abs.dot(p2.cwiseAbs()));
+  if (v2 == side_a) return Quick::miss;  // strictly outside edge v2 -> v0
+  const int v1 = sure_sign(direction.cross(p1).dot(p2), abs_cross(direction, p1).dot(p2.cwiseAbs()));
+  if (v1 == side_a) return Quick::miss;  // strictly outside edge v1 -> v2
+  return v0 == -side_a && v1 == -side_a && v2 == -side_a ? Quick::hit : Quick::unsure;
+}
+
 }  // namespace
 
 PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
@@ -411,6 +462,8 @@ bool point_in_triangle_barycentric(const Vec3& point, const Triangle& input) {
 bool test_segment_triangle(const Segment& segment, const Triangle& triangle) {
   require("test_segment_triangle", segment);
   require("test_segment_triangle", triangle);
+  const Quick quick = quick_answer(segment, triangle);
+  if (quick != Quick::unsure) return quick == Quick::hit;
   return decide(segment, triangle).hit;
 }
 

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <limits>
 #include <stdexcept>
@@ -653,53 +654,121 @@ std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) {
 
 // ---- Step 5 ------------------------------------------------------------------------------------
 
-// Sort and sweep (the lecture's plane sweep). Each ball covers the interval
-// [c - r, c + r] of one axis; two balls can meet only if their intervals overlap. Sort
-// the intervals by their low end; then the intervals overlapping interval i from later
-// in the order are exactly those that start before it ends: a run right after it. Only
-// those pairs get the full test.
+// A uniform grid (lecture 001). Cut space into cubes whose side is at least the largest
+// diameter 2 r_max: two balls that meet have centres at most r_i + r_j <= 2 r_max apart,
+// so their cells differ by at most one along each axis. Each ball is then tested only
+// against the balls of its own cell and of the 26 around it:
 //
-//   A0---A1   R0------R1               sorted by low end: A R B C
-//                 B0-------------B1    R meets B (B0 <= R1); B meets C (C0 <= B1);
-//                       C0---C1        A meets nothing; R does not reach C
-SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
+//    +---+---+---+
+//    | . | . |   |     the ball in the middle cell meets only balls whose centres
+//    +---+---+---+     lie in the 3 x 3 (x 3) block around it; the rest of the
+//    |   | o | . |     grid is never looked at
+//    +---+---+---+
+//    | . |   |   |
+//    +---+---+---+
+//
+// Why a grid and not a sort and sweep here: nothing is kept between calls, and at a fixed
+// density a sweep along one axis tests every pair whose intervals overlap on that axis,
+// about n^(5/3) of them, while the grid's block holds a handful of balls whatever n is
+// (step 6 keeps a sweep from frame to frame instead). At most 2^20 cells along an axis,
+// so that an index fits in 21 bits however small the balls are next to their spread.
+//
+// The cells are never stored as an array (most are empty): each ball gets one 64-bit
+// key, its (x, y, z) cell indices side by side, and the balls are sorted by key. Then
+// the 3 cells of a column (x, y, z - 1 .. z + 1) have consecutive keys, one run of the
+// sorted list, and a block is 9 such runs. Each pair is seen from both of its balls and
+// kept from the one with the smaller index.
+namespace {
+
+constexpr int kCellBits = 21;
+constexpr double kMaxCells = double(1 << (kCellBits - 1));  // per axis (a margin for the neighbour at +1)
+
+std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
+  return (std::uint64_t(x) << (2 * kCellBits)) | (std::uint64_t(y) << kCellBits) | std::uint64_t(z);
+}
+
+// Steps 5 and 6 check every sphere of every frame: the message (and its string) is
+// built only for the sphere that breaks the rule.
+void require_spheres(const char* query, const std::vector<Sphere>& spheres) {
   for (std::size_t i = 0; i < spheres.size(); ++i) {
-    require_finite("overlapping_pairs", "spheres[" + std::to_string(i) + "].center", spheres[i].center);
-    if (!(spheres[i].radius >= 0) || !std::isfinite(spheres[i].radius))
-      throw std::invalid_argument("overlapping_pairs: spheres[" + std::to_string(i) +
-                                  "].radius must be finite and >= 0, got " + text(spheres[i].radius));
+    const Sphere& s = spheres[i];
+    if (s.center.allFinite() && s.radius >= 0 && std::isfinite(s.radius)) continue;
+    require_finite(query, "spheres[" + std::to_string(i) + "].center", s.center);
+    throw std::invalid_argument(std::string(query) + ": spheres[" + std::to_string(i) +
+                                "].radius must be finite and >= 0, got " + text(s.radius));
   }
+}
+
+bool balls_meet(const Sphere& a, const Sphere& b) {
+  const double reach = a.radius + b.radius;
+  return (a.center - b.center).squaredNorm() <= reach * reach;  // closed balls: touching counts
+}
+
+}  // namespace
+
+SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
+  require_spheres("overlapping_pairs", spheres);
   SpherePairs out;
   if (spheres.empty()) return out;
-  // Sweep along the axis where the centres spread the most: the fewer intervals overlap
-  // there, the fewer pairs are tested.
   Vec3 lo = spheres[0].center, hi = spheres[0].center;
+  double r_max = 0;
   for (const Sphere& s : spheres) {
     lo = lo.cwiseMin(s.center);
     hi = hi.cwiseMax(s.center);
+    r_max = std::max(r_max, s.radius);
   }
-  int axis = 0;
-  (hi - lo).maxCoeff(&axis);
-  struct Interval {
-    double low, high;
+  // The side: the largest diameter, a millionth wider so that rounding in the indices
+  // below can never put two centres one diameter apart two cells apart.
+  const Vec3 extent = hi - lo;
+  double side = std::max(2 * r_max * (1 + 1e-6), extent.maxCoeff() / kMaxCells);
+  if (!(side > 0) || !std::isfinite(side)) side = std::max(1.0, extent.maxCoeff());  // all balls are one point
+  const auto index = [&](double value, double low) { return std::int64_t(std::floor((value - low) / side)) + 1; };
+
+  struct Entry {
+    std::uint64_t key;
     int sphere;
   };
-  std::vector<Interval> intervals;
-  intervals.reserve(spheres.size());
+  std::vector<Entry> entries(spheres.size());
   for (int i = 0; i < int(spheres.size()); ++i) {
-    const Sphere& s = spheres[std::size_t(i)];
-    intervals.push_back({s.center[axis] - s.radius, s.center[axis] + s.radius, i});
+    const Vec3& c = spheres[std::size_t(i)].center;  // indices from 1: the column at x - 1 is >= 0
+    entries[std::size_t(i)] = {cell_key(index(c.x(), lo.x()), index(c.y(), lo.y()), index(c.z(), lo.z())), i};
   }
-  std::sort(intervals.begin(), intervals.end(), [](const Interval& x, const Interval& y) { return x.low < y.low; });
-  for (std::size_t i = 0; i < intervals.size(); ++i)
-    for (std::size_t j = i + 1; j < intervals.size() && intervals[j].low <= intervals[i].high; ++j) {
-      const Sphere& a = spheres[std::size_t(intervals[i].sphere)];
-      const Sphere& b = spheres[std::size_t(intervals[j].sphere)];
-      ++out.tests;
-      const double reach = a.radius + b.radius;
-      if ((a.center - b.center).squaredNorm() <= reach * reach)
-        out.pairs.push_back({std::min(intervals[i].sphere, intervals[j].sphere), std::max(intervals[i].sphere, intervals[j].sphere)});
+  std::sort(entries.begin(), entries.end(), [](const Entry& a, const Entry& b) { return a.key < b.key; });
+  std::vector<Sphere> sorted(spheres.size());  // the balls in key order: a column's balls side by side in memory
+  for (std::size_t k = 0; k < entries.size(); ++k) sorted[k] = spheres[std::size_t(entries[k].sphere)];
+
+  // Cell by cell in key order. The key of the cell (x + dx, y + dy, z + dz) is the key of
+  // (x, y, z) plus a fixed offset, so a column's first and end keys grow with the cell's:
+  // one pair of cursors per column (dx, dy) only ever moves forward, and the whole pass
+  // is linear in n plus the pairs tested.
+  std::array<std::uint64_t, 9> low_offset{}, high_offset{};
+  for (int column = 0; column < 9; ++column) {
+    const std::int64_t dx = column / 3 - 1, dy = column % 3 - 1;
+    low_offset[std::size_t(column)] = std::uint64_t(dx * (std::int64_t(1) << (2 * kCellBits)) + dy * (std::int64_t(1) << kCellBits) - 1);
+    high_offset[std::size_t(column)] = low_offset[std::size_t(column)] + 3;  // past z + 1
+  }
+  const std::size_t size = entries.size();
+  std::array<std::size_t, 9> from{}, to{};
+  for (std::size_t run = 0; run < size;) {  // one run of equal keys: one cell
+    const std::uint64_t key = entries[run].key;
+    std::size_t run_end = run;
+    while (run_end < size && entries[run_end].key == key) ++run_end;
+    for (std::size_t column = 0; column < 9; ++column) {
+      std::size_t& first = from[column];
+      std::size_t& end = to[column];
+      while (first < size && entries[first].key < key + low_offset[column]) ++first;
+      end = std::max(end, first);
+      while (end < size && entries[end].key < key + high_offset[column]) ++end;
+      for (std::size_t m = run; m < run_end; ++m)
+        for (std::size_t other = first; other < end; ++other) {
+          const int i = entries[m].sphere, j = entries[other].sphere;
+          if (i >= j) continue;  // each pair once: from its smaller index
+          ++out.tests;
+          if (balls_meet(sorted[m], sorted[other])) out.pairs.push_back({i, j});
+        }
     }
+    run = run_end;
+  }
   std::sort(out.pairs.begin(), out.pairs.end());
   return out;
 }
@@ -733,12 +802,7 @@ std::array<int, 2> ordered(int i, int j) { return {std::min(i, j), std::max(i, j
 // many spheres (each is tested every frame), so the set is touched once per frame, in
 // one pass that also tests it, never searched swap by swap.
 SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
-  for (std::size_t i = 0; i < spheres.size(); ++i) {
-    require_finite("SweepAndPrune::update", "spheres[" + std::to_string(i) + "].center", spheres[i].center);
-    if (!(spheres[i].radius >= 0) || !std::isfinite(spheres[i].radius))
-      throw std::invalid_argument("SweepAndPrune::update: spheres[" + std::to_string(i) + "].radius must be finite and >= 0, got " +
-                                  text(spheres[i].radius));
-  }
+  require_spheres("SweepAndPrune::update", spheres);
   if (started && spheres.size() * 2 != ends.size())
     throw std::invalid_argument("SweepAndPrune::update: spheres must keep the first frame's count, " + std::to_string(ends.size() / 2) +
                                 ", got " + std::to_string(spheres.size()));
@@ -796,11 +860,8 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
     k = next;
   }
   const auto test = [&](const std::array<int, 2>& p) {
-    const Sphere& a = spheres[std::size_t(p[0])];
-    const Sphere& b = spheres[std::size_t(p[1])];
     ++out.tests;
-    const double reach = a.radius + b.radius;
-    if ((a.center - b.center).squaredNorm() <= reach * reach) out.pairs.push_back(p);
+    if (balls_meet(spheres[std::size_t(p[0])], spheres[std::size_t(p[1])])) out.pairs.push_back(p);
   };
   // The set is kept sorted, so one pass merged with the sorted list of pairs that
   // stopped overlapping on x drops them, and gives the others (only those) the full test.
