@@ -85,6 +85,10 @@ if [ -n "$failed_tests" ]; then
   sed -n '/The following tests FAILED/,$p' "$WORK/test.log" >&2
   test_summary="$test_summary; failed: $failed_tests"
 fi
+# The release rehearsal, which `./labkit test --all` and CI add to the suite.
+say "the release rehearsal alone (load $(load))"
+release_time=$(seconds "$WORK/release.log" ctest --test-dir build -L release --output-on-failure)
+release_summary=$(grep -E "tests passed|tests failed" "$WORK/release.log" | tail -n 1)
 
 grade_time="not measured (no ./labkit grade in this tree)"
 if ./labkit help 2>&1 | grep -q "grade"; then
@@ -116,7 +120,8 @@ Load average (1 min) when each part started: day one $day_one_load, the suite $t
 |---|---|---|
 | day one: a fresh copy's first \`./labkit check\` (packages installed): configure, build, table | $day_one s | 150 s or less |
 | the rest of the build (mutants, viewer), before the suite | $rest_build s | |
-| \`./labkit test\` (the whole suite, reference solutions) | $test_time s ($test_summary) | 480 s or less |
+| \`./labkit test\` (the suite, reference solutions) | $test_time s ($test_summary) | 480 s or less |
+| the release rehearsal alone (\`ctest -L release\`; \`./labkit test --all\` and CI add it) | $release_time s ($release_summary) | |
 | grading one submission (after the first build) | $grade_time | 30 s or less |
 
 From saving a finished lab's file (the reference, copied in) to the table: the whole lab

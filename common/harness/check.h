@@ -20,6 +20,7 @@
 #include <rapidcheck.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -407,13 +408,21 @@ void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& j
 
   // RapidCheck draws the same cases again to shrink the first failure: those before it
   // passed already, so only the failing case and its shrinks are judged, one at a time.
+  // Shrinking has a budget: code that fails every input (a crash before main, say) makes
+  // every smaller input fail too, and a large input (two meshes) has a long way down.
+  // Past the budget the smallest failure so far is the one shown.
+  constexpr int kShrinkTries = 400;
+  constexpr auto kShrinkTime = std::chrono::seconds(5);
   bool shrinking = false;
   int seen = 0;
-  int shrinks = -1;
+  int shrinks = -1, tries = 0;
+  std::chrono::steady_clock::time_point shrink_start;
   std::optional<detail::Failure> smallest;
   const auto property = [&] {
     const Input input = *gen;
     if (!shrinking && ++seen < first_failing_case) return;
+    if (shrinking && (++tries > kShrinkTries || std::chrono::steady_clock::now() - shrink_start > kShrinkTime)) return;
+    if (!shrinking) shrink_start = std::chrono::steady_clock::now();
     const std::string token = replay_token(query, input);
     detail::set_inflight(token);
     const Outcome o = detail::run_judge(judge, input, report);

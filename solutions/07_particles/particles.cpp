@@ -103,13 +103,17 @@ void require_valid(const char* query, const Material& m) {
 
 void require_valid(const char* query, const Scene& scene) {
   for (std::size_t i = 0; i < scene.planes.size(); ++i) require_valid(query, scene.planes[i], "scene.planes[" + std::to_string(i) + "]");
+  // A mesh has thousands of vertices: each is checked, and a name is built only for
+  // the one that breaks the rule.
   for (std::size_t i = 0; i < scene.mesh.vertices.size(); ++i)
-    require_finite(query, "scene.mesh.vertices[" + std::to_string(i) + "]", scene.mesh.vertices[i]);
+    if (!scene.mesh.vertices[i].allFinite())
+      require_finite(query, "scene.mesh.vertices[" + std::to_string(i) + "]", scene.mesh.vertices[i]);
   const double count = double(scene.mesh.vertices.size());
   for (std::size_t i = 0; i < scene.mesh.size(); ++i)
     for (const int v : scene.mesh.triangles[i])
-      require(v >= 0 && v < count, query, "scene.mesh.triangles[" + std::to_string(i) + "]",
-              "must index vertices (0 to vertices.size() - 1)", double(v));
+      if (!(v >= 0 && v < count))
+        require(false, query, "scene.mesh.triangles[" + std::to_string(i) + "]", "must index vertices (0 to vertices.size() - 1)",
+                double(v));
   require_valid(query, scene.material);
   require_finite(query, "scene.velocity", scene.velocity);
   require(scene.bounce_cap >= 0 && scene.bounce_cap <= kMaxBounceCap, query, "scene.bounce_cap", "must be in [0, kMaxBounceCap]",
@@ -423,6 +427,7 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
 // still scene.
 namespace {
 Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last);
+Collision collide_in(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene);
 }  // namespace
 
 Collision collide(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene) {
@@ -431,6 +436,14 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
   require_positive("collide", "mass", mass);
   require_positive("collide", "dt", dt);
   require_valid("collide", scene);
+  return collide_in(step, velocity, mass, dt, scene);
+}
+
+namespace {
+
+// collide's work on checked input: System::step checks its scene once per step, not once
+// per particle (a mesh's every vertex, a thousand times a step).
+Collision collide_in(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene) {
   const int cap = scene.bounce_cap;
   const Vec3 u = scene.velocity;
   Collision c;
@@ -463,8 +476,6 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
 }
 
 // ---- Step 7: never behind, exactly; the handling loop --------------------------------
-
-namespace {
 
 // (x - v0) . (e1 x e2): Shewchuk's bound for orient3d, (7 + 56 2^-53) 2^-53 times the
 // "permanent" (the triple product with every product made positive), below 1e-15 times it.
@@ -635,7 +646,7 @@ void System::step(double dt) {
   for (Particle& p : particles) {
     const Vec3 a = p.position;
     p = integrator == Integrator::euler ? euler_step(p, forces, dt) : verlet_step(p, forces, dt);
-    const Collision c = collide({a, p.position}, p.velocity, p.mass, dt, scene);
+    const Collision c = collide_in({a, p.position}, p.velocity, p.mass, dt, scene);
     p.position = c.position;
     p.velocity = c.velocity;
     p.bounces = c.bounces;

@@ -309,6 +309,11 @@ for name in forge_report weak_rename kit_programs; do
   awk -F'\t' -v n="$name" 'NR > 1 && $1 == "02" && $5 != "0" { print "FAIL: " n ": lab 02 step " $2 " scores " $5; bad = 1 }
     END { exit bad }' "$out/$name/steps.tsv" || failures=$((failures + 1))
 done
+# Code that dies before main fails every input, and so every smaller input: shrinking
+# its failure must stop within its budget, not run the step into its time limit (lab 02
+# step 7's two meshes once took the whole 120 s).
+awk -F'\t' 'NR > 1 && $1 == "02" && $4 != "failing" { print "FAIL: forge_report: lab 02 step " $2 " is " $4 ", not failing"; bad = 1 }
+  END { exit bad }' "$out/forge_report/steps.tsv" || failures=$((failures + 1))
 expect oracle_by_name graded
 expect preinit_seed graded
 expect labs graded
