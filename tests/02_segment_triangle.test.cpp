@@ -293,6 +293,10 @@ TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
                    e.near("point", got.point, Vec3(1, 3, 2), 1e-12);
                    return e.outcome();
                  });
+  // So nearly along the floor (a slope of 2^-20) that the volumes cannot give the
+  // weights: they must be measured on the point (handout, step 3's barycentric).
+  check::example("first_hit", "nearly along the floor", SegmentMeshPair{{{0.5, 1, 0x1p-20}, {2.5, 1.5, -0x1p-20}}, mesh},
+                 [](const SegmentMeshPair& in) { return judge::first_hit(in, first_hit(in.segment, in.mesh)); });
   check::example("all_hits", "shelf, then floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
                    const std::vector<MeshHit> got = all_hits(in.segment, in.mesh);

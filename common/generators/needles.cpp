@@ -194,12 +194,22 @@ rc::Gen<SegmentMeshPair> decisive_segment_mesh() {
   return rc::gen::exec([] {
     const double s = *wide_scale();
     const Mesh m = *mesh_with_twins(s);
-    // Aim at a point well inside some triangle half the time (hits are rarer than
-    // misses otherwise), or a little outside one of its edges.
+    // Aim at some triangle three times in four (hits are rarer than misses otherwise):
+    // through a point well inside it, a little outside one of its edges, or crossing its
+    // plane inside it at an angle of 2^-17 to 2^-26, so nearly parallel that a hit's
+    // weights must be measured on its point (the ends stay clearly off the plane).
     Segment seg{*point(s), *point(s)};
-    if (*rc::gen::inRange(0, 3) != 0 && m.size() > 0) {
+    const int aim = *rc::gen::inRange(0, 4);
+    if (aim != 0 && m.size() > 0) {
       const Triangle t = m.triangle(std::size_t(*rc::gen::inRange(0, int(m.size()))));
-      if (t.normal() != Vec3::Zero()) seg = through(*rc::gen::element(0, 0, 1) ? near_edge_point(t) : inside(t), s);
+      if (t.normal() != Vec3::Zero() && aim == 3) {
+        const Vec3 x = inside(t), along = t[*rc::gen::inRange(0, 3)] - x;
+        const Vec3 d = along + sign() * relative(17, 26) * along.norm() * unit_normal(t);
+        const double k = *rc::gen::inRange(1, 17) / 8.0;
+        seg = *rc::gen::element(Segment{x + d, x - k * d}, Segment{x - k * d, x + d});
+      } else if (t.normal() != Vec3::Zero()) {
+        seg = through(aim == 1 ? near_edge_point(t) : inside(t), s);
+      }
     }
     return SegmentMeshPair{seg, m};
   });
