@@ -384,48 +384,43 @@ int disagreements(const std::vector<std::array<int, 2>>& got, const std::vector<
   return differ;
 }
 
-// The reference: lab 06's overlapping_pairs (step 5), a uniform grid, every frame.
-void broad_phase_reference(benchmark::State& state) {
-  const int n = int(state.range(0));
-  const Spheres& in = spheres(n);
-  std::vector<Sphere> current;
-  long long tests = 0, frames = 0;
-  std::vector<std::array<int, 2>> last;
-  for (auto _ : state)
-    for (int f = 0; f < kFrames; ++f) {
-      in.frame(f, current);
-      lab06::SpherePairs p = lab06::overlapping_pairs(current);
-      tests += p.tests, ++frames;
-      if (f == kFrames - 1) last = std::move(p.pairs);
-    }
-  state.SetItemsProcessed(state.iterations() * kFrames * (int64_t(n) * (n - 1) / 2));
-  in.frame(kFrames - 1, current);
-  state.counters["disagree"] = disagreements(last, current, n);  // on the run's last frame
-  state.counters["tests_per_query"] = double(tests) / double(frames);  // sphere tests per frame
-}
-
-// Lab 06's SweepAndPrune (step 6), one object for the whole run, so that every frame
-// after the first re-sorts the kept list by insertion and updates the kept pairs. Each
-// iteration is a fresh run of kFrames frames (its first frame sorts from scratch).
-void broad_phase_sweep_and_prune(benchmark::State& state) {
+// Runs of kFrames frames: `start()` makes the state one run keeps (nothing, or a
+// SweepAndPrune), `frame(state, spheres)` answers one frame. Counters: disagreements on
+// the run's last frame, sphere tests per frame.
+template <class Start, class Frame>
+void broad_phase_runs(benchmark::State& state, Start start, Frame frame) {
   const int n = int(state.range(0));
   const Spheres& in = spheres(n);
   std::vector<Sphere> current;
   long long tests = 0, frames = 0;
   std::vector<std::array<int, 2>> last;
   for (auto _ : state) {
-    lab06::SweepAndPrune sweep;
+    auto kept = start();
     for (int f = 0; f < kFrames; ++f) {
       in.frame(f, current);
-      lab06::SweepFrame p = sweep.update(current);
+      auto p = frame(kept, current);
       tests += p.tests, ++frames;
       if (f == kFrames - 1) last = std::move(p.pairs);
     }
   }
   state.SetItemsProcessed(state.iterations() * kFrames * (int64_t(n) * (n - 1) / 2));
   in.frame(kFrames - 1, current);
-  state.counters["disagree"] = disagreements(last, current, n);  // on the run's last frame
-  state.counters["tests_per_query"] = double(tests) / double(frames);  // sphere tests per frame
+  state.counters["disagree"] = disagreements(last, current, n);
+  state.counters["tests_per_query"] = double(tests) / double(frames);
+}
+
+// The reference: lab 06's overlapping_pairs (step 5), a uniform grid, every frame.
+void broad_phase_reference(benchmark::State& state) {
+  broad_phase_runs(state, [] { return 0; },
+                   [](int, const std::vector<Sphere>& spheres) { return lab06::overlapping_pairs(spheres); });
+}
+
+// Lab 06's SweepAndPrune (step 6), one object for the whole run, so that every frame
+// after the first re-sorts the kept list by insertion and updates the kept pairs. Each
+// iteration is a fresh run of kFrames frames (its first frame sorts from scratch).
+void broad_phase_sweep_and_prune(benchmark::State& state) {
+  broad_phase_runs(state, [] { return lab06::SweepAndPrune{}; },
+                   [](lab06::SweepAndPrune& sweep, const std::vector<Sphere>& spheres) { return sweep.update(spheres); });
 }
 
 #ifdef LABKIT_HAS_NANOFLANN
