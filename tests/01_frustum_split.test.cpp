@@ -437,7 +437,7 @@ template <class Call>
 void rejects(const std::string& what, const std::string& argument, Call&& call) {
   INFO(what);
   CHECK_THROWS_AS(call(), std::invalid_argument);
-  CHECK_THROWS_WITH(call(), Catch::Contains(argument));
+  CHECK_THROWS_WITH(call(), labkit::check::contains_text(argument));
 }
 
 }  // namespace

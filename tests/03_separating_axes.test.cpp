@@ -473,7 +473,7 @@ TEST_CASE("L03 preconditions: invalid input is rejected, naming the argument", "
       call();
       FAIL("accepted; the header's preconditions reject it");
     } catch (const std::invalid_argument& e) {
-      CHECK_THAT(e.what(), Catch::Matchers::Contains(argument));
+      CHECK_THAT(e.what(), labkit::check::contains_text(argument));
     }
   };
   std::vector<std::pair<std::string, Box>> bad_boxes;

@@ -505,7 +505,7 @@ void rejects(const std::string& argument, Call&& call) {
     call();
     FAIL("accepted");
   } catch (const std::invalid_argument& e) {
-    CHECK_THAT(e.what(), Catch::Matchers::Contains(argument));
+    CHECK_THAT(e.what(), labkit::check::contains_text(argument));
   }
 }
 }  // namespace

@@ -749,7 +749,7 @@ void rejects(const std::string& argument, Call&& call) {
     call();
     FAIL_CHECK("accepted: no std::invalid_argument");
   } catch (const std::invalid_argument& e) {
-    CHECK_THAT(std::string(e.what()), Catch::Contains(argument));
+    CHECK_THAT(std::string(e.what()), labkit::check::contains_text(argument));
   }
 }
 

@@ -2,7 +2,12 @@
 // then Catch's session. Catch's implementation itself is in catch_implementation.cpp;
 // EXTERNAL_INTERFACES declares the listener types outside it.
 #define CATCH_CONFIG_EXTERNAL_INTERFACES
-#include <catch2/catch.hpp>
+#include "common/harness/catch.h"
+#if LABKIT_CATCH2_MAJOR == 3
+#include <catch2/catch_translate_exception.hpp>
+#include <catch2/reporters/catch_reporter_event_listener.hpp>
+#include <catch2/reporters/catch_reporter_registrars.hpp>
+#endif
 
 #include "common/harness/report.h"
 #include "common/not_implemented.h"
@@ -10,25 +15,41 @@
 namespace {
 
 // Feeds report.h with what Catch knows: test cases, and failed assertions in words.
-class ReportListener : public Catch::TestEventListenerBase {
+#if LABKIT_CATCH2_MAJOR == 3
+using ListenerBase = Catch::EventListenerBase;
+using AssertionEnded = void;
+#else
+using ListenerBase = Catch::TestEventListenerBase;
+using AssertionEnded = bool;  // Catch2 2 asks whether to keep the assertion's messages
+#endif
+
+class ReportListener : public ListenerBase {
  public:
-  using TestEventListenerBase::TestEventListenerBase;
+  using ListenerBase::ListenerBase;
 
   void testCaseStarting(const Catch::TestCaseInfo& info) override {
-    labkit::check::report::test_case_started(info.name, info.tags);
+    std::vector<std::string> tags;
+    for (const auto& tag : info.tags) {
+#if LABKIT_CATCH2_MAJOR == 3
+      tags.emplace_back(tag.original.data(), tag.original.size());
+#else
+      tags.push_back(tag);
+#endif
+    }
+    labkit::check::report::test_case_started(info.name, tags);
   }
 
-  bool assertionEnded(const Catch::AssertionStats& stats) override {
+  AssertionEnded assertionEnded(const Catch::AssertionStats& stats) override {
     const Catch::AssertionResult& result = stats.assertionResult;
-    if (result.isOk()) return true;
+    if (result.isOk()) return AssertionEnded(true);
     std::string message;
     for (const Catch::MessageInfo& info : stats.infoMessages) message += info.message + "\n";
     if (result.hasExpression())
       message += result.getExpressionInMacro() + " with expansion " + result.getExpandedExpression() + "\n";
-    if (result.hasMessage()) message += result.getMessage();
+    if (result.hasMessage()) message += std::string(result.getMessage());
     message += "\n(" + std::string(result.getSourceInfo().file) + ":" + std::to_string(result.getSourceInfo().line) + ")";
     labkit::check::report::assertion_failed(message);
-    return true;
+    return AssertionEnded(true);
   }
 
   void testCaseEnded(const Catch::TestCaseStats& stats) override {

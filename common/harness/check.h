@@ -16,7 +16,7 @@
 #include "common/protocol/answerer.h"
 #include "common/protocol/report.h"
 
-#include <catch2/catch.hpp>
+#include "common/harness/catch.h"
 #include <rapidcheck.h>
 
 #include <algorithm>

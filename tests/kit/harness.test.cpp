@@ -5,7 +5,7 @@
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
 
-#include <catch2/catch.hpp>
+#include "common/harness/catch.h"
 
 #include <cmath>
 #include <limits>
@@ -32,17 +32,17 @@ TEST_CASE("replay tokens rebuild the input bit for bit", "[kit]") {
 }
 
 TEST_CASE("malformed replay tokens give one clear reason", "[kit]") {
-  CHECK_THROWS_WITH(parse_token("nonsense"), Catch::Contains("query:"));
-  CHECK_THROWS_WITH(parse_token("q:1,2,x"), Catch::Contains("is not a number"));
-  CHECK_THROWS_WITH(input_from_token<SegmentTrianglePair>(parse_token("q:1,2,3")), Catch::Contains("numbers"));
+  CHECK_THROWS_WITH(parse_token("nonsense"), labkit::check::contains_text("query:"));
+  CHECK_THROWS_WITH(parse_token("q:1,2,x"), labkit::check::contains_text("is not a number"));
+  CHECK_THROWS_WITH(input_from_token<SegmentTrianglePair>(parse_token("q:1,2,3")), labkit::check::contains_text("numbers"));
   // Every lab's input is finite: nan and inf are named, never handed to the oracle.
   for (const char* bad : {"nan", "inf", "-inf"}) {
     const std::string token = std::string("q:0,0,1,0,0,-1,0,0,0,1,0,0,0,1,") + bad;
-    CHECK_THROWS_WITH(input_from_token<SegmentTrianglePair>(parse_token(token)), Catch::Contains("number 15 of the case is"));
+    CHECK_THROWS_WITH(input_from_token<SegmentTrianglePair>(parse_token(token)), labkit::check::contains_text("number 15 of the case is"));
   }
   // A mesh whose triangle names a vertex it does not have.
   CHECK_THROWS_WITH(input_from_token<SegmentMeshPair>(parse_token("q:0,0,0,1,1,1,3,0,0,0,1,0,0,0,1,0,1,0,1,7")),
-                    Catch::Contains("count from 0 to 2"));
+                    labkit::check::contains_text("count from 0 to 2"));
 }
 
 TEST_CASE("ambiguity: exact degeneracies flip, clear cases do not", "[kit]") {
@@ -77,9 +77,9 @@ TEST_CASE("Expect words a mismatch field by field", "[kit]") {
   e.equal("hit", true, true);
   const check::Outcome o = e.outcome();
   CHECK(o.verdict == check::Outcome::Verdict::fail);
-  CHECK_THAT(o.why, Catch::Contains("t is off by 0.25"));
-  CHECK_THAT(o.expected, Catch::Contains("t = 0.75"));
-  CHECK_THAT(o.got, Catch::Contains("t = 0.5"));
+  CHECK_THAT(o.why, labkit::check::contains_text("t is off by 0.25"));
+  CHECK_THAT(o.expected, labkit::check::contains_text("t = 0.75"));
+  CHECK_THAT(o.got, labkit::check::contains_text("t = 0.5"));
 }
 
 TEST_CASE("the given segment-triangle test agrees with the oracle and is watertight", "[kit]") {

@@ -3,10 +3,10 @@
 // shell word whatever the token, and a file left behind is read only if it is a regular
 // file of a sane size. Runs without the kit's build: `kit_untrusted` is this file and
 // runner/untrusted.cpp alone.
-#define CATCH_CONFIG_MAIN
+#define CATCH_CONFIG_MAIN  // Catch2 2: main() is here; Catch2 3: it is Catch2::Catch2WithMain's
 #include "runner/untrusted.h"
 
-#include <catch2/catch.hpp>
+#include "common/harness/catch.h"
 
 #include <cstdlib>
 #include <filesystem>
