@@ -12,7 +12,9 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <thread>
 #include <fcntl.h>
+#include <sched.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
 #include <unistd.h>
@@ -306,6 +308,64 @@ StepGroup::StepGroup(const GroupLimits& limits) {
 
 StepGroup::~StepGroup() {
   for (const std::string& folder : folders_) end_group(folder);
+}
+
+Envelope own_envelope() {
+  Envelope e;
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  const int cores = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 0;
+  e.cpus = cores > 0 ? cores : std::max(1u, std::thread::hardware_concurrency());
+  const double machine_bytes = double(sysconf(_SC_PHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+  double quota_cpus = 0, memory = 0;
+  const auto number = [](const std::string& text) {  // "max" and "-1" are no limit: 0
+    char* end = nullptr;
+    const double x = std::strtod(text.c_str(), &end);
+    return end == text.c_str() || x <= 0 ? 0.0 : x;
+  };
+  const auto tighter = [](double& limit, double x) {
+    if (x > 0 && (limit == 0 || x < limit)) limit = x;
+  };
+  const std::vector<Mount> mounts = cgroup_mounts();
+  const std::map<std::string, std::string> groups = own_groups();
+  for (const char* controller : {"cpu", "memory"}) {
+    const Mount* mount = nullptr;
+    for (const Mount& m : mounts)
+      if (m.type == "cgroup" && has_word(m.options, controller)) mount = &m;
+    for (const Mount& m : mounts)
+      if (!mount && m.type == "cgroup2") mount = &m;
+    if (!mount) continue;
+    const bool v1 = mount->type == "cgroup";
+    const auto group = groups.find(v1 ? controller : "");
+    if (group == groups.end()) continue;
+    // A limit anywhere above holds too: from this process's group up to the mount's root.
+    for (fs::path folder = folder_of(*mount, group->second); !folder.empty(); folder = folder.parent_path()) {
+      const std::string f = folder.string();
+      if (std::string(controller) == "cpu") {
+        std::istringstream max(read_text(f + (v1 ? "/cpu.cfs_quota_us" : "/cpu.max")));
+        std::string quota, period = v1 ? read_text(f + "/cpu.cfs_period_us") : "";
+        max >> quota;
+        if (!v1) max >> period;
+        if (number(quota) > 0 && number(period) > 0) tighter(quota_cpus, number(quota) / number(period));
+      } else {
+        tighter(memory, number(read_text(f + (v1 ? "/memory.limit_in_bytes" : "/memory.max"))));
+      }
+      if (f == mount->point || f.size() <= mount->point.size()) break;
+    }
+  }
+  std::ostringstream text;
+  if (quota_cpus > 0 && quota_cpus < e.cpus) {
+    e.cpus = quota_cpus;
+    text << quota_cpus << " CPU (control group quota)";
+  } else {
+    text << e.cpus << (e.cpus == 1 ? " core" : " cores");
+  }
+  if (memory > 0 && memory < machine_bytes) {
+    e.memory_bytes = std::size_t(memory);
+    text << ", " << (e.memory_bytes >> 20) << " MB (control group limit)";
+  }
+  e.description = text.str();
+  return e;
 }
 
 std::string join_group(const std::string& folder) {

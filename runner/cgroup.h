@@ -56,4 +56,14 @@ class StepGroup {
 // Moves this process into the control group `folder`. "" when done, else why not.
 std::string join_group(const std::string& folder);
 
+// What this process and everything it starts may use together: the CPUs it may run on,
+// cut to its control groups' CPU quota, and their memory limit. Gradescope's default
+// container is half a CPU and 768 MB; a plain machine has its cores and no limit.
+struct Envelope {
+  double cpus = 1;               // cores' worth of CPU time
+  std::size_t memory_bytes = 0;  // 0: no limit below the machine's own memory
+  std::string description;       // "2 cores", "0.5 CPU (control group quota), 768 MB"
+};
+Envelope own_envelope();
+
 }  // namespace runner

@@ -1,15 +1,20 @@
 #include "grade.h"
+#include "cgroup.h"
+#include "class_report.h"
 #include "lab_build.h"
 #include "results.h"
 #include "sandbox.h"
 #include "submission.h"
 #include "terminal.h"
 #include "untrusted.h"
+#include "work_queue.h"
 
 #include <algorithm>
 #include <atomic>
+#include <memory>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -38,6 +43,8 @@ struct Context {
   Sandbox sandbox;
   GradingRun run;
   std::string work;  // scratch root, removed at the end
+  int jobs = 1;                // workers: processes at once
+  std::size_t step_memory_mb;  // each step's memory: --memory, or less to fit the envelope
 };
 
 // The secret never appears in what is written, even if the code under test found it.
@@ -85,7 +92,7 @@ StepOptions graded_step_options(const std::string& folder, const Context& c) {
   options.hide_seed = true;
   options.count_all = true;
   options.limits.seconds = c.options.timeout;
-  options.limits.memory_bytes = c.options.memory_mb << 20;
+  options.limits.memory_bytes = c.step_memory_mb << 20;
   options.limits.file_bytes = std::size_t(64) << 20;
   options.limits.flood_bytes = std::size_t(16) << 20;
   // One call's limit: a tenth of the step's, at most 5 s, so that a loop costs its case
@@ -148,21 +155,16 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
   return out.str();
 }
 
-// Calls work(0) ... work(count - 1), `jobs` at a time.
-template <class Work>
-void parallel_for(std::size_t count, int jobs, Work&& work) {
-  std::atomic<std::size_t> next{0};
-  const auto worker = [&] {
-    for (std::size_t i; (i = next++) < count;) work(i);
-  };
-  std::vector<std::thread> pool;
-  for (int k = 0; k < std::max(1, std::min<int>(jobs, int(count))); ++k) pool.emplace_back(worker);
-  for (std::thread& t : pool) t.join();
+// The rule a failing step's first failure broke, as its judge worded it.
+std::string first_why(const StepResult& r) {
+  if (r.status != Status::failing) return "";
+  for (const QueryResult& q : r.queries)
+    if (q.failure && q.not_implemented.empty()) return q.failure->why;
+  return "";
 }
 
-// The lab's files found and built; `binary` is its answer program when it built.
-LabGrade build_one_lab(const Lab& lab, const Submission& sub, const std::string& folder, const Context& c,
-                       std::string* binary) {
+// A lab of a submission before anything is known of it: every step waiting.
+LabGrade pending_lab(const Lab& lab) {
   LabGrade g;
   g.lab = &lab;
   for (const Step& s : lab.steps) {
@@ -171,132 +173,268 @@ LabGrade build_one_lab(const Lab& lab, const Submission& sub, const std::string&
     sg.step = &s;
     g.steps.push_back(sg);
   }
-  std::map<std::string, std::string> files;
-  std::string missing;
-  for (const std::string& f : lab.student_files) {
-    const auto found = sub.files.find(f);
-    if (found == sub.files.end()) missing += (missing.empty() ? "" : ", ") + f;
-    else files[f] = found->second;
-  }
-  if (!missing.empty()) {
-    g.state = LabGrade::State::missing;
-    g.build_output = "The submission has no " + missing + ".";
-    for (StepGrade& s : g.steps) s.feedback = "not graded: " + g.build_output;
-    return g;
-  }
-  const auto start = std::chrono::steady_clock::now();
-  const LabBuild build = build_lab(c.paths, lab, c.recipes.at(&lab), files, folder, c.sandbox);
-  g.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!build.ok) {
-    g.state = LabGrade::State::not_built;
-    g.build_output = build.errors;
-    for (StepGrade& s : g.steps) s.feedback = "does not compile: every step of this lab scores 0 until it does.";
-    return g;
-  }
-  *binary = build.binary;
   return g;
 }
 
-
-// Every lab built at once, then every step of every lab, `jobs` processes at a time:
-// a lab's build or step never waits for another lab's.
-SubmissionGrade grade_one(const std::string& path, const std::string& name, const std::string& work, int jobs,
-                          const Context& c) {
-  const auto start = std::chrono::steady_clock::now();
-  SubmissionGrade g;
-  g.name = name;
-  g.source = path;
-  fs::create_directories(work);
-  fs::permissions(work, fs::perms(0711));
-  const Submission sub = read_submission(path, c.labs, work, c.sandbox);
-  g.error = sub.error;
-  g.notes = sub.notes;
-  if (sub.files.empty() && sub.error.empty())
-    g.notes.push_back(sub.notes.empty() ? "the submission holds none of the files a student edits"
-                                        : "no file a student edits could be graded (the notes above say why)");
-
-  const std::size_t n = c.labs.size();
-  std::vector<std::string> folders(n), binaries(n);
-  g.labs.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    folders[i] = work + "/lab" + c.labs[i]->id;
-    fs::create_directories(folders[i]);
-    fs::permissions(folders[i], fs::perms(0711));
+// A lab that earns nothing, for the reason given: missing, not compiling, or the grader's
+// own trouble.
+void close_lab(LabGrade& g, LabGrade::State state, const std::string& why, const std::string& feedback) {
+  g.state = state;
+  g.build_output = why;
+  for (StepGrade& s : g.steps) {
+    s.feedback = feedback;
+    s.graded = true;
   }
-  parallel_for(n, jobs, [&](std::size_t i) {
-    try {
-      g.labs[i] = build_one_lab(*c.labs[i], sub, folders[i], c, &binaries[i]);
-    } catch (const std::exception& e) {  // the grader's own trouble (a file system error): this lab only
-      binaries[i].clear();
-      g.labs[i] = build_one_lab(*c.labs[i], Submission{}, folders[i], c, &binaries[i]);
-      g.labs[i].state = LabGrade::State::not_built;
-      g.labs[i].build_output = std::string("the grader could not build it: ") + e.what();
-    }
-  });
+}
 
-  std::vector<std::pair<std::size_t, std::size_t>> tasks;  // (lab, step)
-  for (std::size_t i = 0; i < n; ++i)
-    if (!binaries[i].empty())
-      for (std::size_t k = 0; k < g.labs[i].steps.size(); ++k) tasks.push_back({i, k});
-  parallel_for(tasks.size(), jobs, [&](std::size_t t) {
-    const auto [i, k] = tasks[t];
-    const Lab& lab = *c.labs[i];
-    StepGrade& s = g.labs[i].steps[k];
-    StepResult r;
-    const Programs programs{c.paths.build + "/" + lab.judge_binary(), binaries[i]};
+// Identical files are built once in a run: in a class, the labs that many students left
+// as the stub (or handed in twice) compile once. The key is the files' whole contents,
+// so that two different files can never share an entry.
+struct BuildCache {
+  struct Entry {
+    bool done = false;
+    LabBuild build;
+    double seconds = 0;
+    std::vector<std::function<void(const Entry&)>> waiting;  // builds of the same files, meanwhile
+  };
+  std::mutex mutex;
+  std::map<std::string, std::shared_ptr<Entry>> entries;
+  int folders = 0;
+};
+
+// One submission while it is graded.
+struct Graded {
+  std::string path, name, work;  // work: its scratch folder
+  Submission sub;
+  SubmissionGrade grade;
+  std::vector<std::string> folders;  // per lab: where its steps run
+  std::mutex mutex;                  // grade, open
+  std::mutex writing;                // its results.json, written as its tasks end
+  int open = 0;                      // its tasks queued or running
+  std::chrono::steady_clock::time_point start;
+};
+
+// The whole run: every submission's reading, builds and steps on one queue of `jobs`
+// workers (work_queue.h), the earliest submission's first.
+class Grader {
+ public:
+  Grader(Context& c, std::vector<std::unique_ptr<Graded>>& all, std::function<void(Graded&)> finished)
+      : c_(c), all_(all), finished_(std::move(finished)) {}
+
+  void run() {
+    for (std::size_t i = 0; i < all_.size(); ++i) {
+      Graded& g = *all_[i];
+      g.grade.name = g.name;
+      g.grade.source = g.path;
+      for (const Lab* lab : c_.labs) g.grade.labs.push_back(pending_lab(*lab));
+      for (const LabGrade& l : g.grade.labs) g.grade.max_score += l.max_score;
+      g.open = 1;
+      queue_.add({i, 0, 0}, [this, i] { task(i, [&] { read(i); }); });
+    }
+    queue_.run(c_.jobs);
+  }
+
+  // The results so far of a submission not finished yet, as results.json shows them.
+  static SubmissionGrade so_far(Graded& g) {
+    std::lock_guard<std::mutex> lock(g.mutex);
+    SubmissionGrade s = g.grade;
+    for (const LabGrade& l : s.labs)
+      for (const StepGrade& step : l.steps) s.score += step.score;
+    s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - g.start).count();
+    return s;
+  }
+
+  std::function<void(Graded&)> progress;  // after each of a submission's tasks
+
+ private:
+  // Runs one of submission i's tasks; the last one to end finishes the submission.
+  template <class Work>
+  void task(std::size_t i, Work&& work) {
+    Graded& g = *all_[i];
+    work();
+    if (progress) progress(g);
+    bool last;
+    {
+      std::lock_guard<std::mutex> lock(g.mutex);
+      last = --g.open == 0;
+    }
+    if (last) finish(g);
+  }
+
+  void add(std::size_t i, WorkQueue::Key key, std::function<void()> work) {
+    {
+      std::lock_guard<std::mutex> lock(all_[i]->mutex);
+      ++all_[i]->open;
+    }
+    queue_.add(key, [this, i, work = std::move(work)] { task(i, work); });
+  }
+
+  void read(std::size_t i) {
+    Graded& g = *all_[i];
+    g.start = std::chrono::steady_clock::now();
     try {
-      r = run_step(programs, lab, *s.step, graded_step_options(folders[i], c));
+      fs::create_directories(g.work);
+      fs::permissions(g.work, fs::perms(0711));
+      g.sub = read_submission(g.path, c_.labs, g.work, c_.sandbox);
+      for (const Lab* lab : c_.labs) {
+        g.folders.push_back(g.work + "/lab" + lab->id);
+        fs::create_directories(g.folders.back());
+        fs::permissions(g.folders.back(), fs::perms(0711));
+      }
+    } catch (const std::exception& e) {  // the grader's own trouble (a file system error)
+      g.sub = Submission{};
+      g.sub.error = std::string("the grader could not read it: ") + e.what();
+      g.folders.clear();
+    }
+    {
+      std::lock_guard<std::mutex> lock(g.mutex);
+      g.grade.error = g.sub.error;
+      g.grade.notes = g.sub.notes;
+      if (g.sub.files.empty() && g.sub.error.empty())
+        g.grade.notes.push_back(g.sub.notes.empty() ? "the submission holds none of the files a student edits"
+                                                    : "no file a student edits could be graded (the notes above say why)");
+    }
+    for (std::size_t l = 0; l < c_.labs.size(); ++l) {
+      if (g.folders.empty()) {
+        std::lock_guard<std::mutex> lock(g.mutex);
+        close_lab(g.grade.labs[l], LabGrade::State::not_built, g.sub.error, g.sub.error);
+        continue;
+      }
+      add(i, {i, l + 1, 0}, [this, i, l] { build(i, l); });
+    }
+  }
+
+  void build(std::size_t i, std::size_t l) {
+    Graded& g = *all_[i];
+    const Lab& lab = *c_.labs[l];
+    std::map<std::string, std::string> files;
+    std::string missing, key = lab.id;
+    for (const std::string& f : lab.student_files) {
+      const auto found = g.sub.files.find(f);
+      if (found == g.sub.files.end()) {
+        missing += (missing.empty() ? "" : ", ") + f;
+        continue;
+      }
+      files[f] = found->second;
+      std::ifstream in(found->second, std::ios::binary);
+      std::ostringstream text;
+      text << in.rdbuf();
+      key += '\0' + f + '\0' + std::to_string(text.str().size()) + '\0' + text.str();
+    }
+    if (!missing.empty()) {
+      std::lock_guard<std::mutex> lock(g.mutex);
+      const std::string why = "The submission has no " + missing + ".";
+      close_lab(g.grade.labs[l], LabGrade::State::missing, why, "not graded: " + why);
+      return;
+    }
+    std::shared_ptr<BuildCache::Entry> entry;
+    std::string folder;
+    {
+      std::lock_guard<std::mutex> lock(cache_.mutex);
+      auto& found = cache_.entries[key];
+      if (found && !found->done) {  // the same files are being built: their steps follow that build
+        {
+          std::lock_guard<std::mutex> held(g.mutex);
+          ++g.open;
+        }
+        found->waiting.push_back([this, i, l](const BuildCache::Entry& e) { task(i, [&] { built(i, l, e); }); });
+        return;
+      }
+      if (!found) {
+        found = std::make_shared<BuildCache::Entry>();
+        folder = c_.work + "/builds/" + std::to_string(cache_.folders++);
+      }
+      entry = found;
+    }
+    if (!folder.empty()) {
+      const auto start = std::chrono::steady_clock::now();
+      try {
+        fs::create_directories(folder);
+        fs::permissions(folder, fs::perms(0711));
+        entry->build = build_lab(c_.paths, lab, c_.recipes.at(&lab), files, folder, c_.sandbox);
+      } catch (const std::exception& e) {
+        entry->build = LabBuild{};
+        entry->build.errors = std::string("the grader could not build it: ") + e.what();
+      }
+      entry->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::vector<std::function<void(const BuildCache::Entry&)>> waiting;
+      {
+        std::lock_guard<std::mutex> lock(cache_.mutex);
+        entry->done = true;
+        waiting.swap(entry->waiting);
+      }
+      for (auto& then : waiting) then(*entry);
+    }
+    built(i, l, *entry);
+  }
+
+  void built(std::size_t i, std::size_t l, const BuildCache::Entry& e) {
+    Graded& g = *all_[i];
+    {
+      std::lock_guard<std::mutex> lock(g.mutex);
+      LabGrade& lab = g.grade.labs[l];
+      lab.build_seconds = e.seconds;
+      if (!e.build.ok) {
+        close_lab(lab, LabGrade::State::not_built, e.build.errors,
+                  "does not compile: every step of this lab scores 0 until it does.");
+        return;
+      }
+      lab.state = LabGrade::State::graded;
+    }
+    for (std::size_t k = 0; k < g.grade.labs[l].steps.size(); ++k)
+      add(i, {i, l + 1, k + 1}, [this, i, l, k, binary = e.build.binary] { step(i, l, k, binary); });
+  }
+
+  void step(std::size_t i, std::size_t l, std::size_t k, const std::string& binary) {
+    Graded& g = *all_[i];
+    const Lab& lab = *c_.labs[l];
+    const Step& step = lab.steps[k];
+    const Programs programs{c_.paths.build + "/" + lab.judge_binary(), binary};
+    StepResult r;
+    try {
+      r = run_step(programs, lab, step, graded_step_options(g.folders[l], c_));
     } catch (const std::exception& e) {
-      r.step = s.step;
+      r.step = &step;
       r.status = Status::crashed;
       r.detail = std::string("the grader could not run it: ") + e.what();
     }
+    StepGrade s;
+    s.step = &step;
+    s.graded = true;
     s.status = r.status;
     s.seconds = r.run.seconds;
-    s.score = step_score(*s.step, r);
+    s.score = step_score(step, r);
     s.ambiguous = r.ambiguous;
     for (const QueryResult& q : r.queries) s.cases += q.cases;
-    s.feedback = feedback(r, lab, programs, c);
-  });
-
-  for (std::size_t i = 0; i < n; ++i) {
-    for (const StepGrade& s : g.labs[i].steps) g.labs[i].score += s.score;
-    g.score += g.labs[i].score;
-    g.max_score += g.labs[i].max_score;
-    std::error_code ignored;
-    fs::remove_all(folders[i], ignored);  // its objects and answer program
+    s.feedback = feedback(r, lab, programs, c_);
+    s.why = first_why(r);
+    std::lock_guard<std::mutex> lock(g.mutex);
+    g.grade.labs[l].steps[k] = s;
   }
-  g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return g;
-}
 
-// A grade of 0 for a submission the grader itself could not grade (a file system error),
-// with the same labs as every other, so that class.csv keeps its columns.
-SubmissionGrade ungraded(const std::string& path, const std::string& name, const std::string& why, const Context& c) {
-  SubmissionGrade g;
-  g.name = name;
-  g.source = path;
-  g.error = why;
-  for (const Lab* lab : c.labs) {
-    LabGrade l;
-    l.lab = lab;
-    l.state = LabGrade::State::not_built;
-    l.build_output = why;
-    for (const Step& step : lab->steps) {
-      StepGrade s;
-      s.step = &step;
-      s.feedback = why;
-      l.steps.push_back(s);
-      l.max_score += step.points;
+  void finish(Graded& g) {
+    SubmissionGrade& s = g.grade;
+    s.score = 0;
+    for (LabGrade& l : s.labs) {
+      l.score = 0;
+      for (const StepGrade& step : l.steps) l.score += step.score;
+      s.score += l.score;
     }
-    g.max_score += l.max_score;
-    g.labs.push_back(l);
+    s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - g.start).count();
+    std::error_code ignored;
+    for (const std::string& folder : g.folders) fs::remove_all(folder, ignored);
+    finished_(g);
   }
-  return g;
-}
+
+  Context& c_;
+  std::vector<std::unique_ptr<Graded>>& all_;
+  std::function<void(Graded&)> finished_;
+  WorkQueue queue_;
+  BuildCache cache_;
+};
 
 // The class's own files in OUT, beside a folder per submission.
-const std::vector<std::string> kClassFiles = {"class.csv"};
+const std::vector<std::string> kClassFiles = class_files();
 
 // Removes the scratch root however grading ends.
 struct RemovedAtEnd {
@@ -307,11 +445,17 @@ struct RemovedAtEnd {
   }
 };
 
+// A whole file or nothing: written beside, then renamed over the old one, so that a
+// reader (Gradescope after a time-out) never finds half of it.
 void write_file(const fs::path& path, const std::string& text) {
   fs::create_directories(path.parent_path());
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
+  const fs::path part = path.string() + ".part";
+  {
+    std::ofstream out(part, std::ios::binary);
+    out << text;
+    if (!out) throw std::runtime_error("cannot write " + path.string());
+  }
+  fs::rename(part, path);
 }
 
 void write_results(const SubmissionGrade& g, const fs::path& folder, const Context& c) {
@@ -319,6 +463,28 @@ void write_results(const SubmissionGrade& g, const fs::path& folder, const Conte
   write_file(folder / "junit.xml", junit_xml(g));
   write_file(folder / "report.txt", table(g, c.run));
   write_file(folder / "steps.tsv", steps_tsv(g));
+}
+
+// Workers and each step's memory within the envelope this process runs in. Each worker
+// runs one compile or one step at a time (a compile of a lab's file takes about 300 MB,
+// a step's program what the student's code allocates); the grader and the kit's judges
+// keep the rest.
+void fit_envelope(Context& c, const Envelope& envelope) {
+  constexpr std::size_t kKeptMb = 256, kWorkerMb = 512;
+  c.jobs = c.options.jobs > 0 ? c.options.jobs : std::max(1, int(std::lround(envelope.cpus)));
+  c.step_memory_mb = c.options.memory_mb;
+  if (envelope.memory_bytes > 0) {
+    const std::size_t usable = (envelope.memory_bytes >> 20) > kKeptMb + 64 ? (envelope.memory_bytes >> 20) - kKeptMb : 64;
+    if (c.options.jobs <= 0) c.jobs = std::max(1, std::min<int>(c.jobs, int(usable / kWorkerMb)));
+    c.step_memory_mb = std::max<std::size_t>(64, std::min(c.step_memory_mb, usable / std::size_t(c.jobs)));
+  }
+  std::ostringstream limits;
+  limits << points(c.options.timeout) << " s and " << c.step_memory_mb << " MB per step; " << c.jobs
+         << (c.jobs == 1 ? " worker" : " workers") << " in " << envelope.description;
+  c.run.limits = limits.str();
+  if (c.step_memory_mb < c.options.memory_mb)
+    std::cerr << "labkit grade: each step may use " << c.step_memory_mb << " MB, not " << c.options.memory_mb
+              << ": the grader runs in " << envelope.description << "\n";
 }
 
 }  // namespace
@@ -329,7 +495,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
     return 2;
   }
   const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
-  Context c{paths, options, {}, {}, Sandbox::make(options.sandbox, {paths.source + "/common", paths.build}, paths.source), {}, {}};
+  Context c{paths, options, {}, {}, Sandbox::make(options.sandbox, {paths.source + "/common", paths.build}, paths.source), {}, {}, 1, options.memory_mb};
   for (const Lab& lab : manifest.labs) {
     const bool wanted = options.labs.empty() ||
                         std::find_if(options.labs.begin(), options.labs.end(), [&](const std::string& id) {
@@ -360,58 +526,68 @@ int grade(const Paths& paths, const GradeOptions& options) {
   c.run.seed_kind = options.seed.empty() ? "public" : "secret";
   c.run.cases = options.cases;
   c.run.sandbox = c.sandbox.description();
+  fit_envelope(c, own_envelope());
   if (options.seed.empty())
     std::cerr << "labkit grade: no secret seed (--seed or LABKIT_GRADING_SEED): grading on the public cases, "
                  "which students can see and hard-code\n";
   else if (options.seed.size() < 8)
     std::cerr << "labkit grade: a secret seed this short can be guessed; use a long phrase\n";
 
-  char work_template[] = "/tmp/labkit-grade.XXXXXX";
-  if (!mkdtemp(work_template)) throw std::runtime_error("cannot make a scratch folder in /tmp");
+  // The scratch root: in $TMPDIR when it is set, as for any program, else in /tmp.
+  const char* tmp = std::getenv("TMPDIR");
+  std::string work_template = std::string(tmp && *tmp == '/' ? tmp : "/tmp") + "/labkit-grade.XXXXXX";
+  if (!mkdtemp(work_template.data())) throw std::runtime_error("cannot make a scratch folder in " + work_template);
   c.work = work_template;
   const RemovedAtEnd scratch{c.work};
   fs::permissions(c.work, fs::perms(0711));
 
-  const std::vector<std::string>& submissions = found.paths;
-  std::vector<std::string> names;
-  for (const std::string& path : submissions) names.push_back(submission_name(path));
   const bool single = !found.a_class;
-  const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
-  // Several submissions share the processes out one each; one submission uses them all.
-  const int outer = std::min<int>(jobs, int(submissions.size()));
-  const int inner = std::max(1, jobs / outer);
+  std::vector<std::unique_ptr<Graded>> all;
+  for (std::size_t i = 0; i < found.paths.size(); ++i) {
+    all.push_back(std::make_unique<Graded>());
+    all.back()->path = found.paths[i];
+    all.back()->name = submission_name(found.paths[i]);
+    all.back()->work = c.work + "/" + std::to_string(i);
+  }
+  const auto folder_of = [&](const Graded& g) { return single ? fs::path(options.out) : fs::path(options.out) / g.name; };
 
-  std::vector<SubmissionGrade> grades(submissions.size());
+  std::vector<SubmissionGrade> grades(all.size());
   std::mutex print;
-  std::atomic<bool> trouble{false};  // the grader's own: a submission it could not grade, results it could not write
+  std::atomic<bool> trouble{false};  // the grader's own: results it could not write
   const auto start = std::chrono::steady_clock::now();
-  // One submission's trouble is its own: an exception here would end every grade at once.
-  parallel_for(submissions.size(), outer, [&](std::size_t i) {
-    try {
-      grades[i] = grade_one(submissions[i], names[i], c.work + "/" + std::to_string(i), inner, c);
-    } catch (const std::exception& e) {
-      grades[i] = ungraded(submissions[i], names[i], std::string("the grader could not grade it: ") + e.what(), c);
-      trouble = true;
-    }
-    make_presentable(grades[i], options.seed);
-    const fs::path folder = single ? fs::path(options.out) : fs::path(options.out) / names[i];
+  Grader grader(c, all, [&](Graded& g) {
+    make_presentable(g.grade, options.seed);
     std::string unwritten;
     try {
-      write_results(grades[i], folder, c);
+      write_results(g.grade, folder_of(g), c);
     } catch (const std::exception& e) {
       unwritten = e.what();
       trouble = true;
     }
     std::lock_guard<std::mutex> lock(print);
     if (!unwritten.empty()) std::cerr << "labkit grade: " << safe_text(unwritten) << "\n";
-    std::cout << (single ? "" : "\n") << table(grades[i], c.run) << std::flush;
+    std::cout << (single ? "" : "\n") << table(g.grade, c.run) << std::flush;
   });
+  // results.json as each step ends: a time-out of the whole run keeps every finished step.
+  grader.progress = [&](Graded& g) {
+    std::lock_guard<std::mutex> lock(g.writing);
+    SubmissionGrade now = Grader::so_far(g);
+    make_presentable(now, options.seed);
+    try {
+      write_file(folder_of(g) / "results.json", gradescope_results(now, c.run).dump(2) + "\n");
+    } catch (const std::exception&) {  // said once, when the final write fails too
+    }
+  };
+  grader.run();
+  for (std::size_t i = 0; i < all.size(); ++i) grades[i] = all[i]->grade;
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!single) {
     write_file(fs::path(options.out) / "class.csv", class_csv(grades));
+    const std::string page = write_class_page(grades, c.run, options.out, seconds, c.work + "/plots");
     std::cout << "\n" << term::bold("Class") << ": " << grades.size() << " submissions graded in " << points(seconds)
-              << " s; " << (fs::path(options.out) / "class.csv").string() << "\n";
+              << " s with " << c.jobs << (c.jobs == 1 ? " worker" : " workers") << "; "
+              << (fs::path(options.out) / "class.csv").string() << ", " << page << "\n";
   } else {
     std::cout << "\nResults: " << (fs::path(options.out) / "results.json").string() << ", junit.xml, report.txt, steps.tsv\n";
   }

@@ -23,8 +23,8 @@ namespace runner {
 // Random cases per query when grading. Students' checks run 1,000 per query on the
 // public seed (enough to catch every classic mistake of tests/*.mutants.cmake, and
 // quick after each save); grading draws three times as many from the secret seed, so
-// that every generator family comes up hundreds of times, and a class still grades in
-// minutes. A student rehearses it with ./labkit check --cases 3000 --seed anything.
+// that every generator family comes up hundreds of times, and a submission still grades
+// in about half a minute. A student rehearses it with ./labkit check --cases 3000 --seed anything.
 constexpr int kGradingCases = 3000;
 
 struct GradeOptions {
@@ -32,25 +32,27 @@ struct GradeOptions {
   std::string out = "grades";
   std::string seed;           // the secret seed; "" grades with the public one (and says so)
   std::vector<std::string> labs;  // empty: every lab the kit has
-  int jobs = 0;               // processes at once (0: one per core)
+  int jobs = 0;               // processes at once (0: what the CPU and memory envelope allows)
   int cases = kGradingCases;  // random cases per query
   double timeout = 60;        // seconds per step
-  std::size_t memory_mb = 2048;  // address space per step
+  std::size_t memory_mb = 2048;  // address space per step (less when the envelope is smaller)
   std::string sandbox = "auto";  // auto, bubblewrap, landlock or none (sandbox.h)
 };
 
 struct StepGrade {
   const Step* step = nullptr;
+  bool graded = false;  // false until its run ends (results.json is written as steps end)
   Status status = Status::not_built;
   double score = 0;
   int cases = 0, ambiguous = 0;
   double seconds = 0;    // the step's process, wall clock
   std::string feedback;  // what the student reads: never the seed
+  std::string why;       // a failing step's first failure: the rule it broke, then the numbers
 };
 
 struct LabGrade {
   const Lab* lab = nullptr;
-  enum class State { graded, missing, not_built } state = State::graded;
+  enum class State { pending, graded, missing, not_built } state = State::pending;
   std::string build_output;  // compiler errors, or why the file is missing
   double build_seconds = 0;  // compile, audit and link, wall clock
   std::vector<StepGrade> steps;

@@ -48,12 +48,12 @@ int main(int argc, char** argv) {
   grade_command->add_option("submissions", grade.submissions, "The submissions")->required();
   grade_command->add_option("--out", grade.out, "Where the results go (default: ./grades)");
   grade_command->add_option("--seed", grade.seed, "The secret seed (default: $LABKIT_GRADING_SEED)");
-  grade_command->add_option("--jobs", grade.jobs, "Processes at once (default: one per core)")->check(CLI::PositiveNumber);
+  grade_command->add_option("--jobs", grade.jobs, "Processes at once (default: the CPUs this process may use, its control group's quota included)")->check(CLI::PositiveNumber);
   grade_command->add_option("--labs", grade.labs, "Only these labs, e.g. --labs 01 02");
   grade_command->add_option("--cases", grade.cases, "Random cases per query (default " + std::to_string(runner::kGradingCases) + ")")
       ->check(CLI::Range(1, 100000000));
   grade_command->add_option("--timeout", grade.timeout, "Seconds allowed per step (default 60)")->check(CLI::PositiveNumber);
-  grade_command->add_option("--memory", grade.memory_mb, "Megabytes of memory per step (default 2048)")->check(CLI::Range(64, 1 << 20));
+  grade_command->add_option("--memory", grade.memory_mb, "Megabytes of memory per step (default 2048; less when the grader's control group has less for its workers)")->check(CLI::Range(64, 1 << 20));
   grade_command->add_option("--sandbox", grade.sandbox, "auto (bubblewrap, else Landlock), bubblewrap, landlock or none")
       ->check(CLI::IsMember({"auto", "bubblewrap", "landlock", "none"}));
 

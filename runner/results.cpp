@@ -13,9 +13,18 @@ std::string lab_state(const LabGrade& l) {
   switch (l.state) {
     case LabGrade::State::missing: return "not submitted";
     case LabGrade::State::not_built: return "does not compile";
+    case LabGrade::State::pending: return "not graded yet";
     case LabGrade::State::graded: break;
   }
   return "";
+}
+
+// A step the grader has not run yet: grading stopped first (a time-out of the whole run).
+const char* const kNotRunYet = "not graded: grading stopped before this step ran (a time-out of the whole run?)";
+
+std::string step_state(const LabGrade& l, const StepGrade& g) {
+  if (l.state != LabGrade::State::graded) return lab_state(l);
+  return g.graded ? status_word(g.status) : "not graded yet";
 }
 
 std::string lab_heading(const LabGrade& l) { return "Lab " + l.lab->id + "  " + l.lab->title; }
@@ -65,6 +74,7 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
   out << "Submission " << s.name << "   (" << s.source << ")\n";
   out << "  seed: " << run.seed_kind << ", " << (run.cases ? std::to_string(run.cases) : std::string("the default"))
       << " random cases per query; sandbox: " << run.sandbox << "\n";
+  if (!run.limits.empty()) out << "  limits: " << run.limits << "\n";
   if (!s.error.empty()) out << "  could not be read: " << s.error << "\n";
   for (const std::string& note : s.notes) out << "  note: " << note << "\n";
   for (const LabGrade& l : s.labs) {
@@ -73,8 +83,8 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
         << points(l.score) << " / " << points(l.max_score) << "\n";
     for (const StepGrade& g : l.steps)
       out << "    " << pad(std::to_string(g.step->number), 3) << pad(g.step->tag, 7) << pad(g.step->title, 44)
-          << pad(l.state == LabGrade::State::graded ? status_word(g.status) : lab_state(l), 20) << pad(points(g.score) + " / " + points(g.step->points), 10)
-          << (l.state == LabGrade::State::graded ? seconds_text(g.seconds) + " s" : "") << "\n";
+          << pad(step_state(l, g), 20) << pad(points(g.score) + " / " + points(g.step->points), 10)
+          << (l.state == LabGrade::State::graded && g.graded ? seconds_text(g.seconds) + " s" : "") << "\n";
   }
   out << "\n  " << pad("Total", 76) << points(s.score) << " / " << points(s.max_score) << "   (" << seconds_text(s.seconds)
       << " s)\n";
@@ -82,7 +92,7 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
     if (l.state != LabGrade::State::graded)
       out << "\n" << lab_heading(l) << ": " << lab_state(l) << "\n  " << term::indent(l.build_output, "  ") << "\n";
     for (const StepGrade& g : l.steps)
-      if (g.status != Status::passed && l.state == LabGrade::State::graded)
+      if (g.status != Status::passed && l.state == LabGrade::State::graded && g.graded)
         out << "\nLab " << l.lab->id << ", " << step_name(g) << "\n  " << term::indent(g.feedback, "  ") << "\n";
   }
   return out.str();
@@ -94,10 +104,14 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
   for (const LabGrade& l : s.labs) {
     const int lab_number = std::stoi(l.lab->id);
     const bool built = l.state == LabGrade::State::graded;
+    const std::string build_output = built ? "It compiles."
+                                     : l.state == LabGrade::State::pending
+                                         ? "not graded: grading stopped before this lab was built (a time-out of the whole run?)"
+                                         : lab_state(l) + ".\n" + l.build_output;
     tests.push_back({{"name", "Lab " + l.lab->id + " " + l.lab->title + ": build"},
                      {"number", std::to_string(lab_number) + ".0"},
                      {"status", built ? "passed" : "failed"},
-                     {"output", built ? "It compiles." : lab_state(l) + ".\n" + l.build_output},
+                     {"output", build_output},
                      {"visibility", "visible"}});
     for (const StepGrade& g : l.steps)
       tests.push_back({{"name", "Lab " + l.lab->id + " " + step_name(g)},
@@ -105,7 +119,7 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
                        {"score", g.score},
                        {"max_score", g.step->points},
                        {"status", g.status == Status::passed ? "passed" : "failed"},
-                       {"output", g.feedback},
+                       {"output", g.graded ? g.feedback : std::string(kNotRunYet)},
                        {"tags", {"lab" + l.lab->id, g.step->tag}},
                        {"visibility", "visible"}});
     summary += "Lab " + l.lab->id + " " + l.lab->title + ": " + points(l.score) + " / " + points(l.max_score) +
@@ -113,7 +127,7 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
   }
   if (!s.error.empty()) summary = "The submission could not be read: " + s.error + "\n" + summary;
   for (const std::string& note : s.notes) summary += "Note: " + note + "\n";
-  nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}};
+  nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}, {"limits", run.limits}};
   if (run.cases > 0) extra["cases_per_query"] = run.cases;
   return {{"score", s.score}, {"execution_time", int(std::ceil(s.seconds))}, {"output", summary}, {"tests", tests},
           {"extra_data", extra}};
@@ -165,7 +179,7 @@ std::string steps_tsv(const SubmissionGrade& s) {
   for (const LabGrade& l : s.labs) {
     for (const StepGrade& g : l.steps)
       out += l.lab->id + "\t" + std::to_string(g.step->number) + "\t" + g.step->tag + "\t" +
-             (l.state == LabGrade::State::graded ? status_word(g.status) : lab_state(l)) + "\t" + points(g.score) + "\t" +
+             step_state(l, g) + "\t" + points(g.score) + "\t" +
              points(g.step->points) + "\t" + seconds_text(g.seconds) + "\n";
   }
   return out;

@@ -222,6 +222,96 @@ says bad_members_tar "labs/05_sphere_sweeps/sphere_sweeps.cpp is not a regular f
 # 4. Each student their own folder: the one called labs too.
 [ "$(wc -l <"$out/class.csv")" = "$(($(ls "$subs" | wc -l) + 1))" ] || fail "class.csv: one row per submission"
 
+# ---- the class page: where the class stands, in a browser from the folder -------------
+# It parses as HTML with each section; every link stays in the results folder and finds
+# its report; every submission has its row; each plot is an SVG beside the page (or, with
+# no gnuplot, the page says how to get one); the crashes, floods and compile errors are
+# listed; the two crashes (signals 11 and 6) are one concept; names are escaped text.
+python3 - "$out" "$(command -v gnuplot || true)" >"$work/page.log" 2>&1 <<'PY' || { cat "$work/page.log"; fail "class.html: see above"; }
+import html.parser, os, re, sys, urllib.parse
+out, gnuplot = sys.argv[1], sys.argv[2]
+text = open(os.path.join(out, "class.html"), encoding="utf-8").read()
+class Page(html.parser.HTMLParser):
+    def __init__(self):
+        super().__init__()
+        self.links, self.images, self.headings, self.rows, self.cell, self.cells = [], [], [], [], None, []
+    def handle_starttag(self, tag, attrs):
+        a = dict(attrs)
+        if tag == "a": self.links.append(a["href"])
+        if tag == "img": self.images.append(a["src"])
+        if tag in ("h2", "td", "th"): self.cell = ""
+        if tag == "script": raise SystemExit("the page has a script")
+    def handle_data(self, data):
+        if self.cell is not None: self.cell += data
+    def handle_endtag(self, tag):
+        if tag == "h2": self.headings.append(self.cell)
+        if tag in ("td", "th"): self.cells.append(self.cell)
+        if tag == "tr": self.rows.append(" | ".join(self.cells)); self.cells = []
+        if tag in ("h2", "td", "th"): self.cell = None
+page = Page()
+page.feed(text)
+problems = []
+for heading in ["Totals", "Each step", "Concepts most often broken", "Crashed, timed out or not compiled", "Submissions"]:
+    if heading not in page.headings: problems.append(f"no section '{heading}'")
+root = os.path.realpath(out)
+for href in page.links:
+    target = os.path.realpath(os.path.join(out, urllib.parse.unquote(href)))
+    if not target.startswith(root + os.sep) or not os.path.isfile(target): problems.append(f"link {href} finds no report")
+linked = {urllib.parse.unquote(h).split("/")[0] for h in page.links}
+for s in sorted(d for d in os.listdir(out) if os.path.isdir(os.path.join(out, d))):
+    if s not in linked: problems.append(f"{s} has no row linked to its report")
+if gnuplot:
+    if len(page.images) != 2: problems.append(f"{len(page.images)} plots, expected 2 (totals, steps)")
+    for src in page.images:
+        svg = open(os.path.join(out, src), encoding="utf-8").read()
+        if "<svg" not in svg or "</svg>" not in svg: problems.append(f"{src} is not an SVG")
+elif "apt-get install gnuplot-nox" not in text: problems.append("no plots and no word on gnuplot")
+def row_with(*words):
+    return any(all(w in r for w in words) for r in page.rows)
+for name, what in [("crafted_inflight", "too much output"), ("faked_inflight", "too much output"),
+                   ("latin1_compile", "does not compile"), ("crash", "crashed during a call")]:
+    if not row_with(name, what): problems.append(f"the trouble list has no '{what}' row for {name}")
+if not any(r.startswith("2 | ") and "your code crashed during this call (killed by signal #)" in r for r in page.rows):
+    problems.append("the two crashes are not one concept of 2 submissions")
+count = len([d for d in os.listdir(out) if os.path.isdir(os.path.join(out, d))])
+if f"<p>{count} submissions; mean" not in text: problems.append("the totals do not count every submission")
+print("\n".join(problems) or "class page: fine")
+sys.exit(1 if problems else 0)
+PY
+
+# ---- results.json as steps end: a run stopped midway keeps every finished step ---------
+# The stand-in judge of step 4 never ends; once it starts, the grader is killed as a
+# global time-out would. Steps 1 to 3 ran first (one worker) and keep their points.
+stopping="$work/stopping_build"
+stand_in_kit "$stopping"
+marker="$work/step4.pid"
+printf '#!/bin/sh\ncase "$1" in %s) echo $$ >"%s"; exec sleep 600 ;; esac\nexec "%s" "$@"\n' \
+  "'[lab02][step4]'" "$marker" "$build/test_02_segment_triangle" >"$stopping/test_02_segment_triangle"
+chmod 755 "$stopping/test_02_segment_triangle"
+stopped_out="$work/stopped_results"
+mkdir -p "$work/tmp"
+TMPDIR="$work/tmp" LABKIT_BUILD_DIR="$stopping" "$runner" grade "$subs/passing" --out "$stopped_out" --seed "$secret" \
+  --labs 02 --jobs 1 --timeout 900 --sandbox "$sandbox" >"$work/stopped.log" 2>&1 &
+grader=$!
+for ((k = 0; k < 1200; k++)); do [ -s "$marker" ] && break; sleep 0.1; done
+kill -KILL $grader 2>/dev/null
+wait $grader 2>/dev/null
+[ -s "$marker" ] && kill -KILL "$(cat "$marker")" 2>/dev/null
+python3 - "$stopped_out/results.json" <<'PY' || { cat "$work/stopped.log"; fail "results.json after a stop: see above"; }
+import json, sys
+r = json.load(open(sys.argv[1]))
+steps = [t for t in r["tests"] if "max_score" in t]
+problems = []
+for t in steps[:3]:
+    if t["score"] != t["max_score"]: problems.append(f"{t['name']}: {t['score']} of {t['max_score']}, expected full marks")
+for t in steps[3:]:
+    if t["score"] != 0 or "grading stopped before this step ran" not in t["output"]:
+        problems.append(f"{t['name']}: not marked as not graded")
+if abs(r["score"] - sum(t["max_score"] for t in steps[:3])) > 1e-9: problems.append(f"total {r['score']}")
+print("\n".join(problems) or "stopped run: fine")
+sys.exit(1 if problems else 0)
+PY
+
 # ---- a broken kit: reports the grader must survive -----------------------------------
 # The student's code cannot reach the report, but a kit's bug can still spoil it: this
 # kit's judge leaves another bad report at each step (JSON of other shapes or cut short,
@@ -262,11 +352,11 @@ if grep -rhoE "replay +\./labkit [^\\]*" "$out" "$broken_out" | grep touch; then
 [ -e "$owned" ] && fail "a crafted replay command ran"
 # Every output is valid UTF-8 without a control character but newline and tab (and
 # JSON, XML and the schema agree).
-for file in "$out"/class.csv "$out"/*/* "$broken_out"/*; do
+for file in "$out"/class.csv "$out"/class.html "$out"/*/* "$broken_out"/*; do
   iconv -f UTF-8 -t UTF-8 "$file" >/dev/null 2>&1 || fail "$file is not valid UTF-8"
   if LC_ALL=C grep -q $'[\x01-\x08\x0b-\x1f\x7f]' "$file"; then fail "$file holds a control character"; fi
 done
-"$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json "$broken_out"/results.json >"$work/schema.log" ||
+"$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json "$broken_out"/results.json "$stopped_out"/results.json >"$work/schema.log" ||
   { cat "$work/schema.log"; fail "a results.json does not match the schema"; }
 python3 -c 'import sys, xml.etree.ElementTree as T
 for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml "$broken_out"/junit.xml || fail "a junit.xml is not well-formed XML"

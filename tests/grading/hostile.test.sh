@@ -344,6 +344,11 @@ grep -q "exit()" "$out/exit_0/report.txt" || fail "exit_0: the report does not m
 grep -q "defines main()" "$out/own_main/report.txt" || fail "own_main: the report does not say it defines main()"
 grep -q "constructor priority" "$out/early_constructor/report.txt" || fail "early_constructor: the report does not say why"
 grep -q "No such file" "$out/include_reference/report.txt" || fail "include_reference: the reference was visible to the compiler"
+# The class page lists what cost more than a wrong answer, in the kit's own words.
+for row in "segfault:crashed during a call" "compile_error:does not compile" "exit_0:crashed during a call" "print_100mb:too much output"; do
+  grep -qF "${row%%:*}</a></td><td>${row#*:}</td>" "$out/class.html" ||
+    fail "class.html: ${row%%:*} is not listed as '${row#*:}'"
+done
 # Untrusted text: invalid UTF-8 as U+FFFD, terminal controls shown, never obeyed.
 grep -qF $'r\u00e9sultat \ufffd \\x1b[2J\\x1b]0;owned\\x07' "$out/latin1_crash/report.txt" || fail "latin1_crash: its last output is not shown as safe text"
 grep -qF $'#error caf\ufffd \\x1b[2J' "$out/latin1_compile/report.txt" || fail "latin1_compile: the compile error is not shown as safe text"
