@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <regex>
+#include <cctype>
 #include <set>
 #include <sstream>
 
@@ -163,12 +163,43 @@ struct Trouble {
 std::vector<std::string> class_files() { return {"class.csv", kClassPage, "class-totals.svg", "class-steps.svg"}; }
 
 std::string concept_of(const std::string& why) {
-  std::string rule = why.substr(0, why.find('\n'));
-  static const std::regex number(R"([-+]?(\d+\.?\d*|\.\d+)([eE][-+]?\d+)?|[-+]?\binf\b|\bnan\b)");
-  rule = std::regex_replace(rule, number, "#");
-  // What the rule was about, not which one: "input triangle #: " or "triangle #: ".
-  static const std::regex prefix(R"(^[^:]{0,30}#[^:]{0,10}: )");
-  for (int k = 0; k < 3 && std::regex_search(rule, prefix); ++k) rule = std::regex_replace(rule, prefix, "", std::regex_constants::format_first_only);
+  const std::string line = why.substr(0, why.find('\n'));
+  // Each number becomes "#"; a name with digits in it (n1, v0, t_2) stays as it is.
+  std::string rule;
+  for (std::size_t i = 0; i < line.size();) {
+    const auto at = [&](std::size_t k) { return k < line.size() ? line[k] : '\0'; };
+    const auto digit = [&](std::size_t k) { return std::isdigit(static_cast<unsigned char>(at(k))) != 0; };
+    const auto word = [&](std::size_t k) { return std::isalnum(static_cast<unsigned char>(at(k))) || at(k) == '_'; };
+    if (std::isalpha(static_cast<unsigned char>(at(i))) || at(i) == '_') {
+      std::size_t end = i;
+      while (word(end)) ++end;
+      const std::string name = line.substr(i, end - i);
+      rule += name == "inf" || name == "nan" ? "#" : name;
+      i = end;
+    } else if (digit(i) || ((at(i) == '-' || at(i) == '+' || at(i) == '.') && (digit(i + 1) || (at(i + 1) == '.' && digit(i + 2))))) {
+      std::size_t end = i + 1;
+      while (digit(end) || at(end) == '.') ++end;
+      if ((at(end) == 'e' || at(end) == 'E') && (digit(end + 1) || ((at(end + 1) == '-' || at(end + 1) == '+') && digit(end + 2)))) {
+        end += 2;
+        while (digit(end)) ++end;
+      }
+      rule += '#';
+      i = end;
+    } else {
+      rule += line[i++];
+    }
+  }
+  // What the rule was about, not which one: "input triangle #: " or "triangle #: " (a
+  // few words naming one thing by its number) goes.
+  for (int k = 0; k < 3; ++k) {
+    const std::size_t colon = rule.find(": ");
+    if (colon == std::string::npos || colon > 40) break;
+    const std::string prefix = rule.substr(0, colon);
+    const bool names_one = prefix.size() > 2 && prefix.compare(prefix.size() - 2, 2, " #") == 0 &&
+                           prefix.find_first_not_of("abcdefghijklmnopqrstuvwxyz_ ") == prefix.size() - 1;
+    if (!names_one) break;
+    rule.erase(0, colon + 2);
+  }
   if (rule.size() > 160) rule = rule.substr(0, 157) + "...";
   return rule;
 }
@@ -236,7 +267,7 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
   for (const SubmissionGrade& s : all)
     for (const LabGrade& l : s.labs)
       for (const StepGrade& step : l.steps) {
-        if (step.why.empty()) continue;
+        if (step.why.empty() || !call_trouble(step).empty()) continue;  // listed with the crashes
         const std::string rule = concept_of(step.why);
         Concept& c = concepts[l.lab->id + "." + std::to_string(step.step->number) + "\n" + rule];
         c.lab = l.lab->id + " " + l.lab->title;
@@ -249,7 +280,8 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
   for (const auto& [key, c] : concepts) ranked.push_back(&c);
   std::stable_sort(ranked.begin(), ranked.end(), [](const Concept* a, const Concept* b) { return a->who.size() > b->who.size(); });
   body << "<h2>Concepts most often broken</h2>\n<p>A failing step's first failure names the rule the answer broke; "
-          "the same rule on other numbers counts as one concept. The most common first.</p>\n";
+          "the same rule on other numbers counts as one concept. The most common first; calls that crashed, "
+          "did not finish or ran out of memory are in the next section.</p>\n";
   if (ranked.empty()) {
     body << "<p>None: no step failed on a wrong answer.</p>\n";
   } else {
@@ -261,7 +293,7 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
     body << "</table>\n";
   }
 
-  // What cost more than a wrong answer.
+  // What cost more than a wrong answer: one row per submission, lab and kind, with its steps.
   std::vector<Trouble> trouble;
   for (const SubmissionGrade& s : all) {
     if (!s.error.empty()) trouble.push_back({s.name, "could not be read", "", s.error});
@@ -269,11 +301,19 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
       if (l.state == LabGrade::State::not_built)
         trouble.push_back({s.name, "does not compile", "lab " + l.lab->id, l.build_output.substr(0, l.build_output.find('\n'))});
       if (l.state != LabGrade::State::graded) continue;
+      std::map<std::string, Trouble> kinds;  // by kind, in this lab
       for (const StepGrade& step : l.steps) {
-        const std::string where = "lab " + l.lab->id + " step " + std::to_string(step.step->number);
-        if (abnormal(step.status)) trouble.push_back({s.name, status_word(step.status), where, what_happened(step)});
-        else if (!call_trouble(step).empty())
-          trouble.push_back({s.name, call_trouble(step), where, step.why.substr(0, std::min<std::size_t>(160, step.why.find('\n')))});
+        std::string kind = abnormal(step.status) ? status_word(step.status) : call_trouble(step);
+        if (kind.empty()) continue;
+        auto [it, fresh] = kinds.try_emplace(kind, Trouble{s.name, kind, "lab " + l.lab->id + " step", ""});
+        it->second.where += (fresh ? " " : ", ") + std::to_string(step.step->number);
+        if (fresh)
+          it->second.what = abnormal(step.status) ? what_happened(step)
+                                                  : step.why.substr(0, std::min<std::size_t>(160, step.why.find('\n')));
+      }
+      for (auto& [kind, t] : kinds) {
+        if (t.where.find(',') != std::string::npos) t.where.replace(t.where.find(" step "), 6, " steps ");
+        trouble.push_back(t);
       }
     }
   }

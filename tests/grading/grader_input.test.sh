@@ -85,11 +85,16 @@ for chunk in iter(lambda: answerer.stdout.read1(65536), b""):
     sys.stderr.buffer.write(chunk)
     tail = (tail + chunk)[-600:]
 ended = answerer.wait()
+printed = tail.decode("utf-8", "replace")
+if ended == 0 and "WRONG " in printed:  # a wrong answer, with the number the code printed
+    x = printed.split("WRONG ")[1].split()[0]
+    write([query("segment_plane", 0, failure("random case", "in", x,
+          f"the answer is 0, not {x}: the point is off its plane by {x} (tolerance 1e-09)", "segment_plane:1,2,3"))])
+    sys.exit(1)
 if ended == 0:
     sys.exit(0)
 signal = -ended if ended < 0 else ended - 128
 how = f"killed by signal {signal}" if signal > 0 else f"it exited with status {ended}"
-printed = tail.decode("utf-8", "replace")
 write([query("segment_plane", 0, failure("random case", "in", "a crash",
       f"your code crashed during this call ({how})\nwhat it printed last:\n{printed}", "segment_plane:1,-2.5,1e+300,inf"))])
 sys.exit(1)
@@ -116,6 +121,9 @@ crafted="segment_plane:1' ; touch $owned ; '"
 forged='{"seed": "hidden", "cases_per_query": 1, "finished": true, "test_cases": [{"name": "t", "tags": [], "passed": false, "ended": true, "failures": [], "not_implemented": ""}], "queries": [{"test_case": "t", "query": "segment_plane", "kind": "random", "cases": 1, "passed": 0, "ambiguous": 0, "failed": 1, "not_implemented": "", "error": "", "failure": {"title": "t", "input": "i", "expected": "e", "got": "g", "why": "w", "replay": "'"$crafted"'", "shrinks": 0}}]}'
 
 student passing ': nothing to add'
+# Two wrong answers breaking one rule on other numbers: one concept on the class page.
+student wrong_small 'echo WRONG 3'
+student wrong_large 'echo WRONG -7.25e-3'
 # A crafted in-flight marker, then a crash: one call fails, and the judge names its case.
 student crash "echo \"LABKIT-INFLIGHT $crafted\"; kill -SEGV \$\$"
 # Accented text (the kept tail starts in the middle of it), a Latin-1 byte, terminal
@@ -226,7 +234,8 @@ says bad_members_tar "labs/05_sphere_sweeps/sphere_sweeps.cpp is not a regular f
 # It parses as HTML with each section; every link stays in the results folder and finds
 # its report; every submission has its row; each plot is an SVG beside the page (or, with
 # no gnuplot, the page says how to get one); the crashes, floods and compile errors are
-# listed; the two crashes (signals 11 and 6) are one concept; names are escaped text.
+# listed (crashed calls among them, not among the concepts); two wrong answers breaking
+# one rule on other numbers are one concept.
 python3 - "$out" "$(command -v gnuplot || true)" >"$work/page.log" 2>&1 <<'PY' || { cat "$work/page.log"; fail "class.html: see above"; }
 import html.parser, os, re, sys, urllib.parse
 out, gnuplot = sys.argv[1], sys.argv[2]
@@ -271,8 +280,10 @@ def row_with(*words):
 for name, what in [("crafted_inflight", "too much output"), ("faked_inflight", "too much output"),
                    ("latin1_compile", "does not compile"), ("crash", "crashed during a call")]:
     if not row_with(name, what): problems.append(f"the trouble list has no '{what}' row for {name}")
-if not any(r.startswith("2 | ") and "your code crashed during this call (killed by signal #)" in r for r in page.rows):
-    problems.append("the two crashes are not one concept of 2 submissions")
+if not any(r.startswith("2 | ") and "the answer is #, not #: the point is off its plane by # (tolerance #)" in r for r in page.rows):
+    problems.append("the two wrong answers are not one concept of 2 submissions")
+if any("your code crashed" in r and not r.startswith("crash") and not r.startswith("latin1_crash") for r in page.rows):
+    problems.append("a crash is listed among the concepts, not with the crashes")
 count = len([d for d in os.listdir(out) if os.path.isdir(os.path.join(out, d))])
 if f"<p>{count} submissions; mean" not in text: problems.append("the totals do not count every submission")
 print("\n".join(problems) or "class page: fine")
