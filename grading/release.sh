@@ -27,7 +27,7 @@ make_release() {
   cd "$ROOT"
   cp -p CMakeLists.txt CMakePresets.json labkit .gitignore "$out/"
   local folder
-  for folder in cmake common labs runner viewer handouts; do
+  for folder in cmake common labs runner viewer handouts .devcontainer; do
     [ -d "$folder" ] && cp -pR "$folder" "$out/"
   done
   mkdir -p "$out/tests" "$out/grading"
