@@ -48,24 +48,28 @@ function(labkit_student_code target)
   endif()
 endfunction()
 
+# labkit_implementation(target stem sources...): one implementation of lab `stem`'s
+# functions (the student's file, the reference, or a mutant) as a library: the lab's
+# header folder, the geometry types and the given functions, the kit's precompiled header.
+function(labkit_implementation target stem)
+  add_library(${target} STATIC ${ARGN})
+  target_include_directories(${target} PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
+  target_link_libraries(${target} PUBLIC labkit_geometry labkit_given)
+  target_precompile_headers(${target} REUSE_FROM labkit_geometry)
+endfunction()
+
 function(labkit_add_lab number name)
   set(stem ${number}_${name})
   set(lab lab${number})
 
   file(GLOB student_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/labs/${stem}/*.cpp")
-  add_library(${lab}_student STATIC ${student_sources})
-  target_include_directories(${lab}_student PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
-  target_link_libraries(${lab}_student PUBLIC labkit_geometry labkit_given)
-  target_precompile_headers(${lab}_student REUSE_FROM labkit_geometry)
+  labkit_implementation(${lab}_student ${stem} ${student_sources})
   labkit_student_code(${lab}_student)
 
   set(implementations student)
   if(EXISTS "${PROJECT_SOURCE_DIR}/solutions/${stem}")
     file(GLOB reference_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/solutions/${stem}/*.cpp")
-    add_library(${lab}_reference STATIC ${reference_sources})
-    target_include_directories(${lab}_reference PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
-    target_link_libraries(${lab}_reference PUBLIC labkit_geometry labkit_given)
-    target_precompile_headers(${lab}_reference REUSE_FROM labkit_geometry)
+    labkit_implementation(${lab}_reference ${stem} ${reference_sources})
     labkit_kit_code(${lab}_reference)
     list(APPEND implementations reference)
   endif()
@@ -204,10 +208,7 @@ function(labkit_mutant number name)
   set_property(DIRECTORY "${PROJECT_SOURCE_DIR}" APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${source}")
 
   set(library lab${number}_mutant_${M_NAME})
-  add_library(${library} STATIC "${output}")
-  target_include_directories(${library} PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
-  target_link_libraries(${library} PUBLIC labkit_geometry labkit_given)
-  target_precompile_headers(${library} REUSE_FROM labkit_geometry)
+  labkit_implementation(${library} ${stem} "${output}")
   target_compile_options(${library} PRIVATE -w)  # a mistake may well leave a variable unused
   labkit_kit_code(${library})
   set_target_properties(${library} PROPERTIES EXCLUDE_FROM_ALL FALSE)

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 
 namespace labkit::gen {
 
@@ -173,14 +174,9 @@ Mesh box_mesh(const Aabb& box) {
 }
 
 Mesh voxel_mesh(const std::vector<std::array<int, 3>>& cubes, const Vec3& origin, double scale) {
-  const std::map<std::array<int, 3>, bool> filled = [&] {
-    std::map<std::array<int, 3>, bool> f;
-    for (const auto& c : cubes) f[c] = true;
-    return f;
-  }();
+  const std::set<std::array<int, 3>> filled(cubes.begin(), cubes.end());
   Builder b;
-  for (const auto& [c, unused] : filled) {
-    (void)unused;
+  for (const auto& c : filled) {
     const Vec3 corner = origin + scale * Vec3(c[0], c[1], c[2]);
     for (int k = 0; k < 3; ++k)
       for (int side : {-1, 1}) {

@@ -1,4 +1,4 @@
-// The verdict harness every lab's tests use (LABS.md, "How a lab is checked").
+// The verdict harness every lab's tests use (handouts/checking.md says how a step is checked).
 //
 //   check::example("find_segment_triangle", "through the middle", input, judge);
 //   check::random_cases("find_segment_triangle", gen::segment_triangle(), judge);
@@ -114,7 +114,7 @@ double scale_of_input(const Input& input) {
   return std::max(s, 1e-300);
 }
 
-// The relative size of the perturbation that decides ambiguity (LABS.md: "about 1e-9").
+// The relative size of the perturbation that decides ambiguity (handouts/checking.md, "ambiguous").
 constexpr double kAmbiguity = 1e-9;
 
 // True when the exact answer changes for some input within kAmbiguity * S of this one,
