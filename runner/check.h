@@ -3,6 +3,7 @@
 // first failure with a command that replays exactly that case.
 #pragma once
 
+#include "kit.h"
 #include "manifest.h"
 #include "step.h"
 
@@ -10,11 +11,6 @@
 #include <vector>
 
 namespace runner {
-
-struct Paths {
-  std::string source;  // the kit's root
-  std::string build;   // its CMake build tree
-};
 
 struct CheckOptions {
   std::vector<std::string> labs;  // empty: all
@@ -29,9 +25,6 @@ struct CheckOptions {
 };
 
 int check(const Paths& paths, const CheckOptions& options);
-
-// The first compiler errors of a build log (24 lines), with `root/` taken out of paths.
-std::string first_errors(const std::string& log, const std::string& root);
 
 // Builds the targets, showing its progress on stderr; on failure returns the first
 // compiler errors, else "". keep_going: build all that can be built past a failure.

@@ -11,7 +11,7 @@
 // OUT/steps.tsv for one submission; OUT/<name>/... for each of several, and OUT/class.csv.
 #pragma once
 
-#include "check.h"
+#include "kit.h"
 #include "manifest.h"
 #include "step.h"
 

@@ -7,7 +7,7 @@
 // judges and oracle stay in the kit's own test program (common/protocol/answerer.h).
 #pragma once
 
-#include "check.h"
+#include "kit.h"
 #include "manifest.h"
 #include "sandbox.h"
 

@@ -1,5 +1,8 @@
 #include "mutant.h"
 
+#include "manifest.h"
+#include "step.h"
+
 #include "common/protocol/report.h"
 
 #include <algorithm>

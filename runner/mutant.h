@@ -7,7 +7,7 @@
 //     concept: it holds every word the mutant SAYS (case-insensitive).
 #pragma once
 
-#include "check.h"
+#include "kit.h"
 
 #include <string>
 #include <vector>
