@@ -2,6 +2,7 @@
 
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
+#include "common/splitmix.h"
 
 #include <malloc.h>
 
@@ -57,23 +58,8 @@ const Mesh& terrain(int triangles) {
   return *m;
 }
 
-namespace {
-
-struct SplitMix {
-  std::uint64_t state;
-  std::uint64_t next() {
-    std::uint64_t z = (state += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; }
-};
-
-}  // namespace
-
 std::vector<Segment> short_segments(const Mesh& mesh, int count, std::uint64_t seed) {
-  SplitMix random{seed};
+  SplitMix64 random{seed};
   Vec3 low = mesh.vertices[0], high = low;
   for (const Vec3& v : mesh.vertices) low = low.cwiseMin(v), high = high.cwiseMax(v);
   const double size = (high - low).norm();

@@ -1,7 +1,7 @@
 #include "06_spatial_trees.judge.h"
 
 #include "common/generators/generators.h"
-#include "common/generators/splitmix.h"
+#include "common/splitmix.h"
 #include "common/oracle/oracle.h"
 #include "common/harness/segment_doubt.h"
 
@@ -46,7 +46,7 @@ bool boxes_meet(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
 }
 
-using Random = gen::SplitMix64;  // the checker's trees and the efficiency segments
+using Random = SplitMix64;  // the checker's trees and the efficiency segments
 
 // ---- k-d trees: shape, cells, leaves ----------------------------------------------------------
 

@@ -3,7 +3,7 @@
 #include "06_spatial_trees.judge.h"
 #include "spatial_trees.h"
 
-#include "common/generators/splitmix.h"
+#include "common/splitmix.h"
 #include "common/given/segment_triangle.h"
 #include "common/oracle/oracle.h"
 
@@ -492,7 +492,7 @@ TEST_CASE("L06S7 OBB trees, dual traversal: random cases", "[lab06][step7][oracl
 
 namespace {
 
-using Random = gen::SplitMix64;  // the efficiency segments, the same on every machine
+using Random = SplitMix64;  // the efficiency segments, the same on every machine
 
 // The segments of an efficiency case, `short_ones` or long ones.
 std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short_ones, std::uint64_t seed) {

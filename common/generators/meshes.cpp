@@ -1,7 +1,7 @@
 #include "common/generators/meshes.h"
 
 #include "common/generators/generators.h"
-#include "common/generators/splitmix.h"
+#include "common/splitmix.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,6 @@
 #include "common/harness/check.h"
 #include "common/harness/report.h"
+#include "common/splitmix.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,12 +25,7 @@ std::uint64_t fnv1a(const std::string& text) {
   return h;
 }
 
-std::uint64_t splitmix(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ull;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ull;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
-  return x ^ (x >> 31);
-}
+std::uint64_t splitmix(std::uint64_t x) { return SplitMix64{x}.next(); }  // one step: a well-mixed hash of x
 
 // A seed may be a number or any text (an instructor's secret phrase).
 std::uint64_t parse_seed(const std::string& text) {

@@ -83,6 +83,7 @@
 #pragma once
 
 #include "common/geometry.h"
+#include "common/splitmix.h"
 
 #include <array>
 #include <cstdint>
@@ -97,19 +98,14 @@ namespace labkit::lab07 {
 // the seed and the draws before it, so an emitter is deterministic given its seed.
 class Random {
  public:
-  explicit Random(std::uint64_t seed = 1) : state_(seed) {}
-  std::uint64_t next() {
-    std::uint64_t z = (state_ += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-  }
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; }  // in [0, 1)
-  double uniform(double low, double high) { return low + (high - low) * uniform(); }
-  std::uint64_t state() const { return state_; }  // Random(r.state()) goes on as r would
+  explicit Random(std::uint64_t seed = 1) : mix_{seed} {}
+  std::uint64_t next() { return mix_.next(); }
+  double uniform() { return mix_.uniform(); }  // in [0, 1)
+  double uniform(double low, double high) { return mix_.uniform(low, high); }
+  std::uint64_t state() const { return mix_.state; }  // Random(r.state()) goes on as r would
 
  private:
-  std::uint64_t state_;
+  SplitMix64 mix_;  // common/splitmix.h
 };
 
 struct Particle {

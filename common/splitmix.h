@@ -1,11 +1,13 @@
 #pragma once
 // splitmix64 (Steele, Lea and Flood, 2014): a tiny, portable stream of random numbers
-// from a seed, the same on every machine and compiler. For inputs that must be fixed by
-// a number of their own (meshes drawn from a seed, the efficiency segments, the
-// checker's trees), apart from RapidCheck's random cases.
+// from a seed, the same on every machine and compiler. The kit's one definition: lab 07's
+// emitters draw from it (labkit::lab07::Random), the harness mixes seeds with it, and
+// inputs that must be fixed by a number of their own use it (meshes drawn from a seed,
+// the efficiency segments, the checker's trees, the benchmarks' inputs), apart from
+// RapidCheck's random cases.
 #include <cstdint>
 
-namespace labkit::gen {
+namespace labkit {
 
 struct SplitMix64 {
   std::uint64_t state;
@@ -20,4 +22,4 @@ struct SplitMix64 {
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }  // [lo, hi)
 };
 
-}  // namespace labkit::gen
+}  // namespace labkit
