@@ -374,7 +374,6 @@ int App::run(GLFWwindow* window) {
     }
     break;
   }
-  (void)t0;
   return 0;
 }
 

@@ -114,8 +114,7 @@ Box grid_box(Grid g) {
 }
 
 // A dyadic fraction in [-1, 1] (in eighths) of each of the box's half extents.
-Vec3 local_point(Grid g, const Box& box, int bound = 8) {
-  (void)g;
+Vec3 local_point(const Box& box, int bound = 8) {
   Vec3 p = box.center;
   for (int k = 0; k < 3; ++k) p += (*rc::gen::inRange(-bound, bound + 1) / 8.0) * box.half_extents[k] * box.axes.col(k);
   return p;
@@ -196,7 +195,7 @@ BoxPair corner_contact(Grid g) {
   b.axes = related_axes(a.axes, g.exact);
   const int k = *rc::gen::inRange(0, 3);
   const Vec3 n = (*rc::gen::element(-1.0, 1.0)) * a.axes.col(k);
-  Vec3 p = local_point(g, a);
+  Vec3 p = local_point(a);
   p += (a.half_extents[k] - a.axes.col(k).dot(p - a.center) * n.dot(a.axes.col(k))) * n;  // onto the face
   const double size = std::max(a.half_extents.maxCoeff(), b.half_extents.maxCoeff()) + g.s;
   b.center = p + gap(g, size, reach(a, size)) * n - extreme_toward(b, n);
@@ -223,7 +222,7 @@ BoxPair nested(Grid g) {
   if (*rc::gen::inRange(0, 2) == 0) {
     b.axes = related_axes(a.axes, g.exact);
     for (int k = 0; k < 3; ++k) b.half_extents[k] = a.half_extents.minCoeff() / (g.exact ? 2 : 4);
-    b.center = local_point(g, a, 2);
+    b.center = local_point(a, 2);
   }
   return {a, b};
 }
@@ -255,8 +254,7 @@ rc::Gen<BoxPair> pair_family(bool exact) {
   return rc::gen::exec([exact] { return pair_of(*grid(exact)); });
 }
 
-Vec3 rounded_unit(Grid g) {
-  (void)g;
+Vec3 rounded_unit() {
   return Vec3(*direction(1.0, 8)).normalized();
 }
 
@@ -546,7 +544,7 @@ rc::Gen<BoxOnAxis> box_on_axis() {
     BoxOnAxis in{grid_box(g), Vec3::UnitX()};
     switch (*rc::gen::inRange(0, 4)) {
       case 0: in.axis = *direction(1.0, 8); break;  // a lattice direction, any length
-      case 1: in.axis = rounded_unit(g); break;
+      case 1: in.axis = rounded_unit(); break;
       case 2: in.axis = in.box.axes.col(*rc::gen::inRange(0, 3)); break;  // its own axis
       default:  // perpendicular to one of its axes, to rounding: |A_k . L| is noise
         in.axis = in.box.axes.col(0).cross(in.box.axes.col(*rc::gen::inRange(1, 3)));

@@ -627,7 +627,6 @@ void SpatialTreesScene::draw_bvh(Frame& f) {
       const Triangle s = mesh_.triangle(std::size_t(p[0])), t = mesh_b_.triangle(std::size_t(p[1]));
       r.triangle(s.v0, s.v1, s.v2, c.with_alpha(0.8f)), r.triangle(t.v0, t.v1, t.v2, c.with_alpha(0.8f));
     }
-  (void)f;
 }
 
 // ---- draw ----------------------------------------------------------------------------
