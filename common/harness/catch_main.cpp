@@ -67,8 +67,9 @@ CATCH_REGISTER_LISTENER(ReportListener)
 CATCH_TRANSLATE_EXCEPTION(const labkit::NotImplemented& e) { return e.what(); }
 
 int main(int argc, char* argv[]) {
+  // The LABKIT_* settings were read (and a graded run's seed wiped from the environment)
+  // by a constructor that runs before any other, a student file's included (check.cpp).
   labkit::check::report::install_signal_handlers();
-  labkit::check::report::read_settings_first();
   const int status = labkit::check::report::run_catch_session(argc, argv);
   labkit::check::report::session_finished();
   return status;

@@ -203,8 +203,6 @@ void test_case_ended(bool passed) {
   detail::save_report();
 }
 
-void read_settings_first() { settings(); }
-
 void session_finished() {
   run_finished = true;
   detail::save_report();

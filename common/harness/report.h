@@ -20,10 +20,6 @@ void test_case_ended(bool passed);
 // (exit() in the code under test, a crash), whatever its exit status.
 void session_finished();
 
-// Reads the LABKIT_* settings before any test runs, so that a graded run's seed is wiped
-// from the environment before the code under test could look for it.
-void read_settings_first();
-
 // Prints the in-flight case on a crash or a time-out (SIGTERM) before the process dies.
 void install_signal_handlers();
 
