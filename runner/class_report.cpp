@@ -18,20 +18,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string html(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+std::string html(const std::string& text) { return xml_escape(text); }
 
 // A relative link to a submission's file: every byte but letters, digits and "._-"
 // percent-encoded, so that no name can leave the folder or break the attribute.

@@ -33,6 +33,15 @@ std::string step_name(const StepGrade& s) {
   return "step " + std::to_string(s.step->number) + " (" + s.step->tag + "): " + s.step->title;
 }
 
+
+std::string seconds_text(double s) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.3f", s);
+  return buffer;
+}
+
+}  // namespace
+
 std::string xml_escape(const std::string& text) {
   std::string out;
   for (unsigned char c : text) {
@@ -50,14 +59,6 @@ std::string xml_escape(const std::string& text) {
   }
   return out;
 }
-
-std::string seconds_text(double s) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3f", s);
-  return buffer;
-}
-
-}  // namespace
 
 std::string points(double x) {
   char buffer[32];

@@ -38,6 +38,10 @@ std::string steps_tsv(const SubmissionGrade& s);
 // The class: one row per submission, one column per lab, then the total and the maximum.
 std::string class_csv(const std::vector<SubmissionGrade>& all);
 
+// Text as XML (and HTML) character data or an attribute value: & < > " ' escaped, and
+// the control characters XML 1.0 forbids shown as "?".
+std::string xml_escape(const std::string& text);
+
 // "12.5", "100": at most two decimals.
 std::string points(double x);
 
