@@ -17,7 +17,7 @@
 // No targets: issue 5 states none for this lab.
 #include "inputs.h"
 
-#include "common/generators/separating_axes.h"
+#include "common/generators/03_separating_axes.h"
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
 #include "separating_axes.h"

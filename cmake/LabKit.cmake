@@ -74,9 +74,11 @@ function(labkit_add_lab number name)
     list(APPEND implementations reference)
   endif()
 
-  # A judge may keep its generators apart, in tests/NN_name.generators.cpp.
-  file(GLOB generator_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}.generators.cpp")
-  add_library(${lab}_judge STATIC "${PROJECT_SOURCE_DIR}/tests/${stem}.judge.cpp" ${generator_sources})
+  # The judge: its verdicts (tests/NN_name.judge*.cpp, split by step when long) and the
+  # lab's own generators (common/generators/NN_name*.cpp), which know the lab's types.
+  file(GLOB judge_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}.judge*.cpp"
+       "${PROJECT_SOURCE_DIR}/tests/${stem}.generators.cpp" "${PROJECT_SOURCE_DIR}/common/generators/${stem}*.cpp")
+  add_library(${lab}_judge STATIC ${judge_sources})
   target_include_directories(${lab}_judge PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_judge PUBLIC labkit_harness labkit_oracle)
   labkit_kit_code(${lab}_judge)

@@ -6,7 +6,7 @@
 
 #include "01_frustum_split.wire.h"
 
-#include "common/generators/clipping.h"
+#include "common/generators/01_frustum_split.h"
 #include "common/harness/check.h"
 
 #include <array>

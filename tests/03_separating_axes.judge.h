@@ -6,7 +6,7 @@
 
 #include "03_separating_axes.wire.h"
 
-#include "common/generators/separating_axes.h"
+#include "common/generators/03_separating_axes.h"
 #include "common/harness/check.h"
 
 #include <algorithm>

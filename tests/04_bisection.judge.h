@@ -12,7 +12,7 @@
 
 #include "04_bisection.wire.h"
 
-#include "common/generators/motions.h"
+#include "common/generators/04_bisection.h"
 #include "common/harness/check.h"
 
 namespace labkit::lab04 {

@@ -5,7 +5,7 @@
 
 #include "05_sphere_sweeps.wire.h"
 
-#include "common/generators/sphere_sweeps.h"
+#include "common/generators/05_sphere_sweeps.h"
 #include "common/harness/check.h"
 
 #include <string>

@@ -6,7 +6,7 @@
 #include "07_particles.wire.h"
 
 #include "common/generators/generators.h"
-#include "common/generators/particles.h"
+#include "common/generators/07_particles.h"
 #include "common/harness/check.h"
 
 #include <string>

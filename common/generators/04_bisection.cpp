@@ -1,4 +1,4 @@
-#include "common/generators/motions.h"
+#include "common/generators/04_bisection.h"
 #include "common/generators/generators.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "common/generators/sphere_sweeps.h"
+#include "common/generators/05_sphere_sweeps.h"
 
 #include "common/generators/generators.h"
 

@@ -1,4 +1,4 @@
-#include "common/generators/particles.h"
+#include "common/generators/07_particles.h"
 #include "common/generators/generators.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "common/generators/separating_axes.h"
+#include "common/generators/03_separating_axes.h"
 #include "common/generators/generators.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-#include "common/generators/clipping.h"
+#include "common/generators/01_frustum_split.h"
 #include "common/generators/generators.h"
 
 #include <cmath>
