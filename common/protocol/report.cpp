@@ -3,6 +3,7 @@
 #include <nlohmann/json.hpp>
 
 #include <stdexcept>
+#include <type_traits>
 
 namespace labkit::report {
 
@@ -10,65 +11,55 @@ using nlohmann::json;
 
 namespace {
 
-// The field `key` of `object`, or an error that names it (`where` says whose it is).
+template <class T> constexpr bool is_optional = false;
+template <class T> constexpr bool is_optional<std::optional<T>> = true;
+template <class T> constexpr bool is_list = false;
+template <class T> constexpr bool is_list<std::vector<T>> = true;
+template <class T> constexpr bool is_record = std::is_class_v<T> && !std::is_same_v<T, std::string>;
+
+// A value as JSON: a record (a struct with fields()) as an object, keyed by its fields.
 template <class T>
-T field(const json& object, const char* key, const std::string& where) {
-  if (!object.is_object()) throw std::runtime_error(where + " is not an object");
-  const auto it = object.find(key);
-  if (it == object.end()) throw std::runtime_error(where + " has no \"" + key + "\"");
-  try {
-    return it->get<T>();
-  } catch (const json::exception&) {
-    throw std::runtime_error(where + "'s \"" + key + "\" has the wrong type (" + it->type_name() + ")");
+json write(const T& value) {
+  if constexpr (is_optional<T>) {
+    return value ? write(*value) : json(nullptr);
+  } else if constexpr (is_list<T>) {
+    json list = json::array();
+    for (const auto& item : value) list.push_back(write(item));
+    return list;
+  } else if constexpr (is_record<T>) {
+    json object = json::object();
+    fields(const_cast<T&>(value), [&](const char* key, const auto& member) { object[key] = write(member); });
+    return object;
+  } else {
+    return json(value);
   }
 }
 
-json to_json(const Failure& f) {
-  return {{"title", f.title}, {"input", f.input},   {"expected", f.expected}, {"got", f.got},
-          {"why", f.why},     {"replay", f.replay}, {"shrinks", f.shrinks}};
-}
-
-Failure failure_from_json(const json& j, const std::string& where) {
-  return {field<std::string>(j, "title", where),  field<std::string>(j, "input", where),
-          field<std::string>(j, "expected", where), field<std::string>(j, "got", where),
-          field<std::string>(j, "why", where),    field<std::string>(j, "replay", where),
-          field<int>(j, "shrinks", where)};
-}
-
-json to_json(const Query& q) {
-  json j = {{"test_case", q.test_case}, {"query", q.query},   {"kind", q.kind},
-            {"cases", q.cases},         {"passed", q.passed}, {"ambiguous", q.ambiguous},
-            {"failed", q.failed},       {"not_implemented", q.not_implemented}, {"error", q.error}};
-  j["failure"] = q.failure ? to_json(*q.failure) : json(nullptr);
-  return j;
-}
-
-Query query_from_json(const json& j, const std::string& where) {
-  Query q;
-  q.test_case = field<std::string>(j, "test_case", where);
-  q.query = field<std::string>(j, "query", where);
-  q.kind = field<std::string>(j, "kind", where);
-  q.cases = field<int>(j, "cases", where);
-  q.passed = field<int>(j, "passed", where);
-  q.ambiguous = field<int>(j, "ambiguous", where);
-  q.failed = field<int>(j, "failed", where);
-  q.not_implemented = field<std::string>(j, "not_implemented", where);
-  q.error = field<std::string>(j, "error", where);
-  const json failure = field<json>(j, "failure", where);
-  if (!failure.is_null()) q.failure = failure_from_json(failure, where + "'s failure");
-  return q;
-}
-
-json to_json(const TestCase& t) {
-  return {{"name", t.name},         {"tags", t.tags},
-          {"passed", t.passed},     {"ended", t.ended},
-          {"failures", t.failures}, {"not_implemented", t.not_implemented}};
-}
-
-TestCase test_case_from_json(const json& j, const std::string& where) {
-  return {field<std::string>(j, "name", where),     field<std::vector<std::string>>(j, "tags", where),
-          field<bool>(j, "passed", where),          field<bool>(j, "ended", where),
-          field<std::vector<std::string>>(j, "failures", where), field<std::string>(j, "not_implemented", where)};
+// `json` into `out`, or an error naming the place (`where`: "query 0's \"failure\"") that
+// is missing, misspelt or of another type.
+template <class T>
+void read(const json& j, T& out, const std::string& where) {
+  if constexpr (is_optional<T>) {
+    if (j.is_null()) return out.reset();
+    read(j, out.emplace(), where);
+  } else if constexpr (is_list<T>) {
+    if (!j.is_array()) throw std::runtime_error(where + " is not a list (" + j.type_name() + ")");
+    out.resize(j.size());
+    for (std::size_t i = 0; i < j.size(); ++i) read(j[i], out[i], where + "[" + std::to_string(i) + "]");
+  } else if constexpr (is_record<T>) {
+    if (!j.is_object()) throw std::runtime_error(where + " is not an object");
+    fields(out, [&](const char* key, auto& member) {
+      const auto it = j.find(key);
+      if (it == j.end()) throw std::runtime_error(where + " has no \"" + key + "\"");
+      read(*it, member, where + "'s \"" + key + "\"");
+    });
+  } else {
+    try {
+      out = j.get<T>();
+    } catch (const json::exception&) {
+      throw std::runtime_error(where + " has the wrong type (" + j.type_name() + ")");
+    }
+  }
 }
 
 // `text` with each line after the first starting with `prefix`.
@@ -83,25 +74,11 @@ std::string indented(const std::string& text, const std::string& prefix) {
 
 }  // namespace
 
-json to_json(const Step& step) {
-  json j = {{"seed", step.seed}, {"cases_per_query", step.cases_per_query}, {"finished", step.finished}};
-  j["test_cases"] = json::array();
-  for (const TestCase& t : step.test_cases) j["test_cases"].push_back(to_json(t));
-  j["queries"] = json::array();
-  for (const Query& q : step.queries) j["queries"].push_back(to_json(q));
-  return j;
-}
+json to_json(const Step& step) { return write(step); }
 
 Step step_from_json(const json& j) {
   Step step;
-  step.seed = field<std::string>(j, "seed", "the report");
-  step.cases_per_query = field<int>(j, "cases_per_query", "the report");
-  step.finished = field<bool>(j, "finished", "the report");
-  const auto test_cases = field<std::vector<json>>(j, "test_cases", "the report");
-  for (std::size_t i = 0; i < test_cases.size(); ++i)
-    step.test_cases.push_back(test_case_from_json(test_cases[i], "test case " + std::to_string(i)));
-  const auto queries = field<std::vector<json>>(j, "queries", "the report");
-  for (std::size_t i = 0; i < queries.size(); ++i) step.queries.push_back(query_from_json(queries[i], "query " + std::to_string(i)));
+  read(j, step, "the report");
   return step;
 }
 

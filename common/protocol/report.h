@@ -1,7 +1,8 @@
 // The report of one step: what the judge's process (common/harness) writes and the
-// runner (runner/step.cpp) reads, defined once here with its JSON, so that a field is
-// added, renamed or printed in one place. The runner trusts it because the code under
-// test never writes it (answerer.h): it only answers.
+// runner (runner/step.cpp) reads. Each struct's fields() lists its JSON keys once, for
+// writing and for reading, so that a field is added or renamed in one place. The runner
+// trusts the report because the code under test never writes it (answerer.h): it only
+// answers.
 //
 // Reading is strict: a missing key, a misspelt one or another type is an error naming
 // the field, never a silent default.
@@ -25,6 +26,10 @@ struct Failure {
   std::string replay;    // the replay token: query:numbers
   int shrinks = 0;       // how often RapidCheck shrank it
 };
+template <class V> void fields(Failure& f, V&& v) {
+  v("title", f.title); v("input", f.input); v("expected", f.expected); v("got", f.got); v("why", f.why);
+  v("replay", f.replay); v("shrinks", f.shrinks);
+}
 
 // One query of one test case: its examples, or its random cases.
 struct Query {
@@ -37,8 +42,13 @@ struct Query {
   int failed = 0;
   std::string not_implemented;  // the stub's message, when a stub was hit
   std::string error;            // a failure of the harness itself
-  std::optional<Failure> failure;
+  std::optional<Failure> failure;  // null in JSON when every case passed
 };
+template <class V> void fields(Query& q, V&& v) {
+  v("test_case", q.test_case); v("query", q.query); v("kind", q.kind); v("cases", q.cases); v("passed", q.passed);
+  v("ambiguous", q.ambiguous); v("failed", q.failed); v("not_implemented", q.not_implemented); v("error", q.error);
+  v("failure", q.failure);
+}
 
 // One Catch test case.
 struct TestCase {
@@ -49,6 +59,10 @@ struct TestCase {
   std::vector<std::string> failures;  // the first few failed assertions, as Catch words them
   std::string not_implemented;        // set when a stub was reached
 };
+template <class V> void fields(TestCase& t, V&& v) {
+  v("name", t.name); v("tags", t.tags); v("passed", t.passed); v("ended", t.ended); v("failures", t.failures);
+  v("not_implemented", t.not_implemented);
+}
 
 struct Step {
   std::string seed;  // the seed's text, or "hidden"
@@ -57,6 +71,10 @@ struct Step {
   std::vector<TestCase> test_cases;
   std::vector<Query> queries;
 };
+template <class V> void fields(Step& s, V&& v) {
+  v("seed", s.seed); v("cases_per_query", s.cases_per_query); v("finished", s.finished); v("test_cases", s.test_cases);
+  v("queries", s.queries);
+}
 
 nlohmann::json to_json(const Step& step);
 // Throws std::runtime_error naming the field when `json` is not a step's report.

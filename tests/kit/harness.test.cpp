@@ -4,11 +4,14 @@
 #include "common/given/segment_triangle.h"
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
+#include "common/protocol/report.h"
 
 #include "common/harness/catch.h"
 
 #include <cmath>
 #include <limits>
+
+#include <nlohmann/json.hpp>
 
 using namespace labkit;
 
@@ -103,4 +106,30 @@ TEST_CASE("the given segment-triangle test agrees with the oracle and is waterti
   for (const Segment& s : {Segment{{2, 2, 1}, {2, 2, -1}}, Segment{{1.3, 1.3, 0.7}, {1.1, 1.1, -0.3}},
                           Segment{{4, 4, 3}, {4, 4, -3}}, Segment{{0.1, 0.1, 1}, {1.0 / 3, 1.0 / 3, -1}}})
     CHECK((given::segment_triangle(s, t0).hit || given::segment_triangle(s, t1).hit));
+}
+
+TEST_CASE("a step's report reads back what was written, and a bad one names the field", "[kit]") {
+  report::Step step;
+  step.seed = "42";
+  step.cases_per_query = 100;
+  step.finished = true;
+  step.test_cases.push_back({"L02S1 worked examples", {"lab02", "step1"}, false, true, {"REQUIRE failed"}, ""});
+  report::Query q;
+  q.query = "segment_plane";
+  q.kind = "random";
+  q.failure = report::Failure{"random case 6 of 100", "a segment", "a hit", "no hit", "the rule", "segment_plane:1", 3};
+  step.queries.push_back(q);
+  step.queries.push_back({});
+  const report::Step back = report::step_from_json(report::to_json(step));
+  CHECK(report::to_json(back) == report::to_json(step));
+  REQUIRE(back.queries[0].failure);
+  CHECK(back.queries[0].failure->why == "the rule");
+  CHECK(!back.queries[1].failure);
+
+  nlohmann::json bad = report::to_json(step);
+  bad["queries"][0]["failure"].erase("why");
+  CHECK_THROWS_WITH(report::step_from_json(bad), "the report's \"queries\"[0]'s \"failure\" has no \"why\"");
+  bad = report::to_json(step);
+  bad["test_cases"][0]["passed"] = "yes";
+  CHECK_THROWS_WITH(report::step_from_json(bad), "the report's \"test_cases\"[0]'s \"passed\" has the wrong type (string)");
 }
