@@ -1,6 +1,7 @@
 // Lab 01 tests. Each step: the hand-worked examples of handouts/01_frustum_split.md,
 // then random cases against the exact oracle (tests/01_frustum_split.judge.cpp).
 #include "01_frustum_split.judge.h"
+#include "01_frustum_split.queries.h"
 #include "common/oracle/clipping.h"
 #include "frustum_split.h"
 
@@ -204,23 +205,23 @@ TEST_CASE("L01S1 signed distance and vertex classes: worked examples", "[lab01][
     };
   };
   const TrianglePlane on_z1{{{0, 0, 0}, {2, 0, 2}, {0, 2, 1}}, z1};
-  check::example("signed_distance", "3 above z = 1 (normal of length 2)", on_z1, distance({3, 4, 4}, 3));
-  check::example("signed_distance", "1 below z = 1", on_z1, distance({1, 1, 0}, -1));
-  check::example("signed_distance", "a tilted plane: (1, 2, 2) . x - 3 at (1, 1, 1) is 2, over |n| = 3",
+  check::example(query::signed_distance, "3 above z = 1 (normal of length 2)", on_z1, distance({3, 4, 4}, 3));
+  check::example(query::signed_distance, "1 below z = 1", on_z1, distance({1, 1, 0}, -1));
+  check::example(query::signed_distance, "a tilted plane: (1, 2, 2) . x - 3 at (1, 1, 1) is 2, over |n| = 3",
                  TrianglePlane{{}, Plane{{1, 2, 2}, -3}}, distance({1, 1, 1}, 2.0 / 3.0));
   const auto sides = [](const TrianglePlane& in) { return judge::classify(in, classify(in.plane, in.triangle), Rules::exact); };
-  check::example("classify", "out, in, on", on_z1, sides);
-  check::example("classify", "2^-40 above the plane is in", TrianglePlane{{{0, 0, 1 + std::ldexp(1.0, -40)}, {1, 0, 1}, {0, 1, -3}}, z1},
+  check::example(query::classify, "out, in, on", on_z1, sides);
+  check::example(query::classify, "2^-40 above the plane is in", TrianglePlane{{{0, 0, 1 + std::ldexp(1.0, -40)}, {1, 0, 1}, {0, 1, -3}}, z1},
                  sides);
 }
 
 TEST_CASE("L01S1 signed distance and vertex classes: random cases", "[lab01][step1][oracle]") {
-  check::random_cases("signed_distance", decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
+  check::random_cases(query::signed_distance, decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
     std::array<double, 3> got{};
     for (int i = 0; i < 3; ++i) got[std::size_t(i)] = signed_distance(in.plane, in.triangle[i]);
     return judge::signed_distance(in, got);
   });
-  check::random_cases("classify", decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
+  check::random_cases(query::classify, decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
     return judge::classify(in, classify(in.plane, in.triangle));
   });
 }
@@ -229,36 +230,36 @@ TEST_CASE("L01S1 signed distance and vertex classes: random cases", "[lab01][ste
 
 TEST_CASE("L01S2 split a triangle by one plane: the four configurations", "[lab01][step2]") {
   const double full = 8 * std::sqrt(3.0);  // the area of (0,0,-1), (4,0,3), (0,4,3)
-  check::example("split_triangle", "all in: keep", TrianglePlane{{{0, 0, 1}, {4, 0, 1}, {0, 4, 3}}, kFloor},
+  check::example(query::split_triangle, "all in: keep", TrianglePlane{{{0, 0, 1}, {4, 0, 1}, {0, 4, 3}}, kFloor},
                  split_gives({{0, 0, 1}, {4, 0, 1}, {0, 4, 3}}, 4 * std::sqrt(5.0)));
-  check::example("split_triangle", "none in: cull", TrianglePlane{{{0, 0, -1}, {4, 0, -1}, {0, 4, -3}}, kFloor}, split_gives({}, 0));
-  check::example("split_triangle", "one in: one triangle", TrianglePlane{{{0, 0, -1}, {4, 0, -1}, {0, 4, 3}}, kFloor},
+  check::example(query::split_triangle, "none in: cull", TrianglePlane{{{0, 0, -1}, {4, 0, -1}, {0, 4, -3}}, kFloor}, split_gives({}, 0));
+  check::example(query::split_triangle, "one in: one triangle", TrianglePlane{{{0, 0, -1}, {4, 0, -1}, {0, 4, 3}}, kFloor},
                  split_gives({{3, 1, 0}, {0, 4, 3}, {0, 1, 0}}, 4.5 * std::sqrt(2.0)));
-  check::example("split_triangle", "two in: a quadrilateral, two triangles", TrianglePlane{{{0, 0, -1}, {4, 0, 3}, {0, 4, 3}}, kFloor},
+  check::example(query::split_triangle, "two in: a quadrilateral, two triangles", TrianglePlane{{{0, 0, -1}, {4, 0, 3}, {0, 4, 3}}, kFloor},
                  split_gives({{1, 0, 0}, {4, 0, 3}, {0, 4, 3}, {0, 1, 0}}, full - std::sqrt(3.0) / 2));
 }
 
 TEST_CASE("L01S2 split a triangle by one plane: vertices on the plane", "[lab01][step2]") {
-  check::example("split_triangle", "a vertex on the plane, the others in: keep",
+  check::example(query::split_triangle, "a vertex on the plane, the others in: keep",
                  TrianglePlane{{{0, 0, 0}, {4, 0, 1}, {0, 4, 1}}, kFloor}, split_gives({{0, 0, 0}, {4, 0, 1}, {0, 4, 1}}, 6 * std::sqrt(2.0)));
-  check::example("split_triangle", "a vertex on the plane, one in, one out",
+  check::example(query::split_triangle, "a vertex on the plane, one in, one out",
                  TrianglePlane{{{0, 0, 0}, {4, 0, -2}, {0, 4, 2}}, kFloor}, split_gives({{0, 0, 0}, {2, 2, 0}, {0, 4, 2}}, 2 * std::sqrt(6.0)));
-  check::example("split_triangle", "touching at a vertex from below: cull",
+  check::example(query::split_triangle, "touching at a vertex from below: cull",
                  TrianglePlane{{{0, 0, 0}, {4, 0, -1}, {0, 4, -1}}, kFloor}, split_gives({}, 0));
-  check::example("split_triangle", "an edge on the plane, the third vertex below: cull",
+  check::example(query::split_triangle, "an edge on the plane, the third vertex below: cull",
                  TrianglePlane{{{0, 0, 0}, {4, 0, 0}, {0, 4, -1}}, kFloor}, split_gives({}, 0));
-  check::example("split_triangle", "lying in the plane: keep", TrianglePlane{{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, kFloor},
+  check::example(query::split_triangle, "lying in the plane: keep", TrianglePlane{{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, kFloor},
                  split_gives({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, 8));
 }
 
 TEST_CASE("L01S2 split a triangle by one plane: random cases", "[lab01][step2][oracle]") {
-  check::random_cases("split_triangle", decisive(gen::triangle_plane()), run_split_random);
+  check::random_cases(query::split_triangle, decisive(gen::triangle_plane()), run_split_random);
 }
 
 // ---- Step 3 ------------------------------------------------------------------------
 
 TEST_CASE("L01S3 the six frustum planes: worked examples", "[lab01][step3]") {
-  check::example("frustum_from_camera", "at the origin, looking down -z, 90 degrees, near 1, far 3", square_camera(),
+  check::example(query::frustum_from_camera, "at the origin, looking down -z, 90 degrees, near 1, far 3", square_camera(),
                  [](const Camera& in) {
                    const Frustum got = frustum_from_camera(in);
                    return expect_planes(got, square_frustum_planes(), judge::frustum_from_camera(in, got));
@@ -266,7 +267,7 @@ TEST_CASE("L01S3 the six frustum planes: worked examples", "[lab01][step3]") {
   Camera wide = square_camera();
   wide.eye = {0, 0, 5};
   wide.aspect = 2;
-  check::example("frustum_from_camera", "eye (0, 0, 5), twice as wide as high", wide, [](const Camera& in) {
+  check::example(query::frustum_from_camera, "eye (0, 0, 5), twice as wide as high", wide, [](const Camera& in) {
     const double a = 1 / std::sqrt(5.0), h = kHalfRoot2;
     const Frustum got = frustum_from_camera(in);
     return expect_planes(got, {Plane{{a, 0, -2 * a}, 2 * std::sqrt(5.0)}, Plane{{-a, 0, -2 * a}, 2 * std::sqrt(5.0)},
@@ -278,12 +279,12 @@ TEST_CASE("L01S3 the six frustum planes: worked examples", "[lab01][step3]") {
       0, 1, 0, 0,             //
       0, 0, -2, -3,           //
       0, 0, -1, 0;
-  check::example("frustum_from_matrix", "the square camera's perspective matrix", perspective,
+  check::example(query::frustum_from_matrix, "the square camera's perspective matrix", perspective,
                  [](const Mat4& in) {
                    const Frustum got = frustum_from_matrix(in);
                    return expect_planes(got, square_frustum_planes(), judge::frustum_from_matrix(in, got));
                  });
-  check::example("frustum_from_matrix", "the same matrix times 2: the same planes", Mat4(2 * perspective),
+  check::example(query::frustum_from_matrix, "the same matrix times 2: the same planes", Mat4(2 * perspective),
                  [](const Mat4& in) {
                    const Frustum got = frustum_from_matrix(in);
                    return expect_planes(got, square_frustum_planes(), judge::frustum_from_matrix(in, got));
@@ -293,7 +294,7 @@ TEST_CASE("L01S3 the six frustum planes: worked examples", "[lab01][step3]") {
       0, 1, 0, 0,         //
       0, 0, -0.5, -1.5,   //
       0, 0, 0, 1;
-  check::example("frustum_from_matrix", "glOrtho(-2, 2, -1, 1, 1, 5): a box", ortho, [](const Mat4& in) {
+  check::example(query::frustum_from_matrix, "glOrtho(-2, 2, -1, 1, 1, 5): a box", ortho, [](const Mat4& in) {
     const Frustum got = frustum_from_matrix(in);
     return expect_planes(got, {Plane{{1, 0, 0}, 2}, Plane{{-1, 0, 0}, 2}, Plane{{0, 1, 0}, 1},
                                                    Plane{{0, -1, 0}, 1}, Plane{{0, 0, -1}, -1}, Plane{{0, 0, 1}, 5}},
@@ -302,10 +303,10 @@ TEST_CASE("L01S3 the six frustum planes: worked examples", "[lab01][step3]") {
 }
 
 TEST_CASE("L01S3 the six frustum planes: random cases", "[lab01][step3][oracle]") {
-  check::random_cases("frustum_from_camera", judge::camera(), [](const Camera& in) {
+  check::random_cases(query::frustum_from_camera, judge::camera(), [](const Camera& in) {
     return judge::frustum_from_camera(in, frustum_from_camera(in));
   });
-  check::random_cases("frustum_from_matrix", gen::view_projection_matrix(), [](const Mat4& in) {
+  check::random_cases(query::frustum_from_matrix, gen::view_projection_matrix(), [](const Mat4& in) {
     return judge::frustum_from_matrix(in, frustum_from_matrix(in));
   });
 }
@@ -319,19 +320,19 @@ TEST_CASE("L01S4 clip a triangle to the frustum: worked examples", "[lab01][step
     std::copy(planes.begin(), planes.end(), x.planes.begin());
     return x;
   }();
-  check::example("clip_triangle", "inside: keep", TriangleFrustum{{{0, 0, -2}, {0.5, 0, -2}, {0, 0.5, -2}}, f},
+  check::example(query::clip_triangle, "inside: keep", TriangleFrustum{{{0, 0, -2}, {0.5, 0, -2}, {0, 0.5, -2}}, f},
                  clip_gives({{0, 0, -2}, {0.5, 0, -2}, {0, 0.5, -2}}, 0.125));
-  check::example("clip_triangle", "behind the camera: cull", TriangleFrustum{{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}, f}, clip_gives({}, 0));
-  check::example("clip_triangle", "from the eye: the near plane cuts off the tip",
+  check::example(query::clip_triangle, "behind the camera: cull", TriangleFrustum{{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}, f}, clip_gives({}, 0));
+  check::example(query::clip_triangle, "from the eye: the near plane cuts off the tip",
                  TriangleFrustum{{{0, 0, 0}, {1, 0, -2}, {-1, 0, -2}}, f},
                  clip_gives({{0.5, 0, -1}, {1, 0, -2}, {-1, 0, -2}, {-0.5, 0, -1}}, 1.5));
-  check::example("clip_triangle", "across the whole view at z = -2: the square |x|, |y| <= 2",
+  check::example(query::clip_triangle, "across the whole view at z = -2: the square |x|, |y| <= 2",
                  TriangleFrustum{{{-10, -10, -2}, {10, -10, -2}, {0, 10, -2}}, f},
                  clip_gives({{-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}}, 16));
 }
 
 TEST_CASE("L01S4 clip a triangle to the frustum: random cases", "[lab01][step4][oracle]") {
-  check::random_cases("clip_triangle", decisive(gen::triangle_frustum()), run_clip_random);
+  check::random_cases(query::clip_triangle, decisive(gen::triangle_frustum()), run_clip_random);
 }
 
 // ---- Step 5 ------------------------------------------------------------------------
@@ -346,7 +347,7 @@ TEST_CASE("L01S5 clip a mesh, interpolate colours: worked examples", "[lab01][st
   in.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
   in.colors = {{1, 0, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}};
   in.frustum = integer_pyramid();
-  check::example("clip_mesh", "a rectangle cut a quarter of the way across by the left plane", in, [](const MeshFrustum& in) {
+  check::example(query::clip_mesh, "a rectangle cut a quarter of the way across by the left plane", in, [](const MeshFrustum& in) {
     const ClippedMesh got = clip_mesh(colored(in), in.frustum);
     // The contract's rules first (sizes, pieces, colours), with their reasons.
     const Outcome judged = judge::clip_mesh(in, got, Rules::exact);
@@ -370,7 +371,7 @@ TEST_CASE("L01S5 clip a mesh, interpolate colours: worked examples", "[lab01][st
 }
 
 TEST_CASE("L01S5 clip a mesh, interpolate colours: random cases", "[lab01][step5][oracle]") {
-  check::random_cases("clip_mesh", decisive(gen::mesh_frustum()), [](const MeshFrustum& in) {
+  check::random_cases(query::clip_mesh, decisive(gen::mesh_frustum()), [](const MeshFrustum& in) {
     return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum));
   });
 }
@@ -380,7 +381,7 @@ TEST_CASE("L01S5 clip a mesh, interpolate colours: random cases", "[lab01][step5
 
 TEST_CASE("L01S6 robustness: vertices, edges and triangles on frustum planes", "[lab01][step6]") {
   const Frustum f = integer_pyramid();
-  const std::string q = "robust.clip_triangle";
+  constexpr auto q = query::robust_clip_triangle;
   check::example(q, "an edge through the line where the left and near planes meet",
                  TriangleFrustum{{{-2, 0, 0}, {0, 0, -2}, {0, 1, -2}}, f},
                  clip_gives({{-1, 0, -1}, {0, 0, -2}, {0, 1, -2}, {-1, 0.5, -1}}, 0.75 * std::sqrt(2.0)));
@@ -410,16 +411,16 @@ TEST_CASE("L01S6 robustness: vertices, edges and triangles on frustum planes", "
 }
 
 TEST_CASE("L01S6 robustness: random exact degenerate cases", "[lab01][step6][oracle]") {
-  check::random_cases("robust.classify", gen::exact_triangle_plane(), [](const TrianglePlane& in) {
+  check::random_cases(query::robust_classify, gen::exact_triangle_plane(), [](const TrianglePlane& in) {
     return judge::classify(in, classify(in.plane, in.triangle), Rules::exact);
   });
-  check::random_cases("robust.split_triangle", gen::exact_triangle_plane(), [](const TrianglePlane& in) {
+  check::random_cases(query::robust_split_triangle, gen::exact_triangle_plane(), [](const TrianglePlane& in) {
     return judge::split_triangle(in, run_split(in), Rules::exact);
   });
-  check::random_cases("robust.clip_triangle", gen::exact_triangle_frustum(), [](const TriangleFrustum& in) {
+  check::random_cases(query::robust_clip_triangle, gen::exact_triangle_frustum(), [](const TriangleFrustum& in) {
     return judge::clip_triangle(in, run_clip(in), Rules::exact);
   });
-  check::random_cases("robust.clip_mesh", gen::exact_mesh_frustum(), [](const MeshFrustum& in) {
+  check::random_cases(query::robust_clip_mesh, gen::exact_mesh_frustum(), [](const MeshFrustum& in) {
     return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum), Rules::exact);
   });
 }

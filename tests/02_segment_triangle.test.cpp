@@ -1,6 +1,7 @@
 // Lab 02 tests. Each step: the hand-worked examples of handouts/02_segment_triangle.md,
 // then random cases against the exact oracle (tests/02_segment_triangle.judge.cpp).
 #include "02_segment_triangle.judge.h"
+#include "02_segment_triangle.queries.h"
 #include "segment_triangle.h"
 
 #include "common/oracle/segment_triangle.h"
@@ -18,9 +19,9 @@ using judge::Rules;
 // What keeps each query's calls well defined, in the header's words: a crash in that
 // query says it first (check::rule).
 const bool kRules = [] {
-  check::rule("barycentric", "a zero-area triangle has no weights: its 2D denominator is 0, so answer "
+  check::rule(query::barycentric, "a zero-area triangle has no weights: its 2D denominator is 0, so answer "
                              "dropped_axis = -1 before dividing");
-  check::rule("point_in_triangle_barycentric", "a zero-area triangle contains no point: answer false before "
+  check::rule(query::point_in_triangle_barycentric, "a zero-area triangle contains no point: answer false before "
                                                "dividing by its zero denominator");
   return true;
 }();
@@ -81,7 +82,7 @@ void expect_normal(Expect& e, const Vec3& got, const Vec3& expected) {
 // ---- Step 1 ------------------------------------------------------------------------
 
 TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[lab02][step1]") {
-  check::example("segment_plane", "a above, b below: crosses at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
+  check::example(query::segment_plane, "a above, b below: crosses at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
                    Expect e;
@@ -92,7 +93,7 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
                    e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
                    return e.outcome();
                  });
-  check::example("segment_plane", "both ends above: no crossing", pair({1, 1, 2}, {3, 3, 5}),
+  check::example(query::segment_plane, "both ends above: no crossing", pair({1, 1, 2}, {3, 3, 5}),
                  [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
                    Expect e;
@@ -101,7 +102,7 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
                    e.equal("crosses", got.crosses, false);
                    return e.outcome();
                  });
-  check::example("segment_plane", "a on the plane: crosses at t = 0", pair({1, 1, 0}, {2, 2, 2}),
+  check::example(query::segment_plane, "a on the plane: crosses at t = 0", pair({1, 1, 0}, {2, 2, 2}),
                  [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
                    Expect e;
@@ -110,7 +111,7 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
                    e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
                    return e.outcome();
                  });
-  check::example("segment_plane", "the normal follows the winding", pair({1, 1, 3}, {1, 1, -1}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}),
+  check::example(query::segment_plane, "the normal follows the winding", pair({1, 1, 3}, {1, 1, -1}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}),
                  [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
                    Expect e;
@@ -122,7 +123,7 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
 }
 
 TEST_CASE("L02S1 signed distances and the crossing point: random cases", "[lab02][step1][oracle]") {
-  check::random_cases("segment_plane", gen::decisive_segment_triangle(), run_segment_plane);
+  check::random_cases(query::segment_plane, gen::decisive_segment_triangle(), run_segment_plane);
 }
 
 // ---- Step 2 ------------------------------------------------------------------------
@@ -135,17 +136,17 @@ TEST_CASE("L02S2 point in triangle by edge tests: worked examples", "[lab02][ste
       return got == inside ? Outcome{} : judge::point_in_triangle(in, got, Rules::exact);
     };
   };
-  check::example("point_in_triangle_edges", "inside", PointTriangle{{1, 1, 0}, kFloor}, expect(true));
-  check::example("point_in_triangle_edges", "beyond the long edge", PointTriangle{{3, 3, 0}, kFloor}, expect(false));
-  check::example("point_in_triangle_edges", "left of v0", PointTriangle{{-1, 1, 0}, kFloor}, expect(false));
-  check::example("point_in_triangle_edges", "on the long edge counts", PointTriangle{{2, 2, 0}, kFloor}, expect(true));
-  check::example("point_in_triangle_edges", "a vertex counts", PointTriangle{{0, 0, 0}, kFloor}, expect(true));
-  check::example("point_in_triangle_edges", "clockwise triangle", PointTriangle{{1, 1, 0}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}}, expect(true));
-  check::example("point_in_triangle_edges", "zero-area triangle", PointTriangle{{1, 1, 1}, kFlat}, expect(false));
+  check::example(query::point_in_triangle_edges, "inside", PointTriangle{{1, 1, 0}, kFloor}, expect(true));
+  check::example(query::point_in_triangle_edges, "beyond the long edge", PointTriangle{{3, 3, 0}, kFloor}, expect(false));
+  check::example(query::point_in_triangle_edges, "left of v0", PointTriangle{{-1, 1, 0}, kFloor}, expect(false));
+  check::example(query::point_in_triangle_edges, "on the long edge counts", PointTriangle{{2, 2, 0}, kFloor}, expect(true));
+  check::example(query::point_in_triangle_edges, "a vertex counts", PointTriangle{{0, 0, 0}, kFloor}, expect(true));
+  check::example(query::point_in_triangle_edges, "clockwise triangle", PointTriangle{{1, 1, 0}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}}, expect(true));
+  check::example(query::point_in_triangle_edges, "zero-area triangle", PointTriangle{{1, 1, 1}, kFlat}, expect(false));
 }
 
 TEST_CASE("L02S2 point in triangle by edge tests: random cases", "[lab02][step2][oracle]") {
-  check::random_cases("point_in_triangle_edges", judge::point_triangle(), [](const PointTriangle& in) {
+  check::random_cases(query::point_in_triangle_edges, judge::point_triangle(), [](const PointTriangle& in) {
     return judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle));
   });
 }
@@ -169,11 +170,11 @@ TEST_CASE("L02S3 barycentric coordinates in the dropped-axis plane: worked examp
       return e.outcome();
     };
   };
-  check::example("barycentric", "the floor triangle: drop z", PointTriangle{{1, 2, 0}, kFloor}, expect(2, 0.25, 0.5));
-  check::example("barycentric", "a tilted triangle: drop x", PointTriangle{{0.25, 0.5, 1.5}, {{1, 0, 0}, {0, 2, 0}, {0, 0, 3}}},
+  check::example(query::barycentric, "the floor triangle: drop z", PointTriangle{{1, 2, 0}, kFloor}, expect(2, 0.25, 0.5));
+  check::example(query::barycentric, "a tilted triangle: drop x", PointTriangle{{0.25, 0.5, 1.5}, {{1, 0, 0}, {0, 2, 0}, {0, 0, 3}}},
                  expect(0, 0.25, 0.5));
-  check::example("barycentric", "x = v2 gives beta = 1", PointTriangle{{0, 4, 0}, kFloor}, expect(2, 0, 1));
-  check::example("barycentric", "zero area: no axis", PointTriangle{{1, 1, 1}, kFlat}, [](const PointTriangle& in) {
+  check::example(query::barycentric, "x = v2 gives beta = 1", PointTriangle{{0, 4, 0}, kFloor}, expect(2, 0, 1));
+  check::example(query::barycentric, "zero area: no axis", PointTriangle{{1, 1, 1}, kFlat}, [](const PointTriangle& in) {
     Expect e;
     e.equal("dropped_axis", barycentric(in.x, in.triangle).dropped_axis, -1);
     return e.outcome();
@@ -184,17 +185,17 @@ TEST_CASE("L02S3 barycentric coordinates in the dropped-axis plane: worked examp
       return got == expected ? Outcome{} : judge::point_in_triangle(in, got, Rules::exact);
     };
   };
-  check::example("point_in_triangle_barycentric", "inside", PointTriangle{{1, 1, 0}, kFloor}, inside(true));
-  check::example("point_in_triangle_barycentric", "alpha + beta > 1", PointTriangle{{3, 3, 0}, kFloor}, inside(false));
-  check::example("point_in_triangle_barycentric", "on the long edge: alpha + beta = 1", PointTriangle{{1, 3, 0}, kFloor}, inside(true));
-  check::example("point_in_triangle_barycentric", "beta < 0", PointTriangle{{1, -1, 0}, kFloor}, inside(false));
+  check::example(query::point_in_triangle_barycentric, "inside", PointTriangle{{1, 1, 0}, kFloor}, inside(true));
+  check::example(query::point_in_triangle_barycentric, "alpha + beta > 1", PointTriangle{{3, 3, 0}, kFloor}, inside(false));
+  check::example(query::point_in_triangle_barycentric, "on the long edge: alpha + beta = 1", PointTriangle{{1, 3, 0}, kFloor}, inside(true));
+  check::example(query::point_in_triangle_barycentric, "beta < 0", PointTriangle{{1, -1, 0}, kFloor}, inside(false));
 }
 
 TEST_CASE("L02S3 barycentric coordinates: random cases", "[lab02][step3][oracle]") {
-  check::random_cases("barycentric", judge::point_triangle(), [](const PointTriangle& in) {
+  check::random_cases(query::barycentric, judge::point_triangle(), [](const PointTriangle& in) {
     return judge::barycentric(in, barycentric(in.x, in.triangle));
   });
-  check::random_cases("point_in_triangle_barycentric", judge::point_triangle(), [](const PointTriangle& in) {
+  check::random_cases(query::point_in_triangle_barycentric, judge::point_triangle(), [](const PointTriangle& in) {
     return judge::point_in_triangle(in, point_in_triangle_barycentric(in.x, in.triangle));
   });
 }
@@ -202,7 +203,7 @@ TEST_CASE("L02S3 barycentric coordinates: random cases", "[lab02][step3][oracle]
 // ---- Step 4 ------------------------------------------------------------------------
 
 TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step4]") {
-  check::example("find_segment_triangle", "through the inside at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
+  check::example(query::find_segment_triangle, "through the inside at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
                    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
                    Expect e;
@@ -213,7 +214,7 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
                    expect_normal(e, got.normal, Vec3(0, 0, 1));
                    return e.outcome();
                  });
-  check::example("find_segment_triangle", "from below: same normal, t = 1/4", pair({1, 1, -1}, {1, 1, 3}),
+  check::example(query::find_segment_triangle, "from below: same normal, t = 1/4", pair({1, 1, -1}, {1, 1, 3}),
                  [](const SegmentTrianglePair& in) {
                    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
                    Expect e;
@@ -228,12 +229,12 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
     e.equal("test", test_segment_triangle(in.segment, in.triangle), false);
     return e.outcome();
   };
-  check::example("find_segment_triangle", "crosses the plane beside the triangle", pair({3, 3, 1}, {3, 3, -1}), miss);
-  check::example("find_segment_triangle", "parallel, above", pair({1, 1, 1}, {2, 1, 1}), miss);
-  check::example("find_segment_triangle", "stops short of the plane", pair({1, 1, 3}, {1, 1, 1}), miss);
+  check::example(query::find_segment_triangle, "crosses the plane beside the triangle", pair({3, 3, 1}, {3, 3, -1}), miss);
+  check::example(query::find_segment_triangle, "parallel, above", pair({1, 1, 1}, {2, 1, 1}), miss);
+  check::example(query::find_segment_triangle, "stops short of the plane", pair({1, 1, 3}, {1, 1, 1}), miss);
   // In the plane and beside the triangle: a miss, graded (no lift makes it a hit). Only
   // a coplanar hit is ambiguous in this step's random cases.
-  check::example("find_segment_triangle", "in the plane, beside the triangle: a miss", pair({5, 1, 0}, {5, 3, 0}),
+  check::example(query::find_segment_triangle, "in the plane, beside the triangle: a miss", pair({5, 1, 0}, {5, 3, 0}),
                  [](const SegmentTrianglePair& in) {
                    const Outcome o = judge::find_segment_triangle(in, find_segment_triangle(in.segment, in.triangle), Rules::exact);
                    if (o.verdict == Outcome::Verdict::fail) return o;
@@ -242,7 +243,7 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
   // The floor triangle shrunk by 2^-22 (legs of 9.5e-7): its normal is 9.1e-13 long, below
   // the 1e-12 of Eigen's fuzzy isZero(), and still not zero.
   const double tiny = std::ldexp(1.0, -22);
-  check::example("find_segment_triangle", "a triangle a millionth the size",
+  check::example(query::find_segment_triangle, "a triangle a millionth the size",
                  pair(Vec3(1, 1, 3) * tiny, Vec3(1, 1, -1) * tiny, {{0, 0, 0}, Vec3(4 * tiny, 0, 0), Vec3(0, 4 * tiny, 0)}),
                  [tiny](const SegmentTrianglePair& in) {
                    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
@@ -255,7 +256,7 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
                    e.near("point", got.point, Vec3(tiny, tiny, 0), 1e-18);
                    return e.outcome();
                  });
-  check::example("test_segment_triangle", "through the inside", pair({1, 1, 3}, {1, 1, -1}), [](const SegmentTrianglePair& in) {
+  check::example(query::test_segment_triangle, "through the inside", pair({1, 1, 3}, {1, 1, -1}), [](const SegmentTrianglePair& in) {
     Expect e;
     e.equal("test", test_segment_triangle(in.segment, in.triangle), true);
     return e.outcome();
@@ -266,22 +267,22 @@ TEST_CASE("L02S4 test and find segment-triangle: random cases", "[lab02][step4][
   // Found by a class run: a starts exactly on the plane, near an edge, and b is 5e-8
   // off it, so the rounding of d_a alone moves the crossing 2.5e-7 along the plane and
   // off the triangle. The judge allows what the tolerance of t allows.
-  check::example("find_segment_triangle", "almost in the plane, from a point on it",
+  check::example(query::find_segment_triangle, "almost in the plane, from a point on it",
                  pair({-1.383425235748291, 4.109798431396484, 6.50537109375},
                       {-6.671734802378595, -8.144360497256555, -16.96777346270255},
                       {{-2, 0.01881122589111328, -0.9892578125},
                        {-0.766850471496582, 8.200785636901855, 14},
                        {1.4385852813720703, 8.58306884765625e-06, 0}}),
                  run_find);
-  check::random_cases("test_segment_triangle", gen::decisive_segment_triangle(), run_test);
-  check::random_cases("find_segment_triangle", gen::decisive_segment_triangle(), run_find);
+  check::random_cases(query::test_segment_triangle, gen::decisive_segment_triangle(), run_test);
+  check::random_cases(query::find_segment_triangle, gen::decisive_segment_triangle(), run_find);
 }
 
 // ---- Step 5 ------------------------------------------------------------------------
 
 TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
   const Mesh mesh = floor_and_shelf();
-  check::example("first_hit", "the shelf before the floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
+  check::example(query::first_hit, "the shelf before the floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
                    const MeshHit got = first_hit(in.segment, in.mesh);
                    Expect e;
@@ -295,9 +296,9 @@ TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
                  });
   // So nearly along the floor (a slope of 2^-20) that the volumes cannot give the
   // weights: they must be measured on the point (handout, step 3's barycentric).
-  check::example("first_hit", "nearly along the floor", SegmentMeshPair{{{0.5, 1, 0x1p-20}, {2.5, 1.5, -0x1p-20}}, mesh},
+  check::example(query::first_hit, "nearly along the floor", SegmentMeshPair{{{0.5, 1, 0x1p-20}, {2.5, 1.5, -0x1p-20}}, mesh},
                  [](const SegmentMeshPair& in) { return judge::first_hit(in, first_hit(in.segment, in.mesh)); });
-  check::example("all_hits", "shelf, then floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
+  check::example(query::all_hits, "shelf, then floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
                    const std::vector<MeshHit> got = all_hits(in.segment, in.mesh);
                    Expect e;
@@ -312,11 +313,11 @@ TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
                    return e.outcome();
                  });
   // The floor's two triangles share the diagonal (0,0)-(4,4): both are met, at one t.
-  check::example("all_hits", "through the shared diagonal: both triangles, at the same t",
+  check::example(query::all_hits, "through the shared diagonal: both triangles, at the same t",
                  SegmentMeshPair{{{1, 1, 1}, {3, 3, -1}}, mesh}, [](const SegmentMeshPair& in) {
                    return judge::all_hits(in, all_hits(in.segment, in.mesh), Rules::exact);
                  });
-  check::example("any_hit", "beside the squares", SegmentMeshPair{{{5, 5, 5}, {5, 5, -1}}, mesh},
+  check::example(query::any_hit, "beside the squares", SegmentMeshPair{{{5, 5, 5}, {5, 5, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
                    Expect e;
                    e.equal("any_hit", any_hit(in.segment, in.mesh), false);
@@ -327,13 +328,13 @@ TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
 }
 
 TEST_CASE("L02S5 segment against a mesh: random cases", "[lab02][step5][oracle]") {
-  check::random_cases("any_hit", gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases(query::any_hit, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::any_hit(in, any_hit(in.segment, in.mesh));
   });
-  check::random_cases("first_hit", gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases(query::first_hit, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::first_hit(in, first_hit(in.segment, in.mesh));
   });
-  check::random_cases("all_hits", gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases(query::all_hits, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::all_hits(in, all_hits(in.segment, in.mesh));
   });
 }
@@ -345,7 +346,7 @@ TEST_CASE("L02S6 segment against a moving mesh: worked examples", "[lab02][step6
   add_square(floor, 0);
   RigidTransform up = RigidTransform::Identity();
   up.translation() = Vec3(0, 0, 2);
-  check::example("first_hit_moving", "a resting particle, a rising floor",
+  check::example(query::first_hit_moving, "a resting particle, a rising floor",
                  MovingMesh{{{1, 1, 1}, {1, 1, 1}}, floor, RigidTransform::Identity(), up}, [](const MovingMesh& in) {
                    const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
                    Expect e;
@@ -362,7 +363,7 @@ TEST_CASE("L02S6 segment against a moving mesh: worked examples", "[lab02][step6
   // (3,2,0); not (2,2,0) (the mesh at m0) and not a + t (b - a) = (2.5,2,0).
   RigidTransform aside = RigidTransform::Identity();
   aside.translation() = Vec3(1, 0, 0);
-  check::example("first_hit_moving", "a sliding floor: the point is on the mesh at its end pose",
+  check::example(query::first_hit_moving, "a sliding floor: the point is on the mesh at its end pose",
                  MovingMesh{{{2, 2, 1}, {3, 2, -1}}, floor, RigidTransform::Identity(), aside}, [](const MovingMesh& in) {
                    const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
                    Expect e;
@@ -372,7 +373,7 @@ TEST_CASE("L02S6 segment against a moving mesh: worked examples", "[lab02][step6
                           "the point is the contact on the mesh at its end pose: m1 times the point found in its frame");
                    return e.outcome();
                  });
-  check::example("first_hit_moving", "the rising floor stops short of a falling particle",
+  check::example(query::first_hit_moving, "the rising floor stops short of a falling particle",
                  MovingMesh{{{1, 1, 3}, {1, 1, 2.5}}, floor, RigidTransform::Identity(), up}, [](const MovingMesh& in) {
                    // In the floor's frame the particle goes from z = 3 to z = 0.5: no hit.
                    Expect e;
@@ -382,7 +383,7 @@ TEST_CASE("L02S6 segment against a moving mesh: worked examples", "[lab02][step6
 }
 
 TEST_CASE("L02S6 segment against a moving mesh: random cases", "[lab02][step6][oracle]") {
-  check::random_cases("first_hit_moving", judge::moving_mesh(), [](const MovingMesh& in) {
+  check::random_cases(query::first_hit_moving, judge::moving_mesh(), [](const MovingMesh& in) {
     return judge::first_hit_moving(in, first_hit_moving(in.segment, in.mesh, in.m0, in.m1));
   });
 }
@@ -442,7 +443,7 @@ auto expect_contact(bool hit, double t, Vec3 point) {
 }  // namespace
 
 TEST_CASE("L02S7 moving mesh against moving mesh: worked examples", "[lab02][step7]") {
-  const std::string q = "first_contact_moving_meshes";
+  constexpr auto q = query::first_contact_moving_meshes;
   check::example(q, "a vertex of A falls on B's face: t = 1/2",
                  MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 2, 0}));
   check::example(q, "both move: A falls by 2, the floor rises by 2, t = 1/2",
@@ -458,7 +459,7 @@ TEST_CASE("L02S7 moving mesh against moving mesh: worked examples", "[lab02][ste
 }
 
 TEST_CASE("L02S7 moving mesh against moving mesh: random cases", "[lab02][step7][oracle]") {
-  check::random_cases("first_contact_moving_meshes", judge::moving_meshes(), [](const MovingMeshes& in) {
+  check::random_cases(query::first_contact_moving_meshes, judge::moving_meshes(), [](const MovingMeshes& in) {
     return judge::first_contact_moving_meshes(in, run_contact(in));
   });
 }
@@ -504,7 +505,7 @@ Outcome expect_miss(const SegmentTrianglePair& in) {
 }  // namespace
 
 TEST_CASE("L02S8 robustness: touching, edges, vertices, coplanar, zero size", "[lab02][step8]") {
-  const std::string q = "robust.find_segment_triangle";
+  constexpr auto q = query::robust_find_segment_triangle;
   check::example(q, "an end exactly on the long edge", pair({1, 2, 0}, {1, 2, 5}, kSmall), expect_hit(0));
   check::example(q, "through vertex v0 at t = 1/3", pair({0, 0, 1}, {0, 0, -2}, kSmall), expect_hit(1.0 / 3));
   check::example(q, "through the edge v0 v1 at t = 1/3", pair({1, 0, 1}, {1, 0, -2}, kSmall), expect_hit(1.0 / 3));
@@ -521,7 +522,7 @@ TEST_CASE("L02S8 robustness: touching, edges, vertices, coplanar, zero size", "[
   check::example(q, "zero length, off the triangle", pair({1, 1, 1}, {1, 1, 1}, kSmall), expect_miss);
   check::example(q, "a zero-area triangle is never hit", pair({1, 0, 1}, {1, 2, 1}, kFlat), expect_miss);
 
-  const std::string edges = "robust.point_in_triangle";
+  constexpr auto edges = query::robust_point_in_triangle;
   const auto on_boundary = [](const PointTriangle& in) {
     Expect e;
     e.equal("point_in_triangle_edges", point_in_triangle_edges(in.x, in.triangle), true);
@@ -536,7 +537,7 @@ TEST_CASE("L02S8 robustness: touching, edges, vertices, coplanar, zero size", "[
 TEST_CASE("L02S8 robustness: shared edges and vertices in a mesh", "[lab02][step8]") {
   Mesh floor;
   add_square(floor, 0);
-  const std::string q = "robust.all_hits";
+  constexpr auto q = query::robust_all_hits;
   check::example(q, "through the shared diagonal: both triangles", SegmentMeshPair{{{2, 2, 1}, {2, 2, -1}}, floor},
                  [](const SegmentMeshPair& in) {
                    const std::vector<MeshHit> got = all_hits(in.segment, in.mesh);
@@ -558,7 +559,7 @@ TEST_CASE("L02S8 robustness: shared edges and vertices in a mesh", "[lab02][step
 }
 
 TEST_CASE("L02S8 robustness: moving meshes touching exactly", "[lab02][step8]") {
-  const std::string q = "robust.first_contact_moving_meshes";
+  constexpr auto q = query::robust_first_contact_moving_meshes;
   // The spike's vertex (1, 1, 2) falls onto the floor's shared diagonal (0,0)-(4,4).
   check::example(q, "a vertex onto the shared diagonal at t = 1/2",
                  MovingMeshes{spike({1, 1, 2}), {0, 0, -4}, floor_square(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 1, 0}));
@@ -581,13 +582,13 @@ TEST_CASE("L02S8 robustness: moving meshes touching exactly", "[lab02][step8]") 
 }
 
 TEST_CASE("L02S8 robustness: random exact degenerate cases", "[lab02][step8][oracle]") {
-  check::random_cases("robust.find_segment_triangle", gen::exact_segment_triangle(), exact_find);
-  check::random_cases("robust.point_in_triangle", judge::exact_point_triangle(), [](const PointTriangle& in) {
+  check::random_cases(query::robust_find_segment_triangle, gen::exact_segment_triangle(), exact_find);
+  check::random_cases(query::robust_point_in_triangle, judge::exact_point_triangle(), [](const PointTriangle& in) {
     const Outcome o = judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle), Rules::exact);
     if (o.verdict == Outcome::Verdict::fail) return o;
     return judge::point_in_triangle(in, point_in_triangle_barycentric(in.x, in.triangle), Rules::exact);
   });
-  check::random_cases("robust.all_hits", gen::exact_segment_mesh(), [](const SegmentMeshPair& in) {
+  check::random_cases(query::robust_all_hits, gen::exact_segment_mesh(), [](const SegmentMeshPair& in) {
     const Outcome o = judge::all_hits(in, all_hits(in.segment, in.mesh), Rules::exact);
     if (o.verdict == Outcome::Verdict::fail) return o;
     return judge::first_hit(in, first_hit(in.segment, in.mesh), Rules::exact);

@@ -1,6 +1,7 @@
 // Lab 03 tests. Each step: the hand-worked examples of handouts/03_separating_axes.md,
 // then random cases against the exact oracle (tests/03_separating_axes.judge.cpp).
 #include "03_separating_axes.judge.h"
+#include "03_separating_axes.queries.h"
 #include "separating_axes.h"
 
 #include <cmath>
@@ -95,10 +96,10 @@ TEST_CASE("L03S1 project a box on an axis: worked examples", "[lab03][step1]") {
       return with_reason(e.outcome(), [&] { return judge::project_box(in, got); });
     };
   };
-  check::example("project_box", "onto x: radius 5 * 0.6 + 2.5 * 0.8 = 5", BoxOnAxis{b, {1, 0, 0}}, expect(1, 5));
-  check::example("project_box", "onto y: radius 5 * 0.8 + 2.5 * 0.6 = 5.5", BoxOnAxis{b, {0, 1, 0}}, expect(2, 5.5));
-  check::example("project_box", "onto -x: the radius is never negative", BoxOnAxis{b, {-1, 0, 0}}, expect(-1, 5));
-  check::example("project_box", "onto (2, 0, 0): everything scales with |L|", BoxOnAxis{b, {2, 0, 0}}, expect(2, 10));
+  check::example(query::project_box, "onto x: radius 5 * 0.6 + 2.5 * 0.8 = 5", BoxOnAxis{b, {1, 0, 0}}, expect(1, 5));
+  check::example(query::project_box, "onto y: radius 5 * 0.8 + 2.5 * 0.6 = 5.5", BoxOnAxis{b, {0, 1, 0}}, expect(2, 5.5));
+  check::example(query::project_box, "onto -x: the radius is never negative", BoxOnAxis{b, {-1, 0, 0}}, expect(-1, 5));
+  check::example(query::project_box, "onto (2, 0, 0): everything scales with |L|", BoxOnAxis{b, {2, 0, 0}}, expect(2, 10));
 
   const Box a = cube({0, 0, 0});
   const auto separated = [](bool expected) {
@@ -108,20 +109,20 @@ TEST_CASE("L03S1 project a box on an axis: worked examples", "[lab03][step1]") {
                          [&] { return judge::separated_on_axis(in, got, Rules::exact); });
     };
   };
-  check::example("separated_on_axis", "apart along x: 7 > 1 + 5", BoxPairOnAxis{a, box({7, 2, 0}, {5, 2.5, 1}, three_four_five()), {1, 0, 0}},
+  check::example(query::separated_on_axis, "apart along x: 7 > 1 + 5", BoxPairOnAxis{a, box({7, 2, 0}, {5, 2.5, 1}, three_four_five()), {1, 0, 0}},
                  separated(true));
-  check::example("separated_on_axis", "overlapping along y: 2 < 1 + 5.5", BoxPairOnAxis{a, box({7, 2, 0}, {5, 2.5, 1}, three_four_five()), {0, 1, 0}},
+  check::example(query::separated_on_axis, "overlapping along y: 2 < 1 + 5.5", BoxPairOnAxis{a, box({7, 2, 0}, {5, 2.5, 1}, three_four_five()), {0, 1, 0}},
                  separated(false));
-  check::example("separated_on_axis", "touching along x: 6 = 1 + 5 is not separated",
+  check::example(query::separated_on_axis, "touching along x: 6 = 1 + 5 is not separated",
                  BoxPairOnAxis{a, box({6, 2, 0}, {5, 2.5, 1}, three_four_five()), {1, 0, 0}}, separated(false));
-  check::example("separated_on_axis", "a zero axis separates nothing", BoxPairOnAxis{a, cube({9, 0, 0}), {0, 0, 0}}, separated(false));
+  check::example(query::separated_on_axis, "a zero axis separates nothing", BoxPairOnAxis{a, cube({9, 0, 0}), {0, 0, 0}}, separated(false));
 }
 
 TEST_CASE("L03S1 project a box on an axis: random cases", "[lab03][step1][oracle]") {
-  check::random_cases("project_box", gen::box_on_axis(), [](const BoxOnAxis& in) {
+  check::random_cases(query::project_box, gen::box_on_axis(), [](const BoxOnAxis& in) {
     return judge::project_box(in, project_box(in.box, in.axis));
   });
-  check::random_cases("separated_on_axis", gen::box_pair_on_axis(), [](const BoxPairOnAxis& in) {
+  check::random_cases(query::separated_on_axis, gen::box_pair_on_axis(), [](const BoxPairOnAxis& in) {
     return judge::separated_on_axis(in, separated_on_axis(in.a, in.b, in.axis));
   });
 }
@@ -129,7 +130,7 @@ TEST_CASE("L03S1 project a box on an axis: random cases", "[lab03][step1][oracle
 // ---- Step 2 ------------------------------------------------------------------------
 
 TEST_CASE("L03S2 the 15 axes of two boxes: worked examples", "[lab03][step2]") {
-  check::example("box_axis", "the numbering", BoxPair{cube({0, 0, 0}), box({0, 0, 0}, {1, 1, 1}, three_four_five())},
+  check::example(query::box_axis, "the numbering", BoxPair{cube({0, 0, 0}), box({0, 0, 0}, {1, 1, 1}, three_four_five())},
                  [](const BoxPair& in) {
                    Expect e;
                    e.near("axis 0 = A_0", box_axis(in.a, in.b, 0), Vec3(1, 0, 0), 1e-15);
@@ -145,10 +146,10 @@ TEST_CASE("L03S2 the 15 axes of two boxes: worked examples", "[lab03][step2]") {
       return with_reason(expect_bool("test_boxes", got, intersecting), [&] { return judge::test_boxes(in, got, Rules::exact); });
     };
   };
-  check::example("test_boxes", "apart along A_0", BoxPair{cube({0, 0, 0}), cube({3, 0, 0})}, expect(false));
-  check::example("test_boxes", "overlapping", BoxPair{cube({0, 0, 0}), turned({0, 0.25, 0.5})}, expect(true));
+  check::example(query::test_boxes, "apart along A_0", BoxPair{cube({0, 0, 0}), cube({3, 0, 0})}, expect(false));
+  check::example(query::test_boxes, "overlapping", BoxPair{cube({0, 0, 0}), turned({0, 0.25, 0.5})}, expect(true));
   // Every face axis overlaps; only A_0 x B_0 = (0, 2, 6) / 7 separates: 33/14 > 32/14.
-  check::example("test_boxes", "apart along the edge axis A_0 x B_0 only", BoxPair{cube({0, 0, 0}), turned({0, 0.75, 2.5})},
+  check::example(query::test_boxes, "apart along the edge axis A_0 x B_0 only", BoxPair{cube({0, 0, 0}), turned({0, 0.75, 2.5})},
                  expect(false));
   // B is A turned by 2^-54 about y, and its axes are orthonormal only to rounding (as
   // every rotation in doubles is): R(2, 0) = -2^-53 while its cofactor is -2^-54. The
@@ -157,22 +158,22 @@ TEST_CASE("L03S2 the 15 axes of two boxes: worked examples", "[lab03][step2]") {
   const double e = std::ldexp(1.0, -54);
   Mat3 tilted;
   tilted << 1, 0, e, 0, 1, 0, -2 * e, 0, 1;
-  check::example("test_boxes", "nearly parallel edges never separate", BoxPair{cube({0, 0, 0}), box({0, 1.75, 0}, {1, 1, 1}, tilted)},
+  check::example(query::test_boxes, "nearly parallel edges never separate", BoxPair{cube({0, 0, 0}), box({0, 1.75, 0}, {1, 1, 1}, tilted)},
                  expect(true));
   // A gap of 2^-23 (1.2e-7): an epsilon of 1e-6 added to |R|, the usual repair of the
   // above, hides it.
-  check::example("test_boxes", "a gap of 2^-23 is a gap", BoxPair{cube({0, 0, 0}), cube({2 + std::ldexp(1.0, -23), 0, 0})},
+  check::example(query::test_boxes, "a gap of 2^-23 is a gap", BoxPair{cube({0, 0, 0}), cube({2 + std::ldexp(1.0, -23), 0, 0})},
                  expect(false));
   // The turned box's corner (12 - 11, 1 - 1, -5 + 5) = (1, 0, 0) sits at the middle of A's
   // face x = 1, lifted by 2^-23: only A_0 separates (the handout's table), so an epsilon
   // on the face axes alone is caught too.
-  check::example("test_boxes", "a corner 2^-23 above the middle of a face",
+  check::example(query::test_boxes, "a corner 2^-23 above the middle of a face",
                  BoxPair{cube({0, 0, 0}), box({12 + std::ldexp(1.0, -23), 1, -5}, {7, 7, 7}, sevenths())}, expect(false));
 }
 
 TEST_CASE("L03S2 the 15 axes of two boxes: random cases", "[lab03][step2][oracle]") {
-  check::random_cases("box_axis", gen::box_pair(), [](const BoxPair& in) { return judge::box_axes(in, all_axes(in)); });
-  check::random_cases("test_boxes", gen::box_pair(), [](const BoxPair& in) {
+  check::random_cases(query::box_axis, gen::box_pair(), [](const BoxPair& in) { return judge::box_axes(in, all_axes(in)); });
+  check::random_cases(query::test_boxes, gen::box_pair(), [](const BoxPair& in) {
     return judge::test_boxes(in, test_boxes(in.a, in.b));
   });
 }
@@ -195,22 +196,22 @@ TEST_CASE("L03S3 separating or least-penetration axis: worked examples", "[lab03
     };
   };
   const Box a = box({0, 0, 0}, {2, 1, 1});
-  check::example("find_boxes", "overlapping: least along x, depth 0.5", BoxPair{a, cube({2.5, 0.5, 0})},
+  check::example(query::find_boxes, "overlapping: least along x, depth 0.5", BoxPair{a, cube({2.5, 0.5, 0})},
                  expect(true, 0, 3, {1, 0, 0}, 0.5));
-  check::example("find_boxes", "B on the other side: the axis points from A to B", BoxPair{a, cube({-2.5, 0.5, 0})},
+  check::example(query::find_boxes, "B on the other side: the axis points from A to B", BoxPair{a, cube({-2.5, 0.5, 0})},
                  expect(true, 0, 3, {-1, 0, 0}, 0.5));
-  check::example("find_boxes", "separated along A_0: depth -1 (a gap of 1)", BoxPair{a, cube({4, 0, 0})},
+  check::example(query::find_boxes, "separated along A_0: depth -1 (a gap of 1)", BoxPair{a, cube({4, 0, 0})},
                  expect(false, 0, 0, {1, 0, 0}, -1));
   // Least along A_0 x B_0 = (0, 2, 6) / 7: depth (16/7 - 1/2) / (sqrt(40) / 7) = 25 / (4 sqrt(10)).
-  check::example("find_boxes", "least along an edge axis", BoxPair{cube({0, 0, 0}), turned({0, 0.25, 0.5})},
+  check::example(query::find_boxes, "least along an edge axis", BoxPair{cube({0, 0, 0}), turned({0, 0.25, 0.5})},
                  expect(true, 6, 6, Vec3(0, 1, 3) / std::sqrt(10.0), 25 / (4 * std::sqrt(10.0))));
-  check::example("find_boxes", "apart along the edge axis only: the gap along the unit axis",
+  check::example(query::find_boxes, "apart along the edge axis only: the gap along the unit axis",
                  BoxPair{cube({0, 0, 0}), turned({0, 0.75, 2.5})},
                  expect(false, 6, 6, Vec3(0, 1, 3) / std::sqrt(10.0), -1 / (4 * std::sqrt(10.0))));
 }
 
 TEST_CASE("L03S3 separating or least-penetration axis: random cases", "[lab03][step3][oracle]") {
-  check::random_cases("find_boxes", gen::box_pair(), [](const BoxPair& in) {
+  check::random_cases(query::find_boxes, gen::box_pair(), [](const BoxPair& in) {
     return judge::find_boxes(in, find_boxes(in.a, in.b));
   });
 }
@@ -235,19 +236,19 @@ TEST_CASE("L03S4 the lecture's interval method: worked examples", "[lab03][step4
   };
   // t1 in the plane x = 1; d = 16 z for t1 against the floor (-32, 32, 16), d = 16 (x - 1)
   // for t0 against x = 1 (-16, 48, -16). D = (0, 256, 0): read on y.
-  check::example("triangles_by_intervals", "crossing: [0, 3] and [-5/3, 1] on y overlap",
+  check::example(query::triangles_by_intervals, "crossing: [0, 3] and [-5/3, 1] on y overlap",
                  TrianglePair{kFloor, {{1, 1, -2}, {1, 1, 2}, {1, -3, 1}}}, expect(1, 0, 3, -5.0 / 3, 1, true));
-  check::example("triangles_by_intervals", "planes cross, intervals apart: [0, 3] and [-20/3, -4]",
+  check::example(query::triangles_by_intervals, "planes cross, intervals apart: [0, 3] and [-20/3, -4]",
                  TrianglePair{kFloor, {{1, -4, -2}, {1, -4, 2}, {1, -8, 1}}}, expect(1, 0, 3, -20.0 / 3, -4, false));
-  check::example("triangles_by_intervals", "ends that touch: [0, 3] and [-8/3, 0] share y = 0",
+  check::example(query::triangles_by_intervals, "ends that touch: [0, 3] and [-8/3, 0] share y = 0",
                  TrianglePair{kFloor, {{1, 0, -2}, {1, 0, 2}, {1, -4, 1}}}, expect(1, 0, 3, -8.0 / 3, 0, true));
   // t1 in the plane 2x + y = 3: n1 = (14, 7, 0), D = (-112, 224, 0): read on y, not x.
-  check::example("triangles_by_intervals", "a slanted plane: D = (-112, 224, 0), read on y: [0, 3] and [-1/3, 2]",
+  check::example(query::triangles_by_intervals, "a slanted plane: D = (-112, 224, 0), read on y: [0, 3] and [-1/3, 2]",
                  TrianglePair{kFloor, {{1, 1, -2}, {0, 3, 2}, {2, -1, 1}}}, expect(1, 0, 3, -1.0 / 3, 2, true));
 }
 
 TEST_CASE("L03S4 the lecture's interval method: random cases", "[lab03][step4][oracle]") {
-  check::random_cases("triangles_by_intervals", gen::crossing_triangle_pair(), [](const TrianglePair& in) {
+  check::random_cases(query::triangles_by_intervals, gen::crossing_triangle_pair(), [](const TrianglePair& in) {
     return judge::triangles_by_intervals(in, triangles_by_intervals(in.t0, in.t1));
   });
 }
@@ -261,44 +262,44 @@ TEST_CASE("L03S4 triangle against triangle: worked examples", "[lab03][step4]") 
     };
   };
   // T1 in the plane x = 1: T0's segment on the common line is y in [0, 3], T1's [-3, 1].
-  check::example("test_triangles", "crossing: [0, 3] and [-3, 1] overlap",
+  check::example(query::test_triangles, "crossing: [0, 3] and [-3, 1] overlap",
                  TrianglePair{kFloor, {{1, 1, -2}, {1, 1, 2}, {1, -3, 0}}}, expect(true));
-  check::example("test_triangles", "planes cross, segments do not: [0, 3] and [-8, -4]",
+  check::example(query::test_triangles, "planes cross, segments do not: [0, 3] and [-8, -4]",
                  TrianglePair{kFloor, {{1, -4, -2}, {1, -4, 2}, {1, -8, 0}}}, expect(false));
-  check::example("test_triangles", "segments touch at one point: [0, 3] and [-4, 0]",
+  check::example(query::test_triangles, "segments touch at one point: [0, 3] and [-4, 0]",
                  TrianglePair{kFloor, {{1, 0, -2}, {1, 0, 2}, {1, -4, 0}}}, expect(true));
-  check::example("test_triangles", "all of T1 above T0's plane", TrianglePair{kFloor, {{0, 0, 1}, {4, 0, 1}, {0, 4, 3}}},
+  check::example(query::test_triangles, "all of T1 above T0's plane", TrianglePair{kFloor, {{0, 0, 1}, {4, 0, 1}, {0, 4, 3}}},
                  expect(false));
-  check::example("test_triangles", "coplanar, overlapping", TrianglePair{kFloor, {{1, 1, 0}, {5, 1, 0}, {1, 5, 0}}}, expect(true));
-  check::example("test_triangles", "coplanar, apart beyond the long edge", TrianglePair{kFloor, {{3, 3, 0}, {6, 3, 0}, {3, 6, 0}}},
+  check::example(query::test_triangles, "coplanar, overlapping", TrianglePair{kFloor, {{1, 1, 0}, {5, 1, 0}, {1, 5, 0}}}, expect(true));
+  check::example(query::test_triangles, "coplanar, apart beyond the long edge", TrianglePair{kFloor, {{3, 3, 0}, {6, 3, 0}, {3, 6, 0}}},
                  expect(false));
-  check::example("test_triangles", "coplanar, touching at a vertex", TrianglePair{kFloor, {{4, 0, 0}, {6, 0, 0}, {4, 2, 0}}},
+  check::example(query::test_triangles, "coplanar, touching at a vertex", TrianglePair{kFloor, {{4, 0, 0}, {6, 0, 0}, {4, 2, 0}}},
                  expect(true));
-  check::example("test_triangles", "coplanar, sharing the long edge", TrianglePair{kFloor, {{4, 0, 0}, {4, 4, 0}, {0, 4, 0}}},
+  check::example(query::test_triangles, "coplanar, sharing the long edge", TrianglePair{kFloor, {{4, 0, 0}, {4, 4, 0}, {0, 4, 0}}},
                  expect(true));
-  check::example("test_triangles", "a zero-area triangle never intersects", TrianglePair{kFloor, {{1, 1, -1}, {1, 1, 1}, {1, 1, 0}}},
+  check::example(query::test_triangles, "a zero-area triangle never intersects", TrianglePair{kFloor, {{1, 1, -1}, {1, 1, 1}, {1, 1, 0}}},
                  expect(false));
   // The header's zero signs: a vertex in the other's plane.
-  check::example("test_triangles", "an edge in the other's plane, across it (signs 0 0 +)",
+  check::example(query::test_triangles, "an edge in the other's plane, across it (signs 0 0 +)",
                  TrianglePair{kFloor, {{1, -1, 0}, {1, 3, 0}, {1, 1, 4}}}, expect(true));
-  check::example("test_triangles", "an edge in the other's plane, beyond its long edge (signs 0 0 +)",
+  check::example(query::test_triangles, "an edge in the other's plane, beyond its long edge (signs 0 0 +)",
                  TrianglePair{kFloor, {{3, 3, 0}, {5, 1, 0}, {4, 2, 4}}}, expect(false));
-  check::example("test_triangles", "touching the plane at one vertex, inside (signs 0 - -)",
+  check::example(query::test_triangles, "touching the plane at one vertex, inside (signs 0 - -)",
                  TrianglePair{kFloor, {{1, 1, 0}, {1, 2, -2}, {2, 1, -3}}}, expect(true));
-  check::example("test_triangles", "touching the plane at one vertex, outside (signs 0 - -)",
+  check::example(query::test_triangles, "touching the plane at one vertex, outside (signs 0 - -)",
                  TrianglePair{kFloor, {{5, 5, 0}, {5, 6, -2}, {6, 5, -3}}}, expect(false));
   // A needle 2^-24 wide (aspect 6.7e7) and a triangle in the plane z = e (x - 2), turned
   // by e = 2^-22 against it: each crosses the other's plane, but where T1 passes over the
   // needle (x from 7/3 to 3) it is at least e/3 (20 tol) above it. Apart. A coplanarity
   // bound relative to the needle's two long edges instead of its area calls them coplanar.
   const double e = std::ldexp(1.0, -22);
-  check::example("test_triangles", "a needle and a triangle turned by 2^-22 against it",
+  check::example(query::test_triangles, "a needle and a triangle turned by 2^-22 against it",
                  TrianglePair{{{0, 0, 0}, {4, 0, 0}, {4, e / 4, 0}}, {{1, 2, -e}, {3, 2, e}, {3, -1, e}}},
                  expect(false));
 }
 
 TEST_CASE("L03S4 triangle against triangle: random cases", "[lab03][step4][oracle]") {
-  check::random_cases("test_triangles", gen::triangle_pair(), [](const TrianglePair& in) {
+  check::random_cases(query::test_triangles, gen::triangle_pair(), [](const TrianglePair& in) {
     return judge::test_triangles(in, test_triangles(in.t0, in.t1));
   });
 }
@@ -324,24 +325,24 @@ TEST_CASE("L03S5 two moving boxes: worked examples", "[lab03][step5]") {
     };
   };
   const Box a = cube({0, 0, 0});
-  check::example("find_moving_boxes", "head on: x from 5 at speed -2 touches at 1.5, still at 2",
+  check::example(query::find_moving_boxes, "head on: x from 5 at speed -2 touches at 1.5, still at 2",
                  MovingBoxes{a, {0, 0, 0}, cube({5, 0, 0}), {-2, 0, 0}, 2}, expect(true, 1.5, 2));
-  check::example("find_moving_boxes", "both moving: only the relative velocity counts",
+  check::example(query::find_moving_boxes, "both moving: only the relative velocity counts",
                  MovingBoxes{a, {1, 0, 0}, cube({5, 0, 0}), {-1, 0, 0}, 2}, expect(true, 1.5, 2));
-  check::example("find_moving_boxes", "passing beside: apart on y at every time",
+  check::example(query::find_moving_boxes, "passing beside: apart on y at every time",
                  MovingBoxes{a, {0, 0, 0}, cube({5, 3, 0}), {-2, 0, 0}, 4}, expect(false, 0, 0));
-  check::example("find_moving_boxes", "touching at t = 0 and moving apart", MovingBoxes{a, {0, 0, 0}, cube({2, 0, 0}), {1, 0, 0}, 1},
+  check::example(query::find_moving_boxes, "touching at t = 0 and moving apart", MovingBoxes{a, {0, 0, 0}, cube({2, 0, 0}), {1, 0, 0}, 1},
                  expect(true, 0, 0));
-  check::example("find_moving_boxes", "through a thin plate within one step",
+  check::example(query::find_moving_boxes, "through a thin plate within one step",
                  MovingBoxes{box({0, 0, 0}, {0.0625, 1, 1}), {0, 0, 0}, cube({-3, 0, 0}, 0.125), {6, 0, 0}, 1},
                  expect(true, 0.46875, 0.53125));
-  check::example("find_moving_boxes", "past a corner: only W x A_2 separates the swept boxes",
+  check::example(query::find_moving_boxes, "past a corner: only W x A_2 separates the swept boxes",
                  MovingBoxes{a, {0, 0, 0}, cube({5, 0.5, 0}), {-6, 6, 0}, 1}, expect(false, 0, 0));
 }
 
 TEST_CASE("L03S5 two moving boxes: random cases", "[lab03][step5][oracle]") {
-  check::random_cases("test_moving_boxes", gen::moving_boxes(), [](const MovingBoxes& in) { return run_moving_test(in); });
-  check::random_cases("find_moving_boxes", gen::moving_boxes(), [](const MovingBoxes& in) { return run_moving_find(in); });
+  check::random_cases(query::test_moving_boxes, gen::moving_boxes(), [](const MovingBoxes& in) { return run_moving_test(in); });
+  check::random_cases(query::find_moving_boxes, gen::moving_boxes(), [](const MovingBoxes& in) { return run_moving_find(in); });
 }
 
 // ---- Step 6: robustness --------------------------------------------------------------
@@ -378,7 +379,7 @@ auto both(Own own, Rules rules) {
 }  // namespace
 
 TEST_CASE("L03S6 robustness: touching and parallel boxes", "[lab03][step6]") {
-  const std::string q = "robust.boxes";
+  constexpr auto q = query::robust_boxes;
   const Box a = cube({0, 0, 0}, 2);
   const auto touching = [](int index, Vec3 axis) {
     return [=](const BoxPair& in) {
@@ -408,7 +409,7 @@ TEST_CASE("L03S6 robustness: touching and parallel boxes", "[lab03][step6]") {
 }
 
 TEST_CASE("L03S6 robustness: touching and coplanar triangles", "[lab03][step6]") {
-  const std::string q = "robust.triangles";
+  constexpr auto q = query::robust_triangles;
   const auto expect = [](bool intersecting) {
     return both<TrianglePair>(
         [intersecting](const TrianglePair& in) {
@@ -428,7 +429,7 @@ TEST_CASE("L03S6 robustness: touching and coplanar triangles", "[lab03][step6]")
 }
 
 TEST_CASE("L03S6 robustness: moving boxes that touch at an instant, slide, or start together", "[lab03][step6]") {
-  const std::string q = "robust.moving_boxes";
+  constexpr auto q = query::robust_moving_boxes;
   const auto expect = [](bool contact, double first, double last) {
     return both<MovingBoxes>(
         [=](const MovingBoxes& in) {
@@ -455,9 +456,9 @@ TEST_CASE("L03S6 robustness: moving boxes that touch at an instant, slide, or st
 }
 
 TEST_CASE("L03S6 robustness: random exact degenerate cases", "[lab03][step6][oracle]") {
-  check::random_cases("robust.boxes", gen::exact_box_pair(), exact_boxes);
-  check::random_cases("robust.triangles", gen::exact_triangle_pair(), exact_triangles);
-  check::random_cases("robust.moving_boxes", gen::exact_moving_boxes(), exact_moving);
+  check::random_cases(query::robust_boxes, gen::exact_box_pair(), exact_boxes);
+  check::random_cases(query::robust_triangles, gen::exact_triangle_pair(), exact_triangles);
+  check::random_cases(query::robust_moving_boxes, gen::exact_moving_boxes(), exact_moving);
 }
 
 // ---- The header's preconditions (not graded: tagged [contract], in no step) ----------

@@ -1,6 +1,7 @@
 // Lab 04 tests. Each step: the hand-worked examples of handouts/04_bisection.md, then
 // random cases against the exact oracle (tests/04_bisection.judge.cpp).
 #include "04_bisection.judge.h"
+#include "04_bisection.queries.h"
 #include "bisection.h"
 
 #include <algorithm>
@@ -168,7 +169,7 @@ Outcome exact_advance(const AdvancedPair& in, const TimeOfImpact& got) { return 
 
 TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
   const RigidTransform pose = quarter_turn_then({5, 0, 0});
-  check::example("placed", "a quarter turn, then 5 along x", Sphere{{1, 0, 0}, 2}, [&](const Sphere& in) {
+  check::example(query::placed, "a quarter turn, then 5 along x", Sphere{{1, 0, 0}, 2}, [&](const Sphere& in) {
     const Sphere s = placed(in, pose);
     const Box b = placed(Box{in.center, Mat3::Identity(), {2, 1, 1}}, pose);
     Expect e;
@@ -192,9 +193,9 @@ TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
       return e.outcome();
     };
   };
-  check::example("overlap spheres", "5 apart, radii 1 and 3: clear", Sphere{{3, 4, 0}, 3}, spheres(false));
-  check::example("overlap spheres", "5 apart, radii 1 and 4: touching counts", Sphere{{3, 4, 0}, 4}, spheres(true));
-  check::example("overlap spheres", "5 apart, radii 1 and 5: overlap", Sphere{{3, 4, 0}, 5}, spheres(true));
+  check::example(query::overlap_spheres, "5 apart, radii 1 and 3: clear", Sphere{{3, 4, 0}, 3}, spheres(false));
+  check::example(query::overlap_spheres, "5 apart, radii 1 and 4: touching counts", Sphere{{3, 4, 0}, 4}, spheres(true));
+  check::example(query::overlap_spheres, "5 apart, radii 1 and 5: overlap", Sphere{{3, 4, 0}, 5}, spheres(true));
 
   const Box wall{{4, 0, 0}, Mat3::Identity(), {4, 4, 4}};
   const auto nearest = [](const Vec3& expected) {
@@ -204,11 +205,11 @@ TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
       return e.outcome();
     };
   };
-  check::example("closest_point", "beyond a face and an edge", PointBox{{-3, 2, 5}, wall}, nearest({0, 2, 4}));
-  check::example("closest_point", "inside: the point itself", PointBox{{1, 2, 3}, wall}, nearest({1, 2, 3}));
+  check::example(query::closest_point, "beyond a face and an edge", PointBox{{-3, 2, 5}, wall}, nearest({0, 2, 4}));
+  check::example(query::closest_point, "inside: the point itself", PointBox{{1, 2, 3}, wall}, nearest({1, 2, 3}));
   // A box turned a quarter turn: long along y. Clamping world coordinates would give (3, 1, 0).
   const Box turned{Vec3::Zero(), quarter_turn_then(Vec3::Zero()).linear(), {4, 1, 1}};
-  check::example("closest_point", "a turned box: clamp in its own axes", PointBox{{3, 2, 0}, turned}, nearest({1, 2, 0}));
+  check::example(query::closest_point, "a turned box: clamp in its own axes", PointBox{{3, 2, 0}, turned}, nearest({1, 2, 0}));
 
   const auto sphere_box = [wall](bool expected) {
     return [wall, expected](const Sphere& a) {
@@ -220,9 +221,9 @@ TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
       return e.outcome();
     };
   };
-  check::example("overlap sphere box", "squared distance 10, radius 3: clear", Sphere{{-3, 2, 5}, 3}, sphere_box(false));
-  check::example("overlap sphere box", "squared distance 10, radius 4: overlap", Sphere{{-3, 2, 5}, 4}, sphere_box(true));
-  check::example("overlap sphere box", "touching the face x = 0", Sphere{{-2, 0, 0}, 2}, sphere_box(true));
+  check::example(query::overlap_sphere_box, "squared distance 10, radius 3: clear", Sphere{{-3, 2, 5}, 3}, sphere_box(false));
+  check::example(query::overlap_sphere_box, "squared distance 10, radius 4: overlap", Sphere{{-3, 2, 5}, 4}, sphere_box(true));
+  check::example(query::overlap_sphere_box, "touching the face x = 0", Sphere{{-2, 0, 0}, 2}, sphere_box(true));
 
   const auto at = [](bool at_t0, bool at_t1) {
     return [=](const MovingPairCase& in) {
@@ -236,20 +237,20 @@ TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
       return e.outcome();
     };
   };
-  check::example("overlap_at", "the ball at x = -1.125, then at x = -0.75", ball_and_wall(0.40625, 0.4375, 1), at(false, true));
+  check::example(query::overlap_at, "the ball at x = -1.125, then at x = -0.75", ball_and_wall(0.40625, 0.4375, 1), at(false, true));
   // A bar 8 long spins a quarter turn about z in one unit of time, and sweeps into a
   // resting ball 3 from its middle.
   MovingBody bar = block({4, 1, 1}, resting_at(Vec3::Zero()));
   bar.motion.spin = std::acos(-1.0) / 2;
-  check::example("overlap_at", "a spinning bar reaches the ball", scene(ball(1, resting_at({0, 3, 0})), bar, 0, 1, 1),
+  check::example(query::overlap_at, "a spinning bar reaches the ball", scene(ball(1, resting_at({0, 3, 0})), bar, 0, 1, 1),
                  at(false, true));
 }
 
 TEST_CASE("L04S1 overlap at time t: random cases", "[lab04][step1][oracle]") {
-  check::random_cases("closest_point", gen::point_box(), [](const PointBox& in) {
+  check::random_cases(query::closest_point, gen::point_box(), [](const PointBox& in) {
     return judge::closest_point(in, closest_point(in.box, in.point));
   });
-  check::random_cases("overlap_at", gen::moving_pair(), [](const MovingPairCase& in) {
+  check::random_cases(query::overlap_at, gen::moving_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     return judge::overlap_at(in, overlap_at(pair, in.times.t0), overlap_at(pair, in.times.t1));
   });
@@ -259,11 +260,11 @@ TEST_CASE("L04S1 overlap at time t: random cases", "[lab04][step1][oracle]") {
 
 TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][step2]") {
   // The lecture's iterations: 0.5 (overlap), 0.25, 0.375 (clear), 0.4375 (overlap), 0.40625 (clear).
-  check::example("bisect", "the lecture's five iterations", ball_and_wall(0, 1, 1.0 / 32),
+  check::example(query::bisect, "the lecture's five iterations", ball_and_wall(0, 1, 1.0 / 32),
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.40625, 0.4375, 0, 5)));
   // Any callable is a motion: this one writes down every time it is asked for a pose.
   // After the two ends, the times asked are the lecture's midpoints, in its order.
-  check::example("bisect", "the lecture's midpoints, seen by a recording motion", ball_and_wall(0, 1, 1.0 / 32),
+  check::example(query::bisect, "the lecture's midpoints, seen by a recording motion", ball_and_wall(0, 1, 1.0 / 32),
                  [](const MovingPairCase& in) {
                    MovingPair pair = pair_of(in);
                    const RecordingMotion recording{motion_of(in.a.motion)};
@@ -282,23 +283,23 @@ TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][st
                    e.near("t", got.t, 0.40625, 0);
                    return e.outcome();
                  });
-  check::example("bisect", "a coarse tolerance: two iterations", ball_and_wall(0, 1, 0.25),
+  check::example(query::bisect, "a coarse tolerance: two iterations", ball_and_wall(0, 1, 0.25),
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.25, 0.5, 0, 2)));
-  check::example("bisect", "already overlapping at t0", ball_and_wall(0.5, 1, 1.0 / 32),
+  check::example(query::bisect, "already overlapping at t0", ball_and_wall(0.5, 1, 1.0 / 32),
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_start(0.5)));
-  check::example("bisect", "still clear at t1: no hit", ball_and_wall(0, 0.25, 1.0 / 32),
+  check::example(query::bisect, "still clear at t1: no hit", ball_and_wall(0, 0.25, 1.0 / 32),
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_no_hit(0.25, 0)));
 }
 
 TEST_CASE("L04S2 bisection to the last clear time: random cases", "[lab04][step2][oracle]") {
-  check::random_cases("bisect", gen::moving_pair(),
+  check::random_cases(query::bisect, gen::moving_pair(),
                       [](const MovingPairCase& in) { return judge::bisect(in, run_bisect(in)); });
 }
 
 // ---- Step 3 ------------------------------------------------------------------------------------
 
 TEST_CASE("L04S3 tunnelling and sub-steps: worked examples", "[lab04][step3]") {
-  check::example("smallest_size", "a sphere's diameter, a box's thinnest extent", bullet_and_window(1.0 / 64),
+  check::example(query::smallest_size, "a sphere's diameter, a box's thinnest extent", bullet_and_window(1.0 / 64),
                  [](const MovingPairCase& in) {
                    Expect e;
                    e.near("bullet", smallest_size(shape_of(in.a)), 0.25, 0);
@@ -315,18 +316,18 @@ TEST_CASE("L04S3 tunnelling and sub-steps: worked examples", "[lab04][step3]") {
       return e.outcome();
     };
   };
-  check::example("substeps_for", "6 per unit, size 1/4: 24 is not enough, 25", SubstepRule{6, 1, 0.25}, rule(25));
-  check::example("substeps_for", "6 per unit, size 0.3: 21", SubstepRule{6, 1, 0.3}, rule(21));
-  check::example("substeps_for", "a step of 1/64 at 30 per unit, size 1/8: 3.75, so 4", SubstepRule{30, 1.0 / 64, 0.125}, rule(4));
-  check::example("substeps_for", "not moving: 1", SubstepRule{0, 1, 0.25}, rule(1));
-  check::example("substeps_for", "a point can always be missed: 0", SubstepRule{6, 1, 0}, rule(0));
-  check::example("substeps_for", "more than 2^20 sub-steps: 0", SubstepRule{1e9, 1, 1e-3}, rule(0));
+  check::example(query::substeps_for, "6 per unit, size 1/4: 24 is not enough, 25", SubstepRule{6, 1, 0.25}, rule(25));
+  check::example(query::substeps_for, "6 per unit, size 0.3: 21", SubstepRule{6, 1, 0.3}, rule(21));
+  check::example(query::substeps_for, "a step of 1/64 at 30 per unit, size 1/8: 3.75, so 4", SubstepRule{30, 1.0 / 64, 0.125}, rule(4));
+  check::example(query::substeps_for, "not moving: 1", SubstepRule{0, 1, 0.25}, rule(1));
+  check::example(query::substeps_for, "a point can always be missed: 0", SubstepRule{6, 1, 0}, rule(0));
+  check::example(query::substeps_for, "more than 2^20 sub-steps: 0", SubstepRule{1e9, 1, 1e-3}, rule(0));
 
   // The window flies at the bullet: each moves at 3, and they close at 6, as before.
   MovingPairCase head_on = bullet_and_window(1.0 / 64);
   head_on.a.motion = moving({-1.5, 0, 0}, {3, 0, 0});
   head_on.b.motion = moving({1.5, 0, 0}, {-3, 0, 0});
-  check::example("closing_speed", "the bullet and the window head on, 3 each: 6", head_on, [](const MovingPairCase& in) {
+  check::example(query::closing_speed, "the bullet and the window head on, 3 each: 6", head_on, [](const MovingPairCase& in) {
     const double got = run_closing_speed(in);
     const Outcome o = judge::closing_speed(in, got);
     if (o.verdict == Outcome::Verdict::fail) return o;
@@ -334,9 +335,9 @@ TEST_CASE("L04S3 tunnelling and sub-steps: worked examples", "[lab04][step3]") {
     e.near("closing_speed", got, 6, 0);
     return e.outcome();
   });
-  check::example("sample_then_bisect", "the frame's ends only: the bullet tunnels", SampledPair{bullet_and_window(1.0 / 64), 1},
+  check::example(query::sample_then_bisect, "the frame's ends only: the bullet tunnels", SampledPair{bullet_and_window(1.0 / 64), 1},
                  both<SampledPair>(run_sampled, judge_sampled, expect_no_hit(1, 1)));
-  check::example("sample_then_bisect", "25 sub-steps: sample 11 at t = 0.44 overlaps", SampledPair{bullet_and_window(1.0 / 64), 25},
+  check::example(query::sample_then_bisect, "25 sub-steps: sample 11 at t = 0.44 overlaps", SampledPair{bullet_and_window(1.0 / 64), 25},
                  both<SampledPair>(run_sampled, judge_sampled, expect_hit(0.43, 0.44, 11, 2)));
   const auto tunnels = [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
@@ -346,19 +347,19 @@ TEST_CASE("L04S3 tunnelling and sub-steps: worked examples", "[lab04][step3]") {
     return judge::tunnelling(in, speed, n, sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
                              sample_then_bisect(pair, T.t0, T.t1, n < 1 ? 1 : n, T.tolerance));
   };
-  check::example("tunnelling", "the bullet and the window", bullet_and_window(1.0 / 64), tunnels);
-  check::example("tunnelling", "the bullet and the window, head on", head_on, tunnels);
+  check::example(query::tunnelling, "the bullet and the window", bullet_and_window(1.0 / 64), tunnels);
+  check::example(query::tunnelling, "the bullet and the window, head on", head_on, tunnels);
 }
 
 TEST_CASE("L04S3 tunnelling and sub-steps: random cases", "[lab04][step3][oracle]") {
-  check::random_cases("substeps_for", gen::substep_rule(), [](const SubstepRule& in) {
+  check::random_cases(query::substeps_for, gen::substep_rule(), [](const SubstepRule& in) {
     return judge::substeps_for(in, substeps_for(in.max_speed, in.step, in.smallest_size));
   });
-  check::random_cases("sample_then_bisect", gen::sampled_pair(),
+  check::random_cases(query::sample_then_bisect, gen::sampled_pair(),
                       [](const SampledPair& in) { return judge::sample_then_bisect(in, run_sampled(in)); });
-  check::random_cases("closing_speed", gen::moving_pair(),
+  check::random_cases(query::closing_speed, gen::moving_pair(),
                       [](const MovingPairCase& in) { return judge::closing_speed(in, run_closing_speed(in)); });
-  check::random_cases("tunnelling", gen::tunnelling_pair(), [](const MovingPairCase& in) {
+  check::random_cases(query::tunnelling, gen::tunnelling_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     const SearchTimes& T = in.times;
     const double speed = run_closing_speed(in);
@@ -383,15 +384,15 @@ TEST_CASE("L04S4 conservative advancement: worked examples", "[lab04][step4]") {
   const auto spheres = [surfaces](double expected) {
     return [=](const Sphere& b) { return surfaces(distance(Sphere{Vec3::Zero(), 1}, b), expected, 1 + b.radius); };
   };
-  check::example("distance spheres", "5 apart, radii 1 and 3: 1", Sphere{{3, 4, 0}, 3}, spheres(1));
-  check::example("distance spheres", "overlapping: 0", Sphere{{3, 4, 0}, 5}, spheres(0));
+  check::example(query::distance_spheres, "5 apart, radii 1 and 3: 1", Sphere{{3, 4, 0}, 3}, spheres(1));
+  check::example(query::distance_spheres, "overlapping: 0", Sphere{{3, 4, 0}, 5}, spheres(0));
   const Box wall{{4, 0, 0}, Mat3::Identity(), {4, 4, 4}};
   const auto sphere_box = [wall, surfaces](double expected) {
     return [=](const Sphere& a) { return surfaces(distance(a, wall), expected, a.radius); };
   };
-  check::example("distance sphere box", "sqrt(10) - 3", Sphere{{-3, 2, 5}, 3}, sphere_box(std::sqrt(10.0) - 3));
-  check::example("distance sphere box", "overlapping: 0", Sphere{{-3, 2, 5}, 4}, sphere_box(0));
-  check::example("distance_at", "the ball at t = 0 and at t = 0.3125", ball_and_wall(0, 0.3125, 1), [](const MovingPairCase& in) {
+  check::example(query::distance_sphere_box, "sqrt(10) - 3", Sphere{{-3, 2, 5}, 3}, sphere_box(std::sqrt(10.0) - 3));
+  check::example(query::distance_sphere_box, "overlapping: 0", Sphere{{-3, 2, 5}, 4}, sphere_box(0));
+  check::example(query::distance_at, "the ball at t = 0 and at t = 0.3125", ball_and_wall(0, 0.3125, 1), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     Expect e;
     e.near("distance_at(0)", distance_at(pair, 0), 5, 1e-12);
@@ -400,22 +401,22 @@ TEST_CASE("L04S4 conservative advancement: worked examples", "[lab04][step4]") {
   });
 
   // The ball closes at 12; advancing with the bound 16 leaves 1/4 of the gap each step.
-  check::example("advance", "the ball, bound 16: gaps 5, 1.25, 0.3125, ...", AdvancedPair{ball_and_wall(0, 1, 1.0 / 256), 16.0 / 12},
+  check::example(query::advance, "the ball, bound 16: gaps 5, 1.25, 0.3125, ...", AdvancedPair{ball_and_wall(0, 1, 1.0 / 256), 16.0 / 12},
                  both<AdvancedPair>(run_advance, judge_advance,
                                     expect_hit(0.4150390625, 0.4189453125, 5, 0,
                                                "each advance jumps by the time d / v, the gap over the closing speed "
                                                "(5 / 16, then 1.25 / 16, ...), at least one tolerance: 5 advances")));
   // The exact bound 6 lands on the first touch, t = 7/16; bisection finishes.
-  check::example("advance", "the bullet, exact bound 6: no tunnelling", AdvancedPair{bullet_and_window(1.0 / 64), 1},
+  check::example(query::advance, "the bullet, exact bound 6: no tunnelling", AdvancedPair{bullet_and_window(1.0 / 64), 1},
                  both<AdvancedPair>(run_advance, judge_advance, expect_hit(0.423828125, 0.4375, 1, 5)));
 }
 
 TEST_CASE("L04S4 conservative advancement: random cases", "[lab04][step4][oracle]") {
-  check::random_cases("distance_at", gen::moving_pair(), [](const MovingPairCase& in) {
+  check::random_cases(query::distance_at, gen::moving_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     return judge::distance_at(in, distance_at(pair, in.times.t0), distance_at(pair, in.times.t1));
   });
-  check::random_cases("advance", gen::advanced_pair(),
+  check::random_cases(query::advance, gen::advanced_pair(),
                       [](const AdvancedPair& in) { return judge::advance(in, run_advance(in)); });
 }
 
@@ -436,7 +437,7 @@ TEST_CASE("L04S5 robustness: touching, grazing, zero sizes", "[lab04][step5]") {
   };
   const MovingBody cube = block({2, 2, 2}, resting_at(Vec3::Zero()));
   const MovingBody square = block({0, 2, 2}, resting_at(Vec3::Zero()));  // a flat box
-  const std::string o = "robust.overlap_at";
+  constexpr auto o = query::robust_overlap_at;
   check::example(o, "a sphere touching an edge, (3, 4) / 5 from it", still(ball(5, resting_at({5, 6, 0})), cube), overlapping(true));
   check::example(o, "the same sphere, radius 4", still(ball(4, resting_at({5, 6, 0})), cube), overlapping(false));
   check::example(o, "a sphere touching a corner, (2, 3, 6) / 7 from it", still(ball(7, resting_at({4, 5, 8})), cube), overlapping(true));
@@ -457,7 +458,7 @@ TEST_CASE("L04S5 robustness: touching, grazing, zero sizes", "[lab04][step5]") {
                    return e.outcome();
                  });
 
-  const std::string q = "robust.bisect";
+  constexpr auto q = query::robust_bisect;
   // x(t) = -4 + 3 t touches the wall's face (x = -1) exactly at t1 = 1, and only there.
   check::example(q, "touching only at t1", scene(ball(1, moving({-4, 0, 0}, {3, 0, 0})), kWall, 0, 1, 0.125),
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.875, 1, 0, 3)));
@@ -470,32 +471,32 @@ TEST_CASE("L04S5 robustness: touching, grazing, zero sizes", "[lab04][step5]") {
   const MovingPairCase graze = scene(ball(1, moving({-4, 2, 0}, {8, 0, 0})), ball(1, resting_at(Vec3::Zero())), 0, 1, 0.0625);
   check::example(q, "a graze between the ends is not seen", graze,
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_no_hit(1, 0)));
-  check::example("robust.sample_then_bisect", "a graze at a sample time is a contact", SampledPair{graze, 2},
+  check::example(query::robust_sample_then_bisect, "a graze at a sample time is a contact", SampledPair{graze, 2},
                  both<SampledPair>(run_sampled, exact_sampled, expect_hit(0.4375, 0.5, 1, 3)));
-  check::example("robust.advance", "touching at t0: nothing to advance", AdvancedPair{scene(ball(1, moving({-1, 0, 0}, {2, 0, 0})), kWall, 0, 1, 0.125), 1},
+  check::example(query::robust_advance, "touching at t0: nothing to advance", AdvancedPair{scene(ball(1, moving({-1, 0, 0}, {2, 0, 0})), kWall, 0, 1, 0.125), 1},
                  both<AdvancedPair>(run_advance, exact_advance, expect_start(0)));
-  check::example("robust.advance", "nothing moves: one advance to t1",
+  check::example(query::robust_advance, "nothing moves: one advance to t1",
                  AdvancedPair{scene(ball(1, resting_at({-3, 0, 0})), kWall, 0, 1, 0.125), 1},
                  both<AdvancedPair>(run_advance, exact_advance, expect_no_hit(1, 1)));
 }
 
 TEST_CASE("L04S5 robustness: random exact cases", "[lab04][step5][oracle]") {
-  check::random_cases("robust.closest_point", gen::exact_point_box(), [](const PointBox& in) {
+  check::random_cases(query::robust_closest_point, gen::exact_point_box(), [](const PointBox& in) {
     return judge::closest_point(in, closest_point(in.box, in.point), Rules::exact);
   });
-  check::random_cases("robust.substeps_for", gen::exact_substep_rule(), [](const SubstepRule& in) {
+  check::random_cases(query::robust_substeps_for, gen::exact_substep_rule(), [](const SubstepRule& in) {
     return judge::substeps_for(in, substeps_for(in.max_speed, in.step, in.smallest_size), Rules::exact);
   });
-  check::random_cases("robust.overlap_at", gen::exact_moving_pair(), [](const MovingPairCase& in) {
+  check::random_cases(query::robust_overlap_at, gen::exact_moving_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     return judge::overlap_at(in, overlap_at(pair, in.times.t0), overlap_at(pair, in.times.t1), Rules::exact);
   });
-  check::random_cases("robust.bisect", gen::exact_moving_pair(),
+  check::random_cases(query::robust_bisect, gen::exact_moving_pair(),
                       [](const MovingPairCase& in) { return judge::bisect(in, run_bisect(in), Rules::exact); });
-  check::random_cases("robust.sample_then_bisect", gen::exact_sampled_pair(), [](const SampledPair& in) {
+  check::random_cases(query::robust_sample_then_bisect, gen::exact_sampled_pair(), [](const SampledPair& in) {
     return judge::sample_then_bisect(in, run_sampled(in), Rules::exact);
   });
-  check::random_cases("robust.advance", gen::exact_advanced_pair(),
+  check::random_cases(query::robust_advance, gen::exact_advanced_pair(),
                       [](const AdvancedPair& in) { return judge::advance(in, run_advance(in), Rules::exact); });
 }
 

@@ -1,6 +1,7 @@
 // Lab 05 tests. Each step: the hand-worked examples of handouts/05_sphere_sweeps.md,
 // then random cases against the exact oracle (tests/05_sphere_sweeps.judge.cpp).
 #include "05_sphere_sweeps.judge.h"
+#include "05_sphere_sweeps.queries.h"
 #include "sphere_sweeps.h"
 
 #include <cmath>
@@ -127,10 +128,10 @@ TEST_CASE("L05S1 point-segment and segment-segment distance: worked examples", "
       return both(e, run_point_segment(in));
     };
   };
-  check::example("point_segment", "projects inside: t = 1/4", PointSegmentPair{{1, 2, 0}, kAxis}, point(0.25, {1, 0, 0}, 4));
-  check::example("point_segment", "beyond b: clamp to t = 1", PointSegmentPair{{6, 1, 0}, kAxis}, point(1, {4, 0, 0}, 5));
-  check::example("point_segment", "behind a: clamp to t = 0", PointSegmentPair{{-3, 0, 4}, kAxis}, point(0, {0, 0, 0}, 25));
-  check::example("point_segment", "a zero-length segment", PointSegmentPair{{1, 1, 3}, {{1, 1, 1}, {1, 1, 1}}},
+  check::example(query::point_segment, "projects inside: t = 1/4", PointSegmentPair{{1, 2, 0}, kAxis}, point(0.25, {1, 0, 0}, 4));
+  check::example(query::point_segment, "beyond b: clamp to t = 1", PointSegmentPair{{6, 1, 0}, kAxis}, point(1, {4, 0, 0}, 5));
+  check::example(query::point_segment, "behind a: clamp to t = 0", PointSegmentPair{{-3, 0, 4}, kAxis}, point(0, {0, 0, 0}, 25));
+  check::example(query::point_segment, "a zero-length segment", PointSegmentPair{{1, 1, 3}, {{1, 1, 1}, {1, 1, 1}}},
                  point(0, {1, 1, 1}, 4));
 
   const auto pair = [](double s, double t, double d2) {
@@ -143,27 +144,27 @@ TEST_CASE("L05S1 point-segment and segment-segment distance: worked examples", "
       return both(e, run_segment_segment(in));
     };
   };
-  check::example("segment_segment", "skew, crossing over: s = t = 1/4", SegmentPair{kAxis, {{1, -1, 2}, {1, 3, 2}}},
+  check::example(query::segment_segment, "skew, crossing over: s = t = 1/4", SegmentPair{kAxis, {{1, -1, 2}, {1, 3, 2}}},
                  pair(0.25, 0.25, 4));
-  check::example("segment_segment", "an end against the middle", SegmentPair{kAxis, {{2, 1, 0}, {2, 5, 0}}}, pair(0.5, 0, 1));
-  check::example("segment_segment", "the lines' pair is outside: re-project, do not just clamp",
+  check::example(query::segment_segment, "an end against the middle", SegmentPair{kAxis, {{2, 1, 0}, {2, 5, 0}}}, pair(0.5, 0, 1));
+  check::example(query::segment_segment, "the lines' pair is outside: re-project, do not just clamp",
                  SegmentPair{kAxis, {{5, -2, 1}, {7, 2, 1}}}, pair(1, 0.3, 4.2));
-  check::example("segment_segment", "collinear, a gap of 2", SegmentPair{kAxis, {{6, 0, 0}, {9, 0, 0}}}, pair(1, 0, 4));
+  check::example(query::segment_segment, "collinear, a gap of 2", SegmentPair{kAxis, {{6, 0, 0}, {9, 0, 0}}}, pair(1, 0, 4));
   // Parallel and overlapping: every x in [2, 4] gives a closest pair; the judge checks
   // the distance and that the pair is a closest one, not which one.
-  check::example("segment_segment", "parallel, overlapping: any closest pair", SegmentPair{kAxis, {{2, 3, 0}, {6, 3, 0}}},
+  check::example(query::segment_segment, "parallel, overlapping: any closest pair", SegmentPair{kAxis, {{2, 3, 0}, {6, 3, 0}}},
                  [](const SegmentPair& in) {
                    Expect e;
                    e.near("squared_distance", segment_segment(in.first, in.second).squared_distance, 9, kExample);
                    return both(e, run_segment_segment(in));
                  });
-  check::example("segment_segment", "both zero length", SegmentPair{{{1, 2, 3}, {1, 2, 3}}, {{1, 2, 5}, {1, 2, 5}}},
+  check::example(query::segment_segment, "both zero length", SegmentPair{{{1, 2, 3}, {1, 2, 3}}, {{1, 2, 5}, {1, 2, 5}}},
                  pair(0, 0, 4));
 }
 
 TEST_CASE("L05S1 point-segment and segment-segment distance: random cases", "[lab05][step1][oracle]") {
-  check::random_cases("point_segment", gen::point_segment(), run_point_segment);
-  check::random_cases("segment_segment", gen::segment_pair(), run_segment_segment);
+  check::random_cases(query::point_segment, gen::point_segment(), run_point_segment);
+  check::random_cases(query::segment_segment, gen::segment_pair(), run_segment_segment);
 }
 
 // ---- Step 2 ------------------------------------------------------------------------
@@ -179,10 +180,10 @@ TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: worked examp
       return both(e, run_point_rectangle(in));
     };
   };
-  check::example("point_rectangle", "above the inside", PointRectanglePair{{1, 0.5, 3}, kFloor}, point(1, 0.5, 9));
-  check::example("point_rectangle", "beyond a corner: clamp both", PointRectanglePair{{5, 3, 4}, kFloor}, point(2, 1, 29));
-  check::example("point_rectangle", "beside a side, in the plane", PointRectanglePair{{3, 0, 0}, kFloor}, point(2, 0, 1));
-  check::example("point_rectangle", "a rectangle of zero width is a segment",
+  check::example(query::point_rectangle, "above the inside", PointRectanglePair{{1, 0.5, 3}, kFloor}, point(1, 0.5, 9));
+  check::example(query::point_rectangle, "beyond a corner: clamp both", PointRectanglePair{{5, 3, 4}, kFloor}, point(2, 1, 29));
+  check::example(query::point_rectangle, "beside a side, in the plane", PointRectanglePair{{3, 0, 0}, kFloor}, point(2, 0, 1));
+  check::example(query::point_rectangle, "a rectangle of zero width is a segment",
                  PointRectanglePair{{1, 2, 0}, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2, 0}}, point(1, 0, 4));
 
   const auto segment = [](double d2) {
@@ -192,7 +193,7 @@ TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: worked examp
       return both(e, run_segment_rectangle(in));
     };
   };
-  check::example("segment_rectangle", "piercing it: distance 0 at r = 1/4",
+  check::example(query::segment_rectangle, "piercing it: distance 0 at r = 1/4",
                  SegmentRectanglePair{{{1, 0, -1}, {1, 0, 3}}, kFloor}, [](const SegmentRectanglePair& in) {
                    const SegmentRectangleDistance got = segment_rectangle(in.segment, in.rectangle);
                    Expect e;
@@ -201,10 +202,10 @@ TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: worked examp
                    e.near("closest1", got.closest1, Vec3(1, 0, 0), kExample);
                    return both(e, run_segment_rectangle(in));
                  });
-  check::example("segment_rectangle", "parallel, 2 above", SegmentRectanglePair{{{-5, 0.5, 2}, {5, 0.5, 2}}, kFloor}, segment(4));
-  check::example("segment_rectangle", "across a side, 1 out and 1 up", SegmentRectanglePair{{{3, -3, 1}, {3, 3, 1}}, kFloor},
+  check::example(query::segment_rectangle, "parallel, 2 above", SegmentRectanglePair{{{-5, 0.5, 2}, {5, 0.5, 2}}, kFloor}, segment(4));
+  check::example(query::segment_rectangle, "across a side, 1 out and 1 up", SegmentRectanglePair{{{3, -3, 1}, {3, 3, 1}}, kFloor},
                  segment(2));
-  check::example("segment_rectangle", "through the plane beside it", SegmentRectanglePair{{{3, 0, -1}, {3, 0, 1}}, kFloor},
+  check::example(query::segment_rectangle, "through the plane beside it", SegmentRectanglePair{{{3, 0, -1}, {3, 0, 1}}, kFloor},
                  segment(1));
 
   const auto rectangles = [](double d2) {
@@ -214,50 +215,50 @@ TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: worked examp
       return both(e, run_rectangle_rectangle(in));
     };
   };
-  check::example("rectangle_rectangle", "standing 1 above the floor", RectanglePair{kFloor, kStanding}, rectangles(1));
-  check::example("rectangle_rectangle", "standing through the floor",
+  check::example(query::rectangle_rectangle, "standing 1 above the floor", RectanglePair{kFloor, kStanding}, rectangles(1));
+  check::example(query::rectangle_rectangle, "standing through the floor",
                  RectanglePair{kFloor, {{0, 0, 0.5}, {0, 0, 1}, {1, 0, 0}, 1, 1}}, rectangles(0));
-  check::example("rectangle_rectangle", "stacked, 3 apart", RectanglePair{kFloor, {{1, 0, 3}, {1, 0, 0}, {0, 1, 0}, 2, 1}},
+  check::example(query::rectangle_rectangle, "stacked, 3 apart", RectanglePair{kFloor, {{1, 0, 3}, {1, 0, 0}, {0, 1, 0}, 2, 1}},
                  rectangles(9));
 }
 
 TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: random cases", "[lab05][step2][oracle]") {
-  check::random_cases("point_rectangle", gen::point_rectangle(), run_point_rectangle);
-  check::random_cases("segment_rectangle", gen::segment_rectangle(), run_segment_rectangle);
-  check::random_cases("rectangle_rectangle", gen::rectangle_pair(), run_rectangle_rectangle);
+  check::random_cases(query::point_rectangle, gen::point_rectangle(), run_point_rectangle);
+  check::random_cases(query::segment_rectangle, gen::segment_rectangle(), run_segment_rectangle);
+  check::random_cases(query::rectangle_rectangle, gen::rectangle_pair(), run_rectangle_rectangle);
 }
 
 // ---- Step 3 ------------------------------------------------------------------------
 
 TEST_CASE("L05S3 sphere, capsule and lozenge pairs: worked examples", "[lab05][step3]") {
-  check::example("test_sphere_sphere", "5 apart, radii 2 + 3: touching counts", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 3}},
+  check::example(query::test_sphere_sphere, "5 apart, radii 2 + 3: touching counts", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 3}},
                  expect_test<SpherePair>(true));
-  check::example("test_sphere_sphere", "5 apart, radii 2 + 2.5", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 2.5}},
+  check::example(query::test_sphere_sphere, "5 apart, radii 2 + 2.5", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 2.5}},
                  expect_test<SpherePair>(false));
-  check::example("test_sphere_capsule", "3 from the axis, radii 1 + 2", SphereCapsule{{{2, 3, 0}, 1}, {kAxis, 2}},
+  check::example(query::test_sphere_capsule, "3 from the axis, radii 1 + 2", SphereCapsule{{{2, 3, 0}, 1}, {kAxis, 2}},
                  expect_test<SphereCapsule>(true));
-  check::example("test_sphere_capsule", "beyond the end: 5 from b", SphereCapsule{{{7, 4, 0}, 1}, {kAxis, 3.5}},
+  check::example(query::test_sphere_capsule, "beyond the end: 5 from b", SphereCapsule{{{7, 4, 0}, 1}, {kAxis, 3.5}},
                  expect_test<SphereCapsule>(false));
-  check::example("test_sphere_lozenge", "above a corner: sqrt(29) away", SphereLozenge{{{5, 3, 4}, 2}, {kFloor, 3.5}},
+  check::example(query::test_sphere_lozenge, "above a corner: sqrt(29) away", SphereLozenge{{{5, 3, 4}, 2}, {kFloor, 3.5}},
                  expect_test<SphereLozenge>(true));
-  check::example("test_capsule_capsule", "crossing 2 apart, radii 1 + 1: compare d^2 with (r0 + r1)^2",
+  check::example(query::test_capsule_capsule, "crossing 2 apart, radii 1 + 1: compare d^2 with (r0 + r1)^2",
                  CapsulePair{{kAxis, 1}, {{{1, -1, 2}, {1, 3, 2}}, 1}}, expect_test<CapsulePair>(true));
-  check::example("test_capsule_capsule", "crossing 2 apart, radii 0.5 + 1", CapsulePair{{kAxis, 0.5}, {{{1, -1, 2}, {1, 3, 2}}, 1}},
+  check::example(query::test_capsule_capsule, "crossing 2 apart, radii 0.5 + 1", CapsulePair{{kAxis, 0.5}, {{{1, -1, 2}, {1, 3, 2}}, 1}},
                  expect_test<CapsulePair>(false));
-  check::example("test_capsule_lozenge", "parallel 2 above, radii 0.5 + 1",
+  check::example(query::test_capsule_lozenge, "parallel 2 above, radii 0.5 + 1",
                  CapsuleLozenge{{{{-5, 0.5, 2}, {5, 0.5, 2}}, 0.5}, {kFloor, 1}}, expect_test<CapsuleLozenge>(false));
-  check::example("test_capsule_lozenge", "piercing it, radius 0", CapsuleLozenge{{{{1, 0, -1}, {1, 0, 3}}, 0}, {kFloor, 0}},
+  check::example(query::test_capsule_lozenge, "piercing it, radius 0", CapsuleLozenge{{{{1, 0, -1}, {1, 0, 3}}, 0}, {kFloor, 0}},
                  expect_test<CapsuleLozenge>(true));
-  check::example("test_lozenge_lozenge", "standing 1 above, radii 0.25 + 0.75", LozengePair{{kFloor, 0.25}, {kStanding, 0.75}},
+  check::example(query::test_lozenge_lozenge, "standing 1 above, radii 0.25 + 0.75", LozengePair{{kFloor, 0.25}, {kStanding, 0.75}},
                  expect_test<LozengePair>(true));
-  check::example("test_lozenge_lozenge", "standing 1 above, radii 0.25 + 0.5", LozengePair{{kFloor, 0.25}, {kStanding, 0.5}},
+  check::example(query::test_lozenge_lozenge, "standing 1 above, radii 0.25 + 0.5", LozengePair{{kFloor, 0.25}, {kStanding, 0.5}},
                  expect_test<LozengePair>(false));
   // Found by secret-seed runs: flat lozenges (one half-size 0) whose sides run parallel
   // to the other core, where the rounded n = d0 x d1 says nothing about the lines' distance.
-  check::example("test_capsule_lozenge", "an axis parallel to a flat lozenge, 532 apart, radii 133 + 133",
+  check::example(query::test_capsule_lozenge, "an axis parallel to a flat lozenge, 532 apart, radii 133 + 133",
                  input_from_token<CapsuleLozenge>(parse_token(kFlatLozengeToken)),
                  expect_test<CapsuleLozenge>(false));
-  check::example("test_lozenge_lozenge", "two flat lozenges in line, a gap just wider than r0 + r1",
+  check::example(query::test_lozenge_lozenge, "two flat lozenges in line, a gap just wider than r0 + r1",
                  input_from_token<LozengePair>(parse_token(
                      "test_lozenge_lozenge:0,0.0078125,0,-0.18181818181818188,0.5454545454545454,0.8181818181818182,"
                      "0.5454545454545454,-0.6363636363636365,0.5454545454545454,0,0.0068359375,0.0009756064996508932,"
@@ -268,12 +269,12 @@ TEST_CASE("L05S3 sphere, capsule and lozenge pairs: worked examples", "[lab05][s
 }
 
 TEST_CASE("L05S3 sphere, capsule and lozenge pairs: random cases", "[lab05][step3][oracle]") {
-  check::random_cases("test_sphere_sphere", judge::sphere_pair(), run_test<SpherePair>);
-  check::random_cases("test_sphere_capsule", judge::sphere_capsule(), run_test<SphereCapsule>);
-  check::random_cases("test_sphere_lozenge", judge::sphere_lozenge(), run_test<SphereLozenge>);
-  check::random_cases("test_capsule_capsule", judge::capsule_pair(), run_test<CapsulePair>);
-  check::random_cases("test_capsule_lozenge", judge::capsule_lozenge(), run_test<CapsuleLozenge>);
-  check::random_cases("test_lozenge_lozenge", judge::lozenge_pair(), run_test<LozengePair>);
+  check::random_cases(query::test_sphere_sphere, judge::sphere_pair(), run_test<SpherePair>);
+  check::random_cases(query::test_sphere_capsule, judge::sphere_capsule(), run_test<SphereCapsule>);
+  check::random_cases(query::test_sphere_lozenge, judge::sphere_lozenge(), run_test<SphereLozenge>);
+  check::random_cases(query::test_capsule_capsule, judge::capsule_pair(), run_test<CapsulePair>);
+  check::random_cases(query::test_capsule_lozenge, judge::capsule_lozenge(), run_test<CapsuleLozenge>);
+  check::random_cases(query::test_lozenge_lozenge, judge::lozenge_pair(), run_test<LozengePair>);
 }
 
 // ---- Step 4 ------------------------------------------------------------------------
@@ -285,7 +286,7 @@ using SP = SpherePlaneMotion;
 }  // namespace
 
 TEST_CASE("L05S4 moving sphere against a plane: worked examples", "[lab05][step4]") {
-  const std::string q = "sweep_sphere_plane";
+  constexpr auto q = query::sweep_sphere_plane;
   check::example(q, "falling from z = 5: contact at t = 1.5", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 4},
                  expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
   check::example(q, "rising from below: contact at t = 1.5", SP{{{0, 0, -3}, 1}, {0, 0, 2}, kShelf, 4},
@@ -302,7 +303,7 @@ TEST_CASE("L05S4 moving sphere against a plane: worked examples", "[lab05][step4
 }
 
 TEST_CASE("L05S4 moving sphere against a plane: random cases", "[lab05][step4][oracle]") {
-  check::random_cases("sweep_sphere_plane", gen::sphere_plane_motion(), [](const SP& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_sphere_plane, gen::sphere_plane_motion(), [](const SP& in) { return run_sweep(in); });
 }
 
 // ---- Step 5 ------------------------------------------------------------------------
@@ -317,7 +318,7 @@ const double kHairTime = 5.0527488785915993e-14;
 }  // namespace
 
 TEST_CASE("L05S5 moving sphere against a sphere: worked examples", "[lab05][step5]") {
-  const std::string q = "sweep_sphere_sphere";
+  constexpr auto q = query::sweep_sphere_sphere;
   check::example(q, "head-on: contact at t = 7/3", SS{{{0, 0, 0}, 1}, {1, 0, 0}, {{10, 0, 0}, 2}, {-2, 0, 0}, 5},
                  expect_sweep<SS>(SweepStatus::contact, 7.0 / 3, {10.0 / 3, 0, 0}));
   check::example(q, "passing by: t = 3 - sqrt(3)/2", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 1, 0}, 1}, {-2, 0, 0}, 4},
@@ -346,9 +347,9 @@ TEST_CASE("L05S5 moving sphere against a sphere: worked examples", "[lab05][step
 }
 
 TEST_CASE("L05S5 moving sphere against a sphere: random cases", "[lab05][step5][oracle]") {
-  check::random_cases("sweep_sphere_sphere", gen::sphere_sphere_motion(), [](const SS& in) { return run_sweep(in); });
-  check::random_cases("sweep_sphere_sphere.grazing", gen::grazing_spheres(), [](const SS& in) { return run_sweep(in); });
-  check::random_cases("sweep_sphere_sphere.soon", gen::soon_spheres(), [](const SS& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_sphere_sphere, gen::sphere_sphere_motion(), [](const SS& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_sphere_sphere_grazing, gen::grazing_spheres(), [](const SS& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_sphere_sphere_soon, gen::soon_spheres(), [](const SS& in) { return run_sweep(in); });
 }
 
 // ---- Step 6 ------------------------------------------------------------------------
@@ -361,7 +362,7 @@ const Capsule kRod{{{0, 0, 0}, {8, 0, 0}}, 1};
 }  // namespace
 
 TEST_CASE("L05S6 moving sphere against a capsule: worked examples", "[lab05][step6]") {
-  const std::string q = "sweep_sphere_capsule";
+  constexpr auto q = query::sweep_sphere_capsule;
   check::example(q, "toward the side: 6 - 2t = R = 2 at t = 2 (it leaves at the later root, t = 4)",
                  SC{{{4, 6, 0}, 1}, {0, -2, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 2, {4, 1, 0}));
   check::example(q, "along the axis onto the cap at b: 4 - 2t = 2 at t = 1 (the side's quadratic has a = 0)",
@@ -380,7 +381,7 @@ TEST_CASE("L05S6 moving sphere against a capsule: worked examples", "[lab05][ste
 }
 
 TEST_CASE("L05S6 moving sphere against a capsule: random cases", "[lab05][step6][oracle]") {
-  check::random_cases("sweep_sphere_capsule", gen::sphere_capsule_motion(), [](const SC& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_sphere_capsule, gen::sphere_capsule_motion(), [](const SC& in) { return run_sweep(in); });
 }
 
 // ---- Step 7 ------------------------------------------------------------------------
@@ -397,7 +398,7 @@ Mat3 tilted() {
 }  // namespace
 
 TEST_CASE("L05S7 moving box against a plane: worked examples", "[lab05][step7]") {
-  const std::string q = "sweep_box_plane";
+  constexpr auto q = query::sweep_box_plane;
   // The bottom face lands flat: every point of it touches, and the header accepts any.
   check::example(q, "an upright box falls: reach 3, contact at t = 2 (any point of the bottom face)",
                  BP{{{0, 0, 5}, Mat3::Identity(), {1, 2, 3}}, {0, 0, -1}, kGround, 4},
@@ -423,28 +424,28 @@ TEST_CASE("L05S7 moving box against a plane: worked examples", "[lab05][step7]")
 }
 
 TEST_CASE("L05S7 moving box against a plane: random cases", "[lab05][step7][oracle]") {
-  check::random_cases("sweep_box_plane", gen::box_plane_motion(), [](const BP& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_box_plane, gen::box_plane_motion(), [](const BP& in) { return run_sweep(in); });
 }
 
 // ---- Step 8: robustness --------------------------------------------------------------
 // Exact degenerate input on small integers: the header's rules hold exactly.
 
 TEST_CASE("L05S8 robustness: parallel, touching, grazing: worked examples", "[lab05][step8]") {
-  const std::string q = "robust.segment_segment";
+  constexpr auto q = query::robust_segment_segment;
   check::example(q, "collinear and overlapping: distance 0", SegmentPair{kAxis, {{2, 0, 0}, {7, 0, 0}}},
                  [](const SegmentPair& in) {
                    Expect e;
                    e.near("squared_distance", segment_segment(in.first, in.second).squared_distance, 0, kExample);
                    return both(e, run_segment_segment(in));
                  });
-  check::example("robust.test_capsule_capsule", "crossing at 1/3 and 2/3, exactly touching",
+  check::example(query::robust_test_capsule_capsule, "crossing at 1/3 and 2/3, exactly touching",
                  CapsulePair{{{{0, 0, 0}, {3, 0, 0}}, 1}, {{{1, -2, 2}, {1, 1, 2}}, 1}}, expect_test<CapsulePair>(true));
-  check::example("robust.test_capsule_lozenge", "resting exactly on the floor",
+  check::example(query::robust_test_capsule_lozenge, "resting exactly on the floor",
                  CapsuleLozenge{{{{-1, 0, 3}, {1, 0, 3}}, 1}, {kFloor, 2}}, expect_test<CapsuleLozenge>(true));
-  check::example("robust.test_lozenge_lozenge", "a zero-size lozenge touching a corner",
+  check::example(query::robust_test_lozenge_lozenge, "a zero-size lozenge touching a corner",
                  LozengePair{{kFloor, 0}, {{{3, 1, 0}, {1, 0, 0}, {0, 1, 0}, 0, 0}, 1}}, expect_test<LozengePair>(true));
 
-  const std::string s = "robust.sweep_sphere_sphere";
+  constexpr auto s = query::robust_sweep_sphere_sphere;
   check::example(s, "touching at t = 0, moving apart", SS{{{0, 0, 0}, 2}, {0, 0, 0}, {{0, 3, 4}, 3}, {0, 3, 4}, 1},
                  expect_sweep<SS>(SweepStatus::overlapping));
   check::example(s, "head-on, contact exactly at T = 1.75", SS{{{0, 0, 0}, 1}, {1, 0, 0}, {{10, 0, 0}, 2}, {-3, 0, 0}, 1.75},
@@ -453,41 +454,41 @@ TEST_CASE("L05S8 robustness: parallel, touching, grazing: worked examples", "[la
                  expect_sweep<SS>(SweepStatus::contact, 3, {0, 1, 0}));
   check::example(s, "a hair apart, closing fast", SS{{kHair, 1}, {-1, -2, -2}, {{0, 0, 0}, 2}, {0, 0, 0}, 1},
                  expect_sweep<SS>(SweepStatus::contact, kHairTime, Vec3(kHair * (2.0 / 3)), 1e-9 * kHairTime));
-  check::example("robust.sweep_sphere_plane", "touching the plane, moving along it",
+  check::example(query::robust_sweep_sphere_plane, "touching the plane, moving along it",
                  SP{{{0, 0, 2}, 1}, {1, 0, 0}, kShelf, 4}, expect_sweep<SP>(SweepStatus::overlapping));
-  check::example("robust.sweep_sphere_plane", "reaching it exactly at T", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 1.5},
+  check::example(query::robust_sweep_sphere_plane, "reaching it exactly at T", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 1.5},
                  expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
   // Step 3's flat lozenge: an axis parallel to a side only up to rounding. The recipe
   // (w . n)^2 <= R^2 |n|^2 alone says "meet" here; measure the pair itself instead.
-  check::example("robust.test_capsule_lozenge", "an axis parallel to a flat lozenge in floating point, 532 apart",
+  check::example(query::robust_test_capsule_lozenge, "an axis parallel to a flat lozenge in floating point, 532 apart",
                  input_from_token<CapsuleLozenge>(parse_token(kFlatLozengeToken)), expect_test<CapsuleLozenge>(false));
-  check::example("robust.sweep_sphere_capsule", "sliding exactly parallel to the axis, R from it: touches the cap at t = 2",
+  check::example(query::robust_sweep_sphere_capsule, "sliding exactly parallel to the axis, R from it: touches the cap at t = 2",
                  SC{{{-4, 2, 0}, 1}, {2, 0, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 2, {0, 1, 0}));
-  check::example("robust.sweep_sphere_capsule", "starting exactly touching the side, moving away",
+  check::example(query::robust_sweep_sphere_capsule, "starting exactly touching the side, moving away",
                  SC{{{3, 0, 2}, 1}, {0, 0, 1}, kRod, 4}, expect_sweep<SC>(SweepStatus::overlapping));
-  check::example("robust.sweep_sphere_capsule", "an exact graze of the side at t = 1",
+  check::example(query::robust_sweep_sphere_capsule, "an exact graze of the side at t = 1",
                  SC{{{2, -1, 2}, 1}, {0, 1, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 1, {2, 0, 1}));
-  check::example("robust.sweep_sphere_capsule", "a zero-length capsule, reached exactly at T = 3",
+  check::example(query::robust_sweep_sphere_capsule, "a zero-length capsule, reached exactly at T = 3",
                  SC{{{0, 0, 5}, 1}, {0, 0, -1}, {{{0, 0, 0}, {0, 0, 0}}, 1}, 3},
                  expect_sweep<SC>(SweepStatus::contact, 3, {0, 0, 1}));
-  check::example("robust.sweep_box_plane", "a point box resting on the ground",
+  check::example(query::robust_sweep_box_plane, "a point box resting on the ground",
                  BP{{{0, 0, 0}, Mat3::Identity(), {0, 0, 0}}, {0, 0, -1}, kGround, 1}, expect_sweep<BP>(SweepStatus::overlapping));
 }
 
 TEST_CASE("L05S8 robustness: random exact degenerate cases", "[lab05][step8][oracle]") {
-  check::random_cases("robust.segment_segment", gen::segment_pair(true), run_segment_segment);
-  check::random_cases("robust.segment_rectangle", gen::segment_rectangle(true), run_segment_rectangle);
-  check::random_cases("robust.test_sphere_capsule", judge::sphere_capsule(true), run_exact_test<SphereCapsule>);
-  check::random_cases("robust.test_capsule_capsule", judge::capsule_pair(true), run_exact_test<CapsulePair>);
-  check::random_cases("robust.test_capsule_lozenge", judge::capsule_lozenge(true), run_exact_test<CapsuleLozenge>);
-  check::random_cases("robust.test_lozenge_lozenge", judge::lozenge_pair(true), run_exact_test<LozengePair>);
-  check::random_cases("robust.sweep_sphere_plane", gen::sphere_plane_motion(true),
+  check::random_cases(query::robust_segment_segment, gen::segment_pair(true), run_segment_segment);
+  check::random_cases(query::robust_segment_rectangle, gen::segment_rectangle(true), run_segment_rectangle);
+  check::random_cases(query::robust_test_sphere_capsule, judge::sphere_capsule(true), run_exact_test<SphereCapsule>);
+  check::random_cases(query::robust_test_capsule_capsule, judge::capsule_pair(true), run_exact_test<CapsulePair>);
+  check::random_cases(query::robust_test_capsule_lozenge, judge::capsule_lozenge(true), run_exact_test<CapsuleLozenge>);
+  check::random_cases(query::robust_test_lozenge_lozenge, judge::lozenge_pair(true), run_exact_test<LozengePair>);
+  check::random_cases(query::robust_sweep_sphere_plane, gen::sphere_plane_motion(true),
                       [](const SP& in) { return run_sweep(in, Rules::exact); });
-  check::random_cases("robust.sweep_sphere_sphere", gen::sphere_sphere_motion(true),
+  check::random_cases(query::robust_sweep_sphere_sphere, gen::sphere_sphere_motion(true),
                       [](const SS& in) { return run_sweep(in, Rules::exact); });
-  check::random_cases("robust.sweep_sphere_capsule", gen::sphere_capsule_motion(true),
+  check::random_cases(query::robust_sweep_sphere_capsule, gen::sphere_capsule_motion(true),
                       [](const SC& in) { return run_sweep(in, Rules::exact); });
-  check::random_cases("robust.sweep_box_plane", gen::box_plane_motion(true),
+  check::random_cases(query::robust_sweep_box_plane, gen::box_plane_motion(true),
                       [](const BP& in) { return run_sweep(in, Rules::exact); });
 }
 

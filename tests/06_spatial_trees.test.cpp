@@ -1,6 +1,7 @@
 // Lab 06 tests. Each step: the hand-worked examples of handouts/06_spatial_trees.md, then
 // random cases against the exact oracle (tests/06_spatial_trees.judge.cpp).
 #include "06_spatial_trees.judge.h"
+#include "06_spatial_trees.queries.h"
 #include "spatial_trees.h"
 
 #include "common/splitmix.h"
@@ -22,15 +23,15 @@ using judge::Rules;
 // What keeps each query's calls finite, in the header's words: a crash or a time-out in
 // that query says it first (check::rule).
 const bool kRules = [] {
-  check::rule("build_kd_tree", "a tree has at most kMaxDepth = 64 interior nodes on any root-to-leaf path: "
+  check::rule(query::build_kd_tree, "a tree has at most kMaxDepth = 64 interior nodes on any root-to-leaf path: "
                                "stop splitting at a leaf size, or when a split makes no progress");
-  check::rule("build_kd_tree.lattice", check::rule_of("build_kd_tree"));
-  for (const char* q : {"first_hit", "any_hit", "all_hits"})
+  check::rule(query::build_kd_tree_lattice, check::rule_of(query::build_kd_tree));
+  for (const auto& q : {query::first_hit, query::any_hit, query::all_hits})
     check::rule(q, "the walk visits each node at most once: the near child, then the far child only when "
                    "0 < t_split <= t1, each with a shorter t-range, never a node twice");
-  check::rule("build_bsp", "each split puts every triangle in front, behind, or in the node's list: "
+  check::rule(query::build_bsp, "each split puts every triangle in front, behind, or in the node's list: "
                            "a subtree has fewer triangles than its parent");
-  check::rule("back_to_front", "each node is visited once: one subtree, the node's triangles, the other subtree");
+  check::rule(query::back_to_front, "each node is visited once: one subtree, the node's triangles, the other subtree");
   return true;
 }();
 
@@ -94,18 +95,18 @@ Outcome all_three(const TreeQuery& in, Rules rules) {
 
 TEST_CASE("L06S1 build a k-d tree: worked examples", "[lab06][step1]") {
   const auto valid = [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); };
-  check::example("build_kd_tree", "the two triangles of step 2", lean_and_stand(), valid);
+  check::example(query::build_kd_tree, "the two triangles of step 2", lean_and_stand(), valid);
   // The picture in the header: triangle 7 touches y = 2, the others lie well inside
   // their leaves.
-  check::example("build_kd_tree", "the header's picture",
+  check::example(query::build_kd_tree, "the header's picture",
                  mesh_of({{{1, 0, 0}, {3, 0, 0}, {2, 1, 0}}, {{5, 1, 0}, {7, 1, 0}, {6, 3, 0}}, {{1, 2, 0}, {3, 2, 0}, {2, 4, 0}}}),
                  valid);
   // Whatever the split rule, the floor of a box lies in some plane z = 0 or touches it.
-  check::example("build_kd_tree", "a box: faces in the planes of the cells' walls", gen::box_mesh({{0, 0, 0}, {4, 2, 1}}), valid);
-  check::example("build_kd_tree", "twenty copies of one triangle: no split separates them",
+  check::example(query::build_kd_tree, "a box: faces in the planes of the cells' walls", gen::box_mesh({{0, 0, 0}, {4, 2, 1}}), valid);
+  check::example(query::build_kd_tree, "twenty copies of one triangle: no split separates them",
                  mesh_of(std::vector<Triangle>(20, Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})), valid);
-  check::example("build_kd_tree", "a sphere of 200 triangles", gen::sphere_mesh(200), valid);
-  check::example("build_kd_tree", "no triangles: one empty leaf", Mesh{}, [](const Mesh& m) {
+  check::example(query::build_kd_tree, "a sphere of 200 triangles", gen::sphere_mesh(200), valid);
+  check::example(query::build_kd_tree, "no triangles: one empty leaf", Mesh{}, [](const Mesh& m) {
     const KdTree tree = build_kd_tree(m);
     Expect e;
     e.equal("nodes", int(tree.nodes.size()), 1);
@@ -118,13 +119,13 @@ TEST_CASE("L06S1 build a k-d tree: worked examples", "[lab06][step1]") {
     }
     return e.outcome();
   });
-  check::example("build_kd_tree", "a zero-area triangle alone", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}), valid);
+  check::example(query::build_kd_tree, "a zero-area triangle alone", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}), valid);
 }
 
 TEST_CASE("L06S1 build a k-d tree: random cases", "[lab06][step1][oracle]") {
-  check::random_cases("build_kd_tree", gen::any_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+  check::random_cases(query::build_kd_tree, gen::any_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
   // Lattice meshes with faces in the planes the splits use: triangles touch split planes.
-  check::random_cases("build_kd_tree.lattice", gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+  check::random_cases(query::build_kd_tree_lattice, gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
 }
 
 // ---- Step 2 --------------------------------------------------------------------------------------
@@ -147,13 +148,13 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
   };
   // A is found first, in the leaf below, at t = 3/4: beyond that leaf's far end t = 1/2.
   // B, in the leaf above, is nearer: t = 5/8.
-  check::example("first_hit", "a hit beyond the leaf's end does not end the search", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
+  check::example(query::first_hit, "a hit beyond the leaf's end does not end the search", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
                  expect_hit(1, 0.625, 3));
-  check::example("first_hit", "backwards: the leaf above first, A at t = 1/4", TreeQuery{mesh, {{8, 1, 1}, {0, 1, 1}}, 0},
+  check::example(query::first_hit, "backwards: the leaf above first, A at t = 1/4", TreeQuery{mesh, {{8, 1, 1}, {0, 1, 1}}, 0},
                  expect_hit(0, 0.25, 2));
-  check::example("first_hit", "in the split plane x = 4: no t_split, the leaf below", TreeQuery{mesh, {{4, 1, 4}, {4, 1, 0}}, 0},
+  check::example(query::first_hit, "in the split plane x = 4: no t_split, the leaf below", TreeQuery{mesh, {{4, 1, 4}, {4, 1, 0}}, 0},
                  expect_hit(0, 0.5, 1));
-  check::example("all_hits", "B then A, A once though listed twice", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
+  check::example(query::all_hits, "B then A, A once though listed twice", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
                  [&tree](const TreeQuery& in) {
                    const KdHits got = all_hits(tree, in.segment);
                    Expect e;
@@ -166,7 +167,7 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
                    }
                    return both(judge_all(in, tree, Rules::exact), e.outcome());
                  });
-  check::example("any_hit", "A, in the first leaf: one test", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0}, [&tree](const TreeQuery& in) {
+  check::example(query::any_hit, "A, in the first leaf: one test", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0}, [&tree](const TreeQuery& in) {
     const KdHit got = any_hit(tree, in.segment);
     Expect e;
     e.equal("hit", got.hit, true);
@@ -174,7 +175,7 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
     e.equal("tests", got.tests, 1);
     return both(judge_any(in, tree, Rules::exact), e.outcome());
   });
-  check::example("first_hit", "above the bounds: no leaf, no test", TreeQuery{mesh, {{0, 1, 5}, {8, 1, 5}}, 0},
+  check::example(query::first_hit, "above the bounds: no leaf, no test", TreeQuery{mesh, {{0, 1, 5}, {8, 1, 5}}, 0},
                  [&tree](const TreeQuery& in) {
                    Expect e;
                    const KdHit first = first_hit(tree, in.segment), any = any_hit(tree, in.segment);
@@ -195,27 +196,27 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
            "child only, never the far one behind a");
     return both(both(judge_first(in, tree, Rules::exact), judge_all(in, tree, Rules::exact)), e.outcome());
   };
-  check::example("first_hit", "moving away from the split plane: t_split = -1/3, the leaf below only",
+  check::example(query::first_hit, "moving away from the split plane: t_split = -1/3, the leaf below only",
                  TreeQuery{mesh, {{3, 1, 1}, {0, 1, 1}}, 0}, near_only);
-  check::example("first_hit", "starting on the split plane, moving away: t_split = 0, the leaf below only",
+  check::example(query::first_hit, "starting on the split plane, moving away: t_split = 0, the leaf below only",
                  TreeQuery{mesh, {{4, 1, 1}, {0, 1, 1}}, 0}, near_only);
   // The given test's rule, not lab 02's: a segment in a triangle's plane, or of zero
   // length, never hits it.
   const auto no_hit = [&tree](const TreeQuery& in) {
     return both(judge_first(in, tree, Rules::exact), both(judge_any(in, tree, Rules::exact), judge_all(in, tree, Rules::exact)));
   };
-  check::example("first_hit", "lying in B's plane x = 5, across B: no hit (the given test's rule)",
+  check::example(query::first_hit, "lying in B's plane x = 5, across B: no hit (the given test's rule)",
                  TreeQuery{mesh, {{5, 0.5, 0.5}, {5, 2, 0.5}}, 0}, no_hit);
-  check::example("first_hit", "zero length, on B: no hit (the given test's rule)", TreeQuery{mesh, {{5, 1, 1}, {5, 1, 1}}, 0}, no_hit);
+  check::example(query::first_hit, "zero length, on B: no hit (the given test's rule)", TreeQuery{mesh, {{5, 1, 1}, {5, 1, 1}}, 0}, no_hit);
 }
 
 TEST_CASE("L06S2 segment queries: random cases", "[lab06][step2][oracle]") {
   const auto query = [](auto&& judge_one) {
     return [judge_one](const TreeQuery& in) { return judge_one(in, judge::checker_tree(in.mesh, in.tree), Rules::random); };
   };
-  check::random_cases("first_hit", judge::tree_query(), query(judge_first));
-  check::random_cases("any_hit", judge::tree_query(), query(judge_any));
-  check::random_cases("all_hits", judge::tree_query(), query(judge_all));
+  check::random_cases(query::first_hit, judge::tree_query(), query(judge_first));
+  check::random_cases(query::any_hit, judge::tree_query(), query(judge_any));
+  check::random_cases(query::all_hits, judge::tree_query(), query(judge_all));
 }
 
 // ---- Step 3 --------------------------------------------------------------------------------------
@@ -251,22 +252,22 @@ auto expect_where(Where where) {
 
 TEST_CASE("L06S3 BSP tree: worked examples", "[lab06][step3]") {
   const auto valid = [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); };
-  check::example("build_bsp", "a tetrahedron: a chain, no cut", tetrahedron(), [](const Mesh& m) {
+  check::example(query::build_bsp, "a tetrahedron: a chain, no cut", tetrahedron(), [](const Mesh& m) {
     const BspTree tree = build_bsp(m);
     Expect e;
     e.equal("pieces", int(tree.pieces.size()), 4);
     e.equal("nodes", int(tree.nodes.size()), 4);
     return both(judge::bsp_tree(m, tree), e.outcome());
   });
-  check::example("build_bsp", "a floor and a wall: one of them is cut", floor_and_wall(), [](const Mesh& m) {
+  check::example(query::build_bsp, "a floor and a wall: one of them is cut", floor_and_wall(), [](const Mesh& m) {
     const BspTree tree = build_bsp(m);
     Expect e;
     e.that("pieces", tree.pieces.size() == 3 || tree.pieces.size() == 4, std::to_string(tree.pieces.size()),
            "3 (the wall cut in two) or 4 (the floor cut in three)", "exactly one triangle is cut by the other's plane");
     return both(judge::bsp_tree(m, tree), e.outcome());
   });
-  check::example("build_bsp", "two faces in one plane stay at one node", gen::box_mesh({{0, 0, 0}, {2, 2, 2}}), valid);
-  check::example("build_bsp", "a zero-area triangle is left out", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}), [](const Mesh& m) {
+  check::example(query::build_bsp, "two faces in one plane stay at one node", gen::box_mesh({{0, 0, 0}, {2, 2, 2}}), valid);
+  check::example(query::build_bsp, "a zero-area triangle is left out", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}), [](const Mesh& m) {
     const BspTree tree = build_bsp(m);
     Expect e;
     e.equal("nodes", int(tree.nodes.size()), 0);
@@ -274,18 +275,18 @@ TEST_CASE("L06S3 BSP tree: worked examples", "[lab06][step3]") {
     return e.outcome();
   });
   const Mesh t = tetrahedron();
-  check::example("classify", "(1, 1, 1): inside", PointQuery{t, {1, 1, 1}}, expect_where(Where::inside));
-  check::example("classify", "(3, 3, 3): beyond the slanted face", PointQuery{t, {3, 3, 3}}, expect_where(Where::outside));
-  check::example("classify", "(1, 1, 2): on the slanted face", PointQuery{t, {1, 1, 2}}, expect_where(Where::on));
-  check::example("classify", "(2, 2, 0): on an edge", PointQuery{t, {2, 2, 0}}, expect_where(Where::on));
-  check::example("classify", "(0, 0, 0): a vertex", PointQuery{t, {0, 0, 0}}, expect_where(Where::on));
-  check::example("classify", "(6, 0, 0): on two planes, outside", PointQuery{t, {6, 0, 0}}, expect_where(Where::outside));
-  check::example("classify", "(-1, 1, 1): behind nothing", PointQuery{t, {-1, 1, 1}}, expect_where(Where::outside));
+  check::example(query::classify, "(1, 1, 1): inside", PointQuery{t, {1, 1, 1}}, expect_where(Where::inside));
+  check::example(query::classify, "(3, 3, 3): beyond the slanted face", PointQuery{t, {3, 3, 3}}, expect_where(Where::outside));
+  check::example(query::classify, "(1, 1, 2): on the slanted face", PointQuery{t, {1, 1, 2}}, expect_where(Where::on));
+  check::example(query::classify, "(2, 2, 0): on an edge", PointQuery{t, {2, 2, 0}}, expect_where(Where::on));
+  check::example(query::classify, "(0, 0, 0): a vertex", PointQuery{t, {0, 0, 0}}, expect_where(Where::on));
+  check::example(query::classify, "(6, 0, 0): on two planes, outside", PointQuery{t, {6, 0, 0}}, expect_where(Where::outside));
+  check::example(query::classify, "(-1, 1, 1): behind nothing", PointQuery{t, {-1, 1, 1}}, expect_where(Where::outside));
 }
 
 TEST_CASE("L06S3 BSP tree: random cases", "[lab06][step3][oracle]") {
-  check::random_cases("build_bsp", judge::bsp_mesh(), [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
-  check::random_cases("classify", judge::point_query(), [](const PointQuery& in) {
+  check::random_cases(query::build_bsp, judge::bsp_mesh(), [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
+  check::random_cases(query::classify, judge::point_query(), [](const PointQuery& in) {
     return judge::classify(in, classify(build_bsp(in.mesh), in.point));
   });
 }
@@ -328,13 +329,13 @@ TEST_CASE("L06S4 back to front: worked examples", "[lab06][step4]") {
       return both(judge::back_to_front(in, tree, order, Rules::exact), e.outcome());
     };
   };
-  check::example("back_to_front", "from above: bottom first", PointQuery{stack_of_three(), {1, 1, 10}}, sources({0, 1, 2}));
-  check::example("back_to_front", "from below: top first", PointQuery{stack_of_three(), {1, 1, -10}}, sources({2, 1, 0}));
-  check::example("back_to_front", "level with the middle one", PointQuery{stack_of_three(), {1, 1, 1}}, [](const PointQuery& in) {
+  check::example(query::back_to_front, "from above: bottom first", PointQuery{stack_of_three(), {1, 1, 10}}, sources({0, 1, 2}));
+  check::example(query::back_to_front, "from below: top first", PointQuery{stack_of_three(), {1, 1, -10}}, sources({2, 1, 0}));
+  check::example(query::back_to_front, "level with the middle one", PointQuery{stack_of_three(), {1, 1, 1}}, [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
   });
-  check::example("back_to_front", "a pinwheel: cut, then ordered", PointQuery{pinwheel(), {2, 3, 20}}, [](const PointQuery& in) {
+  check::example(query::back_to_front, "a pinwheel: cut, then ordered", PointQuery{pinwheel(), {2, 3, 20}}, [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     Expect e;
     e.that("pieces", tree.pieces.size() > 3, std::to_string(tree.pieces.size()), "more than 3",
@@ -344,7 +345,7 @@ TEST_CASE("L06S4 back to front: worked examples", "[lab06][step4]") {
 }
 
 TEST_CASE("L06S4 back to front: random cases", "[lab06][step4][oracle]") {
-  check::random_cases("back_to_front", judge::eye_query(), [](const PointQuery& in) {
+  check::random_cases(query::back_to_front, judge::eye_query(), [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point));
   });
@@ -368,19 +369,19 @@ auto expect_pairs(std::vector<std::array<int, 2>> pairs) {
 TEST_CASE("L06S5 broad phase: worked examples", "[lab06][step5]") {
   // The lecture's sweep: along x the intervals run A0 A1 R0 B0 R1 C0 C1 B1.
   const SphereSet lecture{{{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}}};
-  check::example("overlapping_pairs", "the lecture's A R B C: only R and B meet", lecture, expect_pairs({{1, 2}}));
-  check::example("overlapping_pairs", "touching along x: intervals [-1, 1] and [1, 3]",
+  check::example(query::overlapping_pairs, "the lecture's A R B C: only R and B meet", lecture, expect_pairs({{1, 2}}));
+  check::example(query::overlapping_pairs, "touching along x: intervals [-1, 1] and [1, 3]",
                  SphereSet{{{{0, 0, 0}, 1}, {{2, 0, 0}, 1}}}, expect_pairs({{0, 1}}));
-  check::example("overlapping_pairs", "a point on a sphere", SphereSet{{{{3, 4, 0}, 5}, {{0, 0, 0}, 0}}}, expect_pairs({{0, 1}}));
-  check::example("overlapping_pairs", "a row along y: x tells nothing",
+  check::example(query::overlapping_pairs, "a point on a sphere", SphereSet{{{{3, 4, 0}, 5}, {{0, 0, 0}, 0}}}, expect_pairs({{0, 1}}));
+  check::example(query::overlapping_pairs, "a row along y: x tells nothing",
                  SphereSet{{{{0, 0, 0}, 1}, {{0, 3, 0}, 1}, {{0, 6, 0}, 1.5}, {{0, 8, 0}, 1}}}, expect_pairs({{2, 3}}));
-  check::example("overlapping_pairs", "no spheres", SphereSet{}, expect_pairs({}));
-  check::example("overlapping_pairs", "one sphere inside another", SphereSet{{{{0, 0, 0}, 5}, {{1, 1, 1}, 1}, {{20, 0, 0}, 1}}},
+  check::example(query::overlapping_pairs, "no spheres", SphereSet{}, expect_pairs({}));
+  check::example(query::overlapping_pairs, "one sphere inside another", SphereSet{{{{0, 0, 0}, 5}, {{1, 1, 1}, 1}, {{20, 0, 0}, 1}}},
                  expect_pairs({{0, 1}}));
 }
 
 TEST_CASE("L06S5 broad phase: random cases", "[lab06][step5][oracle]") {
-  check::random_cases("overlapping_pairs", judge::sphere_set(), [](const SphereSet& in) {
+  check::random_cases(query::overlapping_pairs, judge::sphere_set(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres));
   });
 }
@@ -417,22 +418,22 @@ std::vector<Sphere> with_b_at(double x) { return {{{0, 0, 0}, 1}, {{x, 0, 0}, 1}
 
 TEST_CASE("L06S6 sort and sweep with frame coherence: worked examples", "[lab06][step6]") {
   // A at 0 and B sliding along x (radius 1 each): ends A0 = -1, A1 = 1, B0 = x - 1, B1 = x + 1.
-  check::example("sweep_frames", "B slides to touch A, into it, and away: x = 5, 2.5, 2, 1.5, 4",
+  check::example(query::sweep_frames, "B slides to touch A, into it, and away: x = 5, 2.5, 2, 1.5, 4",
                  SweepCase{{with_b_at(5), with_b_at(2.5), with_b_at(2), with_b_at(1.5), with_b_at(4)}},
                  expect_frames({{{}, 0, 0}, {{}, 0, 0}, {{{0, 1}}, 1, 1}, {{{0, 1}}, 1, 0}, {{}, 0, 1}}));
   // The lecture's A R B C; then C moves 2 to the left: C0 = 6 passes R1 = 7.
   const std::vector<Sphere> lecture{{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}};
   std::vector<Sphere> moved = lecture;
   moved[3].center = {7, 9, 0};
-  check::example("sweep_frames", "the lecture's A R B C, then C 2 to the left", SweepCase{{lecture, moved}},
+  check::example(query::sweep_frames, "the lecture's A R B C, then C 2 to the left", SweepCase{{lecture, moved}},
                  expect_frames({{{{1, 2}}, 2, 0}, {{{1, 2}}, 3, 1}}));
-  check::example("sweep_frames", "no spheres, twice", SweepCase{{{}, {}}}, expect_frames({{{}, 0, 0}, {{}, 0, 0}}));
-  check::example("sweep_frames.moving", "1,000 spheres, 10 frames of small moves along x", MovingSpheres{1000, 10, 6},
+  check::example(query::sweep_frames, "no spheres, twice", SweepCase{{{}, {}}}, expect_frames({{{}, 0, 0}, {{}, 0, 0}}));
+  check::example(query::sweep_frames_moving, "1,000 spheres, 10 frames of small moves along x", MovingSpheres{1000, 10, 6},
                  [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(judge::moving_spheres(m)); });
 }
 
 TEST_CASE("L06S6 sort and sweep with frame coherence: random cases", "[lab06][step6][oracle]") {
-  check::random_cases("sweep_frames", judge::sweep_case(),
+  check::random_cases(query::sweep_frames, judge::sweep_case(),
                       [](const SweepCase& in) { return judge::sweep_frames(in, run_sweep(in.frames)); });
 }
 
@@ -466,26 +467,26 @@ Mesh piercing() { return mesh_of({{{10.5, 0.5, -1}, {10.5, 0.5, 1}, {11.5, 3, 0}
 }  // namespace
 
 TEST_CASE("L06S7 OBB trees, dual traversal: worked examples", "[lab06][step7]") {
-  check::example("colliding_triangles", "one triangle through another: 1 box test, 1 triangle test",
+  check::example(query::colliding_triangles, "one triangle through another: 1 box test, 1 triangle test",
                  BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}), mesh_of({{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, 3, 0}}}), 0, 0, true},
                  expect_bvh({{0, 0}}, 1, 1));
-  check::example("colliding_triangles", "a's root, then its two leaves against b: 3 box tests, 1 triangle test",
+  check::example(query::colliding_triangles, "a's root, then its two leaves against b: 3 box tests, 1 triangle test",
                  BvhQuery{two_apart(), piercing(), 0, 0, true}, expect_bvh({{1, 0}}, 3, 1));
-  check::example("colliding_triangles", "b far away: the roots' boxes are apart, 1 box test",
+  check::example(query::colliding_triangles, "b far away: the roots' boxes are apart, 1 box test",
                  BvhQuery{two_apart(), mesh_of({{{0, 0, 50}, {2, 0, 50}, {0, 2, 50}}}), 0, 0, true}, expect_bvh({}, 1, 0));
-  check::example("colliding_triangles", "coplanar overlapping triangles never meet here",
+  check::example(query::colliding_triangles, "coplanar overlapping triangles never meet here",
                  BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}), mesh_of({{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}}), 0, 0, true},
                  expect_bvh({}, 1, 1));
-  check::example("colliding_triangles", "two spheres of 80 triangles overlapping, every pair",
+  check::example(query::colliding_triangles, "two spheres of 80 triangles overlapping, every pair",
                  BvhQuery{gen::sphere_mesh(80, {0, 0, 0}, 1), gen::sphere_mesh(80, {1.2, 0.3, 0.1}, 0.8), 3, 5, true},
                  [](const BvhQuery& in) { return judge_bvh(in, Rules::random); });
-  check::example("colliding_triangles", "the same, one pair asked for",
+  check::example(query::colliding_triangles, "the same, one pair asked for",
                  BvhQuery{gen::sphere_mesh(80, {0, 0, 0}, 1), gen::sphere_mesh(80, {1.2, 0.3, 0.1}, 0.8), 3, 5, false},
                  [](const BvhQuery& in) { return judge_bvh(in, Rules::random); });
 }
 
 TEST_CASE("L06S7 OBB trees, dual traversal: random cases", "[lab06][step7][oracle]") {
-  check::random_cases("colliding_triangles", judge::bvh_query(), [](const BvhQuery& in) { return judge_bvh(in); });
+  check::random_cases(query::colliding_triangles, judge::bvh_query(), [](const BvhQuery& in) { return judge_bvh(in); });
 }
 
 // ---- Step 8 --------------------------------------------------------------------------------------
@@ -603,8 +604,8 @@ Outcome run_efficiency(const EfficiencyCase& in) {
 TEST_CASE("L06S8 efficiency: tests counted on 10,000 triangles", "[lab06][step8]") {
   const int seed = int(check::settings().seed % 1000000);
   for (int kind = 0; kind < 4; ++kind)
-    check::example("efficiency.segments", gen::name_of(gen::MeshKind(kind)), EfficiencyCase{kind, 10000, 1000, seed}, run_efficiency);
-  check::example("efficiency.spheres", "2,000 spheres spread over a cube", SpreadSpheres{2000, seed}, [](const SpreadSpheres& in) {
+    check::example(query::efficiency_segments, gen::name_of(gen::MeshKind(kind)), EfficiencyCase{kind, 10000, 1000, seed}, run_efficiency);
+  check::example(query::efficiency_spheres, "2,000 spheres spread over a cube", SpreadSpheres{2000, seed}, [](const SpreadSpheres& in) {
     const SphereSet set{gen::spread_spheres(in.count, 100, 0.25, 1, std::uint64_t(in.seed))};
     const SpherePairs got = overlapping_pairs(set.spheres);
     const Outcome right = judge::overlapping_pairs(set, got);
@@ -659,41 +660,41 @@ TEST_CASE("L06S9 robustness: k-d trees on exact input", "[lab06][step9]") {
   const auto exact_all = [&tree](const TreeQuery& in) {
     return both(judge_all(in, tree, Rules::exact), both(judge_first(in, tree, Rules::exact), judge_any(in, tree, Rules::exact)));
   };
-  const std::string q = "robust.segment_queries";
+  constexpr auto q = query::robust_segment_queries;
   check::example(q, "down the split plane x = 2", TreeQuery{mesh, {{2, 1, 4}, {2, 1, -4}}, 0}, exact_all);
   check::example(q, "along the top, in the plane z = 2", TreeQuery{mesh, {{-2, 1, 2}, {6, 1, 2}}, 0}, exact_all);
   check::example(q, "along the wall y = 0 of the root's cell", TreeQuery{mesh, {{1, 0, 1}, {1, 0, -1}}, 0}, exact_all);
   check::example(q, "ending exactly on the split plane", TreeQuery{mesh, {{-2, 1, 1}, {2, 1, 1}}, 0}, exact_all);
   check::example(q, "starting on the split plane, through a shared edge", TreeQuery{mesh, {{2, 1, 4}, {2, 1, 2}}, 0}, exact_all);
   check::example(q, "through the corner (2, 0, 2) of three cells", TreeQuery{mesh, {{0, -2, 0}, {4, 2, 4}}, 0}, exact_all);
-  check::example("robust.build_kd_tree", "two cubes: splits along their faces", mesh,
+  check::example(query::robust_build_kd_tree, "two cubes: splits along their faces", mesh,
                  [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
 }
 
 TEST_CASE("L06S9 robustness: BSP trees and spheres on exact input", "[lab06][step9]") {
   // An L of three cubes (scaled by 2): faces share planes, points lie on them.
   const Mesh l = gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Vec3::Zero(), 2.0);
-  const std::string q = "robust.classify";
+  constexpr auto q = query::robust_classify;
   check::example(q, "in the notch of the L", PointQuery{l, {3, 3, 1}}, expect_where(Where::outside));
   check::example(q, "beyond the notch, on two face planes", PointQuery{l, {4, 4, 1}}, expect_where(Where::outside));
   check::example(q, "on the inner corner edge", PointQuery{l, {2, 2, 1}}, expect_where(Where::on));
   check::example(q, "inside, on the plane between two cubes", PointQuery{l, {2, 1, 1}}, expect_where(Where::inside));
   check::example(q, "on a top face, on a cube's edge line", PointQuery{l, {1, 2, 2}}, expect_where(Where::on));
   check::example(q, "beyond the top, on a face's plane", PointQuery{l, {1, 5, 2}}, expect_where(Where::outside));
-  check::example("robust.back_to_front", "the eye in the plane of the top faces", PointQuery{l, {9, 9, 2}},
+  check::example(query::robust_back_to_front, "the eye in the plane of the top faces", PointQuery{l, {9, 9, 2}},
                  [](const PointQuery& in) { return judge_order(in, Rules::exact); });
-  check::example("robust.overlapping_pairs", "a chain touching along x, listed backwards",
+  check::example(query::robust_overlapping_pairs, "a chain touching along x, listed backwards",
                  SphereSet{{{{6, 0, 0}, 1}, {{3, 0, 0}, 2}, {{0, 0, 0}, 1}}}, expect_pairs({{0, 1}, {1, 2}}));
   // Step 7 on exact contacts (every edge's largest |component| a power of two: the given
   // test is exact): an edge through the other triangle's edge, an edge starting on it.
   const Mesh floor = mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}});
-  check::example("robust.colliding_triangles", "an edge crossing the other's edge at (1, 0, 0)",
+  check::example(query::robust_colliding_triangles, "an edge crossing the other's edge at (1, 0, 0)",
                  BvhQuery{floor, mesh_of({{{1, 0, -1}, {1, 0, 1}, {1, -2, 0}}}), 0, 0, true}, expect_bvh({{0, 0}}, 1, 1));
-  check::example("robust.colliding_triangles", "a vertex exactly on the other's edge, at (1, 1, 0)",
+  check::example(query::robust_colliding_triangles, "a vertex exactly on the other's edge, at (1, 1, 0)",
                  BvhQuery{floor, mesh_of({{{1, 1, 0}, {1, 1, 2}, {3, 3, 2}}}), 0, 0, true}, expect_bvh({{0, 0}}, 1, 1));
   // Three equal balls whose ends meet exactly: a low end arrives at a high end's value
   // (touching: the low end must pass it), twice.
-  check::example("robust.sweep_frames", "ends arriving exactly on ends",
+  check::example(query::robust_sweep_frames, "ends arriving exactly on ends",
                  SweepCase{{{{{0, 0, 0}, 1}, {{4, 0, 0}, 1}, {{8, 0, 0}, 1}},
                                    {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{8, 0, 0}, 1}},
                                    {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{4, 0, 0}, 1}}}},
@@ -701,20 +702,20 @@ TEST_CASE("L06S9 robustness: BSP trees and spheres on exact input", "[lab06][ste
 }
 
 TEST_CASE("L06S9 robustness: random exact degenerate cases", "[lab06][step9][oracle]") {
-  check::random_cases("robust.segment_queries", judge::exact_tree_query(),
+  check::random_cases(query::robust_segment_queries, judge::exact_tree_query(),
                       [](const TreeQuery& in) { return all_three(in, Rules::exact); });
-  check::random_cases("robust.build_kd_tree", gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
-  check::random_cases("robust.classify", judge::exact_point_query(), [](const PointQuery& in) {
+  check::random_cases(query::robust_build_kd_tree, gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+  check::random_cases(query::robust_classify, judge::exact_point_query(), [](const PointQuery& in) {
     return judge::classify(in, classify(build_bsp(in.mesh), in.point), Rules::exact);
   });
-  check::random_cases("robust.back_to_front", judge::exact_eye_query(), [](const PointQuery& in) {
+  check::random_cases(query::robust_back_to_front, judge::exact_eye_query(), [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
   });
-  check::random_cases("robust.overlapping_pairs", judge::exact_sphere_set(), [](const SphereSet& in) {
+  check::random_cases(query::robust_overlapping_pairs, judge::exact_sphere_set(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
   });
-  check::random_cases("robust.sweep_frames", judge::exact_sweep_case(), [](const SweepCase& in) {
+  check::random_cases(query::robust_sweep_frames, judge::exact_sweep_case(), [](const SweepCase& in) {
     return judge::sweep_frames(in, run_sweep(in.frames), Rules::exact);
   });
 }

@@ -1,6 +1,7 @@
 // Lab 07 tests. Each step: the hand-worked examples of handouts/07_particles.md, then
 // random cases against the exact oracle (tests/07_particles.judge.cpp).
 #include "07_particles.judge.h"
+#include "07_particles.queries.h"
 #include "particles.h"
 
 #include <cmath>
@@ -16,10 +17,10 @@ using judge::Rules;
 // What keeps each query's calls finite, in the header's words: a crash or a time-out in
 // that query says it first (check::rule).
 const bool kRules = [] {
-  check::rule("collide", "a step applies at most bounce_cap impulses (at most kMaxBounceCap = 8); "
+  check::rule(query::collide, "a step applies at most bounce_cap impulses (at most kMaxBounceCap = 8); "
                          "the next hit stops the particle: the loop runs at most bounce_cap + 1 times");
-  check::rule("system", check::rule_of("collide"));
-  check::rule("births", "the count is rate * dt plus what earlier steps owed, rounded down: computed once, "
+  check::rule(query::system, check::rule_of(query::collide));
+  check::rule(query::births, "the count is rate * dt plus what earlier steps owed, rounded down: computed once, "
                         "never counted up in a loop");
   return true;
 }();
@@ -154,18 +155,18 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
   ten.emitter.rate = 10;
   ten.dt = 0.25;
   ten.steps = 4;
-  check::example("births", "10 per second, dt = 1/4: 2, 3, 2, 3", ten, counts({2, 3, 2, 3}, {0.5, 0, 0.5, 0}));
+  check::example(query::births, "10 per second, dt = 1/4: 2, 3, 2, 3", ten, counts({2, 3, 2, 3}, {0.5, 0, 0.5, 0}));
   BirthsCase three{};
   three.emitter.rate = 3;
   three.dt = 0.125;
   three.steps = 8;
-  check::example("births", "3 per second, dt = 1/8: 3 in a second", three,
+  check::example(query::births, "3 per second, dt = 1/8: 3 in a second", three,
                  counts({0, 0, 1, 0, 0, 1, 0, 1}, {0.375, 0.75, 0.125, 0.5, 0.875, 0.25, 0.625, 0}));
   BirthsCase fine{};
   fine.emitter.rate = 10;
   fine.dt = 1.0 / 64;
   fine.steps = 64;
-  check::example("births", "10 per second at 64 steps per second: 10 in a second", fine, [](const BirthsCase& in) {
+  check::example(query::births, "10 per second at 64 steps per second: 10 in a second", fine, [](const BirthsCase& in) {
     int total = 0;
     for (const Births& b : run_births_steps(in)) total += b.count;
     Expect e;
@@ -182,7 +183,7 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
     p.lifetime = a == 0.5 ? 1.0 : 0.5;
     ages.particles.push_back(p);
   }
-  check::example("age", "ages 0, 1/4, 1/2 (lifetimes 1/2, 1/2, 1), dt 1/4: the second dies", ages, [](const AgeCase& in) {
+  check::example(query::age, "ages 0, 1/4, 1/2 (lifetimes 1/2, 1/2, 1), dt 1/4: the second dies", ages, [](const AgeCase& in) {
     const std::vector<Particle> got = age(in.particles, in.dt);
     Expect e;
     e.equal("survivors", int(got.size()), 2);
@@ -203,7 +204,7 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
   still.emitter.lifetime = 2;
   still.emitter.mass = 0.5;
   still.count = 3;
-  check::example("emit", "no spread: at (1, 2, 3), velocity (0, 0, 5)", still, [](const EmitCase& in) {
+  check::example(query::emit, "no spread: at (1, 2, 3), velocity (0, 0, 5)", still, [](const EmitCase& in) {
     Random random(1);
     const Particle p = emit(in.emitter, random);
     Expect e;
@@ -224,7 +225,7 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
   resting.emitter.lifetime = 0.125;
   resting.emitter.mass = 0.125;
   resting.count = 4;
-  check::example("emit", "a wide cone at speed 0: four identical particles at rest", resting, run_emit);
+  check::example(query::emit, "a wide cone at speed 0: four identical particles at rest", resting, run_emit);
 
   // A 60-degree cone: uniform in solid angle, the mean of cos(angle) is (1 + cos 60) / 2.
   EmitCase cone{};
@@ -237,7 +238,7 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
   cone.emitter.lifetime = 3;
   cone.emitter.lifetime_spread = 1;
   cone.count = 20000;
-  check::example("emit", "a 60-degree cone, 20000 particles: spread as the ranges say", cone, [](const EmitCase& in) {
+  check::example(query::emit, "a 60-degree cone, 20000 particles: spread as the ranges say", cone, [](const EmitCase& in) {
     Random random(7);
     double cos_sum = 0, speed_sum = 0, life_sum = 0;
     Vec3 side = Vec3::Zero(), where = Vec3::Zero();
@@ -268,9 +269,9 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
 }
 
 TEST_CASE("L07S1 emitter and lifetime: random cases", "[lab07][step1][oracle]") {
-  check::random_cases("emit", judge::emit_case(), run_emit);
-  check::random_cases("births", judge::births_case(), run_births);
-  check::random_cases("age", judge::age_case(), run_age);
+  check::random_cases(query::emit, judge::emit_case(), run_emit);
+  check::random_cases(query::births, judge::births_case(), run_births);
+  check::random_cases(query::age, judge::age_case(), run_age);
 }
 
 // ---- Step 2 ----------------------------------------------------------------------------
@@ -291,7 +292,7 @@ MotionCase thrown() {
 }  // namespace
 
 TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
-  check::example("euler_step", "two Euler steps of a thrown particle", thrown(), [](const MotionCase& in) {
+  check::example(query::euler_step, "two Euler steps of a thrown particle", thrown(), [](const MotionCase& in) {
     const Particle one = euler_step(in.particle, in.forces, in.dt);
     const Particle two = euler_step(one, in.forces, in.dt);
     Expect e;
@@ -302,7 +303,7 @@ TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
     return teach("explicit Euler takes both updates from the start of the step: p' = p + v dt with the old v (moving with "
                  "the new v is semi-implicit Euler)", e.outcome());
   });
-  check::example("verlet_step", "two Verlet steps land on the exact parabola", thrown(), [](const MotionCase& in) {
+  check::example(query::verlet_step, "two Verlet steps land on the exact parabola", thrown(), [](const MotionCase& in) {
     const Particle start = start_verlet(in.particle, in.forces, in.dt);
     const Particle one = verlet_step(start, in.forces, in.dt);
     const Particle two = verlet_step(one, in.forces, in.dt);
@@ -321,12 +322,12 @@ TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
   dragged.particle.velocity = Vec3(4, 0, 0);
   dragged.forces = {Vec3(0, 0, -10), 0.5, 0.25};
   dragged.dt = 0.5;
-  check::example("force", "gravity and both drags: (-2 - 4, 0, -20)", dragged, [](const MotionCase& in) {
+  check::example(query::force, "gravity and both drags: (-2 - 4, 0, -20)", dragged, [](const MotionCase& in) {
     Expect e;
     e.near("force", force(in.particle, in.forces), Vec3(-6, 0, -20), 1e-12);
     return teach("F = m g - k1 v - k2 |v| v: gravity is an acceleration, both drags oppose the velocity", e.outcome());
   });
-  check::example("euler_step", "with drag: the velocity loses 6 / 2 * 1/2 along x", dragged, [](const MotionCase& in) {
+  check::example(query::euler_step, "with drag: the velocity loses 6 / 2 * 1/2 along x", dragged, [](const MotionCase& in) {
     const Particle one = euler_step(in.particle, in.forces, in.dt);
     Expect e;
     e.near("position", one.position, Vec3(2, 0, 0), 1e-12);
@@ -336,7 +337,7 @@ TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
 }
 
 TEST_CASE("L07S2 forces, Euler and Verlet: random cases", "[lab07][step2][oracle]") {
-  check::random_cases("integrators", judge::motion_case(), run_motion);
+  check::random_cases(query::integrators, judge::motion_case(), run_motion);
 }
 
 // ---- Step 3 ----------------------------------------------------------------------------
@@ -375,9 +376,9 @@ auto expect_angles(int count, double radicand, double low, double high, double l
 
 TEST_CASE("L07S3 launch angle to hit a target: worked examples", "[lab07][step3]") {
   // The lecture's example: 25 m/s, a target 40 m away at the launch height.
-  check::example("aim", "the lecture's example: 19.445 and 70.555 degrees (the lecture rounds to 19.4 and 70.6)", lecture_shot({40, 0, 0}),
+  check::example(query::aim, "the lecture's example: 19.445 and 70.555 degrees (the lecture rounds to 19.4 and 70.6)", lecture_shot({40, 0, 0}),
                  expect_angles(2, 969.30709504, 0.3393874833716999, 1.2314088434231967, 1.6967868333822653, 4.8061098626660765));
-  check::example("aim", "the lecture's example, in degrees to 0.001: 19.445 and 70.555", lecture_shot({40, 0, 0}), [](const LaunchCase& in) {
+  check::example(query::aim, "the lecture's example, in degrees to 0.001: 19.445 and 70.555", lecture_shot({40, 0, 0}), [](const LaunchCase& in) {
     const Aim got = aim(in.from, in.target, in.speed, in.gravity);
     Expect e;
     e.near("low, degrees to 0.001", std::round(got.low.angle / kDegree * 1000) / 1000, 19.445, 1e-9);
@@ -385,18 +386,18 @@ TEST_CASE("L07S3 launch angle to hit a target: worked examples", "[lab07][step3]
     e.near("radicand, to 0.01", std::round(got.radicand * 100) / 100, 969.31, 1e-9);
     return e.outcome();
   });
-  check::example("aim", "a target 10 m up: 36.213 and 67.823 degrees", lecture_shot({40, 0, 10}),
+  check::example(query::aim, "a target 10 m up: 36.213 and 67.823 degrees", lecture_shot({40, 0, 10}),
                  expect_angles(2, 467.03509504, 0.6320328874362006, 1.18374210248556, 1.9830740305387204, 4.238835098464936));
-  check::example("aim", "70 m is out of reach", lecture_shot({70, 0, 0}), expect_angles(0, -1015.20962816, 0, 0, 0, 0));
+  check::example(query::aim, "70 m is out of reach", lecture_shot({70, 0, 0}), expect_angles(0, -1015.20962816, 0, 0, 0, 0));
   // D = 10^4 - 10^2 10^2 = 0: one angle, 45 degrees.
-  check::example("aim", "just in reach: one angle, 45 degrees", LaunchCase{Vec3::Zero(), {10, 0, 0}, 10, {0, 0, -10}},
+  check::example(query::aim, "just in reach: one angle, 45 degrees", LaunchCase{Vec3::Zero(), {10, 0, 0}, 10, {0, 0, -10}},
                  expect_angles(1, 0, M_PI / 4, M_PI / 4, std::sqrt(2.0), std::sqrt(2.0)));
-  check::example("aim", "straight above: no angle to solve for", lecture_shot({0, 0, 5}), expect_angles(0, 0, 0, 0, 0, 0));
+  check::example(query::aim, "straight above: no angle to solve for", lecture_shot({0, 0, 5}), expect_angles(0, 0, 0, 0, 0, 0));
 }
 
 TEST_CASE("L07S3 launch angle to hit a target: random cases", "[lab07][step3][oracle]") {
-  check::random_cases("aim", judge::launch_case(), run_aim);
-  check::random_cases("exact.aim", judge::exact_launch_case(), run_exact_aim);
+  check::random_cases(query::aim, judge::launch_case(), run_aim);
+  check::random_cases(query::exact_aim, judge::exact_launch_case(), run_exact_aim);
 }
 
 // ---- Step 4 ----------------------------------------------------------------------------
@@ -418,19 +419,19 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
   const auto plane_miss = [](const SegmentScene& in) {
     return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]), Rules::exact);
   };
-  check::example("hit_plane", "falling through the floor at t = 3/4", on_floor({1, 1, 3}, {1, 1, -1}), plane_hit(0.75, {1, 1, 0}));
-  check::example("hit_plane", "rising from below: one-sided, no hit", on_floor({1, 1, -1}, {1, 1, 3}), plane_miss);
-  check::example("hit_plane", "resting on the floor, pushed in: t = 0", on_floor({1, 1, 0}, {1, 1, -1}), plane_hit(0, {1, 1, 0}));
-  check::example("hit_plane", "ending exactly on the floor is not behind it", on_floor({1, 1, 3}, {1, 1, 0}), plane_miss);
+  check::example(query::hit_plane, "falling through the floor at t = 3/4", on_floor({1, 1, 3}, {1, 1, -1}), plane_hit(0.75, {1, 1, 0}));
+  check::example(query::hit_plane, "rising from below: one-sided, no hit", on_floor({1, 1, -1}, {1, 1, 3}), plane_miss);
+  check::example(query::hit_plane, "resting on the floor, pushed in: t = 0", on_floor({1, 1, 0}, {1, 1, -1}), plane_hit(0, {1, 1, 0}));
+  check::example(query::hit_plane, "ending exactly on the floor is not behind it", on_floor({1, 1, 3}, {1, 1, 0}), plane_miss);
   SegmentScene shelf = on_floor({0, 0, 3}, {0, 0, 0});
   shelf.scene.planes = {Plane{{0, 0, 2}, -2}};  // z = 1, its normal of length 2
-  check::example("hit_plane", "z = 1 written 2 z - 2 = 0: t = 2/3", shelf, plane_hit(2.0 / 3, {0, 0, 1}));
+  check::example(query::hit_plane, "z = 1 written 2 z - 2 = 0: t = 2/3", shelf, plane_hit(2.0 / 3, {0, 0, 1}));
   // The header's rule for a: n . a + c computes to -1.5e-11 here, within its rounding
   // bound (1.7e-10): a is on the plane (exactly, in fact), and moving behind it hits at t = 0.
   SegmentScene resting = on_floor({-33791.999998051404, 16384.000000954293, 16384.00000055659},
                                   {-33791.99999423671, 16384.000000954293, 16384.00000055659});
   resting.scene.planes = {Plane{{-1, 2, 1}, -82944.00000051658}};
-  check::example("hit_plane", "resting on a plane within value(a)'s rounding bound, moving behind: t = 0", resting,
+  check::example(query::hit_plane, "resting on a plane within value(a)'s rounding bound, moving behind: t = 0", resting,
                  [](const SegmentScene& in) {
                    const SurfaceHit got = hit_plane(in.segment, in.scene.planes[0]);
                    Expect e;
@@ -453,11 +454,11 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
       return o.verdict == Outcome::Verdict::fail ? o : judge::hit_triangle(in, got);
     };
   };
-  check::example("hit_triangle", "from above: normal up", SegmentTrianglePair{{{1, 1, 3}, {1, 1, -1}}, kFloorTriangle},
+  check::example(query::hit_triangle, "from above: normal up", SegmentTrianglePair{{{1, 1, 3}, {1, 1, -1}}, kFloorTriangle},
                  triangle_hit(0.75, {0, 0, 1}));
-  check::example("hit_triangle", "from below: two-sided, the normal faces down", SegmentTrianglePair{{{1, 1, -1}, {1, 1, 3}}, kFloorTriangle},
+  check::example(query::hit_triangle, "from below: two-sided, the normal faces down", SegmentTrianglePair{{{1, 1, -1}, {1, 1, 3}}, kFloorTriangle},
                  triangle_hit(0.25, {0, 0, -1}));
-  check::example("hit_triangle", "starting on the triangle: leaving it, no hit",
+  check::example(query::hit_triangle, "starting on the triangle: leaving it, no hit",
                  SegmentTrianglePair{{{1, 1, 0}, {1, 1, -1}}, kFloorTriangle}, [](const SegmentTrianglePair& in) {
                    Expect e;
                    e.equal("hit", hit_triangle(in.segment, in.triangle).hit, false);
@@ -468,7 +469,7 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
   floor_and_shelf.segment = {{1, 3, 5}, {1, 3, -1}};
   floor_and_shelf.scene.planes = {kFloor};
   add_square(floor_and_shelf.scene.mesh, 2);
-  check::example("first_hit", "the shelf (t = 1/2) before the floor (t = 5/6)", floor_and_shelf, [](const SegmentScene& in) {
+  check::example(query::first_hit, "the shelf (t = 1/2) before the floor (t = 5/6)", floor_and_shelf, [](const SegmentScene& in) {
     const SurfaceHit got = first_hit(in.segment, in.scene);
     Expect e;
     e.equal("hit", got.hit, true);
@@ -483,7 +484,7 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
   tie.segment = {{1, 3, 1}, {1, 3, -1}};
   tie.scene.planes = {kFloor};
   add_square(tie.scene.mesh, 0);
-  check::example("first_hit", "a triangle lying on the floor: the tie goes to the plane", tie, [](const SegmentScene& in) {
+  check::example(query::first_hit, "a triangle lying on the floor: the tie goes to the plane", tie, [](const SegmentScene& in) {
     const SurfaceHit got = first_hit(in.segment, in.scene);
     Expect e;
     e.equal("hit", got.hit, true);
@@ -499,18 +500,18 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
       "16,0,0,0,0,1024,0,0,2048,2048,0,3072,0,1024,0,0,1024,1024,0,1024,2048,-1024,1024,3072,-2048,2048,0,0,2048,1024,0,"
       "2048,2048,0,2048,3072,0,3072,0,0,3072,1024,0,3072,2048,0,3072,3072,0,18,0,4,5,0,5,1,1,5,6,1,6,2,2,6,7,2,7,3,4,8,"
       "9,4,9,5,5,9,10,5,10,6,6,10,11,6,11,7,8,12,13,8,13,9,9,13,14,9,14,10,10,14,15,10,15,11,0.5,0,4,0,0,0"));
-  check::example("first_hit", "a hair outside an edge: a hit there is in doubt, either answer passes", edge, run_first_hit);
+  check::example(query::first_hit, "a hair outside an edge: a hit there is in doubt, either answer passes", edge, run_first_hit);
 }
 
 TEST_CASE("L07S4 the step as a segment against surfaces: random cases", "[lab07][step4][oracle]") {
-  check::random_cases("hit_plane", judge::plane_case(), [](const SegmentScene& in) {
+  check::random_cases(query::hit_plane, judge::plane_case(), [](const SegmentScene& in) {
     return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]));
   });
-  check::random_cases("hit_triangle", judge::sheet_case(), [](const SegmentTrianglePair& in) {
+  check::random_cases(query::hit_triangle, judge::sheet_case(), [](const SegmentTrianglePair& in) {
     return judge::hit_triangle(in, hit_triangle(in.segment, in.triangle));
   });
-  check::random_cases("first_hit", judge::segment_scene(), run_first_hit);
-  check::random_cases("exact.first_hit", judge::exact_segment_scene(), run_exact_first_hit);
+  check::random_cases(query::first_hit, judge::segment_scene(), run_first_hit);
+  check::random_cases(query::exact_first_hit, judge::exact_segment_scene(), run_exact_first_hit);
 }
 
 // ---- Step 5 ----------------------------------------------------------------------------
@@ -534,21 +535,21 @@ auto expect_impulse(std::string rule, bool closing, Vec3 normal_impulse, Vec3 fr
 
 TEST_CASE("L07S5 impulse with restitution and friction: worked examples", "[lab07][step5]") {
   const Vec3 up(0, 0, 1);
-  check::example("impulse", "e = 1/2, mu = 1/4: sliding slows", ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 2, {0.5, 0.25}},
+  check::example(query::impulse, "e = 1/2, mu = 1/4: sliding slows", ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 2, {0.5, 0.25}},
                  expect_impulse("j_n = -(1 + e) m v_close n; friction opposes the sliding v_t with min(mu |j_n|, m |v_t|)", true,
                                 {0, 0, 12}, {-3, 0, 0}, {1.5, 0, 2}));
-  check::example("impulse", "mu = 1: friction stops the sliding, never reverses it",
+  check::example(query::impulse, "mu = 1: friction stops the sliding, never reverses it",
                  ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 2, {0.5, 1}},
                  expect_impulse("friction never reverses the sliding: its size is min(mu |j_n|, m |v_t|), at most what stops v_t",
                                 true, {0, 0, 12}, {-6, 0, 0}, {0, 0, 2}));
-  check::example("impulse", "e = 1, mu = 0: the speed is kept", ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 1, {1, 0}},
+  check::example(query::impulse, "e = 1, mu = 0: the speed is kept", ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 1, {1, 0}},
                  expect_impulse("e = 1 turns v_close around at full size: j_n = -2 m v_close n", true, {0, 0, 8}, {0, 0, 0},
                                 {3, 0, 4}));
-  check::example("impulse", "a paddle rising at 2 meets a ball falling at 3: it leaves at 7",
+  check::example(query::impulse, "a paddle rising at 2 meets a ball falling at 3: it leaves at 7",
                  ImpulseCase{{0, 0, -3}, {0, 0, 2}, up, 1, {1, 0}},
                  expect_impulse("only the relative velocity v - v_obj matters: v_close = (v - v_obj) . n", true, {0, 0, 10},
                                 {0, 0, 0}, {0, 0, 7}));
-  check::example("impulse", "a floor falling faster than the ball: no impulse",
+  check::example(query::impulse, "a floor falling faster than the ball: no impulse",
                  ImpulseCase{{0, 0, -1}, {0, 0, -3}, up, 1, {1, 0}},
                  expect_impulse("only the relative velocity v - v_obj matters: (v - v_obj) . n = 2 > 0, the particle is not "
                                 "closing, and gets no impulse",
@@ -556,7 +557,7 @@ TEST_CASE("L07S5 impulse with restitution and friction: worked examples", "[lab0
 }
 
 TEST_CASE("L07S5 impulse with restitution and friction: random cases", "[lab07][step5][oracle]") {
-  check::random_cases("impulse", judge::impulse_case(), run_impulse);
+  check::random_cases(query::impulse, judge::impulse_case(), run_impulse);
 }
 
 // ---- Step 6 ----------------------------------------------------------------------------
@@ -591,15 +592,15 @@ TEST_CASE("L07S6 bounce in the remaining time, bounce cap: worked examples", "[l
   const std::string remaining = "after a hit at t the particle goes on from the hit point, with the new velocity, for the "
                                 "remaining time (1 - t) r only";
   const std::string cap = "the bounce cap: after bounce_cap impulses, the next hit stops the particle there, velocity zero";
-  check::example("collide", "e = 1: from (1, 0, 0) half a step at (2, 0, 2)", into_floor(1, 0),
+  check::example(query::collide, "e = 1: from (1, 0, 0) half a step at (2, 0, 2)", into_floor(1, 0),
                  expect_collision(remaining, {2, 0, 1}, {2, 0, 2}, 1, false));
-  check::example("collide", "e = 1/2: up at 1 instead of 2", into_floor(0.5, 0),
+  check::example(query::collide, "e = 1/2: up at 1 instead of 2", into_floor(0.5, 0),
                  expect_collision(remaining, {2, 0, 0.5}, {2, 0, 1}, 1, false));
-  check::example("collide", "floor, then wall: two bounces", into_corner(4),
+  check::example(query::collide, "floor, then wall: two bounces", into_corner(4),
                  expect_collision(remaining + ", and that piece is tested again", {2, 0, 1}, {-4, 0, 2}, 2, false));
-  check::example("collide", "cap 1: stopped at the wall", into_corner(1), expect_collision(cap, {3, 0, 0.5}, {0, 0, 0}, 1, true));
-  check::example("collide", "cap 0: stopped at the floor", into_corner(0), expect_collision(cap, {2, 0, 0}, {0, 0, 0}, 0, true));
-  check::example("collide", "no hit: the step stands", CollideCase{{{0, 0, 3}, {1, 0, 2}}, {1, 0, -1}, 1, 1, floor_scene(1, 0)},
+  check::example(query::collide, "cap 1: stopped at the wall", into_corner(1), expect_collision(cap, {3, 0, 0.5}, {0, 0, 0}, 1, true));
+  check::example(query::collide, "cap 0: stopped at the floor", into_corner(0), expect_collision(cap, {2, 0, 0}, {0, 0, 0}, 0, true));
+  check::example(query::collide, "no hit: the step stands", CollideCase{{{0, 0, 3}, {1, 0, 2}}, {1, 0, -1}, 1, 1, floor_scene(1, 0)},
                  expect_collision("a step that hits nothing ends at b with its velocity", {1, 0, 2}, {1, 0, -1}, 0, false));
   // A moving floor (the lecture's paddle): rising at u = (0, 0, 2), at z = 0 at the end of
   // the step, so at z = -2 when it starts. Seen from the floor the particle starts at
@@ -607,15 +608,15 @@ TEST_CASE("L07S6 bounce in the remaining time, bounce cap: worked examples", "[l
   const std::string relative = "a moving scene, in its own frame: the relative step a + u dt -> b finds the hit, the "
                                "impulse takes the relative velocity v - u, and the particle goes on relative to the moving "
                                "surfaces, from -> from + (v' - u) (1 - t) r";
-  check::example("collide", "a rising floor (u = (0, 0, 2), e = 1/2): hit at t = 3/4, ends at (1, 0, 0.5)",
+  check::example(query::collide, "a rising floor (u = (0, 0, 2), e = 1/2): hit at t = 3/4, ends at (1, 0, 0.5)",
                  rising_floor({{0, 0, 1}, {1, 0, -1}}, {1, 0, -2}, 0.5),
                  expect_collision(relative, {1, 0, 0.5}, {1, 0, 4}, 1, false));
-  check::example("collide", "a ball at rest struck by the rising floor (e = 1): it leaves at 2 u",
+  check::example(query::collide, "a ball at rest struck by the rising floor (e = 1): it leaves at 2 u",
                  rising_floor({{0, 0, -0.5}, {0, 0, -0.5}}, {0, 0, 0}, 1),
                  expect_collision(relative, {0, 0, 0.5}, {0, 0, 4}, 1, false));
   Scene lift = floor_scene(0.5, 0, 0);
   lift.velocity = Vec3(0, 0, 2);
-  check::example("collide", "cap 0 on the rising floor: stopped on it, moving with it",
+  check::example(query::collide, "cap 0 on the rising floor: stopped on it, moving with it",
                  CollideCase{{{0, 0, 1}, {1, 0, -1}}, {1, 0, -2}, 1, 1, lift},
                  expect_collision("the bounce cap on a moving scene: the particle stops at the hit, at rest on the surface, "
                                   "so with the surface's velocity u",
@@ -623,7 +624,7 @@ TEST_CASE("L07S6 bounce in the remaining time, bounce cap: worked examples", "[l
 }
 
 TEST_CASE("L07S6 bounce in the remaining time, bounce cap: random cases", "[lab07][step6][oracle]") {
-  check::random_cases("collide", judge::collide_case(), run_collide);
+  check::random_cases(query::collide, judge::collide_case(), run_collide);
 }
 
 // ---- Step 7 ----------------------------------------------------------------------------
@@ -634,31 +635,31 @@ TEST_CASE("L07S7 never behind, exactly: worked examples", "[lab07][step7]") {
   on.x = Vec3(1, 1, 0);
   on.scene = floor_scene(0, 0);
   on.last = {true, 0, -1, 0.5, Vec3(1, 1, 0), Vec3(0, 0, 1)};
-  check::example("settle", "exactly on the floor just hit: lifted off it", on, settled);
+  check::example(query::settle, "exactly on the floor just hit: lifted off it", on, settled);
   SettleCase behind = on;
   behind.x = Vec3(0.125, 0, -1.3877787807814457e-17);
-  check::example("settle", "a hair below the floor: back above it", behind, settled);
+  check::example(query::settle, "a hair below the floor: back above it", behind, settled);
   SettleCase crease = on;
   crease.x = Vec3(0, 1, 0);
   crease.scene.planes.push_back(Plane{{1, 0, -2}, 0});  // x >= 2 z: a wedge 26.6 degrees wide
-  check::example("settle", "in an acute crease: off both planes at once", crease, settled);
+  check::example(query::settle, "in an acute crease: off both planes at once", crease, settled);
   SettleCase sheet{};
   sheet.x = Vec3(1, 1, 0);
   add_square(sheet.scene.mesh, 0);
   sheet.last = {true, -1, 0, 0.5, Vec3(1, 1, 0), Vec3(0, 0, -1)};
-  check::example("settle", "on a sheet hit from below: below it", sheet, settled);
+  check::example(query::settle, "on a sheet hit from below: below it", sheet, settled);
 
   // A dead bounce (e = 0) along the floor: the hit point a + t (b - a) comes out
   // 1.4e-17 below the floor, and the particle would slide on there.
   const CollideCase dead{{{0, 0, 0.1}, {1, 0, -0.7}}, {1, 0, -0.8}, 1, 1, floor_scene(0, 0)};
-  check::example("invariants", "a dead bounce slides on, above the floor", dead, [](const CollideCase& in) {
+  check::example(query::invariants, "a dead bounce slides on, above the floor", dead, [](const CollideCase& in) {
     const Collision got = run_collide_only(in);
     const Outcome o = judge::invariants(in, got);
     return o.verdict == Outcome::Verdict::fail ? o : judge::collide(in, got);
   });
-  check::example("invariants", "e = 1: the speed is kept through two bounces", into_corner(4), run_invariants);
+  check::example(query::invariants, "e = 1: the speed is kept through two bounces", into_corner(4), run_invariants);
   // Found by a seed sweep: a starts exactly on plane 0, where n . a + c rounds to -1.5e-11.
-  check::example("invariants", "resting exactly on a plane, n . a + c rounding below zero, then moving behind it",
+  check::example(query::invariants, "resting exactly on a plane, n . a + c rounding below zero, then moving behind it",
                  input_from_token<CollideCase>(parse_token(
                      "invariants:-33791.999998051404,16384.000000954293,16384.00000055659,-33791.99999423671,"
                      "16384.000000954293,16384.00000055659,6.103515625e-05,0,0,0.125,0.0625,3,-1,2,1,-82944.00000051658,"
@@ -666,7 +667,7 @@ TEST_CASE("L07S7 never behind, exactly: worked examples", "[lab07][step7]") {
                  run_invariants);
   CollideCase crack{{{0.5, 0, 0.25}, {8.5, 0, -7.75}}, {8, 0, -8}, 1, 1, floor_scene(1, 0, kMaxBounceCap)};
   crack.scene.planes.push_back(Plane{{0, 0, -1}, 0.5});  // a ceiling at z = 1/2: a crack to bounce in
-  check::example("invariants", "in a crack, up to the cap", crack, [](const CollideCase& in) {
+  check::example(query::invariants, "in a crack, up to the cap", crack, [](const CollideCase& in) {
     const Collision got = run_collide_only(in);
     Expect e;
     e.equal("stopped", got.stopped, true);
@@ -686,7 +687,7 @@ TEST_CASE("L07S7 the handling loop: worked examples", "[lab07][step7]") {
   fountain.scene = floor_scene(0.5, 0.1);
   fountain.dt = 0.1;
   fountain.steps = 10;
-  check::example("system", "a fountain after 10 steps: the last 3 born are alive", fountain, [](const SystemCase& in) {
+  check::example(query::system, "a fountain after 10 steps: the last 3 born are alive", fountain, [](const SystemCase& in) {
     System system = system_of(in);
     for (int k = 0; k < in.steps; ++k) system.step(in.dt);
     Expect e;
@@ -703,7 +704,7 @@ TEST_CASE("L07S7 the handling loop: worked examples", "[lab07][step7]") {
   drop.forces.gravity = Vec3::Zero();
   drop.verlet = 1;
   drop.dt = 0.5;
-  check::example("system", "Verlet: a bounce rewrites previous", drop, [](const SystemCase& in) {
+  check::example(query::system, "Verlet: a bounce rewrites previous", drop, [](const SystemCase& in) {
     System system = system_of(in);
     Particle p;
     p.position = Vec3(0, 0, 1);
@@ -729,11 +730,11 @@ TEST_CASE("L07S7 the handling loop: worked examples", "[lab07][step7]") {
 }
 
 TEST_CASE("L07S7 invariants: random cases", "[lab07][step7][oracle]") {
-  check::random_cases("settle", judge::settle_case(), [](const SettleCase& in) {
+  check::random_cases(query::settle, judge::settle_case(), [](const SettleCase& in) {
     return judge::settle(in, settle(in.x, in.scene, in.last));
   });
-  check::random_cases("invariants", judge::collide_case(false), run_invariants);
-  check::random_cases("system", judge::system_case(), run_system);
+  check::random_cases(query::invariants, judge::collide_case(false), run_invariants);
+  check::random_cases(query::system, judge::system_case(), run_system);
 }
 
 // ---- Preconditions (the header's "Preconditions"): the reference only ------------------

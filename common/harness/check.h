@@ -1,7 +1,10 @@
 // The verdict harness every lab's tests use (handouts/checking.md says how a step is checked).
 //
-//   check::example("find_segment_triangle", "through the middle", input, judge);
-//   check::random_cases("find_segment_triangle", gen::segment_triangle(), judge);
+//   check::example(query::find_segment_triangle, "through the middle", input, judge);
+//   check::random_cases(query::find_segment_triangle, gen::segment_triangle(), judge);
+//
+// The queries come from the lab's table (tests/NN_name.queries.h, common/harness/query.h),
+// which also fixes the input each one takes: the compiler refuses another.
 //
 // A judge takes an input, runs the code under test on it, and returns an Outcome: pass,
 // fail (with the expected answer, the answer it got and why they differ), or ambiguous
@@ -12,6 +15,7 @@
 #pragma once
 
 #include "common/harness/codec.h"
+#include "common/harness/query.h"
 #include "common/not_implemented.h"
 #include "common/protocol/answerer.h"
 #include "common/protocol/report.h"
@@ -133,14 +137,19 @@ bool flips_under_perturbation(const Input& input, ExactAnswer&& exact, int sampl
 // the lab's test file, before its cases.
 void rule(const std::string& query, const std::string& text);
 const std::string& rule_of(const std::string& query);
+template <class Input>
+void rule(const Query<Input>& query, const std::string& text) { rule(query.name, text); }
+template <class Input>
+const std::string& rule_of(const Query<Input>& query) { return rule_of(query.name); }
 
 // One hand-worked case from the handout.
 template <class Input, class Judge>
-void example(const std::string& query, const std::string& title, const Input& input, Judge&& judge);
+void example(const Query<Input>& query, const std::string& title, const typename Query<Input>::InputType& input,
+             Judge&& judge);
 
 // `settings().cases` random cases from `gen`, shrunk on failure.
 template <class Input, class Judge>
-void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& judge);
+void random_cases(const Query<Input>& query, const rc::Gen<Input>& gen, Judge&& judge);
 
 // Everything below is the machinery behind these three.
 namespace detail {
@@ -304,9 +313,11 @@ bool flips_under_perturbation(const Input& input, ExactAnswer&& exact, int sampl
 }
 
 template <class Input, class Judge>
-void example(const std::string& query, const std::string& title, const Input& input, Judge&& judge) {
+void example(const Query<Input>& q, const std::string& title, const typename Query<Input>::InputType& input,
+             Judge&& judge) {
   // A replay runs the one case it names; the examples stay quiet.
   if (!settings().replay.empty()) return;
+  const std::string query = q.name;
   detail::QueryReport& report = detail::entry(query, "examples");
   const bool stub_seen_before = !report.not_implemented.empty();
   detail::set_inflight(replay_token(query, input));
@@ -323,7 +334,8 @@ void example(const std::string& query, const std::string& title, const Input& in
 }
 
 template <class Input, class Judge>
-void random_cases(const std::string& query, const rc::Gen<Input>& gen, Judge&& judge) {
+void random_cases(const Query<Input>& q, const rc::Gen<Input>& gen, Judge&& judge) {
+  const std::string query = q.name;
   detail::QueryReport& report = detail::entry(query, "random");
   const Settings& s = settings();
   if (!s.replay.empty()) {

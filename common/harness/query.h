@@ -1,0 +1,64 @@
+// A lab's queries: the names its tests give the questions they ask (a replay token's
+// prefix, "first_hit:0.5,...") and the input each takes. Each lab lists them once, in
+// tests/NN_name.queries.h, as a table the tests, the viewer's scene and its presets read:
+//
+//   #define LABKIT_LAB06_QUERIES(X) X(first_hit, "first_hit", TreeQuery) ...
+//   namespace labkit::lab06::query { LABKIT_LAB06_QUERIES(LABKIT_QUERY) LABKIT_QUERY_TABLE(LABKIT_LAB06_QUERIES) }
+//
+// which declares query::first_hit (a Query<TreeQuery>) and query::table.
+#pragma once
+
+#include "common/harness/codec.h"
+
+#include <string>
+#include <tuple>
+#include <utility>
+
+namespace labkit::check {
+
+template <class Input>
+struct Query {
+  using InputType = Input;
+  const char* name;
+};
+
+template <class Input>
+bool operator==(const Query<Input>& q, const std::string& name) { return name == q.name; }
+
+template <class... Inputs>
+struct QueryTable {
+  std::tuple<Query<Inputs>...> queries;
+
+  // "build_kd_tree, first_hit, ...": for an error that lists what a token may start with.
+  std::string names() const {
+    std::string all;
+    std::apply([&](const auto&... q) { ((all += (all.empty() ? "" : ", ") + std::string(q.name)), ...); }, queries);
+    return all;
+  }
+
+  // Calls visit(query, input) with the token's numbers read as the input its query takes;
+  // false when the table has no query of that name. A malformed token throws BadToken.
+  template <class Visit>
+  bool visit(const ParsedToken& token, Visit&& fn) const {
+    bool found = false;
+    std::apply([&](const auto&... q) { ((found = found || visit_if(token, q, fn)), ...); }, queries);
+    return found;
+  }
+
+ private:
+  template <class Input, class Visit>
+  static bool visit_if(const ParsedToken& token, const Query<Input>& q, Visit& fn) {
+    if (token.query != q.name) return false;
+    fn(q, input_from_token<Input>(token));
+    return true;
+  }
+};
+template <class... Inputs>
+QueryTable(std::tuple<Query<Inputs>...>) -> QueryTable<Inputs...>;
+
+}  // namespace labkit::check
+
+// The declarations a lab's table expands to (see the top of this file).
+#define LABKIT_QUERY(id, name, Input) inline constexpr ::labkit::check::Query<Input> id{name};
+#define LABKIT_QUERY_ENTRY(id, name, Input) id,
+#define LABKIT_QUERY_TABLE(TABLE) inline const ::labkit::check::QueryTable table{std::tuple{TABLE(LABKIT_QUERY_ENTRY)}};
