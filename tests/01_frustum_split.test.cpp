@@ -191,7 +191,7 @@ rc::Gen<MeshFrustum> decisive(rc::Gen<MeshFrustum> base) {
 
 // ---- Step 1 ------------------------------------------------------------------------
 
-TEST_CASE("L01S1 signed distance and vertex classes: worked examples", "[lab01][step1]") {
+TEST_CASE(LABKIT_STEP(L01S1) ": worked examples", "[lab01][step1]") {
   // z = 1 written with a normal of length 2: value = 2 z - 2, distance = z - 1.
   const Plane z1{{0, 0, 2}, -2};
   const auto distance = [](const Vec3& x, double expected) {
@@ -215,7 +215,7 @@ TEST_CASE("L01S1 signed distance and vertex classes: worked examples", "[lab01][
                  sides);
 }
 
-TEST_CASE("L01S1 signed distance and vertex classes: random cases", "[lab01][step1][oracle]") {
+TEST_CASE(LABKIT_STEP(L01S1) ": random cases", "[lab01][step1][oracle]") {
   check::random_cases(query::signed_distance, decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
     std::array<double, 3> got{};
     for (int i = 0; i < 3; ++i) got[std::size_t(i)] = signed_distance(in.plane, in.triangle[i]);
@@ -228,7 +228,7 @@ TEST_CASE("L01S1 signed distance and vertex classes: random cases", "[lab01][ste
 
 // ---- Step 2 ------------------------------------------------------------------------
 
-TEST_CASE("L01S2 split a triangle by one plane: the four configurations", "[lab01][step2]") {
+TEST_CASE(LABKIT_STEP(L01S2) ": the four configurations", "[lab01][step2]") {
   const double full = 8 * std::sqrt(3.0);  // the area of (0,0,-1), (4,0,3), (0,4,3)
   check::example(query::split_triangle, "all in: keep", TrianglePlane{{{0, 0, 1}, {4, 0, 1}, {0, 4, 3}}, kFloor},
                  split_gives({{0, 0, 1}, {4, 0, 1}, {0, 4, 3}}, 4 * std::sqrt(5.0)));
@@ -239,7 +239,7 @@ TEST_CASE("L01S2 split a triangle by one plane: the four configurations", "[lab0
                  split_gives({{1, 0, 0}, {4, 0, 3}, {0, 4, 3}, {0, 1, 0}}, full - std::sqrt(3.0) / 2));
 }
 
-TEST_CASE("L01S2 split a triangle by one plane: vertices on the plane", "[lab01][step2]") {
+TEST_CASE(LABKIT_STEP(L01S2) ": vertices on the plane", "[lab01][step2]") {
   check::example(query::split_triangle, "a vertex on the plane, the others in: keep",
                  TrianglePlane{{{0, 0, 0}, {4, 0, 1}, {0, 4, 1}}, kFloor}, split_gives({{0, 0, 0}, {4, 0, 1}, {0, 4, 1}}, 6 * std::sqrt(2.0)));
   check::example(query::split_triangle, "a vertex on the plane, one in, one out",
@@ -252,13 +252,13 @@ TEST_CASE("L01S2 split a triangle by one plane: vertices on the plane", "[lab01]
                  split_gives({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, 8));
 }
 
-TEST_CASE("L01S2 split a triangle by one plane: random cases", "[lab01][step2][oracle]") {
+TEST_CASE(LABKIT_STEP(L01S2) ": random cases", "[lab01][step2][oracle]") {
   check::random_cases(query::split_triangle, decisive(gen::triangle_plane()), run_split_random);
 }
 
 // ---- Step 3 ------------------------------------------------------------------------
 
-TEST_CASE("L01S3 the six frustum planes: worked examples", "[lab01][step3]") {
+TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
   check::example(query::frustum_from_camera, "at the origin, looking down -z, 90 degrees, near 1, far 3", square_camera(),
                  [](const Camera& in) {
                    const Frustum got = frustum_from_camera(in);
@@ -302,7 +302,7 @@ TEST_CASE("L01S3 the six frustum planes: worked examples", "[lab01][step3]") {
   });
 }
 
-TEST_CASE("L01S3 the six frustum planes: random cases", "[lab01][step3][oracle]") {
+TEST_CASE(LABKIT_STEP(L01S3) ": random cases", "[lab01][step3][oracle]") {
   check::random_cases(query::frustum_from_camera, judge::camera(), [](const Camera& in) {
     return judge::frustum_from_camera(in, frustum_from_camera(in));
   });
@@ -313,7 +313,7 @@ TEST_CASE("L01S3 the six frustum planes: random cases", "[lab01][step3][oracle]"
 
 // ---- Step 4 ------------------------------------------------------------------------
 
-TEST_CASE("L01S4 clip a triangle to the frustum: worked examples", "[lab01][step4]") {
+TEST_CASE(LABKIT_STEP(L01S4) ": worked examples", "[lab01][step4]") {
   const Frustum f = [] {
     Frustum x;
     const auto planes = square_frustum_planes();
@@ -331,13 +331,13 @@ TEST_CASE("L01S4 clip a triangle to the frustum: worked examples", "[lab01][step
                  clip_gives({{-2, -2, -2}, {2, -2, -2}, {2, 2, -2}, {-2, 2, -2}}, 16));
 }
 
-TEST_CASE("L01S4 clip a triangle to the frustum: random cases", "[lab01][step4][oracle]") {
+TEST_CASE(LABKIT_STEP(L01S4) ": random cases", "[lab01][step4][oracle]") {
   check::random_cases(query::clip_triangle, decisive(gen::triangle_frustum()), run_clip_random);
 }
 
 // ---- Step 5 ------------------------------------------------------------------------
 
-TEST_CASE("L01S5 clip a mesh, interpolate colours: worked examples", "[lab01][step5]") {
+TEST_CASE(LABKIT_STEP(L01S5) ": worked examples", "[lab01][step5]") {
   // The rectangle [-3, 1] x [-1, 1] at z = -2, red on its left side and green on its
   // right; the left plane x = -2 cuts it a quarter of the way across, where the colour is
   // (0.75, 0.25, 0). (Not halfway: at t = 1/2, t measured from the other end gives the
@@ -370,7 +370,7 @@ TEST_CASE("L01S5 clip a mesh, interpolate colours: worked examples", "[lab01][st
   });
 }
 
-TEST_CASE("L01S5 clip a mesh, interpolate colours: random cases", "[lab01][step5][oracle]") {
+TEST_CASE(LABKIT_STEP(L01S5) ": random cases", "[lab01][step5][oracle]") {
   check::random_cases(query::clip_mesh, decisive(gen::mesh_frustum()), [](const MeshFrustum& in) {
     return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum));
   });
@@ -379,7 +379,7 @@ TEST_CASE("L01S5 clip a mesh, interpolate colours: random cases", "[lab01][step5
 // ---- Step 6: robustness --------------------------------------------------------------
 // Exact input: integer coordinates and plane coefficients. The header's rules hold exactly.
 
-TEST_CASE("L01S6 robustness: vertices, edges and triangles on frustum planes", "[lab01][step6]") {
+TEST_CASE(LABKIT_STEP(L01S6) ": vertices, edges and triangles on frustum planes", "[lab01][step6]") {
   const Frustum f = integer_pyramid();
   constexpr auto q = query::robust_clip_triangle;
   check::example(q, "an edge through the line where the left and near planes meet",
@@ -410,7 +410,7 @@ TEST_CASE("L01S6 robustness: vertices, edges and triangles on frustum planes", "
                  clip_gives({{-1, 0, -1}, {1, 0, -3}, {1, 1, -3}, {-1, 1.0 / 3, -1}}, 4 * std::sqrt(2.0) / 3));
 }
 
-TEST_CASE("L01S6 robustness: random exact degenerate cases", "[lab01][step6][oracle]") {
+TEST_CASE(LABKIT_STEP(L01S6) ": random exact degenerate cases", "[lab01][step6][oracle]") {
   check::random_cases(query::robust_classify, gen::exact_triangle_plane(), [](const TrianglePlane& in) {
     return judge::classify(in, classify(in.plane, in.triangle), Rules::exact);
   });

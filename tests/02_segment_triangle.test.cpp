@@ -81,7 +81,7 @@ void expect_normal(Expect& e, const Vec3& got, const Vec3& expected) {
 
 // ---- Step 1 ------------------------------------------------------------------------
 
-TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[lab02][step1]") {
+TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   check::example(query::segment_plane, "a above, b below: crosses at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
@@ -122,13 +122,13 @@ TEST_CASE("L02S1 signed distances and the crossing point: worked examples", "[la
                  });
 }
 
-TEST_CASE("L02S1 signed distances and the crossing point: random cases", "[lab02][step1][oracle]") {
+TEST_CASE(LABKIT_STEP(L02S1) ": random cases", "[lab02][step1][oracle]") {
   check::random_cases(query::segment_plane, gen::decisive_segment_triangle(), run_segment_plane);
 }
 
 // ---- Step 2 ------------------------------------------------------------------------
 
-TEST_CASE("L02S2 point in triangle by edge tests: worked examples", "[lab02][step2]") {
+TEST_CASE(LABKIT_STEP(L02S2) ": worked examples", "[lab02][step2]") {
   // Each expected answer is the exact one; the judge says which rule a wrong one breaks.
   const auto expect = [](bool inside) {
     return [inside](const PointTriangle& in) {
@@ -145,7 +145,7 @@ TEST_CASE("L02S2 point in triangle by edge tests: worked examples", "[lab02][ste
   check::example(query::point_in_triangle_edges, "zero-area triangle", PointTriangle{{1, 1, 1}, kFlat}, expect(false));
 }
 
-TEST_CASE("L02S2 point in triangle by edge tests: random cases", "[lab02][step2][oracle]") {
+TEST_CASE(LABKIT_STEP(L02S2) ": random cases", "[lab02][step2][oracle]") {
   check::random_cases(query::point_in_triangle_edges, judge::point_triangle(), [](const PointTriangle& in) {
     return judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle));
   });
@@ -153,7 +153,7 @@ TEST_CASE("L02S2 point in triangle by edge tests: random cases", "[lab02][step2]
 
 // ---- Step 3 ------------------------------------------------------------------------
 
-TEST_CASE("L02S3 barycentric coordinates in the dropped-axis plane: worked examples", "[lab02][step3]") {
+TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[lab02][step3]") {
   const auto expect = [](int axis, double alpha, double beta) {
     return [=](const PointTriangle& in) {
       const Barycentric got = barycentric(in.x, in.triangle);
@@ -191,7 +191,7 @@ TEST_CASE("L02S3 barycentric coordinates in the dropped-axis plane: worked examp
   check::example(query::point_in_triangle_barycentric, "beta < 0", PointTriangle{{1, -1, 0}, kFloor}, inside(false));
 }
 
-TEST_CASE("L02S3 barycentric coordinates: random cases", "[lab02][step3][oracle]") {
+TEST_CASE(LABKIT_STEP(L02S3) ": random cases", "[lab02][step3][oracle]") {
   check::random_cases(query::barycentric, judge::point_triangle(), [](const PointTriangle& in) {
     return judge::barycentric(in, barycentric(in.x, in.triangle));
   });
@@ -202,7 +202,7 @@ TEST_CASE("L02S3 barycentric coordinates: random cases", "[lab02][step3][oracle]
 
 // ---- Step 4 ------------------------------------------------------------------------
 
-TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step4]") {
+TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
   check::example(query::find_segment_triangle, "through the inside at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
                    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
@@ -263,7 +263,7 @@ TEST_CASE("L02S4 test and find segment-triangle: worked examples", "[lab02][step
   });
 }
 
-TEST_CASE("L02S4 test and find segment-triangle: random cases", "[lab02][step4][oracle]") {
+TEST_CASE(LABKIT_STEP(L02S4) ": random cases", "[lab02][step4][oracle]") {
   // Found by a class run: a starts exactly on the plane, near an edge, and b is 5e-8
   // off it, so the rounding of d_a alone moves the crossing 2.5e-7 along the plane and
   // off the triangle. The judge allows what the tolerance of t allows.
@@ -280,7 +280,7 @@ TEST_CASE("L02S4 test and find segment-triangle: random cases", "[lab02][step4][
 
 // ---- Step 5 ------------------------------------------------------------------------
 
-TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
+TEST_CASE(LABKIT_STEP(L02S5) ": worked examples", "[lab02][step5]") {
   const Mesh mesh = floor_and_shelf();
   check::example(query::first_hit, "the shelf before the floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
@@ -327,7 +327,7 @@ TEST_CASE("L02S5 segment against a mesh: worked examples", "[lab02][step5]") {
                  });
 }
 
-TEST_CASE("L02S5 segment against a mesh: random cases", "[lab02][step5][oracle]") {
+TEST_CASE(LABKIT_STEP(L02S5) ": random cases", "[lab02][step5][oracle]") {
   check::random_cases(query::any_hit, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
     return judge::any_hit(in, any_hit(in.segment, in.mesh));
   });
@@ -341,7 +341,7 @@ TEST_CASE("L02S5 segment against a mesh: random cases", "[lab02][step5][oracle]"
 
 // ---- Step 6 ------------------------------------------------------------------------
 
-TEST_CASE("L02S6 segment against a moving mesh: worked examples", "[lab02][step6]") {
+TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
   Mesh floor;
   add_square(floor, 0);
   RigidTransform up = RigidTransform::Identity();
@@ -382,7 +382,7 @@ TEST_CASE("L02S6 segment against a moving mesh: worked examples", "[lab02][step6
                  });
 }
 
-TEST_CASE("L02S6 segment against a moving mesh: random cases", "[lab02][step6][oracle]") {
+TEST_CASE(LABKIT_STEP(L02S6) ": random cases", "[lab02][step6][oracle]") {
   check::random_cases(query::first_hit_moving, judge::moving_mesh(), [](const MovingMesh& in) {
     return judge::first_hit_moving(in, first_hit_moving(in.segment, in.mesh, in.m0, in.m1));
   });
@@ -442,7 +442,7 @@ auto expect_contact(bool hit, double t, Vec3 point) {
 
 }  // namespace
 
-TEST_CASE("L02S7 moving mesh against moving mesh: worked examples", "[lab02][step7]") {
+TEST_CASE(LABKIT_STEP(L02S7) ": worked examples", "[lab02][step7]") {
   constexpr auto q = query::first_contact_moving_meshes;
   check::example(q, "a vertex of A falls on B's face: t = 1/2",
                  MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 2, 0}));
@@ -458,7 +458,7 @@ TEST_CASE("L02S7 moving mesh against moving mesh: worked examples", "[lab02][ste
                  MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, -4}}, expect_contact(false, 0, {0, 0, 0}));
 }
 
-TEST_CASE("L02S7 moving mesh against moving mesh: random cases", "[lab02][step7][oracle]") {
+TEST_CASE(LABKIT_STEP(L02S7) ": random cases", "[lab02][step7][oracle]") {
   check::random_cases(query::first_contact_moving_meshes, judge::moving_meshes(), [](const MovingMeshes& in) {
     return judge::first_contact_moving_meshes(in, run_contact(in));
   });
@@ -504,7 +504,7 @@ Outcome expect_miss(const SegmentTrianglePair& in) {
 
 }  // namespace
 
-TEST_CASE("L02S8 robustness: touching, edges, vertices, coplanar, zero size", "[lab02][step8]") {
+TEST_CASE(LABKIT_STEP(L02S8) ": touching, edges, vertices, coplanar, zero size", "[lab02][step8]") {
   constexpr auto q = query::robust_find_segment_triangle;
   check::example(q, "an end exactly on the long edge", pair({1, 2, 0}, {1, 2, 5}, kSmall), expect_hit(0));
   check::example(q, "through vertex v0 at t = 1/3", pair({0, 0, 1}, {0, 0, -2}, kSmall), expect_hit(1.0 / 3));
@@ -534,7 +534,7 @@ TEST_CASE("L02S8 robustness: touching, edges, vertices, coplanar, zero size", "[
                  on_boundary);
 }
 
-TEST_CASE("L02S8 robustness: shared edges and vertices in a mesh", "[lab02][step8]") {
+TEST_CASE(LABKIT_STEP(L02S8) ": shared edges and vertices in a mesh", "[lab02][step8]") {
   Mesh floor;
   add_square(floor, 0);
   constexpr auto q = query::robust_all_hits;
@@ -558,7 +558,7 @@ TEST_CASE("L02S8 robustness: shared edges and vertices in a mesh", "[lab02][step
                  });
 }
 
-TEST_CASE("L02S8 robustness: moving meshes touching exactly", "[lab02][step8]") {
+TEST_CASE(LABKIT_STEP(L02S8) ": moving meshes touching exactly", "[lab02][step8]") {
   constexpr auto q = query::robust_first_contact_moving_meshes;
   // The spike's vertex (1, 1, 2) falls onto the floor's shared diagonal (0,0)-(4,4).
   check::example(q, "a vertex onto the shared diagonal at t = 1/2",
@@ -581,7 +581,7 @@ TEST_CASE("L02S8 robustness: moving meshes touching exactly", "[lab02][step8]") 
                  MovingMeshes{flat_a, {4, 0, 0}, flat_b, {0, 0, 0}}, expect_contact(true, 0.5, {4, 0, 0}));
 }
 
-TEST_CASE("L02S8 robustness: random exact degenerate cases", "[lab02][step8][oracle]") {
+TEST_CASE(LABKIT_STEP(L02S8) ": random exact degenerate cases", "[lab02][step8][oracle]") {
   check::random_cases(query::robust_find_segment_triangle, gen::exact_segment_triangle(), exact_find);
   check::random_cases(query::robust_point_in_triangle, judge::exact_point_triangle(), [](const PointTriangle& in) {
     const Outcome o = judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle), Rules::exact);

@@ -85,7 +85,7 @@ Outcome run_moving_test(const MovingBoxes& in, Rules rules = Rules::random) {
 
 // ---- Step 1 ------------------------------------------------------------------------
 
-TEST_CASE("L03S1 project a box on an axis: worked examples", "[lab03][step1]") {
+TEST_CASE(LABKIT_STEP(L03S1) ": worked examples", "[lab03][step1]") {
   const Box b = box({1, 2, 0}, {5, 2.5, 1}, three_four_five());
   const auto expect = [](double center, double radius) {
     return [=](const BoxOnAxis& in) {
@@ -118,7 +118,7 @@ TEST_CASE("L03S1 project a box on an axis: worked examples", "[lab03][step1]") {
   check::example(query::separated_on_axis, "a zero axis separates nothing", BoxPairOnAxis{a, cube({9, 0, 0}), {0, 0, 0}}, separated(false));
 }
 
-TEST_CASE("L03S1 project a box on an axis: random cases", "[lab03][step1][oracle]") {
+TEST_CASE(LABKIT_STEP(L03S1) ": random cases", "[lab03][step1][oracle]") {
   check::random_cases(query::project_box, gen::box_on_axis(), [](const BoxOnAxis& in) {
     return judge::project_box(in, project_box(in.box, in.axis));
   });
@@ -129,7 +129,7 @@ TEST_CASE("L03S1 project a box on an axis: random cases", "[lab03][step1][oracle
 
 // ---- Step 2 ------------------------------------------------------------------------
 
-TEST_CASE("L03S2 the 15 axes of two boxes: worked examples", "[lab03][step2]") {
+TEST_CASE(LABKIT_STEP(L03S2) ": worked examples", "[lab03][step2]") {
   check::example(query::box_axis, "the numbering", BoxPair{cube({0, 0, 0}), box({0, 0, 0}, {1, 1, 1}, three_four_five())},
                  [](const BoxPair& in) {
                    Expect e;
@@ -171,7 +171,7 @@ TEST_CASE("L03S2 the 15 axes of two boxes: worked examples", "[lab03][step2]") {
                  BoxPair{cube({0, 0, 0}), box({12 + std::ldexp(1.0, -23), 1, -5}, {7, 7, 7}, sevenths())}, expect(false));
 }
 
-TEST_CASE("L03S2 the 15 axes of two boxes: random cases", "[lab03][step2][oracle]") {
+TEST_CASE(LABKIT_STEP(L03S2) ": random cases", "[lab03][step2][oracle]") {
   check::random_cases(query::box_axis, gen::box_pair(), [](const BoxPair& in) { return judge::box_axes(in, all_axes(in)); });
   check::random_cases(query::test_boxes, gen::box_pair(), [](const BoxPair& in) {
     return judge::test_boxes(in, test_boxes(in.a, in.b));
@@ -180,7 +180,7 @@ TEST_CASE("L03S2 the 15 axes of two boxes: random cases", "[lab03][step2][oracle
 
 // ---- Step 3 ------------------------------------------------------------------------
 
-TEST_CASE("L03S3 separating or least-penetration axis: worked examples", "[lab03][step3]") {
+TEST_CASE(LABKIT_STEP(L03S3) ": worked examples", "[lab03][step3]") {
   const auto expect = [](bool intersecting, int index, int other_index, Vec3 axis, double depth) {
     return [=](const BoxPair& in) {
       const BoxContact got = find_boxes(in.a, in.b);
@@ -210,7 +210,7 @@ TEST_CASE("L03S3 separating or least-penetration axis: worked examples", "[lab03
                  expect(false, 6, 6, Vec3(0, 1, 3) / std::sqrt(10.0), -1 / (4 * std::sqrt(10.0))));
 }
 
-TEST_CASE("L03S3 separating or least-penetration axis: random cases", "[lab03][step3][oracle]") {
+TEST_CASE(LABKIT_STEP(L03S3) ": random cases", "[lab03][step3][oracle]") {
   check::random_cases(query::find_boxes, gen::box_pair(), [](const BoxPair& in) {
     return judge::find_boxes(in, find_boxes(in.a, in.b));
   });
@@ -219,7 +219,7 @@ TEST_CASE("L03S3 separating or least-penetration axis: random cases", "[lab03][s
 // ---- Step 4 ------------------------------------------------------------------------
 
 // First the lecture's interval method, then the sign-based test that replaces it.
-TEST_CASE("L03S4 the lecture's interval method: worked examples", "[lab03][step4]") {
+TEST_CASE(LABKIT_STEP(L03S4) ": the lecture's interval method, worked examples", "[lab03][step4]") {
   const auto expect = [](int axis, double low0, double high0, double low1, double high1, bool overlap) {
     return [=](const TrianglePair& in) {
       const LineIntervals got = triangles_by_intervals(in.t0, in.t1);
@@ -247,13 +247,13 @@ TEST_CASE("L03S4 the lecture's interval method: worked examples", "[lab03][step4
                  TrianglePair{kFloor, {{1, 1, -2}, {0, 3, 2}, {2, -1, 1}}}, expect(1, 0, 3, -1.0 / 3, 2, true));
 }
 
-TEST_CASE("L03S4 the lecture's interval method: random cases", "[lab03][step4][oracle]") {
+TEST_CASE(LABKIT_STEP(L03S4) ": the lecture's interval method, random cases", "[lab03][step4][oracle]") {
   check::random_cases(query::triangles_by_intervals, gen::crossing_triangle_pair(), [](const TrianglePair& in) {
     return judge::triangles_by_intervals(in, triangles_by_intervals(in.t0, in.t1));
   });
 }
 
-TEST_CASE("L03S4 triangle against triangle: worked examples", "[lab03][step4]") {
+TEST_CASE(LABKIT_STEP(L03S4) ": worked examples", "[lab03][step4]") {
   const auto expect = [](bool intersecting) {
     return [intersecting](const TrianglePair& in) {
       const bool got = test_triangles(in.t0, in.t1);
@@ -298,7 +298,7 @@ TEST_CASE("L03S4 triangle against triangle: worked examples", "[lab03][step4]") 
                  expect(false));
 }
 
-TEST_CASE("L03S4 triangle against triangle: random cases", "[lab03][step4][oracle]") {
+TEST_CASE(LABKIT_STEP(L03S4) ": random cases", "[lab03][step4][oracle]") {
   check::random_cases(query::test_triangles, gen::triangle_pair(), [](const TrianglePair& in) {
     return judge::test_triangles(in, test_triangles(in.t0, in.t1));
   });
@@ -306,7 +306,7 @@ TEST_CASE("L03S4 triangle against triangle: random cases", "[lab03][step4][oracl
 
 // ---- Step 5 ------------------------------------------------------------------------
 
-TEST_CASE("L03S5 two moving boxes: worked examples", "[lab03][step5]") {
+TEST_CASE(LABKIT_STEP(L03S5) ": worked examples", "[lab03][step5]") {
   const auto expect = [](bool contact, double first, double last) {
     return [=](const MovingBoxes& in) {
       const ContactInterval got = find_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
@@ -340,7 +340,7 @@ TEST_CASE("L03S5 two moving boxes: worked examples", "[lab03][step5]") {
                  MovingBoxes{a, {0, 0, 0}, cube({5, 0.5, 0}), {-6, 6, 0}, 1}, expect(false, 0, 0));
 }
 
-TEST_CASE("L03S5 two moving boxes: random cases", "[lab03][step5][oracle]") {
+TEST_CASE(LABKIT_STEP(L03S5) ": random cases", "[lab03][step5][oracle]") {
   check::random_cases(query::test_moving_boxes, gen::moving_boxes(), [](const MovingBoxes& in) { return run_moving_test(in); });
   check::random_cases(query::find_moving_boxes, gen::moving_boxes(), [](const MovingBoxes& in) { return run_moving_find(in); });
 }
@@ -378,7 +378,7 @@ auto both(Own own, Rules rules) {
 
 }  // namespace
 
-TEST_CASE("L03S6 robustness: touching and parallel boxes", "[lab03][step6]") {
+TEST_CASE(LABKIT_STEP(L03S6) ": touching and parallel boxes", "[lab03][step6]") {
   constexpr auto q = query::robust_boxes;
   const Box a = cube({0, 0, 0}, 2);
   const auto touching = [](int index, Vec3 axis) {
@@ -408,7 +408,7 @@ TEST_CASE("L03S6 robustness: touching and parallel boxes", "[lab03][step6]") {
   });
 }
 
-TEST_CASE("L03S6 robustness: touching and coplanar triangles", "[lab03][step6]") {
+TEST_CASE(LABKIT_STEP(L03S6) ": touching and coplanar triangles", "[lab03][step6]") {
   constexpr auto q = query::robust_triangles;
   const auto expect = [](bool intersecting) {
     return both<TrianglePair>(
@@ -428,7 +428,7 @@ TEST_CASE("L03S6 robustness: touching and coplanar triangles", "[lab03][step6]")
   check::example(q, "zero area, through the middle", TrianglePair{kFloor, {{1, 1, -1}, {1, 1, 1}, {1, 1, 2}}}, expect(false));
 }
 
-TEST_CASE("L03S6 robustness: moving boxes that touch at an instant, slide, or start together", "[lab03][step6]") {
+TEST_CASE(LABKIT_STEP(L03S6) ": moving boxes that touch at an instant, slide, or start together", "[lab03][step6]") {
   constexpr auto q = query::robust_moving_boxes;
   const auto expect = [](bool contact, double first, double last) {
     return both<MovingBoxes>(
@@ -455,7 +455,7 @@ TEST_CASE("L03S6 robustness: moving boxes that touch at an instant, slide, or st
                  expect(true, 0, 0));
 }
 
-TEST_CASE("L03S6 robustness: random exact degenerate cases", "[lab03][step6][oracle]") {
+TEST_CASE(LABKIT_STEP(L03S6) ": random exact degenerate cases", "[lab03][step6][oracle]") {
   check::random_cases(query::robust_boxes, gen::exact_box_pair(), exact_boxes);
   check::random_cases(query::robust_triangles, gen::exact_triangle_pair(), exact_triangles);
   check::random_cases(query::robust_moving_boxes, gen::exact_moving_boxes(), exact_moving);

@@ -167,7 +167,7 @@ Outcome exact_advance(const AdvancedPair& in, const TimeOfImpact& got) { return 
 
 // ---- Step 1 ------------------------------------------------------------------------------------
 
-TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
+TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   const RigidTransform pose = quarter_turn_then({5, 0, 0});
   check::example(query::placed, "a quarter turn, then 5 along x", Sphere{{1, 0, 0}, 2}, [&](const Sphere& in) {
     const Sphere s = placed(in, pose);
@@ -246,7 +246,7 @@ TEST_CASE("L04S1 overlap at time t: worked examples", "[lab04][step1]") {
                  at(false, true));
 }
 
-TEST_CASE("L04S1 overlap at time t: random cases", "[lab04][step1][oracle]") {
+TEST_CASE(LABKIT_STEP(L04S1) ": random cases", "[lab04][step1][oracle]") {
   check::random_cases(query::closest_point, gen::point_box(), [](const PointBox& in) {
     return judge::closest_point(in, closest_point(in.box, in.point));
   });
@@ -258,7 +258,7 @@ TEST_CASE("L04S1 overlap at time t: random cases", "[lab04][step1][oracle]") {
 
 // ---- Step 2 ------------------------------------------------------------------------------------
 
-TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][step2]") {
+TEST_CASE(LABKIT_STEP(L04S2) ": worked examples", "[lab04][step2]") {
   // The lecture's iterations: 0.5 (overlap), 0.25, 0.375 (clear), 0.4375 (overlap), 0.40625 (clear).
   check::example(query::bisect, "the lecture's five iterations", ball_and_wall(0, 1, 1.0 / 32),
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.40625, 0.4375, 0, 5)));
@@ -291,14 +291,14 @@ TEST_CASE("L04S2 bisection to the last clear time: worked examples", "[lab04][st
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_no_hit(0.25, 0)));
 }
 
-TEST_CASE("L04S2 bisection to the last clear time: random cases", "[lab04][step2][oracle]") {
+TEST_CASE(LABKIT_STEP(L04S2) ": random cases", "[lab04][step2][oracle]") {
   check::random_cases(query::bisect, gen::moving_pair(),
                       [](const MovingPairCase& in) { return judge::bisect(in, run_bisect(in)); });
 }
 
 // ---- Step 3 ------------------------------------------------------------------------------------
 
-TEST_CASE("L04S3 tunnelling and sub-steps: worked examples", "[lab04][step3]") {
+TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
   check::example(query::smallest_size, "a sphere's diameter, a box's thinnest extent", bullet_and_window(1.0 / 64),
                  [](const MovingPairCase& in) {
                    Expect e;
@@ -351,7 +351,7 @@ TEST_CASE("L04S3 tunnelling and sub-steps: worked examples", "[lab04][step3]") {
   check::example(query::tunnelling, "the bullet and the window, head on", head_on, tunnels);
 }
 
-TEST_CASE("L04S3 tunnelling and sub-steps: random cases", "[lab04][step3][oracle]") {
+TEST_CASE(LABKIT_STEP(L04S3) ": random cases", "[lab04][step3][oracle]") {
   check::random_cases(query::substeps_for, gen::substep_rule(), [](const SubstepRule& in) {
     return judge::substeps_for(in, substeps_for(in.max_speed, in.step, in.smallest_size));
   });
@@ -371,7 +371,7 @@ TEST_CASE("L04S3 tunnelling and sub-steps: random cases", "[lab04][step3][oracle
 
 // ---- Step 4 ------------------------------------------------------------------------------------
 
-TEST_CASE("L04S4 conservative advancement: worked examples", "[lab04][step4]") {
+TEST_CASE(LABKIT_STEP(L04S4) ": worked examples", "[lab04][step4]") {
   const auto surfaces = [](double got, double expected, double radii) {
     Expect e;
     e.that("distance", std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected),
@@ -411,7 +411,7 @@ TEST_CASE("L04S4 conservative advancement: worked examples", "[lab04][step4]") {
                  both<AdvancedPair>(run_advance, judge_advance, expect_hit(0.423828125, 0.4375, 1, 5)));
 }
 
-TEST_CASE("L04S4 conservative advancement: random cases", "[lab04][step4][oracle]") {
+TEST_CASE(LABKIT_STEP(L04S4) ": random cases", "[lab04][step4][oracle]") {
   check::random_cases(query::distance_at, gen::moving_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     return judge::distance_at(in, distance_at(pair, in.times.t0), distance_at(pair, in.times.t1));
@@ -423,7 +423,7 @@ TEST_CASE("L04S4 conservative advancement: random cases", "[lab04][step4][oracle
 // ---- Step 5: robustness ---------------------------------------------------------------------------
 // Exact input: the header's rules hold exactly, nothing is ambiguous.
 
-TEST_CASE("L04S5 robustness: touching, grazing, zero sizes", "[lab04][step5]") {
+TEST_CASE(LABKIT_STEP(L04S5) ": touching, grazing, zero sizes", "[lab04][step5]") {
   // Bodies at rest, tested at t = 0.
   const auto still = [](const MovingBody& a, const MovingBody& b) { return scene(a, b, 0, 0, 1); };
   const auto overlapping = [](bool expected) {
@@ -480,7 +480,7 @@ TEST_CASE("L04S5 robustness: touching, grazing, zero sizes", "[lab04][step5]") {
                  both<AdvancedPair>(run_advance, exact_advance, expect_no_hit(1, 1)));
 }
 
-TEST_CASE("L04S5 robustness: random exact cases", "[lab04][step5][oracle]") {
+TEST_CASE(LABKIT_STEP(L04S5) ": random exact cases", "[lab04][step5][oracle]") {
   check::random_cases(query::robust_closest_point, gen::exact_point_box(), [](const PointBox& in) {
     return judge::closest_point(in, closest_point(in.box, in.point), Rules::exact);
   });

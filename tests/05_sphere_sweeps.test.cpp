@@ -117,7 +117,7 @@ constexpr const char* kFlatLozengeToken =
 
 // ---- Step 1 ------------------------------------------------------------------------
 
-TEST_CASE("L05S1 point-segment and segment-segment distance: worked examples", "[lab05][step1]") {
+TEST_CASE(LABKIT_STEP(L05S1) ": worked examples", "[lab05][step1]") {
   const auto point = [](double t, Vec3 closest, double d2) {
     return [=](const PointSegmentPair& in) {
       const PointSegmentDistance got = point_segment(in.p, in.segment);
@@ -162,14 +162,14 @@ TEST_CASE("L05S1 point-segment and segment-segment distance: worked examples", "
                  pair(0, 0, 4));
 }
 
-TEST_CASE("L05S1 point-segment and segment-segment distance: random cases", "[lab05][step1][oracle]") {
+TEST_CASE(LABKIT_STEP(L05S1) ": random cases", "[lab05][step1][oracle]") {
   check::random_cases(query::point_segment, gen::point_segment(), run_point_segment);
   check::random_cases(query::segment_segment, gen::segment_pair(), run_segment_segment);
 }
 
 // ---- Step 2 ------------------------------------------------------------------------
 
-TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: worked examples", "[lab05][step2]") {
+TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
   const auto point = [](double s, double t, double d2) {
     return [=](const PointRectanglePair& in) {
       const PointRectangleDistance got = point_rectangle(in.p, in.rectangle);
@@ -222,7 +222,7 @@ TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: worked examp
                  rectangles(9));
 }
 
-TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: random cases", "[lab05][step2][oracle]") {
+TEST_CASE(LABKIT_STEP(L05S2) ": random cases", "[lab05][step2][oracle]") {
   check::random_cases(query::point_rectangle, gen::point_rectangle(), run_point_rectangle);
   check::random_cases(query::segment_rectangle, gen::segment_rectangle(), run_segment_rectangle);
   check::random_cases(query::rectangle_rectangle, gen::rectangle_pair(), run_rectangle_rectangle);
@@ -230,7 +230,7 @@ TEST_CASE("L05S2 point-, segment- and rectangle-rectangle distance: random cases
 
 // ---- Step 3 ------------------------------------------------------------------------
 
-TEST_CASE("L05S3 sphere, capsule and lozenge pairs: worked examples", "[lab05][step3]") {
+TEST_CASE(LABKIT_STEP(L05S3) ": worked examples", "[lab05][step3]") {
   check::example(query::test_sphere_sphere, "5 apart, radii 2 + 3: touching counts", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 3}},
                  expect_test<SpherePair>(true));
   check::example(query::test_sphere_sphere, "5 apart, radii 2 + 2.5", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 2.5}},
@@ -268,7 +268,7 @@ TEST_CASE("L05S3 sphere, capsule and lozenge pairs: worked examples", "[lab05][s
                  expect_test<LozengePair>(false));
 }
 
-TEST_CASE("L05S3 sphere, capsule and lozenge pairs: random cases", "[lab05][step3][oracle]") {
+TEST_CASE(LABKIT_STEP(L05S3) ": random cases", "[lab05][step3][oracle]") {
   check::random_cases(query::test_sphere_sphere, judge::sphere_pair(), run_test<SpherePair>);
   check::random_cases(query::test_sphere_capsule, judge::sphere_capsule(), run_test<SphereCapsule>);
   check::random_cases(query::test_sphere_lozenge, judge::sphere_lozenge(), run_test<SphereLozenge>);
@@ -285,7 +285,7 @@ const Plane kShelf{{0, 0, 2}, -2};
 using SP = SpherePlaneMotion;
 }  // namespace
 
-TEST_CASE("L05S4 moving sphere against a plane: worked examples", "[lab05][step4]") {
+TEST_CASE(LABKIT_STEP(L05S4) ": worked examples", "[lab05][step4]") {
   constexpr auto q = query::sweep_sphere_plane;
   check::example(q, "falling from z = 5: contact at t = 1.5", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 4},
                  expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
@@ -302,7 +302,7 @@ TEST_CASE("L05S4 moving sphere against a plane: worked examples", "[lab05][step4
                  expect_sweep<SP>(SweepStatus::overlapping));
 }
 
-TEST_CASE("L05S4 moving sphere against a plane: random cases", "[lab05][step4][oracle]") {
+TEST_CASE(LABKIT_STEP(L05S4) ": random cases", "[lab05][step4][oracle]") {
   check::random_cases(query::sweep_sphere_plane, gen::sphere_plane_motion(), [](const SP& in) { return run_sweep(in); });
 }
 
@@ -317,7 +317,7 @@ const Vec3 kHair = Vec3(1049919, 2096632, 2097000) * std::ldexp(1.0, -20);
 const double kHairTime = 5.0527488785915993e-14;
 }  // namespace
 
-TEST_CASE("L05S5 moving sphere against a sphere: worked examples", "[lab05][step5]") {
+TEST_CASE(LABKIT_STEP(L05S5) ": worked examples", "[lab05][step5]") {
   constexpr auto q = query::sweep_sphere_sphere;
   check::example(q, "head-on: contact at t = 7/3", SS{{{0, 0, 0}, 1}, {1, 0, 0}, {{10, 0, 0}, 2}, {-2, 0, 0}, 5},
                  expect_sweep<SS>(SweepStatus::contact, 7.0 / 3, {10.0 / 3, 0, 0}));
@@ -346,7 +346,7 @@ TEST_CASE("L05S5 moving sphere against a sphere: worked examples", "[lab05][step
                  });
 }
 
-TEST_CASE("L05S5 moving sphere against a sphere: random cases", "[lab05][step5][oracle]") {
+TEST_CASE(LABKIT_STEP(L05S5) ": random cases", "[lab05][step5][oracle]") {
   check::random_cases(query::sweep_sphere_sphere, gen::sphere_sphere_motion(), [](const SS& in) { return run_sweep(in); });
   check::random_cases(query::sweep_sphere_sphere_grazing, gen::grazing_spheres(), [](const SS& in) { return run_sweep(in); });
   check::random_cases(query::sweep_sphere_sphere_soon, gen::soon_spheres(), [](const SS& in) { return run_sweep(in); });
@@ -361,7 +361,7 @@ using SC = SphereCapsuleMotion;
 const Capsule kRod{{{0, 0, 0}, {8, 0, 0}}, 1};
 }  // namespace
 
-TEST_CASE("L05S6 moving sphere against a capsule: worked examples", "[lab05][step6]") {
+TEST_CASE(LABKIT_STEP(L05S6) ": worked examples", "[lab05][step6]") {
   constexpr auto q = query::sweep_sphere_capsule;
   check::example(q, "toward the side: 6 - 2t = R = 2 at t = 2 (it leaves at the later root, t = 4)",
                  SC{{{4, 6, 0}, 1}, {0, -2, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 2, {4, 1, 0}));
@@ -380,7 +380,7 @@ TEST_CASE("L05S6 moving sphere against a capsule: worked examples", "[lab05][ste
                  expect_sweep<SC>(SweepStatus::contact, 3, {1, 0, 0}));
 }
 
-TEST_CASE("L05S6 moving sphere against a capsule: random cases", "[lab05][step6][oracle]") {
+TEST_CASE(LABKIT_STEP(L05S6) ": random cases", "[lab05][step6][oracle]") {
   check::random_cases(query::sweep_sphere_capsule, gen::sphere_capsule_motion(), [](const SC& in) { return run_sweep(in); });
 }
 
@@ -397,7 +397,7 @@ Mat3 tilted() {
 }
 }  // namespace
 
-TEST_CASE("L05S7 moving box against a plane: worked examples", "[lab05][step7]") {
+TEST_CASE(LABKIT_STEP(L05S7) ": worked examples", "[lab05][step7]") {
   constexpr auto q = query::sweep_box_plane;
   // The bottom face lands flat: every point of it touches, and the header accepts any.
   check::example(q, "an upright box falls: reach 3, contact at t = 2 (any point of the bottom face)",
@@ -423,14 +423,14 @@ TEST_CASE("L05S7 moving box against a plane: worked examples", "[lab05][step7]")
                  expect_sweep<BP>(SweepStatus::none));
 }
 
-TEST_CASE("L05S7 moving box against a plane: random cases", "[lab05][step7][oracle]") {
+TEST_CASE(LABKIT_STEP(L05S7) ": random cases", "[lab05][step7][oracle]") {
   check::random_cases(query::sweep_box_plane, gen::box_plane_motion(), [](const BP& in) { return run_sweep(in); });
 }
 
 // ---- Step 8: robustness --------------------------------------------------------------
 // Exact degenerate input on small integers: the header's rules hold exactly.
 
-TEST_CASE("L05S8 robustness: parallel, touching, grazing: worked examples", "[lab05][step8]") {
+TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
   constexpr auto q = query::robust_segment_segment;
   check::example(q, "collinear and overlapping: distance 0", SegmentPair{kAxis, {{2, 0, 0}, {7, 0, 0}}},
                  [](const SegmentPair& in) {
@@ -475,7 +475,7 @@ TEST_CASE("L05S8 robustness: parallel, touching, grazing: worked examples", "[la
                  BP{{{0, 0, 0}, Mat3::Identity(), {0, 0, 0}}, {0, 0, -1}, kGround, 1}, expect_sweep<BP>(SweepStatus::overlapping));
 }
 
-TEST_CASE("L05S8 robustness: random exact degenerate cases", "[lab05][step8][oracle]") {
+TEST_CASE(LABKIT_STEP(L05S8) ": random exact degenerate cases", "[lab05][step8][oracle]") {
   check::random_cases(query::robust_segment_segment, gen::segment_pair(true), run_segment_segment);
   check::random_cases(query::robust_segment_rectangle, gen::segment_rectangle(true), run_segment_rectangle);
   check::random_cases(query::robust_test_sphere_capsule, judge::sphere_capsule(true), run_exact_test<SphereCapsule>);

@@ -93,7 +93,7 @@ Outcome all_three(const TreeQuery& in, Rules rules) {
 
 // ---- Step 1 --------------------------------------------------------------------------------------
 
-TEST_CASE("L06S1 build a k-d tree: worked examples", "[lab06][step1]") {
+TEST_CASE(LABKIT_STEP(L06S1) ": worked examples", "[lab06][step1]") {
   const auto valid = [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); };
   check::example(query::build_kd_tree, "the two triangles of step 2", lean_and_stand(), valid);
   // The picture in the header: triangle 7 touches y = 2, the others lie well inside
@@ -122,7 +122,7 @@ TEST_CASE("L06S1 build a k-d tree: worked examples", "[lab06][step1]") {
   check::example(query::build_kd_tree, "a zero-area triangle alone", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}), valid);
 }
 
-TEST_CASE("L06S1 build a k-d tree: random cases", "[lab06][step1][oracle]") {
+TEST_CASE(LABKIT_STEP(L06S1) ": random cases", "[lab06][step1][oracle]") {
   check::random_cases(query::build_kd_tree, gen::any_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
   // Lattice meshes with faces in the planes the splits use: triangles touch split planes.
   check::random_cases(query::build_kd_tree_lattice, gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
@@ -130,7 +130,7 @@ TEST_CASE("L06S1 build a k-d tree: random cases", "[lab06][step1][oracle]") {
 
 // ---- Step 2 --------------------------------------------------------------------------------------
 
-TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
+TEST_CASE(LABKIT_STEP(L06S2) ": worked examples", "[lab06][step2]") {
   const KdTree tree = handout_tree();
   const Mesh mesh = lean_and_stand();
   const auto expect_hit = [&tree](int triangle, double t, int max_tests) {
@@ -210,7 +210,7 @@ TEST_CASE("L06S2 segment queries: worked examples", "[lab06][step2]") {
   check::example(query::first_hit, "zero length, on B: no hit (the given test's rule)", TreeQuery{mesh, {{5, 1, 1}, {5, 1, 1}}, 0}, no_hit);
 }
 
-TEST_CASE("L06S2 segment queries: random cases", "[lab06][step2][oracle]") {
+TEST_CASE(LABKIT_STEP(L06S2) ": random cases", "[lab06][step2][oracle]") {
   const auto query = [](auto&& judge_one) {
     return [judge_one](const TreeQuery& in) { return judge_one(in, judge::checker_tree(in.mesh, in.tree), Rules::random); };
   };
@@ -250,7 +250,7 @@ auto expect_where(Where where) {
 
 }  // namespace
 
-TEST_CASE("L06S3 BSP tree: worked examples", "[lab06][step3]") {
+TEST_CASE(LABKIT_STEP(L06S3) ": worked examples", "[lab06][step3]") {
   const auto valid = [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); };
   check::example(query::build_bsp, "a tetrahedron: a chain, no cut", tetrahedron(), [](const Mesh& m) {
     const BspTree tree = build_bsp(m);
@@ -284,7 +284,7 @@ TEST_CASE("L06S3 BSP tree: worked examples", "[lab06][step3]") {
   check::example(query::classify, "(-1, 1, 1): behind nothing", PointQuery{t, {-1, 1, 1}}, expect_where(Where::outside));
 }
 
-TEST_CASE("L06S3 BSP tree: random cases", "[lab06][step3][oracle]") {
+TEST_CASE(LABKIT_STEP(L06S3) ": random cases", "[lab06][step3][oracle]") {
   check::random_cases(query::build_bsp, judge::bsp_mesh(), [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
   check::random_cases(query::classify, judge::point_query(), [](const PointQuery& in) {
     return judge::classify(in, classify(build_bsp(in.mesh), in.point));
@@ -316,7 +316,7 @@ Outcome judge_order(const PointQuery& in, Rules rules = Rules::random) {
 
 }  // namespace
 
-TEST_CASE("L06S4 back to front: worked examples", "[lab06][step4]") {
+TEST_CASE(LABKIT_STEP(L06S4) ": worked examples", "[lab06][step4]") {
   const auto sources = [](std::vector<int> expected) {
     return [expected](const PointQuery& in) {
       const BspTree tree = build_bsp(in.mesh);
@@ -344,7 +344,7 @@ TEST_CASE("L06S4 back to front: worked examples", "[lab06][step4]") {
   });
 }
 
-TEST_CASE("L06S4 back to front: random cases", "[lab06][step4][oracle]") {
+TEST_CASE(LABKIT_STEP(L06S4) ": random cases", "[lab06][step4][oracle]") {
   check::random_cases(query::back_to_front, judge::eye_query(), [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point));
@@ -366,7 +366,7 @@ auto expect_pairs(std::vector<std::array<int, 2>> pairs) {
 
 }  // namespace
 
-TEST_CASE("L06S5 broad phase: worked examples", "[lab06][step5]") {
+TEST_CASE(LABKIT_STEP(L06S5) ": worked examples", "[lab06][step5]") {
   // The lecture's sweep: along x the intervals run A0 A1 R0 B0 R1 C0 C1 B1.
   const SphereSet lecture{{{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}}};
   check::example(query::overlapping_pairs, "the lecture's A R B C: only R and B meet", lecture, expect_pairs({{1, 2}}));
@@ -380,7 +380,7 @@ TEST_CASE("L06S5 broad phase: worked examples", "[lab06][step5]") {
                  expect_pairs({{0, 1}}));
 }
 
-TEST_CASE("L06S5 broad phase: random cases", "[lab06][step5][oracle]") {
+TEST_CASE(LABKIT_STEP(L06S5) ": random cases", "[lab06][step5][oracle]") {
   check::random_cases(query::overlapping_pairs, judge::sphere_set(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres));
   });
@@ -416,7 +416,7 @@ std::vector<Sphere> with_b_at(double x) { return {{{0, 0, 0}, 1}, {{x, 0, 0}, 1}
 
 }  // namespace
 
-TEST_CASE("L06S6 sort and sweep with frame coherence: worked examples", "[lab06][step6]") {
+TEST_CASE(LABKIT_STEP(L06S6) ": worked examples", "[lab06][step6]") {
   // A at 0 and B sliding along x (radius 1 each): ends A0 = -1, A1 = 1, B0 = x - 1, B1 = x + 1.
   check::example(query::sweep_frames, "B slides to touch A, into it, and away: x = 5, 2.5, 2, 1.5, 4",
                  SweepCase{{with_b_at(5), with_b_at(2.5), with_b_at(2), with_b_at(1.5), with_b_at(4)}},
@@ -432,7 +432,7 @@ TEST_CASE("L06S6 sort and sweep with frame coherence: worked examples", "[lab06]
                  [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(judge::moving_spheres(m)); });
 }
 
-TEST_CASE("L06S6 sort and sweep with frame coherence: random cases", "[lab06][step6][oracle]") {
+TEST_CASE(LABKIT_STEP(L06S6) ": random cases", "[lab06][step6][oracle]") {
   check::random_cases(query::sweep_frames, judge::sweep_case(),
                       [](const SweepCase& in) { return judge::sweep_frames(in, run_sweep(in.frames)); });
 }
@@ -466,7 +466,7 @@ Mesh piercing() { return mesh_of({{{10.5, 0.5, -1}, {10.5, 0.5, 1}, {11.5, 3, 0}
 
 }  // namespace
 
-TEST_CASE("L06S7 OBB trees, dual traversal: worked examples", "[lab06][step7]") {
+TEST_CASE(LABKIT_STEP(L06S7) ": OBB trees, worked examples", "[lab06][step7]") {
   check::example(query::colliding_triangles, "one triangle through another: 1 box test, 1 triangle test",
                  BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}), mesh_of({{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, 3, 0}}}), 0, 0, true},
                  expect_bvh({{0, 0}}, 1, 1));
@@ -485,7 +485,7 @@ TEST_CASE("L06S7 OBB trees, dual traversal: worked examples", "[lab06][step7]") 
                  [](const BvhQuery& in) { return judge_bvh(in, Rules::random); });
 }
 
-TEST_CASE("L06S7 OBB trees, dual traversal: random cases", "[lab06][step7][oracle]") {
+TEST_CASE(LABKIT_STEP(L06S7) ": OBB trees, random cases", "[lab06][step7][oracle]") {
   check::random_cases(query::colliding_triangles, judge::bvh_query(), [](const BvhQuery& in) { return judge_bvh(in); });
 }
 
@@ -601,7 +601,7 @@ Outcome run_efficiency(const EfficiencyCase& in) {
 
 }  // namespace
 
-TEST_CASE("L06S8 efficiency: tests counted on 10,000 triangles", "[lab06][step8]") {
+TEST_CASE(LABKIT_STEP(L06S8) ": tests counted on 10,000 triangles", "[lab06][step8]") {
   const int seed = int(check::settings().seed % 1000000);
   for (int kind = 0; kind < 4; ++kind)
     check::example(query::efficiency_segments, gen::name_of(gen::MeshKind(kind)), EfficiencyCase{kind, 10000, 1000, seed}, run_efficiency);
@@ -654,7 +654,7 @@ KdTree cubes_tree() {
 
 }  // namespace
 
-TEST_CASE("L06S9 robustness: k-d trees on exact input", "[lab06][step9]") {
+TEST_CASE(LABKIT_STEP(L06S9) ": k-d trees on exact input", "[lab06][step9]") {
   const KdTree tree = cubes_tree();
   const Mesh mesh = two_cubes();
   const auto exact_all = [&tree](const TreeQuery& in) {
@@ -671,7 +671,7 @@ TEST_CASE("L06S9 robustness: k-d trees on exact input", "[lab06][step9]") {
                  [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
 }
 
-TEST_CASE("L06S9 robustness: BSP trees and spheres on exact input", "[lab06][step9]") {
+TEST_CASE(LABKIT_STEP(L06S9) ": BSP trees and spheres on exact input", "[lab06][step9]") {
   // An L of three cubes (scaled by 2): faces share planes, points lie on them.
   const Mesh l = gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Vec3::Zero(), 2.0);
   constexpr auto q = query::robust_classify;
@@ -701,7 +701,7 @@ TEST_CASE("L06S9 robustness: BSP trees and spheres on exact input", "[lab06][ste
                  expect_frames({{{}, 0, 0}, {{{0, 1}}, 1, 1}, {{{0, 1}, {1, 2}}, 2, 1}}));
 }
 
-TEST_CASE("L06S9 robustness: random exact degenerate cases", "[lab06][step9][oracle]") {
+TEST_CASE(LABKIT_STEP(L06S9) ": random exact degenerate cases", "[lab06][step9][oracle]") {
   check::random_cases(query::robust_segment_queries, judge::exact_tree_query(),
                       [](const TreeQuery& in) { return all_three(in, Rules::exact); });
   check::random_cases(query::robust_build_kd_tree, gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });

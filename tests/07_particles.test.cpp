@@ -139,7 +139,7 @@ SegmentScene on_floor(Vec3 a, Vec3 b) {
 
 // ---- Step 1 ----------------------------------------------------------------------------
 
-TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
+TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
   const auto counts = [](std::vector<int> expected, std::vector<double> owed) {
     return [=](const BirthsCase& in) {
       const std::vector<Births> got = run_births_steps(in);
@@ -268,7 +268,7 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
   });
 }
 
-TEST_CASE("L07S1 emitter and lifetime: random cases", "[lab07][step1][oracle]") {
+TEST_CASE(LABKIT_STEP(L07S1) ": random cases", "[lab07][step1][oracle]") {
   check::random_cases(query::emit, judge::emit_case(), run_emit);
   check::random_cases(query::births, judge::births_case(), run_births);
   check::random_cases(query::age, judge::age_case(), run_age);
@@ -291,7 +291,7 @@ MotionCase thrown() {
 
 }  // namespace
 
-TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
+TEST_CASE(LABKIT_STEP(L07S2) ": worked examples", "[lab07][step2]") {
   check::example(query::euler_step, "two Euler steps of a thrown particle", thrown(), [](const MotionCase& in) {
     const Particle one = euler_step(in.particle, in.forces, in.dt);
     const Particle two = euler_step(one, in.forces, in.dt);
@@ -336,7 +336,7 @@ TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
   });
 }
 
-TEST_CASE("L07S2 forces, Euler and Verlet: random cases", "[lab07][step2][oracle]") {
+TEST_CASE(LABKIT_STEP(L07S2) ": random cases", "[lab07][step2][oracle]") {
   check::random_cases(query::integrators, judge::motion_case(), run_motion);
 }
 
@@ -374,7 +374,7 @@ auto expect_angles(int count, double radicand, double low, double high, double l
 
 }  // namespace
 
-TEST_CASE("L07S3 launch angle to hit a target: worked examples", "[lab07][step3]") {
+TEST_CASE(LABKIT_STEP(L07S3) ": worked examples", "[lab07][step3]") {
   // The lecture's example: 25 m/s, a target 40 m away at the launch height.
   check::example(query::aim, "the lecture's example: 19.445 and 70.555 degrees (the lecture rounds to 19.4 and 70.6)", lecture_shot({40, 0, 0}),
                  expect_angles(2, 969.30709504, 0.3393874833716999, 1.2314088434231967, 1.6967868333822653, 4.8061098626660765));
@@ -395,14 +395,14 @@ TEST_CASE("L07S3 launch angle to hit a target: worked examples", "[lab07][step3]
   check::example(query::aim, "straight above: no angle to solve for", lecture_shot({0, 0, 5}), expect_angles(0, 0, 0, 0, 0, 0));
 }
 
-TEST_CASE("L07S3 launch angle to hit a target: random cases", "[lab07][step3][oracle]") {
+TEST_CASE(LABKIT_STEP(L07S3) ": random cases", "[lab07][step3][oracle]") {
   check::random_cases(query::aim, judge::launch_case(), run_aim);
   check::random_cases(query::exact_aim, judge::exact_launch_case(), run_exact_aim);
 }
 
 // ---- Step 4 ----------------------------------------------------------------------------
 
-TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab07][step4]") {
+TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   // The judge first: its failure says the header's rule for this case.
   const auto plane_hit = [](double t, Vec3 point) {
     return [=](const SegmentScene& in) {
@@ -503,7 +503,7 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
   check::example(query::first_hit, "a hair outside an edge: a hit there is in doubt, either answer passes", edge, run_first_hit);
 }
 
-TEST_CASE("L07S4 the step as a segment against surfaces: random cases", "[lab07][step4][oracle]") {
+TEST_CASE(LABKIT_STEP(L07S4) ": random cases", "[lab07][step4][oracle]") {
   check::random_cases(query::hit_plane, judge::plane_case(), [](const SegmentScene& in) {
     return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]));
   });
@@ -533,7 +533,7 @@ auto expect_impulse(std::string rule, bool closing, Vec3 normal_impulse, Vec3 fr
 
 }  // namespace
 
-TEST_CASE("L07S5 impulse with restitution and friction: worked examples", "[lab07][step5]") {
+TEST_CASE(LABKIT_STEP(L07S5) ": worked examples", "[lab07][step5]") {
   const Vec3 up(0, 0, 1);
   check::example(query::impulse, "e = 1/2, mu = 1/4: sliding slows", ImpulseCase{{3, 0, -4}, Vec3::Zero(), up, 2, {0.5, 0.25}},
                  expect_impulse("j_n = -(1 + e) m v_close n; friction opposes the sliding v_t with min(mu |j_n|, m |v_t|)", true,
@@ -556,7 +556,7 @@ TEST_CASE("L07S5 impulse with restitution and friction: worked examples", "[lab0
                                 false, {0, 0, 0}, {0, 0, 0}, {0, 0, -1}));
 }
 
-TEST_CASE("L07S5 impulse with restitution and friction: random cases", "[lab07][step5][oracle]") {
+TEST_CASE(LABKIT_STEP(L07S5) ": random cases", "[lab07][step5][oracle]") {
   check::random_cases(query::impulse, judge::impulse_case(), run_impulse);
 }
 
@@ -588,7 +588,7 @@ CollideCase rising_floor(Segment step, Vec3 velocity, double e) {
 
 }  // namespace
 
-TEST_CASE("L07S6 bounce in the remaining time, bounce cap: worked examples", "[lab07][step6]") {
+TEST_CASE(LABKIT_STEP(L07S6) ": worked examples", "[lab07][step6]") {
   const std::string remaining = "after a hit at t the particle goes on from the hit point, with the new velocity, for the "
                                 "remaining time (1 - t) r only";
   const std::string cap = "the bounce cap: after bounce_cap impulses, the next hit stops the particle there, velocity zero";
@@ -623,13 +623,13 @@ TEST_CASE("L07S6 bounce in the remaining time, bounce cap: worked examples", "[l
                                   {0.75, 0, 0}, {0, 0, 2}, 0, true));
 }
 
-TEST_CASE("L07S6 bounce in the remaining time, bounce cap: random cases", "[lab07][step6][oracle]") {
+TEST_CASE(LABKIT_STEP(L07S6) ": random cases", "[lab07][step6][oracle]") {
   check::random_cases(query::collide, judge::collide_case(), run_collide);
 }
 
 // ---- Step 7 ----------------------------------------------------------------------------
 
-TEST_CASE("L07S7 never behind, exactly: worked examples", "[lab07][step7]") {
+TEST_CASE(LABKIT_STEP(L07S7) ": worked examples", "[lab07][step7]") {
   const auto settled = [](const SettleCase& in) { return judge::settle(in, settle(in.x, in.scene, in.last)); };
   SettleCase on{};
   on.x = Vec3(1, 1, 0);
@@ -676,7 +676,7 @@ TEST_CASE("L07S7 never behind, exactly: worked examples", "[lab07][step7]") {
   });
 }
 
-TEST_CASE("L07S7 the handling loop: worked examples", "[lab07][step7]") {
+TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][step7]") {
   // Ten per second, one each step of 1/10 s; each lives 4 steps (lifetime 0.35).
   SystemCase fountain{};
   fountain.emitter.position = Vec3(0, 0, 1);
@@ -729,7 +729,7 @@ TEST_CASE("L07S7 the handling loop: worked examples", "[lab07][step7]") {
   });
 }
 
-TEST_CASE("L07S7 invariants: random cases", "[lab07][step7][oracle]") {
+TEST_CASE(LABKIT_STEP(L07S7) ": invariants, random cases", "[lab07][step7][oracle]") {
   check::random_cases(query::settle, judge::settle_case(), [](const SettleCase& in) {
     return judge::settle(in, settle(in.x, in.scene, in.last));
   });

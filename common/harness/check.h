@@ -16,6 +16,7 @@
 
 #include "common/harness/codec.h"
 #include "common/harness/query.h"
+#include "common/harness/titles.h"
 #include "common/not_implemented.h"
 #include "common/protocol/answerer.h"
 #include "common/protocol/report.h"

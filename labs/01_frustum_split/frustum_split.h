@@ -86,7 +86,7 @@
 
 namespace labkit::lab01 {
 
-// ---- Step 1 (L01S1): signed distance and vertex classes ----------------------------
+// ---- Step 1 (L01S1): signed distance, vertex classes -------------------------------
 
 // (normal . x + offset) / |normal|: the normal need not have unit length.
 double signed_distance(const Plane& plane, const Vec3& x);
@@ -133,7 +133,7 @@ Frustum frustum_from_matrix(const Mat4& view_projection);
 // triangle ∩ frustum by the rule at the top (planes need not have unit normals).
 std::vector<Triangle> clip_triangle(const Triangle& triangle, const Frustum& frustum);
 
-// ---- Step 5 (L01S5): clip a mesh, interpolate attributes ---------------------------
+// ---- Step 5 (L01S5): clip a mesh, interpolate colours ------------------------------
 
 // A mesh with a colour per vertex: colors[i] belongs to mesh.vertices[i]. Any other
 // per-vertex attribute (a texture coordinate, a normal) is cut the same way.
@@ -152,7 +152,7 @@ struct ClippedMesh {
 // position: where p = a + t (b - a), its colour is c_a + t (c_b - c_a) with the same t.
 ClippedMesh clip_mesh(const ColoredMesh& mesh, const Frustum& frustum);
 
-// ---- Step 6 (L01S6): robustness ----------------------------------------------------
+// ---- Step 6 (L01S6): robustness: vertices on planes --------------------------------
 // No new function: steps 1 to 5 must follow the rules at the top of this file exactly on
 // exact input: integer coordinates |x| <= 1024 and integer offsets |offset| <= 2^14, all
 // times one power of two, and integer normal components |n_i| <= 16. Every plane value

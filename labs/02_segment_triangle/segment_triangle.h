@@ -56,7 +56,7 @@
 
 namespace labkit::lab02 {
 
-// ---- Step 1 (L02S1): signed distances and the crossing point -----------------------
+// ---- Step 1 (L02S1): signed distances, crossing point ------------------------------
 
 struct PlaneCrossing {
   double d_a = 0.0;           // signed distance of a to the triangle's plane (unit normal)
@@ -71,7 +71,7 @@ struct PlaneCrossing {
 // plane (the segment lies in it: step 8).
 PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle);
 
-// ---- Step 2 (L02S2): point in triangle by edge tests -------------------------------
+// ---- Step 2 (L02S2): point in triangle: edge tests ---------------------------------
 
 // For a point in the triangle's plane: is it inside the closed triangle? Use the three
 // edge tests: x is inside when (x - v_i) . (n x (v_{i+1} - v_i)) >= 0 for i = 0, 1, 2
@@ -79,7 +79,7 @@ PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle);
 // zero-area triangle.
 bool point_in_triangle_edges(const Vec3& x, const Triangle& triangle);
 
-// ---- Step 3 (L02S3): barycentric coordinates in the dropped-axis plane -------------
+// ---- Step 3 (L02S3): point in triangle: barycentric --------------------------------
 
 struct Barycentric {
   int dropped_axis = -1;  // 0, 1 or 2: the largest |component| of the normal (ties: the
@@ -94,7 +94,7 @@ Barycentric barycentric(const Vec3& x, const Triangle& triangle);
 // Inside the closed triangle when alpha >= 0, beta >= 0 and alpha + beta <= 1.
 bool point_in_triangle_barycentric(const Vec3& x, const Triangle& triangle);
 
-// ---- Step 4 (L02S4): the test query and the find query -----------------------------
+// ---- Step 4 (L02S4): test and find segment-triangle --------------------------------
 
 bool test_segment_triangle(const Segment& segment, const Triangle& triangle);
 
@@ -139,7 +139,7 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh);
 MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0,
                          const RigidTransform& m1);
 
-// ---- Step 7 (L02S7): moving mesh against moving mesh, by extrusion -----------------
+// ---- Step 7 (L02S7): moving mesh against moving mesh -------------------------------
 
 // Two meshes move by translations during the frame, t from 0 to 1: a vertex p of A is at
 // p + t velocity_a, a vertex q of B at q + t velocity_b (vertices given at t = 0). Seen
@@ -185,7 +185,7 @@ struct MeshContact {
 MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b,
                                         const Vec3& velocity_b);
 
-// ---- Step 8 (L02S8): robustness ----------------------------------------------------
+// ---- Step 8 (L02S8): robustness: touching and coplanar -----------------------------
 // No new function: steps 1 to 7 must follow the rules at the top of this file on exact
 // degenerate input (ends on the triangle, through edges and vertices, coplanar
 // segments, zero-length segments, zero-area triangles, edges shared in a mesh, meshes

@@ -78,7 +78,7 @@
 
 namespace labkit::lab03 {
 
-// ---- Step 1 (L03S1): a box on an axis ------------------------------------------------
+// ---- Step 1 (L03S1): project a box on an axis ----------------------------------------
 
 // The box projected onto the line through the origin with direction L: the interval
 // [center - radius, center + radius], in units of |L| (for a unit L, true lengths).
@@ -205,7 +205,7 @@ bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const
 ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b,
                                   double duration);
 
-// ---- Step 6 (L03S6): robustness ------------------------------------------------------
+// ---- Step 6 (L03S6): robustness: touching and parallel -------------------------------
 // No new function: steps 1 to 5 must follow the rules at the top of this file exactly on
 // exact input (integer coordinates up to 1024 times a power of two, axes that are signed
 // permutations of the coordinate axes): boxes touching along a face, an edge or at a

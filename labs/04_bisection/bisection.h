@@ -230,7 +230,7 @@ double distance_at(const MovingPair& pair, double t);
 // tolerance: the d / speed advances are safe, and a forced advance is only `tolerance`.
 TimeOfImpact advance(const MovingPair& pair, double t0, double t1, double max_closing_speed, double tolerance);
 
-// ---- Step 5 (L04S5): robustness --------------------------------------------------------
+// ---- Step 5 (L04S5): robustness: touching and grazing ----------------------------------
 // No new function: steps 1 to 4 must follow the rules at the top of this file on exact
 // input (integer coordinates, times that are short binary fractions): bodies that touch
 // at t0, at t1, at a midpoint or at a sample time, that only graze each other for one

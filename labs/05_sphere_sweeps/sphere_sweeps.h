@@ -96,7 +96,7 @@ struct SegmentSegmentDistance {
 // segment, in that order.
 SegmentSegmentDistance segment_segment(const Segment& first, const Segment& second);
 
-// ---- Step 2 (L05S2): point-rectangle, segment-rectangle, rectangle-rectangle ---------
+// ---- Step 2 (L05S2): point-, segment- and rectangle-rectangle distance ---------------
 
 struct PointRectangleDistance {
   double squared_distance = 0.0;  // |p - closest|^2
@@ -132,7 +132,7 @@ struct RectangleRectangleDistance {
 // so it is the nearest of the eight sides against the other rectangle.
 RectangleRectangleDistance rectangle_rectangle(const Rectangle& first, const Rectangle& second);
 
-// ---- Step 3 (L05S3): sphere, capsule and lozenge pairs (table 6.1) -------------------
+// ---- Step 3 (L05S3): sphere, capsule and lozenge pairs -------------------------------
 
 // Do they meet (touching counts)? Each is "distance between cores <= r0 + r1".
 bool test_sphere_sphere(const Sphere& a, const Sphere& b);
@@ -178,7 +178,7 @@ Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane
 // segment between the centres at that time, r0 / R of the way from c0(t) (R = 0: c0(t)).
 Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, const Vec3& v1, double duration);
 
-// ---- Step 6 (L05S6): moving sphere against a static capsule (Minkowski sum) ---------
+// ---- Step 6 (L05S6): moving sphere against a capsule: a Minkowski sum ---------------
 
 // Lecture 000's table 6.6 and lecture 002's swept sphere: shrink the sphere to its centre
 // and grow the capsule by the sphere's radius. The grown capsule has the same axis and
@@ -203,7 +203,7 @@ Sweep sweep_sphere_capsule(const Sphere& sphere, const Vec3& velocity, const Cap
 // middle, a corner of it, ...): every such point passes.
 Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& plane, double duration);
 
-// ---- Step 8 (L05S8): robustness -----------------------------------------------------
+// ---- Step 8 (L05S8): robustness: parallel, touching, grazing ------------------------
 // No new function: steps 1 to 7 on exact degenerate input (small integers, |x| <= 64,
 // times a power of two): parallel, collinear and crossing segments, zero-length segments
 // and zero-size rectangles, shapes exactly touching, spheres exactly grazing, contact

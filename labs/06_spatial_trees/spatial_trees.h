@@ -235,7 +235,7 @@ Where classify(const BspTree& tree, const Vec3& point);
 // subtrees and pieces may come in any order. Precondition: the eye is finite.
 std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye);
 
-// ---- Step 5 (L06S5): broad phase for many moving spheres ------------------------------------
+// ---- Step 5 (L06S5): broad phase for many spheres -------------------------------------------
 //
 // Every frame the spheres have moved, and the pairs that overlap must be found again. Two
 // closed balls meet when |c_i - c_j| <= r_i + r_j: touching counts, so does a ball of zero

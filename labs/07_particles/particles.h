@@ -217,7 +217,7 @@ struct Aim {
 // times of flight 1.697 s and 4.806 s.
 Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity);
 
-// ---- Step 4 (L07S4): the particle's step as a segment against surfaces -------------
+// ---- Step 4 (L07S4): the step as a segment against surfaces ------------------------
 
 struct SurfaceHit {
   bool hit = false;           // false: no hit; the other fields mean nothing

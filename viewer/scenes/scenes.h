@@ -6,6 +6,8 @@
 
 #include "viewer/scene.h"
 
+#include "common/harness/titles.h"
+
 #include <memory>
 #include <vector>
 
@@ -14,7 +16,7 @@ namespace viewer {
 struct SceneInfo {
   const char* lab;    // "02": what `./labkit view 02` and the number keys select
   const char* stem;   // "02_segment_triangle": the stem of the lab's files and figures
-  const char* title;
+  const char* title;  // from grading/manifest.json (common/harness/titles.h)
   std::unique_ptr<Scene> (*make)(const Setup& setup);  // throws labkit::BadToken
   const std::vector<Preset>& (*presets)();
 };
@@ -35,14 +37,13 @@ std::unique_ptr<Scene> make_particles(const Setup& setup);
 const std::vector<Preset>& particles_presets();
 
 inline const SceneInfo kScenes[] = {
-    {"01", "01_frustum_split", "View-frustum clipping by triangle splitting", make_frustum_split, frustum_split_presets},
-    {"02", "02_segment_triangle", "Segment against triangle and mesh", make_segment_triangle, segment_triangle_presets},
-    {"03", "03_separating_axes", "Separating axes: oriented boxes, triangle pairs, moving boxes", make_separating_axes,
-     separating_axes_presets},
-    {"04", "04_bisection", "Time of impact by bisection", make_bisection, bisection_presets},
-    {"05", "05_sphere_sweeps", "Sphere-swept volumes, static and moving", make_sphere_sweeps, sphere_sweeps_presets},
-    {"06", "06_spatial_trees", "BSP and k-d trees, pair reduction", make_spatial_trees, spatial_trees_presets},
-    {"07", "07_particles", "Particle systems that bounce", make_particles, particles_presets},
+    {"01", "01_frustum_split", LABKIT_LAB_TITLE_01, make_frustum_split, frustum_split_presets},
+    {"02", "02_segment_triangle", LABKIT_LAB_TITLE_02, make_segment_triangle, segment_triangle_presets},
+    {"03", "03_separating_axes", LABKIT_LAB_TITLE_03, make_separating_axes, separating_axes_presets},
+    {"04", "04_bisection", LABKIT_LAB_TITLE_04, make_bisection, bisection_presets},
+    {"05", "05_sphere_sweeps", LABKIT_LAB_TITLE_05, make_sphere_sweeps, sphere_sweeps_presets},
+    {"06", "06_spatial_trees", LABKIT_LAB_TITLE_06, make_spatial_trees, spatial_trees_presets},
+    {"07", "07_particles", LABKIT_LAB_TITLE_07, make_particles, particles_presets},
 };
 
 }  // namespace viewer

@@ -1,0 +1,87 @@
+// Lab and step titles come from grading/manifest.json alone. The tests' names and the
+// viewer's list read them from it (common/harness/titles.h); the handouts and the banners
+// of the contract headers, stubs and references are prose, so this test holds them to it:
+// change a title in the manifest and this names every line to change with it.
+#define CATCH_CONFIG_MAIN  // Catch2 2: main() is here; Catch2 3: it is Catch2::Catch2WithMain's
+#include "common/harness/catch.h"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
+#include <string>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string source_dir() {
+  const char* dir = std::getenv("LABKIT_SOURCE_DIR");
+  REQUIRE(dir);
+  return dir;
+}
+
+std::string read(const fs::path& path) {
+  std::ifstream in(path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+nlohmann::json manifest() { return nlohmann::json::parse(read(fs::path(source_dir()) / "grading/manifest.json")); }
+
+std::string stem_of(const nlohmann::json& lab) {
+  return lab["id"].get<std::string>() + "_" + lab["name"].get<std::string>();
+}
+
+}  // namespace
+
+TEST_CASE("each handout's headings give the manifest's lab and step titles", "[kit]") {
+  const nlohmann::json all = manifest();
+  for (const auto& lab : all["labs"]) {
+    const fs::path handout = fs::path(source_dir()) / "handouts" / (stem_of(lab) + ".md");
+    INFO(handout.string());
+    const std::string text = read(handout);
+    const std::string title = "# Lab " + lab["id"].get<std::string>() + ": " + lab["title"].get<std::string>();
+    CHECK(text.substr(0, text.find('\n')) == title);
+    for (const auto& step : lab["steps"]) {
+      const std::string tag = step["tag"], heading_start = "## Step " + std::to_string(step["step"].get<int>()) + ": ";
+      const std::regex heading("^## Step [0-9]+: (.*) \\(" + tag + "\\)$", std::regex::multiline);
+      std::smatch m;
+      INFO(tag << ": the handout needs the heading \"" << heading_start << step["title"].get<std::string>() << " ("
+                << tag << ")\"");
+      REQUIRE(std::regex_search(text, m, heading));
+      CHECK(m[0].str().rfind(heading_start, 0) == 0);
+      CHECK(m[1].str() == step["title"].get<std::string>());
+    }
+  }
+}
+
+TEST_CASE("the step banners of contracts, stubs and references give the manifest's step titles", "[kit]") {
+  const std::regex banner("^// ---- Step [0-9]+ \\((L[0-9]{2}S[0-9]+)\\): (.*?) -+$", std::regex::multiline);
+  int banners = 0;
+  const nlohmann::json all = manifest();
+  for (const auto& lab : all["labs"]) {
+    std::map<std::string, std::string> titles;
+    for (const auto& step : lab["steps"]) titles[step["tag"]] = step["title"];
+    for (const char* top : {"labs", "solutions"}) {
+      const fs::path dir = fs::path(source_dir()) / top / stem_of(lab);
+      if (!fs::exists(dir)) continue;  // a student release has no solutions/
+      for (const auto& file : fs::directory_iterator(dir)) {
+        const std::string text = read(file.path());
+        for (auto it = std::sregex_iterator(text.begin(), text.end(), banner); it != std::sregex_iterator(); ++it) {
+          const std::string tag = (*it)[1], title = (*it)[2];
+          INFO(file.path().string() << ": " << it->str());
+          REQUIRE(titles.count(tag) == 1);
+          CHECK(title == titles[tag]);
+          ++banners;
+        }
+      }
+    }
+  }
+  CHECK(banners > 0);
+}
