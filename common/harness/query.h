@@ -11,6 +11,7 @@
 #include "common/harness/codec.h"
 
 #include <string>
+#include <string_view>
 #include <tuple>
 #include <utility>
 
@@ -24,6 +25,8 @@ struct Query {
 
 template <class Input>
 bool operator==(const Query<Input>& q, const std::string& name) { return name == q.name; }
+template <class A, class B>
+bool operator==(const Query<A>& a, const Query<B>& b) { return std::string_view(a.name) == b.name; }
 
 template <class... Inputs>
 struct QueryTable {
