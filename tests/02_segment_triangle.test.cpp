@@ -145,7 +145,7 @@ TEST_CASE("L02S2 point in triangle by edge tests: worked examples", "[lab02][ste
 }
 
 TEST_CASE("L02S2 point in triangle by edge tests: random cases", "[lab02][step2][oracle]") {
-  check::random_cases("point_in_triangle_edges", judge::point_triangle(), [](const PointTriangle& in) {
+  check::random_cases("point_in_triangle_edges", gen::point_triangle(), [](const PointTriangle& in) {
     return judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle));
   });
 }
@@ -191,10 +191,10 @@ TEST_CASE("L02S3 barycentric coordinates in the dropped-axis plane: worked examp
 }
 
 TEST_CASE("L02S3 barycentric coordinates: random cases", "[lab02][step3][oracle]") {
-  check::random_cases("barycentric", judge::point_triangle(), [](const PointTriangle& in) {
+  check::random_cases("barycentric", gen::point_triangle(), [](const PointTriangle& in) {
     return judge::barycentric(in, barycentric(in.x, in.triangle));
   });
-  check::random_cases("point_in_triangle_barycentric", judge::point_triangle(), [](const PointTriangle& in) {
+  check::random_cases("point_in_triangle_barycentric", gen::point_triangle(), [](const PointTriangle& in) {
     return judge::point_in_triangle(in, point_in_triangle_barycentric(in.x, in.triangle));
   });
 }
@@ -382,7 +382,7 @@ TEST_CASE("L02S6 segment against a moving mesh: worked examples", "[lab02][step6
 }
 
 TEST_CASE("L02S6 segment against a moving mesh: random cases", "[lab02][step6][oracle]") {
-  check::random_cases("first_hit_moving", judge::moving_mesh(), [](const MovingMesh& in) {
+  check::random_cases("first_hit_moving", gen::moving_mesh(), [](const MovingMesh& in) {
     return judge::first_hit_moving(in, first_hit_moving(in.segment, in.mesh, in.m0, in.m1));
   });
 }
@@ -458,7 +458,7 @@ TEST_CASE("L02S7 moving mesh against moving mesh: worked examples", "[lab02][ste
 }
 
 TEST_CASE("L02S7 moving mesh against moving mesh: random cases", "[lab02][step7][oracle]") {
-  check::random_cases("first_contact_moving_meshes", judge::moving_meshes(), [](const MovingMeshes& in) {
+  check::random_cases("first_contact_moving_meshes", gen::moving_meshes(), [](const MovingMeshes& in) {
     return judge::first_contact_moving_meshes(in, run_contact(in));
   });
 }
@@ -582,7 +582,7 @@ TEST_CASE("L02S8 robustness: moving meshes touching exactly", "[lab02][step8]") 
 
 TEST_CASE("L02S8 robustness: random exact degenerate cases", "[lab02][step8][oracle]") {
   check::random_cases("robust.find_segment_triangle", gen::exact_segment_triangle(), exact_find);
-  check::random_cases("robust.point_in_triangle", judge::exact_point_triangle(), [](const PointTriangle& in) {
+  check::random_cases("robust.point_in_triangle", gen::exact_point_triangle(), [](const PointTriangle& in) {
     const Outcome o = judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle), Rules::exact);
     if (o.verdict == Outcome::Verdict::fail) return o;
     return judge::point_in_triangle(in, point_in_triangle_barycentric(in.x, in.triangle), Rules::exact);
