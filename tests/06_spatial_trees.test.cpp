@@ -213,9 +213,9 @@ TEST_CASE("L06S2 segment queries: random cases", "[lab06][step2][oracle]") {
   const auto query = [](auto&& judge_one) {
     return [judge_one](const TreeQuery& in) { return judge_one(in, judge::checker_tree(in.mesh, in.tree), Rules::random); };
   };
-  check::random_cases("first_hit", judge::tree_query(), query(judge_first));
-  check::random_cases("any_hit", judge::tree_query(), query(judge_any));
-  check::random_cases("all_hits", judge::tree_query(), query(judge_all));
+  check::random_cases("first_hit", gen::tree_query(), query(judge_first));
+  check::random_cases("any_hit", gen::tree_query(), query(judge_any));
+  check::random_cases("all_hits", gen::tree_query(), query(judge_all));
 }
 
 // ---- Step 3 --------------------------------------------------------------------------------------
@@ -284,8 +284,8 @@ TEST_CASE("L06S3 BSP tree: worked examples", "[lab06][step3]") {
 }
 
 TEST_CASE("L06S3 BSP tree: random cases", "[lab06][step3][oracle]") {
-  check::random_cases("build_bsp", judge::bsp_mesh(), [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
-  check::random_cases("classify", judge::point_query(), [](const PointQuery& in) {
+  check::random_cases("build_bsp", gen::bsp_mesh(), [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
+  check::random_cases("classify", gen::point_query(), [](const PointQuery& in) {
     return judge::classify(in, classify(build_bsp(in.mesh), in.point));
   });
 }
@@ -344,7 +344,7 @@ TEST_CASE("L06S4 back to front: worked examples", "[lab06][step4]") {
 }
 
 TEST_CASE("L06S4 back to front: random cases", "[lab06][step4][oracle]") {
-  check::random_cases("back_to_front", judge::eye_query(), [](const PointQuery& in) {
+  check::random_cases("back_to_front", gen::eye_query(), [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point));
   });
@@ -380,7 +380,7 @@ TEST_CASE("L06S5 broad phase: worked examples", "[lab06][step5]") {
 }
 
 TEST_CASE("L06S5 broad phase: random cases", "[lab06][step5][oracle]") {
-  check::random_cases("overlapping_pairs", judge::sphere_set(), [](const SphereSet& in) {
+  check::random_cases("overlapping_pairs", gen::sphere_set_case(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres));
   });
 }
@@ -428,11 +428,11 @@ TEST_CASE("L06S6 sort and sweep with frame coherence: worked examples", "[lab06]
                  expect_frames({{{{1, 2}}, 2, 0}, {{{1, 2}}, 3, 1}}));
   check::example("sweep_frames", "no spheres, twice", SweepCase{{{}, {}}}, expect_frames({{{}, 0, 0}, {{}, 0, 0}}));
   check::example("sweep_frames.moving", "1,000 spheres, 10 frames of small moves along x", MovingSpheres{1000, 10, 6},
-                 [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(judge::moving_spheres(m)); });
+                 [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(gen::moving_spheres(m)); });
 }
 
 TEST_CASE("L06S6 sort and sweep with frame coherence: random cases", "[lab06][step6][oracle]") {
-  check::random_cases("sweep_frames", judge::sweep_case(),
+  check::random_cases("sweep_frames", gen::sweep_case(),
                       [](const SweepCase& in) { return judge::sweep_frames(in, run_sweep(in.frames)); });
 }
 
@@ -485,7 +485,7 @@ TEST_CASE("L06S7 OBB trees, dual traversal: worked examples", "[lab06][step7]") 
 }
 
 TEST_CASE("L06S7 OBB trees, dual traversal: random cases", "[lab06][step7][oracle]") {
-  check::random_cases("colliding_triangles", judge::bvh_query(), [](const BvhQuery& in) { return judge_bvh(in); });
+  check::random_cases("colliding_triangles", gen::bvh_query(), [](const BvhQuery& in) { return judge_bvh(in); });
 }
 
 // ---- Step 8 --------------------------------------------------------------------------------------
@@ -701,20 +701,20 @@ TEST_CASE("L06S9 robustness: BSP trees and spheres on exact input", "[lab06][ste
 }
 
 TEST_CASE("L06S9 robustness: random exact degenerate cases", "[lab06][step9][oracle]") {
-  check::random_cases("robust.segment_queries", judge::exact_tree_query(),
+  check::random_cases("robust.segment_queries", gen::exact_tree_query(),
                       [](const TreeQuery& in) { return all_three(in, Rules::exact); });
   check::random_cases("robust.build_kd_tree", gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
-  check::random_cases("robust.classify", judge::exact_point_query(), [](const PointQuery& in) {
+  check::random_cases("robust.classify", gen::exact_point_query(), [](const PointQuery& in) {
     return judge::classify(in, classify(build_bsp(in.mesh), in.point), Rules::exact);
   });
-  check::random_cases("robust.back_to_front", judge::exact_eye_query(), [](const PointQuery& in) {
+  check::random_cases("robust.back_to_front", gen::exact_eye_query(), [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
   });
-  check::random_cases("robust.overlapping_pairs", judge::exact_sphere_set(), [](const SphereSet& in) {
+  check::random_cases("robust.overlapping_pairs", gen::exact_sphere_set_case(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
   });
-  check::random_cases("robust.sweep_frames", judge::exact_sweep_case(), [](const SweepCase& in) {
+  check::random_cases("robust.sweep_frames", gen::exact_sweep_case(), [](const SweepCase& in) {
     return judge::sweep_frames(in, run_sweep(in.frames), Rules::exact);
   });
 }
