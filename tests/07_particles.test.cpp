@@ -268,9 +268,9 @@ TEST_CASE("L07S1 emitter and lifetime: worked examples", "[lab07][step1]") {
 }
 
 TEST_CASE("L07S1 emitter and lifetime: random cases", "[lab07][step1][oracle]") {
-  check::random_cases("emit", judge::emit_case(), run_emit);
-  check::random_cases("births", judge::births_case(), run_births);
-  check::random_cases("age", judge::age_case(), run_age);
+  check::random_cases("emit", gen::emit_case(), run_emit);
+  check::random_cases("births", gen::births_case(), run_births);
+  check::random_cases("age", gen::age_case(), run_age);
 }
 
 // ---- Step 2 ----------------------------------------------------------------------------
@@ -336,7 +336,7 @@ TEST_CASE("L07S2 forces, Euler and Verlet: worked examples", "[lab07][step2]") {
 }
 
 TEST_CASE("L07S2 forces, Euler and Verlet: random cases", "[lab07][step2][oracle]") {
-  check::random_cases("integrators", judge::motion_case(), run_motion);
+  check::random_cases("integrators", gen::motion_case(), run_motion);
 }
 
 // ---- Step 3 ----------------------------------------------------------------------------
@@ -395,8 +395,8 @@ TEST_CASE("L07S3 launch angle to hit a target: worked examples", "[lab07][step3]
 }
 
 TEST_CASE("L07S3 launch angle to hit a target: random cases", "[lab07][step3][oracle]") {
-  check::random_cases("aim", judge::launch_case(), run_aim);
-  check::random_cases("exact.aim", judge::exact_launch_case(), run_exact_aim);
+  check::random_cases("aim", gen::launch_case(), run_aim);
+  check::random_cases("exact.aim", gen::exact_launch_case(), run_exact_aim);
 }
 
 // ---- Step 4 ----------------------------------------------------------------------------
@@ -503,14 +503,14 @@ TEST_CASE("L07S4 the step as a segment against surfaces: worked examples", "[lab
 }
 
 TEST_CASE("L07S4 the step as a segment against surfaces: random cases", "[lab07][step4][oracle]") {
-  check::random_cases("hit_plane", judge::plane_case(), [](const SegmentScene& in) {
+  check::random_cases("hit_plane", gen::plane_case(), [](const SegmentScene& in) {
     return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]));
   });
-  check::random_cases("hit_triangle", judge::sheet_case(), [](const SegmentTrianglePair& in) {
+  check::random_cases("hit_triangle", gen::sheet_case(), [](const SegmentTrianglePair& in) {
     return judge::hit_triangle(in, hit_triangle(in.segment, in.triangle));
   });
-  check::random_cases("first_hit", judge::segment_scene(), run_first_hit);
-  check::random_cases("exact.first_hit", judge::exact_segment_scene(), run_exact_first_hit);
+  check::random_cases("first_hit", gen::segment_scene(), run_first_hit);
+  check::random_cases("exact.first_hit", gen::exact_segment_scene(), run_exact_first_hit);
 }
 
 // ---- Step 5 ----------------------------------------------------------------------------
@@ -556,7 +556,7 @@ TEST_CASE("L07S5 impulse with restitution and friction: worked examples", "[lab0
 }
 
 TEST_CASE("L07S5 impulse with restitution and friction: random cases", "[lab07][step5][oracle]") {
-  check::random_cases("impulse", judge::impulse_case(), run_impulse);
+  check::random_cases("impulse", gen::impulse_case(), run_impulse);
 }
 
 // ---- Step 6 ----------------------------------------------------------------------------
@@ -623,7 +623,7 @@ TEST_CASE("L07S6 bounce in the remaining time, bounce cap: worked examples", "[l
 }
 
 TEST_CASE("L07S6 bounce in the remaining time, bounce cap: random cases", "[lab07][step6][oracle]") {
-  check::random_cases("collide", judge::collide_case(), run_collide);
+  check::random_cases("collide", gen::collide_case(), run_collide);
 }
 
 // ---- Step 7 ----------------------------------------------------------------------------
@@ -729,11 +729,11 @@ TEST_CASE("L07S7 the handling loop: worked examples", "[lab07][step7]") {
 }
 
 TEST_CASE("L07S7 invariants: random cases", "[lab07][step7][oracle]") {
-  check::random_cases("settle", judge::settle_case(), [](const SettleCase& in) {
+  check::random_cases("settle", gen::settle_case(), [](const SettleCase& in) {
     return judge::settle(in, settle(in.x, in.scene, in.last));
   });
-  check::random_cases("invariants", judge::collide_case(false), run_invariants);
-  check::random_cases("system", judge::system_case(), run_system);
+  check::random_cases("invariants", gen::collide_case(false), run_invariants);
+  check::random_cases("system", gen::system_case(), run_system);
 }
 
 // ---- Preconditions (the header's "Preconditions"): the reference only ------------------
