@@ -3,9 +3,8 @@
 // its presets read this table (common/harness/query.h); a query is added or renamed here.
 #pragma once
 
-#include "01_frustum_split.judge.h"
-
 #include "common/harness/query.h"
+#include "01_frustum_split.judge.h"
 
 #define LABKIT_LAB01_QUERIES(X) \
   X(signed_distance, "signed_distance", TrianglePlane)               \

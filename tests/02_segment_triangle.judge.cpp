@@ -1,29 +1,13 @@
-#include "02_segment_triangle.judge.h"
+// Lab 02's judges of one segment against one triangle (steps 1 to 4: the plane crossing,
+// the point in the triangle, its weights, test and find), and the helpers all of lab 02's
+// judges share (tests/02_segment_triangle.judging.h). The meshes: judge.meshes.cpp.
+#include "02_segment_triangle.judging.h"
 
-#include "common/oracle/moving_meshes.h"
-#include "common/oracle/oracle.h"
-#include "common/harness/segment_doubt.h"
-
+#include <algorithm>
 #include <cmath>
 #include <limits>
-#include <algorithm>
-#include <set>
 
 namespace labkit::lab02::judge {
-
-namespace {
-
-using check::ambiguous;
-using check::Expect;
-using check::fail;
-using check::pass;
-
-constexpr double kRelative = 1e-9;  // tol = 1e-9 S (the header's tolerances)
-
-template <class Input>
-double tolerance_of(const Input& in) {
-  return kRelative * check::scale_of_input(in);
-}
 
 // check::verdict, with the rule the answer broke as its why (the exact answer, not in
 // doubt: no input within tol answers otherwise).
@@ -32,14 +16,6 @@ Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::str
   Outcome o = check::verdict(got, expected, doubt, rules, yes, no);
   if (o.verdict == Outcome::Verdict::fail) o.why = why;
   return o;
-}
-
-// The same, with doubt found by perturbing the input (`exact` recomputes the answer).
-template <class Input, class Exact>
-Outcome yes_no(const Input& in, bool got, Rules rules, Exact&& exact, const std::string& yes, const std::string& no,
-               const std::string& why) {
-  const bool doubt = rules == Rules::random && check::flips_under_perturbation(in, exact);
-  return verdict(got, exact(in), doubt, rules, yes, no, why);
 }
 
 // A needle's plane is known in doubles only to about 1e-16 times its aspect ratio:
@@ -98,7 +74,7 @@ std::string yours(bool hit) { return std::string(", but your answer says ") + (h
 
 // Could a perturbation of tol change whether the segment meets this triangle?
 bool unstable(const Segment& s, const Triangle& tri, double tol, Rules rules) {
-  return rules == Rules::random && check::segment_triangle_in_doubt(s, tri, tol, triangle_hit);
+  return judging::unstable(s, tri, tol, rules, triangle_hit);
 }
 
 // Is this triangle of the mesh hit, or is its hit ambiguous?
@@ -106,38 +82,22 @@ bool hit_or_ambiguous(const Segment& s, const Triangle& tri, double tol, Rules r
   return triangle_hit({s, tri}) || unstable(s, tri, tol, rules);
 }
 
-// Each triangle of a mesh: exactly hit or not, and whether that is in doubt.
-struct Status {
-  bool hit = false;
-  bool unstable = false;
-};
-
 std::vector<Status> statuses(const Segment& s, const Mesh& mesh, double tol, Rules rules) {
-  std::vector<Status> all(mesh.size());
-  for (std::size_t i = 0; i < mesh.size(); ++i) {
-    const Triangle tri = mesh.triangle(i);
-    all[i] = {triangle_hit({s, tri}), unstable(s, tri, tol, rules)};
-  }
-  return all;
+  return judging::statuses(s, mesh, tol, rules, triangle_hit);
 }
 
 // The verdict on "does the segment hit the mesh at all": the exact answer stands when
 // some hit is not in doubt, or when no triangle is in doubt.
 Outcome mesh_yes_no(const std::vector<Status>& all, bool got, Rules rules, const std::string& yes, const std::string& no,
                     const Segment& s, const Mesh& mesh) {
-  bool expected = false, stable_hit = false, doubt = false;
-  for (const Status& st : all) {
-    expected = expected || st.hit;
-    stable_hit = stable_hit || (st.hit && !st.unstable);
-    doubt = doubt || st.unstable;
-  }
+  const judging::AnyHit any = judging::any_hit(all);
   std::string why = "no triangle of the mesh is hit: the segment misses each one" + yours(got);
   for (std::size_t i = 0; i < all.size(); ++i)
-    if (all[i].hit && (!all[i].unstable || !stable_hit)) {
+    if (all[i].hit && (!all[i].unstable || !any.stable_hit)) {
       why = "triangle " + std::to_string(i) + " is hit: " + hit_rule(s, mesh.triangle(i)) + yours(got);
       break;
     }
-  return verdict(got, expected, !stable_hit && doubt, rules, yes, no, why);
+  return verdict(got, any.hit, any.in_doubt(), rules, yes, no, why);
 }
 
 // The checks every reported hit on a triangle must pass (the header's tolerances).
@@ -183,7 +143,7 @@ std::string describe_hits(const std::vector<MeshHit>& hits) {
   return s.empty() ? "no hit" : s;
 }
 
-}  // namespace
+// ---- Steps 1 to 4: one segment, one triangle ------------------------------------------
 
 Outcome segment_plane(const SegmentTrianglePair& in, const PlaneCrossing& got, Rules rules) {
   const double tol = tolerance_of(in);
@@ -294,332 +254,6 @@ Outcome find_segment_triangle(const SegmentTrianglePair& in, const SegmentTriang
   }
   const Outcome o = e.outcome();
   return o.verdict == Outcome::Verdict::fail ? o : decision;
-}
-
-Outcome any_hit(const SegmentMeshPair& in, bool got, Rules rules) {
-  return mesh_yes_no(statuses(in.segment, in.mesh, tolerance_of(in), rules), got, rules, "hit", "miss", in.segment, in.mesh);
-}
-
-Outcome first_hit(const SegmentMeshPair& in, const MeshHit& got, Rules rules) {
-  const double tol = tolerance_of(in);
-  const std::vector<Status> all = statuses(in.segment, in.mesh, tol, rules);
-  const Outcome decision = mesh_yes_no(all, got.hit, rules, "a hit", "no hit", in.segment, in.mesh);
-  const bool expected = std::any_of(all.begin(), all.end(), [](const Status& st) { return st.hit; });
-  if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
-  const std::vector<oracle::SegmentHit> hits = oracle::segment_mesh_hits(in.segment, in.mesh);
-  if (!valid_index(in.mesh, got.triangle))
-    return fail(describe_hits(hits), "triangle " + std::to_string(got.triangle), "that triangle index is out of range");
-  const Triangle tri = mesh_triangle(in.mesh, got.triangle);
-  if (!hit_or_ambiguous(in.segment, tri, tol, rules))
-    return fail(describe_hits(hits), "triangle " + std::to_string(got.triangle) + " at t = " + fmt(got.t),
-                "the segment does not meet triangle " + std::to_string(got.triangle));
-  Expect e;
-  check_hit(e, in.segment, tri, got.t, got.point, got.barycentric, got.normal, tol);
-  // The first hit whose existence is not in doubt bounds t from above.
-  for (const oracle::SegmentHit& h : hits) {
-    if (all[std::size_t(h.triangle)].unstable) continue;
-    const Triangle first = mesh_triangle(in.mesh, h.triangle);
-    const double slack = t_tolerance(in.segment, first, tol) + t_tolerance(in.segment, tri, tol);
-    e.that("first", got.t <= h.t + slack, "triangle " + std::to_string(got.triangle) + " at t = " + fmt(got.t),
-           "triangle " + std::to_string(h.triangle) + " at t = " + fmt(h.t),
-           "first_hit is the hit with the smallest t: triangle " + std::to_string(h.triangle) + " at t = " + fmt(h.t) +
-               " comes before yours");
-    break;
-  }
-  const Outcome o = e.outcome();
-  return o.verdict == Outcome::Verdict::fail ? o : decision;
-}
-
-Outcome all_hits(const SegmentMeshPair& in, const std::vector<MeshHit>& got, Rules rules) {
-  const double tol = tolerance_of(in);
-  const std::vector<oracle::SegmentHit> hits = oracle::segment_mesh_hits(in.segment, in.mesh);
-  const std::string expected = describe_hits(hits), answer = describe_hits(got);
-  bool doubt = false;
-  std::set<int> reported;
-  for (std::size_t k = 0; k < got.size(); ++k) {
-    const MeshHit& h = got[k];
-    if (!h.hit) return fail(expected, answer, "entry " + std::to_string(k) + " has hit = false");
-    if (!valid_index(in.mesh, h.triangle)) return fail(expected, answer, "a triangle index is out of range");
-    if (!reported.insert(h.triangle).second)
-      return fail(expected, answer, "triangle " + std::to_string(h.triangle) + " is reported twice");
-    const Triangle tri = mesh_triangle(in.mesh, h.triangle);
-    if (!triangle_hit({in.segment, tri})) {
-      if (!hit_or_ambiguous(in.segment, tri, tol, rules))
-        return fail(expected, answer, "the segment does not meet triangle " + std::to_string(h.triangle));
-      doubt = true;
-    }
-    Expect e;
-    check_hit(e, in.segment, tri, h.t, h.point, h.barycentric, h.normal, tol);
-    const Outcome o = e.outcome();
-    if (o.verdict == Outcome::Verdict::fail)
-      return fail(o.expected, o.got, "triangle " + std::to_string(h.triangle) + ": " + o.why);
-    if (k + 1 < got.size() && valid_index(in.mesh, got[k + 1].triangle)) {
-      const double slack = t_tolerance(in.segment, tri, tol) +
-                           t_tolerance(in.segment, mesh_triangle(in.mesh, got[k + 1].triangle), tol);
-      if (got[k + 1].t + slack < h.t)
-        return fail(expected, answer, "all_hits must be sorted by t: triangle " + std::to_string(got[k + 1].triangle) + " (t = " +
-                                          fmt(got[k + 1].t) + ") comes before triangle " + std::to_string(h.triangle) + " (t = " + fmt(h.t) + ")");
-    }
-  }
-  for (const oracle::SegmentHit& h : hits) {
-    if (reported.count(h.triangle)) continue;
-    const Triangle tri = mesh_triangle(in.mesh, h.triangle);
-    if (unstable(in.segment, tri, tol, rules)) {
-      doubt = true;
-      continue;
-    }
-    std::string why = "triangle " + std::to_string(h.triangle) + " (hit at t = " + fmt(h.t) + ") is missing";
-    for (const MeshHit& other : got)
-      if (std::abs(other.t - h.t) <= t_tolerance(in.segment, tri, tol))
-        why += ": it is met at the same t as triangle " + std::to_string(other.triangle) +
-               ", and every triangle met is listed once (a segment through a shared edge or face meets each)";
-    return fail(expected, answer, why);
-  }
-  return doubt ? ambiguous() : pass();
-}
-
-Outcome first_hit_moving(const MovingMesh& in, const MeshHit& got) {
-  // Doubt is judged in the mesh's frame, on the particle's path there.
-  const double tol = tolerance_of(in);
-  const Segment local = oracle::moving_local_path(in.segment, in.m0, in.m1);
-  std::vector<Status> all = statuses(local, in.mesh, tol, Rules::random);
-  const bool expected = oracle::moving_mesh_hit_any(in.segment, in.mesh, in.m0, in.m1);
-  if (!expected) for (Status& st : all) st.hit = false;  // the rounded path must not overrule the exact one
-  const Outcome decision = mesh_yes_no(all, got.hit, Rules::random, "a hit", "no hit", local, in.mesh);
-  if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
-  const std::vector<oracle::SegmentHit> hits = oracle::moving_mesh_hits(in.segment, in.mesh, in.m0, in.m1);
-  std::string problem = oracle::check_moving_hit(in.segment, in.mesh, in.m0, in.m1, got.triangle, got.t, got.point, tol);
-  if (!problem.empty() && valid_index(in.mesh, got.triangle)) {
-    // The header's rule for points, in the mesh's frame: within tol of the path, and
-    // within tol + |path| (t's tolerance) of the triangle (a needle's plane, or a path
-    // nearly along it, fixes the crossing only that well).
-    const Triangle tri = mesh_triangle(in.mesh, got.triangle);
-    const Vec3 p = in.m1.inverse() * got.point;
-    const double along = tol + (local.b - local.a).norm() * t_tolerance(local, tri, tol);
-    if (oracle::within(p, tri, along) && oracle::within(p, local, tol) && oracle::parameter_reproduces(local, got.t, p, 2 * tol))
-      problem.clear();
-  }
-  if (!problem.empty())
-    return fail(describe_hits(hits), "triangle " + std::to_string(got.triangle) + " at t = " + fmt(got.t) + ", point " + fmt(got.point),
-                "the point must be the contact on the mesh at its end pose (m1 times the point found in the mesh's frame, "
-                "on the path m0^-1 a -> m1^-1 b there): " + problem);
-  // In the mesh's frame the path is m0^-1 a -> m1^-1 b; t is compared there, against
-  // the first hit whose existence is not in doubt.
-  for (const oracle::SegmentHit& h : hits) {
-    if (all[std::size_t(h.triangle)].unstable) continue;
-    const double slack = t_tolerance(local, mesh_triangle(in.mesh, h.triangle), tol) +
-                         t_tolerance(local, mesh_triangle(in.mesh, got.triangle), tol);
-    if (got.t > h.t + slack)
-      return fail(describe_hits(hits), "triangle " + std::to_string(got.triangle) + " at t = " + fmt(got.t),
-                  "first_hit is the hit with the smallest t: triangle " + std::to_string(h.triangle) + " at t = " + fmt(h.t) +
-               " comes before yours");
-    break;
-  }
-  const Vec3 n = in.m1.linear() * oracle::unit_normal(mesh_triangle(in.mesh, got.triangle));
-  if ((got.normal - n).norm() > 1e-8)
-    return fail(fmt(n), fmt(got.normal), "the normal must be the triangle's unit normal as wound, turned by m1 (the mesh at its end pose)");
-  return decision;
-}
-
-// ---- Step 7: two meshes moving by translations -----------------------------------------
-
-namespace {
-
-// The exact first contact, in the header's words: which family, which features, when.
-std::string contact_rule(const MovingMeshes& in, const oracle::MeshContact& c) {
-  const Vec3 d = in.velocity_a - in.velocity_b;
-  const std::string seen = " (seen from B, A moves by va - vb = " + fmt(d) + ")";
-  if (!c.hit) return "the meshes never touch during the frame, 0 <= t <= 1" + seen;
-  const std::string at = " at t = " + fmt(c.t) + ", point " + fmt(c.point);
-  if (c.kind == 0)
-    return "the meshes first touch" + at + ": vertex " + std::to_string(c.feature_a) + " of A, on its path p -> p + d, meets face " +
-           std::to_string(c.feature_b) + " of B" + seen;
-  if (c.kind == 1)
-    return "the meshes first touch" + at + ": vertex " + std::to_string(c.feature_b) +
-           " of B, on its path q -> q - d (the other delta matrix), meets face " + std::to_string(c.feature_a) + " of A" + seen;
-  const auto ea = oracle::mesh_edges(in.a)[std::size_t(c.feature_a)], eb = oracle::mesh_edges(in.b)[std::size_t(c.feature_b)];
-  return "the meshes first touch" + at + ": edge-edge, edge (" + std::to_string(ea[0]) + ", " + std::to_string(ea[1]) +
-         ") of A, sweeping its quad (two triangles), meets edge (" + std::to_string(eb[0]) + ", " + std::to_string(eb[1]) +
-         ") of B" + seen;
-}
-
-}  // namespace
-
-Outcome first_contact_moving_meshes(const MovingMeshes& in, const MeshContact& got, Rules rules) {
-  const double tol = tolerance_of(in);
-  const oracle::MeshContact exact = oracle::first_contact_translating(in.a, in.velocity_a, in.b, in.velocity_b);
-  const auto touches = [](const MovingMeshes& m) {
-    return oracle::touch_during_frame_fast(m.a, m.velocity_a, m.b, m.velocity_b);
-  };
-  const bool doubt = rules == Rules::random && check::flips_under_perturbation(in, touches, 4);
-  // What A's motion alone would give (the mistake of moving A by va, not by va - vb):
-  // computed only for a failure's message.
-  const auto telltale = [&](bool hit, double t) {
-    if (in.velocity_b == Vec3::Zero()) return std::string();
-    const oracle::MeshContact absolute = oracle::first_contact_translating(in.a, in.velocity_a, in.b, Vec3::Zero());
-    if (hit != absolute.hit || (hit && std::abs(t - absolute.t) > 1e-6)) return std::string();
-    return std::string("; yours is what A's own motion va gives against a still B: B moves too, so use the relative motion va - vb");
-  };
-  Outcome decision = verdict(got.hit, exact.hit, doubt, rules, "contact", "no contact", contact_rule(in, exact) + yours(got.hit));
-  if (decision.verdict == Outcome::Verdict::fail) decision.why += telltale(got.hit, got.t);
-  if (decision.verdict == Outcome::Verdict::fail || !got.hit || !exact.hit) return decision;
-  // t, certified: no contact before t - dt, contact by t + dt. dt = tol over the closing
-  // speed along the contact's normal; exact input is held to 1e-9.
-  const Vec3 d = in.velocity_a - in.velocity_b;
-  const double dt = rules == Rules::exact ? 1e-9 : exact.approach > 0 ? tol / exact.approach : 1.0;
-  const std::string got_t = "t = " + fmt(got.t) + ", point " + fmt(got.point);
-  const std::string exact_t = "t = " + fmt(exact.t) + ", point " + fmt(exact.point);
-  // Whether a perturbation of tol changes "touching by time x": then either side passes
-  // (a near miss earlier than the exact first contact, or a contact that a hair removes).
-  const auto in_doubt = [&](double x) {
-    return rules == Rules::random && check::flips_under_perturbation(in, [x](const MovingMeshes& m) {
-             return oracle::contact_by(m.a, m.velocity_a, m.b, m.velocity_b, x);
-           });
-  };
-  if (oracle::contact_by(in.a, in.velocity_a, in.b, in.velocity_b, got.t - dt)) {
-    if (in_doubt(got.t - dt)) return ambiguous();
-    return fail(exact_t, got_t,
-                contact_rule(in, exact) + ": the meshes already touch before your t = " + fmt(got.t) +
-                    " (tolerance " + fmt(dt) + "): report the first contact, the smallest t of all three families" +
-                    telltale(true, got.t));
-  }
-  if (!oracle::contact_by(in.a, in.velocity_a, in.b, in.velocity_b, got.t + dt)) {
-    if (in_doubt(got.t + dt)) return ambiguous();
-    return fail(exact_t, got_t,
-                contact_rule(in, exact) + ": the meshes do not touch yet at your t = " + fmt(got.t) + " (tolerance " + fmt(dt) +
-                    ")" + telltale(true, got.t));
-  }
-  const double reach = 2 * tol + d.norm() * std::min(dt, 1.0);
-  const bool on_a = oracle::within_translated(got.point, in.a, got.t * in.velocity_a, reach);
-  const bool on_b = oracle::within_translated(got.point, in.b, got.t * in.velocity_b, reach);
-  if (!on_a || !on_b)
-    return fail(exact_t, got_t,
-                std::string("the point must be where the meshes touch, in the world at your t: on A moved by t va and on B "
-                            "moved by t vb (within ") + fmt(reach) + "), and yours is off " + (on_a ? "B" : "A") +
-                    " (a point found in B's frame moves on by t vb; in A's frame by t va)");
-  return decision;
-}
-
-rc::Gen<PointTriangle> point_triangle() {
-  return rc::gen::exec([] {
-    const double s = *gen::wide_scale();
-    const Triangle t = *gen::any_triangle(s);
-    // x = v0 + alpha e1 + beta e2 with dyadic alpha, beta: exactly in the plane. Near an
-    // edge, a few units of 2^-bits off it (2^-20 of a height: far outside the band, unless
-    // the triangle is a needle); exactly on one only now and then (the robustness step's).
-    const int bits = *rc::gen::element(3, 10, 20);
-    const double unit = std::ldexp(1.0, -bits);
-    const auto off = [] { return *rc::gen::weightedElement<int>({{1, 0}, {3, 1}, {3, -1}, {2, 2}, {2, -2}}); };
-    const auto near = [&](int base) { return base * std::ldexp(1.0, bits - 3) + off(); };
-    const auto weight = [&] {
-      return *rc::gen::oneOf(rc::gen::just(near(*rc::gen::inRange(-4, 13))), rc::gen::just(double(*gen::integer(1 << 12)))) * unit;
-    };
-    const double alpha = weight();
-    // Sometimes near the edge v1 v2 (alpha + beta = 1).
-    const double beta = *rc::gen::element(0, 1) ? 1.0 - alpha + off() * unit : weight();
-    return PointTriangle{t.v0 + alpha * (t.v1 - t.v0) + beta * (t.v2 - t.v0), t};
-  });
-}
-
-rc::Gen<PointTriangle> exact_point_triangle() {
-  return rc::gen::exec([] {
-    const double s = 8 * *gen::scale();
-    const Triangle t{*gen::lattice_point(s), *gen::lattice_point(s), *gen::lattice_point(s)};
-    // (p v0 + q v1 + r v2) / 8 with p + q + r = 8: vertices, edges and inside, plus
-    // points just outside an edge (one weight -1/8).
-    const int p = *rc::gen::inRange(-1, 10);
-    const int q = *rc::gen::inRange(-1, 10 - p);
-    const int r = 8 - p - q;
-    return PointTriangle{(p * t.v0 + q * t.v1 + r * t.v2) / 8.0, t};
-  });
-}
-
-rc::Gen<MovingMesh> moving_mesh() {
-  return rc::gen::exec([] {
-    const SegmentMeshPair base = *gen::decisive_segment_mesh();
-    const double s = check::scale_of_input(base);
-    const RigidTransform m0 = *gen::rigid_transform(s);
-    const RigidTransform m1 = *rc::gen::oneOf(rc::gen::just(m0), gen::rigid_transform(s));
-    // The segment was aimed at the mesh in its own frame; place it in the world at m0/m1.
-    return MovingMesh{{m0 * base.segment.a, m1 * base.segment.b}, base.mesh, m0, m1};
-  });
-}
-
-// ---- Step 7's random meshes ------------------------------------------------------------
-
-namespace {
-
-// A point of the unit-ish cube [-1, 1]^3 on a 1/8 lattice.
-rc::Gen<Vec3> eighth_point() {
-  return rc::gen::exec([]() -> Vec3 { return Vec3(*gen::integer(8), *gen::integer(8), *gen::integer(8)) / 8.0; });
-}
-
-// A small mesh within distance sqrt(3) of the origin: a tetrahedron, a tent (two
-// triangles on a shared edge) or one triangle; its faces have non-zero area.
-Mesh small_mesh() {
-  const int shape = *rc::gen::weightedElement<int>({{5, 0}, {3, 1}, {2, 2}});
-  const int count = shape == 0 ? 4 : shape == 1 ? 4 : 3;
-  Mesh m;
-  for (;;) {
-    m.vertices.clear();
-    for (int i = 0; i < count; ++i) m.vertices.push_back(*eighth_point());
-    const Vec3 e1 = m.vertices[1] - m.vertices[0], e2 = m.vertices[2] - m.vertices[0];
-    const bool flat = e1.cross(e2).squaredNorm() < 1.0 / 64;
-    const bool thin = count == 4 && std::abs(e1.cross(e2).dot(m.vertices[3] - m.vertices[0])) < 1.0 / 16;
-    if (!flat && !thin) break;
-  }
-  if (shape == 0) m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-  else if (shape == 1) m.triangles = {{0, 1, 2}, {0, 3, 1}};
-  else m.triangles = {{0, 1, 2}};
-  return m;
-}
-
-// A point of the mesh: a vertex, a point inside an edge, or inside a face, and the
-// feature's kind (0 vertex, 1 edge, 2 face).
-Vec3 feature_point(const Mesh& m, int kind) {
-  const auto& tri = m.triangles[std::size_t(*rc::gen::inRange<int>(0, int(m.triangles.size())))];
-  const Vec3 v0 = m.vertices[std::size_t(tri[0])], v1 = m.vertices[std::size_t(tri[1])], v2 = m.vertices[std::size_t(tri[2])];
-  if (kind == 0) return v0;
-  // On an edge at an odd sixteenth, 3/16 to 13/16 from either end: never at a time t0 of
-  // the aim below, since the swept parallelogram's diagonal (u = t) is an exact
-  // degeneracy, the robustness step's.
-  if (kind == 1) return v0 + (2 * *rc::gen::inRange(1, 7) + 1) / 16.0 * (v1 - v0);
-  const double u = *rc::gen::inRange(1, 8) / 8.0;
-  const double w = *rc::gen::inRange(1, 9 - int(8 * u)) / 8.0 * (1 - u);
-  return v0 + u * (v1 - v0) + w * (v2 - v0);
-}
-
-}  // namespace
-
-rc::Gen<MovingMeshes> moving_meshes() {
-  return rc::gen::exec([] {
-    const double s = *gen::wide_scale();
-    MovingMeshes in;
-    in.a = small_mesh();
-    in.b = small_mesh();
-    // B sits 4 to 6 units away in a random direction: apart at t = 0.
-    Vec3 dir(*gen::integer(4), *gen::integer(4), *gen::integer(4));
-    if (dir == Vec3::Zero()) dir = Vec3(1, 0, 0);
-    const Vec3 centre = dir.normalized() * (4 + *rc::gen::inRange(0, 3));
-    for (Vec3& v : in.b.vertices) v += centre;
-    // Aim: a vertex of A at a face of B, a vertex of B at a face of A, or an edge at an
-    // edge, to meet at t0; t0 > 1 stops short. Sometimes the aim is nudged a little
-    // beside the feature (1e-6 to 1e-3 of the size: far outside the ambiguity band).
-    const int family = *rc::gen::inRange(0, 3);
-    const Vec3 x_a = feature_point(in.a, family == 0 ? 0 : family == 1 ? 2 : 1);
-    const Vec3 x_b = feature_point(in.b, family == 0 ? 2 : family == 1 ? 0 : 1);
-    const double t0 = *rc::gen::weightedElement<double>({{6, 0.25}, {6, 0.5}, {6, 0.75}, {3, 0.9375}, {3, 1.25}, {2, 2.0}});
-    Vec3 nudge = Vec3::Zero();
-    if (*rc::gen::element(0, 0, 1)) nudge = Vec3(*gen::integer(4), *gen::integer(4), *gen::integer(4)) * *gen::tiny(10, 20);
-    const Vec3 d = (x_b + nudge - x_a) / t0;
-    const Vec3 velocity_b = *rc::gen::element(0, 1) ? Vec3::Zero() : Vec3(*gen::integer(8), *gen::integer(8), *gen::integer(8));
-    in.velocity_b = velocity_b;
-    in.velocity_a = *rc::gen::element(0, 0, 0, 0, 0, 0, 0, 0, 0, 1) ? velocity_b : Vec3(d + velocity_b);  // now and then: no relative motion
-    for (Vec3& v : in.a.vertices) v *= s;
-    for (Vec3& v : in.b.vertices) v *= s;
-    in.velocity_a *= s, in.velocity_b *= s;
-    return in;
-  });
 }
 
 }  // namespace labkit::lab02::judge

@@ -3,9 +3,8 @@
 // its presets read this table (common/harness/query.h); a query is added or renamed here.
 #pragma once
 
-#include "02_segment_triangle.judge.h"
-
 #include "common/harness/query.h"
+#include "common/inputs/02_segment_triangle.h"
 
 #define LABKIT_LAB02_QUERIES(X) \
   X(segment_plane, "segment_plane", SegmentTrianglePair)                                      \

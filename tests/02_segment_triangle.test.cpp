@@ -146,7 +146,7 @@ TEST_CASE(LABKIT_STEP(L02S2) ": worked examples", "[lab02][step2]") {
 }
 
 TEST_CASE(LABKIT_STEP(L02S2) ": random cases", "[lab02][step2][oracle]") {
-  check::random_cases(query::point_in_triangle_edges, judge::point_triangle(), [](const PointTriangle& in) {
+  check::random_cases(query::point_in_triangle_edges, gen::point_triangle(), [](const PointTriangle& in) {
     return judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle));
   });
 }
@@ -192,10 +192,10 @@ TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[la
 }
 
 TEST_CASE(LABKIT_STEP(L02S3) ": random cases", "[lab02][step3][oracle]") {
-  check::random_cases(query::barycentric, judge::point_triangle(), [](const PointTriangle& in) {
+  check::random_cases(query::barycentric, gen::point_triangle(), [](const PointTriangle& in) {
     return judge::barycentric(in, barycentric(in.x, in.triangle));
   });
-  check::random_cases(query::point_in_triangle_barycentric, judge::point_triangle(), [](const PointTriangle& in) {
+  check::random_cases(query::point_in_triangle_barycentric, gen::point_triangle(), [](const PointTriangle& in) {
     return judge::point_in_triangle(in, point_in_triangle_barycentric(in.x, in.triangle));
   });
 }
@@ -383,7 +383,7 @@ TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
 }
 
 TEST_CASE(LABKIT_STEP(L02S6) ": random cases", "[lab02][step6][oracle]") {
-  check::random_cases(query::first_hit_moving, judge::moving_mesh(), [](const MovingMesh& in) {
+  check::random_cases(query::first_hit_moving, gen::moving_mesh(), [](const MovingMesh& in) {
     return judge::first_hit_moving(in, first_hit_moving(in.segment, in.mesh, in.m0, in.m1));
   });
 }
@@ -459,7 +459,7 @@ TEST_CASE(LABKIT_STEP(L02S7) ": worked examples", "[lab02][step7]") {
 }
 
 TEST_CASE(LABKIT_STEP(L02S7) ": random cases", "[lab02][step7][oracle]") {
-  check::random_cases(query::first_contact_moving_meshes, judge::moving_meshes(), [](const MovingMeshes& in) {
+  check::random_cases(query::first_contact_moving_meshes, gen::moving_meshes(), [](const MovingMeshes& in) {
     return judge::first_contact_moving_meshes(in, run_contact(in));
   });
 }
@@ -583,7 +583,7 @@ TEST_CASE(LABKIT_STEP(L02S8) ": moving meshes touching exactly", "[lab02][step8]
 
 TEST_CASE(LABKIT_STEP(L02S8) ": random exact degenerate cases", "[lab02][step8][oracle]") {
   check::random_cases(query::robust_find_segment_triangle, gen::exact_segment_triangle(), exact_find);
-  check::random_cases(query::robust_point_in_triangle, judge::exact_point_triangle(), [](const PointTriangle& in) {
+  check::random_cases(query::robust_point_in_triangle, gen::exact_point_triangle(), [](const PointTriangle& in) {
     const Outcome o = judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle), Rules::exact);
     if (o.verdict == Outcome::Verdict::fail) return o;
     return judge::point_in_triangle(in, point_in_triangle_barycentric(in.x, in.triangle), Rules::exact);

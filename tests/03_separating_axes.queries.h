@@ -3,9 +3,8 @@
 // its presets read this table (common/harness/query.h); a query is added or renamed here.
 #pragma once
 
-#include "03_separating_axes.judge.h"
-
 #include "common/harness/query.h"
+#include "03_separating_axes.judge.h"
 
 #define LABKIT_LAB03_QUERIES(X) \
   X(project_box, "project_box", BoxOnAxis)                            \

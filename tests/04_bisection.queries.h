@@ -3,9 +3,8 @@
 // its presets read this table (common/harness/query.h); a query is added or renamed here.
 #pragma once
 
-#include "04_bisection.judge.h"
-
 #include "common/harness/query.h"
+#include "04_bisection.judge.h"
 
 #define LABKIT_LAB04_QUERIES(X) \
   X(placed, "placed", Sphere)                                              \

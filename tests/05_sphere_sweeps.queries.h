@@ -3,9 +3,8 @@
 // its presets read this table (common/harness/query.h); a query is added or renamed here.
 #pragma once
 
-#include "05_sphere_sweeps.judge.h"
-
 #include "common/harness/query.h"
+#include "05_sphere_sweeps.judge.h"
 
 #define LABKIT_LAB05_QUERIES(X) \
   X(point_segment, "point_segment", PointSegmentPair)                                  \

@@ -1,83 +1,20 @@
 // Lab 06's verdicts: each judge compares one answer with the exact oracle, following the
 // rules and tolerances of labs/06_spatial_trees/spatial_trees.h. The tests and the viewer
-// both use them.
+// both use them. The inputs are common/inputs/06_spatial_trees.h, their random draws
+// common/generators/06_spatial_trees.h.
 #pragma once
 
 #include "06_spatial_trees.wire.h"
 
-#include "common/generators/meshes.h"
+#include "common/generators/06_spatial_trees.h"
 #include "common/harness/check.h"
+#include "common/inputs/06_spatial_trees.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace labkit::lab06 {
-
-// A segment query: a mesh, a segment, and which of the checker's own trees over the mesh
-// to ask (a seed: the same number always makes the same tree).
-struct TreeQuery {
-  Mesh mesh;
-  Segment segment;
-  int tree = 0;
-};
-template <class V> void fields(TreeQuery& q, V&& v) { v("mesh", q.mesh); v("segment", q.segment); v("tree", q.tree); }
-
-// A point against the solid of a closed mesh (step 3), or an eye for the painter (step 4).
-struct PointQuery {
-  Mesh mesh;
-  Vec3 point = Vec3::Zero();
-};
-template <class V> void fields(PointQuery& q, V&& v) { v("mesh", q.mesh); v("point", q.point); }
-
-struct SphereSet {
-  std::vector<Sphere> spheres;
-};
-template <class V> void fields(SphereSet& s, V&& v) { v("spheres", s.spheres); }
-
-// Step 6: the frames of one simulation, the same spheres moved a little each time.
-struct SweepCase {
-  std::vector<std::vector<Sphere>> frames;
-};
-template <class V> void fields(SweepCase& c, V&& v) { v("frames", c.frames); }
-
-// Step 6's big case: `count` spheres spread over a cube of side 100 (radii 0.25 to 1),
-// then `frames` frames in which each centre moves along x by at most 0.05.
-struct MovingSpheres {
-  int count = 1000;
-  int frames = 10;
-  int seed = 1;
-};
-template <class V> void fields(MovingSpheres& m, V&& v) { v("count", m.count); v("frames", m.frames); v("seed", m.seed); }
-
-// Step 7: two meshes, the checker's OBB trees over them (seeds), and whether every pair
-// is asked for.
-struct BvhQuery {
-  Mesh a, b;
-  int tree_a = 0, tree_b = 0;
-  bool every = true;
-};
-template <class V> void fields(BvhQuery& q, V&& v) {
-  v("a", q.a); v("b", q.b); v("tree_a", q.tree_a); v("tree_b", q.tree_b); v("every", q.every);
-}
-
-// Step 8: one of the four big meshes (gen::MeshKind), its size, and a seed for the mesh
-// (terrain, soup) and for the random segments.
-struct EfficiencyCase {
-  int kind = 0;
-  int triangles = 10000;
-  int segments = 1000;
-  int seed = 1;
-};
-template <class V> void fields(EfficiencyCase& c, V&& v) {
-  v("kind", c.kind); v("triangles", c.triangles); v("segments", c.segments); v("seed", c.seed);
-}
-
-// Step 8's spheres: n spread over a cube of side 100, radii from 0.25 to 1.
-struct SpreadSpheres {
-  int count = 2000;
-  int seed = 1;
-};
-template <class V> void fields(SpreadSpheres& s, V&& v) { v("count", s.count); v("seed", s.seed); }
 
 std::string describe(Where w);
 
@@ -132,21 +69,6 @@ ObbTree obb_tree(const Mesh& mesh, int seed);
 // Step 7: the pairs against the exact brute force over all triangle pairs, and the counts
 // against the header's traversal (box tests, triangle tests) run on the same trees.
 Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got, Rules rules = Rules::random);
-
-// Inputs.
-rc::Gen<TreeQuery> tree_query();
-rc::Gen<TreeQuery> exact_tree_query();
-rc::Gen<Mesh> bsp_mesh();
-rc::Gen<PointQuery> point_query();
-rc::Gen<PointQuery> exact_point_query();
-rc::Gen<PointQuery> eye_query();
-rc::Gen<PointQuery> exact_eye_query();
-rc::Gen<SphereSet> sphere_set();
-rc::Gen<SphereSet> exact_sphere_set();
-rc::Gen<SweepCase> sweep_case();
-SweepCase moving_spheres(const MovingSpheres& m);
-rc::Gen<SweepCase> exact_sweep_case();
-rc::Gen<BvhQuery> bvh_query();
 
 }  // namespace judge
 }  // namespace labkit::lab06

@@ -3,9 +3,8 @@
 // its presets read this table (common/harness/query.h); a query is added or renamed here.
 #pragma once
 
-#include "06_spatial_trees.judge.h"
-
 #include "common/harness/query.h"
+#include "common/inputs/06_spatial_trees.h"
 
 #define LABKIT_LAB06_QUERIES(X) \
   X(build_kd_tree, "build_kd_tree", Mesh)                                 \

@@ -214,9 +214,9 @@ TEST_CASE(LABKIT_STEP(L06S2) ": random cases", "[lab06][step2][oracle]") {
   const auto query = [](auto&& judge_one) {
     return [judge_one](const TreeQuery& in) { return judge_one(in, judge::checker_tree(in.mesh, in.tree), Rules::random); };
   };
-  check::random_cases(query::first_hit, judge::tree_query(), query(judge_first));
-  check::random_cases(query::any_hit, judge::tree_query(), query(judge_any));
-  check::random_cases(query::all_hits, judge::tree_query(), query(judge_all));
+  check::random_cases(query::first_hit, gen::tree_query(), query(judge_first));
+  check::random_cases(query::any_hit, gen::tree_query(), query(judge_any));
+  check::random_cases(query::all_hits, gen::tree_query(), query(judge_all));
 }
 
 // ---- Step 3 --------------------------------------------------------------------------------------
@@ -285,8 +285,8 @@ TEST_CASE(LABKIT_STEP(L06S3) ": worked examples", "[lab06][step3]") {
 }
 
 TEST_CASE(LABKIT_STEP(L06S3) ": random cases", "[lab06][step3][oracle]") {
-  check::random_cases(query::build_bsp, judge::bsp_mesh(), [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
-  check::random_cases(query::classify, judge::point_query(), [](const PointQuery& in) {
+  check::random_cases(query::build_bsp, gen::bsp_mesh(), [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
+  check::random_cases(query::classify, gen::point_query(), [](const PointQuery& in) {
     return judge::classify(in, classify(build_bsp(in.mesh), in.point));
   });
 }
@@ -345,7 +345,7 @@ TEST_CASE(LABKIT_STEP(L06S4) ": worked examples", "[lab06][step4]") {
 }
 
 TEST_CASE(LABKIT_STEP(L06S4) ": random cases", "[lab06][step4][oracle]") {
-  check::random_cases(query::back_to_front, judge::eye_query(), [](const PointQuery& in) {
+  check::random_cases(query::back_to_front, gen::eye_query(), [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point));
   });
@@ -381,7 +381,7 @@ TEST_CASE(LABKIT_STEP(L06S5) ": worked examples", "[lab06][step5]") {
 }
 
 TEST_CASE(LABKIT_STEP(L06S5) ": random cases", "[lab06][step5][oracle]") {
-  check::random_cases(query::overlapping_pairs, judge::sphere_set(), [](const SphereSet& in) {
+  check::random_cases(query::overlapping_pairs, gen::sphere_set_case(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres));
   });
 }
@@ -429,11 +429,11 @@ TEST_CASE(LABKIT_STEP(L06S6) ": worked examples", "[lab06][step6]") {
                  expect_frames({{{{1, 2}}, 2, 0}, {{{1, 2}}, 3, 1}}));
   check::example(query::sweep_frames, "no spheres, twice", SweepCase{{{}, {}}}, expect_frames({{{}, 0, 0}, {{}, 0, 0}}));
   check::example(query::sweep_frames_moving, "1,000 spheres, 10 frames of small moves along x", MovingSpheres{1000, 10, 6},
-                 [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(judge::moving_spheres(m)); });
+                 [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(gen::moving_spheres(m)); });
 }
 
 TEST_CASE(LABKIT_STEP(L06S6) ": random cases", "[lab06][step6][oracle]") {
-  check::random_cases(query::sweep_frames, judge::sweep_case(),
+  check::random_cases(query::sweep_frames, gen::sweep_case(),
                       [](const SweepCase& in) { return judge::sweep_frames(in, run_sweep(in.frames)); });
 }
 
@@ -486,7 +486,7 @@ TEST_CASE(LABKIT_STEP(L06S7) ": OBB trees, worked examples", "[lab06][step7]") {
 }
 
 TEST_CASE(LABKIT_STEP(L06S7) ": OBB trees, random cases", "[lab06][step7][oracle]") {
-  check::random_cases(query::colliding_triangles, judge::bvh_query(), [](const BvhQuery& in) { return judge_bvh(in); });
+  check::random_cases(query::colliding_triangles, gen::bvh_query(), [](const BvhQuery& in) { return judge_bvh(in); });
 }
 
 // ---- Step 8 --------------------------------------------------------------------------------------
@@ -702,20 +702,20 @@ TEST_CASE(LABKIT_STEP(L06S9) ": BSP trees and spheres on exact input", "[lab06][
 }
 
 TEST_CASE(LABKIT_STEP(L06S9) ": random exact degenerate cases", "[lab06][step9][oracle]") {
-  check::random_cases(query::robust_segment_queries, judge::exact_tree_query(),
+  check::random_cases(query::robust_segment_queries, gen::exact_tree_query(),
                       [](const TreeQuery& in) { return all_three(in, Rules::exact); });
   check::random_cases(query::robust_build_kd_tree, gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
-  check::random_cases(query::robust_classify, judge::exact_point_query(), [](const PointQuery& in) {
+  check::random_cases(query::robust_classify, gen::exact_point_query(), [](const PointQuery& in) {
     return judge::classify(in, classify(build_bsp(in.mesh), in.point), Rules::exact);
   });
-  check::random_cases(query::robust_back_to_front, judge::exact_eye_query(), [](const PointQuery& in) {
+  check::random_cases(query::robust_back_to_front, gen::exact_eye_query(), [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
   });
-  check::random_cases(query::robust_overlapping_pairs, judge::exact_sphere_set(), [](const SphereSet& in) {
+  check::random_cases(query::robust_overlapping_pairs, gen::exact_sphere_set_case(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
   });
-  check::random_cases(query::robust_sweep_frames, judge::exact_sweep_case(), [](const SweepCase& in) {
+  check::random_cases(query::robust_sweep_frames, gen::exact_sweep_case(), [](const SweepCase& in) {
     return judge::sweep_frames(in, run_sweep(in.frames), Rules::exact);
   });
 }

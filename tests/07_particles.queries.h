@@ -3,9 +3,8 @@
 // its presets read this table (common/harness/query.h); a query is added or renamed here.
 #pragma once
 
-#include "07_particles.judge.h"
-
 #include "common/harness/query.h"
+#include "common/inputs/07_particles.h"
 
 #define LABKIT_LAB07_QUERIES(X) \
   X(emit, "emit", EmitCase)                              \

@@ -269,9 +269,9 @@ TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
 }
 
 TEST_CASE(LABKIT_STEP(L07S1) ": random cases", "[lab07][step1][oracle]") {
-  check::random_cases(query::emit, judge::emit_case(), run_emit);
-  check::random_cases(query::births, judge::births_case(), run_births);
-  check::random_cases(query::age, judge::age_case(), run_age);
+  check::random_cases(query::emit, gen::emit_case(), run_emit);
+  check::random_cases(query::births, gen::births_case(), run_births);
+  check::random_cases(query::age, gen::age_case(), run_age);
 }
 
 // ---- Step 2 ----------------------------------------------------------------------------
@@ -337,7 +337,7 @@ TEST_CASE(LABKIT_STEP(L07S2) ": worked examples", "[lab07][step2]") {
 }
 
 TEST_CASE(LABKIT_STEP(L07S2) ": random cases", "[lab07][step2][oracle]") {
-  check::random_cases(query::integrators, judge::motion_case(), run_motion);
+  check::random_cases(query::integrators, gen::motion_case(), run_motion);
 }
 
 // ---- Step 3 ----------------------------------------------------------------------------
@@ -396,8 +396,8 @@ TEST_CASE(LABKIT_STEP(L07S3) ": worked examples", "[lab07][step3]") {
 }
 
 TEST_CASE(LABKIT_STEP(L07S3) ": random cases", "[lab07][step3][oracle]") {
-  check::random_cases(query::aim, judge::launch_case(), run_aim);
-  check::random_cases(query::exact_aim, judge::exact_launch_case(), run_exact_aim);
+  check::random_cases(query::aim, gen::launch_case(), run_aim);
+  check::random_cases(query::exact_aim, gen::exact_launch_case(), run_exact_aim);
 }
 
 // ---- Step 4 ----------------------------------------------------------------------------
@@ -504,14 +504,14 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
 }
 
 TEST_CASE(LABKIT_STEP(L07S4) ": random cases", "[lab07][step4][oracle]") {
-  check::random_cases(query::hit_plane, judge::plane_case(), [](const SegmentScene& in) {
+  check::random_cases(query::hit_plane, gen::plane_case(), [](const SegmentScene& in) {
     return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]));
   });
-  check::random_cases(query::hit_triangle, judge::sheet_case(), [](const SegmentTrianglePair& in) {
+  check::random_cases(query::hit_triangle, gen::sheet_case(), [](const SegmentTrianglePair& in) {
     return judge::hit_triangle(in, hit_triangle(in.segment, in.triangle));
   });
-  check::random_cases(query::first_hit, judge::segment_scene(), run_first_hit);
-  check::random_cases(query::exact_first_hit, judge::exact_segment_scene(), run_exact_first_hit);
+  check::random_cases(query::first_hit, gen::segment_scene(), run_first_hit);
+  check::random_cases(query::exact_first_hit, gen::exact_segment_scene(), run_exact_first_hit);
 }
 
 // ---- Step 5 ----------------------------------------------------------------------------
@@ -557,7 +557,7 @@ TEST_CASE(LABKIT_STEP(L07S5) ": worked examples", "[lab07][step5]") {
 }
 
 TEST_CASE(LABKIT_STEP(L07S5) ": random cases", "[lab07][step5][oracle]") {
-  check::random_cases(query::impulse, judge::impulse_case(), run_impulse);
+  check::random_cases(query::impulse, gen::impulse_case(), run_impulse);
 }
 
 // ---- Step 6 ----------------------------------------------------------------------------
@@ -624,7 +624,7 @@ TEST_CASE(LABKIT_STEP(L07S6) ": worked examples", "[lab07][step6]") {
 }
 
 TEST_CASE(LABKIT_STEP(L07S6) ": random cases", "[lab07][step6][oracle]") {
-  check::random_cases(query::collide, judge::collide_case(), run_collide);
+  check::random_cases(query::collide, gen::collide_case(), run_collide);
 }
 
 // ---- Step 7 ----------------------------------------------------------------------------
@@ -730,11 +730,11 @@ TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][st
 }
 
 TEST_CASE(LABKIT_STEP(L07S7) ": invariants, random cases", "[lab07][step7][oracle]") {
-  check::random_cases(query::settle, judge::settle_case(), [](const SettleCase& in) {
+  check::random_cases(query::settle, gen::settle_case(), [](const SettleCase& in) {
     return judge::settle(in, settle(in.x, in.scene, in.last));
   });
-  check::random_cases(query::invariants, judge::collide_case(false), run_invariants);
-  check::random_cases(query::system, judge::system_case(), run_system);
+  check::random_cases(query::invariants, gen::collide_case(false), run_invariants);
+  check::random_cases(query::system, gen::system_case(), run_system);
 }
 
 // ---- Preconditions (the header's "Preconditions"): the reference only ------------------

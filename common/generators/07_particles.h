@@ -11,8 +11,8 @@
 // in a plane (a tie); every scale from 2^-20 to 2^20, and far from the origin.
 #pragma once
 
-#include "common/geometry.h"
-#include "common/harness/codec.h"
+#include "common/generators/generators.h"
+#include "common/inputs/07_particles.h"
 
 #include <rapidcheck.h>
 
@@ -45,5 +45,24 @@ rc::Gen<StepSurfaces> step_surfaces();
 // hit exactly; and steps starting exactly on a triangle's plane. No case here depends on
 // a triangle's edges, which the watertight test decides in floating point.
 rc::Gen<StepSurfaces> exact_step_surfaces();
+
+// ---- Each query's cases (common/generators/07_particles.cases.cpp) ----------------------
+// Drawn over the header's whole input domain, and kept out of the judge's ambiguity band
+// (lab07::judge::plane_in_doubt and the like) where a family is meant to be decisive.
+
+rc::Gen<lab07::EmitCase> emit_case();
+rc::Gen<lab07::BirthsCase> births_case();
+rc::Gen<lab07::AgeCase> age_case();
+rc::Gen<lab07::MotionCase> motion_case();
+rc::Gen<lab07::LaunchCase> launch_case();
+rc::Gen<lab07::LaunchCase> exact_launch_case();
+rc::Gen<lab07::SegmentScene> plane_case();
+rc::Gen<SegmentTrianglePair> sheet_case();  // lab 02's families, needles, just outside the band
+rc::Gen<lab07::SegmentScene> segment_scene();
+rc::Gen<lab07::SegmentScene> exact_segment_scene();
+rc::Gen<lab07::ImpulseCase> impulse_case();
+rc::Gen<lab07::CollideCase> collide_case(bool decided = true);  // step 7: false, exact degenerate steps kept
+rc::Gen<lab07::SettleCase> settle_case();
+rc::Gen<lab07::SystemCase> system_case();
 
 }  // namespace labkit::gen

@@ -12,32 +12,9 @@
 
 #include "common/geometry.h"
 #include "common/harness/codec.h"
+#include "common/inputs/inputs.h"
 
 #include <rapidcheck.h>
-
-namespace labkit {
-
-struct SegmentTrianglePair {
-  Segment segment;
-  Triangle triangle;
-};
-template <class Visit>
-void fields(SegmentTrianglePair& p, Visit&& visit) {
-  visit("segment", p.segment);
-  visit("triangle", p.triangle);
-}
-
-struct SegmentMeshPair {
-  Segment segment;
-  Mesh mesh;
-};
-template <class Visit>
-void fields(SegmentMeshPair& p, Visit&& visit) {
-  visit("segment", p.segment);
-  visit("mesh", p.mesh);
-}
-
-}  // namespace labkit
 
 namespace labkit::gen {
 

@@ -3,8 +3,8 @@
 // around any of them is found the same way.
 #pragma once
 
-#include "common/generators/generators.h"
 #include "common/harness/check.h"
+#include "common/inputs/inputs.h"
 #include "common/oracle/segment_triangle.h"
 
 namespace labkit::check {

@@ -319,7 +319,7 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
     mesh_ = in.a, mesh_b_ = in.b, tree_seed_ = in.tree_a, tree_seed_b_ = in.tree_b;
   } else if (q == "sweep_frames" || q == "sweep_frames.moving") {
     mode_ = Mode::frames;
-    frames_ = q == "sweep_frames" ? input_from_token<SweepCase>(token).frames : judge::moving_spheres(input_from_token<MovingSpheres>(token)).frames;
+    frames_ = q == "sweep_frames" ? input_from_token<SweepCase>(token).frames : gen::moving_spheres(input_from_token<MovingSpheres>(token)).frames;
     if (frames_.empty()) frames_.push_back({});
     spheres_ = frames_.back();
   } else {

@@ -1,0 +1,22 @@
+// Lab 02's own random inputs, beside the shared segment-triangle and mesh families
+// (generators.h, needles.h): points in a triangle's plane, meshes moving rigidly, and two
+// meshes translating toward a contact.
+#pragma once
+
+#include "common/generators/needles.h"
+#include "common/inputs/02_segment_triangle.h"
+
+namespace labkit::gen {
+
+// Inputs for the point-in-triangle steps: points exactly in the triangle's plane, many
+// of them exactly on an edge or a vertex, or a tiny step inside or outside one.
+rc::Gen<lab02::PointTriangle> point_triangle();
+// The same on integer coordinates: exact input for the robustness step.
+rc::Gen<lab02::PointTriangle> exact_point_triangle();
+rc::Gen<lab02::MovingMesh> moving_mesh();
+// Two small meshes (tetrahedra, tents, single triangles) apart at t = 0, aimed so that a
+// chosen vertex-face or edge-edge pair meets at a chosen time, or passing just beside
+// it, or stopping short: decisive, at every scale of the header.
+rc::Gen<lab02::MovingMeshes> moving_meshes();
+
+}  // namespace labkit::gen

@@ -1,0 +1,141 @@
+#include "common/generators/06_spatial_trees.h"
+
+#include "common/generators/generators.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace labkit::gen {
+
+lab06::SweepCase moving_spheres(const lab06::MovingSpheres& m) {
+  lab06::SweepCase c{{spread_spheres(m.count, 100, 0.25, 1, std::uint64_t(m.seed))}};
+  for (int k = 1; k < m.frames; ++k) {
+    std::vector<Sphere> next = c.frames.back();
+    for (std::size_t i = 0; i < next.size(); ++i) next[i].center.x() += 0.05 * std::sin(double(i * 7 + std::size_t(k)));
+    c.frames.push_back(next);
+  }
+  return c;
+}
+
+rc::Gen<lab06::TreeQuery> tree_query() {
+  return rc::gen::exec([] {
+    lab06::TreeQuery q;
+    q.mesh = *any_mesh();  // lab 02's soups, terrains and octahedra among others
+    q.segment = *segment_near(q.mesh);
+    q.tree = *rc::gen::inRange(0, 1000000);
+    return q;
+  });
+}
+
+rc::Gen<lab06::TreeQuery> exact_tree_query() {
+  return rc::gen::exec([] {
+    lab06::TreeQuery q;
+    q.mesh = *exact_mesh();
+    q.segment = *exact_segment_near(q.mesh);
+    q.tree = *rc::gen::inRange(0, 1000000);
+    return q;
+  });
+}
+
+rc::Gen<Mesh> bsp_mesh() { return any_mesh(); }
+
+rc::Gen<lab06::PointQuery> point_query() {
+  return rc::gen::exec([] {
+    const Mesh m = *closed_mesh();
+    return lab06::PointQuery{m, *point_near(m, false)};
+  });
+}
+
+rc::Gen<lab06::PointQuery> exact_point_query() {
+  return rc::gen::exec([] {
+    const Mesh m = *exact_closed_mesh();
+    return lab06::PointQuery{m, *point_near(m, true)};
+  });
+}
+
+rc::Gen<lab06::PointQuery> eye_query() {
+  return rc::gen::exec([] {
+    const Mesh m = *any_mesh();
+    return lab06::PointQuery{m, *point_near(m, false)};
+  });
+}
+
+rc::Gen<lab06::PointQuery> exact_eye_query() {
+  return rc::gen::exec([] {
+    const Mesh m = *rc::gen::oneOf(exact_mesh(), exact_closed_mesh());
+    return lab06::PointQuery{m, *point_near(m, true)};
+  });
+}
+
+rc::Gen<lab06::SphereSet> sphere_set_case() {
+  return rc::gen::map(sphere_set(), [](std::vector<Sphere> s) { return lab06::SphereSet{std::move(s)}; });
+}
+rc::Gen<lab06::SphereSet> exact_sphere_set_case() {
+  return rc::gen::map(exact_sphere_set(), [](std::vector<Sphere> s) { return lab06::SphereSet{std::move(s)}; });
+}
+
+// Step 6: a set of spheres (step 5's kinds), then frames in which every centre moves a
+// little: up to a few hundredths of the set's scale, so the order of ends changes in a
+// few places per frame. Radii stay.
+rc::Gen<lab06::SweepCase> sweep_case() {
+  return rc::gen::exec([] {
+    lab06::SweepCase c;
+    c.frames.push_back(*sphere_set());
+    double s = 0;
+    for (const Sphere& b : c.frames[0]) s = std::max({s, b.center.cwiseAbs().maxCoeff(), b.radius});
+    if (s == 0) s = 1;
+    const int frames = *rc::gen::inRange(2, 7);
+    for (int k = 1; k < frames; ++k) {
+      std::vector<Sphere> next = c.frames.back();
+      for (Sphere& b : next)
+        for (int i = 0; i < 3; ++i) b.center[i] += s * *rc::gen::inRange(-1024, 1024) / 32768.0;
+      c.frames.push_back(next);
+    }
+    return c;
+  });
+}
+
+// Exact: step 5's exact spheres (touching chains on integers), moved by whole units
+// of their scale along x and y, so ends meet and pass exactly, and balls come to touch.
+rc::Gen<lab06::SweepCase> exact_sweep_case() {
+  return rc::gen::exec([] {
+    lab06::SweepCase c;
+    c.frames.push_back(*exact_sphere_set());
+    double unit = 0;
+    for (const Sphere& b : c.frames[0]) unit = std::max(unit, b.radius);
+    if (unit == 0) unit = 1;
+    const int frames = *rc::gen::inRange(2, 6);
+    for (int k = 1; k < frames; ++k) {
+      std::vector<Sphere> next = c.frames.back();
+      for (Sphere& b : next) b.center.x() += unit * *rc::gen::inRange(-1, 2), b.center.y() += unit * *rc::gen::inRange(-1, 2);
+      c.frames.push_back(next);
+    }
+    return c;
+  });
+}
+
+// Step 7: two small meshes (soups, spheres, terrains) placed so that they overlap in part,
+// the checker's trees over them, every pair or one.
+rc::Gen<lab06::BvhQuery> bvh_query() {
+  return rc::gen::exec([] {
+    lab06::BvhQuery q;
+    const auto small = [] {
+      const int kind = *rc::gen::inRange(0, 3);
+      const int n = *rc::gen::inRange(1, 40);
+      const std::uint64_t seed = std::uint64_t(*rc::gen::inRange(1, 1 << 20));
+      if (kind == 0) return soup_mesh(n, seed);
+      if (kind == 1) return terrain_mesh(std::max(n, 2), seed);
+      return sphere_mesh(std::max(n, 8), Vec3(0.5, 0.5, 0.5), 0.4);
+    };
+    q.a = small(), q.b = small();
+    const double scale = std::pow(2.0, *rc::gen::inRange(-20, 21));
+    const Vec3 shift(*rc::gen::inRange(-8, 9) / 16.0, *rc::gen::inRange(-8, 9) / 16.0, *rc::gen::inRange(-8, 9) / 16.0);
+    for (Vec3& v : q.a.vertices) v *= scale;
+    for (Vec3& v : q.b.vertices) v = (v + shift) * scale;
+    q.tree_a = *rc::gen::inRange(0, 100), q.tree_b = *rc::gen::inRange(0, 100);
+    q.every = *rc::gen::inRange(0, 4) != 0;
+    return q;
+  });
+}
+
+}  // namespace labkit::gen
