@@ -268,12 +268,12 @@ TEST_CASE("L05S3 sphere, capsule and lozenge pairs: worked examples", "[lab05][s
 }
 
 TEST_CASE("L05S3 sphere, capsule and lozenge pairs: random cases", "[lab05][step3][oracle]") {
-  check::random_cases("test_sphere_sphere", judge::sphere_pair(), run_test<SpherePair>);
-  check::random_cases("test_sphere_capsule", judge::sphere_capsule(), run_test<SphereCapsule>);
-  check::random_cases("test_sphere_lozenge", judge::sphere_lozenge(), run_test<SphereLozenge>);
-  check::random_cases("test_capsule_capsule", judge::capsule_pair(), run_test<CapsulePair>);
-  check::random_cases("test_capsule_lozenge", judge::capsule_lozenge(), run_test<CapsuleLozenge>);
-  check::random_cases("test_lozenge_lozenge", judge::lozenge_pair(), run_test<LozengePair>);
+  check::random_cases("test_sphere_sphere", gen::sphere_pair(), run_test<SpherePair>);
+  check::random_cases("test_sphere_capsule", gen::sphere_capsule(), run_test<SphereCapsule>);
+  check::random_cases("test_sphere_lozenge", gen::sphere_lozenge(), run_test<SphereLozenge>);
+  check::random_cases("test_capsule_capsule", gen::capsule_pair(), run_test<CapsulePair>);
+  check::random_cases("test_capsule_lozenge", gen::capsule_lozenge(), run_test<CapsuleLozenge>);
+  check::random_cases("test_lozenge_lozenge", gen::lozenge_pair(), run_test<LozengePair>);
 }
 
 // ---- Step 4 ------------------------------------------------------------------------
@@ -477,10 +477,10 @@ TEST_CASE("L05S8 robustness: parallel, touching, grazing: worked examples", "[la
 TEST_CASE("L05S8 robustness: random exact degenerate cases", "[lab05][step8][oracle]") {
   check::random_cases("robust.segment_segment", gen::segment_pair(true), run_segment_segment);
   check::random_cases("robust.segment_rectangle", gen::segment_rectangle(true), run_segment_rectangle);
-  check::random_cases("robust.test_sphere_capsule", judge::sphere_capsule(true), run_exact_test<SphereCapsule>);
-  check::random_cases("robust.test_capsule_capsule", judge::capsule_pair(true), run_exact_test<CapsulePair>);
-  check::random_cases("robust.test_capsule_lozenge", judge::capsule_lozenge(true), run_exact_test<CapsuleLozenge>);
-  check::random_cases("robust.test_lozenge_lozenge", judge::lozenge_pair(true), run_exact_test<LozengePair>);
+  check::random_cases("robust.test_sphere_capsule", gen::sphere_capsule(true), run_exact_test<SphereCapsule>);
+  check::random_cases("robust.test_capsule_capsule", gen::capsule_pair(true), run_exact_test<CapsulePair>);
+  check::random_cases("robust.test_capsule_lozenge", gen::capsule_lozenge(true), run_exact_test<CapsuleLozenge>);
+  check::random_cases("robust.test_lozenge_lozenge", gen::lozenge_pair(true), run_exact_test<LozengePair>);
   check::random_cases("robust.sweep_sphere_plane", gen::sphere_plane_motion(true),
                       [](const SP& in) { return run_sweep(in, Rules::exact); });
   check::random_cases("robust.sweep_sphere_sphere", gen::sphere_sphere_motion(true),
