@@ -8,6 +8,7 @@
 
 #include "common/generators/01_frustum_split.h"
 #include "common/harness/check.h"
+#include "common/inputs/01_frustum_split.h"
 
 #include <array>
 #include <vector>
@@ -33,8 +34,6 @@ Outcome frustum_from_camera(const Camera& in, const Frustum& got);
 Outcome frustum_from_matrix(const Mat4& in, const Frustum& got);
 Outcome clip_triangle(const TriangleFrustum& in, const std::vector<Triangle>& got, Rules rules = Rules::random);
 Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules = Rules::random);
-
-rc::Gen<Camera> camera();
 
 }  // namespace judge
 }  // namespace labkit::lab01

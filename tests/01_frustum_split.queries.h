@@ -4,7 +4,7 @@
 #pragma once
 
 #include "common/harness/query.h"
-#include "01_frustum_split.judge.h"
+#include "common/inputs/01_frustum_split.h"
 
 #define LABKIT_LAB01_QUERIES(X) \
   X(signed_distance, "signed_distance", TrianglePlane)               \

@@ -303,7 +303,7 @@ TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
 }
 
 TEST_CASE(LABKIT_STEP(L01S3) ": random cases", "[lab01][step3][oracle]") {
-  check::random_cases(query::frustum_from_camera, judge::camera(), [](const Camera& in) {
+  check::random_cases(query::frustum_from_camera, gen::lab_camera(), [](const Camera& in) {
     return judge::frustum_from_camera(in, frustum_from_camera(in));
   });
   check::random_cases(query::frustum_from_matrix, gen::view_projection_matrix(), [](const Mat4& in) {

@@ -8,6 +8,7 @@
 
 #include "common/generators/03_separating_axes.h"
 #include "common/harness/check.h"
+#include "common/inputs/03_separating_axes.h"
 
 #include <algorithm>
 #include <array>
@@ -19,12 +20,6 @@ namespace judge {
 using check::Outcome;
 
 using check::Rules;  // random cases, or a robustness step's exact input
-
-// tol = 1e-9 S, S the input's largest position coordinate (the header's tolerances).
-template <class Input>
-double tolerance_of(const Input& in) {
-  return 1e-9 * std::max(scale_of(in), 1e-300);
-}
 
 Outcome project_box(const BoxOnAxis& in, const Projection& got);
 Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules = Rules::random);

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "common/harness/query.h"
-#include "03_separating_axes.judge.h"
+#include "common/inputs/03_separating_axes.h"
 
 #define LABKIT_LAB03_QUERIES(X) \
   X(project_box, "project_box", BoxOnAxis)                            \

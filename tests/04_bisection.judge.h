@@ -14,6 +14,7 @@
 
 #include "common/generators/04_bisection.h"
 #include "common/harness/check.h"
+#include "common/inputs/04_bisection.h"
 
 namespace labkit::lab04 {
 

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "common/harness/query.h"
-#include "04_bisection.judge.h"
+#include "common/inputs/04_bisection.h"
 
 #define LABKIT_LAB04_QUERIES(X) \
   X(placed, "placed", Sphere)                                              \

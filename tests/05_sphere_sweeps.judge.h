@@ -7,26 +7,13 @@
 
 #include "common/generators/05_sphere_sweeps.h"
 #include "common/harness/check.h"
+#include "common/inputs/05_sphere_sweeps.h"
 
 #include <string>
 
 namespace labkit::lab05 {
 
 std::string describe(SweepStatus s);
-
-// Step 3's inputs: two sphere-swept volumes.
-struct SpherePair { Sphere a, b; };
-struct SphereCapsule { Sphere a; Capsule b; };
-struct SphereLozenge { Sphere a; Lozenge b; };
-struct CapsulePair { Capsule a, b; };
-struct CapsuleLozenge { Capsule a; Lozenge b; };
-struct LozengePair { Lozenge a, b; };
-template <class V> void fields(SpherePair& x, V&& v) { v("a", x.a); v("b", x.b); }
-template <class V> void fields(SphereCapsule& x, V&& v) { v("a", x.a); v("b", x.b); }
-template <class V> void fields(SphereLozenge& x, V&& v) { v("a", x.a); v("b", x.b); }
-template <class V> void fields(CapsulePair& x, V&& v) { v("a", x.a); v("b", x.b); }
-template <class V> void fields(CapsuleLozenge& x, V&& v) { v("a", x.a); v("b", x.b); }
-template <class V> void fields(LozengePair& x, V&& v) { v("a", x.a); v("b", x.b); }
 
 namespace judge {
 
@@ -62,17 +49,6 @@ Outcome sweep_sphere_plane(const SpherePlaneMotion& in, const Sweep& got, Rules 
 Outcome sweep_sphere_sphere(const SphereSphereMotion& in, const Sweep& got, Rules rules = Rules::random);
 Outcome sweep_sphere_capsule(const SphereCapsuleMotion& in, const Sweep& got, Rules rules = Rules::random);
 Outcome sweep_box_plane(const BoxPlaneMotion& in, const Sweep& got, Rules rules = Rules::random);
-
-// Step 3's inputs: the cores of the distance steps with radii chosen around their exact
-// distance (exactly touching, a hair inside or outside at every scale, or anything);
-// `exact`: small integers, with exactly touching pairs built from cores that lie in two
-// parallel planes h apart over a common point.
-rc::Gen<SpherePair> sphere_pair(bool exact = false);
-rc::Gen<SphereCapsule> sphere_capsule(bool exact = false);
-rc::Gen<SphereLozenge> sphere_lozenge(bool exact = false);
-rc::Gen<CapsulePair> capsule_pair(bool exact = false);
-rc::Gen<CapsuleLozenge> capsule_lozenge(bool exact = false);
-rc::Gen<LozengePair> lozenge_pair(bool exact = false);
 
 }  // namespace judge
 }  // namespace labkit::lab05

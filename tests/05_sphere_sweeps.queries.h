@@ -4,7 +4,7 @@
 #pragma once
 
 #include "common/harness/query.h"
-#include "05_sphere_sweeps.judge.h"
+#include "common/inputs/05_sphere_sweeps.h"
 
 #define LABKIT_LAB05_QUERIES(X) \
   X(point_segment, "point_segment", PointSegmentPair)                                  \

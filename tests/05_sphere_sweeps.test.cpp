@@ -269,12 +269,12 @@ TEST_CASE(LABKIT_STEP(L05S3) ": worked examples", "[lab05][step3]") {
 }
 
 TEST_CASE(LABKIT_STEP(L05S3) ": random cases", "[lab05][step3][oracle]") {
-  check::random_cases(query::test_sphere_sphere, judge::sphere_pair(), run_test<SpherePair>);
-  check::random_cases(query::test_sphere_capsule, judge::sphere_capsule(), run_test<SphereCapsule>);
-  check::random_cases(query::test_sphere_lozenge, judge::sphere_lozenge(), run_test<SphereLozenge>);
-  check::random_cases(query::test_capsule_capsule, judge::capsule_pair(), run_test<CapsulePair>);
-  check::random_cases(query::test_capsule_lozenge, judge::capsule_lozenge(), run_test<CapsuleLozenge>);
-  check::random_cases(query::test_lozenge_lozenge, judge::lozenge_pair(), run_test<LozengePair>);
+  check::random_cases(query::test_sphere_sphere, gen::sphere_pair(), run_test<SpherePair>);
+  check::random_cases(query::test_sphere_capsule, gen::sphere_capsule(), run_test<SphereCapsule>);
+  check::random_cases(query::test_sphere_lozenge, gen::sphere_lozenge(), run_test<SphereLozenge>);
+  check::random_cases(query::test_capsule_capsule, gen::capsule_pair(), run_test<CapsulePair>);
+  check::random_cases(query::test_capsule_lozenge, gen::capsule_lozenge(), run_test<CapsuleLozenge>);
+  check::random_cases(query::test_lozenge_lozenge, gen::lozenge_pair(), run_test<LozengePair>);
 }
 
 // ---- Step 4 ------------------------------------------------------------------------
@@ -478,10 +478,10 @@ TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
 TEST_CASE(LABKIT_STEP(L05S8) ": random exact degenerate cases", "[lab05][step8][oracle]") {
   check::random_cases(query::robust_segment_segment, gen::segment_pair(true), run_segment_segment);
   check::random_cases(query::robust_segment_rectangle, gen::segment_rectangle(true), run_segment_rectangle);
-  check::random_cases(query::robust_test_sphere_capsule, judge::sphere_capsule(true), run_exact_test<SphereCapsule>);
-  check::random_cases(query::robust_test_capsule_capsule, judge::capsule_pair(true), run_exact_test<CapsulePair>);
-  check::random_cases(query::robust_test_capsule_lozenge, judge::capsule_lozenge(true), run_exact_test<CapsuleLozenge>);
-  check::random_cases(query::robust_test_lozenge_lozenge, judge::lozenge_pair(true), run_exact_test<LozengePair>);
+  check::random_cases(query::robust_test_sphere_capsule, gen::sphere_capsule(true), run_exact_test<SphereCapsule>);
+  check::random_cases(query::robust_test_capsule_capsule, gen::capsule_pair(true), run_exact_test<CapsulePair>);
+  check::random_cases(query::robust_test_capsule_lozenge, gen::capsule_lozenge(true), run_exact_test<CapsuleLozenge>);
+  check::random_cases(query::robust_test_lozenge_lozenge, gen::lozenge_pair(true), run_exact_test<LozengePair>);
   check::random_cases(query::robust_sweep_sphere_plane, gen::sphere_plane_motion(true),
                       [](const SP& in) { return run_sweep(in, Rules::exact); });
   check::random_cases(query::robust_sweep_sphere_sphere, gen::sphere_sphere_motion(true),

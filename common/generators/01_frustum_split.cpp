@@ -596,6 +596,12 @@ rc::Gen<CameraParameters> camera() {
   });
 }
 
+rc::Gen<lab01::Camera> lab_camera() {
+  return rc::gen::map(camera(), [](const CameraParameters& p) {
+    return lab01::Camera{p.eye, p.forward, p.up, p.fov_y, p.aspect, p.near, p.far};
+  });
+}
+
 rc::Gen<Mat4> view_projection_matrix() {
   return rc::gen::exec([] {
     const CameraParameters c = *camera();

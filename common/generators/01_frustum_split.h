@@ -11,8 +11,8 @@
 // the ends of lab 01's domain (2^-100 to 2^100), and far from the origin.
 #pragma once
 
-#include "common/geometry.h"
 #include "common/harness/codec.h"
+#include "common/inputs/01_frustum_split.h"
 
 #include <rapidcheck.h>
 
@@ -20,61 +20,6 @@
 #include <vector>
 
 namespace labkit {
-
-struct TrianglePlane {
-  Triangle triangle;
-  Plane plane;
-};
-template <class Visit>
-void fields(TrianglePlane& p, Visit&& visit) {
-  visit("triangle", p.triangle);
-  visit("plane", p.plane);
-}
-
-struct TriangleFrustum {
-  Triangle triangle;
-  Frustum frustum;
-};
-template <class Visit>
-void fields(TriangleFrustum& p, Visit&& visit) {
-  visit("triangle", p.triangle);
-  visit("frustum", p.frustum);
-}
-
-// A mesh with one colour per vertex, and a frustum to clip it to.
-struct MeshFrustum {
-  Mesh mesh;
-  std::vector<Vec3> colors;
-  Frustum frustum;
-};
-template <class Visit>
-void fields(MeshFrustum& p, Visit&& visit) {
-  visit("mesh", p.mesh);
-  visit("colors", p.colors);
-  visit("frustum", p.frustum);
-}
-
-// A perspective camera's parameters, as gluLookAt and gluPerspective take them (lab 01's
-// Camera holds the same).
-struct CameraParameters {
-  Vec3 eye = Vec3::Zero();
-  Vec3 forward = -Vec3::UnitZ();
-  Vec3 up = Vec3::UnitY();
-  double fov_y = 1.5707963267948966;
-  double aspect = 1.0;
-  double near = 1.0;
-  double far = 100.0;
-};
-template <class Visit>
-void fields(CameraParameters& c, Visit&& visit) {
-  visit("eye", c.eye);
-  visit("forward", c.forward);
-  visit("up", c.up);
-  visit("fov_y", c.fov_y);
-  visit("aspect", c.aspect);
-  visit("near", c.near);
-  visit("far", c.far);
-}
 
 // The eight corners of the camera's frustum, computed in long double and rounded:
 // corner i is eye + d (f +- tx r +- ty u), d = near or far, with f, r, u the unit
@@ -108,6 +53,8 @@ rc::Gen<TrianglePlane> exact_triangle_plane();
 // degrees, aspects from 1/2 to 2, far / near from 2 to 64, up at least 15 degrees away
 // from forward.
 rc::Gen<CameraParameters> camera();
+// The same cameras as the lab's Camera, for frustum_from_camera.
+rc::Gen<lab01::Camera> lab_camera();
 // View-projection matrices: perspective cameras, orthographic views, and either times a
 // positive power of two (the same clip volume).
 rc::Gen<Mat4> view_projection_matrix();

@@ -14,71 +14,12 @@
 // through a thin box within one step.
 #pragma once
 
-#include "common/geometry.h"
 #include "common/harness/codec.h"
+#include "common/inputs/03_separating_axes.h"
 
 #include <rapidcheck.h>
 
 namespace labkit {
-
-struct BoxOnAxis {
-  Box box;
-  Vec3 axis = Vec3::UnitX();
-};
-template <class Visit>
-void fields(BoxOnAxis& p, Visit&& visit) {
-  visit("box", p.box);
-  visit("axis", p.axis);
-}
-
-struct BoxPair {
-  Box a;
-  Box b;
-};
-template <class Visit>
-void fields(BoxPair& p, Visit&& visit) {
-  visit("a", p.a);
-  visit("b", p.b);
-}
-
-struct BoxPairOnAxis {
-  Box a;
-  Box b;
-  Vec3 axis = Vec3::UnitX();
-};
-template <class Visit>
-void fields(BoxPairOnAxis& p, Visit&& visit) {
-  visit("a", p.a);
-  visit("b", p.b);
-  visit("axis", p.axis);
-}
-
-struct TrianglePair {
-  Triangle t0;
-  Triangle t1;
-};
-template <class Visit>
-void fields(TrianglePair& p, Visit&& visit) {
-  visit("t0", p.t0);
-  visit("t1", p.t1);
-}
-
-// Box a moves with velocity_a, box b with velocity_b, for t in [0, duration].
-struct MovingBoxes {
-  Box a;
-  Vec3 velocity_a = Vec3::Zero();
-  Box b;
-  Vec3 velocity_b = Vec3::Zero();
-  double duration = 1.0;
-};
-template <class Visit>
-void fields(MovingBoxes& p, Visit&& visit) {
-  visit("a", p.a);
-  visit("velocity_a", p.velocity_a);
-  visit("b", p.b);
-  visit("velocity_b", p.velocity_b);
-  visit("duration", p.duration);
-}
 
 // The length scale of these inputs: the largest absolute coordinate of every position
 // (centers, half extents, triangle vertices; for moving boxes also the centers at the

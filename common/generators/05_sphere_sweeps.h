@@ -12,85 +12,11 @@
 // |x| <= 64 times a power of two and axis-aligned rectangles and boxes.
 #pragma once
 
-#include "common/geometry.h"
 #include "common/harness/codec.h"
+#include "common/inputs/05_sphere_sweeps.h"
+#include "common/oracle/sphere_sweeps.h"
 
 #include <rapidcheck.h>
-
-namespace labkit {
-
-struct PointSegmentPair {
-  Vec3 p = Vec3::Zero();
-  Segment segment;
-};
-template <class V> void fields(PointSegmentPair& x, V&& v) { v("p", x.p); v("segment", x.segment); }
-
-struct SegmentPair {
-  Segment first, second;
-};
-template <class V> void fields(SegmentPair& x, V&& v) { v("first", x.first); v("second", x.second); }
-
-struct PointRectanglePair {
-  Vec3 p = Vec3::Zero();
-  Rectangle rectangle;
-};
-template <class V> void fields(PointRectanglePair& x, V&& v) { v("p", x.p); v("rectangle", x.rectangle); }
-
-struct SegmentRectanglePair {
-  Segment segment;
-  Rectangle rectangle;
-};
-template <class V> void fields(SegmentRectanglePair& x, V&& v) { v("segment", x.segment); v("rectangle", x.rectangle); }
-
-struct RectanglePair {
-  Rectangle first, second;
-};
-template <class V> void fields(RectanglePair& x, V&& v) { v("first", x.first); v("second", x.second); }
-
-// Moving shapes: centre + t velocity for t in [0, duration].
-struct SpherePlaneMotion {
-  Sphere sphere;
-  Vec3 velocity = Vec3::Zero();
-  Plane plane;
-  double duration = 1.0;
-};
-template <class V> void fields(SpherePlaneMotion& x, V&& v) {
-  v("sphere", x.sphere); v("velocity", x.velocity); v("plane", x.plane); v("duration", x.duration);
-}
-
-struct SphereSphereMotion {
-  Sphere s0;
-  Vec3 v0 = Vec3::Zero();
-  Sphere s1;
-  Vec3 v1 = Vec3::Zero();
-  double duration = 1.0;
-};
-template <class V> void fields(SphereSphereMotion& x, V&& v) {
-  v("s0", x.s0); v("v0", x.v0); v("s1", x.s1); v("v1", x.v1); v("duration", x.duration);
-}
-
-// A sphere moving against a static capsule (step 6).
-struct SphereCapsuleMotion {
-  Sphere sphere;
-  Vec3 velocity = Vec3::Zero();
-  Capsule capsule;
-  double duration = 1.0;
-};
-template <class V> void fields(SphereCapsuleMotion& x, V&& v) {
-  v("sphere", x.sphere); v("velocity", x.velocity); v("capsule", x.capsule); v("duration", x.duration);
-}
-
-struct BoxPlaneMotion {
-  Box box;
-  Vec3 velocity = Vec3::Zero();
-  Plane plane;
-  double duration = 1.0;
-};
-template <class V> void fields(BoxPlaneMotion& x, V&& v) {
-  v("box", x.box); v("velocity", x.velocity); v("plane", x.plane); v("duration", x.duration);
-}
-
-}  // namespace labkit
 
 namespace labkit::gen {
 
@@ -124,4 +50,28 @@ rc::Gen<SphereSphereMotion> soon_spheres(bool exact = false);
 // (a dyadic split), or only approximately when `total` has no spare bits.
 rc::Gen<std::pair<double, double>> split_radius(double total);
 
+// Step 3's inputs: the cores of the distance steps with radii chosen around their exact
+// distance (exactly touching, a hair inside or outside at every scale, or anything);
+// `exact`: small integers, with exactly touching pairs built from cores that lie in two
+// parallel planes h apart over a common point.
+rc::Gen<lab05::SpherePair> sphere_pair(bool exact = false);
+rc::Gen<lab05::SphereCapsule> sphere_capsule(bool exact = false);
+rc::Gen<lab05::SphereLozenge> sphere_lozenge(bool exact = false);
+rc::Gen<lab05::CapsulePair> capsule_pair(bool exact = false);
+rc::Gen<lab05::CapsuleLozenge> capsule_lozenge(bool exact = false);
+rc::Gen<lab05::LozengePair> lozenge_pair(bool exact = false);
+
 }  // namespace labkit::gen
+
+namespace labkit::lab05 {
+
+// The exact distance between the cores of a pair (table 6.1's distance calculator): what
+// step 3's generators place the radii around, and what its judge compares r0 + r1 with.
+oracle::SquaredDistance core_distance(const SpherePair& p);
+oracle::SquaredDistance core_distance(const SphereCapsule& p);
+oracle::SquaredDistance core_distance(const SphereLozenge& p);
+oracle::SquaredDistance core_distance(const CapsulePair& p);
+oracle::SquaredDistance core_distance(const CapsuleLozenge& p);
+oracle::SquaredDistance core_distance(const LozengePair& p);
+
+}  // namespace labkit::lab05
