@@ -149,8 +149,7 @@ class FrustumSplitScene : public Scene {
 // ---- setup ---------------------------------------------------------------------------
 
 FrustumSplitScene::FrustumSplitScene(const Setup& setup) {
-  const Preset* preset = find_preset(kPresets, setup.preset);
-  if (preset) yaw = preset->yaw, pitch = preset->pitch, focus = preset->focus;
+  const Preset* preset = view_preset(kPresets, setup);
   look_ = camera_.eye + camera_.forward.normalized() * 0.5 * (camera_.near + camera_.far);
   if (setup.token.empty() && preset && !preset->token) {
     mode_ = preset->name == std::string("mesh") ? Mode::mesh : Mode::frustum;
@@ -200,8 +199,7 @@ void FrustumSplitScene::frame_inputs() {
     for (const Vec3& v : mode_ == Mode::mesh ? mesh_.mesh.vertices : std::vector<Vec3>{triangle_.v0, triangle_.v1, triangle_.v2})
       box.extend(v);
   }
-  center = box.center();
-  radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
+  frame(box);
 }
 
 Frustum FrustumSplitScene::exact_frustum() const {
@@ -227,8 +225,7 @@ void FrustumSplitScene::update() {
     Step one = judged("L01S1", "signed_distance, classify", distances_,
                       [&](const std::array<double, 3>& got) { return judge::signed_distance(split_, got); });
     const Step classes = judged("", "", sides_, [&](const std::array<Side, 3>& got) { return judge::classify(split_, got); });
-    one.verdict = worse(one.verdict, classes.verdict);
-    if (one.note.empty()) one.note = classes.note;
+    join(one, classes);
     for (int i = 0; i < 3; ++i) {
       const int s = oracle::side(plane, t[i]);
       one.rows.push_back({"v" + std::to_string(i),
@@ -312,9 +309,7 @@ void FrustumSplitScene::draw_exact(Renderer& r, const Triangle& t, const std::ve
 
 void FrustumSplitScene::draw(Frame& f) {
   Renderer& r = f.render;
-  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
-  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
-  r.axes();
+  draw_ground(r);
   if (mode_ == Mode::plane) {
     const Triangle& t = split_.triangle;
     const Plane& p = split_.plane;

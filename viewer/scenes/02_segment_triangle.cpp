@@ -9,8 +9,10 @@
 // The student's answers are drawn in the colour of their verdict; the exact answers
 // (the toggle) are violet rings and arrows beside them.
 #include "viewer/scenes/scenes.h"
+#include "viewer/shapes.h"
 
 #include "02_segment_triangle.judge.h"
+#include "common/generators/meshes.h"
 #include "common/oracle/moving_meshes.h"
 #include "common/oracle/oracle.h"
 #include "segment_triangle.h"
@@ -42,31 +44,6 @@ const std::vector<Preset> kPresets = {
     {"mesh-100k", "a terrain of 100,352 triangles", nullptr},
 };
 
-// The square [0, 4]^2 at height z, as two triangles (the tests' floor and shelf).
-void add_square(Mesh& m, double z) {
-  const int base = int(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), {{0, 0, z}, {4, 0, z}, {4, 4, z}, {0, 4, z}});
-  m.triangles.push_back({base, base + 1, base + 2});
-  m.triangles.push_back({base, base + 2, base + 3});
-}
-
-// Rolling hills of 2 n^2 triangles over [0, 8]^2.
-Mesh terrain(int n) {
-  Mesh m;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j) {
-      const double x = 8.0 * i / n, y = 8.0 * j / n;
-      m.vertices.push_back({x, y, 0.6 * std::sin(x * 1.3) * std::cos(y * 0.9)});
-    }
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const int v = i * (n + 1) + j;
-      m.triangles.push_back({v, v + n + 1, v + n + 2});
-      m.triangles.push_back({v, v + n + 2, v + 1});
-    }
-  return m;
-}
-
 // Weights (w0, w1, w2) of x in the triangle, in long double: the "exact" column of
 // step 3 and 4 (the judges check that the student's weights reproduce the point).
 Vec3 weights(const Vec3& x, const Triangle& t) {
@@ -79,7 +56,6 @@ Vec3 weights(const Vec3& x, const Triangle& t) {
   return Vec3(double(1 - alpha - beta), double(alpha), double(beta));
 }
 
-std::string yes(bool b, const char* y = "yes", const char* n = "no") { return b ? y : n; }
 
 class SegmentTriangleScene : public Scene {
  public:
@@ -92,8 +68,13 @@ class SegmentTriangleScene : public Scene {
 
  private:
   void frame_inputs();
+  void update_triangle();
+  void update_point();
+  void update_probe();
+  void update_mesh();
+  void update_moving();
+  void update_contact();
   void draw_triangle(Renderer& r, bool plane) const;
-  void draw_mesh(Renderer& r, const Mesh& mesh, const RigidTransform& pose, Color c, bool filled) const;
   void draw_steps_1_to_4(Frame& f) const;
   void draw_hits(Frame& f) const;
   void draw_contact(Frame& f) const;
@@ -127,16 +108,15 @@ class SegmentTriangleScene : public Scene {
 // ---- setup ---------------------------------------------------------------------------
 
 SegmentTriangleScene::SegmentTriangleScene(const Setup& setup) {
-  const Preset* preset = find_preset(kPresets, setup.preset);
-  if (preset) yaw = preset->yaw, pitch = preset->pitch, focus = preset->focus;
+  const Preset* preset = view_preset(kPresets, setup);
   if (setup.token.empty() && preset && !preset->token) {
     mode_ = preset->name == std::string("moving") ? Mode::moving : Mode::mesh;
     if (preset->name == std::string("mesh-100k")) {
-      mesh_ = terrain(224);
+      mesh_ = gen::height_field(224, 0, 8, 0, 8, [](double x, double y) { return 0.6 * std::sin(x * 1.3) * std::cos(y * 0.9); });
       segment_ = {{1.5, 6.5, 3}, {6.5, 1.5, -1}};
     } else {
-      add_square(mesh_, 0);
-      if (mode_ == Mode::mesh) add_square(mesh_, 2), segment_ = {{1, 3, 5}, {1, 3, -1}};
+      gen::add_square(mesh_, 4, 0);  // the tests' floor, and the shelf above it
+      if (mode_ == Mode::mesh) gen::add_square(mesh_, 4, 2), segment_ = {{1, 3, 5}, {1, 3, -1}};
       else m1_.translation() = Vec3(0, 0, 2), segment_ = {{1, 2.5, 3}, {1, 2.5, 0.5}};
     }
     frame_inputs();
@@ -183,8 +163,7 @@ void SegmentTriangleScene::frame_inputs() {
   if (mode_ == Mode::moving) points.push_back(m1_ * (m0_.inverse() * segment_.a));
   Eigen::AlignedBox3d box;
   for (const Vec3& p : points) box.extend(p);
-  center = box.center();
-  radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
+  frame(box);
 }
 
 // ---- update --------------------------------------------------------------------------
@@ -197,148 +176,154 @@ std::string describe_hits(const std::vector<MeshHit>& hits) {
 
 void SegmentTriangleScene::update() {
   steps.clear();
+  switch (mode_) {
+    case Mode::triangle: update_triangle(); break;
+    case Mode::point: update_point(); break;
+    case Mode::mesh: update_mesh(); break;
+    case Mode::moving: update_moving(); break;
+    case Mode::contact: update_contact(); break;
+  }
+}
+
+// Steps 1 to 4: the crossing point, tested as step 2 and 3 test a point, then the hit.
+void SegmentTriangleScene::update_triangle() {
   const Segment& s = segment_;
+  const Triangle& tri = triangle_;
+  const SegmentTrianglePair in{s, tri};
+  crossing_ = attempt([&] { return segment_plane(s, tri); });
+  exact_crossing_ = oracle::segment_plane(s, tri);
+  Step one = judged("L02S1", "segment_plane: d_a, d_b, the crossing", crossing_,
+                    [&](const PlaneCrossing& got) { return judge::segment_plane(in, got); });
+  const auto& c = crossing_;
+  const auto& e = exact_crossing_;
+  one.rows = {{"d_a", c ? num(c->d_a) : "", num(e.d_a)},
+              {"d_b", c ? num(c->d_b) : "", num(e.d_b)},
+              {"crosses", c ? yes_no(c->crosses) : "", yes_no(e.crosses)}};
+  if (e.crosses || (c && c->crosses))
+    one.rows.push_back({"t, x", c && c->crosses ? num(c->t) + ", " + num(c->point) : "", e.crosses ? num(e.t) + ", " + num(e.point) : ""});
+  verdict_[1] = one.verdict;
+  steps.push_back(one);
+  probe_.reset();
+  if (e.crosses) probe_ = e.point;
+  update_probe();
+
+  test_ = attempt([&] { return test_segment_triangle(s, tri); });
+  find_ = attempt([&] { return find_segment_triangle(s, tri); });
+  exact_hit_ = oracle::segment_triangle(s, tri);
+  Step four = judged("L02S4", "test_ and find_segment_triangle", find_,
+                     [&](const SegmentTriangleHit& got) { return judge::find_segment_triangle(in, got); });
+  join(four, test_, [&](bool got) { return judge::test_segment_triangle(in, got); });
+  const auto& f = find_;
+  const bool hit = f && f->hit, exact = exact_hit_.hit;
+  four.rows = {{"test", test_ ? yes_no(*test_, "hit", "miss") : "", yes_no(exact, "hit", "miss")},
+               {"find: hit", f ? yes_no(f->hit) : "", yes_no(exact)}};
+  if (hit || exact) {
+    four.rows.push_back({"t", hit ? num(f->t) : "", exact ? num(exact_hit_.t) : ""});
+    four.rows.push_back({"point", hit ? num(f->point) : "", exact ? num(exact_hit_.point) : ""});
+    four.rows.push_back({"weights", hit ? num(f->barycentric) : "", exact ? num(weights(exact_hit_.point, tri)) : ""});
+    four.rows.push_back({"normal", hit ? num(f->normal) : "", num(oracle::unit_normal(tri))});
+  }
+  verdict_[4] = four.verdict;
+  steps.push_back(four);
+}
+
+// Steps 2 and 3 on the point x, which slides along the triangle's plane when it moves.
+void SegmentTriangleScene::update_point() {
   const Triangle& tri = triangle_;
   plane_ = {tri.normal(), -tri.normal().dot(tri.v0)};
   const bool moved = last_triangle_ && (last_triangle_->v0 != tri.v0 || last_triangle_->v1 != tri.v1 || last_triangle_->v2 != tri.v2);
-  if (mode_ == Mode::point && moved && plane_.normal != Vec3::Zero())
-    x_ -= plane_.value(x_) / plane_.normal.squaredNorm() * plane_.normal;
+  if (moved && plane_.normal != Vec3::Zero()) x_ -= plane_.value(x_) / plane_.normal.squaredNorm() * plane_.normal;
   last_triangle_ = tri;
-  if (mode_ == Mode::triangle) {
-    const SegmentTrianglePair in{s, tri};
-    crossing_ = attempt([&] { return segment_plane(s, tri); });
-    exact_crossing_ = oracle::segment_plane(s, tri);
-    Step step = judged("L02S1", "segment_plane: d_a, d_b, the crossing", crossing_,
-                       [&](const PlaneCrossing& got) { return judge::segment_plane(in, got); });
-    const auto& c = crossing_;
-    const auto& e = exact_crossing_;
-    step.rows = {{"d_a", c ? num(c->d_a) : "", num(e.d_a)},
-                 {"d_b", c ? num(c->d_b) : "", num(e.d_b)},
-                 {"crosses", c ? yes(c->crosses) : "", yes(e.crosses)}};
-    if (e.crosses || (c && c->crosses))
-      step.rows.push_back({"t, x", c && c->crosses ? num(c->t) + ", " + num(c->point) : "",
-                           e.crosses ? num(e.t) + ", " + num(e.point) : ""});
-    verdict_[1] = step.verdict;
-    steps.push_back(step);
-    probe_.reset();
-    if (e.crosses) probe_ = e.point;
-  } else if (mode_ == Mode::point) {
-    probe_ = x_;
-  }
+  probe_ = x_;
+  update_probe();
+}
 
-  if (mode_ <= Mode::point) {
-    if (!probe_) {
-      steps.push_back({"L02S2", "point_in_triangle_edges", Verdict::none, {}, "no crossing point: nothing to test"});
-      steps.push_back({"L02S3", "barycentric", Verdict::none, {}, "no crossing point: nothing to test"});
-      verdict_[2] = verdict_[3] = Verdict::none;
-    } else {
-      const PointTriangle in{*probe_, tri};
-      const bool inside = oracle::point_in_triangle_projected(*probe_, tri);
-      inside_edges_ = attempt([&] { return point_in_triangle_edges(*probe_, tri); });
-      Step edges = judged("L02S2", "point_in_triangle_edges at x", inside_edges_,
-                          [&](bool got) { return judge::point_in_triangle(in, got); });
-      edges.rows = {{"inside", inside_edges_ ? yes(*inside_edges_) : "", yes(inside)}};
-      barycentric_ = attempt([&] { return barycentric(*probe_, tri); });
-      inside_barycentric_ = attempt([&] { return point_in_triangle_barycentric(*probe_, tri); });
-      Step bary = judged("L02S3", "barycentric, point_in_triangle_barycentric", barycentric_,
-                         [&](const Barycentric& got) { return judge::barycentric(in, got); });
-      const Step inside_step = judged("", "", inside_barycentric_, [&](bool got) { return judge::point_in_triangle(in, got); });
-      bary.verdict = worse(bary.verdict, inside_step.verdict);
-      if (bary.note.empty()) bary.note = inside_step.note;
-      const Vec3 w = weights(*probe_, tri);
-      Vec3 n = oracle::unit_normal(tri).cwiseAbs();
-      int axis = -1;
-      if (n != Vec3::Zero()) n.maxCoeff(&axis);
-      const auto& b = barycentric_;
-      bary.rows = {{"dropped axis", b ? std::to_string(b->dropped_axis) : "", std::to_string(axis)},
-                   {"alpha, beta", b ? num(b->alpha) + ", " + num(b->beta) : "", num(w[1]) + ", " + num(w[2])},
-                   {"inside", inside_barycentric_ ? yes(*inside_barycentric_) : "", yes(inside)}};
-      verdict_[2] = edges.verdict, verdict_[3] = bary.verdict;
-      steps.push_back(edges);
-      steps.push_back(bary);
-    }
+// Steps 2 and 3: is the probe inside, by the edges and by its barycentric weights?
+void SegmentTriangleScene::update_probe() {
+  const Triangle& tri = triangle_;
+  if (!probe_) {
+    steps.push_back({"L02S2", "point_in_triangle_edges", Verdict::none, {}, "no crossing point: nothing to test"});
+    steps.push_back({"L02S3", "barycentric", Verdict::none, {}, "no crossing point: nothing to test"});
+    verdict_[2] = verdict_[3] = Verdict::none;
+    return;
   }
+  const PointTriangle in{*probe_, tri};
+  const bool inside = oracle::point_in_triangle_projected(*probe_, tri);
+  inside_edges_ = attempt([&] { return point_in_triangle_edges(*probe_, tri); });
+  Step edges = judged("L02S2", "point_in_triangle_edges at x", inside_edges_,
+                      [&](bool got) { return judge::point_in_triangle(in, got); });
+  edges.rows = {{"inside", inside_edges_ ? yes_no(*inside_edges_) : "", yes_no(inside)}};
+  barycentric_ = attempt([&] { return barycentric(*probe_, tri); });
+  inside_barycentric_ = attempt([&] { return point_in_triangle_barycentric(*probe_, tri); });
+  Step bary = judged("L02S3", "barycentric, point_in_triangle_barycentric", barycentric_,
+                     [&](const Barycentric& got) { return judge::barycentric(in, got); });
+  join(bary, inside_barycentric_, [&](bool got) { return judge::point_in_triangle(in, got); });
+  const Vec3 w = weights(*probe_, tri);
+  Vec3 n = oracle::unit_normal(tri).cwiseAbs();
+  int axis = -1;
+  if (n != Vec3::Zero()) n.maxCoeff(&axis);
+  const auto& b = barycentric_;
+  bary.rows = {{"dropped axis", b ? std::to_string(b->dropped_axis) : "", std::to_string(axis)},
+               {"alpha, beta", b ? num(b->alpha) + ", " + num(b->beta) : "", num(w[1]) + ", " + num(w[2])},
+               {"inside", inside_barycentric_ ? yes_no(*inside_barycentric_) : "", yes_no(inside)}};
+  verdict_[2] = edges.verdict, verdict_[3] = bary.verdict;
+  steps.push_back(edges);
+  steps.push_back(bary);
+}
 
-  if (mode_ == Mode::triangle) {
-    const SegmentTrianglePair in{s, tri};
-    test_ = attempt([&] { return test_segment_triangle(s, tri); });
-    find_ = attempt([&] { return find_segment_triangle(s, tri); });
-    exact_hit_ = oracle::segment_triangle(s, tri);
-    Step step = judged("L02S4", "test_ and find_segment_triangle", find_,
-                       [&](const SegmentTriangleHit& got) { return judge::find_segment_triangle(in, got); });
-    const Step t = judged("", "", test_, [&](bool got) { return judge::test_segment_triangle(in, got); });
-    step.verdict = worse(step.verdict, t.verdict);
-    if (step.note.empty()) step.note = t.note;
-    const auto& f = find_;
-    const bool hit = f && f->hit, exact = exact_hit_.hit;
-    step.rows = {{"test", test_ ? yes(*test_, "hit", "miss") : "", yes(exact, "hit", "miss")},
-                 {"find: hit", f ? yes(f->hit) : "", yes(exact)}};
-    if (hit || exact) {
-      step.rows.push_back({"t", hit ? num(f->t) : "", exact ? num(exact_hit_.t) : ""});
-      step.rows.push_back({"point", hit ? num(f->point) : "", exact ? num(exact_hit_.point) : ""});
-      step.rows.push_back({"weights", hit ? num(f->barycentric) : "", exact ? num(weights(exact_hit_.point, tri)) : ""});
-      step.rows.push_back({"normal", hit ? num(f->normal) : "", num(oracle::unit_normal(tri))});
-    }
-    verdict_[4] = step.verdict;
-    steps.push_back(step);
-  }
+void SegmentTriangleScene::update_mesh() {
+  const Segment& s = segment_;
+  const SegmentMeshPair in{s, mesh_};
+  first_ = attempt([&] { return first_hit(s, mesh_); });
+  any_ = attempt([&] { return any_hit(s, mesh_); });
+  all_ = attempt([&] { return all_hits(s, mesh_); });
+  exact_hits_ = oracle::segment_mesh_hits(s, mesh_);
+  Step step = judged("L02S5", "first_hit, any_hit, all_hits", first_, [&](const MeshHit& got) { return judge::first_hit(in, got); });
+  join(step, any_, [&](bool got) { return judge::any_hit(in, got); });
+  join(step, all_, [&](const std::vector<MeshHit>& got) { return judge::all_hits(in, got); });
+  std::vector<MeshHit> exact;
+  for (const oracle::SegmentHit& h : exact_hits_) exact.push_back({true, h.triangle, h.t, h.point, Vec3::Zero(), Vec3::Zero()});
+  const auto& f = first_;
+  step.rows = {{"any_hit", any_ ? yes_no(*any_) : "", yes_no(!exact.empty())},
+               {"first: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "",
+                exact.empty() ? "none" : std::to_string(exact[0].triangle)},
+               {"first: t, point", f && f->hit ? num(f->t) + ", " + num(f->point) : "",
+                exact.empty() ? "" : num(exact[0].t) + ", " + num(exact[0].point)},
+               {"all (triangle at t)", all_ ? describe_hits(*all_).substr(0, 60) : "", describe_hits(exact).substr(0, 60)}};
+  verdict_[5] = step.verdict;
+  steps.push_back(step);
+}
 
-  if (mode_ == Mode::mesh) {
-    const SegmentMeshPair in{s, mesh_};
-    first_ = attempt([&] { return first_hit(s, mesh_); });
-    any_ = attempt([&] { return any_hit(s, mesh_); });
-    all_ = attempt([&] { return all_hits(s, mesh_); });
-    exact_hits_ = oracle::segment_mesh_hits(s, mesh_);
-    Step step = judged("L02S5", "first_hit, any_hit, all_hits", first_,
-                       [&](const MeshHit& got) { return judge::first_hit(in, got); });
-    for (const Step& other : {judged("", "", any_, [&](bool got) { return judge::any_hit(in, got); }),
-                              judged("", "", all_, [&](const std::vector<MeshHit>& got) { return judge::all_hits(in, got); })}) {
-      step.verdict = worse(step.verdict, other.verdict);
-      if (step.note.empty()) step.note = other.note;
-    }
-    std::vector<MeshHit> exact;
-    for (const oracle::SegmentHit& h : exact_hits_) exact.push_back({true, h.triangle, h.t, h.point, Vec3::Zero(), Vec3::Zero()});
-    const auto& f = first_;
-    step.rows = {{"any_hit", any_ ? yes(*any_) : "", yes(!exact.empty())},
-                 {"first: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "",
-                  exact.empty() ? "none" : std::to_string(exact[0].triangle)},
-                 {"first: t, point", f && f->hit ? num(f->t) + ", " + num(f->point) : "",
-                  exact.empty() ? "" : num(exact[0].t) + ", " + num(exact[0].point)},
-                 {"all (triangle at t)", all_ ? describe_hits(*all_).substr(0, 60) : "", describe_hits(exact).substr(0, 60)}};
-    verdict_[5] = step.verdict;
-    steps.push_back(step);
-  }
+void SegmentTriangleScene::update_moving() {
+  const Segment& s = segment_;
+  const MovingMesh in{s, mesh_, m0_, m1_};
+  first_ = attempt([&] { return first_hit_moving(s, mesh_, m0_, m1_); });
+  exact_hits_ = oracle::moving_mesh_hits(s, mesh_, m0_, m1_);
+  Step step = judged("L02S6", "first_hit_moving", first_, [&](const MeshHit& got) { return judge::first_hit_moving(in, got); });
+  const auto& f = first_;
+  const oracle::SegmentHit* e = exact_hits_.empty() ? nullptr : &exact_hits_[0];
+  step.rows = {{"hit: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "", e ? std::to_string(e->triangle) : "none"},
+               {"t", f && f->hit ? num(f->t) : "", e ? num(e->t) : ""},
+               {"point (at m1)", f && f->hit ? num(f->point) : "", e ? num(e->point) : ""}};
+  verdict_[6] = step.verdict;
+  steps.push_back(step);
+}
 
-  if (mode_ == Mode::moving) {
-    const MovingMesh in{s, mesh_, m0_, m1_};
-    first_ = attempt([&] { return first_hit_moving(s, mesh_, m0_, m1_); });
-    exact_hits_ = oracle::moving_mesh_hits(s, mesh_, m0_, m1_);
-    Step step = judged("L02S6", "first_hit_moving", first_, [&](const MeshHit& got) { return judge::first_hit_moving(in, got); });
-    const auto& f = first_;
-    const oracle::SegmentHit* e = exact_hits_.empty() ? nullptr : &exact_hits_[0];
-    step.rows = {{"hit: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "", e ? std::to_string(e->triangle) : "none"},
-                 {"t", f && f->hit ? num(f->t) : "", e ? num(e->t) : ""},
-                 {"point (at m1)", f && f->hit ? num(f->point) : "", e ? num(e->point) : ""}};
-    verdict_[6] = step.verdict;
-    steps.push_back(step);
-  }
-
-  if (mode_ == Mode::contact) {
-    const MovingMeshes& in = meshes_;
-    contact_ = attempt([&] { return first_contact_moving_meshes(in.a, in.velocity_a, in.b, in.velocity_b); });
-    exact_contact_ = oracle::first_contact_translating(in.a, in.velocity_a, in.b, in.velocity_b);
-    Step step = judged("L02S7", "first_contact_moving_meshes", contact_,
-                       [&](const MeshContact& got) { return judge::first_contact_moving_meshes(in, got); });
-    const auto& c = contact_;
-    const auto& e = exact_contact_;
-    const char* kinds[] = {"vertex of A on a face of B", "vertex of B on a face of A", "edge against edge"};
-    step.rows = {{"contact", c ? yes(c->hit) : "", yes(e.hit)},
-                 {"t", c && c->hit ? num(c->t) : "", e.hit ? num(e.t) : ""},
-                 {"point", c && c->hit ? num(c->point) : "", e.hit ? num(e.point) : ""},
-                 {"family", "", e.hit ? kinds[e.kind] : ""}};
-    verdict_[7] = step.verdict;
-    steps.push_back(step);
-  }
+void SegmentTriangleScene::update_contact() {
+  const MovingMeshes& in = meshes_;
+  contact_ = attempt([&] { return first_contact_moving_meshes(in.a, in.velocity_a, in.b, in.velocity_b); });
+  exact_contact_ = oracle::first_contact_translating(in.a, in.velocity_a, in.b, in.velocity_b);
+  Step step = judged("L02S7", "first_contact_moving_meshes", contact_,
+                     [&](const MeshContact& got) { return judge::first_contact_moving_meshes(in, got); });
+  const auto& c = contact_;
+  const auto& e = exact_contact_;
+  const char* kinds[] = {"vertex of A on a face of B", "vertex of B on a face of A", "edge against edge"};
+  step.rows = {{"contact", c ? yes_no(c->hit) : "", yes_no(e.hit)},
+               {"t", c && c->hit ? num(c->t) : "", e.hit ? num(e.t) : ""},
+               {"point", c && c->hit ? num(c->point) : "", e.hit ? num(e.point) : ""},
+               {"family", "", e.hit ? kinds[e.kind] : ""}};
+  verdict_[7] = step.verdict;
+  steps.push_back(step);
 }
 
 // ---- draw ----------------------------------------------------------------------------
@@ -348,10 +333,8 @@ void SegmentTriangleScene::draw_triangle(Renderer& r, bool plane) const {
   const Vec3 c = (t.v0 + t.v1 + t.v2) / 3, n = oracle::unit_normal(t);
   const double size = std::max({(t.v1 - t.v0).norm(), (t.v2 - t.v1).norm(), (t.v0 - t.v2).norm()});
   if (plane && n != Vec3::Zero()) {  // a faint square of the triangle's plane around it
-    const Vec3 u = (t.v1 - t.v0).normalized(), w = n.cross(u);
-    const Vec3 p[4] = {c + size * (u + w), c + size * (-u + w), c + size * (-u - w), c + size * (u - w)};
-    r.triangle(p[0], p[1], p[2], palette::surface.with_alpha(0.10f));
-    r.triangle(p[0], p[2], p[3], palette::surface.with_alpha(0.10f));
+    const Vec3 u = (t.v1 - t.v0).normalized();
+    fill(r, square_around(c, u, n.cross(u), size), palette::surface.with_alpha(0.10f));
   }
   r.triangle(t.v0, t.v1, t.v2, palette::surface.with_alpha(0.72f));
   for (int i = 0; i < 3; ++i) {
@@ -361,18 +344,6 @@ void SegmentTriangleScene::draw_triangle(Renderer& r, bool plane) const {
   if (n != Vec3::Zero()) {
     r.arrow(c, c + 0.3 * size * n, palette::muted, 2);
     r.label(c + 0.3 * size * n, "n", palette::muted);
-  }
-}
-
-void SegmentTriangleScene::draw_mesh(Renderer& r, const Mesh& mesh, const RigidTransform& pose, Color c, bool filled) const {
-  const bool edges = mesh.size() <= 20000;
-  for (std::size_t i = 0; i < mesh.size(); ++i) {
-    const Triangle t = mesh.triangle(i);
-    const Vec3 a = pose * t.v0, b = pose * t.v1, d = pose * t.v2;
-    if (filled) r.triangle(a, b, d, c);
-    if (!edges) continue;
-    const Color e = filled ? Color{0.30f, 0.40f, 0.55f} : c;
-    r.line(a, b, e, 1), r.line(b, d, e, 1), r.line(d, a, e, 1);
   }
 }
 
@@ -453,11 +424,11 @@ void SegmentTriangleScene::draw_contact(Frame& f) const {
   const Color c = colour(verdict_[7]);
   RigidTransform at0 = RigidTransform::Identity(), a_t = at0, b_t = at0;
   a_t.translation() = t * in.velocity_a, b_t.translation() = t * in.velocity_b;
-  draw_mesh(r, in.a, at0, palette::muted.with_alpha(0.7f), false);
-  draw_mesh(r, in.b, at0, palette::muted.with_alpha(0.7f), false);
+  draw_mesh(r, in.a, palette::muted.with_alpha(0.7f), false, at0);
+  draw_mesh(r, in.b, palette::muted.with_alpha(0.7f), false, at0);
   if (!in.a.vertices.empty()) r.label(in.a.vertices[0], "A at t = 0", palette::muted);
-  draw_mesh(r, in.b, b_t, palette::surface, true);
-  draw_mesh(r, in.a, a_t, palette::input.with_alpha(0.55f), true);
+  draw_mesh(r, in.b, palette::surface, true, b_t);
+  draw_mesh(r, in.a, palette::input.with_alpha(0.55f), true, a_t);
   if (!in.a.vertices.empty()) r.label(a_t * in.a.vertices[0], "A at t = " + num(t), palette::input);
   if (!in.b.vertices.empty()) r.label(b_t * in.b.vertices[0], "B", palette::surface);
   const auto centre = [](const Mesh& m) {
@@ -493,9 +464,7 @@ void SegmentTriangleScene::draw_contact(Frame& f) const {
 
 void SegmentTriangleScene::draw(Frame& f) {
   Renderer& r = f.render;
-  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
-  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
-  r.axes();
+  draw_ground(r);
   if (mode_ == Mode::contact) {
     draw_contact(f);
     return;
@@ -505,20 +474,18 @@ void SegmentTriangleScene::draw(Frame& f) {
     draw_steps_1_to_4(f);
   } else {
     if (mode_ == Mode::moving) {  // the mesh at m0, faint; the particle's path in the mesh's frame
-      draw_mesh(r, mesh_, m0_, palette::muted.with_alpha(0.6f), false);
+      draw_mesh(r, mesh_, palette::muted.with_alpha(0.6f), false, m0_);
       if (!mesh_.vertices.empty()) r.label(m0_ * mesh_.vertices[0], "the mesh at m0", palette::muted);
       if (!mesh_.vertices.empty()) r.label(m1_ * mesh_.vertices[0], "at m1", palette::surface);
       const Vec3 a = m1_ * (m0_.inverse() * segment_.a);
       r.dashed(a, segment_.b, palette::muted, 1.5f);
       r.label(a, "a seen from the mesh", palette::muted);
     }
-    draw_mesh(r, mesh_, mode_ == Mode::moving ? m1_ : RigidTransform::Identity(), palette::surface, true);
+    draw_mesh(r, mesh_, palette::surface, true, mode_ == Mode::moving ? m1_ : RigidTransform::Identity());
     draw_hits(f);
   }
   if (mode_ != Mode::point) {
-    r.line(segment_.a, segment_.b, palette::input, 2.5f);
-    r.point(segment_.a, palette::input, 6), r.point(segment_.b, palette::input, 6);
-    r.label(segment_.a, "a", palette::input), r.label(segment_.b, "b", palette::input);
+    draw_segment(r, segment_);
   } else {
     r.point(x_, palette::input, 6);
     r.label(x_, "x", palette::input);

@@ -56,7 +56,6 @@ Mat3 three_four_five() {
   return m;
 }
 
-std::string yes(bool b, const char* y = "yes", const char* n = "no") { return b ? y : n; }
 
 std::string axis_name(int index) {
   if (index < 0 || index > 14) return std::to_string(index);
@@ -145,8 +144,7 @@ void SeparatingAxesScene::preset(const std::string& name) {
 }
 
 SeparatingAxesScene::SeparatingAxesScene(const Setup& setup) {
-  const Preset* p = find_preset(kPresets, setup.preset);
-  if (p) yaw = p->yaw, pitch = p->pitch, focus = p->focus;
+  const Preset* p = view_preset(kPresets, setup);
   if (setup.token.empty()) {
     preset(p ? p->name : "edge-axis");
   } else {
@@ -189,8 +187,7 @@ void SeparatingAxesScene::frame_inputs() {
       if (mode_ == Mode::moving) box.extend(a_.corner(i) + duration_ * va_), box.extend(b_.corner(i) + duration_ * vb_);
     }
   }
-  center = box.center();
-  radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
+  frame(box);
 }
 
 // ---- update --------------------------------------------------------------------------
@@ -213,13 +210,12 @@ void SeparatingAxesScene::update_boxes() {
   for (const Step& other :
        {judged("", "", proj_b_, [&](const Projection& got) { return judge::project_box(BoxOnAxis{b_, axis_}, got); }),
         judged("", "", separated_, [&](bool got) { return judge::separated_on_axis(BoxPairOnAxis{a_, b_, axis_}, got); })}) {
-    s1.verdict = worse(s1.verdict, other.verdict);
-    if (s1.note.empty()) s1.note = other.note;
+    join(s1, other);
   }
   const oracle::BoxProjection ea = oracle::box_projection(a_, axis_), eb = oracle::box_projection(b_, axis_);
   s1.rows = {{"A: centre, radius", proj_a_ ? num(proj_a_->center) + ", " + num(proj_a_->radius) : "", num(ea.center) + ", " + num(ea.radius)},
              {"B: centre, radius", proj_b_ ? num(proj_b_->center) + ", " + num(proj_b_->radius) : "", num(eb.center) + ", " + num(eb.radius)},
-             {"separated along L", separated_ ? yes(*separated_) : "", yes(oracle::boxes_separated_along(a_, b_, axis_))}};
+             {"separated along L", separated_ ? yes_no(*separated_) : "", yes_no(oracle::boxes_separated_along(a_, b_, axis_))}};
   verdict_[1] = s1.verdict;
   steps.push_back(s1);
 
@@ -233,13 +229,12 @@ void SeparatingAxesScene::update_boxes() {
   exact_intersect_ = oracle::boxes_intersect(a_, b_);
   Step s2 = judged("L03S2", "box_axis, test_boxes", test_, [&](bool got) { return judge::test_boxes(pair, got); });
   const Step axes_step = judged("", "", axes_, [&](const std::array<Vec3, 15>& got) { return judge::box_axes(pair, got); });
-  s2.verdict = worse(s2.verdict, axes_step.verdict);
-  if (s2.note.empty()) s2.note = axes_step.note;
+  join(s2, axes_step);
   double worst = 0;
   if (axes_)
     for (int k = 0; k < 15; ++k) worst = std::max(worst, ((*axes_)[std::size_t(k)] - oracle::box_pair_axis(a_, b_, k)).norm());
   s2.rows = {{"the 15 axes: largest error", axes_ ? num(worst) : "", "0"},
-             {"test_boxes", test_ ? yes(*test_, "intersecting", "separated") : "", yes(exact_intersect_, "intersecting", "separated")},
+             {"test_boxes", test_ ? yes_no(*test_, "intersecting", "separated") : "", yes_no(exact_intersect_, "intersecting", "separated")},
              {"exact margin", "", num(oracle::box_pair_margin(a_, b_))}};
   verdict_[2] = s2.verdict;
   steps.push_back(s2);
@@ -258,7 +253,7 @@ void SeparatingAxesScene::update_boxes() {
   Step s3 = judged("L03S3", "find_boxes: separating or least-penetration axis", find_,
                    [&](const BoxContact& got) { return judge::find_boxes(pair, got); });
   const auto& f = find_;
-  s3.rows = {{"intersecting", f ? yes(f->intersecting) : "", yes(exact_intersect_)},
+  s3.rows = {{"intersecting", f ? yes_no(f->intersecting) : "", yes_no(exact_intersect_)},
              {"axis", f ? axis_name(f->axis_index) : "", exact_index_ >= 0 ? axis_name(exact_index_) : ""},
              {"unit axis", f ? num(f->axis) : "", num(exact_axis_)},
              {"depth", f ? num(f->depth) : "", num(exact_depth_)}};
@@ -275,18 +270,17 @@ void SeparatingAxesScene::update_triangles() {
   Step s = judged("L03S4", "triangles_by_intervals, test_triangles", tri_, [&](bool got) { return judge::test_triangles(in, got); });
   const Step by_intervals =
       judged("", "", line_, [&](const LineIntervals& got) { return judge::triangles_by_intervals(in, got); });
-  s.verdict = worse(s.verdict, by_intervals.verdict);
-  if (s.note.empty()) s.note = by_intervals.note;
+  join(s, by_intervals);
   const auto interval = [](double low, double high) { return "[" + num(low) + ", " + num(high) + "]"; };
   const bool domain = gen::in_interval_domain(in);
   const int k = line_ && line_->crossing ? line_->axis : 0;
   const oracle::TriangleIntervals exact = oracle::triangle_intervals(t0_, t1_, k);
   const auto& l = line_;
-  s.rows = {{"intervals: crossing, axis", l ? yes(l->crossing) + ", " + std::to_string(l->axis) : "",
-             yes(exact.crossing) + (domain ? "" : " (outside the method's domain)")},
+  s.rows = {{"intervals: crossing, axis", l ? yes_no(l->crossing) + ", " + std::to_string(l->axis) : "",
+             yes_no(exact.crossing) + (domain ? "" : " (outside the method's domain)")},
             {"t0 in t1's plane", l && l->crossing ? interval(l->low0, l->high0) : "", exact.crossing ? interval(exact.low0, exact.high0) : ""},
             {"t1 in t0's plane", l && l->crossing ? interval(l->low1, l->high1) : "", exact.crossing ? interval(exact.low1, exact.high1) : ""},
-            {"intersect", tri_ ? yes(*tri_) : "", yes(oracle::triangles_intersect(t0_, t1_))}};
+            {"intersect", tri_ ? yes_no(*tri_) : "", yes_no(oracle::triangles_intersect(t0_, t1_))}};
   verdict_[4] = s.verdict;
   steps.push_back(s);
 }
@@ -299,10 +293,9 @@ void SeparatingAxesScene::update_moving() {
   Step s = judged("L03S5", "test_ and find_moving_boxes", interval_,
                   [&](const ContactInterval& got) { return judge::find_moving_boxes(in, got); });
   const Step t = judged("", "", moving_test_, [&](bool got) { return judge::test_moving_boxes(in, got); });
-  s.verdict = worse(s.verdict, t.verdict);
-  if (s.note.empty()) s.note = t.note;
+  join(s, t);
   const auto& c = interval_;
-  s.rows = {{"test", moving_test_ ? yes(*moving_test_, "contact", "never") : "", yes(exact_times_.contact, "contact", "never")},
+  s.rows = {{"test", moving_test_ ? yes_no(*moving_test_, "contact", "never") : "", yes_no(exact_times_.contact, "contact", "never")},
             {"first", c && c->contact ? num(c->first) : "", exact_times_.contact ? num(exact_times_.first) : ""},
             {"last", c && c->contact ? num(c->last) : "", exact_times_.contact ? num(exact_times_.last) : ""}};
   verdict_[5] = s.verdict;
@@ -412,9 +405,7 @@ void SeparatingAxesScene::draw_line_intervals(Frame& f) const {
 
 void SeparatingAxesScene::draw(Frame& f) {
   Renderer& r = f.render;
-  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
-  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
-  r.axes();
+  draw_ground(r);
   if (mode_ == Mode::triangles) {
     const Color c = tri_ ? colour(verdict_[4]) : palette::surface;
     r.triangle(t0_.v0, t0_.v1, t0_.v2, palette::surface.with_alpha(0.6f));

@@ -67,7 +67,6 @@ MovingPairCase bullet_and_window(double tolerance) {
   return {ball(0.125, moving({-3, 0, 0}, {6, 0, 0})), block({0.25, 2, 2}, still(Vec3::Zero())), SearchTimes{0, 1, tolerance}};
 }
 
-std::string yes(bool b, const char* y = "yes", const char* n = "no") { return b ? y : n; }
 
 // The times a search asked for poses, in the order it first asked (the searches never
 // look inside a motion, so these are exactly the instants it tested).
@@ -201,8 +200,7 @@ void BisectionScene::frame_inputs() {
     // picture's caption covers the top of the view.
     box.extend(Vec3(bodies_.center().x(), bodies_.max().y() + 0.6 * bodies_.sizes().y(), bodies_.center().z()));
   }
-  center = box.center();
-  radius = std::max(0.32 * box.diagonal().norm(), 1e-9);
+  frame(box, 0.32);
 }
 
 void BisectionScene::layout() {
@@ -288,8 +286,8 @@ void BisectionScene::step_overlap() {
   const auto got = attempt([&] { return std::pair<bool, bool>(overlap_at(pair, T.t0), overlap_at(pair, T.t1)); });
   Step s = judged("L04S1", "overlap_at the ends t0 and t1", got,
                   [&](const std::pair<bool, bool>& g) { return judge::overlap_at(case_, g.first, g.second); });
-  s.rows = {{"at t0 = " + num(T.t0), got ? yes(got->first) : "", yes(exact_overlap(T.t0))},
-            {"at t1 = " + num(T.t1), got ? yes(got->second) : "", yes(exact_overlap(T.t1))}};
+  s.rows = {{"at t0 = " + num(T.t0), got ? yes_no(got->first) : "", yes_no(exact_overlap(T.t0))},
+            {"at t1 = " + num(T.t1), got ? yes_no(got->second) : "", yes_no(exact_overlap(T.t1))}};
   verdict_[1] = s.verdict;
   steps.push_back(s);
 }
@@ -298,7 +296,7 @@ void BisectionScene::step_overlap() {
 std::vector<Row> search_rows(const Attempt<TimeOfImpact>& g, bool exact_hit, bool exact_at_start, double exact_lo,
                              double exact_hi) {
   const std::string contact = exact_at_start ? "at t0" : exact_hit ? "in (" + num(exact_lo) + ", " + num(exact_hi) + "]" : "none seen";
-  return {{"hit", g ? yes(g->hit) + (g->overlapping_at_start ? " (at start)" : "") : "", exact_hit ? "yes" : "no"},
+  return {{"hit", g ? yes_no(g->hit) + (g->overlapping_at_start ? " (at start)" : "") : "", exact_hit ? "yes" : "no"},
           {"t (last clear)", g ? num(g->t) : "", exact_hit && !exact_at_start ? num(exact_lo) : ""},
           {"t_contact", g && g->hit ? num(g->t_contact) : "", "first contact " + contact},
           {"steps, iterations", g ? std::to_string(g->steps) + ", " + std::to_string(g->iterations) : "", ""}};
@@ -376,8 +374,7 @@ void BisectionScene::step_advance() {
   search_ = attempt([&] { return advance(recorded, T.t0, T.t1, bound, T.tolerance); });
   Step s = judged("L04S4", "advance: jump d / v, then bisect", search_,
                   [&](const TimeOfImpact& got) { return judge::advance(in, got); });
-  s.verdict = worse(s.verdict, dist.verdict);
-  if (s.note.empty()) s.note = dist.note;
+  join(s, dist);
   s.rows = dist.rows;
   s.rows.push_back({"closing-speed bound v", num(bound), num(closing_speed_of(case_)) + " (true)"});
   for (const Row& row : search_rows(search_, exact_hit_, exact_at_start_, exact_lo_, exact_hi_)) s.rows.push_back(row);
@@ -570,9 +567,7 @@ void BisectionScene::draw_timeline(Frame& f) const {
 
 void BisectionScene::draw(Frame& f) {
   Renderer& r = f.render;
-  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
-  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
-  r.axes();
+  draw_ground(r);
   if (mode_ == Mode::rule) {
     r.label(Vec3::Zero(), "the sub-step rule has no picture: see the panel", palette::muted);
     return;

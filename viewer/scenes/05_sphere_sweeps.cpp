@@ -184,7 +184,6 @@ void draw_plane(Renderer& r, const Plane& given, const Vec3& near, double size) 
   r.label(foot + 0.3 * size * n, "n", palette::muted);
 }
 
-std::string yes(bool b) { return b ? "yes" : "no"; }
 
 class SphereSweepsScene : public Scene {
  public:
@@ -277,8 +276,7 @@ void SphereSweepsScene::read_cores(const std::string& q, const ParsedToken& toke
 }
 
 SphereSweepsScene::SphereSweepsScene(const Setup& setup) {
-  const Preset* preset = find_preset(kPresets, setup.preset);
-  if (preset) yaw = preset->yaw, pitch = preset->pitch, focus = preset->focus;
+  view_preset(kPresets, setup);
   const ParsedToken token = parse_token(starting_token(setup, kPresets, kPresets[0].token));
   std::string q = token.query;
   if (q.rfind("robust.", 0) == 0) q = q.substr(7);
@@ -330,8 +328,7 @@ void SphereSweepsScene::frame_inputs() {
       ball_box(capsule_.axis.a, capsule_.radius + s0_.radius), ball_box(capsule_.axis.b, capsule_.radius + s0_.radius);
     else box.extend(plane_point_);
   }
-  center = box.center();
-  radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
+  frame(box);
 }
 
 // ---- update --------------------------------------------------------------------------
@@ -374,7 +371,7 @@ Step test_step(const char* title, const Pair& in, Test&& test, const oracle::Squ
   got = attempt([&] { return test(in.a, in.b); });
   Step s = judged("L05S3", title, got, [&](bool g) { return judge::test_pair(in, g); });
   const bool exact = cores.compare(in.a.radius, in.b.radius) <= 0;
-  s.rows = {{"meet", got ? yes(*got) : "", yes(exact)},
+  s.rows = {{"meet", got ? yes_no(*got) : "", yes_no(exact)},
             {"cores apart; r0 + r1", "", num(cores.distance()) + "; " + num(in.a.radius + in.b.radius)}};
   return s;
 }
@@ -644,9 +641,7 @@ void SphereSweepsScene::draw_sweep(Frame& f) const {
 
 void SphereSweepsScene::draw(Frame& f) {
   Renderer& r = f.render;
-  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
-  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
-  r.axes();
+  draw_ground(r);
   if (mode_ == Mode::cores) draw_cores(f);
   else draw_sweep(f);
 }

@@ -170,7 +170,6 @@ void draw_sphere(Renderer& r, const Sphere& s, Color c, float width) {
   }
 }
 
-std::string yes(bool b, const char* y = "yes", const char* n = "no") { return b ? y : n; }
 
 class SpatialTreesScene : public Scene {
  public:
@@ -234,8 +233,7 @@ class SpatialTreesScene : public Scene {
 // ---- setup ---------------------------------------------------------------------------
 
 SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
-  const Preset* preset = find_preset(kPresets, setup.preset);
-  if (preset) yaw = preset->yaw, pitch = preset->pitch, focus = preset->focus;
+  const Preset* preset = view_preset(kPresets, setup);
   if (setup.token.empty() && (!preset || !preset->token)) {
     const std::string name = preset ? preset->name : "torus";
     figure_ = name;
@@ -341,8 +339,7 @@ void SpatialTreesScene::frame_inputs() {
   if (figure_ == "sweep") box.extend(Vec3(0, -7.5, 0));
   if (mode_ == Mode::frames && !box.isEmpty()) box.extend(Vec3(box.min().x(), box.min().y() - 0.3 * box.diagonal().norm(), 0));
   if (box.isEmpty()) box.extend(Vec3::Zero()), box.extend(Vec3::Ones());
-  center = box.center();
-  radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
+  frame(box);
 }
 
 // ---- update --------------------------------------------------------------------------
@@ -393,8 +390,7 @@ void SpatialTreesScene::update_kd() {
                    first_, [&](const KdHit& got) { return judge::first_hit(in, tree_, got, calls[0]); });
   for (const Step& other : {judged("", "", any_, [&](const KdHit& got) { return judge::any_hit(in, tree_, got, calls[1]); }),
                             judged("", "", all_, [&](const KdHits& got) { return judge::all_hits(in, tree_, got, calls[2]); })}) {
-    s2.verdict = worse(s2.verdict, other.verdict);
-    if (s2.note.empty()) s2.note = other.note;
+    join(s2, other);
   }
   int met = 0;
   for (const LeafBox& l : leaves_) met += segment_meets(l.cell, segment_);
@@ -402,7 +398,7 @@ void SpatialTreesScene::update_kd() {
     return h ? (h->hit ? std::to_string(h->triangle) + " at t = " + num(h->t) : std::string("none")) : std::string();
   };
   s2.rows = {{"first hit", hit_text(first_), exact_hits_.empty() ? "none" : std::to_string(exact_hits_[0].triangle) + " at t = " + num(exact_hits_[0].t)},
-             {"any hit", any_ ? yes(any_->hit) : "", yes(!exact_hits_.empty())},
+             {"any hit", any_ ? yes_no(any_->hit) : "", yes_no(!exact_hits_.empty())},
              {"all hits", all_ ? std::to_string(all_->hits.size()) : "", std::to_string(exact_hits_.size())},
              {"tests: first / any / all", first_ && any_ && all_ ? std::to_string(first_->tests) + " / " + std::to_string(any_->tests) + " / " +
                                                                        std::to_string(all_->tests)
@@ -423,8 +419,7 @@ void SpatialTreesScene::update_bsp() {
   if (bsp_) {
     where_ = attempt([&] { return classify(*bsp_, point_); });
     const Step c = judged("", "", where_, [&](Where got) { return judge::classify(in, got); });
-    s3.verdict = worse(s3.verdict, c.verdict);
-    if (s3.note.empty()) s3.note = c.note;
+    join(s3, c);
     s3.rows = {{"nodes, pieces", std::to_string(bsp_->nodes.size()) + ", " + std::to_string(bsp_->pieces.size()), ""},
                {"the point is", where_ ? describe(*where_) : "", describe(exact)}};
   }
@@ -803,9 +798,7 @@ void SpatialTreesScene::draw_spheres(Frame& f) {
 
 void SpatialTreesScene::draw(Frame& f) {
   Renderer& r = f.render;
-  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
-  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
-  r.axes();
+  draw_ground(r);
   if (mode_ == Mode::kd) draw_kd(f);
   if (mode_ == Mode::bsp) draw_bsp(f);
   if (mode_ == Mode::spheres) draw_spheres(f);

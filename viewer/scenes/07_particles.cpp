@@ -189,8 +189,7 @@ CollideCase preset_step(const std::string& name) {
 
 ParticlesScene::ParticlesScene(const Setup& setup) {
   case_ = default_fountain();
-  const Preset* preset = find_preset(kPresets, setup.preset);
-  if (preset) yaw = preset->yaw, pitch = preset->pitch, focus = preset->focus;
+  const Preset* preset = view_preset(kPresets, setup);
   if (setup.token.empty() && preset && !preset->token) {
     if (preset->name != std::string("fountain")) mode_ = Mode::step, one_ = preset_step(preset->name);
     // A figure shows the fountain grown: two seconds of it.
@@ -255,8 +254,7 @@ void ParticlesScene::frame_inputs() {
     box.extend(one_.step.a), box.extend(one_.step.b), box.extend(one_.step.a + carried), box.extend(one_.step.b - carried);
     for (const Vec3& v : one_.scene.mesh.vertices) box.extend(v);
   }
-  center = box.center();
-  radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
+  frame(box);
   if (mode_ == Mode::step && one_.scene.velocity != Vec3::Zero()) radius *= 1.3;  // room for a' above the legend
 }
 
@@ -348,8 +346,7 @@ void ParticlesScene::update_fountain() {
   });
   if (births_ && aged_) {
     const Step a = judged("", "", aged_, [&](const std::vector<Particle>& got) { return judge::age(age_in_, got); });
-    s1.verdict = worse(s1.verdict, a.verdict);
-    if (s1.note.empty()) s1.note = a.note;
+    join(s1, a);
   }
   s1.rows = {{"born this step", births_ ? std::to_string(births_->count) : "", ""},
              {"owed", births_ ? num(births_->owed) : "", ""},
@@ -558,9 +555,7 @@ void ParticlesScene::draw_collision(Frame& f, const CollideCase& in, const Attem
 
 void ParticlesScene::draw(Frame& f) {
   Renderer& r = f.render;
-  const double spacing = std::pow(10.0, std::floor(std::log10(std::max(radius, 1e-9))));
-  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
-  r.axes();
+  draw_ground(r);
   if (mode_ == Mode::target) {
     const LaunchCase& in = launch_;
     r.point(in.from, palette::input, 6), r.label(in.from, "from", palette::input);
