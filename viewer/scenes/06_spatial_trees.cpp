@@ -388,10 +388,8 @@ void SpatialTreesScene::update_kd() {
   exact_hits_ = oracle::segment_mesh_crossings(segment_, mesh_);
   Step s2 = judged("L06S2", std::string("first_hit, any_hit, all_hits on ") + (tree_is_students_ ? "your tree" : "the checker's tree"),
                    first_, [&](const KdHit& got) { return judge::first_hit(in, tree_, got, calls[0]); });
-  for (const Step& other : {judged("", "", any_, [&](const KdHit& got) { return judge::any_hit(in, tree_, got, calls[1]); }),
-                            judged("", "", all_, [&](const KdHits& got) { return judge::all_hits(in, tree_, got, calls[2]); })}) {
-    join(s2, other);
-  }
+  join(s2, any_, [&](const KdHit& got) { return judge::any_hit(in, tree_, got, calls[1]); });
+  join(s2, all_, [&](const KdHits& got) { return judge::all_hits(in, tree_, got, calls[2]); });
   int met = 0;
   for (const LeafBox& l : leaves_) met += segment_meets(l.cell, segment_);
   const auto hit_text = [](const Attempt<KdHit>& h) {
@@ -418,8 +416,7 @@ void SpatialTreesScene::update_bsp() {
   Step s3 = judged("L06S3", "build_bsp, classify", bsp_, [&](const BspTree& got) { return judge::bsp_tree(mesh_, got); });
   if (bsp_) {
     where_ = attempt([&] { return classify(*bsp_, point_); });
-    const Step c = judged("", "", where_, [&](Where got) { return judge::classify(in, got); });
-    join(s3, c);
+    join(s3, where_, [&](Where got) { return judge::classify(in, got); });
     s3.rows = {{"nodes, pieces", std::to_string(bsp_->nodes.size()) + ", " + std::to_string(bsp_->pieces.size()), ""},
                {"the point is", where_ ? describe(*where_) : "", describe(exact)}};
   }

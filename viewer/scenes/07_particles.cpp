@@ -345,8 +345,7 @@ void ParticlesScene::update_fountain() {
     return judge::births(BirthsCase{emitter_before_, dt, 1}, {got});
   });
   if (births_ && aged_) {
-    const Step a = judged("", "", aged_, [&](const std::vector<Particle>& got) { return judge::age(age_in_, got); });
-    join(s1, a);
+    join(s1, aged_, [&](const std::vector<Particle>& got) { return judge::age(age_in_, got); });
   }
   s1.rows = {{"born this step", births_ ? std::to_string(births_->count) : "", ""},
              {"owed", births_ ? num(births_->owed) : "", ""},
