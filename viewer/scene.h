@@ -1,5 +1,6 @@
 // What every lab's scene is made of (viewer/scenes/NN_name.cpp), and the few helpers
-// they share. A scene has three parts, in this order in its file:
+// they share (shapes to draw are in viewer/shapes.h). A scene has three parts, in this
+// order in its file (the drawing may stand apart, in NN_name.draw.cpp):
 //   setup   its constructor: default inputs, a preset's, or a replay token's (the
 //           token's query picks the scene's mode);
 //   update  runs the student's functions step by step (a stub shows "not implemented
