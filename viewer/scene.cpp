@@ -2,6 +2,8 @@
 
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 
 namespace viewer {
@@ -34,6 +36,28 @@ std::string starting_token(const Setup& setup, const std::vector<Preset>& preset
   if (!setup.token.empty()) return setup.token;
   const Preset* p = find_preset(presets, setup.preset);
   return p && p->token ? p->token : fallback;
+}
+
+void join(Step& step, const Step& other) {
+  step.verdict = worse(step.verdict, other.verdict);
+  if (step.note.empty()) step.note = other.note;
+}
+
+const Preset* Scene::view_preset(const std::vector<Preset>& presets, const Setup& setup) {
+  const Preset* p = find_preset(presets, setup.preset);
+  if (p) yaw = p->yaw, pitch = p->pitch, focus = p->focus;
+  return p;
+}
+
+void Scene::frame(const Eigen::AlignedBox3d& box, double share) {
+  center = box.center();
+  radius = std::max(share * box.diagonal().norm(), 1e-9);
+}
+
+void Scene::draw_ground(Renderer& r) const {
+  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
+  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
+  r.axes();
 }
 
 UnknownQuery unknown_query(const std::string& lab, const std::string& query, const std::string& known) {

@@ -1,5 +1,6 @@
 // What every lab's scene is made of (viewer/scenes/NN_name.cpp), and the few helpers
-// they share. A scene has three parts, in this order in its file:
+// they share (shapes to draw are in viewer/shapes.h). A scene has three parts, in this
+// order in its file (the drawing may stand apart, in NN_name.draw.cpp):
 //   setup   its constructor: default inputs, a preset's, or a replay token's (the
 //           token's query picks the scene's mode);
 //   update  runs the student's functions step by step (a stub shows "not implemented
@@ -15,9 +16,12 @@
 #include "common/harness/codec.h"
 #include "common/not_implemented.h"
 
+#include <Eigen/Geometry>
+
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace viewer {
@@ -113,6 +117,14 @@ inline Verdict worse(Verdict a, Verdict b) {
   return rank(a) >= rank(b) ? a : b;
 }
 
+// A second answer judged within the same step (test_ beside find_, any_hit beside
+// first_hit): the worse verdict shows, and the first note.
+void join(Step& step, const Step& other);
+template <class T, class Judge>
+void join(Step& step, const Attempt<T>& a, Judge&& judge) {
+  join(step, judged("", "", a, std::forward<Judge>(judge)));
+}
+
 // What draw() is given each frame.
 struct Frame {
   Renderer& render;
@@ -153,6 +165,14 @@ class Scene {
   double radius = 1;
   float yaw = -60, pitch = 28;
   int focus = 0;
+
+ protected:
+  // The preset named in `setup` (or null), its camera and focus taken.
+  const Preset* view_preset(const std::vector<Preset>& presets, const Setup& setup);
+  // The camera frames `box`: its centre, and `share` of its diagonal as the radius.
+  void frame(const Eigen::AlignedBox3d& box, double share = 0.5);
+  // The ground grid, spaced to the framed radius, and the axes: every draw() starts so.
+  void draw_ground(Renderer& r) const;
 };
 
 // Helpers for the panel and for scenes' text.
@@ -160,6 +180,8 @@ bool edit(const char* label, labkit::Vec3& v, float speed = 0.05f);
 bool edit(const char* label, double& x, float speed = 0.05f, double low = 0, double high = 0);
 std::string num(double x);                 // 4 significant digits, for the screen
 std::string num(const labkit::Vec3& v);
+// A yes/no answer in the panel, in the step's own words ("hit" / "miss").
+inline std::string yes_no(bool b, const char* yes = "yes", const char* no = "no") { return b ? yes : no; }
 const Preset* find_preset(const std::vector<Preset>& presets, const std::string& name);
 // The token a scene starts from: the replay token, a preset's, or `fallback`.
 std::string starting_token(const Setup& setup, const std::vector<Preset>& presets, const std::string& fallback);

@@ -111,13 +111,19 @@ Mesh terrain_mesh(int triangles, std::uint64_t seed) {
   std::vector<Wave> waves;
   for (int i = 0; i < 6; ++i)
     waves.push_back({random.uniform(-12, 12), random.uniform(-12, 12), random.uniform(0, 2 * kPi), 0.04 / (1 + i % 3)});
+  return height_field(n, 0, 1, 0, 1, [&](double x, double y) {
+    double z = 0;
+    for (const Wave& w : waves) z += w.amplitude * std::sin(w.kx * x + w.ky * y + w.phase);
+    return z;
+  });
+}
+
+Mesh height_field(int n, double x0, double x1, double y0, double y1, const std::function<double(double, double)>& height) {
   Mesh m;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j) {
-      const double x = double(i) / n, y = double(j) / n;
-      double z = 0;
-      for (const Wave& w : waves) z += w.amplitude * std::sin(w.kx * x + w.ky * y + w.phase);
-      m.vertices.push_back({x, y, z});
+      const double x = x0 + (x1 - x0) * i / n, y = y0 + (y1 - y0) * j / n;
+      m.vertices.push_back({x, y, height(x, y)});
     }
   const auto at = [n](int i, int j) { return i * (n + 1) + j; };
   for (int i = 0; i < n; ++i)
@@ -126,6 +132,13 @@ Mesh terrain_mesh(int triangles, std::uint64_t seed) {
       m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
   return m;
+}
+
+void add_square(Mesh& mesh, double side, double z) {
+  const int base = int(mesh.vertices.size());
+  mesh.vertices.insert(mesh.vertices.end(), {{0, 0, z}, {side, 0, z}, {side, side, z}, {0, side, z}});
+  mesh.triangles.push_back({base, base + 1, base + 2});
+  mesh.triangles.push_back({base, base + 2, base + 3});
 }
 
 Mesh soup_mesh(int triangles, std::uint64_t seed) {
@@ -274,15 +287,7 @@ rc::Gen<Mesh> flat_terrain() {
   return rc::gen::exec([] {
     const Placement p = *placement();
     const int n = *rc::gen::inRange(1, 5);
-    Mesh m;
-    for (int i = 0; i <= n; ++i)
-      for (int j = 0; j <= n; ++j) m.vertices.push_back(Vec3(i, j, *rc::gen::element(0, 0, 1, 2)));
-    const auto at = [n](int i, int j) { return i * (n + 1) + j; };
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-        m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-      }
+    const Mesh m = height_field(n, 0, n, 0, n, [](double, double) { return double(*rc::gen::element(0, 0, 1, 2)); });
     return moved(m, p);
   });
 }

@@ -8,24 +8,14 @@
 //   two moving meshes     first_contact_moving_meshes                 step 7
 // The student's answers are drawn in the colour of their verdict; the exact answers
 // (the toggle) are violet rings and arrows beside them.
-#include "viewer/scenes/scenes.h"
+#include "viewer/scenes/02_segment_triangle.h"
 
-#include "02_segment_triangle.judge.h"
-#include "common/oracle/moving_meshes.h"
+#include "common/generators/meshes.h"
 #include "common/oracle/oracle.h"
-#include "segment_triangle.h"
-
-#include <imgui.h>
 
 #include <cmath>
 
-namespace viewer {
-namespace {
-
-using namespace labkit;
-using namespace labkit::lab02;
-
-enum class Mode { triangle, point, mesh, moving, contact };
+namespace viewer::segment_triangle {
 
 const std::vector<Preset> kPresets = {
     {"crossing", "the crossing point: d_a = 3, d_b = -1, so t = 3/4",
@@ -42,31 +32,6 @@ const std::vector<Preset> kPresets = {
     {"mesh-100k", "a terrain of 100,352 triangles", nullptr},
 };
 
-// The square [0, 4]^2 at height z, as two triangles (the tests' floor and shelf).
-void add_square(Mesh& m, double z) {
-  const int base = int(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), {{0, 0, z}, {4, 0, z}, {4, 4, z}, {0, 4, z}});
-  m.triangles.push_back({base, base + 1, base + 2});
-  m.triangles.push_back({base, base + 2, base + 3});
-}
-
-// Rolling hills of 2 n^2 triangles over [0, 8]^2.
-Mesh terrain(int n) {
-  Mesh m;
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j) {
-      const double x = 8.0 * i / n, y = 8.0 * j / n;
-      m.vertices.push_back({x, y, 0.6 * std::sin(x * 1.3) * std::cos(y * 0.9)});
-    }
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const int v = i * (n + 1) + j;
-      m.triangles.push_back({v, v + n + 1, v + n + 2});
-      m.triangles.push_back({v, v + n + 2, v + 1});
-    }
-  return m;
-}
-
 // Weights (w0, w1, w2) of x in the triangle, in long double: the "exact" column of
 // step 3 and 4 (the judges check that the student's weights reproduce the point).
 Vec3 weights(const Vec3& x, const Triangle& t) {
@@ -79,64 +44,19 @@ Vec3 weights(const Vec3& x, const Triangle& t) {
   return Vec3(double(1 - alpha - beta), double(alpha), double(beta));
 }
 
-std::string yes(bool b, const char* y = "yes", const char* n = "no") { return b ? y : n; }
-
-class SegmentTriangleScene : public Scene {
- public:
-  explicit SegmentTriangleScene(const Setup& setup);
-  void update() override;
-  void draw(Frame& frame) override;
-  bool inputs() override;
-  std::vector<Handle> handles() override;
-  std::string token() const override;
-
- private:
-  void frame_inputs();
-  void draw_triangle(Renderer& r, bool plane) const;
-  void draw_mesh(Renderer& r, const Mesh& mesh, const RigidTransform& pose, Color c, bool filled) const;
-  void draw_steps_1_to_4(Frame& f) const;
-  void draw_hits(Frame& f) const;
-  void draw_contact(Frame& f) const;
-
-  Mode mode_ = Mode::triangle;
-  Segment segment_{{1, 1, 3}, {1, 1, -1}};
-  Triangle triangle_{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}};
-  Vec3 x_ = Vec3::Zero();  // point mode: the point tested
-  Mesh mesh_;
-  RigidTransform m0_ = RigidTransform::Identity(), m1_ = RigidTransform::Identity();
-  Plane plane_;            // the triangle's plane, where x slides
-  std::optional<Triangle> last_triangle_;  // point mode: x follows the plane when it moves
-
-  // The student's answers, the exact ones, and each step's verdict.
-  Attempt<PlaneCrossing> crossing_;
-  Attempt<bool> inside_edges_, inside_barycentric_, test_, any_;
-  Attempt<Barycentric> barycentric_;
-  Attempt<SegmentTriangleHit> find_;
-  Attempt<MeshHit> first_;
-  Attempt<std::vector<MeshHit>> all_;
-  MovingMeshes meshes_;            // contact mode: the two meshes and their velocities
-  Attempt<MeshContact> contact_;
-  oracle::MeshContact exact_contact_;
-  std::optional<Vec3> probe_;  // the point steps 2 and 3 test
-  oracle::PlaneCrossing exact_crossing_;
-  oracle::SegmentHit exact_hit_;
-  std::vector<oracle::SegmentHit> exact_hits_;
-  Verdict verdict_[9] = {};
-};
 
 // ---- setup ---------------------------------------------------------------------------
 
 SegmentTriangleScene::SegmentTriangleScene(const Setup& setup) {
-  const Preset* preset = find_preset(kPresets, setup.preset);
-  if (preset) yaw = preset->yaw, pitch = preset->pitch, focus = preset->focus;
+  const Preset* preset = view_preset(kPresets, setup);
   if (setup.token.empty() && preset && !preset->token) {
     mode_ = preset->name == std::string("moving") ? Mode::moving : Mode::mesh;
     if (preset->name == std::string("mesh-100k")) {
-      mesh_ = terrain(224);
+      mesh_ = gen::height_field(224, 0, 8, 0, 8, [](double x, double y) { return 0.6 * std::sin(x * 1.3) * std::cos(y * 0.9); });
       segment_ = {{1.5, 6.5, 3}, {6.5, 1.5, -1}};
     } else {
-      add_square(mesh_, 0);
-      if (mode_ == Mode::mesh) add_square(mesh_, 2), segment_ = {{1, 3, 5}, {1, 3, -1}};
+      gen::add_square(mesh_, 4, 0);  // the tests' floor, and the shelf above it
+      if (mode_ == Mode::mesh) gen::add_square(mesh_, 4, 2), segment_ = {{1, 3, 5}, {1, 3, -1}};
       else m1_.translation() = Vec3(0, 0, 2), segment_ = {{1, 2.5, 3}, {1, 2.5, 0.5}};
     }
     frame_inputs();
@@ -183,372 +103,7 @@ void SegmentTriangleScene::frame_inputs() {
   if (mode_ == Mode::moving) points.push_back(m1_ * (m0_.inverse() * segment_.a));
   Eigen::AlignedBox3d box;
   for (const Vec3& p : points) box.extend(p);
-  center = box.center();
-  radius = std::max(0.5 * box.diagonal().norm(), 1e-9);
-}
-
-// ---- update --------------------------------------------------------------------------
-
-std::string describe_hits(const std::vector<MeshHit>& hits) {
-  std::string s;
-  for (const MeshHit& h : hits) s += (s.empty() ? "" : ", ") + std::to_string(h.triangle) + " at " + num(h.t);
-  return s.empty() ? "none" : s;
-}
-
-void SegmentTriangleScene::update() {
-  steps.clear();
-  const Segment& s = segment_;
-  const Triangle& tri = triangle_;
-  plane_ = {tri.normal(), -tri.normal().dot(tri.v0)};
-  const bool moved = last_triangle_ && (last_triangle_->v0 != tri.v0 || last_triangle_->v1 != tri.v1 || last_triangle_->v2 != tri.v2);
-  if (mode_ == Mode::point && moved && plane_.normal != Vec3::Zero())
-    x_ -= plane_.value(x_) / plane_.normal.squaredNorm() * plane_.normal;
-  last_triangle_ = tri;
-  if (mode_ == Mode::triangle) {
-    const SegmentTrianglePair in{s, tri};
-    crossing_ = attempt([&] { return segment_plane(s, tri); });
-    exact_crossing_ = oracle::segment_plane(s, tri);
-    Step step = judged("L02S1", "segment_plane: d_a, d_b, the crossing", crossing_,
-                       [&](const PlaneCrossing& got) { return judge::segment_plane(in, got); });
-    const auto& c = crossing_;
-    const auto& e = exact_crossing_;
-    step.rows = {{"d_a", c ? num(c->d_a) : "", num(e.d_a)},
-                 {"d_b", c ? num(c->d_b) : "", num(e.d_b)},
-                 {"crosses", c ? yes(c->crosses) : "", yes(e.crosses)}};
-    if (e.crosses || (c && c->crosses))
-      step.rows.push_back({"t, x", c && c->crosses ? num(c->t) + ", " + num(c->point) : "",
-                           e.crosses ? num(e.t) + ", " + num(e.point) : ""});
-    verdict_[1] = step.verdict;
-    steps.push_back(step);
-    probe_.reset();
-    if (e.crosses) probe_ = e.point;
-  } else if (mode_ == Mode::point) {
-    probe_ = x_;
-  }
-
-  if (mode_ <= Mode::point) {
-    if (!probe_) {
-      steps.push_back({"L02S2", "point_in_triangle_edges", Verdict::none, {}, "no crossing point: nothing to test"});
-      steps.push_back({"L02S3", "barycentric", Verdict::none, {}, "no crossing point: nothing to test"});
-      verdict_[2] = verdict_[3] = Verdict::none;
-    } else {
-      const PointTriangle in{*probe_, tri};
-      const bool inside = oracle::point_in_triangle_projected(*probe_, tri);
-      inside_edges_ = attempt([&] { return point_in_triangle_edges(*probe_, tri); });
-      Step edges = judged("L02S2", "point_in_triangle_edges at x", inside_edges_,
-                          [&](bool got) { return judge::point_in_triangle(in, got); });
-      edges.rows = {{"inside", inside_edges_ ? yes(*inside_edges_) : "", yes(inside)}};
-      barycentric_ = attempt([&] { return barycentric(*probe_, tri); });
-      inside_barycentric_ = attempt([&] { return point_in_triangle_barycentric(*probe_, tri); });
-      Step bary = judged("L02S3", "barycentric, point_in_triangle_barycentric", barycentric_,
-                         [&](const Barycentric& got) { return judge::barycentric(in, got); });
-      const Step inside_step = judged("", "", inside_barycentric_, [&](bool got) { return judge::point_in_triangle(in, got); });
-      bary.verdict = worse(bary.verdict, inside_step.verdict);
-      if (bary.note.empty()) bary.note = inside_step.note;
-      const Vec3 w = weights(*probe_, tri);
-      Vec3 n = oracle::unit_normal(tri).cwiseAbs();
-      int axis = -1;
-      if (n != Vec3::Zero()) n.maxCoeff(&axis);
-      const auto& b = barycentric_;
-      bary.rows = {{"dropped axis", b ? std::to_string(b->dropped_axis) : "", std::to_string(axis)},
-                   {"alpha, beta", b ? num(b->alpha) + ", " + num(b->beta) : "", num(w[1]) + ", " + num(w[2])},
-                   {"inside", inside_barycentric_ ? yes(*inside_barycentric_) : "", yes(inside)}};
-      verdict_[2] = edges.verdict, verdict_[3] = bary.verdict;
-      steps.push_back(edges);
-      steps.push_back(bary);
-    }
-  }
-
-  if (mode_ == Mode::triangle) {
-    const SegmentTrianglePair in{s, tri};
-    test_ = attempt([&] { return test_segment_triangle(s, tri); });
-    find_ = attempt([&] { return find_segment_triangle(s, tri); });
-    exact_hit_ = oracle::segment_triangle(s, tri);
-    Step step = judged("L02S4", "test_ and find_segment_triangle", find_,
-                       [&](const SegmentTriangleHit& got) { return judge::find_segment_triangle(in, got); });
-    const Step t = judged("", "", test_, [&](bool got) { return judge::test_segment_triangle(in, got); });
-    step.verdict = worse(step.verdict, t.verdict);
-    if (step.note.empty()) step.note = t.note;
-    const auto& f = find_;
-    const bool hit = f && f->hit, exact = exact_hit_.hit;
-    step.rows = {{"test", test_ ? yes(*test_, "hit", "miss") : "", yes(exact, "hit", "miss")},
-                 {"find: hit", f ? yes(f->hit) : "", yes(exact)}};
-    if (hit || exact) {
-      step.rows.push_back({"t", hit ? num(f->t) : "", exact ? num(exact_hit_.t) : ""});
-      step.rows.push_back({"point", hit ? num(f->point) : "", exact ? num(exact_hit_.point) : ""});
-      step.rows.push_back({"weights", hit ? num(f->barycentric) : "", exact ? num(weights(exact_hit_.point, tri)) : ""});
-      step.rows.push_back({"normal", hit ? num(f->normal) : "", num(oracle::unit_normal(tri))});
-    }
-    verdict_[4] = step.verdict;
-    steps.push_back(step);
-  }
-
-  if (mode_ == Mode::mesh) {
-    const SegmentMeshPair in{s, mesh_};
-    first_ = attempt([&] { return first_hit(s, mesh_); });
-    any_ = attempt([&] { return any_hit(s, mesh_); });
-    all_ = attempt([&] { return all_hits(s, mesh_); });
-    exact_hits_ = oracle::segment_mesh_hits(s, mesh_);
-    Step step = judged("L02S5", "first_hit, any_hit, all_hits", first_,
-                       [&](const MeshHit& got) { return judge::first_hit(in, got); });
-    for (const Step& other : {judged("", "", any_, [&](bool got) { return judge::any_hit(in, got); }),
-                              judged("", "", all_, [&](const std::vector<MeshHit>& got) { return judge::all_hits(in, got); })}) {
-      step.verdict = worse(step.verdict, other.verdict);
-      if (step.note.empty()) step.note = other.note;
-    }
-    std::vector<MeshHit> exact;
-    for (const oracle::SegmentHit& h : exact_hits_) exact.push_back({true, h.triangle, h.t, h.point, Vec3::Zero(), Vec3::Zero()});
-    const auto& f = first_;
-    step.rows = {{"any_hit", any_ ? yes(*any_) : "", yes(!exact.empty())},
-                 {"first: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "",
-                  exact.empty() ? "none" : std::to_string(exact[0].triangle)},
-                 {"first: t, point", f && f->hit ? num(f->t) + ", " + num(f->point) : "",
-                  exact.empty() ? "" : num(exact[0].t) + ", " + num(exact[0].point)},
-                 {"all (triangle at t)", all_ ? describe_hits(*all_).substr(0, 60) : "", describe_hits(exact).substr(0, 60)}};
-    verdict_[5] = step.verdict;
-    steps.push_back(step);
-  }
-
-  if (mode_ == Mode::moving) {
-    const MovingMesh in{s, mesh_, m0_, m1_};
-    first_ = attempt([&] { return first_hit_moving(s, mesh_, m0_, m1_); });
-    exact_hits_ = oracle::moving_mesh_hits(s, mesh_, m0_, m1_);
-    Step step = judged("L02S6", "first_hit_moving", first_, [&](const MeshHit& got) { return judge::first_hit_moving(in, got); });
-    const auto& f = first_;
-    const oracle::SegmentHit* e = exact_hits_.empty() ? nullptr : &exact_hits_[0];
-    step.rows = {{"hit: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "", e ? std::to_string(e->triangle) : "none"},
-                 {"t", f && f->hit ? num(f->t) : "", e ? num(e->t) : ""},
-                 {"point (at m1)", f && f->hit ? num(f->point) : "", e ? num(e->point) : ""}};
-    verdict_[6] = step.verdict;
-    steps.push_back(step);
-  }
-
-  if (mode_ == Mode::contact) {
-    const MovingMeshes& in = meshes_;
-    contact_ = attempt([&] { return first_contact_moving_meshes(in.a, in.velocity_a, in.b, in.velocity_b); });
-    exact_contact_ = oracle::first_contact_translating(in.a, in.velocity_a, in.b, in.velocity_b);
-    Step step = judged("L02S7", "first_contact_moving_meshes", contact_,
-                       [&](const MeshContact& got) { return judge::first_contact_moving_meshes(in, got); });
-    const auto& c = contact_;
-    const auto& e = exact_contact_;
-    const char* kinds[] = {"vertex of A on a face of B", "vertex of B on a face of A", "edge against edge"};
-    step.rows = {{"contact", c ? yes(c->hit) : "", yes(e.hit)},
-                 {"t", c && c->hit ? num(c->t) : "", e.hit ? num(e.t) : ""},
-                 {"point", c && c->hit ? num(c->point) : "", e.hit ? num(e.point) : ""},
-                 {"family", "", e.hit ? kinds[e.kind] : ""}};
-    verdict_[7] = step.verdict;
-    steps.push_back(step);
-  }
-}
-
-// ---- draw ----------------------------------------------------------------------------
-
-void SegmentTriangleScene::draw_triangle(Renderer& r, bool plane) const {
-  const Triangle& t = triangle_;
-  const Vec3 c = (t.v0 + t.v1 + t.v2) / 3, n = oracle::unit_normal(t);
-  const double size = std::max({(t.v1 - t.v0).norm(), (t.v2 - t.v1).norm(), (t.v0 - t.v2).norm()});
-  if (plane && n != Vec3::Zero()) {  // a faint square of the triangle's plane around it
-    const Vec3 u = (t.v1 - t.v0).normalized(), w = n.cross(u);
-    const Vec3 p[4] = {c + size * (u + w), c + size * (-u + w), c + size * (-u - w), c + size * (u - w)};
-    r.triangle(p[0], p[1], p[2], palette::surface.with_alpha(0.10f));
-    r.triangle(p[0], p[2], p[3], palette::surface.with_alpha(0.10f));
-  }
-  r.triangle(t.v0, t.v1, t.v2, palette::surface.with_alpha(0.72f));
-  for (int i = 0; i < 3; ++i) {
-    r.line(t[i], t[(i + 1) % 3], palette::surface, 2);
-    r.label(t[i], "v" + std::to_string(i), palette::muted);
-  }
-  if (n != Vec3::Zero()) {
-    r.arrow(c, c + 0.3 * size * n, palette::muted, 2);
-    r.label(c + 0.3 * size * n, "n", palette::muted);
-  }
-}
-
-void SegmentTriangleScene::draw_mesh(Renderer& r, const Mesh& mesh, const RigidTransform& pose, Color c, bool filled) const {
-  const bool edges = mesh.size() <= 20000;
-  for (std::size_t i = 0; i < mesh.size(); ++i) {
-    const Triangle t = mesh.triangle(i);
-    const Vec3 a = pose * t.v0, b = pose * t.v1, d = pose * t.v2;
-    if (filled) r.triangle(a, b, d, c);
-    if (!edges) continue;
-    const Color e = filled ? Color{0.30f, 0.40f, 0.55f} : c;
-    r.line(a, b, e, 1), r.line(b, d, e, 1), r.line(d, a, e, 1);
-  }
-}
-
-void SegmentTriangleScene::draw_steps_1_to_4(Frame& f) const {
-  Renderer& r = f.render;
-  const Triangle& t = triangle_;
-  const Vec3 n = oracle::unit_normal(t);
-  const Segment& s = segment_;
-  if (mode_ == Mode::triangle && crossing_ && f.shows(1)) {  // step 1: the distances as drops to the plane
-    const Color c = colour(verdict_[1]);
-    r.dashed(s.a, s.a - crossing_->d_a * n, c, 2);
-    r.dashed(s.b, s.b - crossing_->d_b * n, c, 2);
-    r.label(s.a - 0.5 * crossing_->d_a * n, "d_a = " + num(crossing_->d_a), c);
-    r.label(s.b - 0.5 * crossing_->d_b * n, "d_b = " + num(crossing_->d_b), c);
-    if (crossing_->crosses) {
-      r.point(crossing_->point, c, 5);
-      r.label(crossing_->point, "x   t = " + num(crossing_->t), c, 12, 10);
-    }
-  }
-  if (f.show_exact && mode_ == Mode::triangle && exact_crossing_.crosses && (f.shows(1) || f.shows(4))) r.ring(exact_crossing_.point, palette::exact, 9);
-  if (probe_ && barycentric_ && barycentric_->dropped_axis >= 0 && f.shows(3)) {  // step 3: x = v0 + alpha e1 + beta e2
-    const Color c = colour(verdict_[3]);
-    const Vec3 p = t.v0 + barycentric_->alpha * (t.v1 - t.v0);
-    r.arrow(t.v0, p, c, 2.5f);
-    r.arrow(p, p + barycentric_->beta * (t.v2 - t.v0), c, 2.5f);
-    r.label(0.5 * (t.v0 + p), "alpha = " + num(barycentric_->alpha), c, 4, 10);
-    r.label(p + 0.5 * barycentric_->beta * (t.v2 - t.v0), "beta = " + num(barycentric_->beta), c, 8, 0);
-  }
-  if (probe_ && inside_edges_ && f.shows(2))
-    r.label(*probe_, *inside_edges_ ? "inside" : "outside", colour(verdict_[2]), 12, mode_ == Mode::point ? 12 : -28);
-  if (mode_ == Mode::point && f.show_exact) r.ring(x_, palette::exact, 9);
-  if (mode_ != Mode::triangle || !f.shows(4)) return;
-  const double size = std::max((t.v1 - t.v0).norm(), (t.v2 - t.v0).norm());
-  if (find_ && find_->hit) {  // step 4: the hit and its normal
-    const Color c = colour(verdict_[4]);
-    r.ring(find_->point, c, 15, 2.5f);
-    r.arrow(find_->point, find_->point + 0.3 * size * find_->normal, c, 2.5f);
-  } else if (find_) {
-    r.label(0.5 * (s.a + s.b), "find: miss", colour(verdict_[4]), 12, 0);
-  }
-  if (f.show_exact && exact_hit_.hit) r.arrow(exact_hit_.point, exact_hit_.point + 0.3 * size * n, palette::exact, 1.5f);
-}
-
-void SegmentTriangleScene::draw_hits(Frame& f) const {
-  Renderer& r = f.render;
-  const Color c = colour(verdict_[mode_ == Mode::mesh ? 5 : 6]);
-  const RigidTransform& pose = mode_ == Mode::moving ? m1_ : RigidTransform::Identity();
-  if (all_ && mode_ == Mode::mesh)
-    for (std::size_t k = 0; k < all_->size(); ++k) {
-      r.point((*all_)[k].point, c, 5);
-      r.label((*all_)[k].point, std::to_string(k + 1), c, 10, 8);
-    }
-  if (first_ && first_->hit) {
-    if (first_->triangle >= 0 && std::size_t(first_->triangle) < mesh_.size()) {
-      const Triangle t = mesh_.triangle(std::size_t(first_->triangle));
-      r.triangle(pose * t.v0, pose * t.v1, pose * t.v2, c.with_alpha(0.45f));
-    }
-    r.point(first_->point, c, 5);
-    r.ring(first_->point, c, 15, 2.5f);
-    r.label(first_->point, "first hit   t = " + num(first_->t), c, 18, -16);
-  }
-  if (!f.show_exact) return;
-  for (const oracle::SegmentHit& h : exact_hits_) r.ring(h.point, palette::exact, 9);
-  if (!exact_hits_.empty()) {
-    const Triangle t = mesh_.triangle(std::size_t(exact_hits_[0].triangle));
-    for (int i = 0; i < 3; ++i) r.line(pose * t[i], pose * t[(i + 1) % 3], palette::exact, 2);
-  }
-}
-
-// Step 7: A and B at t = 0 (outlines) and at the contact time (filled); the vertex paths
-// of the contact's family, or the parallelogram its edge of A sweeps, seen from B.
-void SegmentTriangleScene::draw_contact(Frame& f) const {
-  Renderer& r = f.render;
-  const MovingMeshes& in = meshes_;
-  const Vec3 d = in.velocity_a - in.velocity_b;
-  const bool got = contact_ && contact_->hit;
-  const double t = got ? contact_->t : exact_contact_.hit ? exact_contact_.t : 1.0;
-  const Color c = colour(verdict_[7]);
-  RigidTransform at0 = RigidTransform::Identity(), a_t = at0, b_t = at0;
-  a_t.translation() = t * in.velocity_a, b_t.translation() = t * in.velocity_b;
-  draw_mesh(r, in.a, at0, palette::muted.with_alpha(0.7f), false);
-  draw_mesh(r, in.b, at0, palette::muted.with_alpha(0.7f), false);
-  if (!in.a.vertices.empty()) r.label(in.a.vertices[0], "A at t = 0", palette::muted);
-  draw_mesh(r, in.b, b_t, palette::surface, true);
-  draw_mesh(r, in.a, a_t, palette::input.with_alpha(0.55f), true);
-  if (!in.a.vertices.empty()) r.label(a_t * in.a.vertices[0], "A at t = " + num(t), palette::input);
-  if (!in.b.vertices.empty()) r.label(b_t * in.b.vertices[0], "B", palette::surface);
-  const auto centre = [](const Mesh& m) {
-    Vec3 sum = Vec3::Zero();
-    for (const Vec3& v : m.vertices) sum += v;
-    return m.vertices.empty() ? sum : Vec3(sum / double(m.vertices.size()));
-  };
-  if (in.velocity_a != Vec3::Zero()) r.arrow(centre(in.a), centre(in.a) + in.velocity_a, palette::input, 2), r.label(centre(in.a) + in.velocity_a, "va", palette::input);
-  if (in.velocity_b != Vec3::Zero()) r.arrow(centre(in.b), centre(in.b) + in.velocity_b, palette::surface, 2), r.label(centre(in.b) + in.velocity_b, "vb", palette::surface);
-  const oracle::MeshContact& e = exact_contact_;
-  if (e.hit && e.kind == 2) {  // the swept parallelogram of the contact's edge of A, in B's frame (B still)
-    const auto edge = oracle::mesh_edges(in.a)[std::size_t(e.feature_a)];
-    const Vec3 p0 = in.a.vertices[std::size_t(edge[0])], p1 = in.a.vertices[std::size_t(edge[1])];
-    const Vec3 o = t * in.velocity_b;  // drawn where B is at the contact
-    r.triangle(o + p0, o + p1, o + p1 + d, palette::exact.with_alpha(0.22f));
-    r.triangle(o + p0, o + p1 + d, o + p0 + d, palette::exact.with_alpha(0.16f));
-    r.dashed(o + p1, o + p0 + d, palette::exact, 1.5f);
-    r.line(o + p0 + d, o + p1 + d, palette::exact, 1.5f);
-    r.label(o + p1 + d, "p1 + d", palette::exact);
-    r.label(o + p0 + d, "p0 + d", palette::exact);
-  } else if (e.hit && e.kind <= 1) {  // the vertex's path seen from the other mesh
-    const Vec3 p = e.kind == 0 ? in.a.vertices[std::size_t(e.feature_a)] : in.b.vertices[std::size_t(e.feature_b)];
-    const Vec3 o = t * (e.kind == 0 ? in.velocity_b : in.velocity_a);
-    r.dashed(o + p, o + p + (e.kind == 0 ? d : Vec3(-d)), palette::exact, 1.5f);
-  }
-  if (got) {
-    r.point(contact_->point, c, 5);
-    r.ring(contact_->point, c, 15, 2.5f);
-    r.label(contact_->point, "contact   t = " + num(contact_->t), c, 18, -16);
-  }
-  if (f.show_exact && e.hit) r.ring(e.point, palette::exact, 9);
-}
-
-void SegmentTriangleScene::draw(Frame& f) {
-  Renderer& r = f.render;
-  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
-  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
-  r.axes();
-  if (mode_ == Mode::contact) {
-    draw_contact(f);
-    return;
-  }
-  if (mode_ <= Mode::point) {
-    draw_triangle(r, mode_ == Mode::triangle);
-    draw_steps_1_to_4(f);
-  } else {
-    if (mode_ == Mode::moving) {  // the mesh at m0, faint; the particle's path in the mesh's frame
-      draw_mesh(r, mesh_, m0_, palette::muted.with_alpha(0.6f), false);
-      if (!mesh_.vertices.empty()) r.label(m0_ * mesh_.vertices[0], "the mesh at m0", palette::muted);
-      if (!mesh_.vertices.empty()) r.label(m1_ * mesh_.vertices[0], "at m1", palette::surface);
-      const Vec3 a = m1_ * (m0_.inverse() * segment_.a);
-      r.dashed(a, segment_.b, palette::muted, 1.5f);
-      r.label(a, "a seen from the mesh", palette::muted);
-    }
-    draw_mesh(r, mesh_, mode_ == Mode::moving ? m1_ : RigidTransform::Identity(), palette::surface, true);
-    draw_hits(f);
-  }
-  if (mode_ != Mode::point) {
-    r.line(segment_.a, segment_.b, palette::input, 2.5f);
-    r.point(segment_.a, palette::input, 6), r.point(segment_.b, palette::input, 6);
-    r.label(segment_.a, "a", palette::input), r.label(segment_.b, "b", palette::input);
-  } else {
-    r.point(x_, palette::input, 6);
-    r.label(x_, "x", palette::input);
-  }
-}
-
-bool SegmentTriangleScene::inputs() {
-  bool changed = false;
-  if (mode_ != Mode::point) changed |= edit("a", segment_.a) | edit("b", segment_.b);
-  if (mode_ == Mode::point) changed |= edit("x", x_);
-  if (mode_ <= Mode::point)
-    changed |= edit("v0", triangle_.v0) | edit("v1", triangle_.v1) | edit("v2", triangle_.v2);
-  if (mode_ == Mode::contact)
-    return edit("velocity_a", meshes_.velocity_a) | edit("velocity_b", meshes_.velocity_b);
-  if (mode_ >= Mode::mesh) ImGui::TextDisabled("mesh: %zu vertices, %zu triangles", mesh_.vertices.size(), mesh_.size());
-  if (mode_ == Mode::moving) {
-    Vec3 t0 = m0_.translation(), t1 = m1_.translation();
-    if (edit("m0 translation", t0)) m0_.translation() = t0, changed = true;
-    if (edit("m1 translation", t1)) m1_.translation() = t1, changed = true;
-  }
-  return changed;
-}
-
-std::vector<Handle> SegmentTriangleScene::handles() {
-  std::vector<Handle> h;
-  if (mode_ == Mode::contact) return h;
-  if (mode_ == Mode::point) h.push_back({&x_, "x", &plane_});
-  else h.insert(h.end(), {{&segment_.a, "a"}, {&segment_.b, "b"}});
-  if (mode_ <= Mode::point) h.insert(h.end(), {{&triangle_.v0, "v0"}, {&triangle_.v1, "v1"}, {&triangle_.v2, "v2"}});
-  return h;
+  frame(box);
 }
 
 std::string SegmentTriangleScene::token() const {
@@ -562,9 +117,173 @@ std::string SegmentTriangleScene::token() const {
   return replay_token("first_hit_moving", MovingMesh{segment_, mesh_, m0_, m1_});
 }
 
-}  // namespace
+// ---- update --------------------------------------------------------------------------
 
-std::unique_ptr<Scene> make_segment_triangle(const Setup& setup) { return std::make_unique<SegmentTriangleScene>(setup); }
-const std::vector<Preset>& segment_triangle_presets() { return kPresets; }
+std::string describe_hits(const std::vector<MeshHit>& hits) {
+  std::string s;
+  for (const MeshHit& h : hits) s += (s.empty() ? "" : ", ") + std::to_string(h.triangle) + " at " + num(h.t);
+  return s.empty() ? "none" : s;
+}
+
+void SegmentTriangleScene::update() {
+  steps.clear();
+  switch (mode_) {
+    case Mode::triangle: update_triangle(); break;
+    case Mode::point: update_point(); break;
+    case Mode::mesh: update_mesh(); break;
+    case Mode::moving: update_moving(); break;
+    case Mode::contact: update_contact(); break;
+  }
+}
+
+// Steps 1 to 4: the crossing point, tested as step 2 and 3 test a point, then the hit.
+void SegmentTriangleScene::update_triangle() {
+  const Segment& s = segment_;
+  const Triangle& tri = triangle_;
+  const SegmentTrianglePair in{s, tri};
+  crossing_ = attempt([&] { return segment_plane(s, tri); });
+  exact_crossing_ = oracle::segment_plane(s, tri);
+  Step one = judged("L02S1", "segment_plane: d_a, d_b, the crossing", crossing_,
+                    [&](const PlaneCrossing& got) { return judge::segment_plane(in, got); });
+  const auto& c = crossing_;
+  const auto& e = exact_crossing_;
+  one.rows = {{"d_a", c ? num(c->d_a) : "", num(e.d_a)},
+              {"d_b", c ? num(c->d_b) : "", num(e.d_b)},
+              {"crosses", c ? yes_no(c->crosses) : "", yes_no(e.crosses)}};
+  if (e.crosses || (c && c->crosses))
+    one.rows.push_back({"t, x", c && c->crosses ? num(c->t) + ", " + num(c->point) : "", e.crosses ? num(e.t) + ", " + num(e.point) : ""});
+  verdict_[1] = one.verdict;
+  steps.push_back(one);
+  probe_.reset();
+  if (e.crosses) probe_ = e.point;
+  update_probe();
+
+  test_ = attempt([&] { return test_segment_triangle(s, tri); });
+  find_ = attempt([&] { return find_segment_triangle(s, tri); });
+  exact_hit_ = oracle::segment_triangle(s, tri);
+  Step four = judged("L02S4", "test_ and find_segment_triangle", find_,
+                     [&](const SegmentTriangleHit& got) { return judge::find_segment_triangle(in, got); });
+  join(four, test_, [&](bool got) { return judge::test_segment_triangle(in, got); });
+  const auto& f = find_;
+  const bool hit = f && f->hit, exact = exact_hit_.hit;
+  four.rows = {{"test", test_ ? yes_no(*test_, "hit", "miss") : "", yes_no(exact, "hit", "miss")},
+               {"find: hit", f ? yes_no(f->hit) : "", yes_no(exact)}};
+  if (hit || exact) {
+    four.rows.push_back({"t", hit ? num(f->t) : "", exact ? num(exact_hit_.t) : ""});
+    four.rows.push_back({"point", hit ? num(f->point) : "", exact ? num(exact_hit_.point) : ""});
+    four.rows.push_back({"weights", hit ? num(f->barycentric) : "", exact ? num(weights(exact_hit_.point, tri)) : ""});
+    four.rows.push_back({"normal", hit ? num(f->normal) : "", num(oracle::unit_normal(tri))});
+  }
+  verdict_[4] = four.verdict;
+  steps.push_back(four);
+}
+
+// Steps 2 and 3 on the point x, which slides along the triangle's plane when it moves.
+void SegmentTriangleScene::update_point() {
+  const Triangle& tri = triangle_;
+  plane_ = {tri.normal(), -tri.normal().dot(tri.v0)};
+  const bool moved = last_triangle_ && (last_triangle_->v0 != tri.v0 || last_triangle_->v1 != tri.v1 || last_triangle_->v2 != tri.v2);
+  if (moved && plane_.normal != Vec3::Zero()) x_ -= plane_.value(x_) / plane_.normal.squaredNorm() * plane_.normal;
+  last_triangle_ = tri;
+  probe_ = x_;
+  update_probe();
+}
+
+// Steps 2 and 3: is the probe inside, by the edges and by its barycentric weights?
+void SegmentTriangleScene::update_probe() {
+  const Triangle& tri = triangle_;
+  if (!probe_) {
+    steps.push_back({"L02S2", "point_in_triangle_edges", Verdict::none, {}, "no crossing point: nothing to test"});
+    steps.push_back({"L02S3", "barycentric", Verdict::none, {}, "no crossing point: nothing to test"});
+    verdict_[2] = verdict_[3] = Verdict::none;
+    return;
+  }
+  const PointTriangle in{*probe_, tri};
+  const bool inside = oracle::point_in_triangle_projected(*probe_, tri);
+  inside_edges_ = attempt([&] { return point_in_triangle_edges(*probe_, tri); });
+  Step edges = judged("L02S2", "point_in_triangle_edges at x", inside_edges_,
+                      [&](bool got) { return judge::point_in_triangle(in, got); });
+  edges.rows = {{"inside", inside_edges_ ? yes_no(*inside_edges_) : "", yes_no(inside)}};
+  barycentric_ = attempt([&] { return barycentric(*probe_, tri); });
+  inside_barycentric_ = attempt([&] { return point_in_triangle_barycentric(*probe_, tri); });
+  Step bary = judged("L02S3", "barycentric, point_in_triangle_barycentric", barycentric_,
+                     [&](const Barycentric& got) { return judge::barycentric(in, got); });
+  join(bary, inside_barycentric_, [&](bool got) { return judge::point_in_triangle(in, got); });
+  const Vec3 w = weights(*probe_, tri);
+  Vec3 n = oracle::unit_normal(tri).cwiseAbs();
+  int axis = -1;
+  if (n != Vec3::Zero()) n.maxCoeff(&axis);
+  const auto& b = barycentric_;
+  bary.rows = {{"dropped axis", b ? std::to_string(b->dropped_axis) : "", std::to_string(axis)},
+               {"alpha, beta", b ? num(b->alpha) + ", " + num(b->beta) : "", num(w[1]) + ", " + num(w[2])},
+               {"inside", inside_barycentric_ ? yes_no(*inside_barycentric_) : "", yes_no(inside)}};
+  verdict_[2] = edges.verdict, verdict_[3] = bary.verdict;
+  steps.push_back(edges);
+  steps.push_back(bary);
+}
+
+void SegmentTriangleScene::update_mesh() {
+  const Segment& s = segment_;
+  const SegmentMeshPair in{s, mesh_};
+  first_ = attempt([&] { return first_hit(s, mesh_); });
+  any_ = attempt([&] { return any_hit(s, mesh_); });
+  all_ = attempt([&] { return all_hits(s, mesh_); });
+  exact_hits_ = oracle::segment_mesh_hits(s, mesh_);
+  Step step = judged("L02S5", "first_hit, any_hit, all_hits", first_, [&](const MeshHit& got) { return judge::first_hit(in, got); });
+  join(step, any_, [&](bool got) { return judge::any_hit(in, got); });
+  join(step, all_, [&](const std::vector<MeshHit>& got) { return judge::all_hits(in, got); });
+  std::vector<MeshHit> exact;
+  for (const oracle::SegmentHit& h : exact_hits_) exact.push_back({true, h.triangle, h.t, h.point, Vec3::Zero(), Vec3::Zero()});
+  const auto& f = first_;
+  step.rows = {{"any_hit", any_ ? yes_no(*any_) : "", yes_no(!exact.empty())},
+               {"first: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "",
+                exact.empty() ? "none" : std::to_string(exact[0].triangle)},
+               {"first: t, point", f && f->hit ? num(f->t) + ", " + num(f->point) : "",
+                exact.empty() ? "" : num(exact[0].t) + ", " + num(exact[0].point)},
+               {"all (triangle at t)", all_ ? describe_hits(*all_).substr(0, 60) : "", describe_hits(exact).substr(0, 60)}};
+  verdict_[5] = step.verdict;
+  steps.push_back(step);
+}
+
+void SegmentTriangleScene::update_moving() {
+  const Segment& s = segment_;
+  const MovingMesh in{s, mesh_, m0_, m1_};
+  first_ = attempt([&] { return first_hit_moving(s, mesh_, m0_, m1_); });
+  exact_hits_ = oracle::moving_mesh_hits(s, mesh_, m0_, m1_);
+  Step step = judged("L02S6", "first_hit_moving", first_, [&](const MeshHit& got) { return judge::first_hit_moving(in, got); });
+  const auto& f = first_;
+  const oracle::SegmentHit* e = exact_hits_.empty() ? nullptr : &exact_hits_[0];
+  step.rows = {{"hit: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "", e ? std::to_string(e->triangle) : "none"},
+               {"t", f && f->hit ? num(f->t) : "", e ? num(e->t) : ""},
+               {"point (at m1)", f && f->hit ? num(f->point) : "", e ? num(e->point) : ""}};
+  verdict_[6] = step.verdict;
+  steps.push_back(step);
+}
+
+void SegmentTriangleScene::update_contact() {
+  const MovingMeshes& in = meshes_;
+  contact_ = attempt([&] { return first_contact_moving_meshes(in.a, in.velocity_a, in.b, in.velocity_b); });
+  exact_contact_ = oracle::first_contact_translating(in.a, in.velocity_a, in.b, in.velocity_b);
+  Step step = judged("L02S7", "first_contact_moving_meshes", contact_,
+                     [&](const MeshContact& got) { return judge::first_contact_moving_meshes(in, got); });
+  const auto& c = contact_;
+  const auto& e = exact_contact_;
+  const char* kinds[] = {"vertex of A on a face of B", "vertex of B on a face of A", "edge against edge"};
+  step.rows = {{"contact", c ? yes_no(c->hit) : "", yes_no(e.hit)},
+               {"t", c && c->hit ? num(c->t) : "", e.hit ? num(e.t) : ""},
+               {"point", c && c->hit ? num(c->point) : "", e.hit ? num(e.point) : ""},
+               {"family", "", e.hit ? kinds[e.kind] : ""}};
+  verdict_[7] = step.verdict;
+  steps.push_back(step);
+}
+
+// ---- draw: in 02_segment_triangle.draw.cpp, with inputs() and handles() -------------
+
+}  // namespace viewer::segment_triangle
+
+namespace viewer {
+
+std::unique_ptr<Scene> make_segment_triangle(const Setup& setup) { return std::make_unique<segment_triangle::SegmentTriangleScene>(setup); }
+const std::vector<Preset>& segment_triangle_presets() { return segment_triangle::kPresets; }
 
 }  // namespace viewer

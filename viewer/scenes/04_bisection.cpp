@@ -13,25 +13,14 @@
 // t_contact in the colour of the verdict, and at the certified exact first contact in
 // violet. Below them a time axis: every tested time (white: clear, blue: overlapping,
 // decided exactly), and the bracket [lo, hi] the tests so far imply, one row per test.
-#include "viewer/scenes/scenes.h"
+#include "viewer/scenes/04_bisection.h"
 
-#include "04_bisection.judge.h"
-#include "bisection.h"
 #include "common/oracle/oracle.h"
-
-#include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
-#include <memory>
 
-namespace viewer {
-namespace {
-
-using namespace labkit;
-using namespace labkit::lab04;
-
-enum class Mode { bisect, sampled, tunnelling, advance, point, rule };
+namespace viewer::bisection {
 
 const std::vector<Preset> kPresets = {
     {"lecture", "the lecture's bisection: 0.5, 0.25, 0.375, 0.4375, 0.40625", nullptr, true, -90, 86, 2},
@@ -66,72 +55,6 @@ MovingPairCase ball_and_wall(double tolerance) {
 MovingPairCase bullet_and_window(double tolerance) {
   return {ball(0.125, moving({-3, 0, 0}, {6, 0, 0})), block({0.25, 2, 2}, still(Vec3::Zero())), SearchTimes{0, 1, tolerance}};
 }
-
-std::string yes(bool b, const char* y = "yes", const char* n = "no") { return b ? y : n; }
-
-// The times a search asked for poses, in the order it first asked (the searches never
-// look inside a motion, so these are exactly the instants it tested).
-struct Recorder {
-  std::vector<double> times;
-  void note(double t) {
-    if (std::find(times.begin(), times.end(), t) == times.end()) times.push_back(t);
-  }
-};
-
-class BisectionScene : public Scene {
- public:
-  explicit BisectionScene(const Setup& setup);
-  void update() override;
-  void draw(Frame& frame) override;
-  bool inputs() override;
-  std::vector<Handle> handles() override;
-  std::string token() const override;
-
- private:
-  void frame_inputs();
-  void layout();  // where the time axis goes: under the bodies' whole motion
-  MovingPair recorded_pair(Recorder& recorder) const;
-  RigidTransform pose_a(double t) const { return pose_at(case_.a.motion, t); }
-  RigidTransform pose_b(double t) const { return pose_at(case_.b.motion, t); }
-  bool exact_overlap(double t) const;
-  double exact_distance(double t) const;
-  void exact_first_contact();
-  void step_overlap();
-  void step_bisect(const char* title);
-  void step_sampled(int n, const char* title);
-  void step_closing_speed();  // the rule's speed, by the code under test
-  void step_rule(const SubstepRule& rule);
-  void step_advance();
-  void draw_body(Renderer& r, const MovingBody& body, const RigidTransform& pose, Color c, bool filled) const;
-  void draw_pair(Renderer& r, double t, Color c, bool filled) const;
-  void draw_timeline(Frame& f) const;
-
-  Mode mode_ = Mode::bisect;
-  MovingPairCase case_ = ball_and_wall(1.0 / 32);
-  int substeps_ = 1;           // sub-steps mode: n
-  double speed_factor_ = 1.0;  // advancement: the bound is this times the true closing speed
-  PointBox point_box_;
-  SubstepRule rule_{6, 1, 0.25};
-
-  // The search the picture is about: the student's answer, its verdict and what it asked.
-  Attempt<TimeOfImpact> search_;
-  Verdict search_verdict_ = Verdict::none;
-  int search_step_ = 2;
-  std::vector<double> tested_;        // the search's tested times
-  std::vector<bool> tested_overlap_;  // exactly, at each
-  double bracket_lo_ = 0, bracket_hi_ = 1;  // the interval the search is given (a sub-step's for sampling)
-  // The exact first contact: clear at exact_lo_, overlapping at exact_hi_, exact_hi_ -
-  // exact_lo_ tiny; found by sampling and bisecting with exact predicates.
-  bool exact_hit_ = false, exact_at_start_ = false;
-  double exact_lo_ = 0, exact_hi_ = 0;
-  Attempt<Vec3> closest_;
-  Verdict closest_verdict_ = Verdict::none;
-  Verdict verdict_[6] = {};
-  // The time axis: t0 at (left_, y0_, z_), t1 width_ to the right; rows row_ apart below.
-  double left_ = 0, width_ = 1, y0_ = 0, z_ = 0, row_ = 0.1;
-  Eigen::AlignedBox3d bodies_;  // what the bodies sweep over [t0, t1], roughly
-  static constexpr int kRows = 12;  // bracket rows at most
-};
 
 // ---- setup ---------------------------------------------------------------------------
 
@@ -201,29 +124,19 @@ void BisectionScene::frame_inputs() {
     // picture's caption covers the top of the view.
     box.extend(Vec3(bodies_.center().x(), bodies_.max().y() + 0.6 * bodies_.sizes().y(), bodies_.center().z()));
   }
-  center = box.center();
-  radius = std::max(0.32 * box.diagonal().norm(), 1e-9);
+  frame(box, 0.32);
 }
 
-void BisectionScene::layout() {
-  const SearchTimes& T = case_.times;
-  Eigen::AlignedBox3d& box = bodies_;
-  box.setEmpty();
-  for (int k = 0; k <= 32; ++k) {
-    const double t = T.t0 + (T.t1 - T.t0) * k / 32;
-    for (const MovingBody* b : {&case_.a, &case_.b}) {
-      const RigidTransform p = pose_at(b->motion, t);
-      const double reach = b->is_box ? b->box.half_extents.norm() : b->sphere.radius;
-      const Vec3 c = p * (b->is_box ? b->box.center : b->sphere.center);
-      box.extend(c - Vec3::Constant(reach)), box.extend(c + Vec3::Constant(reach));
-    }
+std::string BisectionScene::token() const {
+  switch (mode_) {
+    case Mode::bisect: return replay_token("bisect", case_);
+    case Mode::sampled: return replay_token("sample_then_bisect", SampledPair{case_, substeps_});
+    case Mode::tunnelling: return replay_token("tunnelling", case_);
+    case Mode::advance: return replay_token("advance", AdvancedPair{case_, speed_factor_});
+    case Mode::point: return replay_token("closest_point", point_box_);
+    case Mode::rule: break;
   }
-  const double size = std::max(box.diagonal().norm(), 1e-9);
-  width_ = std::max(box.sizes().x(), 0.6 * size);
-  left_ = box.center().x() - 0.5 * width_;
-  y0_ = box.min().y() - 0.12 * size;
-  row_ = 0.04 * size;
-  z_ = box.center().z();
+  return replay_token("substeps_for", rule_);
 }
 
 // ---- update --------------------------------------------------------------------------
@@ -238,58 +151,14 @@ MovingPair BisectionScene::recorded_pair(Recorder& recorder) const {
   return pair;
 }
 
-bool BisectionScene::exact_overlap(double t) const {
-  return case_.b.is_box ? oracle::sphere_box_overlap(case_.a.sphere, pose_a(t), case_.b.box, pose_b(t))
-                        : oracle::spheres_overlap(case_.a.sphere, pose_a(t), case_.b.sphere, pose_b(t));
-}
-
-double BisectionScene::exact_distance(double t) const {
-  return case_.b.is_box ? oracle::sphere_box_distance(case_.a.sphere, pose_a(t), case_.b.box, pose_b(t))
-                        : oracle::spheres_distance(case_.a.sphere, pose_a(t), case_.b.sphere, pose_b(t));
-}
-
-// The first contact, found with exact predicates only: the start; then samples no
-// farther apart than the lecture's rule asks (at least 64, at most 4096); then bisection
-// of the first overlapping sub-step down to 2^-40 of the interval. A contact shorter
-// than a sub-step (a graze between samples) can still be missed; a contact that passes
-// through cannot.
-void BisectionScene::exact_first_contact() {
-  const SearchTimes& T = case_.times;
-  exact_hit_ = exact_at_start_ = false;
-  if (exact_overlap(T.t0)) {
-    exact_hit_ = exact_at_start_ = true, exact_lo_ = exact_hi_ = T.t0;
-    return;
-  }
-  const SubstepRule rule{closing_speed_of(case_), T.t1 - T.t0, smallest_size_of(case_)};
-  const double ratio = rule.smallest_size > 0 ? rule.max_speed * rule.step / rule.smallest_size : 4096;
-  const int n = int(std::clamp(std::floor(ratio) + 1, 64.0, 4096.0));
-  double previous = T.t0;
-  for (int k = 1; k <= n; ++k) {
-    const double tk = k == n ? T.t1 : T.t0 + (T.t1 - T.t0) * k / n;
-    if (!exact_overlap(tk)) {
-      previous = tk;
-      continue;
-    }
-    double lo = previous, hi = tk;
-    const double fine = std::ldexp(T.t1 - T.t0, -40);
-    while (hi - lo > fine) {
-      const double mid = lo + 0.5 * (hi - lo);
-      if (mid <= lo || mid >= hi) break;
-      (exact_overlap(mid) ? hi : lo) = mid;
-    }
-    exact_hit_ = true, exact_lo_ = lo, exact_hi_ = hi;
-    return;
-  }
-}
-
 void BisectionScene::step_overlap() {
   const MovingPair pair = pair_of(case_);
   const SearchTimes& T = case_.times;
   const auto got = attempt([&] { return std::pair<bool, bool>(overlap_at(pair, T.t0), overlap_at(pair, T.t1)); });
   Step s = judged("L04S1", "overlap_at the ends t0 and t1", got,
                   [&](const std::pair<bool, bool>& g) { return judge::overlap_at(case_, g.first, g.second); });
-  s.rows = {{"at t0 = " + num(T.t0), got ? yes(got->first) : "", yes(exact_overlap(T.t0))},
-            {"at t1 = " + num(T.t1), got ? yes(got->second) : "", yes(exact_overlap(T.t1))}};
+  s.rows = {{"at t0 = " + num(T.t0), got ? yes_no(got->first) : "", yes_no(exact_overlap(T.t0))},
+            {"at t1 = " + num(T.t1), got ? yes_no(got->second) : "", yes_no(exact_overlap(T.t1))}};
   verdict_[1] = s.verdict;
   steps.push_back(s);
 }
@@ -298,7 +167,7 @@ void BisectionScene::step_overlap() {
 std::vector<Row> search_rows(const Attempt<TimeOfImpact>& g, bool exact_hit, bool exact_at_start, double exact_lo,
                              double exact_hi) {
   const std::string contact = exact_at_start ? "at t0" : exact_hit ? "in (" + num(exact_lo) + ", " + num(exact_hi) + "]" : "none seen";
-  return {{"hit", g ? yes(g->hit) + (g->overlapping_at_start ? " (at start)" : "") : "", exact_hit ? "yes" : "no"},
+  return {{"hit", g ? yes_no(g->hit) + (g->overlapping_at_start ? " (at start)" : "") : "", exact_hit ? "yes" : "no"},
           {"t (last clear)", g ? num(g->t) : "", exact_hit && !exact_at_start ? num(exact_lo) : ""},
           {"t_contact", g && g->hit ? num(g->t_contact) : "", "first contact " + contact},
           {"steps, iterations", g ? std::to_string(g->steps) + ", " + std::to_string(g->iterations) : "", ""}};
@@ -314,7 +183,7 @@ void BisectionScene::step_bisect(const char* title) {
   if (search_ && !search_->hit && exact_hit_ && !exact_at_start_ && s.verdict != Verdict::disagree && s.note.empty())
     s.note = "clear at both ends: bisection alone cannot see this contact";
   verdict_[2] = search_verdict_ = s.verdict, search_step_ = 2;
-  tested_ = recorder.times, bracket_lo_ = T.t0, bracket_hi_ = T.t1;
+  tested_ = recorder.times;
   steps.push_back(s);
 }
 
@@ -352,7 +221,7 @@ void BisectionScene::step_sampled(int n, const char* title) {
   s.rows = search_rows(search_, exact_hit_, exact_at_start_, exact_lo_, exact_hi_);
   s.rows.insert(s.rows.begin(), {"sub-steps n", std::to_string(n), ""});
   verdict_[3] = worse(verdict_[3], s.verdict), search_verdict_ = s.verdict, search_step_ = 3;
-  tested_ = recorder.times, bracket_lo_ = T.t0, bracket_hi_ = T.t1;
+  tested_ = recorder.times;
   steps.push_back(s);
 }
 
@@ -376,13 +245,12 @@ void BisectionScene::step_advance() {
   search_ = attempt([&] { return advance(recorded, T.t0, T.t1, bound, T.tolerance); });
   Step s = judged("L04S4", "advance: jump d / v, then bisect", search_,
                   [&](const TimeOfImpact& got) { return judge::advance(in, got); });
-  s.verdict = worse(s.verdict, dist.verdict);
-  if (s.note.empty()) s.note = dist.note;
+  join(s, dist);
   s.rows = dist.rows;
   s.rows.push_back({"closing-speed bound v", num(bound), num(closing_speed_of(case_)) + " (true)"});
   for (const Row& row : search_rows(search_, exact_hit_, exact_at_start_, exact_lo_, exact_hi_)) s.rows.push_back(row);
   verdict_[4] = search_verdict_ = s.verdict, search_step_ = 4;
-  tested_ = recorder.times, bracket_lo_ = T.t0, bracket_hi_ = T.t1;
+  tested_ = recorder.times;
   steps.push_back(s);
 }
 
@@ -391,297 +259,76 @@ void BisectionScene::update() {
   for (Verdict& v : verdict_) v = Verdict::none;
   search_ = {};
   tested_.clear(), tested_overlap_.clear();
-  if (mode_ == Mode::point) {
-    closest_ = attempt([&] { return closest_point(point_box_.box, point_box_.point); });
-    Step s = judged("L04S1", "closest_point of the box to p", closest_,
-                    [&](const Vec3& got) { return judge::closest_point(point_box_, got); });
-    const RigidTransform id = RigidTransform::Identity();
-    s.rows = {{"q", closest_ ? num(*closest_) : "", ""},
-              {"|p - q|", closest_ ? num((*closest_ - point_box_.point).norm()) : "",
-               num(oracle::sphere_box_distance(Sphere{point_box_.point, 0}, id, point_box_.box, id))}};
-    closest_verdict_ = verdict_[1] = s.verdict;
-    steps.push_back(s);
-    return;
+  switch (mode_) {
+    case Mode::point: update_point(); return;
+    case Mode::rule: step_rule(rule_); return;
+    case Mode::bisect: update_bisect(); break;
+    case Mode::sampled: update_sampled(); break;
+    case Mode::tunnelling: update_tunnelling(); break;
+    case Mode::advance: update_advance(); break;
   }
-  if (mode_ == Mode::rule) {
-    step_rule(rule_);
-    return;
-  }
+  for (double t : tested_) tested_overlap_.push_back(exact_overlap(t));
+}
+
+void BisectionScene::update_point() {
+  closest_ = attempt([&] { return closest_point(point_box_.box, point_box_.point); });
+  Step s = judged("L04S1", "closest_point of the box to p", closest_,
+                  [&](const Vec3& got) { return judge::closest_point(point_box_, got); });
+  const RigidTransform id = RigidTransform::Identity();
+  s.rows = {{"q", closest_ ? num(*closest_) : "", ""},
+            {"|p - q|", closest_ ? num((*closest_ - point_box_.point).norm()) : "",
+             num(oracle::sphere_box_distance(Sphere{point_box_.point, 0}, id, point_box_.box, id))}};
+  closest_verdict_ = verdict_[1] = s.verdict;
+  steps.push_back(s);
+}
+
+// What every search starts with: sane times, the layout, the exact first contact, step 1.
+void BisectionScene::start_search() {
   SearchTimes& T = case_.times;
   T.t1 = std::max(T.t1, T.t0);
   T.tolerance = std::max(T.tolerance, std::ldexp(std::max(T.t1 - T.t0, 1e-300), -40));
   layout();
   exact_first_contact();
   step_overlap();
-  switch (mode_) {
-    case Mode::bisect:
-      step_bisect("bisect [t0, t1] to the last clear time");
-      step_advance();  // distance_at only
-      break;
-    case Mode::sampled: step_sampled(substeps_, "sample_then_bisect with n sub-steps"); break;
-    case Mode::tunnelling: {
-      step_bisect("bisect: the frame's ends only");
-      step_closing_speed();
-      const SubstepRule rule{closing_speed_of(case_), T.t1 - T.t0, smallest_size_of(case_)};
-      step_rule(rule);
-      const Attempt<int> n = attempt([&] { return substeps_for(rule.max_speed, rule.step, rule.smallest_size); });
-      const double ratio = rule.smallest_size > 0 ? rule.max_speed * rule.step / rule.smallest_size : 0;
-      substeps_ = n && *n > 0 ? *n : int(std::clamp(std::floor(ratio) + 1, 1.0, 4096.0));
-      step_sampled(std::min(substeps_, 4096), "sample_then_bisect with the rule's n");
-      break;
-    }
-    case Mode::advance: step_advance(); break;
-    default: break;
-  }
-  for (double t : tested_) tested_overlap_.push_back(exact_overlap(t));
 }
 
-// ---- draw ----------------------------------------------------------------------------
-
-// A sphere as three great circles (and a translucent ball), a box as its 12 edges (and
-// its faces).
-void BisectionScene::draw_body(Renderer& r, const MovingBody& body, const RigidTransform& pose, Color c, bool filled) const {
-  const float width = filled ? 2.0f : 1.0f;
-  if (!body.is_box) {
-    const Vec3 o = pose * body.sphere.center;
-    const double rad = body.sphere.radius;
-    if (rad <= 0) {
-      r.point(o, c, 4);
-      return;
-    }
-    const Mat3 R = pose.linear();
-    const int n = 48;
-    for (int axis = 0; axis < 3; ++axis) {
-      const Vec3 u = R.col((axis + 1) % 3), v = R.col((axis + 2) % 3);
-      for (int k = 0; k < n; ++k) {
-        const double a0 = 2 * M_PI * k / n, a1 = 2 * M_PI * (k + 1) / n;
-        r.line(o + rad * (std::cos(a0) * u + std::sin(a0) * v), o + rad * (std::cos(a1) * u + std::sin(a1) * v), c, width);
-      }
-    }
-    if (filled) {
-      const int m = 12;
-      const auto at = [&](int i, int j) {
-        const double th = M_PI * i / m, ph = 2 * M_PI * j / (2 * m);
-        return Vec3(o + rad * Vec3(std::sin(th) * std::cos(ph), std::sin(th) * std::sin(ph), std::cos(th)));
-      };
-      for (int i = 0; i < m; ++i)
-        for (int j = 0; j < 2 * m; ++j) {
-          r.triangle(at(i, j), at(i + 1, j), at(i + 1, j + 1), c.with_alpha(0.25f));
-          r.triangle(at(i, j), at(i + 1, j + 1), at(i, j + 1), c.with_alpha(0.25f));
-        }
-    }
-    return;
-  }
-  const Box placed_box{pose * body.box.center, pose.linear() * body.box.axes, body.box.half_extents};
-  Vec3 p[8];
-  for (int i = 0; i < 8; ++i) p[i] = placed_box.corner(i);
-  for (int i = 0; i < 8; ++i)
-    for (int k = 0; k < 3; ++k)
-      if (!(i & (1 << k))) r.line(p[i], p[i | (1 << k)], c, width);
-  if (!filled) return;
-  for (int k = 0; k < 3; ++k)
-    for (int side = 0; side < 2; ++side) {
-      const int a = (k + 1) % 3, b = (k + 2) % 3, s = side << k;
-      const Vec3 q0 = p[s], q1 = p[s | (1 << a)], q2 = p[s | (1 << a) | (1 << b)], q3 = p[s | (1 << b)];
-      r.triangle(q0, q1, q2, c.with_alpha(0.30f));
-      r.triangle(q0, q2, q3, c.with_alpha(0.30f));
-    }
+void BisectionScene::update_bisect() {
+  start_search();
+  step_bisect("bisect [t0, t1] to the last clear time");
+  step_advance();  // distance_at only
 }
 
-void BisectionScene::draw_pair(Renderer& r, double t, Color c, bool filled) const {
-  draw_body(r, case_.a, pose_a(t), c, filled);
-  const bool b_moves = case_.b.motion.velocity != Vec3::Zero() || case_.b.motion.acceleration != Vec3::Zero() ||
-                       case_.b.motion.spin != 0;
-  if (b_moves) draw_body(r, case_.b, pose_b(t), c, false);
+void BisectionScene::update_sampled() {
+  start_search();
+  step_sampled(substeps_, "sample_then_bisect with n sub-steps");
 }
 
-// The time axis under the bodies, along world x: t0 at the left of the picture, t1 at
-// the right. Row 0 holds the tested times; the rows below it the bracket after each test.
-void BisectionScene::draw_timeline(Frame& f) const {
-  Renderer& r = f.render;
+// Bisection on the frame's ends misses the window; the rule's n sub-steps see it.
+void BisectionScene::update_tunnelling() {
+  start_search();
   const SearchTimes& T = case_.times;
-  const auto at = [&](double t, int k) {
-    const double u = T.t1 > T.t0 ? (t - T.t0) / (T.t1 - T.t0) : 0.5;
-    return Vec3(left_ + u * width_, y0_ - row_ * k, z_);
-  };
-  r.line(at(T.t0, 0), at(T.t1, 0), palette::muted, 2);
-  r.label(at(T.t0, 0), "t0 = " + num(T.t0), palette::muted, -70, -8);
-  r.label(at(T.t1, 0), "t1 = " + num(T.t1), palette::muted, 10, -8);
-  const double tick = 0.4 * row_;
-  // The tests, numbered in the order the search asked, coloured by the exact overlap. In
-  // bisection the ends carry the axis's t0 and t1, and the midpoints are numbered as the
-  // lecture numbers its iterations (1 to 5 in its example). Labels that would overlap are
-  // stacked upward, each on a thin leader down to its tick.
-  const std::size_t shown = std::min<std::size_t>(tested_.size(), 40);
-  const double pixel = r.pixels(at(T.t0, 0), 1);  // world length of a pixel on the axis
-  std::vector<std::vector<std::pair<double, double>>> taken;  // per stacking level: label spans, in pixels
-  int number = 0;
-  for (std::size_t i = 0; i < shown; ++i) {
-    const Color c = tested_overlap_[i] ? palette::surface : palette::input;
-    const Vec3 top = at(tested_[i], 0) + Vec3(0, tick, 0);
-    r.line(at(tested_[i], 0) - Vec3(0, tick, 0), top, c, 2.5f);
-    const bool end = mode_ == Mode::bisect && (tested_[i] == T.t0 || tested_[i] == T.t1);
-    if (end) continue;
-    ++number;
-    if (shown > 24) continue;
-    const std::string text = std::to_string(number);
-    const double w = 7.0 * double(text.size()) + 2, x = (top.x() - left_) / pixel - 0.5 * w;
-    const auto clashes = [&](const std::pair<double, double>& s) { return x < s.second + 3 && s.first < x + w + 3; };
-    std::size_t level = 0;
-    while (level < taken.size() && std::any_of(taken[level].begin(), taken[level].end(), clashes)) ++level;
-    if (level == taken.size()) taken.emplace_back();
-    taken[level].push_back({x, x + w});
-    const float lift = 14.0f * float(level);
-    if (level > 0) r.line(top, top + Vec3(0, pixel * (lift + 2), 0), c.with_alpha(0.5f), 1);
-    r.label(top, text, c, float(-0.5 * w), -18 - lift);
-  }
-  // The bracket the tests imply: the earliest overlapping time tested, and the latest
-  // clear time tested before it.
-  std::vector<std::pair<double, double>> brackets;
-  for (std::size_t i = 0; i < tested_.size(); ++i) {
-    double hi = INFINITY, lo = -INFINITY;
-    for (std::size_t j = 0; j <= i; ++j)
-      if (tested_overlap_[j]) hi = std::min(hi, tested_[j]);
-    if (!std::isfinite(hi) || hi == tested_[0]) continue;
-    for (std::size_t j = 0; j <= i; ++j)
-      if (!tested_overlap_[j] && tested_[j] < hi) lo = std::max(lo, tested_[j]);
-    if (std::isfinite(lo) && (brackets.empty() || brackets.back() != std::make_pair(lo, hi))) brackets.push_back({lo, hi});
-  }
-  const std::size_t first = brackets.size() > kRows ? brackets.size() - kRows : 0;
-  for (std::size_t i = first; i < brackets.size(); ++i) {
-    const int k = int(i - first) + 1;
-    r.line(at(brackets[i].first, k), at(brackets[i].second, k), palette::muted, 3);
-    r.label(at(brackets[i].second, k), "[" + num(brackets[i].first) + ", " + num(brackets[i].second) + "]", palette::muted, 8, -7);
-  }
-  // The student's final bracket, and the exact first contact.
-  const int last = int(brackets.size() - first) + 1;
-  if (search_ && search_->hit && f.shows(search_step_)) {
-    const Color c = colour(search_verdict_);
-    r.line(at(search_->t, last), at(search_->t_contact, last), c, 5);
-    r.label(at(search_->t, last), "yours: t = " + num(search_->t), c, -40, 10);
-  } else if (search_ && f.shows(search_step_)) {
-    r.label(at(T.t1, last), "yours: no hit", colour(search_verdict_), -40, 10);
-  }
-  if (f.show_exact && exact_hit_) {
-    r.ring(at(exact_hi_, 0), palette::exact, 9, 2.5f);
-    r.label(at(exact_hi_, last + 1), "exact first contact " + num(exact_hi_), palette::exact, -40, 10);
-  }
+  step_bisect("bisect: the frame's ends only");
+  step_closing_speed();
+  const SubstepRule rule{closing_speed_of(case_), T.t1 - T.t0, smallest_size_of(case_)};
+  step_rule(rule);
+  const Attempt<int> n = attempt([&] { return substeps_for(rule.max_speed, rule.step, rule.smallest_size); });
+  const double ratio = rule.smallest_size > 0 ? rule.max_speed * rule.step / rule.smallest_size : 0;
+  substeps_ = n && *n > 0 ? *n : int(std::clamp(std::floor(ratio) + 1, 1.0, 4096.0));
+  step_sampled(std::min(substeps_, 4096), "sample_then_bisect with the rule's n");
 }
 
-void BisectionScene::draw(Frame& f) {
-  Renderer& r = f.render;
-  const double spacing = std::pow(10.0, std::floor(std::log10(radius)));
-  r.grid(spacing, int(std::ceil(1.5 * radius / spacing)) + 2);
-  r.axes();
-  if (mode_ == Mode::rule) {
-    r.label(Vec3::Zero(), "the sub-step rule has no picture: see the panel", palette::muted);
-    return;
-  }
-  if (mode_ == Mode::point) {
-    const MovingBody box{true, Sphere{}, point_box_.box, {}};
-    draw_body(r, box, RigidTransform::Identity(), palette::surface, true);
-    r.point(point_box_.point, palette::input, 6);
-    r.label(point_box_.point, "p", palette::input);
-    if (closest_) {
-      const Color c = colour(closest_verdict_);
-      r.dashed(point_box_.point, *closest_, c, 2);
-      r.point(*closest_, c, 5);
-      r.label(*closest_, "q", c, 10, 10);
-    }
-    return;
-  }
-  const SearchTimes& T = case_.times;
-  // The paths of the body's centres, and both bodies at t0 (faint) and t1.
-  for (const MovingBody* b : {&case_.a, &case_.b}) {
-    const Vec3 local = b->is_box ? b->box.center : b->sphere.center;
-    for (int k = 0; k < 48; ++k) {
-      const double s0 = T.t0 + (T.t1 - T.t0) * k / 48, s1 = T.t0 + (T.t1 - T.t0) * (k + 1) / 48;
-      r.line(pose_at(b->motion, s0) * local, pose_at(b->motion, s1) * local, palette::muted.with_alpha(0.7f), 1);
-    }
-  }
-  draw_body(r, case_.b, pose_b(T.t0), palette::surface, true);
-  draw_body(r, case_.a, pose_a(T.t0), palette::input, false);
-  r.label(pose_a(T.t0) * case_.a.sphere.center, "t0", palette::input, 8, -8);
-  draw_body(r, case_.a, pose_a(T.t1), palette::muted, false);
-  r.label(pose_a(T.t1) * case_.a.sphere.center, "t1", palette::muted, 8, -8);
-  // Every tested time, faint: where the search looked.
-  if (tested_.size() <= 64)
-    for (std::size_t i = 0; i < tested_.size(); ++i)
-      draw_body(r, case_.a, pose_a(tested_[i]), (tested_overlap_[i] ? palette::surface : palette::input).with_alpha(0.35f), false);
-  if (search_ && search_->hit && f.shows(search_step_)) {
-    const Color c = colour(search_verdict_);
-    draw_pair(r, search_->t, c, true);
-    if (search_->t_contact != search_->t) draw_pair(r, search_->t_contact, c.with_alpha(0.6f), false);
-    r.label(pose_a(search_->t) * case_.a.sphere.center, "t = " + num(search_->t), c, -30, 16);
-  }
-  if (f.show_exact && exact_hit_) {
-    draw_pair(r, exact_hi_, palette::exact, false);
-    r.ring(pose_a(exact_hi_) * case_.a.sphere.center, palette::exact, 9);
-  }
-  draw_timeline(f);
+void BisectionScene::update_advance() {
+  start_search();
+  step_advance();
 }
 
-bool BisectionScene::inputs() {
-  bool changed = false;
-  if (mode_ == Mode::rule) {
-    changed |= edit("max speed", rule_.max_speed, 0.05f, 0, 1e12) | edit("step", rule_.step, 0.01f, 0, 1e6) |
-               edit("smallest size", rule_.smallest_size, 0.01f, 0, 1e6);
-    return changed;
-  }
-  if (mode_ == Mode::point) {
-    changed |= edit("p", point_box_.point) | edit("box centre", point_box_.box.center) |
-               edit("half extents", point_box_.box.half_extents, 0.02f);
-    point_box_.box.half_extents = point_box_.box.half_extents.cwiseAbs();
-    return changed;
-  }
-  ImGui::TextDisabled("a: a sphere");
-  changed |= edit("a radius", case_.a.sphere.radius, 0.01f, 0, 1e9);
-  changed |= edit("a start", case_.a.motion.start) | edit("a velocity", case_.a.motion.velocity) |
-             edit("a acceleration", case_.a.motion.acceleration) | edit("a spin", case_.a.motion.spin, 0.02f);
-  bool box = case_.b.is_box;
-  if (ImGui::Checkbox("b is a box", &box)) {
-    case_.b.is_box = box, changed = true;
-    if (box && case_.b.box.half_extents == Vec3::Zero()) case_.b.box.half_extents = Vec3::Constant(case_.b.sphere.radius);
-    if (!box && case_.b.sphere.radius == 0) case_.b.sphere.radius = case_.b.box.half_extents.maxCoeff();
-  }
-  if (case_.b.is_box) {
-    changed |= edit("b half extents", case_.b.box.half_extents, 0.02f);
-    case_.b.box.half_extents = case_.b.box.half_extents.cwiseAbs();
-  } else {
-    changed |= edit("b radius", case_.b.sphere.radius, 0.01f, 0, 1e9);
-  }
-  changed |= edit("b start", case_.b.motion.start) | edit("b velocity", case_.b.motion.velocity) |
-             edit("b spin", case_.b.motion.spin, 0.02f) | edit("b spin axis", case_.b.motion.axis);
-  if (case_.b.motion.axis == Vec3::Zero()) case_.b.motion.axis = Vec3::UnitZ();
-  ImGui::TextDisabled("the search");
-  changed |= edit("t0", case_.times.t0, 0.01f) | edit("t1", case_.times.t1, 0.01f) |
-             edit("tolerance", case_.times.tolerance, 0.001f, 1e-12, 1e6);
-  if (mode_ == Mode::sampled) changed |= ImGui::SliderInt("sub-steps n", &substeps_, 1, 64);
-  if (mode_ == Mode::advance) changed |= edit("bound factor", speed_factor_, 0.01f, 1, 100);
-  return changed;
-}
+// ---- draw: in 04_bisection.draw.cpp, with inputs() and handles() --------------------
 
-std::vector<Handle> BisectionScene::handles() {
-  if (mode_ == Mode::point) return {{&point_box_.point, "p"}, {&point_box_.box.center, "box centre"}};
-  if (mode_ == Mode::rule) return {};
-  return {{&case_.a.motion.start, "a at t = 0"}, {&case_.b.motion.start, "b at t = 0"}};
-}
+}  // namespace viewer::bisection
 
-std::string BisectionScene::token() const {
-  switch (mode_) {
-    case Mode::bisect: return replay_token("bisect", case_);
-    case Mode::sampled: return replay_token("sample_then_bisect", SampledPair{case_, substeps_});
-    case Mode::tunnelling: return replay_token("tunnelling", case_);
-    case Mode::advance: return replay_token("advance", AdvancedPair{case_, speed_factor_});
-    case Mode::point: return replay_token("closest_point", point_box_);
-    case Mode::rule: break;
-  }
-  return replay_token("substeps_for", rule_);
-}
+namespace viewer {
 
-}  // namespace
-
-std::unique_ptr<Scene> make_bisection(const Setup& setup) { return std::make_unique<BisectionScene>(setup); }
-const std::vector<Preset>& bisection_presets() { return kPresets; }
+std::unique_ptr<Scene> make_bisection(const Setup& setup) { return std::make_unique<bisection::BisectionScene>(setup); }
+const std::vector<Preset>& bisection_presets() { return bisection::kPresets; }
 
 }  // namespace viewer

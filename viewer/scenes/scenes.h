@@ -1,5 +1,6 @@
-// The viewer's scenes: one per lab, one file each (viewer/scenes/NN_name.cpp), listed
-// in this one table. Number keys and the list in the window switch between them.
+// The viewer's scenes: one per lab (viewer/scenes/NN_name.cpp; a long one is split by
+// role into NN_name.draw.cpp and the like, with NN_name.h for what its files share),
+// listed in this one table. Number keys and the list in the window switch between them.
 // Adding lab 08's scene: write viewer/scenes/08_name.cpp with the same shape as the
 // others, and add its line here.
 #pragma once
