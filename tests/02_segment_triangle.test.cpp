@@ -4,6 +4,7 @@
 #include "02_segment_triangle.queries.h"
 #include "segment_triangle.h"
 
+#include "common/generators/meshes.h"
 #include "common/oracle/segment_triangle.h"
 
 #include <cmath>
@@ -34,18 +35,10 @@ const Triangle kFlat{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}};  // zero area
 
 SegmentTrianglePair pair(Vec3 a, Vec3 b, const Triangle& t = kFloor) { return {{a, b}, t}; }
 
-// The square [0, 4] x [0, 4] at height z, as two triangles split along its diagonal.
-void add_square(Mesh& m, double z) {
-  const int base = int(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), {{0, 0, z}, {4, 0, z}, {4, 4, z}, {0, 4, z}});
-  m.triangles.push_back({base, base + 1, base + 2});
-  m.triangles.push_back({base, base + 2, base + 3});
-}
-
 Mesh floor_and_shelf() {
   Mesh m;
-  add_square(m, 0);  // triangles 0 and 1
-  add_square(m, 2);  // triangles 2 and 3
+  gen::add_square(m, 4, 0);  // triangles 0 and 1
+  gen::add_square(m, 4, 2);  // triangles 2 and 3
   return m;
 }
 
@@ -343,7 +336,7 @@ TEST_CASE(LABKIT_STEP(L02S5) ": random cases", "[lab02][step5][oracle]") {
 
 TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
   Mesh floor;
-  add_square(floor, 0);
+  gen::add_square(floor, 4, 0);
   RigidTransform up = RigidTransform::Identity();
   up.translation() = Vec3(0, 0, 2);
   check::example(query::first_hit_moving, "a resting particle, a rising floor",
@@ -402,7 +395,7 @@ Mesh spike(const Vec3& tip = {1, 2, 2}) {
 }
 Mesh floor_square() {
   Mesh m;
-  add_square(m, 0);
+  gen::add_square(m, 4, 0);
   return m;
 }
 // Two upright triangles, crossed: A in the plane y = 0 with its lowest edge at z = 1
@@ -536,7 +529,7 @@ TEST_CASE(LABKIT_STEP(L02S8) ": touching, edges, vertices, coplanar, zero size",
 
 TEST_CASE(LABKIT_STEP(L02S8) ": shared edges and vertices in a mesh", "[lab02][step8]") {
   Mesh floor;
-  add_square(floor, 0);
+  gen::add_square(floor, 4, 0);
   constexpr auto q = query::robust_all_hits;
   check::example(q, "through the shared diagonal: both triangles", SegmentMeshPair{{{2, 2, 1}, {2, 2, -1}}, floor},
                  [](const SegmentMeshPair& in) {
@@ -611,7 +604,7 @@ TEST_CASE("L02 preconditions: invalid input throws std::invalid_argument naming 
     }
   };
   Mesh floor;
-  add_square(floor, 0);
+  gen::add_square(floor, 4, 0);
   for (double bad : {nan, inf, -inf}) {
     INFO("bad number " << bad);
     const Vec3 p(1, bad, 0);

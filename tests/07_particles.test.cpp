@@ -4,6 +4,8 @@
 #include "07_particles.queries.h"
 #include "particles.h"
 
+#include "common/generators/meshes.h"
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -111,14 +113,6 @@ Scene floor_scene(double e, double mu, int cap = 4) {
   s.material = {e, mu};
   s.bounce_cap = cap;
   return s;
-}
-
-// The square [0, 4] x [0, 4] at height z, two triangles.
-void add_square(Mesh& m, double z) {
-  const int base = int(m.vertices.size());
-  m.vertices.insert(m.vertices.end(), {{0, 0, z}, {4, 0, z}, {4, 4, z}, {0, 4, z}});
-  m.triangles.push_back({base, base + 1, base + 2});
-  m.triangles.push_back({base, base + 2, base + 3});
 }
 
 // The floor and a wall x = 3 facing -x: the corner of the bouncing examples.
@@ -468,7 +462,7 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   SegmentScene floor_and_shelf;
   floor_and_shelf.segment = {{1, 3, 5}, {1, 3, -1}};
   floor_and_shelf.scene.planes = {kFloor};
-  add_square(floor_and_shelf.scene.mesh, 2);
+  gen::add_square(floor_and_shelf.scene.mesh, 4, 2);
   check::example(query::first_hit, "the shelf (t = 1/2) before the floor (t = 5/6)", floor_and_shelf, [](const SegmentScene& in) {
     const SurfaceHit got = first_hit(in.segment, in.scene);
     Expect e;
@@ -483,7 +477,7 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   SegmentScene tie;
   tie.segment = {{1, 3, 1}, {1, 3, -1}};
   tie.scene.planes = {kFloor};
-  add_square(tie.scene.mesh, 0);
+  gen::add_square(tie.scene.mesh, 4, 0);
   check::example(query::first_hit, "a triangle lying on the floor: the tie goes to the plane", tie, [](const SegmentScene& in) {
     const SurfaceHit got = first_hit(in.segment, in.scene);
     Expect e;
@@ -645,7 +639,7 @@ TEST_CASE(LABKIT_STEP(L07S7) ": worked examples", "[lab07][step7]") {
   check::example(query::settle, "in an acute crease: off both planes at once", crease, settled);
   SettleCase sheet{};
   sheet.x = Vec3(1, 1, 0);
-  add_square(sheet.scene.mesh, 0);
+  gen::add_square(sheet.scene.mesh, 4, 0);
   sheet.last = {true, -1, 0, 0.5, Vec3(1, 1, 0), Vec3(0, 0, -1)};
   check::example(query::settle, "on a sheet hit from below: below it", sheet, settled);
 
@@ -815,11 +809,11 @@ TEST_CASE("L07 preconditions: invalid input is refused, naming the argument", "[
   scene.planes.push_back(Plane{Vec3::UnitX(), nan});
   rejects("scene.planes[1].offset", [&] { first_hit(down, scene); });
   scene = floor_scene(0.5, 0);
-  add_square(scene.mesh, 0);
+  gen::add_square(scene.mesh, 4, 0);
   scene.mesh.vertices[2] = bad;
   rejects("scene.mesh.vertices[2]", [&] { first_hit(down, scene); });
   scene = floor_scene(0.5, 0);
-  add_square(scene.mesh, 0);
+  gen::add_square(scene.mesh, 4, 0);
   scene.mesh.triangles[1][2] = 4;
   rejects("scene.mesh.triangles[1]", [&] { first_hit(down, scene); });
   rejects("segment.a", [&] { first_hit({bad, Vec3::Zero()}, floor_scene(0.5, 0)); });

@@ -21,6 +21,8 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -190,5 +192,33 @@ struct UnknownQuery : labkit::BadToken {
   using labkit::BadToken::BadToken;
 };
 UnknownQuery unknown_query(const std::string& lab, const std::string& query, const std::string& known);
+
+// Loaders, one per input type: `Loaders{[&](auto q, const TreeQuery& in) {...}, ...}`.
+template <class... F>
+struct Loaders : F... {
+  using F::operator()...;
+};
+template <class... F>
+Loaders(F...) -> Loaders<F...>;
+
+// A replay token's input, read as the type its query takes in the lab's table
+// (tests/NN_name.queries.h) and handed to the loader that takes that type. The scene
+// shows exactly the queries whose input one of its loaders takes: any other, of this lab
+// or another, is an UnknownQuery that lists those.
+template <class Load, class... Inputs>
+void load_token(const std::string& lab, const labkit::check::QueryTable<Inputs...>& table,
+                const labkit::ParsedToken& token, Load&& load) {
+  std::string shown;
+  bool loaded = false;
+  const auto one = [&](const auto& q) {
+    using Input = typename std::decay_t<decltype(q)>::InputType;
+    if constexpr (std::is_invocable_v<Load&, decltype(q), const Input&>) {
+      shown += (shown.empty() ? "" : ", ") + std::string(q.name);
+      if (!loaded && token.query == q.name) load(q, labkit::input_from_token<Input>(token)), loaded = true;
+    }
+  };
+  std::apply([&](const auto&... q) { (one(q), ...); }, table.queries);
+  if (!loaded) throw unknown_query(lab, token.query, shown);
+}
 
 }  // namespace viewer

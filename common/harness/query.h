@@ -61,6 +61,16 @@ QueryTable(std::tuple<Query<Inputs>...>) -> QueryTable<Inputs...>;
 
 }  // namespace labkit::check
 
+namespace labkit {
+
+// "first_hit:0.5,...": the token that replays `input` as the query `q` (codec.h's, typed).
+template <class Input>
+std::string replay_token(const check::Query<Input>& q, const typename check::Query<Input>::InputType& input) {
+  return replay_token(std::string(q.name), input);
+}
+
+}  // namespace labkit
+
 // The declarations a lab's table expands to (see the top of this file).
 #define LABKIT_QUERY(id, name, Input) inline constexpr ::labkit::check::Query<Input> id{name};
 #define LABKIT_QUERY_ENTRY(id, name, Input) id,

@@ -7,6 +7,7 @@
 // Vertices are coloured by the student's class (in: blue, on: white, out: dark), the
 // student's pieces by their verdict; the exact polygon (the toggle) is a violet outline.
 #include "viewer/scenes/01_frustum_split.h"
+#include "01_frustum_split.queries.h"
 
 #include "common/generators/meshes.h"
 #include "common/oracle/oracle.h"
@@ -76,25 +77,19 @@ FrustumSplitScene::FrustumSplitScene(const Setup& setup) {
     return;
   }
   const ParsedToken token = parse_token(starting_token(setup, kPresets, kPresets[2].token));
-  const std::string& q = token.query;
-  if (q == "signed_distance" || q == "classify" || q == "split_triangle" || q == "robust.classify" ||
-      q == "robust.split_triangle") {
-    split_ = input_from_token<TrianglePlane>(token);
-  } else if (q == "frustum_from_camera") {
-    mode_ = Mode::frustum, camera_ = input_from_token<Camera>(token);
-    look_ = camera_.eye + camera_.forward.normalized() * 0.5 * (camera_.near + camera_.far);
-  } else if (q == "frustum_from_matrix") {
-    mode_ = Mode::frustum, source_ = Source::matrix, matrix_ = input_from_token<Mat4>(token);
-  } else if (q == "clip_triangle" || q == "robust.clip_triangle") {
-    const auto in = input_from_token<TriangleFrustum>(token);
-    mode_ = Mode::frustum, source_ = Source::planes, triangle_ = in.triangle, planes_ = in.frustum;
-  } else if (q == "clip_mesh") {
-    const auto in = input_from_token<MeshFrustum>(token);
-    mode_ = Mode::mesh, source_ = Source::planes, mesh_ = {in.mesh, in.colors}, planes_ = in.frustum;
-  } else {
-    throw unknown_query("01", q, "signed_distance, classify, split_triangle, frustum_from_camera, "
-                                  "frustum_from_matrix, clip_triangle, clip_mesh");
-  }
+  load_token("01", query::table, token,
+             Loaders{[&](auto, const TrianglePlane& in) { split_ = in; },
+                     [&](auto, const Camera& in) {
+                       mode_ = Mode::frustum, camera_ = in;
+                       look_ = camera_.eye + camera_.forward.normalized() * 0.5 * (camera_.near + camera_.far);
+                     },
+                     [&](auto, const Mat4& in) { mode_ = Mode::frustum, source_ = Source::matrix, matrix_ = in; },
+                     [&](auto, const TriangleFrustum& in) {
+                       mode_ = Mode::frustum, source_ = Source::planes, triangle_ = in.triangle, planes_ = in.frustum;
+                     },
+                     [&](auto, const MeshFrustum& in) {
+                       mode_ = Mode::mesh, source_ = Source::planes, mesh_ = {in.mesh, in.colors}, planes_ = in.frustum;
+                     }});
   frame_inputs();
 }
 
@@ -126,9 +121,9 @@ Frustum FrustumSplitScene::exact_frustum() const {
 }
 
 std::string FrustumSplitScene::token() const {
-  if (mode_ == Mode::plane) return replay_token("split_triangle", split_);
-  if (mode_ == Mode::frustum) return replay_token("clip_triangle", TriangleFrustum{triangle_, exact_frustum()});
-  return replay_token("clip_mesh", MeshFrustum{mesh_.mesh, mesh_.colors, exact_frustum()});
+  if (mode_ == Mode::plane) return replay_token(query::split_triangle, split_);
+  if (mode_ == Mode::frustum) return replay_token(query::clip_triangle, TriangleFrustum{triangle_, exact_frustum()});
+  return replay_token(query::clip_mesh, MeshFrustum{mesh_.mesh, mesh_.colors, exact_frustum()});
 }
 
 // ---- update --------------------------------------------------------------------------

@@ -9,6 +9,7 @@
 // The student's answers are drawn in the colour of their verdict; the exact answers
 // (the toggle) are violet rings and arrows beside them.
 #include "viewer/scenes/02_segment_triangle.h"
+#include "02_segment_triangle.queries.h"
 
 #include "common/generators/meshes.h"
 #include "common/oracle/oracle.h"
@@ -63,28 +64,14 @@ SegmentTriangleScene::SegmentTriangleScene(const Setup& setup) {
     return;
   }
   const ParsedToken token = parse_token(starting_token(setup, kPresets, "find_segment_triangle:1,1,3,1,1,-1,0,0,0,4,0,0,0,4,0"));
-  const std::string& q = token.query;
-  if (q == "segment_plane" || q == "test_segment_triangle" || q == "find_segment_triangle" ||
-      q == "robust.find_segment_triangle") {
-    const auto in = input_from_token<SegmentTrianglePair>(token);
-    segment_ = in.segment, triangle_ = in.triangle;
-  } else if (q == "point_in_triangle_edges" || q == "barycentric" || q == "point_in_triangle_barycentric" ||
-             q == "robust.point_in_triangle") {
-    const auto in = input_from_token<PointTriangle>(token);
-    mode_ = Mode::point, x_ = in.x, triangle_ = in.triangle;
-  } else if (q == "any_hit" || q == "first_hit" || q == "all_hits" || q == "robust.all_hits") {
-    const auto in = input_from_token<SegmentMeshPair>(token);
-    mode_ = Mode::mesh, segment_ = in.segment, mesh_ = in.mesh;
-  } else if (q == "first_hit_moving") {
-    const auto in = input_from_token<MovingMesh>(token);
-    mode_ = Mode::moving, segment_ = in.segment, mesh_ = in.mesh, m0_ = in.m0, m1_ = in.m1;
-  } else if (q == "first_contact_moving_meshes" || q == "robust.first_contact_moving_meshes") {
-    mode_ = Mode::contact, meshes_ = input_from_token<MovingMeshes>(token);
-  } else {
-    throw unknown_query("02", q, "segment_plane, point_in_triangle_edges, barycentric, test_segment_triangle, "
-                                  "find_segment_triangle, any_hit, first_hit, all_hits, first_hit_moving, "
-                                  "first_contact_moving_meshes");
-  }
+  load_token("02", query::table, token,
+             Loaders{[&](auto, const SegmentTrianglePair& in) { segment_ = in.segment, triangle_ = in.triangle; },
+                     [&](auto, const PointTriangle& in) { mode_ = Mode::point, x_ = in.x, triangle_ = in.triangle; },
+                     [&](auto, const SegmentMeshPair& in) { mode_ = Mode::mesh, segment_ = in.segment, mesh_ = in.mesh; },
+                     [&](auto, const MovingMesh& in) {
+                       mode_ = Mode::moving, segment_ = in.segment, mesh_ = in.mesh, m0_ = in.m0, m1_ = in.m1;
+                     },
+                     [&](auto, const MovingMeshes& in) { mode_ = Mode::contact, meshes_ = in; }});
   frame_inputs();
 }
 
@@ -108,13 +95,13 @@ void SegmentTriangleScene::frame_inputs() {
 
 std::string SegmentTriangleScene::token() const {
   switch (mode_) {
-    case Mode::triangle: return replay_token("find_segment_triangle", SegmentTrianglePair{segment_, triangle_});
-    case Mode::point: return replay_token("barycentric", PointTriangle{x_, triangle_});
-    case Mode::mesh: return replay_token("first_hit", SegmentMeshPair{segment_, mesh_});
+    case Mode::triangle: return replay_token(query::find_segment_triangle, SegmentTrianglePair{segment_, triangle_});
+    case Mode::point: return replay_token(query::barycentric, PointTriangle{x_, triangle_});
+    case Mode::mesh: return replay_token(query::first_hit, SegmentMeshPair{segment_, mesh_});
     case Mode::moving: break;
-    case Mode::contact: return replay_token("first_contact_moving_meshes", meshes_);
+    case Mode::contact: return replay_token(query::first_contact_moving_meshes, meshes_);
   }
-  return replay_token("first_hit_moving", MovingMesh{segment_, mesh_, m0_, m1_});
+  return replay_token(query::first_hit_moving, MovingMesh{segment_, mesh_, m0_, m1_});
 }
 
 // ---- update --------------------------------------------------------------------------

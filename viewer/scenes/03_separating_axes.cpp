@@ -7,6 +7,7 @@
 // The student's answers are drawn in the colour of their verdict; the exact answers
 // (the toggle) are violet beside them.
 #include "viewer/scenes/03_separating_axes.h"
+#include "03_separating_axes.queries.h"
 
 #include "common/oracle/oracle.h"
 
@@ -82,27 +83,19 @@ SeparatingAxesScene::SeparatingAxesScene(const Setup& setup) {
     preset(p ? p->name : "edge-axis");
   } else {
     const ParsedToken token = parse_token(setup.token);
-    const std::string& q = token.query;
-    if (q == "project_box") {
-      const auto in = input_from_token<BoxOnAxis>(token);
-      a_ = in.box, axis_ = in.axis, b_ = make_box(in.box.center + Vec3(0, 0, 3 * in.box.half_extents.maxCoeff() + 1), Vec3(0.5, 0.5, 0.5));
-    } else if (q == "separated_on_axis") {
-      const auto in = input_from_token<BoxPairOnAxis>(token);
-      a_ = in.a, b_ = in.b, axis_ = in.axis;
-    } else if (q == "box_axis" || q == "test_boxes" || q == "find_boxes" || q == "robust.boxes") {
-      const auto in = input_from_token<BoxPair>(token);
-      a_ = in.a, b_ = in.b;
-    } else if (q == "test_triangles" || q == "triangles_by_intervals" || q == "robust.triangles") {
-      const auto in = input_from_token<TrianglePair>(token);
-      mode_ = Mode::triangles, t0_ = in.t0, t1_ = in.t1;
-    } else if (q == "test_moving_boxes" || q == "find_moving_boxes" || q == "robust.moving_boxes" ||
-               q == "find_moving_boxes") {
-      const auto in = input_from_token<MovingBoxes>(token);
-      mode_ = Mode::moving, a_ = in.a, va_ = in.velocity_a, b_ = in.b, vb_ = in.velocity_b, duration_ = in.duration;
-    } else {
-      throw unknown_query("03", q, "project_box, separated_on_axis, box_axis, test_boxes, find_boxes, "
-                                   "triangles_by_intervals, test_triangles, test_moving_boxes, find_moving_boxes");
-    }
+    load_token("03", query::table, token,
+               Loaders{[&](auto, const BoxOnAxis& in) {
+                         a_ = in.box, axis_ = in.axis;
+                         b_ = make_box(in.box.center + Vec3(0, 0, 3 * in.box.half_extents.maxCoeff() + 1),
+                                       Vec3(0.5, 0.5, 0.5));
+                       },
+                       [&](auto, const BoxPairOnAxis& in) { a_ = in.a, b_ = in.b, axis_ = in.axis; },
+                       [&](auto, const BoxPair& in) { a_ = in.a, b_ = in.b; },
+                       [&](auto, const TrianglePair& in) { mode_ = Mode::triangles, t0_ = in.t0, t1_ = in.t1; },
+                       [&](auto, const MovingBoxes& in) {
+                         mode_ = Mode::moving, a_ = in.a, va_ = in.velocity_a, b_ = in.b, vb_ = in.velocity_b;
+                         duration_ = in.duration;
+                       }});
   }
   angles_a_ = angles_of(a_.axes), angles_b_ = angles_of(b_.axes);
   frame_inputs();
@@ -125,11 +118,11 @@ void SeparatingAxesScene::frame_inputs() {
 
 std::string SeparatingAxesScene::token() const {
   switch (mode_) {
-    case Mode::boxes: return replay_token("find_boxes", BoxPair{a_, b_});
-    case Mode::triangles: return replay_token("test_triangles", TrianglePair{t0_, t1_});
+    case Mode::boxes: return replay_token(query::find_boxes, BoxPair{a_, b_});
+    case Mode::triangles: return replay_token(query::test_triangles, TrianglePair{t0_, t1_});
     case Mode::moving: break;
   }
-  return replay_token("find_moving_boxes", MovingBoxes{a_, va_, b_, vb_, duration_});
+  return replay_token(query::find_moving_boxes, MovingBoxes{a_, va_, b_, vb_, duration_});
 }
 
 // ---- update --------------------------------------------------------------------------

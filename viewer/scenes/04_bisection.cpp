@@ -14,6 +14,7 @@
 // violet. Below them a time axis: every tested time (white: clear, blue: overlapping,
 // decided exactly), and the bracket [lo, hi] the tests so far imply, one row per test.
 #include "viewer/scenes/04_bisection.h"
+#include "04_bisection.queries.h"
 
 #include "common/oracle/oracle.h"
 
@@ -84,25 +85,19 @@ BisectionScene::BisectionScene(const Setup& setup) {
     return;
   }
   const ParsedToken token = parse_token(setup.token);
-  const std::string& q = token.query;
-  if (q == "overlap_at" || q == "bisect" || q == "distance_at" || q == "robust.overlap_at" || q == "robust.bisect") {
-    case_ = input_from_token<MovingPairCase>(token);
-  } else if (q == "tunnelling" || q == "closing_speed") {
-    mode_ = Mode::tunnelling, case_ = input_from_token<MovingPairCase>(token);
-  } else if (q == "sample_then_bisect" || q == "robust.sample_then_bisect") {
-    const auto in = input_from_token<SampledPair>(token);
-    mode_ = Mode::sampled, case_ = in.pair, substeps_ = std::max(1, in.substeps);
-  } else if (q == "advance" || q == "robust.advance") {
-    const auto in = input_from_token<AdvancedPair>(token);
-    mode_ = Mode::advance, case_ = in.pair, speed_factor_ = in.speed_factor;
-  } else if (q == "closest_point" || q == "robust.closest_point") {
-    mode_ = Mode::point, point_box_ = input_from_token<PointBox>(token);
-  } else if (q == "substeps_for" || q == "robust.substeps_for") {
-    mode_ = Mode::rule, rule_ = input_from_token<SubstepRule>(token);
-  } else {
-    throw unknown_query("04", q, "overlap_at, closest_point, bisect, closing_speed, substeps_for, sample_then_bisect, tunnelling, "
-                                  "distance_at, advance (and their robust. forms)");
-  }
+  load_token("04", query::table, token,
+             Loaders{[&](auto q, const MovingPairCase& in) {
+                       case_ = in;
+                       if (q == query::tunnelling || q == query::closing_speed) mode_ = Mode::tunnelling;
+                     },
+                     [&](auto, const SampledPair& in) {
+                       mode_ = Mode::sampled, case_ = in.pair, substeps_ = std::max(1, in.substeps);
+                     },
+                     [&](auto, const AdvancedPair& in) {
+                       mode_ = Mode::advance, case_ = in.pair, speed_factor_ = in.speed_factor;
+                     },
+                     [&](auto, const PointBox& in) { mode_ = Mode::point, point_box_ = in; },
+                     [&](auto, const SubstepRule& in) { mode_ = Mode::rule, rule_ = in; }});
   frame_inputs();
 }
 
@@ -129,14 +124,14 @@ void BisectionScene::frame_inputs() {
 
 std::string BisectionScene::token() const {
   switch (mode_) {
-    case Mode::bisect: return replay_token("bisect", case_);
-    case Mode::sampled: return replay_token("sample_then_bisect", SampledPair{case_, substeps_});
-    case Mode::tunnelling: return replay_token("tunnelling", case_);
-    case Mode::advance: return replay_token("advance", AdvancedPair{case_, speed_factor_});
-    case Mode::point: return replay_token("closest_point", point_box_);
+    case Mode::bisect: return replay_token(query::bisect, case_);
+    case Mode::sampled: return replay_token(query::sample_then_bisect, SampledPair{case_, substeps_});
+    case Mode::tunnelling: return replay_token(query::tunnelling, case_);
+    case Mode::advance: return replay_token(query::advance, AdvancedPair{case_, speed_factor_});
+    case Mode::point: return replay_token(query::closest_point, point_box_);
     case Mode::rule: break;
   }
-  return replay_token("substeps_for", rule_);
+  return replay_token(query::substeps_for, rule_);
 }
 
 // ---- update --------------------------------------------------------------------------

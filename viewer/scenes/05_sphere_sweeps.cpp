@@ -12,6 +12,7 @@
 // points and answers take the colour of their verdict. The exact answers (the toggle)
 // are violet: the exact distance and status in the panel, rings at the exact contact.
 #include "viewer/scenes/05_sphere_sweeps.h"
+#include "05_sphere_sweeps.queries.h"
 
 #include "common/oracle/oracle.h"
 
@@ -60,71 +61,64 @@ Plane drawable(const Plane& p) {
 
 // ---- setup ---------------------------------------------------------------------------
 
-void SphereSweepsScene::read_cores(const std::string& q, const ParsedToken& token) {
-  const auto kinds = [&](Core k0, Core k1) { a_.kind = k0, b_.kind = k1; };
-  const auto radii = [&](double r0, double r1) { a_.radius = r0, b_.radius = r1; };
-  if (q == "point_segment") {
-    const auto in = input_from_token<PointSegmentPair>(token);
-    kinds(Core::point, Core::segment), a_.p = in.p, b_.s = in.segment;
-  } else if (q == "segment_segment") {
-    const auto in = input_from_token<SegmentPair>(token);
-    kinds(Core::segment, Core::segment), a_.s = in.first, b_.s = in.second;
-  } else if (q == "point_rectangle") {
-    const auto in = input_from_token<PointRectanglePair>(token);
-    kinds(Core::point, Core::rectangle), a_.p = in.p, b_.r = in.rectangle;
-  } else if (q == "segment_rectangle") {
-    const auto in = input_from_token<SegmentRectanglePair>(token);
-    kinds(Core::segment, Core::rectangle), a_.s = in.segment, b_.r = in.rectangle;
-  } else if (q == "rectangle_rectangle") {
-    const auto in = input_from_token<RectanglePair>(token);
-    kinds(Core::rectangle, Core::rectangle), a_.r = in.first, b_.r = in.second;
-  } else if (q == "test_sphere_sphere") {
-    const auto in = input_from_token<SpherePair>(token);
-    kinds(Core::point, Core::point), a_.p = in.a.center, b_.p = in.b.center, radii(in.a.radius, in.b.radius);
-  } else if (q == "test_sphere_capsule") {
-    const auto in = input_from_token<SphereCapsule>(token);
-    kinds(Core::point, Core::segment), a_.p = in.a.center, b_.s = in.b.axis, radii(in.a.radius, in.b.radius);
-  } else if (q == "test_sphere_lozenge") {
-    const auto in = input_from_token<SphereLozenge>(token);
-    kinds(Core::point, Core::rectangle), a_.p = in.a.center, b_.r = in.b.rectangle, radii(in.a.radius, in.b.radius);
-  } else if (q == "test_capsule_capsule") {
-    const auto in = input_from_token<CapsulePair>(token);
-    kinds(Core::segment, Core::segment), a_.s = in.a.axis, b_.s = in.b.axis, radii(in.a.radius, in.b.radius);
-  } else if (q == "test_capsule_lozenge") {
-    const auto in = input_from_token<CapsuleLozenge>(token);
-    kinds(Core::segment, Core::rectangle), a_.s = in.a.axis, b_.r = in.b.rectangle, radii(in.a.radius, in.b.radius);
-  } else if (q == "test_lozenge_lozenge") {
-    const auto in = input_from_token<LozengePair>(token);
-    kinds(Core::rectangle, Core::rectangle), a_.r = in.a.rectangle, b_.r = in.b.rectangle, radii(in.a.radius, in.b.radius);
-  } else {
-    throw unknown_query("05", q, "point_segment, segment_segment, point_rectangle, segment_rectangle, rectangle_rectangle, "
-                                  "test_sphere_sphere, test_sphere_capsule, test_sphere_lozenge, test_capsule_capsule, "
-                                  "test_capsule_lozenge, test_lozenge_lozenge, sweep_sphere_plane, sweep_sphere_sphere, "
-                                  "sweep_sphere_capsule, sweep_box_plane");
-  }
-  test_query_ = q.rfind("test_", 0) == 0;
-}
-
 SphereSweepsScene::SphereSweepsScene(const Setup& setup) {
   view_preset(kPresets, setup);
   const ParsedToken token = parse_token(starting_token(setup, kPresets, kPresets[0].token));
-  std::string q = token.query;
-  if (q.rfind("robust.", 0) == 0) q = q.substr(7);
-  if (q == "sweep_sphere_plane") {
-    const auto in = input_from_token<SpherePlaneMotion>(token);
-    mode_ = Mode::sphere_plane, s0_ = in.sphere, v0_ = in.velocity, plane_ = in.plane, duration_ = in.duration;
-  } else if (q == "sweep_sphere_sphere") {
-    const auto in = input_from_token<SphereSphereMotion>(token);
-    mode_ = Mode::sphere_sphere, s0_ = in.s0, v0_ = in.v0, s1_ = in.s1, v1_ = in.v1, duration_ = in.duration;
-  } else if (q == "sweep_sphere_capsule") {
-    const auto in = input_from_token<SphereCapsuleMotion>(token);
-    mode_ = Mode::sphere_capsule, s0_ = in.sphere, v0_ = in.velocity, capsule_ = in.capsule, duration_ = in.duration;
-  } else if (q == "sweep_box_plane") {
-    const auto in = input_from_token<BoxPlaneMotion>(token);
-    mode_ = Mode::box_plane, box_ = in.box, v0_ = in.velocity, plane_ = in.plane, duration_ = in.duration;
-  } else {
-    read_cores(q, token);
-  }
+  const auto kinds = [&](Core k0, Core k1) { a_.kind = k0, b_.kind = k1; };
+  // A test of step 3 (two shapes with radii) is drawn as its cores and radii; its token
+  // names the test again, not a distance.
+  const auto shapes = [&](auto q, Core k0, Core k1, double r0, double r1) {
+    kinds(k0, k1), a_.radius = r0, b_.radius = r1;
+    test_query_ = std::string(q.name).find("test_") != std::string::npos;
+  };
+  load_token(
+      "05", query::table, token,
+      Loaders{
+          [&](auto, const SpherePlaneMotion& in) {
+            mode_ = Mode::sphere_plane, s0_ = in.sphere, v0_ = in.velocity, plane_ = in.plane, duration_ = in.duration;
+          },
+          [&](auto, const SphereSphereMotion& in) {
+            mode_ = Mode::sphere_sphere, s0_ = in.s0, v0_ = in.v0, s1_ = in.s1, v1_ = in.v1, duration_ = in.duration;
+          },
+          [&](auto, const SphereCapsuleMotion& in) {
+            mode_ = Mode::sphere_capsule, s0_ = in.sphere, v0_ = in.velocity, capsule_ = in.capsule;
+            duration_ = in.duration;
+          },
+          [&](auto, const BoxPlaneMotion& in) {
+            mode_ = Mode::box_plane, box_ = in.box, v0_ = in.velocity, plane_ = in.plane, duration_ = in.duration;
+          },
+          [&](auto, const PointSegmentPair& in) { kinds(Core::point, Core::segment), a_.p = in.p, b_.s = in.segment; },
+          [&](auto, const SegmentPair& in) { kinds(Core::segment, Core::segment), a_.s = in.first, b_.s = in.second; },
+          [&](auto, const PointRectanglePair& in) {
+            kinds(Core::point, Core::rectangle), a_.p = in.p, b_.r = in.rectangle;
+          },
+          [&](auto, const SegmentRectanglePair& in) {
+            kinds(Core::segment, Core::rectangle), a_.s = in.segment, b_.r = in.rectangle;
+          },
+          [&](auto, const RectanglePair& in) {
+            kinds(Core::rectangle, Core::rectangle), a_.r = in.first, b_.r = in.second;
+          },
+          [&](auto q, const SpherePair& in) {
+            shapes(q, Core::point, Core::point, in.a.radius, in.b.radius), a_.p = in.a.center, b_.p = in.b.center;
+          },
+          [&](auto q, const SphereCapsule& in) {
+            shapes(q, Core::point, Core::segment, in.a.radius, in.b.radius), a_.p = in.a.center, b_.s = in.b.axis;
+          },
+          [&](auto q, const SphereLozenge& in) {
+            shapes(q, Core::point, Core::rectangle, in.a.radius, in.b.radius), a_.p = in.a.center;
+            b_.r = in.b.rectangle;
+          },
+          [&](auto q, const CapsulePair& in) {
+            shapes(q, Core::segment, Core::segment, in.a.radius, in.b.radius), a_.s = in.a.axis, b_.s = in.b.axis;
+          },
+          [&](auto q, const CapsuleLozenge& in) {
+            shapes(q, Core::segment, Core::rectangle, in.a.radius, in.b.radius), a_.s = in.a.axis;
+            b_.r = in.b.rectangle;
+          },
+          [&](auto q, const LozengePair& in) {
+            shapes(q, Core::rectangle, Core::rectangle, in.a.radius, in.b.radius), a_.r = in.a.rectangle;
+            b_.r = in.b.rectangle;
+          }});
   const Vec3 c = mode_ == Mode::box_plane ? box_.center : s0_.center;
   end0_ = last_end0_ = c + duration_ * v0_;
   end1_ = last_end1_ = s1_.center + duration_ * v1_;
@@ -163,30 +157,30 @@ void SphereSweepsScene::frame_inputs() {
 
 std::string SphereSweepsScene::token() const {
   switch (mode_) {
-    case Mode::sphere_plane: return replay_token("sweep_sphere_plane", SpherePlaneMotion{s0_, v0_, plane_, duration_});
-    case Mode::sphere_sphere: return replay_token("sweep_sphere_sphere", SphereSphereMotion{s0_, v0_, s1_, v1_, duration_});
-    case Mode::box_plane: return replay_token("sweep_box_plane", BoxPlaneMotion{box_, v0_, plane_, duration_});
+    case Mode::sphere_plane: return replay_token(query::sweep_sphere_plane, SpherePlaneMotion{s0_, v0_, plane_, duration_});
+    case Mode::sphere_sphere: return replay_token(query::sweep_sphere_sphere, SphereSphereMotion{s0_, v0_, s1_, v1_, duration_});
+    case Mode::box_plane: return replay_token(query::sweep_box_plane, BoxPlaneMotion{box_, v0_, plane_, duration_});
     case Mode::sphere_capsule:
-      return replay_token("sweep_sphere_capsule", SphereCapsuleMotion{s0_, v0_, capsule_, duration_});
+      return replay_token(query::sweep_sphere_capsule, SphereCapsuleMotion{s0_, v0_, capsule_, duration_});
     case Mode::cores: break;
   }
   const Sphere sa{a_.p, a_.radius}, sb{b_.p, b_.radius};
   const Capsule ca{a_.s, a_.radius}, cb{b_.s, b_.radius};
   const Lozenge la{a_.r, a_.radius}, lb{b_.r, b_.radius};
   const Core k0 = a_.kind, k1 = b_.kind;
-  if (k0 == Core::point && k1 == Core::point) return replay_token("test_sphere_sphere", SpherePair{sa, sb});
+  if (k0 == Core::point && k1 == Core::point) return replay_token(query::test_sphere_sphere, SpherePair{sa, sb});
   if (k0 == Core::point && k1 == Core::segment)
-    return test_query_ ? replay_token("test_sphere_capsule", SphereCapsule{sa, cb}) : replay_token("point_segment", PointSegmentPair{a_.p, b_.s});
+    return test_query_ ? replay_token(query::test_sphere_capsule, SphereCapsule{sa, cb}) : replay_token(query::point_segment, PointSegmentPair{a_.p, b_.s});
   if (k0 == Core::segment && k1 == Core::segment)
-    return test_query_ ? replay_token("test_capsule_capsule", CapsulePair{ca, cb}) : replay_token("segment_segment", SegmentPair{a_.s, b_.s});
+    return test_query_ ? replay_token(query::test_capsule_capsule, CapsulePair{ca, cb}) : replay_token(query::segment_segment, SegmentPair{a_.s, b_.s});
   if (k0 == Core::point && k1 == Core::rectangle)
-    return test_query_ ? replay_token("test_sphere_lozenge", SphereLozenge{sa, lb})
-                       : replay_token("point_rectangle", PointRectanglePair{a_.p, b_.r});
+    return test_query_ ? replay_token(query::test_sphere_lozenge, SphereLozenge{sa, lb})
+                       : replay_token(query::point_rectangle, PointRectanglePair{a_.p, b_.r});
   if (k0 == Core::segment && k1 == Core::rectangle)
-    return test_query_ ? replay_token("test_capsule_lozenge", CapsuleLozenge{ca, lb})
-                       : replay_token("segment_rectangle", SegmentRectanglePair{a_.s, b_.r});
-  return test_query_ ? replay_token("test_lozenge_lozenge", LozengePair{la, lb})
-                     : replay_token("rectangle_rectangle", RectanglePair{a_.r, b_.r});
+    return test_query_ ? replay_token(query::test_capsule_lozenge, CapsuleLozenge{ca, lb})
+                       : replay_token(query::segment_rectangle, SegmentRectanglePair{a_.s, b_.r});
+  return test_query_ ? replay_token(query::test_lozenge_lozenge, LozengePair{la, lb})
+                     : replay_token(query::rectangle_rectangle, RectanglePair{a_.r, b_.r});
 }
 
 // ---- update --------------------------------------------------------------------------

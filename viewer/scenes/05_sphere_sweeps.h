@@ -55,7 +55,6 @@ class SphereSweepsScene : public Scene {
   std::string token() const override;
 
  private:
-  void read_cores(const std::string& query, const ParsedToken& token);
   void frame_inputs();
   void update_cores();  // 05_sphere_sweeps.cores.cpp
   void update_sphere_plane();

@@ -12,6 +12,7 @@
 // (the toggle) as violet rings. When step 1 is still a stub, the queries run on the
 // checker's own tree, as the tests do.
 #include "viewer/scenes/06_spatial_trees.h"
+#include "06_spatial_trees.queries.h"
 
 #include "common/generators/meshes.h"
 #include "common/given/segment_triangle.h"
@@ -98,38 +99,29 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
     return;
   }
   const ParsedToken token = parse_token(starting_token(setup, kPresets, ""));
-  std::string q = token.query;
-  if (q.rfind("robust.", 0) == 0) q = q.substr(7);
-  if (q == "first_hit" || q == "any_hit" || q == "all_hits" || q == "segment_queries") {
-    const auto in = input_from_token<TreeQuery>(token);
-    mesh_ = in.mesh, segment_ = in.segment, tree_seed_ = in.tree;
-  } else if (q == "build_kd_tree" || q == "build_kd_tree.lattice") {
-    mesh_ = input_from_token<Mesh>(token);
-    if (mesh_.size() > 0) segment_ = {mesh_.vertices[0] - Vec3(1, 1, 1), mesh_.vertices.back() + Vec3(1, 1, 1)};
-  } else if (q == "build_bsp") {
-    mode_ = Mode::bsp;
-    mesh_ = input_from_token<Mesh>(token);
-    if (!mesh_.vertices.empty()) point_ = mesh_.vertices[0];
-  } else if (q == "classify" || q == "back_to_front") {
-    mode_ = Mode::bsp;
-    const auto in = input_from_token<PointQuery>(token);
-    mesh_ = in.mesh, point_ = in.point;
-  } else if (q == "overlapping_pairs") {
-    mode_ = Mode::spheres;
-    spheres_ = input_from_token<SphereSet>(token).spheres;
-  } else if (q == "colliding_triangles") {
-    mode_ = Mode::bvh;
-    const auto in = input_from_token<BvhQuery>(token);
-    mesh_ = in.a, mesh_b_ = in.b, tree_seed_ = in.tree_a, tree_seed_b_ = in.tree_b;
-  } else if (q == "sweep_frames" || q == "sweep_frames.moving") {
-    mode_ = Mode::frames;
-    frames_ = q == "sweep_frames" ? input_from_token<SweepCase>(token).frames : gen::moving_spheres(input_from_token<MovingSpheres>(token)).frames;
+  const auto frames = [&](std::vector<std::vector<Sphere>> f) {
+    mode_ = Mode::frames, frames_ = std::move(f);
     if (frames_.empty()) frames_.push_back({});
     spheres_ = frames_.back();
-  } else {
-    throw unknown_query("06", token.query, "build_kd_tree, first_hit, any_hit, all_hits, build_bsp, classify, back_to_front, "
-                                           "overlapping_pairs, sweep_frames, colliding_triangles (and their robust. forms)");
-  }
+  };
+  load_token("06", query::table, token,
+             Loaders{[&](auto, const TreeQuery& in) { mesh_ = in.mesh, segment_ = in.segment, tree_seed_ = in.tree; },
+                     [&](auto q, const Mesh& in) {
+                       mesh_ = in;
+                       if (q == query::build_bsp) {
+                         mode_ = Mode::bsp;
+                         if (!mesh_.vertices.empty()) point_ = mesh_.vertices[0];
+                       } else if (mesh_.size() > 0) {
+                         segment_ = {mesh_.vertices[0] - Vec3(1, 1, 1), mesh_.vertices.back() + Vec3(1, 1, 1)};
+                       }
+                     },
+                     [&](auto, const PointQuery& in) { mode_ = Mode::bsp, mesh_ = in.mesh, point_ = in.point; },
+                     [&](auto, const SphereSet& in) { mode_ = Mode::spheres, spheres_ = in.spheres; },
+                     [&](auto, const BvhQuery& in) {
+                       mode_ = Mode::bvh, mesh_ = in.a, mesh_b_ = in.b, tree_seed_ = in.tree_a, tree_seed_b_ = in.tree_b;
+                     },
+                     [&](auto, const SweepCase& in) { frames(in.frames); },
+                     [&](auto, const MovingSpheres& in) { frames(gen::moving_spheres(in).frames); }});
   frame_inputs();
 }
 
@@ -150,13 +142,13 @@ void SpatialTreesScene::frame_inputs() {
 
 std::string SpatialTreesScene::token() const {
   switch (mode_) {
-    case Mode::kd: return replay_token("first_hit", TreeQuery{mesh_, segment_, tree_seed_});
-    case Mode::bsp: return replay_token("classify", PointQuery{mesh_, point_});
-    case Mode::bvh: return replay_token("colliding_triangles", BvhQuery{mesh_, mesh_b_, tree_seed_, tree_seed_b_, true});
-    case Mode::frames: return replay_token("sweep_frames", SweepCase{frames_});
+    case Mode::kd: return replay_token(query::first_hit, TreeQuery{mesh_, segment_, tree_seed_});
+    case Mode::bsp: return replay_token(query::classify, PointQuery{mesh_, point_});
+    case Mode::bvh: return replay_token(query::colliding_triangles, BvhQuery{mesh_, mesh_b_, tree_seed_, tree_seed_b_, true});
+    case Mode::frames: return replay_token(query::sweep_frames, SweepCase{frames_});
     case Mode::spheres: break;
   }
-  return replay_token("overlapping_pairs", SphereSet{spheres_});
+  return replay_token(query::overlapping_pairs, SphereSet{spheres_});
 }
 
 // ---- update --------------------------------------------------------------------------

@@ -15,6 +15,7 @@
 // surface, energy gained) is drawn red. One particle (the oldest) is followed: its
 // step, hits and impulse are judged in full and the exact first hit is ringed in violet.
 #include "viewer/scenes/07_particles.h"
+#include "07_particles.queries.h"
 
 #include "common/generators/meshes.h"
 #include "common/oracle/oracle.h"
@@ -123,20 +124,17 @@ ParticlesScene::ParticlesScene(const Setup& setup) {
     return;
   }
   const ParsedToken token = parse_token(start);
-  const std::string& q = token.query;
-  if (q == "system") {
-    case_ = input_from_token<SystemCase>(token);
-  } else if (q == "aim" || q == "exact.aim") {
-    mode_ = Mode::target, launch_ = input_from_token<LaunchCase>(token);
-  } else if (q == "collide" || q == "invariants") {
-    mode_ = Mode::step, one_ = input_from_token<CollideCase>(token);
-  } else if (q == "first_hit" || q == "exact.first_hit" || q == "hit_plane") {
-    const auto in = input_from_token<SegmentScene>(token);
-    mode_ = Mode::step, one_ = CollideCase{in.segment, in.segment.b - in.segment.a, 1, 1, in.scene};
-    if (q == "hit_plane") one_.scene.planes.resize(std::min<std::size_t>(1, one_.scene.planes.size())), one_.scene.mesh = {};
-  } else {
-    throw unknown_query("07", q, "system, aim, exact.aim, collide, invariants, first_hit, exact.first_hit, hit_plane");
-  }
+  load_token("07", query::table, token,
+             Loaders{[&](auto, const SystemCase& in) { case_ = in; },
+                     [&](auto, const LaunchCase& in) { mode_ = Mode::target, launch_ = in; },
+                     [&](auto, const CollideCase& in) { mode_ = Mode::step, one_ = in; },
+                     [&](auto q, const SegmentScene& in) {
+                       mode_ = Mode::step, one_ = CollideCase{in.segment, in.segment.b - in.segment.a, 1, 1, in.scene};
+                       if (q == query::hit_plane) {
+                         one_.scene.planes.resize(std::min<std::size_t>(1, one_.scene.planes.size()));
+                         one_.scene.mesh = {};
+                       }
+                     }});
   if (mode_ == Mode::fountain) {
     const int steps = case_.steps;
     case_.steps = 0;
@@ -177,11 +175,11 @@ void ParticlesScene::frame_inputs() {
 }
 
 std::string ParticlesScene::token() const {
-  if (mode_ == Mode::target) return replay_token("aim", launch_);
-  if (mode_ == Mode::step) return replay_token("collide", one_);
+  if (mode_ == Mode::target) return replay_token(query::aim, launch_);
+  if (mode_ == Mode::step) return replay_token(query::collide, one_);
   SystemCase c = case_;
   c.steps = stepped_;
-  return replay_token("system", c);
+  return replay_token(query::system, c);
 }
 
 // ---- update --------------------------------------------------------------------------
