@@ -77,7 +77,7 @@ function(labkit_add_lab number name)
   # The judge: its verdicts (tests/NN_name.judge*.cpp, split by step when long) and the
   # lab's own generators (common/generators/NN_name*.cpp), which know the lab's types.
   file(GLOB judge_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}.judge*.cpp"
-       "${PROJECT_SOURCE_DIR}/tests/${stem}.generators.cpp" "${PROJECT_SOURCE_DIR}/common/generators/${stem}*.cpp")
+       "${PROJECT_SOURCE_DIR}/common/generators/${stem}*.cpp")
   add_library(${lab}_judge STATIC ${judge_sources})
   target_include_directories(${lab}_judge PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_judge PUBLIC labkit_harness labkit_oracle)

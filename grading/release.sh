@@ -31,11 +31,12 @@ make_release() {
     [ -d "$folder" ] && cp -pR "$folder" "$out/"
   done
   mkdir -p "$out/tests" "$out/grading"
-  # A judge's pieces: its tests, its cases and verdicts, its wire, and (when it keeps
-  # them apart) its generators. Every file cmake/LabKit.cmake compiles into a judge.
+  # A judge's pieces: its tests, its verdicts (one file or several, and what they share),
+  # what every judge shares, and its wire. With common/ (inputs, generators) that is every
+  # file cmake/LabKit.cmake compiles into a judge.
   local piece
-  for piece in tests/CMakeLists.txt tests/*.test.cpp tests/*.judge.h tests/*.judge.cpp \
-               tests/*.wire.h tests/*.generators.cpp; do
+  for piece in tests/CMakeLists.txt tests/*.test.cpp tests/*.judge.h tests/*.judge*.cpp tests/*.judging.h \
+               tests/judging.h tests/*.wire.h; do
     if [ -e "$piece" ]; then cp -p "$piece" "$out/tests/"; fi
   done
   cp -pR tests/kit "$out/tests/"

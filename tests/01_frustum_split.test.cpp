@@ -1,7 +1,6 @@
 // Lab 01 tests. Each step: the hand-worked examples of handouts/01_frustum_split.md,
 // then random cases against the exact oracle (tests/01_frustum_split.judge.cpp).
 #include "01_frustum_split.judge.h"
-#include "01_frustum_split.queries.h"
 #include "common/oracle/clipping.h"
 #include "frustum_split.h"
 

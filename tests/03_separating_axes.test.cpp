@@ -1,7 +1,6 @@
 // Lab 03 tests. Each step: the hand-worked examples of handouts/03_separating_axes.md,
 // then random cases against the exact oracle (tests/03_separating_axes.judge.cpp).
 #include "03_separating_axes.judge.h"
-#include "03_separating_axes.queries.h"
 #include "separating_axes.h"
 
 #include <cmath>

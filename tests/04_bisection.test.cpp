@@ -1,7 +1,6 @@
 // Lab 04 tests. Each step: the hand-worked examples of handouts/04_bisection.md, then
 // random cases against the exact oracle (tests/04_bisection.judge.cpp).
 #include "04_bisection.judge.h"
-#include "04_bisection.queries.h"
 #include "bisection.h"
 
 #include <algorithm>

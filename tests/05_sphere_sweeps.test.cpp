@@ -1,7 +1,6 @@
 // Lab 05 tests. Each step: the hand-worked examples of handouts/05_sphere_sweeps.md,
 // then random cases against the exact oracle (tests/05_sphere_sweeps.judge.cpp).
 #include "05_sphere_sweeps.judge.h"
-#include "05_sphere_sweeps.queries.h"
 #include "sphere_sweeps.h"
 
 #include <cmath>

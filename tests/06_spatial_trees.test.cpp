@@ -1,7 +1,6 @@
 // Lab 06 tests. Each step: the hand-worked examples of handouts/06_spatial_trees.md, then
 // random cases against the exact oracle (tests/06_spatial_trees.judge.cpp).
 #include "06_spatial_trees.judge.h"
-#include "06_spatial_trees.queries.h"
 #include "spatial_trees.h"
 
 #include "common/splitmix.h"

@@ -1,7 +1,6 @@
 // Lab 07 tests. Each step: the hand-worked examples of handouts/07_particles.md, then
 // random cases against the exact oracle (tests/07_particles.judge.cpp).
 #include "07_particles.judge.h"
-#include "07_particles.queries.h"
 #include "particles.h"
 
 #include "common/generators/meshes.h"

@@ -1,6 +1,7 @@
 // A lab's queries: the names its tests give the questions they ask (a replay token's
-// prefix, "first_hit:0.5,...") and the input each takes. Each lab lists them once, in
-// tests/NN_name.queries.h, as a table the tests, the viewer's scene and its presets read:
+// prefix, "first_hit:0.5,...") and the input each takes. Each lab lists them once, at the
+// end of common/inputs/NN_name.h, as a table the tests, the viewer's scene and its
+// presets read:
 //
 //   #define LABKIT_LAB06_QUERIES(X) X(first_hit, "first_hit", TreeQuery) ...
 //   namespace labkit::lab06::query { LABKIT_LAB06_QUERIES(LABKIT_QUERY) LABKIT_QUERY_TABLE(LABKIT_LAB06_QUERIES) }

@@ -5,6 +5,8 @@
 
 #include "frustum_split.h"
 
+#include "common/harness/query.h"
+
 #include <vector>
 
 namespace labkit {
@@ -65,3 +67,31 @@ void fields(CameraParameters& c, Visit&& visit) {
 }
 
 }  // namespace labkit
+
+// ---- The queries -------------------------------------------------------------------------
+// The name of each question the tests ask (a replay token's prefix) and the input it takes,
+// by the step that asks it first. The tests, the viewer's scene and its presets read this
+// table (common/harness/query.h): a query is added or renamed here and nowhere else.
+#define LABKIT_LAB01_QUERIES(X)                                    \
+  /* step 1 */                                                     \
+  X(signed_distance, "signed_distance", TrianglePlane)             \
+  X(classify, "classify", TrianglePlane)                           \
+  /* step 2 */                                                     \
+  X(split_triangle, "split_triangle", TrianglePlane)               \
+  /* step 3 */                                                     \
+  X(frustum_from_camera, "frustum_from_camera", Camera)            \
+  X(frustum_from_matrix, "frustum_from_matrix", Mat4)              \
+  /* step 4 */                                                     \
+  X(clip_triangle, "clip_triangle", TriangleFrustum)               \
+  /* step 5 */                                                     \
+  X(clip_mesh, "clip_mesh", MeshFrustum)                           \
+  /* step 6 */                                                     \
+  X(robust_classify, "robust.classify", TrianglePlane)             \
+  X(robust_split_triangle, "robust.split_triangle", TrianglePlane) \
+  X(robust_clip_triangle, "robust.clip_triangle", TriangleFrustum) \
+  X(robust_clip_mesh, "robust.clip_mesh", MeshFrustum)
+
+namespace labkit::lab01::query {
+LABKIT_LAB01_QUERIES(LABKIT_QUERY)
+LABKIT_QUERY_TABLE(LABKIT_LAB01_QUERIES)
+}  // namespace labkit::lab01::query

@@ -5,6 +5,8 @@
 
 #include "separating_axes.h"
 
+#include "common/harness/query.h"
+
 namespace labkit {
 
 struct BoxOnAxis {
@@ -67,3 +69,32 @@ void fields(MovingBoxes& p, Visit&& visit) {
 }
 
 }  // namespace labkit
+
+// ---- The queries -------------------------------------------------------------------------
+// The name of each question the tests ask (a replay token's prefix) and the input it takes,
+// by the step that asks it first. The tests, the viewer's scene and its presets read this
+// table (common/harness/query.h): a query is added or renamed here and nowhere else.
+#define LABKIT_LAB03_QUERIES(X)                                     \
+  /* step 1 */                                                      \
+  X(project_box, "project_box", BoxOnAxis)                          \
+  X(separated_on_axis, "separated_on_axis", BoxPairOnAxis)          \
+  /* step 2 */                                                      \
+  X(box_axis, "box_axis", BoxPair)                                  \
+  X(test_boxes, "test_boxes", BoxPair)                              \
+  /* step 3 */                                                      \
+  X(find_boxes, "find_boxes", BoxPair)                              \
+  /* step 4 */                                                      \
+  X(triangles_by_intervals, "triangles_by_intervals", TrianglePair) \
+  X(test_triangles, "test_triangles", TrianglePair)                 \
+  /* step 5 */                                                      \
+  X(test_moving_boxes, "test_moving_boxes", MovingBoxes)            \
+  X(find_moving_boxes, "find_moving_boxes", MovingBoxes)            \
+  /* step 6 */                                                      \
+  X(robust_boxes, "robust.boxes", BoxPair)                          \
+  X(robust_triangles, "robust.triangles", TrianglePair)             \
+  X(robust_moving_boxes, "robust.moving_boxes", MovingBoxes)
+
+namespace labkit::lab03::query {
+LABKIT_LAB03_QUERIES(LABKIT_QUERY)
+LABKIT_QUERY_TABLE(LABKIT_LAB03_QUERIES)
+}  // namespace labkit::lab03::query

@@ -5,6 +5,8 @@
 
 #include "bisection.h"
 
+#include "common/harness/query.h"
+
 #include "common/harness/codec.h"
 
 #include <string>
@@ -95,3 +97,40 @@ std::string describe(const SearchTimes& t);
 std::string describe(const MovingBody& b);  // the shape it is, and its motion
 
 }  // namespace labkit
+
+// ---- The queries -------------------------------------------------------------------------
+// The name of each question the tests ask (a replay token's prefix) and the input it takes,
+// by the step that asks it first. The tests, the viewer's scene and its presets read this
+// table (common/harness/query.h): a query is added or renamed here and nowhere else.
+#define LABKIT_LAB04_QUERIES(X)                                          \
+  /* step 1 */                                                           \
+  X(placed, "placed", Sphere)                                            \
+  X(overlap_spheres, "overlap.spheres", Sphere)                          \
+  X(overlap_sphere_box, "overlap.sphere_box", Sphere)                    \
+  X(closest_point, "closest_point", PointBox)                            \
+  X(overlap_at, "overlap_at", MovingPairCase)                            \
+  /* step 2 */                                                           \
+  X(bisect, "bisect", MovingPairCase)                                    \
+  /* step 3 */                                                           \
+  X(tunnelling, "tunnelling", MovingPairCase)                            \
+  X(smallest_size, "smallest_size", MovingPairCase)                      \
+  X(closing_speed, "closing_speed", MovingPairCase)                      \
+  X(substeps_for, "substeps_for", SubstepRule)                           \
+  X(sample_then_bisect, "sample_then_bisect", SampledPair)               \
+  /* step 4 */                                                           \
+  X(distance_spheres, "distance.spheres", Sphere)                        \
+  X(distance_sphere_box, "distance.sphere_box", Sphere)                  \
+  X(distance_at, "distance_at", MovingPairCase)                          \
+  X(advance, "advance", AdvancedPair)                                    \
+  /* step 5 */                                                           \
+  X(robust_closest_point, "robust.closest_point", PointBox)              \
+  X(robust_overlap_at, "robust.overlap_at", MovingPairCase)              \
+  X(robust_bisect, "robust.bisect", MovingPairCase)                      \
+  X(robust_substeps_for, "robust.substeps_for", SubstepRule)             \
+  X(robust_sample_then_bisect, "robust.sample_then_bisect", SampledPair) \
+  X(robust_advance, "robust.advance", AdvancedPair)
+
+namespace labkit::lab04::query {
+LABKIT_LAB04_QUERIES(LABKIT_QUERY)
+LABKIT_QUERY_TABLE(LABKIT_LAB04_QUERIES)
+}  // namespace labkit::lab04::query

@@ -1,8 +1,10 @@
-// Lab 06's inputs: each query's arguments as one struct, whose fields() let reports print
+// Lab 06's inputs: each query's arguments as one struct (the table of queries is at the end), whose fields() let reports print
 // it and replay tokens carry it (the answers' fields are in tests/06_spatial_trees.wire.h).
 #pragma once
 
 #include "spatial_trees.h"
+
+#include "common/harness/query.h"
 
 #include <vector>
 
@@ -75,3 +77,44 @@ struct SpreadSpheres {
 template <class V> void fields(SpreadSpheres& s, V&& v) { v("count", s.count); v("seed", s.seed); }
 
 }  // namespace labkit::lab06
+
+// ---- The queries -------------------------------------------------------------------------
+// The name of each question the tests ask (a replay token's prefix) and the input it takes,
+// by the step that asks it first. The tests, the viewer's scene and its presets read this
+// table (common/harness/query.h): a query is added or renamed here and nowhere else.
+#define LABKIT_LAB06_QUERIES(X)                                         \
+  /* step 1 */                                                          \
+  X(build_kd_tree, "build_kd_tree", Mesh)                               \
+  X(build_kd_tree_lattice, "build_kd_tree.lattice", Mesh)               \
+  /* step 2 */                                                          \
+  X(first_hit, "first_hit", TreeQuery)                                  \
+  X(any_hit, "any_hit", TreeQuery)                                      \
+  X(all_hits, "all_hits", TreeQuery)                                    \
+  /* step 3 */                                                          \
+  X(build_bsp, "build_bsp", Mesh)                                       \
+  X(classify, "classify", PointQuery)                                   \
+  /* step 4 */                                                          \
+  X(back_to_front, "back_to_front", PointQuery)                         \
+  /* step 5 */                                                          \
+  X(overlapping_pairs, "overlapping_pairs", SphereSet)                  \
+  /* step 6 */                                                          \
+  X(sweep_frames, "sweep_frames", SweepCase)                            \
+  X(sweep_frames_moving, "sweep_frames.moving", MovingSpheres)          \
+  /* step 7 */                                                          \
+  X(colliding_triangles, "colliding_triangles", BvhQuery)               \
+  /* step 8 */                                                          \
+  X(efficiency_segments, "efficiency.segments", EfficiencyCase)         \
+  X(efficiency_spheres, "efficiency.spheres", SpreadSpheres)            \
+  /* step 9 */                                                          \
+  X(robust_build_kd_tree, "robust.build_kd_tree", Mesh)                 \
+  X(robust_segment_queries, "robust.segment_queries", TreeQuery)        \
+  X(robust_classify, "robust.classify", PointQuery)                     \
+  X(robust_back_to_front, "robust.back_to_front", PointQuery)           \
+  X(robust_overlapping_pairs, "robust.overlapping_pairs", SphereSet)    \
+  X(robust_sweep_frames, "robust.sweep_frames", SweepCase)              \
+  X(robust_colliding_triangles, "robust.colliding_triangles", BvhQuery)
+
+namespace labkit::lab06::query {
+LABKIT_LAB06_QUERIES(LABKIT_QUERY)
+LABKIT_QUERY_TABLE(LABKIT_LAB06_QUERIES)
+}  // namespace labkit::lab06::query

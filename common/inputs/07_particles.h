@@ -1,9 +1,11 @@
-// Lab 07's inputs: each query's arguments as one struct, whose fields() let reports print
+// Lab 07's inputs: each query's arguments as one struct (the table of queries is at the end), whose fields() let reports print
 // it and replay tokens carry it (the answers' fields are in tests/07_particles.wire.h; the
 // tokens of Forces, Material and Scene in tests/07_particles.judge.h).
 #pragma once
 
 #include "particles.h"
+
+#include "common/harness/query.h"
 
 #include "common/inputs/inputs.h"
 
@@ -99,3 +101,39 @@ template <class V> void fields(SystemCase& c, V&& v) {
 }
 
 }  // namespace labkit::lab07
+
+// ---- The queries -------------------------------------------------------------------------
+// The name of each question the tests ask (a replay token's prefix) and the input it takes,
+// by the step that asks it first. The tests, the viewer's scene and its presets read this
+// table (common/harness/query.h): a query is added or renamed here and nowhere else.
+#define LABKIT_LAB07_QUERIES(X)                        \
+  /* step 1 */                                         \
+  X(emit, "emit", EmitCase)                            \
+  X(births, "births", BirthsCase)                      \
+  X(age, "age", AgeCase)                               \
+  /* step 2 */                                         \
+  X(force, "force", MotionCase)                        \
+  X(euler_step, "euler_step", MotionCase)              \
+  X(verlet_step, "verlet_step", MotionCase)            \
+  X(integrators, "integrators", MotionCase)            \
+  /* step 3 */                                         \
+  X(aim, "aim", LaunchCase)                            \
+  X(exact_aim, "exact.aim", LaunchCase)                \
+  /* step 4 */                                         \
+  X(hit_plane, "hit_plane", SegmentScene)              \
+  X(hit_triangle, "hit_triangle", SegmentTrianglePair) \
+  X(first_hit, "first_hit", SegmentScene)              \
+  X(exact_first_hit, "exact.first_hit", SegmentScene)  \
+  /* step 5 */                                         \
+  X(impulse, "impulse", ImpulseCase)                   \
+  /* step 6 */                                         \
+  X(collide, "collide", CollideCase)                   \
+  /* step 7 */                                         \
+  X(invariants, "invariants", CollideCase)             \
+  X(settle, "settle", SettleCase)                      \
+  X(system, "system", SystemCase)
+
+namespace labkit::lab07::query {
+LABKIT_LAB07_QUERIES(LABKIT_QUERY)
+LABKIT_QUERY_TABLE(LABKIT_LAB07_QUERIES)
+}  // namespace labkit::lab07::query

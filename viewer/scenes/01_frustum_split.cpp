@@ -7,7 +7,7 @@
 // Vertices are coloured by the student's class (in: blue, on: white, out: dark), the
 // student's pieces by their verdict; the exact polygon (the toggle) is a violet outline.
 #include "viewer/scenes/01_frustum_split.h"
-#include "01_frustum_split.queries.h"
+#include "viewer/scenes/scenes.h"
 
 #include "common/generators/meshes.h"
 #include "common/oracle/oracle.h"
@@ -228,9 +228,4 @@ void FrustumSplitScene::update_mesh() {
 
 }  // namespace viewer::frustum_split
 
-namespace viewer {
-
-std::unique_ptr<Scene> make_frustum_split(const Setup& setup) { return std::make_unique<frustum_split::FrustumSplitScene>(setup); }
-const std::vector<Preset>& frustum_split_presets() { return frustum_split::kPresets; }
-
-}  // namespace viewer
+LABKIT_SCENE(frustum_split, FrustumSplitScene)

@@ -9,7 +9,7 @@
 // The student's answers are drawn in the colour of their verdict; the exact answers
 // (the toggle) are violet rings and arrows beside them.
 #include "viewer/scenes/02_segment_triangle.h"
-#include "02_segment_triangle.queries.h"
+#include "viewer/scenes/scenes.h"
 
 #include "common/generators/meshes.h"
 #include "common/oracle/oracle.h"
@@ -268,9 +268,4 @@ void SegmentTriangleScene::update_contact() {
 
 }  // namespace viewer::segment_triangle
 
-namespace viewer {
-
-std::unique_ptr<Scene> make_segment_triangle(const Setup& setup) { return std::make_unique<segment_triangle::SegmentTriangleScene>(setup); }
-const std::vector<Preset>& segment_triangle_presets() { return segment_triangle::kPresets; }
-
-}  // namespace viewer
+LABKIT_SCENE(segment_triangle, SegmentTriangleScene)

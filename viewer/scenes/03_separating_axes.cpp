@@ -7,7 +7,7 @@
 // The student's answers are drawn in the colour of their verdict; the exact answers
 // (the toggle) are violet beside them.
 #include "viewer/scenes/03_separating_axes.h"
-#include "03_separating_axes.queries.h"
+#include "viewer/scenes/scenes.h"
 
 #include "common/oracle/oracle.h"
 
@@ -234,9 +234,4 @@ void SeparatingAxesScene::update_moving() {
 
 }  // namespace viewer::separating_axes
 
-namespace viewer {
-
-std::unique_ptr<Scene> make_separating_axes(const Setup& setup) { return std::make_unique<separating_axes::SeparatingAxesScene>(setup); }
-const std::vector<Preset>& separating_axes_presets() { return separating_axes::kPresets; }
-
-}  // namespace viewer
+LABKIT_SCENE(separating_axes, SeparatingAxesScene)

@@ -14,7 +14,7 @@
 // violet. Below them a time axis: every tested time (white: clear, blue: overlapping,
 // decided exactly), and the bracket [lo, hi] the tests so far imply, one row per test.
 #include "viewer/scenes/04_bisection.h"
-#include "04_bisection.queries.h"
+#include "viewer/scenes/scenes.h"
 
 #include "common/oracle/oracle.h"
 
@@ -321,9 +321,4 @@ void BisectionScene::update_advance() {
 
 }  // namespace viewer::bisection
 
-namespace viewer {
-
-std::unique_ptr<Scene> make_bisection(const Setup& setup) { return std::make_unique<bisection::BisectionScene>(setup); }
-const std::vector<Preset>& bisection_presets() { return bisection::kPresets; }
-
-}  // namespace viewer
+LABKIT_SCENE(bisection, BisectionScene)

@@ -12,7 +12,7 @@
 // points and answers take the colour of their verdict. The exact answers (the toggle)
 // are violet: the exact distance and status in the panel, rings at the exact contact.
 #include "viewer/scenes/05_sphere_sweeps.h"
-#include "05_sphere_sweeps.queries.h"
+#include "viewer/scenes/scenes.h"
 
 #include "common/oracle/oracle.h"
 
@@ -287,9 +287,4 @@ void SphereSweepsScene::update_box_plane() {
 
 }  // namespace viewer::sphere_sweeps
 
-namespace viewer {
-
-std::unique_ptr<Scene> make_sphere_sweeps(const Setup& setup) { return std::make_unique<sphere_sweeps::SphereSweepsScene>(setup); }
-const std::vector<Preset>& sphere_sweeps_presets() { return sphere_sweeps::kPresets; }
-
-}  // namespace viewer
+LABKIT_SCENE(sphere_sweeps, SphereSweepsScene)

@@ -12,7 +12,7 @@
 // (the toggle) as violet rings. When step 1 is still a stub, the queries run on the
 // checker's own tree, as the tests do.
 #include "viewer/scenes/06_spatial_trees.h"
-#include "06_spatial_trees.queries.h"
+#include "viewer/scenes/scenes.h"
 
 #include "common/generators/meshes.h"
 #include "common/given/segment_triangle.h"
@@ -312,9 +312,4 @@ void SpatialTreesScene::update_bvh() {
 
 }  // namespace viewer::spatial_trees
 
-namespace viewer {
-
-std::unique_ptr<Scene> make_spatial_trees(const Setup& setup) { return std::make_unique<spatial_trees::SpatialTreesScene>(setup); }
-const std::vector<Preset>& spatial_trees_presets() { return spatial_trees::kPresets; }
-
-}  // namespace viewer
+LABKIT_SCENE(spatial_trees, SpatialTreesScene)

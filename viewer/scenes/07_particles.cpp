@@ -15,7 +15,7 @@
 // surface, energy gained) is drawn red. One particle (the oldest) is followed: its
 // step, hits and impulse are judged in full and the exact first hit is ringed in violet.
 #include "viewer/scenes/07_particles.h"
-#include "07_particles.queries.h"
+#include "viewer/scenes/scenes.h"
 
 #include "common/generators/meshes.h"
 #include "common/oracle/oracle.h"
@@ -263,9 +263,4 @@ void ParticlesScene::update_step(const CollideCase& in, int) {
 
 }  // namespace viewer::particles
 
-namespace viewer {
-
-std::unique_ptr<Scene> make_particles(const Setup& setup) { return std::make_unique<particles::ParticlesScene>(setup); }
-const std::vector<Preset>& particles_presets() { return particles::kPresets; }
-
-}  // namespace viewer
+LABKIT_SCENE(particles, ParticlesScene)

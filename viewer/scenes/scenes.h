@@ -37,6 +37,14 @@ const std::vector<Preset>& spatial_trees_presets();
 std::unique_ptr<Scene> make_particles(const Setup& setup);
 const std::vector<Preset>& particles_presets();
 
+// What each scene file ends with, LABKIT_SCENE(frustum_split, FrustumSplitScene): the
+// two functions its row below names, made from its class and its kPresets.
+#define LABKIT_SCENE(name, Class)                                                                         \
+  namespace viewer {                                                                                      \
+  std::unique_ptr<Scene> make_##name(const Setup& setup) { return std::make_unique<name::Class>(setup); } \
+  const std::vector<Preset>& name##_presets() { return name::kPresets; }                                  \
+  }
+
 inline const SceneInfo kScenes[] = {
     {"01", "01_frustum_split", LABKIT_LAB_TITLE_01, make_frustum_split, frustum_split_presets},
     {"02", "02_segment_triangle", LABKIT_LAB_TITLE_02, make_segment_triangle, segment_triangle_presets},
