@@ -191,7 +191,9 @@ std::string starting_token(const Setup& setup, const std::vector<Preset>& preset
 struct UnknownQuery : labkit::BadToken {
   using labkit::BadToken::BadToken;
 };
-UnknownQuery unknown_query(const std::string& lab, const std::string& query, const std::string& known);
+// `listed`: the query is the lab's, but the scene has no view of it.
+UnknownQuery unknown_query(const std::string& lab, const std::string& query, const std::string& shown,
+                           bool listed = false);
 
 // Loaders, one per input type: `Loaders{[&](auto q, const TreeQuery& in) {...}, ...}`.
 template <class... F>
@@ -209,16 +211,17 @@ template <class Load, class... Inputs>
 void load_token(const std::string& lab, const labkit::check::QueryTable<Inputs...>& table,
                 const labkit::ParsedToken& token, Load&& load) {
   std::string shown;
-  bool loaded = false;
+  bool loaded = false, listed = false;
   const auto one = [&](const auto& q) {
     using Input = typename std::decay_t<decltype(q)>::InputType;
+    listed = listed || token.query == q.name;
     if constexpr (std::is_invocable_v<Load&, decltype(q), const Input&>) {
       shown += (shown.empty() ? "" : ", ") + std::string(q.name);
       if (!loaded && token.query == q.name) load(q, labkit::input_from_token<Input>(token)), loaded = true;
     }
   };
   std::apply([&](const auto&... q) { (one(q), ...); }, table.queries);
-  if (!loaded) throw unknown_query(lab, token.query, shown);
+  if (!loaded) throw unknown_query(lab, token.query, shown, listed);
 }
 
 }  // namespace viewer

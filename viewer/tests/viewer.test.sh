@@ -80,6 +80,7 @@ case $case_name in
     one_line_error "is not a number" "$reference" 05 --case 'sweep_sphere_plane:1,2,zz'
     one_line_error "looks like 'query:1,2,3'" "$reference" 02 --case 'nonsense'
     one_line_error "has no query 'clip_triangle'" "$reference" 02 --case 'clip_triangle:1,2,3'
+    one_line_error "scene does not draw 'emit'" "$reference" 07 --case 'emit:1,2,3'
     one_line_error "--size needs" "$reference" 02 --size 12
     one_line_error "no display" env -u DISPLAY -u WAYLAND_DISPLAY "$reference" 02
     one_line_error "OpenGL 3.3" xvfb-run -a -s "-extension GLX" "$reference" 02 --screenshot "$out/never.png"
