@@ -20,14 +20,12 @@ using namespace bench;
 using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 
-template <class K>
-struct CgalPairs {
+template <class K> struct CgalPairs {
   std::vector<typename K::Segment_3> segments;
   std::vector<typename K::Triangle_3> triangles;
 };
 
-template <class K>
-CgalPairs<K> convert(const std::vector<SegmentTrianglePair>& inputs) {
+template <class K> CgalPairs<K> convert(const std::vector<SegmentTrianglePair>& inputs) {
   const auto point = [](const Vec3& v) { return typename K::Point_3(v.x(), v.y(), v.z()); };
   CgalPairs<K> c;
   for (const SegmentTrianglePair& p : inputs) {
@@ -53,8 +51,7 @@ const Data& data(Mix mix) {
 
 // Speed, then correctness: how many answers differ from the exact ones where the exact
 // answer is not in doubt. `answer(d, i)` answers pair i of d.
-template <class Answer>
-void measure(benchmark::State& state, Mix mix, Answer&& answer) {
+template <class Answer> void measure(benchmark::State& state, Mix mix, Answer&& answer) {
   const Data& d = data(mix);
   const std::size_t n = d.inputs.size();
   std::size_t hits = 0;
@@ -76,11 +73,13 @@ void test_reference(benchmark::State& state, Mix mix) {
 }
 
 void test_cgal_epick(benchmark::State& state, Mix mix) {
-  measure(state, mix, [](const Data& d, std::size_t i) { return CGAL::do_intersect(d.epick.segments[i], d.epick.triangles[i]); });
+  measure(state, mix,
+          [](const Data& d, std::size_t i) { return CGAL::do_intersect(d.epick.segments[i], d.epick.triangles[i]); });
 }
 
 void test_cgal_epeck(benchmark::State& state, Mix mix) {
-  measure(state, mix, [](const Data& d, std::size_t i) { return CGAL::do_intersect(d.epeck.segments[i], d.epeck.triangles[i]); });
+  measure(state, mix,
+          [](const Data& d, std::size_t i) { return CGAL::do_intersect(d.epeck.segments[i], d.epeck.triangles[i]); });
 }
 
 void test_moller_trumbore(benchmark::State& state, Mix mix) {
@@ -103,8 +102,7 @@ void find_reference(benchmark::State& state, Mix mix) {
 // Epick's constructions are inexact: on near-degenerate pairs CGAL's own assertions
 // can fail inside intersection(). Such an answer is counted as a miss (and so, where
 // the exact answer is a hit, as a disagreement).
-template <class K>
-bool cgal_find(const CgalPairs<K>& c, std::size_t i) {
+template <class K> bool cgal_find(const CgalPairs<K>& c, std::size_t i) {
   try {
     const auto result = CGAL::intersection(c.segments[i], c.triangles[i]);
     if (!result) return false;

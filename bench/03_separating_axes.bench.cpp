@@ -168,8 +168,7 @@ const TriangleData& triangles(const benchmark::State& state) {
 }
 
 // Speed, then correctness against the exact answers outside the ambiguous cases.
-template <class Data, class Answer>
-void measure(benchmark::State& state, const Data& d, Answer&& answer) {
+template <class Data, class Answer> void measure(benchmark::State& state, const Data& d, Answer&& answer) {
   const std::size_t n = d.pairs.size();
   std::size_t hits = 0;
   for (auto _ : state)
@@ -185,9 +184,8 @@ void measure(benchmark::State& state, const Data& d, Answer&& answer) {
 }
 
 void obb_reference(benchmark::State& state) {
-  measure(state, boxes(state), [](const BoxData& d, std::size_t i) {
-    return labkit::lab03::test_boxes(d.pairs[i].a, d.pairs[i].b);
-  });
+  measure(state, boxes(state),
+          [](const BoxData& d, std::size_t i) { return labkit::lab03::test_boxes(d.pairs[i].a, d.pairs[i].b); });
 }
 
 #ifdef LABKIT_HAS_FCL
@@ -219,7 +217,7 @@ void triangle_cgal_epick(benchmark::State& state) {
 }  // namespace
 
 // Names: group/implementation/mix, mix 0 typical and 1 hard.
-#define LABKIT_BENCH03_BOTH_MIXES(function, name) \
+#define LABKIT_BENCH03_BOTH_MIXES(function, name)              \
   BENCHMARK(function)->Name(name)->Arg(0)->ArgName("typical"); \
   BENCHMARK(function)->Name(name)->Arg(1)->ArgName("hard")
 

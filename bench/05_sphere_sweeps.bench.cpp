@@ -46,7 +46,8 @@ struct Data {
   explicit Data(std::vector<SegmentPair> in) : inputs(std::move(in)) {
     const auto point = [](const Vec3& v) { return Epick::Point_3(v.x(), v.y(), v.z()); };
     for (const SegmentPair& p : inputs) {
-      epick.push_back({Epick::Segment_3(point(p.first.a), point(p.first.b)), Epick::Segment_3(point(p.second.a), point(p.second.b))});
+      epick.push_back({Epick::Segment_3(point(p.first.a), point(p.first.b)),
+                       Epick::Segment_3(point(p.second.a), point(p.second.b))});
       exact.push_back(oracle::squared_distance(p.first, p.second));
       tolerance.push_back(1e-9 * std::max(1e-300, scale_of({p.first.a, p.first.b, p.second.a, p.second.b})));
     }
@@ -64,8 +65,7 @@ const Data& data(const benchmark::State& state) {
 }
 
 // Speed, then correctness. `answer(d, i)` is the squared distance of pair i of d.
-template <class Answer>
-void measure(benchmark::State& state, Answer&& answer) {
+template <class Answer> void measure(benchmark::State& state, Answer&& answer) {
   const Data& d = data(state);
   const std::size_t n = d.inputs.size();
   double sum = 0;
@@ -91,12 +91,13 @@ void distance_reference(benchmark::State& state) {
 }
 
 void distance_cgal_epick(benchmark::State& state) {
-  measure(state, [](const Data& d, std::size_t i) { return CGAL::squared_distance(d.epick[i].first, d.epick[i].second); });
+  measure(state,
+          [](const Data& d, std::size_t i) { return CGAL::squared_distance(d.epick[i].first, d.epick[i].second); });
 }
 
 }  // namespace
 
-#define LABKIT_BENCH_BOTH_MIXES(function, name) \
+#define LABKIT_BENCH_BOTH_MIXES(function, name)                \
   BENCHMARK(function)->Name(name)->Arg(0)->ArgName("typical"); \
   BENCHMARK(function)->Name(name)->Arg(1)->ArgName("hard")
 

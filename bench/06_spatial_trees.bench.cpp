@@ -24,8 +24,8 @@
 // overlapping_pairs (step 5, a uniform grid built every frame), sweep_and_prune its
 // SweepAndPrune (step 6, the sorted ends kept from frame to frame), nanoflann a k-d tree
 // rebuilt every frame. Items are the n (n - 1) / 2 pairs each frame covers.
-#include "inputs.h"
 #include "common/generators/meshes.h"
+#include "inputs.h"
 
 #include "spatial_trees.h"
 
@@ -109,8 +109,7 @@ int disagreements(const TreeInputs& in, const std::vector<First>& answers) {
 
 // Runs `query` over every segment per iteration, then counts its disagreements with
 // brute force. `query(segment)` returns a First.
-template <class Query>
-void measure_queries(benchmark::State& state, const TreeInputs& in, Query&& query) {
+template <class Query> void measure_queries(benchmark::State& state, const TreeInputs& in, Query&& query) {
   std::size_t hits = 0;
   for (auto _ : state)
     for (const Segment& s : in.segments) hits += query(s).hit;
@@ -123,13 +122,11 @@ void measure_queries(benchmark::State& state, const TreeInputs& in, Query&& quer
 
 // A query benchmark's structure, built once per size (Google Benchmark calls the
 // function several times) and kept, with the bytes its build kept per triangle.
-template <class Built>
-struct Cached {
+template <class Built> struct Cached {
   std::unique_ptr<Built> built;
   double bytes_per_triangle = 0;
 };
-template <class Built, class Make>
-const Cached<Built>& cached(const Mesh& mesh, Make&& make) {
+template <class Built, class Make> const Cached<Built>& cached(const Mesh& mesh, Make&& make) {
   static std::map<const Mesh*, Cached<Built>> cache;
   Cached<Built>& c = cache[&mesh];
   if (!c.built) {
@@ -157,7 +154,8 @@ void build_reference(benchmark::State& state) {
 
 void first_hit_reference(benchmark::State& state) {
   const TreeInputs& in = inputs(int(state.range(0)));
-  const auto& c = cached<lab06::KdTree>(in.mesh, [](const Mesh& m) { return std::make_unique<lab06::KdTree>(lab06::build_kd_tree(m)); });
+  const auto& c = cached<lab06::KdTree>(
+      in.mesh, [](const Mesh& m) { return std::make_unique<lab06::KdTree>(lab06::build_kd_tree(m)); });
   const lab06::KdTree& tree = *c.built;
   state.counters["bytes_per_triangle"] = c.bytes_per_triangle;
   long long tests = 0, queries = 0;
@@ -218,10 +216,11 @@ void first_hit_cgal(benchmark::State& state) {
     const auto result = built.tree.first_intersection(Epick::Ray_3(a, b));
     if (!result) return First{};
     Epick::Point_3 p;
-    if (const auto* point = boost::get<Epick::Point_3>(&result->first)) p = *point;
+    if (const auto* point = boost::get<Epick::Point_3>(&result->first))
+      p = *point;
     else if (const auto* part = boost::get<Epick::Segment_3>(&result->first))  // in the triangle's plane
       p = CGAL::squared_distance(a, part->source()) <= CGAL::squared_distance(a, part->target()) ? part->source()
-                                                                                                : part->target();
+                                                                                                 : part->target();
     const double t = ((p - a) * (b - a)) / (b - a).squared_length();
     return t <= 1 ? First{true, t} : First{};
   });
@@ -255,12 +254,12 @@ struct EmbreeBuilt {
     const long long before = embree_bytes;
     scene = rtcNewScene(device);
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* v = static_cast<float*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), mesh.vertices.size()));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), mesh.vertices.size()));
     for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
       for (int k = 0; k < 3; ++k) v[3 * i + k] = float(mesh.vertices[i][k]);
-    auto* f = static_cast<unsigned*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned), mesh.size()));
+    auto* f = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                             3 * sizeof(unsigned), mesh.size()));
     for (std::size_t i = 0; i < mesh.size(); ++i)
       for (int k = 0; k < 3; ++k) f[3 * i + k] = unsigned(mesh.triangles[i][k]);
     rtcCommitGeometry(geometry);
@@ -333,7 +332,7 @@ void first_hit_brute_force(benchmark::State& state) {
 
 // ---- Broad phase ------------------------------------------------------------------------------
 
-constexpr int kFrames = 100;  // one run of motion: what an iteration of broad_phase times
+constexpr int kFrames = 100;         // one run of motion: what an iteration of broad_phase times
 constexpr int kBruteSubset = 10000;  // brute force at 100k: all pairs among the first 10,000
 
 // Spheres in motion: spread_spheres at the lab's density, each moving at its own constant
@@ -387,8 +386,7 @@ int disagreements(const std::vector<std::array<int, 2>>& got, const std::vector<
 // Runs of kFrames frames: `start()` makes the state one run keeps (nothing, or a
 // SweepAndPrune), `frame(state, spheres)` answers one frame. Counters: disagreements on
 // the run's last frame, sphere tests per frame.
-template <class Start, class Frame>
-void broad_phase_runs(benchmark::State& state, Start start, Frame frame) {
+template <class Start, class Frame> void broad_phase_runs(benchmark::State& state, Start start, Frame frame) {
   const int n = int(state.range(0));
   const Spheres& in = spheres(n);
   std::vector<Sphere> current;
@@ -411,16 +409,18 @@ void broad_phase_runs(benchmark::State& state, Start start, Frame frame) {
 
 // The reference: lab 06's overlapping_pairs (step 5), a uniform grid, every frame.
 void broad_phase_reference(benchmark::State& state) {
-  broad_phase_runs(state, [] { return 0; },
-                   [](int, const std::vector<Sphere>& spheres) { return lab06::overlapping_pairs(spheres); });
+  broad_phase_runs(
+      state, [] { return 0; },
+      [](int, const std::vector<Sphere>& spheres) { return lab06::overlapping_pairs(spheres); });
 }
 
 // Lab 06's SweepAndPrune (step 6), one object for the whole run, so that every frame
 // after the first re-sorts the kept list by insertion and updates the kept pairs. Each
 // iteration is a fresh run of kFrames frames (its first frame sorts from scratch).
 void broad_phase_sweep_and_prune(benchmark::State& state) {
-  broad_phase_runs(state, [] { return lab06::SweepAndPrune{}; },
-                   [](lab06::SweepAndPrune& sweep, const std::vector<Sphere>& spheres) { return sweep.update(spheres); });
+  broad_phase_runs(
+      state, [] { return lab06::SweepAndPrune{}; },
+      [](lab06::SweepAndPrune& sweep, const std::vector<Sphere>& spheres) { return sweep.update(spheres); });
 }
 
 #ifdef LABKIT_HAS_NANOFLANN
@@ -431,8 +431,7 @@ struct Centres {
   const std::vector<Sphere>& spheres;
   std::size_t kdtree_get_point_count() const { return spheres.size(); }
   double kdtree_get_pt(std::size_t i, std::size_t axis) const { return spheres[i].center[int(axis)]; }
-  template <class Box>
-  bool kdtree_get_bbox(Box&) const { return false; }
+  template <class Box> bool kdtree_get_bbox(Box&) const { return false; }
 };
 using CentreTree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, Centres>, Centres, 3>;
 
@@ -558,7 +557,8 @@ void bsp_classify_reference(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations());
   const std::vector<bool> exact = cgal_inside(mesh, points);
   int differ = 0;
-  for (std::size_t i = 0; i < points.size(); ++i) differ += (lab06::classify(tree, points[i]) != lab06::Where::outside) != exact[i];
+  for (std::size_t i = 0; i < points.size(); ++i)
+    differ += (lab06::classify(tree, points[i]) != lab06::Where::outside) != exact[i];
   state.counters["disagree"] = differ;
 }
 
@@ -579,7 +579,7 @@ void bsp_classify_cgal(benchmark::State& state) {
 }  // namespace
 
 // Names group/implementation/SIZE: the report fits the scaling exponent over SIZE.
-#define LABKIT_TREE_SIZES(function, name)                                       \
+#define LABKIT_TREE_SIZES(function, name)                                      \
   BENCHMARK(function)->Name(name)->Arg(10000)->Unit(benchmark::kMillisecond);  \
   BENCHMARK(function)->Name(name)->Arg(100000)->Unit(benchmark::kMillisecond); \
   BENCHMARK(function)->Name(name)->Arg(1000000)->Unit(benchmark::kMillisecond)
@@ -601,8 +601,16 @@ BENCHMARK(bsp_classify_reference)->Name("bsp_classify/reference")->Arg(10000);
 BENCHMARK(bsp_classify_cgal)->Name("bsp_classify/cgal_side_of_triangle_mesh")->Arg(10000);
 
 BENCHMARK(broad_phase_reference)->Name("broad_phase/reference")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
-BENCHMARK(broad_phase_sweep_and_prune)->Name("broad_phase/sweep_and_prune")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(broad_phase_sweep_and_prune)
+    ->Name("broad_phase/sweep_and_prune")
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond);
 #ifdef LABKIT_HAS_NANOFLANN
 BENCHMARK(broad_phase_nanoflann)->Name("broad_phase/nanoflann")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
 #endif
-BENCHMARK(broad_phase_brute_force)->Name("broad_phase/brute_force")->Arg(10000)->Arg(100000)->Unit(benchmark::kMillisecond);
+BENCHMARK(broad_phase_brute_force)
+    ->Name("broad_phase/brute_force")
+    ->Arg(10000)
+    ->Arg(100000)
+    ->Unit(benchmark::kMillisecond);

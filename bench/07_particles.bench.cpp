@@ -77,8 +77,10 @@ const Start& start() {
 
 lab07::System prepared(bool with_tree) {
   lab07::System s = start().system;
-  if (with_tree) start().with_tree(s);
-  else s.scene.mesh_query = nullptr;
+  if (with_tree)
+    start().with_tree(s);
+  else
+    s.scene.mesh_query = nullptr;
   return s;
 }
 

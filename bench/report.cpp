@@ -31,10 +31,14 @@ std::string number(double x, int digits = 3) {
   if (!std::isfinite(x)) return "-";
   char buffer[64];
   const double a = std::abs(x);
-  if (a >= 1e9) std::snprintf(buffer, sizeof buffer, "%.*gG", digits, x / 1e9);
-  else if (a >= 1e6) std::snprintf(buffer, sizeof buffer, "%.*gM", digits, x / 1e6);
-  else if (a >= 1e3) std::snprintf(buffer, sizeof buffer, "%.*gk", digits, x / 1e3);
-  else std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
+  if (a >= 1e9)
+    std::snprintf(buffer, sizeof buffer, "%.*gG", digits, x / 1e9);
+  else if (a >= 1e6)
+    std::snprintf(buffer, sizeof buffer, "%.*gM", digits, x / 1e6);
+  else if (a >= 1e3)
+    std::snprintf(buffer, sizeof buffer, "%.*gk", digits, x / 1e3);
+  else
+    std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
   return buffer;
 }
 
@@ -51,9 +55,7 @@ struct Name {
   std::string group, implementation, size;
 };
 
-bool is_number(const std::string& s) {
-  return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos;
-}
+bool is_number(const std::string& s) { return !s.empty() && s.find_first_not_of("0123456789") == std::string::npos; }
 
 // Rows of one group by variant, in the order the benchmarks ran.
 using Variants = std::vector<std::pair<std::string, std::vector<Row>>>;
@@ -114,8 +116,8 @@ int main(int argc, char** argv) {
      << "Written by `./labkit bench` (run it again to regenerate this file). Every kernel\n"
      << "runs on the same seeded inputs for every implementation, in one run.\n\n"
      << "- Date: " << context.value("date", "?") << "\n"
-     << "- Machine: " << context.value("cores", std::string("?")) << " cores, "
-     << context.value("mhz_per_cpu", 0) << " MHz, host " << context.value("host_name", "?") << "\n"
+     << "- Machine: " << context.value("cores", std::string("?")) << " cores, " << context.value("mhz_per_cpu", 0)
+     << " MHz, host " << context.value("host_name", "?") << "\n"
      << "- Compiler: " << context.value("compiler", "?") << "\n"
      << "- Flags: `" << context.value("flags", "?") << "`\n"
      << "- Google Benchmark " << context.value("library_build_type", "") << " library; CPU scaling "
@@ -127,8 +129,10 @@ int main(int argc, char** argv) {
   for (const std::string& group : group_order) {
     md << "\n## " << group << "\n";
     for (const auto& [size, rows] : groups[group]) {
-      if (is_number(size)) md << "\n" << number(std::stod(size)) << " triangles or items:\n";
-      else if (!size.empty()) md << "\nOn the " << size << " inputs:\n";
+      if (is_number(size))
+        md << "\n" << number(std::stod(size)) << " triangles or items:\n";
+      else if (!size.empty())
+        md << "\nOn the " << size << " inputs:\n";
       const Row* reference = nullptr;
       for (const Row& r : rows)
         if (r.implementation == "reference") reference = &r;
@@ -137,7 +141,9 @@ int main(int argc, char** argv) {
       for (const Row& r : rows) {
         md << "| " << r.implementation << " | " << number(r.items_per_second) << " | " << number(r.nanoseconds_per_item)
            << " |";
-        if (reference) md << " " << (r.items_per_second > 0 ? number(reference->items_per_second / r.items_per_second) : "-") << " |";
+        if (reference)
+          md << " " << (r.items_per_second > 0 ? number(reference->items_per_second / r.items_per_second) : "-")
+             << " |";
         md << " " << (r.counters.contains("disagree") ? number(r.counters["disagree"].get<double>()) : "-") << " | "
            << (r.counters.contains("ambiguous") ? number(r.counters["ambiguous"].get<double>()) : "-") << " | ";
         for (const char* key : {"tests_per_query", "bytes_per_triangle"})
@@ -155,8 +161,9 @@ int main(int argc, char** argv) {
       for (const Row& r0 : first)
         for (const Row& r1 : last)
           if (r0.implementation == r1.implementation && r0.nanoseconds_per_item > 0 && r1.nanoseconds_per_item > 0)
-            md << "- " << r0.implementation << ": k = "
-               << number(std::log(r1.nanoseconds_per_item / r0.nanoseconds_per_item) / std::log(n1 / n0), 2) << "\n";
+            md << "- " << r0.implementation
+               << ": k = " << number(std::log(r1.nanoseconds_per_item / r0.nanoseconds_per_item) / std::log(n1 / n0), 2)
+               << "\n";
     }
   }
 
@@ -199,7 +206,8 @@ int main(int argc, char** argv) {
     } else if (ref && other && other->items_per_second > 0) {
       const double ratio = ref->items_per_second / other->items_per_second;
       const double disagree = ref->counters.value("disagree", 0.0);
-      measured = number(ratio) + "x" + (ref->counters.contains("disagree") ? ", " + number(disagree) + " disagreements" : "");
+      measured =
+          number(ratio) + "x" + (ref->counters.contains("disagree") ? ", " + number(disagree) + " disagreements" : "");
       met = ratio >= at_least && disagree == 0 ? "yes" : "**no**";
     }
     md << "| " << group << (size.empty() ? "" : " (" + size + ")") << " | " << t.value("text", "") << " | " << measured

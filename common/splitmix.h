@@ -17,8 +17,8 @@ struct SplitMix64 {
     x = (x ^ (x >> 27)) * 0x94d049bb133111ebull;
     return x ^ (x >> 31);
   }
-  int below(int n) { return int(next() % std::uint64_t(n)); }       // [0, n)
-  double uniform() { return double(next() >> 11) * 0x1.0p-53; }     // [0, 1)
+  int below(int n) { return int(next() % std::uint64_t(n)); }                  // [0, n)
+  double uniform() { return double(next() >> 11) * 0x1.0p-53; }                // [0, 1)
   double uniform(double lo, double hi) { return lo + (hi - lo) * uniform(); }  // [lo, hi)
 };
 

@@ -17,7 +17,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr std::size_t kMostMembers = 20000;                      // listed this far, no further
+constexpr std::size_t kMostMembers = 20000;                           // listed this far, no further
 constexpr std::uintmax_t kLargestListing = std::uintmax_t(16) << 20;  // a tar listing's text
 
 std::string megabytes(std::uintmax_t bytes) { return std::to_string((bytes + (1 << 20) - 1) >> 20) + " MB"; }
@@ -77,17 +77,24 @@ void judge(std::vector<ArchiveMember>& members, ArchiveFormat format, std::uintm
   for (ArchiveMember& m : members) {
     if (!m.refused.empty() || m.kind == Kind::folder) continue;
     // A link's content is a path, not code, and unpacking it would point anywhere.
-    if (m.kind == Kind::symlink) m.refused = "is a symbolic link";
-    else if (m.kind == Kind::hard_link) m.refused = "is a hard link";
+    if (m.kind == Kind::symlink)
+      m.refused = "is a symbolic link";
+    else if (m.kind == Kind::hard_link)
+      m.refused = "is a hard link";
     // Devices, FIFOs and the like would block or never end when read.
-    else if (m.kind == Kind::special) m.refused = "is not a regular file (a device, a FIFO, ...)";
+    else if (m.kind == Kind::special)
+      m.refused = "is not a regular file (a device, a FIFO, ...)";
     // Declared too large: a zip bomb is refused before anything is unpacked.
-    else if (m.size > largest || m.zip.compressed > largest + 65536) m.refused = "is larger than " + megabytes(largest);
-    else if (m.path.empty()) m.refused = "has an empty name";
+    else if (m.size > largest || m.zip.compressed > largest + 65536)
+      m.refused = "is larger than " + megabytes(largest);
+    else if (m.path.empty())
+      m.refused = "has an empty name";
     // Its data cannot be read without the password.
-    else if (m.zip.flags & 0x0001) m.refused = "is encrypted";
+    else if (m.zip.flags & 0x0001)
+      m.refused = "is encrypted";
     // The archive holds it twice: which one is meant is not known.
-    else if (copies[m.path] > 1) m.refused = "appears " + std::to_string(copies[m.path]) + " times in the archive";
+    else if (copies[m.path] > 1)
+      m.refused = "appears " + std::to_string(copies[m.path]) + " times in the archive";
   }
 }
 
@@ -105,7 +112,8 @@ std::optional<std::string> unquote(const std::string& line, std::size_t at) {
     if (++i == line.size()) break;
     if (line[i] >= '0' && line[i] <= '7') {
       int value = 0;
-      for (int k = 0; k < 3 && i < line.size() && line[i] >= '0' && line[i] <= '7'; ++k, ++i) value = value * 8 + (line[i] - '0');
+      for (int k = 0; k < 3 && i < line.size() && line[i] >= '0' && line[i] <= '7'; ++k, ++i)
+        value = value * 8 + (line[i] - '0');
       out += char(value);
       --i;
       continue;
@@ -133,11 +141,20 @@ std::optional<ArchiveMember> tar_member(const std::string& line) {
   ArchiveMember m;
   m.name = *name;
   switch (mode[0]) {
-    case '-': m.kind = Kind::file; break;
-    case 'd': m.kind = Kind::folder; break;
-    case 'l': m.kind = Kind::symlink; break;
-    case 'h': m.kind = Kind::hard_link; break;
-    default: m.kind = Kind::special;
+    case '-':
+      m.kind = Kind::file;
+      break;
+    case 'd':
+      m.kind = Kind::folder;
+      break;
+    case 'l':
+      m.kind = Kind::symlink;
+      break;
+    case 'h':
+      m.kind = Kind::hard_link;
+      break;
+    default:
+      m.kind = Kind::special;
   }
   if (!m.name.empty() && m.name.back() == '/') m.kind = Kind::folder;
   m.size = size.find_first_not_of("0123456789") == std::string::npos ? std::stoull(size.substr(0, 19)) : 0;
@@ -146,8 +163,8 @@ std::optional<ArchiveMember> tar_member(const std::string& line) {
 
 ArchiveListing list_tar(const std::string& archive, ArchiveFormat format, const std::string& scratch,
                         const Sandbox& sandbox) {
-  std::vector<std::string> argv = {"tar", "-t", "-v", "-f", archive, "--quoting-style=c", "--numeric-owner",
-                                   "--index-file=listing"};
+  std::vector<std::string> argv = {
+      "tar", "-t", "-v", "-f", archive, "--quoting-style=c", "--numeric-owner", "--index-file=listing"};
   if (format == ArchiveFormat::tar_gz) argv.push_back("-z");
   const Confined c = sandbox.confine(argv, scratch, {archive}, unpacking_limits(kLargestListing));
   Run r = run(c.argv, {{"LC_ALL", "C"}}, c.limits, scratch);  // C: every byte past ASCII is quoted
@@ -164,9 +181,12 @@ ArchiveListing list_tar(const std::string& archive, ArchiveFormat format, const 
     }
     if (const std::optional<ArchiveMember> m = tar_member(line)) listing.members.push_back(*m);
   }
-  if (r.timed_out) listing.error = "the archive could not be read to its end within 60 s";
-  else if (!r.ok()) listing.error = "the archive could not be read to its end: " + first_line(r.output);
-  else if (!text.error.empty()) listing.error = "the archive's listing " + text.error;
+  if (r.timed_out)
+    listing.error = "the archive could not be read to its end within 60 s";
+  else if (!r.ok())
+    listing.error = "the archive could not be read to its end: " + first_line(r.output);
+  else if (!text.error.empty())
+    listing.error = "the archive's listing " + text.error;
   return listing;
 }
 

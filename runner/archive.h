@@ -22,8 +22,8 @@ enum class ArchiveFormat { zip, tar_gz, tar };
 
 struct ArchiveMember {
   enum class Kind { file, folder, symlink, hard_link, special };
-  std::string name;         // as stored: any bytes
-  std::string path;         // "labs/02_x/y.cpp": no "./", no "//", no trailing '/'
+  std::string name;  // as stored: any bytes
+  std::string path;  // "labs/02_x/y.cpp": no "./", no "//", no trailing '/'
   Kind kind = Kind::file;
   std::uintmax_t size = 0;  // unpacked, as declared
   std::string refused;      // why it is never unpacked ("" when it may be; folders never are)

@@ -1,5 +1,10 @@
 #include "cgroup.h"
 
+#include <fcntl.h>
+#include <sched.h>
+#include <sys/stat.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 #include <algorithm>
 #include <atomic>
 #include <cerrno>
@@ -13,11 +18,6 @@
 #include <set>
 #include <sstream>
 #include <thread>
-#include <fcntl.h>
-#include <sched.h>
-#include <sys/stat.h>
-#include <sys/syscall.h>
-#include <unistd.h>
 
 namespace runner {
 
@@ -164,8 +164,9 @@ std::string hand_down(const std::string& parent, const std::string& controller) 
   }
   // Other processes share the grader's group: moving them is not the grader's to do.
   if (error == EBUSY)
-    return parent + " holds other processes than the grader, so it cannot hand controllers to groups below it "
-                    "(run the grader alone in a group: systemd-run --scope -p Delegate=yes ./labkit grade ...)";
+    return parent +
+           " holds other processes than the grader, so it cannot hand controllers to groups below it "
+           "(run the grader alone in a group: systemd-run --scope -p Delegate=yes ./labkit grade ...)";
   return error ? "cannot enable it in " + parent + "/cgroup.subtree_control: " + because(error) : "";
 }
 
@@ -191,7 +192,8 @@ void kill_members(const std::string& folder) {
   }
   const std::vector<pid_t> still = members(folder);
   for (const auto& [pid, fd] : opened) {
-    if (std::find(still.begin(), still.end(), pid) != still.end()) syscall(SYS_pidfd_send_signal, fd, SIGKILL, nullptr, 0);
+    if (std::find(still.begin(), still.end(), pid) != still.end())
+      syscall(SYS_pidfd_send_signal, fd, SIGKILL, nullptr, 0);
     close(fd);
   }
 }
@@ -241,7 +243,9 @@ std::vector<Setting> settings(const Place& p, const GroupLimits& limits) {
   if (p.controller == "pids") return {{"pids.max", std::to_string(limits.processes), nullptr}};
   // One core: 100 ms of CPU time in every 100 ms, at the default weight.
   if (p.version == 1)
-    return {{"cpu.cfs_period_us", "100000", nullptr}, {"cpu.cfs_quota_us", "100000", nullptr}, {"cpu.shares", "1024", nullptr}};
+    return {{"cpu.cfs_period_us", "100000", nullptr},
+            {"cpu.cfs_quota_us", "100000", nullptr},
+            {"cpu.shares", "1024", nullptr}};
   return {{"cpu.max", "100000 100000", nullptr}, {"cpu.weight", "100", nullptr}};
 }
 
@@ -281,8 +285,10 @@ bool set_up(const Place& p, const std::string& name, const GroupLimits& limits, 
   }
   for (const Setting& s : settings(p, limits)) {
     const int error = write_control(folder + "/" + s.file, s.value);
-    if (error == ENOENT && s.if_absent) missing.push_back(s.if_absent);  // the limit holds without it
-    else if (error) return lacks("cannot write " + s.file + ": " + because(error));
+    if (error == ENOENT && s.if_absent)
+      missing.push_back(s.if_absent);  // the limit holds without it
+    else if (error)
+      return lacks("cannot write " + s.file + ": " + because(error));
   }
   return true;
 }

@@ -24,13 +24,15 @@ using term::green;
 using term::red;
 using term::yellow;
 
-
 std::string coloured_status(Status s) {
   const std::string word = status_word(s);
   switch (s) {
-    case Status::passed: return green(word);
-    case Status::not_implemented: return yellow(word);
-    default: return red(word);
+    case Status::passed:
+      return green(word);
+    case Status::not_implemented:
+      return yellow(word);
+    default:
+      return red(word);
   }
 }
 
@@ -77,25 +79,30 @@ void print_debugger(const std::string& output) {
   for (int n = 0; std::getline(in, line) && n < 60; ++n) {
     const bool frame = line.rfind("#", 0) == 0;
     if (frame && line.find("/common/protocol/") != std::string::npos) break;
-    if (!frame || line.find("/labs/") != std::string::npos || line.find("/src/") != std::string::npos) lines += line + "\n";
+    if (!frame || line.find("/labs/") != std::string::npos || line.find("/src/") != std::string::npos)
+      lines += line + "\n";
   }
   std::cout << "  debugger  " << shown(lines) << "\n";
 }
 
 void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
   const Step& step = *r.step;
-  std::cout << "\n" << bold("Lab " + lab.id + ", step " + std::to_string(step.number) + " (" + step.tag + ", " + step.title + "): ") +
-                         coloured_status(r.status)
+  std::cout << "\n"
+            << bold("Lab " + lab.id + ", step " + std::to_string(step.number) + " (" + step.tag + ", " + step.title +
+                    "): ") +
+                   coloured_status(r.status)
             << "\n";
   if (abnormal(r.status)) {
     std::cout << "  what      " << safe_text(r.detail) << "\n";
     if (!r.inflight.empty()) {
       const Programs programs{paths.build + "/" + lab.judge_binary(), paths.build + "/" + lab.answerer("student")};
       // Its output may have faked the in-flight marker: only a real token is described.
-      if (is_replay_token(r.inflight)) std::cout << "  on input  " << shown(describe_token(programs, lab, r.inflight)) << "\n";
+      if (is_replay_token(r.inflight))
+        std::cout << "  on input  " << shown(describe_token(programs, lab, r.inflight)) << "\n";
       print_replay(lab, r.inflight);
     }
-    const std::string tail = r.run.output.size() > 1200 ? r.run.output.substr(r.run.output.size() - 1200) : r.run.output;
+    const std::string tail =
+        r.run.output.size() > 1200 ? r.run.output.substr(r.run.output.size() - 1200) : r.run.output;
     if (!tail.empty()) std::cout << dim("  its last output:\n    " + term::indent(safe_text(tail), "    ")) << "\n";
     return;
   }
@@ -120,7 +127,6 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
 }
 
 }  // namespace
-
 
 namespace {
 
@@ -154,8 +160,7 @@ class BuildProgress {
     const std::size_t inner = dir == std::string::npos ? dir : what.find(".dir/", dir);
     if (inner != std::string::npos) what = what.substr(0, dir) + what.substr(inner + 5);
     if (what.size() > 2 && what.compare(what.size() - 2, 2, ".o") == 0) what.resize(what.size() - 2);
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (!terminal_ && seconds < last_ + 15) return;
     last_ = seconds;
     shown_ = true;
@@ -276,8 +281,9 @@ int check(const Paths& paths, const CheckOptions& options) {
   for (const auto& steps : selected)
     for (const Step* s : steps) title_width = std::max(title_width, s->title.size() + 2);
   if (!replaying)
-    std::cout << bold("labkit check") << dim(": " + std::string(options.cases ? std::to_string(options.cases) : "the default") +
-                                             " random cases per query, seed " + (options.seed.empty() ? "public" : options.seed))
+    std::cout << bold("labkit check")
+              << dim(": " + std::string(options.cases ? std::to_string(options.cases) : "the default") +
+                     " random cases per query, seed " + (options.seed.empty() ? "public" : options.seed))
               << "\n";
 
   // Every lab's programs in one build first, so that all cores stay busy from the first
@@ -293,11 +299,13 @@ int check(const Paths& paths, const CheckOptions& options) {
   for (std::size_t l = 0; l < labs.size(); ++l) {
     const Lab* lab = labs[l];
     const std::vector<const Step*>& steps = selected[l];
-    const Programs programs{paths.build + "/" + lab->judge_binary(), paths.build + "/" + lab->answerer(options.implementation)};
+    const Programs programs{paths.build + "/" + lab->judge_binary(),
+                            paths.build + "/" + lab->answerer(options.implementation)};
     bool built = false;
     const std::string errors =
         build_targets(paths, {lab->judge_binary(), lab->answerer(options.implementation)}, &built);
-    if (!replaying || !built) std::cout << "\n" << bold("Lab " + lab->id + "  " + lab->title) << dim("   " + lab->handout()) << "\n";
+    if (!replaying || !built)
+      std::cout << "\n" << bold("Lab " + lab->id + "  " + lab->title) << dim("   " + lab->handout()) << "\n";
     if (!built) {
       std::cout << "  " << red("does not compile") << ": every step of this lab fails until it does.\n\n    "
                 << term::indent(safe_text(errors), "    ") << "\n";
@@ -305,8 +313,7 @@ int check(const Paths& paths, const CheckOptions& options) {
       if (next_step.empty()) next_step = "make lab " + lab->id + " compile (the errors above)";
       continue;
     }
-    const std::vector<StepResult> results =
-        run_steps(programs, *lab, steps, step_options, jobs);
+    const std::vector<StepResult> results = run_steps(programs, *lab, steps, step_options, jobs);
 
     if (replaying) {
       for (const StepResult& r : results)
@@ -316,7 +323,8 @@ int check(const Paths& paths, const CheckOptions& options) {
             return 2;
           }
           if (q.cases == 0) continue;
-          std::cout << "  replayed " << safe_text(q.query) << " (step " << r.step->number << ", " << r.step->tag << "): ";
+          std::cout << "  replayed " << safe_text(q.query) << " (step " << r.step->number << ", " << r.step->tag
+                    << "): ";
           if (q.failure) {
             std::cout << red("fails") << "\n";
             print_failure(*q.failure, q.query, *lab);
@@ -339,8 +347,8 @@ int check(const Paths& paths, const CheckOptions& options) {
     for (const StepResult& r : results) {
       ++total;
       const Step& s = *r.step;
-      std::cout << "  " << term::pad(std::to_string(s.number), 3) << term::pad(s.tag, 7) << term::pad(s.title, title_width)
-                << term::pad(coloured_status(r.status), 22) << counts(r) << "\n";
+      std::cout << "  " << term::pad(std::to_string(s.number), 3) << term::pad(s.tag, 7)
+                << term::pad(s.title, title_width) << term::pad(coloured_status(r.status), 22) << counts(r) << "\n";
       if (r.status == Status::passed) {
         ++passing;
         continue;
@@ -361,7 +369,9 @@ int check(const Paths& paths, const CheckOptions& options) {
   std::ostringstream took;
   took.precision(2);
   took << std::fixed << seconds;
-  std::cout << "\n" << bold(std::to_string(passing) + " of " + std::to_string(total) + " steps pass") << dim(" (" + took.str() + " s)");
+  std::cout << "\n"
+            << bold(std::to_string(passing) + " of " + std::to_string(total) + " steps pass")
+            << dim(" (" + took.str() + " s)");
   if (!next_step.empty()) std::cout << ". Next: " << next_step;
   std::cout << "\n";
   return passing == total ? 0 : 1;

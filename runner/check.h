@@ -18,10 +18,10 @@ struct CheckOptions {
   std::string replay;             // a replay token: that one case
   int cases = 0;                  // random cases per query (0: the default)
   std::string seed;
-  int jobs = 0;                   // parallel steps (0: one per core)
-  double timeout = 120;           // seconds per step
+  int jobs = 0;          // parallel steps (0: one per core)
+  double timeout = 120;  // seconds per step
   std::string implementation = "student";
-  bool debug = false;             // with `replay`: run the code under test under gdb
+  bool debug = false;  // with `replay`: run the code under test under gdb
 };
 
 int check(const Paths& paths, const CheckOptions& options);

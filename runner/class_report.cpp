@@ -3,12 +3,12 @@
 #include "process.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <ctime>
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <cctype>
 #include <set>
 #include <sstream>
 
@@ -26,8 +26,10 @@ std::string link_to(const std::string& name, const std::string& file) {
   static const char* const hex = "0123456789ABCDEF";
   std::string out;
   for (const unsigned char c : name) {
-    if (std::isalnum(c) || c == '.' || c == '_' || c == '-') out += char(c);
-    else out += std::string("%") + hex[c >> 4] + hex[c & 15];
+    if (std::isalnum(c) || c == '.' || c == '_' || c == '-')
+      out += char(c);
+    else
+      out += std::string("%") + hex[c >> 4] + hex[c & 15];
   }
   if (out == "." || out == "..") out = "%2E" + out.substr(1);
   return out + "/" + file;
@@ -74,9 +76,10 @@ Figure plot(const std::string& scratch, const std::string& name, const std::stri
             const std::string& out) {
   fs::create_directories(scratch);
   std::ofstream(scratch + "/" + name + ".dat") << data;
-  std::ofstream(scratch + "/" + name + ".gp") << "set terminal svg size 900,380 dynamic font 'sans,12' background '#ffffff'\n"
-                                              << "set output '" << name << ".svg'\n"
-                                              << script;
+  std::ofstream(scratch + "/" + name + ".gp")
+      << "set terminal svg size 900,380 dynamic font 'sans,12' background '#ffffff'\n"
+      << "set output '" << name << ".svg'\n"
+      << script;
   Limits limits;
   limits.seconds = 60;
   const Run r = run({"gnuplot", name + ".gp"}, {}, limits, scratch);
@@ -93,7 +96,8 @@ std::string figure_html(const Figure& f, const std::string& alt) {
 }
 
 // The totals in twenty bins from 0 to the maximum (the last bin holds the maximum).
-Figure totals_plot(const std::vector<SubmissionGrade>& all, double max, const std::string& scratch, const std::string& out) {
+Figure totals_plot(const std::vector<SubmissionGrade>& all, double max, const std::string& scratch,
+                   const std::string& out) {
   const int bins = 20;
   const double width = max > 0 ? max / bins : 1;
   std::vector<int> count(bins, 0);
@@ -163,10 +167,12 @@ std::string concept_of(const std::string& why) {
       const std::string name = line.substr(i, end - i);
       rule += name == "inf" || name == "nan" ? "#" : name;
       i = end;
-    } else if (digit(i) || ((at(i) == '-' || at(i) == '+' || at(i) == '.') && (digit(i + 1) || (at(i + 1) == '.' && digit(i + 2))))) {
+    } else if (digit(i) || ((at(i) == '-' || at(i) == '+' || at(i) == '.') &&
+                            (digit(i + 1) || (at(i + 1) == '.' && digit(i + 2))))) {
       std::size_t end = i + 1;
       while (digit(end) || at(end) == '.') ++end;
-      if ((at(end) == 'e' || at(end) == 'E') && (digit(end + 1) || ((at(end + 1) == '-' || at(end + 1) == '+') && digit(end + 2)))) {
+      if ((at(end) == 'e' || at(end) == 'E') &&
+          (digit(end + 1) || ((at(end + 1) == '-' || at(end + 1) == '+') && digit(end + 2)))) {
         end += 2;
         while (digit(end)) ++end;
       }
@@ -210,8 +216,8 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
     const std::size_t n = totals.size();
     return n % 2 ? totals[n / 2] : (totals[n / 2 - 1] + totals[n / 2]) / 2;
   };
-  body << "<h2>Totals</h2>\n<p>" << all.size() << " submissions; mean " << points(mean) << ", median " << points(median())
-       << ", lowest " << points(totals.empty() ? 0 : totals.front()) << ", highest "
+  body << "<h2>Totals</h2>\n<p>" << all.size() << " submissions; mean " << points(mean) << ", median "
+       << points(median()) << ", lowest " << points(totals.empty() ? 0 : totals.front()) << ", highest "
        << points(totals.empty() ? 0 : totals.back()) << " of " << points(max) << "; "
        << std::count(totals.begin(), totals.end(), max) << " with full marks.</p>\n";
   if (!all.empty()) body << figure_html(totals_plot(all, max, scratch, out), "a histogram of the submissions' totals");
@@ -232,11 +238,16 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
           const LabGrade& lab = s.labs[l];
           const StepGrade& step = lab.steps[k];
           sum += step.score;
-          if (lab.state != LabGrade::State::graded) ++unbuilt;
-          else if (step.status == Status::passed) ++passed;
-          else if (step.status == Status::failing) ++failing;
-          else if (step.status == Status::not_implemented) ++stub;
-          else ++abnormal_runs;
+          if (lab.state != LabGrade::State::graded)
+            ++unbuilt;
+          else if (step.status == Status::passed)
+            ++passed;
+          else if (step.status == Status::failing)
+            ++failing;
+          else if (step.status == Status::not_implemented)
+            ++stub;
+          else
+            ++abnormal_runs;
         }
         const double n = double(all.size());
         body << "<tr><td>" << step_label(first.labs[l], first.labs[l].steps[k]) << "</td><td>"
@@ -265,14 +276,16 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
       }
   std::vector<const Concept*> ranked;
   for (const auto& [key, c] : concepts) ranked.push_back(&c);
-  std::stable_sort(ranked.begin(), ranked.end(), [](const Concept* a, const Concept* b) { return a->who.size() > b->who.size(); });
+  std::stable_sort(ranked.begin(), ranked.end(),
+                   [](const Concept* a, const Concept* b) { return a->who.size() > b->who.size(); });
   body << "<h2>Concepts most often broken</h2>\n<p>A failing step's first failure names the rule the answer broke; "
           "the same rule on other numbers counts as one concept. The most common first; calls that crashed, "
           "did not finish or ran out of memory are in the next section.</p>\n";
   if (ranked.empty()) {
     body << "<p>None: no step failed on a wrong answer.</p>\n";
   } else {
-    body << "<table>\n<tr><th>submissions</th><th>lab</th><th>step</th><th>the rule broken</th><th>one of them, with its numbers</th></tr>\n";
+    body << "<table>\n<tr><th>submissions</th><th>lab</th><th>step</th><th>the rule broken</th><th>one of them, with "
+            "its numbers</th></tr>\n";
     for (std::size_t r = 0; r < ranked.size() && r < 15; ++r)
       body << "<tr><td>" << ranked[r]->who.size() << "</td><td>" << html(ranked[r]->lab) << "</td><td>"
            << html(ranked[r]->step) << "</td><td>" << html(ranked[r]->rule) << "</td><td class=\"example\">"
@@ -286,7 +299,8 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
     if (!s.error.empty()) trouble.push_back({s.name, "could not be read", "", s.error});
     for (const LabGrade& l : s.labs) {
       if (l.state == LabGrade::State::not_built)
-        trouble.push_back({s.name, "does not compile", "lab " + l.lab->id, l.build_output.substr(0, l.build_output.find('\n'))});
+        trouble.push_back(
+            {s.name, "does not compile", "lab " + l.lab->id, l.build_output.substr(0, l.build_output.find('\n'))});
       if (l.state != LabGrade::State::graded) continue;
       std::map<std::string, Trouble> kinds;  // by kind, in this lab
       for (const StepGrade& step : l.steps) {
@@ -312,7 +326,8 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
     body << "<table>\n<tr><th>submission</th><th>what</th><th>where</th><th>details</th></tr>\n";
     for (const Trouble& t : trouble)
       body << "<tr><td><a href=\"" << html(link_to(t.name, "report.txt")) << "\">" << html(t.name) << "</a></td><td>"
-           << html(t.kind) << "</td><td>" << html(t.where) << "</td><td class=\"example\">" << html(t.what) << "</td></tr>\n";
+           << html(t.kind) << "</td><td>" << html(t.where) << "</td><td class=\"example\">" << html(t.what)
+           << "</td></tr>\n";
     body << "</table>\n";
   }
 
@@ -325,9 +340,12 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
     body << "<tr><td><a href=\"" << html(link_to(s.name, "report.txt")) << "\">" << html(s.name) << "</a></td>";
     for (const LabGrade& l : s.labs) {
       const bool short_of = l.state != LabGrade::State::graded;
-      body << "<td" << (short_of ? " class=\"bad\" title=\"" + html(l.state == LabGrade::State::missing ? "not submitted" : "does not compile") + "\"" : "")
-           << ">" << points(l.score) << (short_of ? (l.state == LabGrade::State::missing ? " (missing)" : " (not compiled)") : "")
-           << "</td>";
+      body << "<td"
+           << (short_of ? " class=\"bad\" title=\"" +
+                              html(l.state == LabGrade::State::missing ? "not submitted" : "does not compile") + "\""
+                        : "")
+           << ">" << points(l.score)
+           << (short_of ? (l.state == LabGrade::State::missing ? " (missing)" : " (not compiled)") : "") << "</td>";
     }
     body << "<td><b>" << points(s.score) << "</b> / " << points(s.max_score) << "</td><td>" << points(s.seconds)
          << " s</td></tr>\n";
@@ -338,17 +356,19 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
   const std::time_t now = std::time(nullptr);
   std::strftime(when, sizeof when, "%Y-%m-%d %H:%M", std::localtime(&now));
   std::ofstream file(page, std::ios::binary);
-  file << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Class report</title>\n<style>\n"
-       << "body { font-family: sans-serif; max-width: 1000px; margin: 2em auto; color: #222; }\n"
-       << "table { border-collapse: collapse; margin: 1em 0; font-size: 0.9em; }\n"
-       << "th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }\n"
-       << "th { background: #eef2f7; } tr.lab td { background: #f6f6f6; font-weight: bold; }\n"
-       << "td.bad { color: #a00; } td.example { font-family: monospace; font-size: 0.85em; }\n"
-       << ".note { color: #666; } img { max-width: 100%; }\n</style>\n</head>\n<body>\n"
-       << "<h1>Class report</h1>\n<p>" << all.size() << " submissions graded on " << when << " in " << points(seconds)
-       << " s; seed: " << html(run.seed_kind) << ", " << run.cases << " random cases per query; limits: "
-       << html(run.limits) << ". Each submission's name links to its report; class.csv has the same totals.</p>\n"
-       << body.str() << "</body>\n</html>\n";
+  file
+      << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>Class report</title>\n<style>\n"
+      << "body { font-family: sans-serif; max-width: 1000px; margin: 2em auto; color: #222; }\n"
+      << "table { border-collapse: collapse; margin: 1em 0; font-size: 0.9em; }\n"
+      << "th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }\n"
+      << "th { background: #eef2f7; } tr.lab td { background: #f6f6f6; font-weight: bold; }\n"
+      << "td.bad { color: #a00; } td.example { font-family: monospace; font-size: 0.85em; }\n"
+      << ".note { color: #666; } img { max-width: 100%; }\n</style>\n</head>\n<body>\n"
+      << "<h1>Class report</h1>\n<p>" << all.size() << " submissions graded on " << when << " in " << points(seconds)
+      << " s; seed: " << html(run.seed_kind) << ", " << run.cases
+      << " random cases per query; limits: " << html(run.limits)
+      << ". Each submission's name links to its report; class.csv has the same totals.</p>\n"
+      << body.str() << "</body>\n</html>\n";
   if (!file) throw std::runtime_error("cannot write " + page.string());
   return page.string();
 }

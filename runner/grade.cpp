@@ -11,7 +11,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <memory>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
@@ -19,6 +18,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -42,7 +42,7 @@ struct Context {
   std::map<const Lab*, LabRecipe> recipes;
   Sandbox sandbox;
   GradingRun run;
-  std::string work;  // scratch root, removed at the end
+  std::string work;            // scratch root, removed at the end
   int jobs = 1;                // workers: processes at once
   std::size_t step_memory_mb;  // each step's memory: --memory, or less to fit the envelope
 };
@@ -82,7 +82,8 @@ std::string tail(const std::string& text, std::size_t n) {
 // writes (the code under test printed or wrote it) never becomes a command.
 std::string replay_line(const Lab& lab, const std::string& token) {
   const std::string command = replay_command("check", lab.id, token);
-  return "replay    " + (command.empty() ? "none (the case it reported is not a replay token the kit writes)" : command) + "\n";
+  return "replay    " +
+         (command.empty() ? "none (the case it reported is not a replay token the kit writes)" : command) + "\n";
 }
 
 StepOptions graded_step_options(const std::string& folder, const Context& c) {
@@ -114,7 +115,9 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
   }
   out << status_word(r.status);
   if (r.status == Status::passed || r.status == Status::failing)
-    out << ": " << passed << " of " << cases << " cases pass" << (r.ambiguous ? " (" + std::to_string(r.ambiguous) + " of them ambiguous: any answer is accepted there)" : "");
+    out << ": " << passed << " of " << cases << " cases pass"
+        << (r.ambiguous ? " (" + std::to_string(r.ambiguous) + " of them ambiguous: any answer is accepted there)"
+                        : "");
   out << "\n";
   if (abnormal(r.status)) {
     out << "what      " << r.detail << "\n";
@@ -248,8 +251,7 @@ class Grader {
 
  private:
   // Runs one of submission i's tasks; the last one to end finishes the submission.
-  template <class Work>
-  void task(std::size_t i, Work&& work) {
+  template <class Work> void task(std::size_t i, Work&& work) {
     Graded& g = *all_[i];
     work();
     if (progress) progress(g);
@@ -291,8 +293,9 @@ class Grader {
       g.grade.error = g.sub.error;
       g.grade.notes = g.sub.notes;
       if (g.sub.files.empty() && g.sub.error.empty())
-        g.grade.notes.push_back(g.sub.notes.empty() ? "the submission holds none of the files a student edits"
-                                                    : "no file a student edits could be graded (the notes above say why)");
+        g.grade.notes.push_back(g.sub.notes.empty()
+                                    ? "the submission holds none of the files a student edits"
+                                    : "no file a student edits could be graded (the notes above say why)");
     }
     for (std::size_t l = 0; l < c_.labs.size(); ++l) {
       if (g.folders.empty()) {
@@ -474,7 +477,8 @@ void fit_envelope(Context& c, const Envelope& envelope) {
   c.jobs = c.options.jobs > 0 ? c.options.jobs : std::max(1, int(std::lround(envelope.cpus)));
   c.step_memory_mb = c.options.memory_mb;
   if (envelope.memory_bytes > 0) {
-    const std::size_t usable = (envelope.memory_bytes >> 20) > kKeptMb + 64 ? (envelope.memory_bytes >> 20) - kKeptMb : 64;
+    const std::size_t usable =
+        (envelope.memory_bytes >> 20) > kKeptMb + 64 ? (envelope.memory_bytes >> 20) - kKeptMb : 64;
     if (c.options.jobs <= 0) c.jobs = std::max(1, std::min<int>(c.jobs, int(usable / kWorkerMb)));
     c.step_memory_mb = std::max<std::size_t>(64, std::min(c.step_memory_mb, usable / std::size_t(c.jobs)));
   }
@@ -495,12 +499,20 @@ int grade(const Paths& paths, const GradeOptions& options) {
     return 2;
   }
   const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
-  Context c{paths, options, {}, {}, Sandbox::make(options.sandbox, {paths.source + "/common", paths.build}, paths.source), {}, {}, 1, options.memory_mb};
+  Context c{paths,
+            options,
+            {},
+            {},
+            Sandbox::make(options.sandbox, {paths.source + "/common", paths.build}, paths.source),
+            {},
+            {},
+            1,
+            options.memory_mb};
   for (const Lab& lab : manifest.labs) {
-    const bool wanted = options.labs.empty() ||
-                        std::find_if(options.labs.begin(), options.labs.end(), [&](const std::string& id) {
-                          return id == lab.id || "0" + id == lab.id || id == lab.stem();
-                        }) != options.labs.end();
+    const bool wanted =
+        options.labs.empty() || std::find_if(options.labs.begin(), options.labs.end(), [&](const std::string& id) {
+                                  return id == lab.id || "0" + id == lab.id || id == lab.stem();
+                                }) != options.labs.end();
     if (!wanted || !fs::is_directory(paths.source + "/labs/" + lab.stem())) continue;  // a lab not written yet
     // A lab whose folder exists but which the kit does not build yet (its labkit_add_lab
     // line is still commented) cannot be graded: said once, and the others are.
@@ -549,7 +561,9 @@ int grade(const Paths& paths, const GradeOptions& options) {
     all.back()->name = submission_name(found.paths[i]);
     all.back()->work = c.work + "/" + std::to_string(i);
   }
-  const auto folder_of = [&](const Graded& g) { return single ? fs::path(options.out) : fs::path(options.out) / g.name; };
+  const auto folder_of = [&](const Graded& g) {
+    return single ? fs::path(options.out) : fs::path(options.out) / g.name;
+  };
 
   std::vector<SubmissionGrade> grades(all.size());
   std::mutex print;
@@ -585,11 +599,13 @@ int grade(const Paths& paths, const GradeOptions& options) {
   if (!single) {
     write_file(fs::path(options.out) / "class.csv", class_csv(grades));
     const std::string page = write_class_page(grades, c.run, options.out, seconds, c.work + "/plots");
-    std::cout << "\n" << term::bold("Class") << ": " << grades.size() << " submissions graded in " << points(seconds)
+    std::cout << "\n"
+              << term::bold("Class") << ": " << grades.size() << " submissions graded in " << points(seconds)
               << " s with " << c.jobs << (c.jobs == 1 ? " worker" : " workers") << "; "
               << (fs::path(options.out) / "class.csv").string() << ", " << page << "\n";
   } else {
-    std::cout << "\nResults: " << (fs::path(options.out) / "results.json").string() << ", junit.xml, report.txt, steps.tsv\n";
+    std::cout << "\nResults: " << (fs::path(options.out) / "results.json").string()
+              << ", junit.xml, report.txt, steps.tsv\n";
   }
   if (trouble) std::cerr << "labkit grade: the grader had trouble of its own (above, or in a submission's results)\n";
   return trouble ? 1 : 0;

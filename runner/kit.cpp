@@ -21,7 +21,8 @@ std::string first_errors(const std::string& log, const std::string& root) {
   std::string line;
   std::size_t index = 0, first = std::string::npos;
   while (std::getline(in, line)) {
-    if (first == std::string::npos && (line.find("error:") != std::string::npos || line.find("Error") == 0)) first = index;
+    if (first == std::string::npos && (line.find("error:") != std::string::npos || line.find("Error") == 0))
+      first = index;
     ++index;
   }
   std::string excerpt = lines_from(log, first == std::string::npos ? 0 : first, 24);

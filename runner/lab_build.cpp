@@ -2,10 +2,10 @@
 
 #include <nlohmann/json.hpp>
 
-#include <chrono>
-#include <filesystem>
 #include <sys/stat.h>
 #include <unistd.h>
+#include <chrono>
+#include <filesystem>
 #include <fstream>
 #include <regex>
 #include <sstream>
@@ -108,7 +108,8 @@ std::vector<Symbol> symbols_of(const std::string& object) {
 
 // What a student file may not define or use: the kit's judging machinery.
 std::string audit(const std::vector<Symbol>& symbols, const Lab& lab, const std::set<std::string>& kit) {
-  static const std::regex judging(R"((^|[^A-Za-z0-9_:])(labkit::check|labkit::gen|labkit::lab[0-9]+::judge|oracle|Catch|rc)::)");
+  static const std::regex judging(
+      R"((^|[^A-Za-z0-9_:])(labkit::check|labkit::gen|labkit::lab[0-9]+::judge|oracle|Catch|rc)::)");
   std::string problems;
   int count = 0;
   const auto problem = [&](const std::string& text) {
@@ -117,7 +118,8 @@ std::string audit(const std::vector<Symbol>& symbols, const Lab& lab, const std:
   for (const Symbol& s : symbols) {
     const bool defined = s.type != 'U' && s.type != 'w' && s.type != 'v';
     const bool strong = defined && std::string("TDBRGSCi").find(s.type) != std::string::npos;
-    if (defined && (s.name == "main" || s.name == "_start")) problem("defines " + s.readable + "(): the kit's tests have their own");
+    if (defined && (s.name == "main" || s.name == "_start"))
+      problem("defines " + s.readable + "(): the kit's tests have their own");
     else if (std::regex_search(s.readable, judging))
       problem((defined ? "defines " : "uses ") + s.readable + ", which belongs to the kit's tests, judge or oracle");
     else if (strong && kit.count(s.name))
@@ -145,7 +147,8 @@ std::string audit_sections(const std::string& object) {
 
 std::string strip(std::string text, const std::vector<std::string>& prefixes) {
   for (const std::string& prefix : prefixes)
-    for (std::size_t at; !prefix.empty() && (at = text.find(prefix)) != std::string::npos;) text.erase(at, prefix.size());
+    for (std::size_t at; !prefix.empty() && (at = text.find(prefix)) != std::string::npos;)
+      text.erase(at, prefix.size());
   return text;
 }
 
@@ -155,10 +158,12 @@ void reclaim(const fs::path& folder) {
   if (geteuid() != 0) return;
   std::error_code ignored;
   const auto own = [](const fs::path& p) {
-    if (lchown(p.c_str(), 0, 0) == 0) chmod(p.c_str(), fs::is_directory(p) ? 0755 : (access(p.c_str(), X_OK) == 0 ? 0755 : 0644));
+    if (lchown(p.c_str(), 0, 0) == 0)
+      chmod(p.c_str(), fs::is_directory(p) ? 0755 : (access(p.c_str(), X_OK) == 0 ? 0755 : 0644));
   };
   own(folder);
-  for (auto it = fs::recursive_directory_iterator(folder, ignored); it != fs::recursive_directory_iterator(); it.increment(ignored))
+  for (auto it = fs::recursive_directory_iterator(folder, ignored); it != fs::recursive_directory_iterator();
+       it.increment(ignored))
     if (!it->is_symlink(ignored)) own(it->path());
 }
 
@@ -174,12 +179,15 @@ Limits build_limits() {
 
 }  // namespace
 
-std::string recipe_record(const Paths& paths, const Lab& lab) { return paths.build + "/grading/" + lab.stem() + ".json"; }
+std::string recipe_record(const Paths& paths, const Lab& lab) {
+  return paths.build + "/grading/" + lab.stem() + ".json";
+}
 
 LabRecipe load_recipe(const Paths& paths, const Lab& lab) {
   LabRecipe recipe;
   const std::string record_path = recipe_record(paths, lab);
-  if (!fs::exists(record_path)) throw std::runtime_error("the kit's build has no " + record_path + " (reconfigure the build)");
+  if (!fs::exists(record_path))
+    throw std::runtime_error("the kit's build has no " + record_path + " (reconfigure the build)");
   const nlohmann::json record = nlohmann::json::parse(read_text(record_path));
   recipe.student_library = record.at("student_library").get<std::string>();
   const std::string link_record = record.at("link_record").get<std::string>();
@@ -192,7 +200,8 @@ LabRecipe load_recipe(const Paths& paths, const Lab& lab) {
     words.push_back(link.substr(at, end - at));
     at = end == std::string::npos ? link.size() : end + 1;
   }
-  if (words.size() < 3) throw std::runtime_error("the kit has not linked " + lab.answerer("student") + " yet (" + link_record + ")");
+  if (words.size() < 3)
+    throw std::runtime_error("the kit has not linked " + lab.answerer("student") + " yet (" + link_record + ")");
   recipe.link.directory = words.front();
   recipe.link.argv.assign(words.begin() + 1, words.end());
 

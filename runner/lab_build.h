@@ -27,8 +27,8 @@ struct Command {
 struct LabRecipe {
   std::map<std::string, Command> compile;  // student file (manifest path) -> its compile command
   Command link;
-  std::string student_library;             // the stub's library in `link`, replaced by the objects
-  std::set<std::string> kit_symbols;       // every symbol the kit's link inputs define
+  std::string student_library;        // the stub's library in `link`, replaced by the objects
+  std::set<std::string> kit_symbols;  // every symbol the kit's link inputs define
 };
 
 // Reads the recipe from the kit's build tree; throws with the reason when it is missing.

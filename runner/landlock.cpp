@@ -1,15 +1,15 @@
 #include "landlock.h"
 
-#include <cerrno>
-#include <cstddef>
-#include <cstdint>
-#include <cstring>
 #include <fcntl.h>
 #include <linux/landlock.h>
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/syscall.h>
 #include <unistd.h>
+#include <cerrno>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
 
 namespace runner::landlock {
 
@@ -97,9 +97,12 @@ std::string restrict_self(const std::vector<std::string>& readable, const std::v
   for (const std::string& path : readable) ok = ok && allow(ruleset, path, kRead, all);
   for (const std::string& path : writable) ok = ok && allow(ruleset, path, all, all);
   std::string why;
-  if (!ok) why = std::string("Landlock refused a rule: ") + std::strerror(errno);
-  else if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0) why = std::string("no_new_privs: ") + std::strerror(errno);
-  else if (syscall(SYS_landlock_restrict_self, ruleset, 0) != 0) why = std::string("Landlock: ") + std::strerror(errno);
+  if (!ok)
+    why = std::string("Landlock refused a rule: ") + std::strerror(errno);
+  else if (prctl(PR_SET_NO_NEW_PRIVS, 1, 0, 0, 0) != 0)
+    why = std::string("no_new_privs: ") + std::strerror(errno);
+  else if (syscall(SYS_landlock_restrict_self, ruleset, 0) != 0)
+    why = std::string("Landlock: ") + std::strerror(errno);
   close(ruleset);
   return why;
 }

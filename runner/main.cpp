@@ -30,48 +30,65 @@ int main(int argc, char** argv) {
   check_command->add_flag("--debug", check.debug, "With --case: run your code under gdb and show where it crashes");
   check_command->add_option("--cases", check.cases, "Random cases per query")->check(CLI::Range(1, 100000000));
   check_command->add_option("--seed", check.seed, "Seed of the random cases (default: the public one)");
-  check_command->add_option("--jobs", check.jobs, "Steps run at once (default: one per core)")->check(CLI::PositiveNumber);
+  check_command->add_option("--jobs", check.jobs, "Steps run at once (default: one per core)")
+      ->check(CLI::PositiveNumber);
   check_command->add_option("--timeout", check.timeout, "Seconds allowed per step")->check(CLI::PositiveNumber);
   check_command
       ->add_option("--implementation", check.implementation,
                    "Which code to check: student (your files), reference, or mutant_NAME (a classic mistake)")
       ->check(CLI::Validator(
           [](std::string& s) {
-            return s == "student" || s == "reference" || s.rfind("mutant_", 0) == 0
-                       ? std::string()
-                       : std::string("must be student, reference or mutant_NAME");
+    return s == "student" || s == "reference" || s.rfind("mutant_", 0) == 0
+               ? std::string()
+               : std::string("must be student, reference or mutant_NAME");
           },
           "IMPLEMENTATION"));
 
   runner::GradeOptions grade;
-  CLI::App* grade_command = app.add_subcommand("grade", "Grade submissions (folders, .zip or .tar.gz files) on a secret seed");
+  CLI::App* grade_command =
+      app.add_subcommand("grade", "Grade submissions (folders, .zip or .tar.gz files) on a secret seed");
   grade_command->add_option("submissions", grade.submissions, "The submissions")->required();
   grade_command->add_option("--out", grade.out, "Where the results go (default: ./grades)");
   grade_command->add_option("--seed", grade.seed, "The secret seed (default: $LABKIT_GRADING_SEED)");
-  grade_command->add_option("--jobs", grade.jobs, "Processes at once (default: the CPUs this process may use, its control group's quota included)")->check(CLI::PositiveNumber);
+  grade_command
+      ->add_option("--jobs", grade.jobs,
+                   "Processes at once (default: the CPUs this process may use, its control group's quota included)")
+      ->check(CLI::PositiveNumber);
   grade_command->add_option("--labs", grade.labs, "Only these labs, e.g. --labs 01 02");
-  grade_command->add_option("--cases", grade.cases, "Random cases per query (default " + std::to_string(runner::kGradingCases) + ")")
+  grade_command
+      ->add_option("--cases", grade.cases,
+                   "Random cases per query (default " + std::to_string(runner::kGradingCases) + ")")
       ->check(CLI::Range(1, 100000000));
-  grade_command->add_option("--timeout", grade.timeout, "Seconds allowed per step (default 60)")->check(CLI::PositiveNumber);
-  grade_command->add_option("--memory", grade.memory_mb, "Megabytes of memory per step (default 2048; less when the grader's control group has less for its workers)")->check(CLI::Range(64, 1 << 20));
-  grade_command->add_option("--sandbox", grade.sandbox, "auto (bubblewrap, else Landlock), bubblewrap, landlock or none")
+  grade_command->add_option("--timeout", grade.timeout, "Seconds allowed per step (default 60)")
+      ->check(CLI::PositiveNumber);
+  grade_command
+      ->add_option(
+          "--memory", grade.memory_mb,
+          "Megabytes of memory per step (default 2048; less when the grader's control group has less for its workers)")
+      ->check(CLI::Range(64, 1 << 20));
+  grade_command
+      ->add_option("--sandbox", grade.sandbox, "auto (bubblewrap, else Landlock), bubblewrap, landlock or none")
       ->check(CLI::IsMember({"auto", "bubblewrap", "landlock", "none"}));
 
   std::string reports;
   double max_ambiguous = 100;
   CLI::App* report_command = app.add_subcommand("report", "Sum up the case counts a suite run left behind");
   report_command->add_option("directory", reports, "Where the reports are (default: build/reports)");
-  report_command->add_option("--max-ambiguous", max_ambiguous,
-                             "Fail when a random family outside a robustness step has more ambiguous cases than this, in %")
+  report_command
+      ->add_option("--max-ambiguous", max_ambiguous,
+                   "Fail when a random family outside a robustness step has more ambiguous cases than this, in %")
       ->check(CLI::Range(0.0, 100.0));
 
   // The kit's own test of a classic mistake (ctest labNN.mutant.NAME); not for students.
   runner::MutantOptions mutant;
-  CLI::App* mutant_command = app.add_subcommand("mutant", "Check that a classic mistake fails first in its own step, naming its concept");
+  CLI::App* mutant_command =
+      app.add_subcommand("mutant", "Check that a classic mistake fails first in its own step, naming its concept");
   mutant_command->group("");  // hidden from --help
   mutant_command->add_option("lab", mutant.lab, "The lab, e.g. 02")->required();
   mutant_command->add_option("--name", mutant.name, "The mutant's NAME")->required();
-  mutant_command->add_option("--step", mutant.step, "The step its mistake belongs to")->required()->check(CLI::PositiveNumber);
+  mutant_command->add_option("--step", mutant.step, "The step its mistake belongs to")
+      ->required()
+      ->check(CLI::PositiveNumber);
   mutant_command->add_option("--says", mutant.says, "A word its first failure's why must contain");
 
   CLI11_PARSE(app, argc, argv);

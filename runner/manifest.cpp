@@ -28,8 +28,7 @@ Manifest load_manifest(const std::string& path) {
       lab.student_files = l.at("student_files").get<std::vector<std::string>>();
       for (const auto& s : l.at("steps"))
         lab.steps.push_back({s.at("step").get<int>(), s.at("tag").get<std::string>(), s.at("title").get<std::string>(),
-                             s.value("points", 0.0), s.value("partial", false),
-                             s.value("robustness", false)});
+                             s.value("points", 0.0), s.value("partial", false), s.value("robustness", false)});
       m.labs.push_back(lab);
     }
     return m;

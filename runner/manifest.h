@@ -8,7 +8,7 @@ namespace runner {
 
 struct Step {
   int number = 0;
-  std::string tag;    // "L02S3": the tag in the stub, the handout and the test names
+  std::string tag;  // "L02S3": the tag in the stub, the handout and the test names
   std::string title;
   double points = 0;
   bool partial = false;  // partial credit by the fraction of cases passed

@@ -29,7 +29,8 @@ FirstFailure first_failure(const StepResult& r) {
   if (abnormal(r.status)) return {status_word(r.status) + ": " + r.detail, r.detail};
   for (const QueryResult& q : r.queries) {
     if (!q.error.empty()) return {q.query + ": " + q.error, q.error};
-    if (q.failure && q.not_implemented.empty()) return {labkit::report::format(*q.failure, q.query, "    "), q.failure->why};
+    if (q.failure && q.not_implemented.empty())
+      return {labkit::report::format(*q.failure, q.query, "    "), q.failure->why};
   }
   for (const TestCaseResult& t : r.test_cases)
     if (!t.passed && !t.failures.empty()) return {"test " + t.name + ": " + t.failures.front(), t.failures.front()};
@@ -42,8 +43,10 @@ int mutant(const Paths& paths, const MutantOptions& options) {
   const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
   const Lab* lab = manifest.find(options.lab);
   if (!lab) throw std::runtime_error("there is no lab '" + options.lab + "'");
-  const std::string who = "mutant " + options.name + " of lab " + lab->id + " (a step " + std::to_string(options.step) + " mistake)";
-  const Programs programs{paths.build + "/" + lab->judge_binary(), paths.build + "/" + lab->answerer("mutant_" + options.name)};
+  const std::string who =
+      "mutant " + options.name + " of lab " + lab->id + " (a step " + std::to_string(options.step) + " mistake)";
+  const Programs programs{paths.build + "/" + lab->judge_binary(),
+                          paths.build + "/" + lab->answerer("mutant_" + options.name)};
   StepOptions step_options;
   step_options.limits.seconds = 300;
   step_options.limits.memory_bytes = std::size_t(4) << 30;
@@ -59,13 +62,15 @@ int mutant(const Paths& paths, const MutantOptions& options) {
     const FirstFailure f = first_failure(r);
     if (step.number < options.step) {
       std::cout << who << ": step " << step.number << " (" << status_word(r.status)
-                << ") fails first, so a student is sent to the wrong step. Its first failure:\n" << f.block << "\n";
+                << ") fails first, so a student is sent to the wrong step. Its first failure:\n"
+                << f.block << "\n";
       return 1;
     }
     std::vector<std::string> missing;
     for (const std::string& word : options.says)
       if (lower(f.why).find(lower(word)) == std::string::npos) missing.push_back("'" + word + "'");
-    std::cout << who << ": step " << step.number << " " << status_word(r.status) << ". First failure:\n" << f.block << "\n";
+    std::cout << who << ": step " << step.number << " " << status_word(r.status) << ". First failure:\n"
+              << f.block << "\n";
     if (options.says.empty()) {
       std::cout << who << " names no concept words (SAYS in its tests/*.mutants.cmake entry)\n";
       return 1;

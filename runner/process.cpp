@@ -1,16 +1,16 @@
 #include "process.h"
 #include "cgroup.h"
 
-#include <cerrno>
-#include <chrono>
-#include <csignal>
-#include <cstring>
 #include <fcntl.h>
 #include <grp.h>
 #include <poll.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <cerrno>
+#include <chrono>
+#include <csignal>
+#include <cstring>
 
 namespace runner {
 
@@ -33,7 +33,8 @@ class Capture {
   std::string text() const {
     std::string tail = tail_.size() > half_ ? tail_.substr(tail_.size() - half_) : tail_;
     if (total_ > head_.size() + tail.size())
-      return head_ + "\n[... " + std::to_string(total_ - head_.size() - tail.size()) + " bytes of output left out ...]\n" + tail;
+      return head_ + "\n[... " + std::to_string(total_ - head_.size() - tail.size()) +
+             " bytes of output left out ...]\n" + tail;
     return head_ + tail;
   }
 
@@ -95,7 +96,8 @@ bool apply_limits(const Limits& limits) {
   }
   if (limits.uid >= 0) {
     const gid_t gid = gid_t(limits.gid >= 0 ? limits.gid : limits.uid);
-    if (setgroups(0, nullptr) != 0 || setresgid(gid, gid, gid) != 0 || setresuid(uid_t(limits.uid), uid_t(limits.uid), uid_t(limits.uid)) != 0) {
+    if (setgroups(0, nullptr) != 0 || setresgid(gid, gid, gid) != 0 ||
+        setresuid(uid_t(limits.uid), uid_t(limits.uid), uid_t(limits.uid)) != 0) {
       dprintf(2, "labkit: cannot switch to uid %d: %s\n", limits.uid, strerror(errno));
       return false;
     }
@@ -103,8 +105,8 @@ bool apply_limits(const Limits& limits) {
   return true;
 }
 
-Run run(const std::vector<std::string>& argv, const Environment& env, const Limits& limits, const std::string& directory,
-        const Observer& observe) {
+Run run(const std::vector<std::string>& argv, const Environment& env, const Limits& limits,
+        const std::string& directory, const Observer& observe) {
   Run result;
   int pipe_fds[2];
   if (argv.empty() || pipe2(pipe_fds, O_CLOEXEC) != 0) {
@@ -149,8 +151,8 @@ Run run(const std::vector<std::string>& argv, const Environment& env, const Limi
     }
     if (kill_at != Clock::time_point{} && now >= kill_at) kill(-pid, SIGKILL);
     const auto until = kill_at != Clock::time_point{} ? kill_at : deadline;
-    const int wait_ms = int(std::max<long long>(
-        10, std::chrono::duration_cast<std::chrono::milliseconds>(until - now).count()));
+    const int wait_ms =
+        int(std::max<long long>(10, std::chrono::duration_cast<std::chrono::milliseconds>(until - now).count()));
     pollfd p{pipe_fds[0], POLLIN, 0};
     const int ready = poll(&p, 1, std::min(wait_ms, 1000));
     if (ready < 0 && errno != EINTR) break;
@@ -193,15 +195,24 @@ Run run(const std::vector<std::string>& argv, const Environment& env, const Limi
 
 std::string signal_name(int signal) {
   switch (signal) {
-    case SIGSEGV: return "segmentation fault (SIGSEGV)";
-    case SIGBUS: return "bus error (SIGBUS)";
-    case SIGFPE: return "arithmetic exception (SIGFPE)";
-    case SIGILL: return "illegal instruction (SIGILL)";
-    case SIGABRT: return "aborted (SIGABRT)";
-    case SIGKILL: return "killed (SIGKILL)";
-    case SIGTERM: return "terminated (SIGTERM)";
-    case SIGXCPU: return "CPU time limit (SIGXCPU)";
-    default: return std::string("signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
+    case SIGSEGV:
+      return "segmentation fault (SIGSEGV)";
+    case SIGBUS:
+      return "bus error (SIGBUS)";
+    case SIGFPE:
+      return "arithmetic exception (SIGFPE)";
+    case SIGILL:
+      return "illegal instruction (SIGILL)";
+    case SIGABRT:
+      return "aborted (SIGABRT)";
+    case SIGKILL:
+      return "killed (SIGKILL)";
+    case SIGTERM:
+      return "terminated (SIGTERM)";
+    case SIGXCPU:
+      return "CPU time limit (SIGXCPU)";
+    default:
+      return std::string("signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
   }
 }
 

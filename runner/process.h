@@ -12,25 +12,25 @@
 namespace runner {
 
 struct Limits {
-  double seconds = 120;                   // wall clock; then SIGTERM, and SIGKILL 2 s later
-  std::size_t memory_bytes = 0;           // address space (RLIMIT_AS); 0: no limit
-  std::size_t kept_bytes = 256 * 1024;    // output kept: the first half and the last half
-  std::size_t flood_bytes = 64u << 20;    // output beyond this kills the process
-  std::size_t file_bytes = 0;             // largest file it may write (RLIMIT_FSIZE); 0: no limit
-  long processes = 0;                     // processes of its uid (RLIMIT_NPROC); 0: no limit
-  long cpu_seconds = 0;                   // CPU time (RLIMIT_CPU); 0: no limit
-  int uid = -1, gid = -1;                 // run under this uid and gid (needs root); -1: as we are
-  std::vector<std::string> groups;        // join these control groups first (runner/cgroup.h; needs root)
+  double seconds = 120;                 // wall clock; then SIGTERM, and SIGKILL 2 s later
+  std::size_t memory_bytes = 0;         // address space (RLIMIT_AS); 0: no limit
+  std::size_t kept_bytes = 256 * 1024;  // output kept: the first half and the last half
+  std::size_t flood_bytes = 64u << 20;  // output beyond this kills the process
+  std::size_t file_bytes = 0;           // largest file it may write (RLIMIT_FSIZE); 0: no limit
+  long processes = 0;                   // processes of its uid (RLIMIT_NPROC); 0: no limit
+  long cpu_seconds = 0;                 // CPU time (RLIMIT_CPU); 0: no limit
+  int uid = -1, gid = -1;               // run under this uid and gid (needs root); -1: as we are
+  std::vector<std::string> groups;      // join these control groups first (runner/cgroup.h; needs root)
 };
 
 struct Run {
-  int exit_code = -1;   // when it exited normally
-  int signal = 0;       // when a signal ended it
+  int exit_code = -1;  // when it exited normally
+  int signal = 0;      // when a signal ended it
   bool timed_out = false;
   bool flooded = false;
   bool started = true;  // false when the program could not be run at all
   std::size_t output_size = 0;
-  std::string output;   // stdout and stderr together, head and tail
+  std::string output;  // stdout and stderr together, head and tail
   double seconds = 0;
 
   bool ok() const { return started && !timed_out && !flooded && signal == 0 && exit_code == 0; }

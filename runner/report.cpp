@@ -92,12 +92,14 @@ int report(const std::string& directory, const Manifest* manifest, double max_am
     failed += rows->failed;
     too_ambiguous.insert(too_ambiguous.end(), rows->too_ambiguous.begin(), rows->too_ambiguous.end());
   }
-  std::cout << "  " << term::bold(std::to_string(total) + " cases, " + std::to_string(ambiguous) + " ambiguous, " +
-                                  std::to_string(failed) + " failed")
+  std::cout << "  "
+            << term::bold(std::to_string(total) + " cases, " + std::to_string(ambiguous) + " ambiguous, " +
+                          std::to_string(failed) + " failed")
             << "\n";
   if (!too_ambiguous.empty()) {
     std::cout << term::red("Random families with more than " + std::to_string(int(100 * max_ambiguous + 0.5)) +
-                           "% ambiguous cases") << " (any answer passes those; only a robustness step may have them):\n";
+                           "% ambiguous cases")
+              << " (any answer passes those; only a robustness step may have them):\n";
     for (const std::string& row : too_ambiguous) std::cout << "  " << row << "\n";
     return 1;
   }

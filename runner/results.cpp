@@ -11,10 +11,14 @@ namespace {
 
 std::string lab_state(const LabGrade& l) {
   switch (l.state) {
-    case LabGrade::State::missing: return "not submitted";
-    case LabGrade::State::not_built: return "does not compile";
-    case LabGrade::State::pending: return "not graded yet";
-    case LabGrade::State::graded: break;
+    case LabGrade::State::missing:
+      return "not submitted";
+    case LabGrade::State::not_built:
+      return "does not compile";
+    case LabGrade::State::pending:
+      return "not graded yet";
+    case LabGrade::State::graded:
+      break;
   }
   return "";
 }
@@ -33,7 +37,6 @@ std::string step_name(const StepGrade& s) {
   return "step " + std::to_string(s.step->number) + " (" + s.step->tag + "): " + s.step->title;
 }
 
-
 std::string seconds_text(double s) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3f", s);
@@ -46,15 +49,31 @@ std::string xml_escape(const std::string& text) {
   std::string out;
   for (unsigned char c : text) {
     switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      case '\n': case '\t': case '\r': out += char(c); break;
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      case '\n':
+      case '\t':
+      case '\r':
+        out += char(c);
+        break;
       default:
-        if (c < 0x20) out += "?";  // not allowed in XML 1.0, even escaped
-        else out += char(c);
+        if (c < 0x20)
+          out += "?";  // not allowed in XML 1.0, even escaped
+        else
+          out += char(c);
     }
   }
   return out;
@@ -80,15 +99,16 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
   for (const std::string& note : s.notes) out << "  note: " << note << "\n";
   for (const LabGrade& l : s.labs) {
     out << "\n  " << pad(lab_heading(l), 56)
-        << pad(l.state == LabGrade::State::graded ? "built in " + seconds_text(l.build_seconds) + " s" : lab_state(l), 20)
+        << pad(l.state == LabGrade::State::graded ? "built in " + seconds_text(l.build_seconds) + " s" : lab_state(l),
+               20)
         << points(l.score) << " / " << points(l.max_score) << "\n";
     for (const StepGrade& g : l.steps)
       out << "    " << pad(std::to_string(g.step->number), 3) << pad(g.step->tag, 7) << pad(g.step->title, 44)
           << pad(step_state(l, g), 20) << pad(points(g.score) + " / " + points(g.step->points), 10)
           << (l.state == LabGrade::State::graded && g.graded ? seconds_text(g.seconds) + " s" : "") << "\n";
   }
-  out << "\n  " << pad("Total", 76) << points(s.score) << " / " << points(s.max_score) << "   (" << seconds_text(s.seconds)
-      << " s)\n";
+  out << "\n  " << pad("Total", 76) << points(s.score) << " / " << points(s.max_score) << "   ("
+      << seconds_text(s.seconds) << " s)\n";
   for (const LabGrade& l : s.labs) {
     if (l.state != LabGrade::State::graded)
       out << "\n" << lab_heading(l) << ": " << lab_state(l) << "\n  " << term::indent(l.build_output, "  ") << "\n";
@@ -105,10 +125,11 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
   for (const LabGrade& l : s.labs) {
     const int lab_number = std::stoi(l.lab->id);
     const bool built = l.state == LabGrade::State::graded;
-    const std::string build_output = built ? "It compiles."
-                                     : l.state == LabGrade::State::pending
-                                         ? "not graded: grading stopped before this lab was built (a time-out of the whole run?)"
-                                         : lab_state(l) + ".\n" + l.build_output;
+    const std::string build_output =
+        built ? "It compiles."
+        : l.state == LabGrade::State::pending
+            ? "not graded: grading stopped before this lab was built (a time-out of the whole run?)"
+            : lab_state(l) + ".\n" + l.build_output;
     tests.push_back({{"name", "Lab " + l.lab->id + " " + l.lab->title + ": build"},
                      {"number", std::to_string(lab_number) + ".0"},
                      {"status", built ? "passed" : "failed"},
@@ -130,7 +151,10 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
   for (const std::string& note : s.notes) summary += "Note: " + note + "\n";
   nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}, {"limits", run.limits}};
   if (run.cases > 0) extra["cases_per_query"] = run.cases;
-  return {{"score", s.score}, {"execution_time", int(std::ceil(s.seconds))}, {"output", summary}, {"tests", tests},
+  return {{"score", s.score},
+          {"execution_time", int(std::ceil(s.seconds))},
+          {"output", summary},
+          {"tests", tests},
           {"extra_data", extra}};
 }
 
@@ -142,7 +166,8 @@ std::string junit_xml(const SubmissionGrade& s) {
     std::ostringstream cases;
     for (const StepGrade& g : l.steps) {
       cases << "    <testcase classname=\"lab" << l.lab->id << "\" name=\"" << xml_escape(step_name(g)) << "\">\n";
-      const std::string message = status_word(g.status) + ": " + points(g.score) + " of " + points(g.step->points) + " points";
+      const std::string message =
+          status_word(g.status) + ": " + points(g.score) + " of " + points(g.step->points) + " points";
       const std::string body = l.state == LabGrade::State::graded ? g.feedback : lab_state(l) + "\n" + l.build_output;
       if (abnormal(g.status) || l.state == LabGrade::State::not_built) {
         ++lab_errors;
@@ -160,8 +185,9 @@ std::string junit_xml(const SubmissionGrade& s) {
     tests += int(l.steps.size());
     failures += lab_failures;
     errors += lab_errors;
-    suites << "  <testsuite name=\"lab" << l.lab->id << " " << xml_escape(l.lab->name) << "\" tests=\"" << l.steps.size()
-           << "\" failures=\"" << lab_failures << "\" errors=\"" << lab_errors << "\" skipped=\"0\">\n"
+    suites << "  <testsuite name=\"lab" << l.lab->id << " " << xml_escape(l.lab->name) << "\" tests=\""
+           << l.steps.size() << "\" failures=\"" << lab_failures << "\" errors=\"" << lab_errors
+           << "\" skipped=\"0\">\n"
            << "    <properties>\n      <property name=\"score\" value=\"" << points(l.score) << "\"/>\n"
            << "      <property name=\"max_score\" value=\"" << points(l.max_score) << "\"/>\n    </properties>\n"
            << cases.str() << "  </testsuite>\n";
@@ -179,9 +205,8 @@ std::string steps_tsv(const SubmissionGrade& s) {
   std::string out = "lab\tstep\ttag\tstatus\tscore\tmax\tseconds\n";
   for (const LabGrade& l : s.labs) {
     for (const StepGrade& g : l.steps)
-      out += l.lab->id + "\t" + std::to_string(g.step->number) + "\t" + g.step->tag + "\t" +
-             step_state(l, g) + "\t" + points(g.score) + "\t" +
-             points(g.step->points) + "\t" + seconds_text(g.seconds) + "\n";
+      out += l.lab->id + "\t" + std::to_string(g.step->number) + "\t" + g.step->tag + "\t" + step_state(l, g) + "\t" +
+             points(g.score) + "\t" + points(g.step->points) + "\t" + seconds_text(g.seconds) + "\n";
   }
   return out;
 }

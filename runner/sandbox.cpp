@@ -2,21 +2,21 @@
 #include "cgroup.h"
 #include "landlock.h"
 
-#include <bitset>
-#include <cerrno>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <csignal>
-#include <filesystem>
-#include <mutex>
-#include <stdexcept>
 #include <fcntl.h>
 #include <sys/file.h>
 #include <sys/prctl.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <bitset>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <mutex>
+#include <stdexcept>
 
 namespace runner {
 
@@ -95,7 +95,8 @@ std::shared_ptr<void> lease_uid(int* uid) {
 void chown_all(const fs::path& root, int uid) {
   std::error_code ignored;
   if (chown(root.c_str(), uid, uid) != 0) return;
-  for (auto it = fs::recursive_directory_iterator(root, ignored); it != fs::recursive_directory_iterator(); it.increment(ignored))
+  for (auto it = fs::recursive_directory_iterator(root, ignored); it != fs::recursive_directory_iterator();
+       it.increment(ignored))
     if (lchown(it->path().c_str(), uid, uid) != 0) continue;
 }
 
@@ -106,8 +107,10 @@ void add_system(std::vector<std::string>& args) {
     std::error_code e;
     const fs::file_status s = fs::symlink_status(path, e);
     if (e || !fs::exists(s)) continue;
-    if (fs::is_symlink(s)) args.insert(args.end(), {"--symlink", fs::read_symlink(path).string(), path});
-    else args.insert(args.end(), {"--ro-bind", path, path});
+    if (fs::is_symlink(s))
+      args.insert(args.end(), {"--symlink", fs::read_symlink(path).string(), path});
+    else
+      args.insert(args.end(), {"--ro-bind", path, path});
   }
 }
 
@@ -129,7 +132,8 @@ std::vector<std::string> bubblewrap(const std::vector<std::string>& argv, const 
   for (const std::string& path : readable)
     if (fs::exists(path) && path.rfind("/usr/", 0) != 0) args.insert(args.end(), {"--ro-bind", path, path});
   if (!writable.empty()) args.insert(args.end(), {"--bind", writable, writable, "--chdir", writable});
-  args.insert(args.end(), {"--setenv", "HOME", writable.empty() ? "/tmp" : writable, "--setenv", "TMPDIR", "/tmp", "--"});
+  args.insert(args.end(),
+              {"--setenv", "HOME", writable.empty() ? "/tmp" : writable, "--setenv", "TMPDIR", "/tmp", "--"});
   args.insert(args.end(), argv.begin(), argv.end());
   return args;
 }
@@ -205,8 +209,8 @@ std::string Sandbox::probe(const std::vector<std::string>& needed) const {
 void Sandbox::probe_step_groups() {
   const StepGroup probe({std::size_t(64) << 20});
   step_groups_ = !probe.folders().empty();
-  const std::string cap = drop_uid_ ? ", and the graded code may run " + std::to_string(kProcessesWithoutGroup) +
-                                          " processes at once" : "";
+  const std::string cap =
+      drop_uid_ ? ", and the graded code may run " + std::to_string(kProcessesWithoutGroup) + " processes at once" : "";
   if (probe.whole())
     groups_ = "; per step, the graded code's processes together get the step's memory, " +
               std::to_string(GroupLimits{}.processes) + " processes and one core (cgroup " + probe.version() +
@@ -226,7 +230,8 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
   if (const std::string closed = s.drop_uid_ ? closed_to_others(needed) : ""; !closed.empty())
     throw std::runtime_error("the graded code runs under an unprivileged uid, and " + closed +
                              " is closed to other users, so it could not read the kit. Make the kit's folder and "
-                             "its parents readable (chmod o+rx " + closed + ") or move the kit, then grade again");
+                             "its parents readable (chmod o+rx " +
+                             closed + ") or move the kit, then grade again");
   if (mode == "none") {
     s.why_ = "turned off (--sandbox none)";
     return s;
@@ -237,7 +242,8 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
     const std::string why = s.probe(needed);
     if (why.empty()) return s;
     s.why_ = "cannot run here: " + why;
-    if (mode == "bubblewrap") throw std::runtime_error(why + " (install bubblewrap, or use --sandbox landlock or none)");
+    if (mode == "bubblewrap")
+      throw std::runtime_error(why + " (install bubblewrap, or use --sandbox landlock or none)");
   }
   s.kind_ = Kind::landlock;
   if (mode == "landlock") s.why_ = "not asked for: --sandbox landlock";
@@ -258,7 +264,9 @@ std::string Sandbox::description() const {
   const std::string also = (drop_uid_ ? ", each run under its own unprivileged uid" : "") + groups_;
   if (kind_ == Kind::bubblewrap)
     return "bubblewrap: no network, read-only system, only its own scratch folder writable, " +
-           (tmp_bytes_ ? "a " + std::to_string(tmp_bytes_ >> 20) + " MB /tmp" : "an unbounded /tmp (bubblewrap before 0.5)") + also;
+           (tmp_bytes_ ? "a " + std::to_string(tmp_bytes_ >> 20) + " MB /tmp"
+                       : "an unbounded /tmp (bubblewrap before 0.5)") +
+           also;
   if (kind_ == Kind::landlock)
     return "Landlock (bubblewrap " + why_ +
            "): reads only the system and its own files, writes only its own scratch folder, no TCP" + also;
@@ -284,9 +292,15 @@ Confined Sandbox::confine(const std::vector<std::string>& argv, const std::strin
   }
   c.limits = limits;
   switch (kind_) {
-    case Kind::bubblewrap: c.argv = bubblewrap(argv, writable, readable, tmp_bytes_); break;
-    case Kind::landlock: c.argv = launcher({}, argv, readable, writable); break;
-    case Kind::none: c.argv = argv; break;
+    case Kind::bubblewrap:
+      c.argv = bubblewrap(argv, writable, readable, tmp_bytes_);
+      break;
+    case Kind::landlock:
+      c.argv = launcher({}, argv, readable, writable);
+      break;
+    case Kind::none:
+      c.argv = argv;
+      break;
   }
   return c;
 }
@@ -301,7 +315,8 @@ std::vector<std::string> launcher(const Limits& limits, const std::vector<std::s
   add("--file-size", (long long)limits.file_bytes);
   add("--processes", limits.processes);
   add("--cpu", limits.cpu_seconds);
-  if (limits.uid >= 0) out.insert(out.end(), {"--uid", std::to_string(limits.uid), "--gid", std::to_string(limits.gid)});
+  if (limits.uid >= 0)
+    out.insert(out.end(), {"--uid", std::to_string(limits.uid), "--gid", std::to_string(limits.gid)});
   for (const std::string& group : limits.groups) out.insert(out.end(), {"--cgroup", group});
   for (const std::string& path : readable) out.insert(out.end(), {"--read", path});
   if (!writable.empty()) out.insert(out.end(), {"--write", writable});
@@ -319,23 +334,33 @@ int confine_main(int argc, char** argv) {
   for (; at + 1 < argc && std::string(argv[at]) != "--"; at += 2) {
     const std::string name = argv[at], value = argv[at + 1];
     const long long number = std::atoll(value.c_str());
-    if (name == "--memory") limits.memory_bytes = std::size_t(number);
-    else if (name == "--file-size") limits.file_bytes = std::size_t(number);
-    else if (name == "--processes") limits.processes = long(number);
-    else if (name == "--cpu") limits.cpu_seconds = long(number);
-    else if (name == "--uid") limits.uid = int(number);
-    else if (name == "--gid") limits.gid = int(number);
-    else if (name == "--cgroup") limits.groups.push_back(value);
-    else if (name == "--read") readable.push_back(value), restrict_files = true;
-    else if (name == "--write") writable = value, restrict_files = true;
+    if (name == "--memory")
+      limits.memory_bytes = std::size_t(number);
+    else if (name == "--file-size")
+      limits.file_bytes = std::size_t(number);
+    else if (name == "--processes")
+      limits.processes = long(number);
+    else if (name == "--cpu")
+      limits.cpu_seconds = long(number);
+    else if (name == "--uid")
+      limits.uid = int(number);
+    else if (name == "--gid")
+      limits.gid = int(number);
+    else if (name == "--cgroup")
+      limits.groups.push_back(value);
+    else if (name == "--read")
+      readable.push_back(value), restrict_files = true;
+    else if (name == "--write")
+      writable = value, restrict_files = true;
     else {
       std::fprintf(stderr, "labkit-runner confine: unknown option %s\n", name.c_str());
       return 126;
     }
   }
   if (at + 1 >= argc || std::string(argv[at]) != "--") {
-    std::fprintf(stderr, "usage: labkit-runner confine [--memory B] [--file-size B] [--processes N] [--cpu S] "
-                         "[--uid U --gid G] [--cgroup FOLDER]... [--read PATH]... [--write PATH] -- PROGRAM [ARGS]\n");
+    std::fprintf(stderr,
+                 "usage: labkit-runner confine [--memory B] [--file-size B] [--processes N] [--cpu S] "
+                 "[--uid U --gid G] [--cgroup FOLDER]... [--read PATH]... [--write PATH] -- PROGRAM [ARGS]\n");
     return 126;
   }
   if (!apply_limits(limits)) return 126;
@@ -344,8 +369,8 @@ int confine_main(int argc, char** argv) {
       setenv("TMPDIR", writable.c_str(), 1);  // the compiler's temporary files: never /tmp
       setenv("HOME", writable.c_str(), 1);
     }
-    const std::string why = landlock::restrict_self(readable, writable.empty() ? std::vector<std::string>{}
-                                                                                 : std::vector<std::string>{writable});
+    const std::string why = landlock::restrict_self(
+        readable, writable.empty() ? std::vector<std::string>{} : std::vector<std::string>{writable});
     if (!why.empty()) {
       std::fprintf(stderr, "labkit-runner confine: %s\n", why.c_str());
       return 126;

@@ -81,7 +81,7 @@ class Sandbox {
   Kind kind_ = Kind::none;
   bool drop_uid_ = false;
   std::size_t tmp_bytes_ = 0;  // the size of bubblewrap's /tmp; 0: its tmpfs cannot be sized
-  std::string why_;  // why bubblewrap is not used
+  std::string why_;            // why bubblewrap is not used
   bool step_groups_ = false;
   std::string groups_;  // what the step groups hold, for description()
 };

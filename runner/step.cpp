@@ -17,16 +17,26 @@ namespace variable = labkit::report::variable;
 
 std::string status_word(Status s) {
   switch (s) {
-    case Status::passed: return "passed";
-    case Status::failing: return "failing";
-    case Status::not_implemented: return "not implemented yet";
-    case Status::crashed: return "crashed";
-    case Status::timed_out: return "timed out";
-    case Status::flooded: return "too much output";
-    case Status::out_of_memory: return "out of memory";
-    case Status::exited_early: return "exited early";
-    case Status::no_tests: return "no tests (kit error)";
-    case Status::not_built: return "does not compile";
+    case Status::passed:
+      return "passed";
+    case Status::failing:
+      return "failing";
+    case Status::not_implemented:
+      return "not implemented yet";
+    case Status::crashed:
+      return "crashed";
+    case Status::timed_out:
+      return "timed out";
+    case Status::flooded:
+      return "too much output";
+    case Status::out_of_memory:
+      return "out of memory";
+    case Status::exited_early:
+      return "exited early";
+    case Status::no_tests:
+      return "no tests (kit error)";
+    case Status::not_built:
+      return "does not compile";
   }
   return "?";
 }
@@ -64,7 +74,9 @@ std::string inflight_token(const fs::path& file) {
 
 // The judge's own process ran out of memory (the code under test running out costs its
 // case: its answer says so).
-bool out_of_memory(const StepResult& r) { return r.run.output.find("std::bad_alloc") != std::string::npos && !r.finished; }
+bool out_of_memory(const StepResult& r) {
+  return r.run.output.find("std::bad_alloc") != std::string::npos && !r.finished;
+}
 
 Status decide(const StepResult& r) {
   if (r.run.flooded) return Status::flooded;
@@ -167,9 +179,10 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
   std::shared_ptr<void> answerer_lease;
   const std::unique_ptr<StepGroup> group = answerer_group(options);
   const fs::path inflight = fs::path(scratch) / "inflight";
-  Environment env = {{variable::report, report.string()},
-                     {variable::inflight, inflight.string()},
-                     {variable::answerer, answerer_command(programs, options, answerer_scratch, group.get(), &answerer_lease)}};
+  Environment env = {
+      {variable::report, report.string()},
+      {variable::inflight, inflight.string()},
+      {variable::answerer, answerer_command(programs, options, answerer_scratch, group.get(), &answerer_lease)}};
   if (options.call_seconds > 0) env.push_back({variable::call_seconds, std::to_string(options.call_seconds)});
   if (!options.seed.empty() && options.hide_seed) {
     // A secret seed never goes on a command line or in the environment (which other
@@ -197,17 +210,21 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
   r.status = decide(r);
   if (r.status == Status::crashed) {
     // The judge's process is the kit's: its death is never the student's code crashing.
-    if (r.run.signal) r.detail = "the kit's test process was killed by " + signal_name(r.run.signal);
-    else r.detail = "the kit's test program could not be run: " + r.run.output.substr(0, 300);
+    if (r.run.signal)
+      r.detail = "the kit's test process was killed by " + signal_name(r.run.signal);
+    else
+      r.detail = "the kit's test program could not be run: " + r.run.output.substr(0, 300);
   }
   if (r.status == Status::exited_early) {
     r.detail = "the kit's test process ended before its tests did, with exit status " +
                std::to_string(r.run.exit_code) + ": a kit error, not yours (please report it)";
   }
   if (r.status == Status::out_of_memory)
-    r.detail = "the kit's test process ran out of memory (std::bad_alloc" +
-               (options.limits.memory_bytes ? ", the limit is " + std::to_string(options.limits.memory_bytes >> 20) + " MB" : std::string()) +
-               ")";
+    r.detail =
+        "the kit's test process ran out of memory (std::bad_alloc" +
+        (options.limits.memory_bytes ? ", the limit is " + std::to_string(options.limits.memory_bytes >> 20) + " MB"
+                                     : std::string()) +
+        ")";
   if (r.status == Status::timed_out)
     r.detail = "the step did not finish within " + std::to_string(int(options.limits.seconds)) +
                " s: the code under test is too slow for its cases (each call has a time limit too)";
@@ -216,8 +233,10 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
                " MB and was stopped (what the code under test prints counts: remove debug prints)";
 
   for (const QueryResult& q : r.queries) {
-    if (q.kind == "examples") r.examples += q.cases;
-    else r.random_cases += q.cases;
+    if (q.kind == "examples")
+      r.examples += q.cases;
+    else
+      r.random_cases += q.cases;
     r.ambiguous += q.ambiguous;
   }
   r.fraction_passed = fraction_passed(r);

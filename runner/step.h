@@ -26,8 +26,8 @@ enum class Status {
   flooded,
   out_of_memory,
   exited_early,  // exit() or _exit() inside a test: the session never finished
-  no_tests,   // the binary has no test for this step: a kit bug, never the student's
-  not_built,  // the lab did not compile
+  no_tests,      // the binary has no test for this step: a kit bug, never the student's
+  not_built,     // the lab did not compile
 };
 
 std::string status_word(Status s);
@@ -45,7 +45,7 @@ struct StepResult {
   std::string detail;    // why it crashed, timed out, ...
   std::string inflight;  // the replay token of the case a crash or time-out died on
   Run run;
-  bool finished = false; // the harness's report says the test session returned
+  bool finished = false;  // the harness's report says the test session returned
   int examples = 0, random_cases = 0, ambiguous = 0;
   // For partial credit: the mean, over the step's queries (its examples of a query, its
   // random cases of a query), of the fraction of cases passed; ambiguous cases pass.
@@ -57,16 +57,16 @@ struct StepResult {
 bool abnormal(Status s);
 
 struct StepOptions {
-  std::string seed;           // "" = the harness's public default
-  int cases = 0;              // 0 = the harness's default
-  std::string replay;         // one case only
+  std::string seed;    // "" = the harness's public default
+  int cases = 0;       // 0 = the harness's default
+  std::string replay;  // one case only
   bool hide_seed = false;
-  bool count_all = false;     // judge every random case (partial credit), LABKIT_COUNT_ALL
-  bool describe_only = false; // with `replay`: describe the input, run no code under test
-  Limits limits;              // the judge's process; its answerer gets the same memory and file limits (graded:
-                              // for its processes together too, in a control group, runner/cgroup.h)
-  double call_seconds = 0;   // the time limit of one call of the code under test (0: the harness's 5 s)
-  bool debugger = false;     // the answerer runs under gdb, which prints where it crashed
+  bool count_all = false;            // judge every random case (partial credit), LABKIT_COUNT_ALL
+  bool describe_only = false;        // with `replay`: describe the input, run no code under test
+  Limits limits;                     // the judge's process; its answerer gets the same memory and file limits (graded:
+                                     // for its processes together too, in a control group, runner/cgroup.h)
+  double call_seconds = 0;           // the time limit of one call of the code under test (0: the harness's 5 s)
+  bool debugger = false;             // the answerer runs under gdb, which prints where it crashed
   const Sandbox* sandbox = nullptr;  // graded runs: the answerer runs confined to a scratch folder of its own
   std::string scratch_parent = "/tmp";  // where each step's scratch folder is made
 };
@@ -78,6 +78,5 @@ struct Programs {
 };
 
 StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, const StepOptions& options);
-
 
 }  // namespace runner

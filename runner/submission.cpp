@@ -80,8 +80,10 @@ void take(const std::string& wanted, const std::string& found, const std::string
     return;
   }
   s.files[wanted] = copy.string();
-  if (!note.empty()) s.notes.push_back(note);
-  else if (found != wanted) s.notes.push_back("graded " + safe_line(found) + " as " + wanted);
+  if (!note.empty())
+    s.notes.push_back(note);
+  else if (found != wanted)
+    s.notes.push_back("graded " + safe_line(found) + " as " + wanted);
 }
 
 void read_folder(const std::string& root, const std::vector<std::string>& wanted, const std::string& work,
@@ -96,7 +98,8 @@ void read_folder(const std::string& root, const std::vector<std::string>& wanted
 
 bool named_like_a_student_file(const ArchiveMember& m, const std::vector<std::string>& wanted) {
   const std::string name = m.name.substr(m.name.find_last_of("/\\") + 1);
-  return std::any_of(wanted.begin(), wanted.end(), [&](const std::string& w) { return fs::path(w).filename() == name; });
+  return std::any_of(wanted.begin(), wanted.end(),
+                     [&](const std::string& w) { return fs::path(w).filename() == name; });
 }
 
 // The files never unpacked, each with why (once, however many copies): those named like a
@@ -108,8 +111,10 @@ void note_refusals(const ArchiveListing& listing, const std::vector<std::string>
     if (m.refused.empty() || m.kind == ArchiveMember::Kind::folder) continue;
     const std::string line = "not unpacked: " + safe_line(m.name) + " " + m.refused;
     if (std::find(refusals.begin(), refusals.end(), line) != refusals.end()) continue;
-    if (named_like_a_student_file(m, wanted)) refusals.insert(refusals.begin() + long(named_like_ours++), line);
-    else refusals.push_back(line);
+    if (named_like_a_student_file(m, wanted))
+      refusals.insert(refusals.begin() + long(named_like_ours++), line);
+    else
+      refusals.push_back(line);
   }
   for (std::size_t i = 0; i < refusals.size() && i < kMostRefusalsShown; ++i) s.notes.push_back(refusals[i]);
   if (refusals.size() > kMostRefusalsShown)
@@ -117,7 +122,9 @@ void note_refusals(const ArchiveListing& listing, const std::vector<std::string>
 }
 
 ArchiveFormat archive_format(Format format) {
-  return format == Format::zip ? ArchiveFormat::zip : format == Format::tar_gz ? ArchiveFormat::tar_gz : ArchiveFormat::tar;
+  return format == Format::zip      ? ArchiveFormat::zip
+         : format == Format::tar_gz ? ArchiveFormat::tar_gz
+                                    : ArchiveFormat::tar;
 }
 
 // An archive: listed, its unsafe members refused (each named in a note, with why), and
@@ -127,8 +134,10 @@ void read_archive(const std::string& path, Format format, const std::vector<std:
                   const std::string& work, const Sandbox& sandbox, Submission& s) {
   const ArchiveFormat kind = archive_format(format);
   // A copy the confined unpacker can read, wherever the original lies, and the grader's own.
-  const std::string archive =
-      work + "/submission" + (kind == ArchiveFormat::zip ? ".zip" : kind == ArchiveFormat::tar ? ".tar" : ".tar.gz");
+  const std::string archive = work + "/submission" +
+                              (kind == ArchiveFormat::zip   ? ".zip"
+                               : kind == ArchiveFormat::tar ? ".tar"
+                                                            : ".tar.gz");
   std::error_code e;
   const std::string why = copy_untrusted_file(fs::canonical(path, e).string(), archive, kLargestArchive);
   if (!why.empty()) {  // not a regular file, or over 1 GB: nothing in it is read
@@ -157,8 +166,10 @@ void read_archive(const std::string& path, Format format, const std::vector<std:
     const std::string into = work + "/unpacked/" + std::to_string(i);
     fs::create_directories(into);
     const UnpackedMember u = unpack_member(archive, kind, *by_path.at(found), kLargestStudentFile, into, sandbox);
-    if (!u.error.empty()) s.notes.push_back("not unpacked: " + safe_line(found) + " " + u.error);
-    else take(wanted[i], found, u.file, work, note, s);
+    if (!u.error.empty())
+      s.notes.push_back("not unpacked: " + safe_line(found) + " " + u.error);
+    else
+      take(wanted[i], found, u.file, work, note, s);
   }
   note_refusals(listing, wanted, s);
 }
@@ -202,7 +213,8 @@ std::string student_file_in_place(const fs::path& folder, const std::vector<cons
 
 std::string listed(const std::vector<std::string>& paths) {
   std::string text;
-  for (std::size_t i = 0; i < paths.size() && i < 3; ++i) text += (i ? ", " : "") + safe_line(fs::path(paths[i]).filename().string());
+  for (std::size_t i = 0; i < paths.size() && i < 3; ++i)
+    text += (i ? ", " : "") + safe_line(fs::path(paths[i]).filename().string());
   return text + (paths.size() > 3 ? ", ..." : "");
 }
 
@@ -226,11 +238,13 @@ ClassFolder class_members(const std::string& path, const std::vector<const Lab*>
     const fs::file_status s = entry.symlink_status(e);
     const std::string name = entry.path().filename().string();
     if (fs::is_regular_file(s) && is_student_file(entry.path())) return {};  // files uploaded one by one
-    if (fs::is_regular_file(s) && format_of(entry.path().string()) != Format::unknown) archives.push_back(entry.path().string());
+    if (fs::is_regular_file(s) && format_of(entry.path().string()) != Format::unknown)
+      archives.push_back(entry.path().string());
     if (!fs::is_directory(s) || name[0] == '.') continue;
     all_folders.push_back(entry.path().string());
     const std::vector<std::string> inside = regular_files(entry.path());
-    if (name != own_labs && std::any_of(inside.begin(), inside.end(), [&](const std::string& f) { return is_student_file(f); }))
+    if (name != own_labs &&
+        std::any_of(inside.begin(), inside.end(), [&](const std::string& f) { return is_student_file(f); }))
       folders.push_back(entry.path().string());
   }
   if (archives.empty() && folders.size() < 2) return {};
@@ -238,9 +252,10 @@ ClassFolder class_members(const std::string& path, const std::vector<const Lab*>
   if (!in_place.empty()) {
     std::vector<std::string> others = archives;
     others.insert(others.end(), folders.begin(), folders.end());
-    return {{}, safe_line(path) + " holds " + in_place + ", as one student's submission does, and also " + listed(others) +
-                    ", as a class does: grade the submissions it holds by name (labkit grade " + safe_line(path) +
-                    "/*), or move its " + own_labs + "/ into a folder of its own"};
+    return {{},
+            safe_line(path) + " holds " + in_place + ", as one student's submission does, and also " + listed(others) +
+                ", as a class does: grade the submissions it holds by name (labkit grade " + safe_line(path) +
+                "/*), or move its " + own_labs + "/ into a folder of its own"};
   }
   // A class: every archive and folder in it is a student's, an empty one too (it scores 0).
   std::vector<std::string> members = archives;
@@ -270,9 +285,10 @@ Submissions find_submissions(const std::vector<std::string>& named, const std::v
   }
   const std::string clashes = found.a_class ? name_clashes(found.paths, class_files) : "";
   if (!clashes.empty())
-    found.error = "each submission's results go to OUT/<name>/, <name> being its file's name without .zip, .tar.gz "
-                  "or .tar; these names cannot be told apart, so nothing was graded (rename the files):\n" +
-                  clashes.substr(0, clashes.size() - 1);
+    found.error =
+        "each submission's results go to OUT/<name>/, <name> being its file's name without .zip, .tar.gz "
+        "or .tar; these names cannot be told apart, so nothing was graded (rename the files):\n" +
+        clashes.substr(0, clashes.size() - 1);
   return found;
 }
 
@@ -286,10 +302,14 @@ Submission read_submission(const std::string& path, const std::vector<const Lab*
 
   const Format format = format_of(path);
   std::error_code e;
-  if (!fs::exists(path, e)) s.error = "no such file or folder: " + path;
-  else if (format == Format::unknown) s.error = path + " is neither a folder nor a .zip, .tar.gz or .tar file";
-  else if (format == Format::folder) read_folder(path, wanted, work, s);
-  else read_archive(path, format, wanted, work, sandbox, s);
+  if (!fs::exists(path, e))
+    s.error = "no such file or folder: " + path;
+  else if (format == Format::unknown)
+    s.error = path + " is neither a folder nor a .zip, .tar.gz or .tar file";
+  else if (format == Format::folder)
+    read_folder(path, wanted, work, s);
+  else
+    read_archive(path, format, wanted, work, sandbox, s);
   return s;
 }
 

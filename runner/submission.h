@@ -47,8 +47,8 @@ ClassFolder class_members(const std::string& path, const std::vector<const Lab*>
 
 struct Submissions {
   std::vector<std::string> paths;
-  bool a_class = false;  // results in OUT/<name>/, and the class's own files in OUT
-  std::string error;     // why nothing should be graded
+  bool a_class = false;              // results in OUT/<name>/, and the class's own files in OUT
+  std::string error;                 // why nothing should be graded
   std::vector<std::string> classes;  // "DIR holds N submissions", for each class folder
 };
 

@@ -1,7 +1,7 @@
 #include "terminal.h"
 
-#include <cstdlib>
 #include <unistd.h>
+#include <cstdlib>
 
 namespace runner::term {
 

@@ -147,8 +147,10 @@ bool write_all(int fd, const char* data, std::size_t size) {
 std::string safe_line(std::string_view bytes) {
   std::string out;
   for (const char c : safe_text(bytes)) {
-    if (c == '\n' || c == '\t') out += as_text(static_cast<unsigned char>(c));
-    else out += c;
+    if (c == '\n' || c == '\t')
+      out += as_text(static_cast<unsigned char>(c));
+    else
+      out += c;
   }
   return out;
 }
@@ -159,10 +161,14 @@ std::string safe_text(std::string_view bytes) {
   for (std::size_t at = 0; at < bytes.size();) {
     const Decoded d = decode(bytes, at);
     const bool windows_line_end = d.valid && d.code == '\r' && at + 1 < bytes.size() && bytes[at + 1] == '\n';
-    if (!d.valid) out += kReplacement;
-    else if (windows_line_end) {}  // its "\n" comes next
-    else if (shown_as_text(d.code)) out += as_text(d.code);
-    else out.append(bytes.substr(at, d.length));
+    if (!d.valid)
+      out += kReplacement;
+    else if (windows_line_end) {
+    }  // its "\n" comes next
+    else if (shown_as_text(d.code))
+      out += as_text(d.code);
+    else
+      out.append(bytes.substr(at, d.length));
     at += d.length;
   }
   return out;
@@ -173,8 +179,10 @@ std::string shell_quote(std::string_view text) {
   // quote itself ends the quoted part, is written escaped, and a new part begins.
   std::string out = "'";
   for (const char c : text) {
-    if (c == '\'') out += "'\\''";
-    else out += c;
+    if (c == '\'')
+      out += "'\\''";
+    else
+      out += c;
   }
   return out + "'";
 }
@@ -183,8 +191,7 @@ bool is_replay_token(std::string_view token) {
   const std::size_t colon = token.find(':');
   if (colon == std::string_view::npos || colon == 0) return false;  // no query in front
   const std::string_view query = token.substr(0, colon);
-  const std::string_view query_characters =
-      "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_. -";
+  const std::string_view query_characters = "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_. -";
   if (query.find_first_not_of(query_characters) != std::string_view::npos) return false;  // no query is named so
   std::string_view rest = token.substr(colon + 1);
   while (!rest.empty()) {

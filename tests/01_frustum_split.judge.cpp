@@ -11,9 +11,7 @@ namespace labkit::lab01 {
 
 std::string describe(Side s) { return s == Side::in ? "in" : (s == Side::out ? "out" : "on"); }
 
-CameraParameters parameters_of(const Camera& c) {
-  return {c.eye, c.forward, c.up, c.fov_y, c.aspect, c.near, c.far};
-}
+CameraParameters parameters_of(const Camera& c) { return {c.eye, c.forward, c.up, c.fov_y, c.aspect, c.near, c.far}; }
 
 namespace judge {
 
@@ -59,12 +57,12 @@ Outcome classify(const TrianglePlane& in, const std::array<Side, 3>& got, Rules 
     const Side e = expected[std::size_t(i)], g = got[std::size_t(i)];
     if (g == e || (rules == Rules::random && oracle::within(in.triangle[i], in.plane, kMargin * tol))) continue;
     const double distance = oracle::signed_distance(in.plane, in.triangle[i]);
-    return fail(labkit::describe(expected), labkit::describe(got),
-                "a vertex's class is the exact sign of its value, with no tolerance: v" + std::to_string(i) + " is " +
-                    fmt(distance) + " from the plane (value " + (e == Side::on ? "0" : (e == Side::in ? "> 0" : "< 0")) +
-                    "), so it is " + describe(e) + ", not " + describe(g) +
-                    (g == Side::on ? " (a magic epsilon?)" : "") +
-                    (rules == Rules::exact ? "" : "; it is more than 8 tol = " + fmt(kMargin * tol) + " from the plane"));
+    return fail(
+        labkit::describe(expected), labkit::describe(got),
+        "a vertex's class is the exact sign of its value, with no tolerance: v" + std::to_string(i) + " is " +
+            fmt(distance) + " from the plane (value " + (e == Side::on ? "0" : (e == Side::in ? "> 0" : "< 0")) +
+            "), so it is " + describe(e) + ", not " + describe(g) + (g == Side::on ? " (a magic epsilon?)" : "") +
+            (rules == Rules::exact ? "" : "; it is more than 8 tol = " + fmt(kMargin * tol) + " from the plane"));
   }
   return doubt ? ambiguous() : pass();
 }
@@ -95,8 +93,9 @@ Outcome frustum_from_camera(const Camera& in, const Frustum& got) {
     const std::string name = names[i];
     const std::string want = describe(expected.planes[std::size_t(i)]), have = describe(p);
     if (!(std::abs(p.normal.norm() - 1) <= kRelative))
-      return fail(name + ": " + want, name + ": " + have, "every plane built must have a unit normal: the " + name +
-                                                              " plane's has length " + fmt(p.normal.norm()));
+      return fail(
+          name + ": " + want, name + ": " + have,
+          "every plane built must have a unit normal: the " + name + " plane's has length " + fmt(p.normal.norm()));
     if (!(value_at(p, center) > tol))
       return fail(name + ": " + want, name + ": " + have,
                   "every normal must point into the frustum: the " + name +
@@ -106,12 +105,13 @@ Outcome frustum_from_camera(const Camera& in, const Frustum& got) {
       if (((k >> bit[i]) & 1) != set[i]) continue;
       const long double v = value_at(p, corners[std::size_t(k)]);
       if (!(std::abs(v) <= tol))
-        return fail(name + ": " + want, name + ": " + have,
-                    "each plane passes through its four corners of the frustum: the corner " + fmt(corners[std::size_t(k)]) +
-                        " is " + fmt(double(v)) + " from the " + name + " plane (tolerance " + fmt(tol) + ")" +
-                        (i < 4 && full_angle(in, got) ? "; these side planes open by tan(fov_y), and fov_y is the full angle: "
-                                                        "use tan(fov_y / 2)"
-                                                      : ""));
+        return fail(
+            name + ": " + want, name + ": " + have,
+            "each plane passes through its four corners of the frustum: the corner " + fmt(corners[std::size_t(k)]) +
+                " is " + fmt(double(v)) + " from the " + name + " plane (tolerance " + fmt(tol) + ")" +
+                (i < 4 && full_angle(in, got) ? "; these side planes open by tan(fov_y), and fov_y is the full angle: "
+                                                "use tan(fov_y / 2)"
+                                              : ""));
     }
   }
   return pass();
@@ -132,18 +132,21 @@ Outcome frustum_from_matrix(const Mat4& in, const Frustum& got) {
     const std::string name = names[i], want = name + ": " + describe(e), have = name + ": " + describe(p);
     static const char* rows[6] = {"r3 + r0", "r3 - r0", "r3 + r1", "r3 - r1", "r3 + r2", "r3 - r2"};
     if (!(std::abs(p.normal.norm() - 1) <= kRelative))
-      return fail(want, have, "each plane (a, b, c, d) must be divided by |(a, b, c)| so that its normal has unit length: the " +
-                                  name + " plane's has length " + fmt(p.normal.norm()));
+      return fail(want, have,
+                  "each plane (a, b, c, d) must be divided by |(a, b, c)| so that its normal has unit length: the " +
+                      name + " plane's has length " + fmt(p.normal.norm()));
     const double off = (p.normal - e.normal).norm(), offset_off = std::abs(p.offset - e.offset);
     if (off <= normal_tol && offset_off <= offset_tol) continue;
     const Plane columns = oracle::frustum_planes(in.transpose())[std::size_t(i)];
-    const bool transposed = (p.normal - columns.normal).norm() <= 1e-6 && std::abs(p.offset - columns.offset) <= 1e-6 * (1 + std::abs(columns.offset));
-    return fail(want, have, "the " + name + " plane is the rows' combination " + rows[i] + " over |(a, b, c)|: normal " + fmt(e.normal) +
-                                ", offset " + fmt(e.offset) + "; yours is off by " + fmt(off) + " and " + fmt(offset_off) +
-                                " (tolerances " + fmt(normal_tol) + ", " + fmt(offset_tol) + ")" +
-                                (transposed ? ": yours combines the columns; the planes come from the rows of M, as points are "
-                                              "columns multiplied on the right, M (p, 1)"
-                                            : ""));
+    const bool transposed = (p.normal - columns.normal).norm() <= 1e-6 &&
+                            std::abs(p.offset - columns.offset) <= 1e-6 * (1 + std::abs(columns.offset));
+    return fail(want, have,
+                "the " + name + " plane is the rows' combination " + rows[i] + " over |(a, b, c)|: normal " +
+                    fmt(e.normal) + ", offset " + fmt(e.offset) + "; yours is off by " + fmt(off) + " and " +
+                    fmt(offset_off) + " (tolerances " + fmt(normal_tol) + ", " + fmt(offset_tol) + ")" +
+                    (transposed ? ": yours combines the columns; the planes come from the rows of M, as points are "
+                                  "columns multiplied on the right, M (p, 1)"
+                                : ""));
   }
   return pass();
 }

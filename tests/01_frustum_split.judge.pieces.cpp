@@ -101,22 +101,26 @@ std::string missing_corner(const Triangle& t, const std::vector<Plane>& planes, 
       if (t[i] == c)
         for (const Plane& p : planes)
           if (p.value(c) == 0)
-            return ": the corner v" + std::to_string(i) + " = " + fmt(c) + " is missing; its value is 0, and the sets are closed: "
+            return ": the corner v" + std::to_string(i) + " = " + fmt(c) +
+                   " is missing; its value is 0, and the sets are closed: "
                    "a vertex with value 0 is in, kept";
-    return ": the corner " + fmt(c) + " is missing; it is where a plane cuts a side whose ends have strictly opposite "
+    return ": the corner " + fmt(c) +
+           " is missing; it is where a plane cuts a side whose ends have strictly opposite "
            "signs: every such side is cut, the closing side from the last corner back to the first included";
   }
   return "";
 }
 
 // Why an area is wrong, when a corner is neither a vertex of the input nor on a plane.
-std::string stray_corner(const Triangle& t, const std::vector<Plane>& planes, const std::vector<Triangle>& got, double tol) {
+std::string stray_corner(const Triangle& t, const std::vector<Plane>& planes, const std::vector<Triangle>& got,
+                         double tol) {
   for (const Triangle& p : got)
     for (int j = 0; j < 3; ++j) {
       bool explained = p[j] == t.v0 || p[j] == t.v1 || p[j] == t.v2;
       for (const Plane& plane : planes) explained = explained || oracle::within(p[j], plane, tol);
       if (!explained)
-        return "; the corner " + fmt(p[j]) + " is neither an input vertex nor on a plane: a cut point lies on the "
+        return "; the corner " + fmt(p[j]) +
+               " is neither an input vertex nor on a plane: a cut point lies on the "
                "cutting plane, at t = d_p / (d_p - d_q) measured from p";
     }
   return "";
@@ -131,7 +135,8 @@ Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::v
     for (int j = 0; j < 3; ++j)
       if (!got[i][j].allFinite())
         return fail("finite corners", describe_pieces(got),
-                    "every corner must be a finite point: corner " + fmt(got[i][j]) + " of triangle " + std::to_string(i) + " is not");
+                    "every corner must be a finite point: corner " + fmt(got[i][j]) + " of triangle " +
+                        std::to_string(i) + " is not");
   // The usual cases, settled without exact arithmetic.
   const Clear clear = clearance(t, planes, tol);
   if (clear == Clear::inside && got.size() == 1 && same_triangle(got[0], t)) return pass();
@@ -149,29 +154,35 @@ Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::v
       const Vec3& p = got[i][j];
       for (std::size_t k = 0; k < planes.size(); ++k)
         if (!oracle::inside_all(p, {planes[k]}, tol))
-          return fail(expected, answer, "the pieces must lie in every plane: corner " + fmt(p) + " of triangle " + std::to_string(i) +
-                                            " is outside " + (planes.size() == 6 ? std::string("the ") + plane_names[k] + " plane" : "the plane") +
-                                            " by " + fmt(-oracle::signed_distance(planes[k], p)) + " (tolerance " + fmt(tol) + ")" +
-                                            (planes.size() == 6 && k >= 4 ? ": clip by all six planes, near and far included" : ""));
+          return fail(expected, answer,
+                      "the pieces must lie in every plane: corner " + fmt(p) + " of triangle " + std::to_string(i) +
+                          " is outside " +
+                          (planes.size() == 6 ? std::string("the ") + plane_names[k] + " plane" : "the plane") +
+                          " by " + fmt(-oracle::signed_distance(planes[k], p)) + " (tolerance " + fmt(tol) + ")" +
+                          (planes.size() == 6 && k >= 4 ? ": clip by all six planes, near and far included" : ""));
       if (!surely_near(p, t, tol) && !oracle::within(p, t, tol))
-        return fail(expected, answer, "the pieces must lie in the input triangle: corner " + fmt(p) + " of triangle " + std::to_string(i) +
-                                          " is " + fmt(oracle::distance(p, t)) + " from it (tolerance " + fmt(tol) + ")");
+        return fail(expected, answer,
+                    "the pieces must lie in the input triangle: corner " + fmt(p) + " of triangle " +
+                        std::to_string(i) + " is " + fmt(oracle::distance(p, t)) + " from it (tolerance " + fmt(tol) +
+                        ")");
     }
 
   // How many pieces: exact, unless a small change of the input could change it.
   const bool doubt = rules == Rules::random && !flat && oracle::clip_in_doubt(t, planes, tol);
   if (!flat && int(got.size()) != exact.triangles() && !doubt)
-    return fail(expected, answer,
-                (exact.has_area ? "triangle ∩ planes has " + count_of(exact.corners.size(), "corner") + ", so " +
-                                      count_of(std::size_t(exact.triangles()), "triangle") +
-                                      (exact.triangles() == 1 ? " is" : " are") + " expected, not "
-                                : std::string("triangle ∩ planes has no area, so no triangle is expected, not ")) +
-                    std::to_string(got.size()) + [&] {
-                      const std::string cause = missing_corner(t, planes, got, exact, tol);
-                      if (!cause.empty() || rules != Rules::exact) return cause;
-                      return std::string(" (this input is exact: decide every sign from the vertices' plane values, never "
-                                         "from a rounded cut point)");
-                    }());
+    return fail(
+        expected, answer,
+        (exact.has_area ? "triangle ∩ planes has " + count_of(exact.corners.size(), "corner") + ", so " +
+                              count_of(std::size_t(exact.triangles()), "triangle") +
+                              (exact.triangles() == 1 ? " is" : " are") + " expected, not "
+                        : std::string("triangle ∩ planes has no area, so no triangle is expected, not ")) +
+            std::to_string(got.size()) + [&] {
+              const std::string cause = missing_corner(t, planes, got, exact, tol);
+              if (!cause.empty() || rules != Rules::exact) return cause;
+              return std::string(
+                  " (this input is exact: decide every sign from the vertices' plane values, never "
+                  "from a rounded cut point)");
+            }());
 
   // How much they cover.
   double area = 0;
@@ -184,23 +195,25 @@ Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::v
       within_shifts = area >= in - area_tol && area <= out + area_tol;
     }
     if (!within_shifts)
-      return fail(expected, answer, "the pieces must cover triangle ∩ planes: their areas sum to " + fmt(area) +
-                                        ", its area is " + fmt(exact.area) + " (tolerance " + fmt(area_tol) + ")" +
-                                        stray_corner(t, planes, got, tol));
+      return fail(expected, answer,
+                  "the pieces must cover triangle ∩ planes: their areas sum to " + fmt(area) + ", its area is " +
+                      fmt(exact.area) + " (tolerance " + fmt(area_tol) + ")" + stray_corner(t, planes, got, tol));
   }
 
   // No overlaps, and the input's winding.
   const Vec3 normal = t.normal();
   for (std::size_t i = 0; i < got.size(); ++i) {
     if (!flat && got[i].area() > area_tol && !(got[i].normal().dot(normal) > 0))
-      return fail(expected, answer, "every piece must wind like the input, (v1 - v0) x (v2 - v0) pointing the same way: triangle " +
-                                        std::to_string(i) + "'s normal " + fmt(got[i].normal()) + " points away from the input's " +
-                                        fmt(normal));
+      return fail(expected, answer,
+                  "every piece must wind like the input, (v1 - v0) x (v2 - v0) pointing the same way: triangle " +
+                      std::to_string(i) + "'s normal " + fmt(got[i].normal()) + " points away from the input's " +
+                      fmt(normal));
     for (std::size_t j = 0; j < i; ++j) {
       const double overlap = oracle::overlap_area(got[i], got[j], t);
       if (!(overlap <= area_tol))
-        return fail(expected, answer, "the pieces must not overlap: triangles " + std::to_string(j) + " and " + std::to_string(i) + " overlap by an area of " +
-                                          fmt(overlap) + " (tolerance " + fmt(area_tol) + ")");
+        return fail(expected, answer,
+                    "the pieces must not overlap: triangles " + std::to_string(j) + " and " + std::to_string(i) +
+                        " overlap by an area of " + fmt(overlap) + " (tolerance " + fmt(area_tol) + ")");
     }
   }
   return doubt ? ambiguous() : pass();
@@ -240,7 +253,8 @@ Interpolation interpolate(const Triangle& t, const std::array<Vec3, 3>& colors, 
 
 // A likely cause of a wrong colour at x: t measured from the other end of the edge x is
 // on, or colours blended from other vertices than the position.
-std::string colour_hint(const Triangle& t, const std::array<Vec3, 3>& colors, const Vec3& x, const Vec3& got, double tol) {
+std::string colour_hint(const Triangle& t, const std::array<Vec3, 3>& colors, const Vec3& x, const Vec3& got,
+                        double tol) {
   for (int a = 0; a < 3; ++a) {
     const int b = (a + 1) % 3;
     const Vec3 edge = t[b] - t[a];
@@ -257,12 +271,14 @@ std::string colour_hint(const Triangle& t, const std::array<Vec3, 3>& colors, co
 
 Outcome split_triangle(const TrianglePlane& in, const std::vector<Triangle>& got, Rules rules) {
   const std::vector<Plane> planes = {in.plane};
-  return pieces(in.triangle, planes, got, scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, planes), rules);
+  return pieces(in.triangle, planes, got, scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, planes),
+                rules);
 }
 
 Outcome clip_triangle(const TriangleFrustum& in, const std::vector<Triangle>& got, Rules rules) {
   const std::vector<Plane> planes = planes_of(in.frustum);
-  return pieces(in.triangle, planes, got, scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, planes), rules);
+  return pieces(in.triangle, planes, got, scale_of_input({in.triangle.v0, in.triangle.v1, in.triangle.v2}, planes),
+                rules);
 }
 
 Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules) {
@@ -273,24 +289,26 @@ Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules) {
   const std::string sizes = std::to_string(n) + " vertices, " + std::to_string(got.colors.size()) + " colours, " +
                             std::to_string(count) + " triangles, " + std::to_string(got.source.size()) + " sources";
   if (got.colors.size() != n)
-    return fail("one colour per vertex", sizes, "every vertex needs a colour, the new cut points included: " +
-                                                    std::to_string(n) + " vertices, " + count_of(got.colors.size(), "colour"));
+    return fail("one colour per vertex", sizes,
+                "every vertex needs a colour, the new cut points included: " + std::to_string(n) + " vertices, " +
+                    count_of(got.colors.size(), "colour"));
   if (got.source.size() != count)
-    return fail("one source per triangle", sizes, "every triangle needs its source, the input triangle it is a piece of: " +
-                                                      count_of(count, "triangle") + ", " + count_of(got.source.size(), "source"));
+    return fail("one source per triangle", sizes,
+                "every triangle needs its source, the input triangle it is a piece of: " + count_of(count, "triangle") +
+                    ", " + count_of(got.source.size(), "source"));
   std::vector<std::vector<Triangle>> pieces_of(in.mesh.size());
   std::vector<std::vector<std::size_t>> indices_of(in.mesh.size());
   for (std::size_t k = 0; k < count; ++k) {
     for (int i : got.mesh.triangles[k])
       if (i < 0 || std::size_t(i) >= n)
         return fail("indices into the vertices", "index " + std::to_string(i),
-                    "every index must name one of the " + std::to_string(n) + " vertices: triangle " + std::to_string(k) + " has " +
-                        std::to_string(i));
+                    "every index must name one of the " + std::to_string(n) + " vertices: triangle " +
+                        std::to_string(k) + " has " + std::to_string(i));
     const int s = got.source[k];
     if (s < 0 || std::size_t(s) >= in.mesh.size())
       return fail("an input triangle's index", "source " + std::to_string(s),
-                  "every source must name one of the " + std::to_string(in.mesh.size()) + " input triangles: triangle " +
-                      std::to_string(k) + " has " + std::to_string(s));
+                  "every source must name one of the " + std::to_string(in.mesh.size()) +
+                      " input triangles: triangle " + std::to_string(k) + " has " + std::to_string(s));
     pieces_of[std::size_t(s)].push_back(got.mesh.triangle(k));
     indices_of[std::size_t(s)].push_back(k);
   }
@@ -306,7 +324,8 @@ Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules) {
     const auto& face = in.mesh.triangles[s];
     const std::array<Vec3, 3> colors = {in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])],
                                         in.colors[std::size_t(face[2])]};
-    const double C = std::max({colors[0].cwiseAbs().maxCoeff(), colors[1].cwiseAbs().maxCoeff(), colors[2].cwiseAbs().maxCoeff()});
+    const double C =
+        std::max({colors[0].cwiseAbs().maxCoeff(), colors[1].cwiseAbs().maxCoeff(), colors[2].cwiseAbs().maxCoeff()});
     for (std::size_t k : indices_of[s])
       for (int i : got.mesh.triangles[k]) {
         const Vec3& x = got.mesh.vertices[std::size_t(i)];
@@ -316,9 +335,10 @@ Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules) {
         const Vec3& c = got.colors[std::size_t(i)];
         if (!((c - f.value).norm() <= color_tol))
           return fail("colour " + fmt(f.value), "colour " + fmt(c),
-                      "a cut point's colour is interpolated with the same t as its position: at vertex " + std::to_string(i) + " " +
-                          fmt(x) + " of a piece of input triangle " + std::to_string(s) + ", linear interpolation gives " +
-                          fmt(f.value) + ", not " + fmt(c) + " (tolerance " + fmt(color_tol) + ")" + colour_hint(t, colors, x, c, color_tol));
+                      "a cut point's colour is interpolated with the same t as its position: at vertex " +
+                          std::to_string(i) + " " + fmt(x) + " of a piece of input triangle " + std::to_string(s) +
+                          ", linear interpolation gives " + fmt(f.value) + ", not " + fmt(c) + " (tolerance " +
+                          fmt(color_tol) + ")" + colour_hint(t, colors, x, c, color_tol));
       }
   }
   return doubt ? ambiguous() : pass();

@@ -13,7 +13,7 @@
 
 namespace labkit::lab01::judge {
 
-using judging::kRelative;  // tol = 1e-9 S (the header's tolerances)
+using judging::kRelative;             // tol = 1e-9 S (the header's tolerances)
 inline constexpr double kMargin = 8;  // ambiguous within 8 tol of a plane
 
 using Long3 = Eigen::Matrix<long double, 3, 1>;

@@ -33,7 +33,7 @@ Camera square_camera() {
 // The same frustum with integer normals (not unit), for exact input.
 Frustum integer_pyramid() {
   Frustum f;
-  f.planes = {Plane{{1, 0, -1}, 0}, Plane{{-1, 0, -1}, 0}, Plane{{0, 1, -1}, 0},
+  f.planes = {Plane{{1, 0, -1}, 0},  Plane{{-1, 0, -1}, 0}, Plane{{0, 1, -1}, 0},
               Plane{{0, -1, -1}, 0}, Plane{{0, 0, -1}, -1}, Plane{{0, 0, 1}, 3}};
   return f;
 }
@@ -57,28 +57,36 @@ auto expect_polygon(std::vector<Vec3> corners, double area, Run run, Judge judge
     Expect e;
     const int expected = corners.size() >= 3 ? int(corners.size()) - 2 : 0;
     e.that("triangles", int(got.size()) == expected, std::to_string(got.size()), std::to_string(expected),
-           corners.empty() ? "nothing is left, so no triangle is expected"
-                           : "the polygon left has " + std::to_string(corners.size()) + " corners, so " +
-                                 std::to_string(expected) + (expected == 1 ? " triangle is" : " triangles are") + " expected");
+           corners.empty()
+               ? "nothing is left, so no triangle is expected"
+               : "the polygon left has " + std::to_string(corners.size()) + " corners, so " + std::to_string(expected) +
+                     (expected == 1 ? " triangle is" : " triangles are") + " expected");
     double total = 0;
     for (const Triangle& t : got) total += t.area();
     e.that("area", std::abs(total - area) <= 1e-12 * std::max(1.0, area), fmt(total), fmt(area),
-           "the pieces must cover the kept polygon exactly once: its area is " + fmt(area) + ", yours sum to " + fmt(total));
+           "the pieces must cover the kept polygon exactly once: its area is " + fmt(area) + ", yours sum to " +
+               fmt(total));
     // The same corners, no more and no fewer (within 1e-12).
     bool same = true;
     for (const Vec3& c : corners) same = same && has_point(got, c);
     for (const Triangle& t : got)
       for (int i = 0; i < 3; ++i)
-        same = same && std::any_of(corners.begin(), corners.end(), [&](const Vec3& c) { return (t[i] - c).norm() <= 1e-12; });
-    e.that("corners", same, describe(got), describe(corners), "the pieces' vertices must be the clipped polygon's corners");
+        same = same &&
+               std::any_of(corners.begin(), corners.end(), [&](const Vec3& c) { return (t[i] - c).norm() <= 1e-12; });
+    e.that("corners", same, describe(got), describe(corners),
+           "the pieces' vertices must be the clipped polygon's corners");
     return e.outcome();
   };
 }
 
 std::vector<Triangle> run_split(const TrianglePlane& in) { return split_triangle(in.triangle, in.plane); }
 std::vector<Triangle> run_clip(const TriangleFrustum& in) { return clip_triangle(in.triangle, in.frustum); }
-Outcome judge_split(const TrianglePlane& in, const std::vector<Triangle>& got) { return judge::split_triangle(in, got, Rules::exact); }
-Outcome judge_clip(const TriangleFrustum& in, const std::vector<Triangle>& got) { return judge::clip_triangle(in, got, Rules::exact); }
+Outcome judge_split(const TrianglePlane& in, const std::vector<Triangle>& got) {
+  return judge::split_triangle(in, got, Rules::exact);
+}
+Outcome judge_clip(const TriangleFrustum& in, const std::vector<Triangle>& got) {
+  return judge::clip_triangle(in, got, Rules::exact);
+}
 
 auto split_gives(std::vector<Vec3> corners, double area) {
   return expect_polygon<TrianglePlane>(std::move(corners), area, run_split, judge_split);
@@ -95,8 +103,8 @@ Outcome expect_planes(const Frustum& got, const std::array<Plane, 6>& expected, 
     const Plane &g = got.planes[std::size_t(i)], &x = expected[std::size_t(i)];
     const bool ok = (g.normal - x.normal).norm() <= 1e-12 && std::abs(g.offset - x.offset) <= 1e-12;
     e.that(std::string(names[i]), ok, describe(g), describe(x),
-           std::string("the ") + names[i] + " plane of this worked example is normal " + fmt(x.normal) + ", offset " + fmt(x.offset) +
-               " (within 1e-12): yours is normal " + fmt(g.normal) + ", offset " + fmt(g.offset));
+           std::string("the ") + names[i] + " plane of this worked example is normal " + fmt(x.normal) + ", offset " +
+               fmt(x.offset) + " (within 1e-12): yours is normal " + fmt(g.normal) + ", offset " + fmt(g.offset));
   }
   return e.outcome();
 }
@@ -104,7 +112,7 @@ Outcome expect_planes(const Frustum& got, const std::array<Plane, 6>& expected, 
 // The planes of the square camera's frustum, unit normals.
 std::array<Plane, 6> square_frustum_planes() {
   const double h = kHalfRoot2;
-  return {Plane{{h, 0, -h}, 0}, Plane{{-h, 0, -h}, 0}, Plane{{0, h, -h}, 0},
+  return {Plane{{h, 0, -h}, 0},  Plane{{-h, 0, -h}, 0}, Plane{{0, h, -h}, 0},
           Plane{{0, -h, -h}, 0}, Plane{{0, 0, -1}, -1}, Plane{{0, 0, 1}, 3}};
 }
 
@@ -153,8 +161,7 @@ rc::Gen<TrianglePlane> decisive(rc::Gen<TrianglePlane> base) {
 
 // Several planes: while some sign of the clipping rule is in doubt, every plane moves
 // by 16 to 1024 tol (each its own amount and way), from where it was.
-template <class Case, class InDoubt>
-Case moved_until_decisive(const Case& base, double points, InDoubt&& in_doubt) {
+template <class Case, class InDoubt> Case moved_until_decisive(const Case& base, double points, InDoubt&& in_doubt) {
   for (int attempt = 0; attempt < 16; ++attempt) {
     Case c = base;
     const double tol = 1e-9 * scale_with(points, c.frustum.planes.data(), 6);
@@ -168,7 +175,8 @@ Case moved_until_decisive(const Case& base, double points, InDoubt&& in_doubt) {
 rc::Gen<TriangleFrustum> decisive(rc::Gen<TriangleFrustum> base) {
   return rc::gen::exec([base] {
     const TriangleFrustum c = *base;
-    return moved_until_decisive(c, scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2}), [](const TriangleFrustum& x, double tol) {
+    return moved_until_decisive(c, scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2}),
+                                [](const TriangleFrustum& x, double tol) {
       return oracle::clip_in_doubt(x.triangle, {x.frustum.planes.begin(), x.frustum.planes.end()}, tol);
     });
   });
@@ -198,8 +206,11 @@ TEST_CASE(LABKIT_STEP(L01S1) ": worked examples", "[lab01][step1]") {
       const double got = signed_distance(in.plane, x), value = in.plane.value(x), length = in.plane.normal.norm();
       Expect e;
       e.that("signed_distance", std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected),
-             "the signed distance is (n . x + offset) / |n| = " + fmt(value) + " / " + fmt(length) + " = " + fmt(expected) +
-                 (got == value && length != 1 ? ": yours is the value, |n| = " + fmt(length) + " times too large: divide by |n|" : ""));
+             "the signed distance is (n . x + offset) / |n| = " + fmt(value) + " / " + fmt(length) + " = " +
+                 fmt(expected) +
+                 (got == value && length != 1
+                      ? ": yours is the value, |n| = " + fmt(length) + " times too large: divide by |n|"
+                      : ""));
       return e.outcome();
     };
   };
@@ -208,10 +219,12 @@ TEST_CASE(LABKIT_STEP(L01S1) ": worked examples", "[lab01][step1]") {
   check::example(query::signed_distance, "1 below z = 1", on_z1, distance({1, 1, 0}, -1));
   check::example(query::signed_distance, "a tilted plane: (1, 2, 2) . x - 3 at (1, 1, 1) is 2, over |n| = 3",
                  TrianglePlane{{}, Plane{{1, 2, 2}, -3}}, distance({1, 1, 1}, 2.0 / 3.0));
-  const auto sides = [](const TrianglePlane& in) { return judge::classify(in, classify(in.plane, in.triangle), Rules::exact); };
+  const auto sides = [](const TrianglePlane& in) {
+    return judge::classify(in, classify(in.plane, in.triangle), Rules::exact);
+  };
   check::example(query::classify, "out, in, on", on_z1, sides);
-  check::example(query::classify, "2^-40 above the plane is in", TrianglePlane{{{0, 0, 1 + std::ldexp(1.0, -40)}, {1, 0, 1}, {0, 1, -3}}, z1},
-                 sides);
+  check::example(query::classify, "2^-40 above the plane is in",
+                 TrianglePlane{{{0, 0, 1 + std::ldexp(1.0, -40)}, {1, 0, 1}, {0, 1, -3}}, z1}, sides);
 }
 
 TEST_CASE(LABKIT_STEP(L01S1) ": random cases", "[lab01][step1][oracle]") {
@@ -220,9 +233,8 @@ TEST_CASE(LABKIT_STEP(L01S1) ": random cases", "[lab01][step1][oracle]") {
     for (int i = 0; i < 3; ++i) got[std::size_t(i)] = signed_distance(in.plane, in.triangle[i]);
     return judge::signed_distance(in, got);
   });
-  check::random_cases(query::classify, decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
-    return judge::classify(in, classify(in.plane, in.triangle));
-  });
+  check::random_cases(query::classify, decisive(gen::triangle_plane()),
+                      [](const TrianglePlane& in) { return judge::classify(in, classify(in.plane, in.triangle)); });
 }
 
 // ---- Step 2 ------------------------------------------------------------------------
@@ -231,23 +243,29 @@ TEST_CASE(LABKIT_STEP(L01S2) ": the four configurations", "[lab01][step2]") {
   const double full = 8 * std::sqrt(3.0);  // the area of (0,0,-1), (4,0,3), (0,4,3)
   check::example(query::split_triangle, "all in: keep", TrianglePlane{{{0, 0, 1}, {4, 0, 1}, {0, 4, 3}}, kFloor},
                  split_gives({{0, 0, 1}, {4, 0, 1}, {0, 4, 3}}, 4 * std::sqrt(5.0)));
-  check::example(query::split_triangle, "none in: cull", TrianglePlane{{{0, 0, -1}, {4, 0, -1}, {0, 4, -3}}, kFloor}, split_gives({}, 0));
-  check::example(query::split_triangle, "one in: one triangle", TrianglePlane{{{0, 0, -1}, {4, 0, -1}, {0, 4, 3}}, kFloor},
+  check::example(query::split_triangle, "none in: cull", TrianglePlane{{{0, 0, -1}, {4, 0, -1}, {0, 4, -3}}, kFloor},
+                 split_gives({}, 0));
+  check::example(query::split_triangle, "one in: one triangle",
+                 TrianglePlane{{{0, 0, -1}, {4, 0, -1}, {0, 4, 3}}, kFloor},
                  split_gives({{3, 1, 0}, {0, 4, 3}, {0, 1, 0}}, 4.5 * std::sqrt(2.0)));
-  check::example(query::split_triangle, "two in: a quadrilateral, two triangles", TrianglePlane{{{0, 0, -1}, {4, 0, 3}, {0, 4, 3}}, kFloor},
+  check::example(query::split_triangle, "two in: a quadrilateral, two triangles",
+                 TrianglePlane{{{0, 0, -1}, {4, 0, 3}, {0, 4, 3}}, kFloor},
                  split_gives({{1, 0, 0}, {4, 0, 3}, {0, 4, 3}, {0, 1, 0}}, full - std::sqrt(3.0) / 2));
 }
 
 TEST_CASE(LABKIT_STEP(L01S2) ": vertices on the plane", "[lab01][step2]") {
   check::example(query::split_triangle, "a vertex on the plane, the others in: keep",
-                 TrianglePlane{{{0, 0, 0}, {4, 0, 1}, {0, 4, 1}}, kFloor}, split_gives({{0, 0, 0}, {4, 0, 1}, {0, 4, 1}}, 6 * std::sqrt(2.0)));
+                 TrianglePlane{{{0, 0, 0}, {4, 0, 1}, {0, 4, 1}}, kFloor},
+                 split_gives({{0, 0, 0}, {4, 0, 1}, {0, 4, 1}}, 6 * std::sqrt(2.0)));
   check::example(query::split_triangle, "a vertex on the plane, one in, one out",
-                 TrianglePlane{{{0, 0, 0}, {4, 0, -2}, {0, 4, 2}}, kFloor}, split_gives({{0, 0, 0}, {2, 2, 0}, {0, 4, 2}}, 2 * std::sqrt(6.0)));
+                 TrianglePlane{{{0, 0, 0}, {4, 0, -2}, {0, 4, 2}}, kFloor},
+                 split_gives({{0, 0, 0}, {2, 2, 0}, {0, 4, 2}}, 2 * std::sqrt(6.0)));
   check::example(query::split_triangle, "touching at a vertex from below: cull",
                  TrianglePlane{{{0, 0, 0}, {4, 0, -1}, {0, 4, -1}}, kFloor}, split_gives({}, 0));
   check::example(query::split_triangle, "an edge on the plane, the third vertex below: cull",
                  TrianglePlane{{{0, 0, 0}, {4, 0, 0}, {0, 4, -1}}, kFloor}, split_gives({}, 0));
-  check::example(query::split_triangle, "lying in the plane: keep", TrianglePlane{{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, kFloor},
+  check::example(query::split_triangle, "lying in the plane: keep",
+                 TrianglePlane{{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, kFloor},
                  split_gives({{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, 8));
 }
 
@@ -258,8 +276,8 @@ TEST_CASE(LABKIT_STEP(L01S2) ": random cases", "[lab01][step2][oracle]") {
 // ---- Step 3 ------------------------------------------------------------------------
 
 TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
-  check::example(query::frustum_from_camera, "at the origin, looking down -z, 90 degrees, near 1, far 3", square_camera(),
-                 [](const Camera& in) {
+  check::example(query::frustum_from_camera, "at the origin, looking down -z, 90 degrees, near 1, far 3",
+                 square_camera(), [](const Camera& in) {
                    const Frustum got = frustum_from_camera(in);
                    return expect_planes(got, square_frustum_planes(), judge::frustum_from_camera(in, got));
                  });
@@ -269,25 +287,26 @@ TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
   check::example(query::frustum_from_camera, "eye (0, 0, 5), twice as wide as high", wide, [](const Camera& in) {
     const double a = 1 / std::sqrt(5.0), h = kHalfRoot2;
     const Frustum got = frustum_from_camera(in);
-    return expect_planes(got, {Plane{{a, 0, -2 * a}, 2 * std::sqrt(5.0)}, Plane{{-a, 0, -2 * a}, 2 * std::sqrt(5.0)},
-                                                   Plane{{0, h, -h}, 5 * h}, Plane{{0, -h, -h}, 5 * h}, Plane{{0, 0, -1}, 4},
-                                                   Plane{{0, 0, 1}, -2}}, judge::frustum_from_camera(in, got));
+    return expect_planes(
+        got,
+        {Plane{{a, 0, -2 * a}, 2 * std::sqrt(5.0)}, Plane{{-a, 0, -2 * a}, 2 * std::sqrt(5.0)},
+         Plane{{0, h, -h}, 5 * h}, Plane{{0, -h, -h}, 5 * h}, Plane{{0, 0, -1}, 4}, Plane{{0, 0, 1}, -2}},
+        judge::frustum_from_camera(in, got));
   });
   Mat4 perspective;
   perspective << 1, 0, 0, 0,  //
       0, 1, 0, 0,             //
       0, 0, -2, -3,           //
       0, 0, -1, 0;
-  check::example(query::frustum_from_matrix, "the square camera's perspective matrix", perspective,
-                 [](const Mat4& in) {
-                   const Frustum got = frustum_from_matrix(in);
-                   return expect_planes(got, square_frustum_planes(), judge::frustum_from_matrix(in, got));
-                 });
+  check::example(query::frustum_from_matrix, "the square camera's perspective matrix", perspective, [](const Mat4& in) {
+    const Frustum got = frustum_from_matrix(in);
+    return expect_planes(got, square_frustum_planes(), judge::frustum_from_matrix(in, got));
+  });
   check::example(query::frustum_from_matrix, "the same matrix times 2: the same planes", Mat4(2 * perspective),
                  [](const Mat4& in) {
-                   const Frustum got = frustum_from_matrix(in);
-                   return expect_planes(got, square_frustum_planes(), judge::frustum_from_matrix(in, got));
-                 });
+    const Frustum got = frustum_from_matrix(in);
+    return expect_planes(got, square_frustum_planes(), judge::frustum_from_matrix(in, got));
+  });
   Mat4 ortho;
   ortho << 0.5, 0, 0, 0,  //
       0, 1, 0, 0,         //
@@ -295,19 +314,18 @@ TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
       0, 0, 0, 1;
   check::example(query::frustum_from_matrix, "glOrtho(-2, 2, -1, 1, 1, 5): a box", ortho, [](const Mat4& in) {
     const Frustum got = frustum_from_matrix(in);
-    return expect_planes(got, {Plane{{1, 0, 0}, 2}, Plane{{-1, 0, 0}, 2}, Plane{{0, 1, 0}, 1},
-                                                   Plane{{0, -1, 0}, 1}, Plane{{0, 0, -1}, -1}, Plane{{0, 0, 1}, 5}},
+    return expect_planes(got,
+                         {Plane{{1, 0, 0}, 2}, Plane{{-1, 0, 0}, 2}, Plane{{0, 1, 0}, 1}, Plane{{0, -1, 0}, 1},
+                          Plane{{0, 0, -1}, -1}, Plane{{0, 0, 1}, 5}},
                          judge::frustum_from_matrix(in, got));
   });
 }
 
 TEST_CASE(LABKIT_STEP(L01S3) ": random cases", "[lab01][step3][oracle]") {
-  check::random_cases(query::frustum_from_camera, gen::lab_camera(), [](const Camera& in) {
-    return judge::frustum_from_camera(in, frustum_from_camera(in));
-  });
-  check::random_cases(query::frustum_from_matrix, gen::view_projection_matrix(), [](const Mat4& in) {
-    return judge::frustum_from_matrix(in, frustum_from_matrix(in));
-  });
+  check::random_cases(query::frustum_from_camera, gen::lab_camera(),
+                      [](const Camera& in) { return judge::frustum_from_camera(in, frustum_from_camera(in)); });
+  check::random_cases(query::frustum_from_matrix, gen::view_projection_matrix(),
+                      [](const Mat4& in) { return judge::frustum_from_matrix(in, frustum_from_matrix(in)); });
 }
 
 // ---- Step 4 ------------------------------------------------------------------------
@@ -321,7 +339,8 @@ TEST_CASE(LABKIT_STEP(L01S4) ": worked examples", "[lab01][step4]") {
   }();
   check::example(query::clip_triangle, "inside: keep", TriangleFrustum{{{0, 0, -2}, {0.5, 0, -2}, {0, 0.5, -2}}, f},
                  clip_gives({{0, 0, -2}, {0.5, 0, -2}, {0, 0.5, -2}}, 0.125));
-  check::example(query::clip_triangle, "behind the camera: cull", TriangleFrustum{{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}, f}, clip_gives({}, 0));
+  check::example(query::clip_triangle, "behind the camera: cull", TriangleFrustum{{{0, 0, 1}, {1, 0, 1}, {0, 1, 1}}, f},
+                 clip_gives({}, 0));
   check::example(query::clip_triangle, "from the eye: the near plane cuts off the tip",
                  TriangleFrustum{{{0, 0, 0}, {1, 0, -2}, {-1, 0, -2}}, f},
                  clip_gives({{0.5, 0, -1}, {1, 0, -2}, {-1, 0, -2}, {-0.5, 0, -1}}, 1.5));
@@ -346,7 +365,8 @@ TEST_CASE(LABKIT_STEP(L01S5) ": worked examples", "[lab01][step5]") {
   in.mesh.triangles = {{0, 1, 2}, {0, 2, 3}};
   in.colors = {{1, 0, 0}, {0, 1, 0}, {0, 1, 0}, {1, 0, 0}};
   in.frustum = integer_pyramid();
-  check::example(query::clip_mesh, "a rectangle cut a quarter of the way across by the left plane", in, [](const MeshFrustum& in) {
+  check::example(query::clip_mesh, "a rectangle cut a quarter of the way across by the left plane", in,
+                 [](const MeshFrustum& in) {
     const ClippedMesh got = clip_mesh(colored(in), in.frustum);
     // The contract's rules first (sizes, pieces, colours), with their reasons.
     const Outcome judged = judge::clip_mesh(in, got, Rules::exact);
@@ -364,15 +384,15 @@ TEST_CASE(LABKIT_STEP(L01S5) ": worked examples", "[lab01][step5]") {
           e.that("colour at " + fmt(got.mesh.vertices[std::size_t(i)]),
                  (got.colors[std::size_t(i)] - Vec3(0.75, 0.25, 0)).norm() <= 1e-12, fmt(got.colors[std::size_t(i)]),
                  fmt(Vec3(0.75, 0.25, 0)),
-                 "a cut point's colour is interpolated with the same t as its position: a quarter of the way from red to green");
+                 "a cut point's colour is interpolated with the same t as its position: a quarter of the way from red "
+                 "to green");
     return e.outcome();
   });
 }
 
 TEST_CASE(LABKIT_STEP(L01S5) ": random cases", "[lab01][step5][oracle]") {
-  check::random_cases(query::clip_mesh, decisive(gen::mesh_frustum()), [](const MeshFrustum& in) {
-    return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum));
-  });
+  check::random_cases(query::clip_mesh, decisive(gen::mesh_frustum()),
+                      [](const MeshFrustum& in) { return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum)); });
 }
 
 // ---- Step 6: robustness --------------------------------------------------------------
@@ -384,14 +404,15 @@ TEST_CASE(LABKIT_STEP(L01S6) ": vertices, edges and triangles on frustum planes"
   check::example(q, "an edge through the line where the left and near planes meet",
                  TriangleFrustum{{{-2, 0, 0}, {0, 0, -2}, {0, 1, -2}}, f},
                  clip_gives({{-1, 0, -1}, {0, 0, -2}, {0, 1, -2}, {-1, 0.5, -1}}, 0.75 * std::sqrt(2.0)));
-  check::example(q, "touching that line from outside: cull", TriangleFrustum{{{-1, -0.5, -1}, {-1, 0.5, -1}, {-2, 0, 0}}, f},
-                 clip_gives({}, 0));
-  check::example(q, "touching the corner (1, 1, -1) from outside: cull", TriangleFrustum{{{1, 1, -1}, {2, 2, 0}, {2, 0, 0}}, f},
-                 clip_gives({}, 0));
-  check::example(q, "lying in the near plane: the part in the face", TriangleFrustum{{{0, 0, -1}, {3, 0, -1}, {0, 3, -1}}, f},
+  check::example(q, "touching that line from outside: cull",
+                 TriangleFrustum{{{-1, -0.5, -1}, {-1, 0.5, -1}, {-2, 0, 0}}, f}, clip_gives({}, 0));
+  check::example(q, "touching the corner (1, 1, -1) from outside: cull",
+                 TriangleFrustum{{{1, 1, -1}, {2, 2, 0}, {2, 0, 0}}, f}, clip_gives({}, 0));
+  check::example(q, "lying in the near plane: the part in the face",
+                 TriangleFrustum{{{0, 0, -1}, {3, 0, -1}, {0, 3, -1}}, f},
                  clip_gives({{0, 0, -1}, {1, 0, -1}, {1, 1, -1}, {0, 1, -1}}, 1));
-  check::example(q, "in the near plane, beside the face: cull", TriangleFrustum{{{2, 2, -1}, {5, 2, -1}, {2, 5, -1}}, f},
-                 clip_gives({}, 0));
+  check::example(q, "in the near plane, beside the face: cull",
+                 TriangleFrustum{{{2, 2, -1}, {5, 2, -1}, {2, 5, -1}}, f}, clip_gives({}, 0));
   check::example(q, "a cut point that no double holds, exactly on the bottom plane",
                  TriangleFrustum{{{-2, -2, -1}, {0, 0, -2}, {0, 1, -3}}, f},
                  clip_gives({{-4.0 / 3, -4.0 / 3, -4.0 / 3}, {0, 0, -2}, {0, 1, -3}, {-1.5, -1.25, -1.5}}, 1.375));
@@ -413,12 +434,10 @@ TEST_CASE(LABKIT_STEP(L01S6) ": random exact degenerate cases", "[lab01][step6][
   check::random_cases(query::robust_classify, gen::exact_triangle_plane(), [](const TrianglePlane& in) {
     return judge::classify(in, classify(in.plane, in.triangle), Rules::exact);
   });
-  check::random_cases(query::robust_split_triangle, gen::exact_triangle_plane(), [](const TrianglePlane& in) {
-    return judge::split_triangle(in, run_split(in), Rules::exact);
-  });
-  check::random_cases(query::robust_clip_triangle, gen::exact_triangle_frustum(), [](const TriangleFrustum& in) {
-    return judge::clip_triangle(in, run_clip(in), Rules::exact);
-  });
+  check::random_cases(query::robust_split_triangle, gen::exact_triangle_plane(),
+                      [](const TrianglePlane& in) { return judge::split_triangle(in, run_split(in), Rules::exact); });
+  check::random_cases(query::robust_clip_triangle, gen::exact_triangle_frustum(),
+                      [](const TriangleFrustum& in) { return judge::clip_triangle(in, run_clip(in), Rules::exact); });
   check::random_cases(query::robust_clip_mesh, gen::exact_mesh_frustum(), [](const MeshFrustum& in) {
     return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum), Rules::exact);
   });
@@ -433,8 +452,7 @@ namespace {
 
 const double kNaN = std::nan(""), kInf = HUGE_VAL;
 
-template <class Call>
-void rejects(const std::string& what, const std::string& argument, Call&& call) {
+template <class Call> void rejects(const std::string& what, const std::string& argument, Call&& call) {
   INFO(what);
   CHECK_THROWS_AS(call(), std::invalid_argument);
   CHECK_THROWS_WITH(call(), labkit::check::contains_text(argument));
@@ -450,8 +468,12 @@ TEST_CASE("L01 preconditions: invalid input is named, not answered", "[lab01][co
   rejects("an infinite offset", "plane.offset", [&] { return signed_distance(inf_offset, {0, 0, 0}); });
   rejects("a NaN point", "x", [&] { return signed_distance(kFloor, {kNaN, 0, 0}); });
   rejects("classify, a zero normal", "plane.normal", [&] { return classify(zero, t); });
-  rejects("classify, an infinite vertex", "triangle.v1", [&] { return classify(kFloor, Triangle{{0, 0, 0}, {kInf, 0, 0}, {0, 1, 0}}); });
-  rejects("split, a NaN vertex", "triangle.v2", [&] { return split_triangle(Triangle{{0, 0, 0}, {1, 0, 0}, {0, kNaN, 0}}, kFloor); });
+  rejects("classify, an infinite vertex", "triangle.v1", [&] {
+    return classify(kFloor, Triangle{{0, 0, 0}, {kInf, 0, 0}, {0, 1, 0}});
+  });
+  rejects("split, a NaN vertex", "triangle.v2", [&] {
+    return split_triangle(Triangle{{0, 0, 0}, {1, 0, 0}, {0, kNaN, 0}}, kFloor);
+  });
   rejects("split, a zero normal", "plane.normal", [&] { return split_triangle(t, zero); });
 
   const auto camera_with = [](auto&& change) {
@@ -464,7 +486,9 @@ TEST_CASE("L01 preconditions: invalid input is named, not answered", "[lab01][co
       {"camera.forward", camera_with([](Camera& c) { c.forward = Vec3::Zero(); })},
       {"camera.forward", camera_with([](Camera& c) { c.forward.z() = kInf; })},
       {"camera.up", camera_with([](Camera& c) { c.up = Vec3::Zero(); })},
-      {"camera.up", camera_with([](Camera& c) { c.up = {0, 0, 2}; })},  // parallel to forward
+      {"camera.up", camera_with([](Camera& c) {
+         c.up = {0, 0, 2};
+       })},  // parallel to forward
       {"camera.fov_y", camera_with([](Camera& c) { c.fov_y = 0; })},
       {"camera.fov_y", camera_with([](Camera& c) { c.fov_y = M_PI; })},
       {"camera.fov_y", camera_with([](Camera& c) { c.fov_y = kNaN; })},
@@ -486,7 +510,9 @@ TEST_CASE("L01 preconditions: invalid input is named, not answered", "[lab01][co
   rejects("a row combination with a zero normal", "right r3 - r0", [&] { return frustum_from_matrix(flat); });
 
   Frustum f = integer_pyramid();
-  rejects("clip, a NaN vertex", "triangle.v0", [&] { return clip_triangle(Triangle{{kNaN, 0, 0}, {1, 0, 0}, {0, 1, 0}}, f); });
+  rejects("clip, a NaN vertex", "triangle.v0", [&] {
+    return clip_triangle(Triangle{{kNaN, 0, 0}, {1, 0, 0}, {0, 1, 0}}, f);
+  });
   f.planes[4].normal = Vec3::Zero();
   rejects("clip, a zero normal", "frustum.planes[4] (near)", [&] { return clip_triangle(t, f); });
   f = integer_pyramid();

@@ -11,11 +11,23 @@
 namespace labkit::lab01 {
 
 template <class V> void fields(Camera& c, V&& v) {
-  v("eye", c.eye); v("forward", c.forward); v("up", c.up); v("fov_y", c.fov_y); v("aspect", c.aspect);
-  v("near", c.near); v("far", c.far);
+  v("eye", c.eye);
+  v("forward", c.forward);
+  v("up", c.up);
+  v("fov_y", c.fov_y);
+  v("aspect", c.aspect);
+  v("near", c.near);
+  v("far", c.far);
 }
-template <class V> void fields(ColoredMesh& m, V&& v) { v("mesh", m.mesh); v("colors", m.colors); }
-template <class V> void fields(ClippedMesh& m, V&& v) { v("mesh", m.mesh); v("colors", m.colors); v("source", m.source); }
+template <class V> void fields(ColoredMesh& m, V&& v) {
+  v("mesh", m.mesh);
+  v("colors", m.colors);
+}
+template <class V> void fields(ClippedMesh& m, V&& v) {
+  v("mesh", m.mesh);
+  v("colors", m.colors);
+  v("source", m.source);
+}
 
 using Sides = std::array<Side, 3>;
 using Triangles = std::vector<Triangle>;

@@ -24,7 +24,8 @@ Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::str
 double tilt_of(const Triangle& tri) {
   const double n = tri.normal().norm();
   if (n == 0) return 0;
-  const double longest = std::max({(tri.v1 - tri.v0).squaredNorm(), (tri.v2 - tri.v1).squaredNorm(), (tri.v0 - tri.v2).squaredNorm()});
+  const double longest =
+      std::max({(tri.v1 - tri.v0).squaredNorm(), (tri.v2 - tri.v1).squaredNorm(), (tri.v0 - tri.v2).squaredNorm()});
   return 64 * std::numeric_limits<double>::epsilon() * longest / n;
 }
 // The tolerance of a signed distance of p: tol, plus what that tilt moves it.
@@ -52,22 +53,28 @@ std::string hit_rule(const Segment& s, const Triangle& tri) {
   const std::string at = "t = " + fmt(h.t) + ", point " + fmt(h.point);
   if (s.a == s.b)
     return h.hit ? "a zero-length segment hits when its point is on the closed triangle, and " + fmt(s.a) + " is"
-                 : "a zero-length segment hits only when its point is on the closed triangle, and " + fmt(s.a) + " is not";
+                 : "a zero-length segment hits only when its point is on the closed triangle, and " + fmt(s.a) +
+                       " is not";
   if (c.side_a * c.side_b > 0)
-    return "both ends are strictly on the same side of the triangle's plane (d_a = " + fmt(c.d_a) + ", d_b = " + fmt(c.d_b) +
-           "): the segment never reaches the plane, a miss";
+    return "both ends are strictly on the same side of the triangle's plane (d_a = " + fmt(c.d_a) +
+           ", d_b = " + fmt(c.d_b) + "): the segment never reaches the plane, a miss";
   if (c.side_a == 0 && c.side_b == 0)
-    return h.hit ? "the segment lies in the triangle's plane, and a segment in the plane hits where the two meet: first at " + at
+    return h.hit ? "the segment lies in the triangle's plane, and a segment in the plane hits where the two meet: "
+                   "first at " +
+                       at
                  : "the segment lies in the triangle's plane but stays outside the triangle: a miss";
-  if (h.hit) return "the segment crosses the plane at " + at + ", a point of the closed triangle (its boundary counts): a hit";
+  if (h.hit)
+    return "the segment crosses the plane at " + at + ", a point of the closed triangle (its boundary counts): a hit";
   const Vec3 x = c.point;
   for (int i = 0; i < 3; ++i) {
     const Vec3 inward = tri.normal().cross(tri[(i + 1) % 3] - tri[i]);
     if ((x - tri[i]).dot(inward) < 0)
-      return "the segment crosses the plane at t = " + fmt(c.t) + ", point " + fmt(x) + ", outside the triangle beyond its edge v" +
-             std::to_string(i) + " v" + std::to_string((i + 1) % 3) + ": a miss";
+      return "the segment crosses the plane at t = " + fmt(c.t) + ", point " + fmt(x) +
+             ", outside the triangle beyond its edge v" + std::to_string(i) + " v" + std::to_string((i + 1) % 3) +
+             ": a miss";
   }
-  return "the segment crosses the plane at t = " + fmt(c.t) + ", point " + fmt(x) + ", just outside the triangle: a miss";
+  return "the segment crosses the plane at t = " + fmt(c.t) + ", point " + fmt(x) +
+         ", just outside the triangle: a miss";
 }
 
 std::string yours(bool hit) { return std::string(", but your answer says ") + (hit ? "hit" : "miss"); }
@@ -88,8 +95,8 @@ std::vector<Status> statuses(const Segment& s, const Mesh& mesh, double tol, Rul
 
 // The verdict on "does the segment hit the mesh at all": the exact answer stands when
 // some hit is not in doubt, or when no triangle is in doubt.
-Outcome mesh_yes_no(const std::vector<Status>& all, bool got, Rules rules, const std::string& yes, const std::string& no,
-                    const Segment& s, const Mesh& mesh) {
+Outcome mesh_yes_no(const std::vector<Status>& all, bool got, Rules rules, const std::string& yes,
+                    const std::string& no, const Segment& s, const Mesh& mesh) {
   const judging::AnyHit any = judging::any_hit(all);
   std::string why = "no triangle of the mesh is hit: the segment misses each one" + yours(got);
   for (std::size_t i = 0; i < all.size(); ++i)
@@ -111,21 +118,24 @@ void check_hit(Expect& e, const Segment& s, const Triangle& tri, double t, const
   e.that("point", oracle::within(point, tri, along), fmt(point), "a point of the triangle",
          "the point is " + fmt(oracle::distance(point, tri)) + " from the triangle (tolerance " + fmt(along) + ")");
   std::string beyond;
-  if (t < 0 || t > 1) beyond = ": t = " + fmt(t) + " is beyond an end, where the segment does not reach (both ends on the same side?)";
+  if (t < 0 || t > 1)
+    beyond = ": t = " + fmt(t) + " is beyond an end, where the segment does not reach (both ends on the same side?)";
   e.that("point on segment", oracle::within(point, s, tol), fmt(point), "a point of the segment",
-         "the point must be on the segment, a + t (b - a) with 0 <= t <= 1, and it is " + fmt(oracle::distance(point, s)) +
-             " from it (tolerance " + fmt(tol) + ")" + beyond);
+         "the point must be on the segment, a + t (b - a) with 0 <= t <= 1, and it is " +
+             fmt(oracle::distance(point, s)) + " from it (tolerance " + fmt(tol) + ")" + beyond);
   e.that("t", oracle::parameter_reproduces(s, t, point, tol), fmt(t), "a + t (b - a) = point",
          "a + t (b - a) is " + fmt((s.point(t) - point).norm()) + " away from the point");
   e.that("barycentric", std::abs(weights.sum() - 1) <= kRelative && oracle::weights_reproduce(tri, weights, point, tol),
          fmt(weights), "weights summing to 1 that reproduce the point",
-         "w0 v0 + w1 v1 + w2 v2 is " + fmt((weights[0] * tri.v0 + weights[1] * tri.v1 + weights[2] * tri.v2 - point).norm()) +
+         "w0 v0 + w1 v1 + w2 v2 is " +
+             fmt((weights[0] * tri.v0 + weights[1] * tri.v1 + weights[2] * tri.v2 - point).norm()) +
              " away from the point, and the weights sum to " + fmt(weights.sum()));
   const Vec3 n = oracle::unit_normal(tri);
   e.that("normal", (normal - n).norm() <= kRelative + tilt_of(tri), fmt(normal), fmt(n),
-         (normal + n).norm() <= 1e-6 ? "the normal is the triangle's unit normal as wound, (v1 - v0) x (v2 - v0) / |...|, "
-                                       "whichever side a comes from: yours is flipped"
-                                     : "the normal must be the triangle's unit normal as wound, (v1 - v0) x (v2 - v0) / |...|");
+         (normal + n).norm() <= 1e-6
+             ? "the normal is the triangle's unit normal as wound, (v1 - v0) x (v2 - v0) / |...|, "
+               "whichever side a comes from: yours is flipped"
+             : "the normal must be the triangle's unit normal as wound, (v1 - v0) x (v2 - v0) / |...|");
 }
 
 Triangle mesh_triangle(const Mesh& mesh, int index) { return mesh.triangle(std::size_t(index)); }
@@ -133,13 +143,15 @@ bool valid_index(const Mesh& mesh, int index) { return index >= 0 && std::size_t
 
 std::string describe_hits(const std::vector<oracle::SegmentHit>& hits) {
   std::string s;
-  for (const auto& h : hits) s += (s.empty() ? "" : ", ") + ("triangle " + std::to_string(h.triangle) + " at t = " + fmt(h.t));
+  for (const auto& h : hits)
+    s += (s.empty() ? "" : ", ") + ("triangle " + std::to_string(h.triangle) + " at t = " + fmt(h.t));
   return s.empty() ? "no hit" : s;
 }
 
 std::string describe_hits(const std::vector<MeshHit>& hits) {
   std::string s;
-  for (const auto& h : hits) s += (s.empty() ? "" : ", ") + ("triangle " + std::to_string(h.triangle) + " at t = " + fmt(h.t));
+  for (const auto& h : hits)
+    s += (s.empty() ? "" : ", ") + ("triangle " + std::to_string(h.triangle) + " at t = " + fmt(h.t));
   return s.empty() ? "no hit" : s;
 }
 
@@ -152,8 +164,9 @@ Outcome segment_plane(const SegmentTrianglePair& in, const PlaneCrossing& got, R
   Expect e;
   const auto distance = [&](const std::string& name, const Vec3& p, double mine, double d) {
     const double d_tol = distance_tolerance(p, in.triangle, tol);
-    std::string why = name + " must be the signed distance of " + name.substr(2) + " to the plane, along the unit normal: " +
-                      fmt(d) + ", not " + fmt(mine) + " (tolerance " + fmt(d_tol) + ")";
+    std::string why = name + " must be the signed distance of " + name.substr(2) +
+                      " to the plane, along the unit normal: " + fmt(d) + ", not " + fmt(mine) + " (tolerance " +
+                      fmt(d_tol) + ")";
     if (d != 0 && std::abs(mine - n_length * d) <= 1e-6 * std::abs(n_length * d))
       why += "; " + fmt(mine) + " is |n| = " + fmt(n_length) + " times it: is n unit?";
     else if (d != 0 && std::abs(mine + d) <= d_tol)
@@ -162,26 +175,35 @@ Outcome segment_plane(const SegmentTrianglePair& in, const PlaneCrossing& got, R
   };
   distance("d_a", in.segment.a, got.d_a, exact.d_a);
   distance("d_b", in.segment.b, got.d_b, exact.d_b);
-  const auto crosses = [](const SegmentTrianglePair& p) { return oracle::segment_crosses_plane(p.segment, p.triangle); };
+  const auto crosses = [](const SegmentTrianglePair& p) {
+    return oracle::segment_crosses_plane(p.segment, p.triangle);
+  };
   const std::string sides = "(d_a = " + fmt(exact.d_a) + ", d_b = " + fmt(exact.d_b) + ")";
   const std::string rule =
-      exact.crosses ? "the ends are on opposite sides of the plane, or one is on it " + sides + ": the segment crosses it in one point"
+      exact.crosses ? "the ends are on opposite sides of the plane, or one is on it " + sides +
+                          ": the segment crosses it in one point"
       : exact.side_a == 0 && exact.side_b == 0 && n_length > 0
           ? "both ends are on the plane " + sides + ": the segment lies in it, no single crossing point"
-          : n_length == 0 ? "a zero-area triangle has no plane to cross"
-                          : "both ends are strictly on the same side of the plane " + sides + ": no crossing";
-  const Outcome decision = yes_no(in, got.crosses, rules, crosses, "crosses", "does not cross",
-                                  rule + std::string(", but your answer says it ") + (got.crosses ? "crosses" : "does not"));
-  if (decision.verdict == Outcome::Verdict::fail) return fail("crosses = " + describe(exact.crosses), "crosses = " + describe(got.crosses), decision.why);
+      : n_length == 0 ? "a zero-area triangle has no plane to cross"
+                      : "both ends are strictly on the same side of the plane " + sides + ": no crossing";
+  const Outcome decision =
+      yes_no(in, got.crosses, rules, crosses, "crosses", "does not cross",
+             rule + std::string(", but your answer says it ") + (got.crosses ? "crosses" : "does not"));
+  if (decision.verdict == Outcome::Verdict::fail)
+    return fail("crosses = " + describe(exact.crosses), "crosses = " + describe(got.crosses), decision.why);
   if (exact.crosses && got.crosses) {
     const double t_tol = t_tolerance(in.segment, in.triangle, tol);
-    std::string why = "the crossing is at t = d_a / (d_a - d_b) = " + fmt(exact.t) + ", not " + fmt(got.t) + " (tolerance " + fmt(t_tol) + ")";
-    if (std::abs(got.t + exact.t) <= t_tol) why += "; yours has the opposite sign: is the denominator d_b - d_a?";
-    else if (std::abs(got.t - (1 - exact.t)) <= t_tol) why += "; yours is measured from b: t runs from a (t = 0) to b";
+    std::string why = "the crossing is at t = d_a / (d_a - d_b) = " + fmt(exact.t) + ", not " + fmt(got.t) +
+                      " (tolerance " + fmt(t_tol) + ")";
+    if (std::abs(got.t + exact.t) <= t_tol)
+      why += "; yours has the opposite sign: is the denominator d_b - d_a?";
+    else if (std::abs(got.t - (1 - exact.t)) <= t_tol)
+      why += "; yours is measured from b: t runs from a (t = 0) to b";
     e.that("t", std::abs(got.t - exact.t) <= t_tol, fmt(got.t), fmt(exact.t), why);
     e.that("point", oracle::parameter_reproduces(in.segment, got.t, got.point, tol), fmt(got.point),
-           "a + t (b - a) with your t", "the point must be a + t (b - a), and it is " + fmt((in.segment.point(got.t) - got.point).norm()) +
-                                            " away from it (tolerance " + fmt(tol) + ")");
+           "a + t (b - a) with your t",
+           "the point must be a + t (b - a), and it is " + fmt((in.segment.point(got.t) - got.point).norm()) +
+               " away from it (tolerance " + fmt(tol) + ")");
   }
   const Outcome o = e.outcome();
   return o.verdict == Outcome::Verdict::fail ? o : decision;
@@ -191,7 +213,8 @@ Outcome point_in_triangle(const PointTriangle& in, bool got, Rules rules) {
   const auto inside = [](const PointTriangle& p) { return oracle::point_in_triangle_projected(p.x, p.triangle); };
   const Triangle& t = in.triangle;
   std::string rule = "x is in the closed triangle (a point on an edge or a vertex counts as inside)";
-  if (oracle::unit_normal(t) == Vec3::Zero()) rule = "a zero-area triangle contains no point";
+  if (oracle::unit_normal(t) == Vec3::Zero())
+    rule = "a zero-area triangle contains no point";
   else if (!inside(in))
     for (int i = 0; i < 3; ++i)
       if ((in.x - t[i]).dot(t.normal().cross(t[(i + 1) % 3] - t[i])) < 0) {
@@ -212,7 +235,8 @@ Outcome barycentric(const PointTriangle& in, const Barycentric& got) {
   }
   const Vec3 m = n.cwiseAbs();
   Expect e;
-  const bool axis_ok = got.dropped_axis >= 0 && got.dropped_axis <= 2 && m[got.dropped_axis] >= m.maxCoeff() - kRelative;
+  const bool axis_ok =
+      got.dropped_axis >= 0 && got.dropped_axis <= 2 && m[got.dropped_axis] >= m.maxCoeff() - kRelative;
   int best = 0;
   m.maxCoeff(&best);
   e.that("dropped_axis", axis_ok, describe(got.dropped_axis), describe(best),
@@ -220,14 +244,18 @@ Outcome barycentric(const PointTriangle& in, const Barycentric& got) {
   const double tol = tolerance_of(in);
   const Triangle& t = in.triangle;
   std::string hint;
-  if (oracle::alpha_beta_reproduce(t, got.alpha, -got.beta, in.x, tol)) hint = "; with -beta it would: the sign of beta is flipped";
-  if (oracle::alpha_beta_reproduce(t, -got.alpha, got.beta, in.x, tol)) hint = "; with -alpha it would: the sign of alpha is flipped";
-  if (oracle::alpha_beta_reproduce(t, got.beta, got.alpha, in.x, tol)) hint = "; swapped, they would: alpha weighs e1 = v1 - v0";
+  if (oracle::alpha_beta_reproduce(t, got.alpha, -got.beta, in.x, tol))
+    hint = "; with -beta it would: the sign of beta is flipped";
+  if (oracle::alpha_beta_reproduce(t, -got.alpha, got.beta, in.x, tol))
+    hint = "; with -alpha it would: the sign of alpha is flipped";
+  if (oracle::alpha_beta_reproduce(t, got.beta, got.alpha, in.x, tol))
+    hint = "; swapped, they would: alpha weighs e1 = v1 - v0";
   e.that("alpha, beta", oracle::alpha_beta_reproduce(in.triangle, got.alpha, got.beta, in.x, tol),
          fmt(got.alpha) + ", " + fmt(got.beta), "v0 + alpha (v1 - v0) + beta (v2 - v0) = x",
          "alpha and beta must describe x as v0 + alpha e1 + beta e2, and yours miss it by " +
              fmt((in.triangle.v0 + got.alpha * (in.triangle.v1 - in.triangle.v0) +
-                  got.beta * (in.triangle.v2 - in.triangle.v0) - in.x).norm()) +
+                  got.beta * (in.triangle.v2 - in.triangle.v0) - in.x)
+                     .norm()) +
              " (tolerance " + fmt(tol) + ")" + hint);
   return e.outcome();
 }
@@ -239,8 +267,8 @@ Outcome test_segment_triangle(const SegmentTrianglePair& in, bool got, Rules rul
 
 Outcome find_segment_triangle(const SegmentTrianglePair& in, const SegmentTriangleHit& got, Rules rules) {
   const bool doubt = unstable(in.segment, in.triangle, tolerance_of(in), rules);
-  const Outcome decision =
-      verdict(got.hit, triangle_hit(in), doubt, rules, "hit", "miss", hit_rule(in.segment, in.triangle) + yours(got.hit));
+  const Outcome decision = verdict(got.hit, triangle_hit(in), doubt, rules, "hit", "miss",
+                                   hit_rule(in.segment, in.triangle) + yours(got.hit));
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !triangle_hit(in)) return decision;
   const double tol = tolerance_of(in);
   const oracle::SegmentHit exact = oracle::segment_triangle(in.segment, in.triangle);

@@ -11,7 +11,8 @@
 namespace labkit::lab02::judge {
 
 Outcome any_hit(const SegmentMeshPair& in, bool got, Rules rules) {
-  return mesh_yes_no(statuses(in.segment, in.mesh, tolerance_of(in), rules), got, rules, "hit", "miss", in.segment, in.mesh);
+  return mesh_yes_no(statuses(in.segment, in.mesh, tolerance_of(in), rules), got, rules, "hit", "miss", in.segment,
+                     in.mesh);
 }
 
 Outcome first_hit(const SegmentMeshPair& in, const MeshHit& got, Rules rules) {
@@ -68,11 +69,13 @@ Outcome all_hits(const SegmentMeshPair& in, const std::vector<MeshHit>& got, Rul
     if (o.verdict == Outcome::Verdict::fail)
       return fail(o.expected, o.got, "triangle " + std::to_string(h.triangle) + ": " + o.why);
     if (k + 1 < got.size() && valid_index(in.mesh, got[k + 1].triangle)) {
-      const double slack = t_tolerance(in.segment, tri, tol) +
-                           t_tolerance(in.segment, mesh_triangle(in.mesh, got[k + 1].triangle), tol);
+      const double slack =
+          t_tolerance(in.segment, tri, tol) + t_tolerance(in.segment, mesh_triangle(in.mesh, got[k + 1].triangle), tol);
       if (got[k + 1].t + slack < h.t)
-        return fail(expected, answer, "all_hits must be sorted by t: triangle " + std::to_string(got[k + 1].triangle) + " (t = " +
-                                          fmt(got[k + 1].t) + ") comes before triangle " + std::to_string(h.triangle) + " (t = " + fmt(h.t) + ")");
+        return fail(expected, answer,
+                    "all_hits must be sorted by t: triangle " + std::to_string(got[k + 1].triangle) +
+                        " (t = " + fmt(got[k + 1].t) + ") comes before triangle " + std::to_string(h.triangle) +
+                        " (t = " + fmt(h.t) + ")");
     }
   }
   for (const oracle::SegmentHit& h : hits) {
@@ -98,11 +101,13 @@ Outcome first_hit_moving(const MovingMesh& in, const MeshHit& got) {
   const Segment local = oracle::moving_local_path(in.segment, in.m0, in.m1);
   std::vector<Status> all = statuses(local, in.mesh, tol, Rules::random);
   const bool expected = oracle::moving_mesh_hit_any(in.segment, in.mesh, in.m0, in.m1);
-  if (!expected) for (Status& st : all) st.hit = false;  // the rounded path must not overrule the exact one
+  if (!expected)
+    for (Status& st : all) st.hit = false;  // the rounded path must not overrule the exact one
   const Outcome decision = mesh_yes_no(all, got.hit, Rules::random, "a hit", "no hit", local, in.mesh);
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
   const std::vector<oracle::SegmentHit> hits = oracle::moving_mesh_hits(in.segment, in.mesh, in.m0, in.m1);
-  std::string problem = oracle::check_moving_hit(in.segment, in.mesh, in.m0, in.m1, got.triangle, got.t, got.point, tol);
+  std::string problem =
+      oracle::check_moving_hit(in.segment, in.mesh, in.m0, in.m1, got.triangle, got.t, got.point, tol);
   if (!problem.empty() && valid_index(in.mesh, got.triangle)) {
     // The header's rule for points, in the mesh's frame: within tol of the path, and
     // within tol + |path| (t's tolerance) of the triangle (a needle's plane, or a path
@@ -110,13 +115,17 @@ Outcome first_hit_moving(const MovingMesh& in, const MeshHit& got) {
     const Triangle tri = mesh_triangle(in.mesh, got.triangle);
     const Vec3 p = in.m1.inverse() * got.point;
     const double along = tol + (local.b - local.a).norm() * t_tolerance(local, tri, tol);
-    if (oracle::within(p, tri, along) && oracle::within(p, local, tol) && oracle::parameter_reproduces(local, got.t, p, 2 * tol))
+    if (oracle::within(p, tri, along) && oracle::within(p, local, tol) &&
+        oracle::parameter_reproduces(local, got.t, p, 2 * tol))
       problem.clear();
   }
   if (!problem.empty())
-    return fail(describe_hits(hits), "triangle " + std::to_string(got.triangle) + " at t = " + fmt(got.t) + ", point " + fmt(got.point),
-                "the point must be the contact on the mesh at its end pose (m1 times the point found in the mesh's frame, "
-                "on the path m0^-1 a -> m1^-1 b there): " + problem);
+    return fail(
+        describe_hits(hits),
+        "triangle " + std::to_string(got.triangle) + " at t = " + fmt(got.t) + ", point " + fmt(got.point),
+        "the point must be the contact on the mesh at its end pose (m1 times the point found in the mesh's frame, "
+        "on the path m0^-1 a -> m1^-1 b there): " +
+            problem);
   // In the mesh's frame the path is m0^-1 a -> m1^-1 b; t is compared there, against
   // the first hit whose existence is not in doubt.
   for (const oracle::SegmentHit& h : hits) {
@@ -125,13 +134,14 @@ Outcome first_hit_moving(const MovingMesh& in, const MeshHit& got) {
                          t_tolerance(local, mesh_triangle(in.mesh, got.triangle), tol);
     if (got.t > h.t + slack)
       return fail(describe_hits(hits), "triangle " + std::to_string(got.triangle) + " at t = " + fmt(got.t),
-                  "first_hit is the hit with the smallest t: triangle " + std::to_string(h.triangle) + " at t = " + fmt(h.t) +
-               " comes before yours");
+                  "first_hit is the hit with the smallest t: triangle " + std::to_string(h.triangle) +
+                      " at t = " + fmt(h.t) + " comes before yours");
     break;
   }
   const Vec3 n = in.m1.linear() * oracle::unit_normal(mesh_triangle(in.mesh, got.triangle));
   if ((got.normal - n).norm() > 1e-8)
-    return fail(fmt(n), fmt(got.normal), "the normal must be the triangle's unit normal as wound, turned by m1 (the mesh at its end pose)");
+    return fail(fmt(n), fmt(got.normal),
+                "the normal must be the triangle's unit normal as wound, turned by m1 (the mesh at its end pose)");
   return decision;
 }
 
@@ -146,15 +156,17 @@ std::string contact_rule(const MovingMeshes& in, const oracle::MeshContact& c) {
   if (!c.hit) return "the meshes never touch during the frame, 0 <= t <= 1" + seen;
   const std::string at = " at t = " + fmt(c.t) + ", point " + fmt(c.point);
   if (c.kind == 0)
-    return "the meshes first touch" + at + ": vertex " + std::to_string(c.feature_a) + " of A, on its path p -> p + d, meets face " +
-           std::to_string(c.feature_b) + " of B" + seen;
+    return "the meshes first touch" + at + ": vertex " + std::to_string(c.feature_a) +
+           " of A, on its path p -> p + d, meets face " + std::to_string(c.feature_b) + " of B" + seen;
   if (c.kind == 1)
     return "the meshes first touch" + at + ": vertex " + std::to_string(c.feature_b) +
-           " of B, on its path q -> q - d (the other delta matrix), meets face " + std::to_string(c.feature_a) + " of A" + seen;
-  const auto ea = oracle::mesh_edges(in.a)[std::size_t(c.feature_a)], eb = oracle::mesh_edges(in.b)[std::size_t(c.feature_b)];
+           " of B, on its path q -> q - d (the other delta matrix), meets face " + std::to_string(c.feature_a) +
+           " of A" + seen;
+  const auto ea = oracle::mesh_edges(in.a)[std::size_t(c.feature_a)],
+             eb = oracle::mesh_edges(in.b)[std::size_t(c.feature_b)];
   return "the meshes first touch" + at + ": edge-edge, edge (" + std::to_string(ea[0]) + ", " + std::to_string(ea[1]) +
-         ") of A, sweeping its quad (two triangles), meets edge (" + std::to_string(eb[0]) + ", " + std::to_string(eb[1]) +
-         ") of B" + seen;
+         ") of A, sweeping its quad (two triangles), meets edge (" + std::to_string(eb[0]) + ", " +
+         std::to_string(eb[1]) + ") of B" + seen;
 }
 
 }  // namespace
@@ -172,9 +184,11 @@ Outcome first_contact_moving_meshes(const MovingMeshes& in, const MeshContact& g
     if (in.velocity_b == Vec3::Zero()) return std::string();
     const oracle::MeshContact absolute = oracle::first_contact_translating(in.a, in.velocity_a, in.b, Vec3::Zero());
     if (hit != absolute.hit || (hit && std::abs(t - absolute.t) > 1e-6)) return std::string();
-    return std::string("; yours is what A's own motion va gives against a still B: B moves too, so use the relative motion va - vb");
+    return std::string(
+        "; yours is what A's own motion va gives against a still B: B moves too, so use the relative motion va - vb");
   };
-  Outcome decision = verdict(got.hit, exact.hit, doubt, rules, "contact", "no contact", contact_rule(in, exact) + yours(got.hit));
+  Outcome decision =
+      verdict(got.hit, exact.hit, doubt, rules, "contact", "no contact", contact_rule(in, exact) + yours(got.hit));
   if (decision.verdict == Outcome::Verdict::fail) decision.why += telltale(got.hit, got.t);
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !exact.hit) return decision;
   // t, certified: no contact before t - dt, contact by t + dt. dt = tol over the closing
@@ -193,24 +207,26 @@ Outcome first_contact_moving_meshes(const MovingMeshes& in, const MeshContact& g
   if (oracle::contact_by(in.a, in.velocity_a, in.b, in.velocity_b, got.t - dt)) {
     if (in_doubt(got.t - dt)) return ambiguous();
     return fail(exact_t, got_t,
-                contact_rule(in, exact) + ": the meshes already touch before your t = " + fmt(got.t) +
-                    " (tolerance " + fmt(dt) + "): report the first contact, the smallest t of all three families" +
+                contact_rule(in, exact) + ": the meshes already touch before your t = " + fmt(got.t) + " (tolerance " +
+                    fmt(dt) + "): report the first contact, the smallest t of all three families" +
                     telltale(true, got.t));
   }
   if (!oracle::contact_by(in.a, in.velocity_a, in.b, in.velocity_b, got.t + dt)) {
     if (in_doubt(got.t + dt)) return ambiguous();
     return fail(exact_t, got_t,
-                contact_rule(in, exact) + ": the meshes do not touch yet at your t = " + fmt(got.t) + " (tolerance " + fmt(dt) +
-                    ")" + telltale(true, got.t));
+                contact_rule(in, exact) + ": the meshes do not touch yet at your t = " + fmt(got.t) + " (tolerance " +
+                    fmt(dt) + ")" + telltale(true, got.t));
   }
   const double reach = 2 * tol + d.norm() * std::min(dt, 1.0);
   const bool on_a = oracle::within_translated(got.point, in.a, got.t * in.velocity_a, reach);
   const bool on_b = oracle::within_translated(got.point, in.b, got.t * in.velocity_b, reach);
   if (!on_a || !on_b)
-    return fail(exact_t, got_t,
-                std::string("the point must be where the meshes touch, in the world at your t: on A moved by t va and on B "
-                            "moved by t vb (within ") + fmt(reach) + "), and yours is off " + (on_a ? "B" : "A") +
-                    " (a point found in B's frame moves on by t vb; in A's frame by t va)");
+    return fail(
+        exact_t, got_t,
+        std::string("the point must be where the meshes touch, in the world at your t: on A moved by t va and on B "
+                    "moved by t vb (within ") +
+            fmt(reach) + "), and yours is off " + (on_a ? "B" : "A") +
+            " (a point found in B's frame moves on by t vb; in A's frame by t va)");
   return decision;
 }
 

@@ -56,8 +56,8 @@ bool hit_or_ambiguous(const Segment& s, const Triangle& tri, double tol, Rules r
 std::vector<Status> statuses(const Segment& s, const Mesh& mesh, double tol, Rules rules);
 // The verdict on "does the segment hit the mesh at all" (judging::AnyHit), with the rule
 // of the triangle that decides it.
-Outcome mesh_yes_no(const std::vector<Status>& all, bool got, Rules rules, const std::string& yes, const std::string& no,
-                    const Segment& s, const Mesh& mesh);
+Outcome mesh_yes_no(const std::vector<Status>& all, bool got, Rules rules, const std::string& yes,
+                    const std::string& no, const Segment& s, const Mesh& mesh);
 
 // The checks every reported hit on a triangle must pass (the header's tolerances).
 void check_hit(Expect& e, const Segment& s, const Triangle& tri, double t, const Vec3& point, const Vec3& weights,

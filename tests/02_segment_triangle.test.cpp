@@ -19,10 +19,12 @@ using judge::Rules;
 // What keeps each query's calls well defined, in the header's words: a crash in that
 // query says it first (check::rule).
 const bool kRules = [] {
-  check::rule(query::barycentric, "a zero-area triangle has no weights: its 2D denominator is 0, so answer "
-                             "dropped_axis = -1 before dividing");
-  check::rule(query::point_in_triangle_barycentric, "a zero-area triangle contains no point: answer false before "
-                                               "dividing by its zero denominator");
+  check::rule(query::barycentric,
+              "a zero-area triangle has no weights: its 2D denominator is 0, so answer "
+              "dropped_axis = -1 before dividing");
+  check::rule(query::point_in_triangle_barycentric,
+              "a zero-area triangle contains no point: answer false before "
+              "dividing by its zero denominator");
   return true;
 }();
 
@@ -54,19 +56,22 @@ Outcome run_test(const SegmentTrianglePair& in) {
 
 // The examples' checks, each naming the rule of the header it checks.
 void expect_distance(Expect& e, const std::string& name, double got, double expected, double n_length) {
-  std::string why = name + " must be the signed distance of " + name.substr(2) + " to the plane, along the unit normal: " + fmt(expected);
+  std::string why = name + " must be the signed distance of " + name.substr(2) +
+                    " to the plane, along the unit normal: " + fmt(expected);
   if (expected != 0 && std::abs(got - n_length * expected) <= 1e-9 * std::abs(got))
     why += "; " + fmt(got) + " is |n| = " + fmt(n_length) + " times it: is n unit?";
   e.that(name, std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected), why);
 }
 void expect_t(Expect& e, double got, double expected) {
-  std::string why = "the crossing is at t = d_a / (d_a - d_b) = " + fmt(expected) + ", the fraction of the way from a to b";
+  std::string why =
+      "the crossing is at t = d_a / (d_a - d_b) = " + fmt(expected) + ", the fraction of the way from a to b";
   if (std::abs(got + expected) <= 1e-12) why += "; yours has the opposite sign: is the denominator d_b - d_a?";
   e.that("t", std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected), why);
 }
 void expect_normal(Expect& e, const Vec3& got, const Vec3& expected) {
-  e.that("normal", (got - expected).norm() <= 1e-12, fmt(got), fmt(expected),
-         "the normal is the triangle's unit normal as wound, (v1 - v0) x (v2 - v0) / |...|, whichever side a comes from");
+  e.that(
+      "normal", (got - expected).norm() <= 1e-12, fmt(got), fmt(expected),
+      "the normal is the triangle's unit normal as wound, (v1 - v0) x (v2 - v0) / |...|, whichever side a comes from");
 }
 
 }  // namespace
@@ -76,35 +81,35 @@ void expect_normal(Expect& e, const Vec3& got, const Vec3& expected) {
 TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   check::example(query::segment_plane, "a above, b below: crosses at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
-                   const PlaneCrossing got = segment_plane(in.segment, in.triangle);
-                   Expect e;
-                   expect_distance(e, "d_a", got.d_a, 3, 16);
-                   expect_distance(e, "d_b", got.d_b, -1, 16);
-                   e.equal("crosses", got.crosses, true);
-                   expect_t(e, got.t, 0.75);
-                   e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
-                   return e.outcome();
-                 });
+    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
+    Expect e;
+    expect_distance(e, "d_a", got.d_a, 3, 16);
+    expect_distance(e, "d_b", got.d_b, -1, 16);
+    e.equal("crosses", got.crosses, true);
+    expect_t(e, got.t, 0.75);
+    e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
+    return e.outcome();
+  });
   check::example(query::segment_plane, "both ends above: no crossing", pair({1, 1, 2}, {3, 3, 5}),
                  [](const SegmentTrianglePair& in) {
-                   const PlaneCrossing got = segment_plane(in.segment, in.triangle);
-                   Expect e;
-                   expect_distance(e, "d_a", got.d_a, 2, 16);
-                   expect_distance(e, "d_b", got.d_b, 5, 16);
-                   e.equal("crosses", got.crosses, false);
-                   return e.outcome();
-                 });
+    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
+    Expect e;
+    expect_distance(e, "d_a", got.d_a, 2, 16);
+    expect_distance(e, "d_b", got.d_b, 5, 16);
+    e.equal("crosses", got.crosses, false);
+    return e.outcome();
+  });
   check::example(query::segment_plane, "a on the plane: crosses at t = 0", pair({1, 1, 0}, {2, 2, 2}),
                  [](const SegmentTrianglePair& in) {
-                   const PlaneCrossing got = segment_plane(in.segment, in.triangle);
-                   Expect e;
-                   e.equal("crosses", got.crosses, true);
-                   expect_t(e, got.t, 0);
-                   e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
-                   return e.outcome();
-                 });
-  check::example(query::segment_plane, "the normal follows the winding", pair({1, 1, 3}, {1, 1, -1}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}),
-                 [](const SegmentTrianglePair& in) {
+    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
+    Expect e;
+    e.equal("crosses", got.crosses, true);
+    expect_t(e, got.t, 0);
+    e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
+    return e.outcome();
+  });
+  check::example(query::segment_plane, "the normal follows the winding",
+                 pair({1, 1, 3}, {1, 1, -1}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}), [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
                    Expect e;
                    expect_distance(e, "d_a", got.d_a, -3, 16);
@@ -129,11 +134,14 @@ TEST_CASE(LABKIT_STEP(L02S2) ": worked examples", "[lab02][step2]") {
     };
   };
   check::example(query::point_in_triangle_edges, "inside", PointTriangle{{1, 1, 0}, kFloor}, expect(true));
-  check::example(query::point_in_triangle_edges, "beyond the long edge", PointTriangle{{3, 3, 0}, kFloor}, expect(false));
+  check::example(query::point_in_triangle_edges, "beyond the long edge", PointTriangle{{3, 3, 0}, kFloor},
+                 expect(false));
   check::example(query::point_in_triangle_edges, "left of v0", PointTriangle{{-1, 1, 0}, kFloor}, expect(false));
-  check::example(query::point_in_triangle_edges, "on the long edge counts", PointTriangle{{2, 2, 0}, kFloor}, expect(true));
+  check::example(query::point_in_triangle_edges, "on the long edge counts", PointTriangle{{2, 2, 0}, kFloor},
+                 expect(true));
   check::example(query::point_in_triangle_edges, "a vertex counts", PointTriangle{{0, 0, 0}, kFloor}, expect(true));
-  check::example(query::point_in_triangle_edges, "clockwise triangle", PointTriangle{{1, 1, 0}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}}, expect(true));
+  check::example(query::point_in_triangle_edges, "clockwise triangle",
+                 PointTriangle{{1, 1, 0}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}}, expect(true));
   check::example(query::point_in_triangle_edges, "zero-area triangle", PointTriangle{{1, 1, 1}, kFlat}, expect(false));
 }
 
@@ -154,7 +162,8 @@ TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[la
       const auto weight = [&e](const std::string& name, double mine, double exact) {
         std::string why = "x = v0 + alpha e1 + beta e2 needs " + name + " = " + fmt(exact);
         if (exact != 0 && std::abs(mine + exact) <= 1e-12)
-          why += "; yours has the wrong sign: " + name + " = " + (name == "beta" ? "(e1 x p)" : "(p x e2)") + " / (e1 x e2)";
+          why += "; yours has the wrong sign: " + name + " = " + (name == "beta" ? "(e1 x p)" : "(p x e2)") +
+                 " / (e1 x e2)";
         e.that(name, std::abs(mine - exact) <= 1e-12, fmt(mine), fmt(exact), why);
       };
       weight("alpha", got.alpha, alpha);
@@ -162,11 +171,13 @@ TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[la
       return e.outcome();
     };
   };
-  check::example(query::barycentric, "the floor triangle: drop z", PointTriangle{{1, 2, 0}, kFloor}, expect(2, 0.25, 0.5));
-  check::example(query::barycentric, "a tilted triangle: drop x", PointTriangle{{0.25, 0.5, 1.5}, {{1, 0, 0}, {0, 2, 0}, {0, 0, 3}}},
-                 expect(0, 0.25, 0.5));
+  check::example(query::barycentric, "the floor triangle: drop z", PointTriangle{{1, 2, 0}, kFloor},
+                 expect(2, 0.25, 0.5));
+  check::example(query::barycentric, "a tilted triangle: drop x",
+                 PointTriangle{{0.25, 0.5, 1.5}, {{1, 0, 0}, {0, 2, 0}, {0, 0, 3}}}, expect(0, 0.25, 0.5));
   check::example(query::barycentric, "x = v2 gives beta = 1", PointTriangle{{0, 4, 0}, kFloor}, expect(2, 0, 1));
-  check::example(query::barycentric, "zero area: no axis", PointTriangle{{1, 1, 1}, kFlat}, [](const PointTriangle& in) {
+  check::example(query::barycentric, "zero area: no axis", PointTriangle{{1, 1, 1}, kFlat},
+                 [](const PointTriangle& in) {
     Expect e;
     e.equal("dropped_axis", barycentric(in.x, in.triangle).dropped_axis, -1);
     return e.outcome();
@@ -178,15 +189,16 @@ TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[la
     };
   };
   check::example(query::point_in_triangle_barycentric, "inside", PointTriangle{{1, 1, 0}, kFloor}, inside(true));
-  check::example(query::point_in_triangle_barycentric, "alpha + beta > 1", PointTriangle{{3, 3, 0}, kFloor}, inside(false));
-  check::example(query::point_in_triangle_barycentric, "on the long edge: alpha + beta = 1", PointTriangle{{1, 3, 0}, kFloor}, inside(true));
+  check::example(query::point_in_triangle_barycentric, "alpha + beta > 1", PointTriangle{{3, 3, 0}, kFloor},
+                 inside(false));
+  check::example(query::point_in_triangle_barycentric, "on the long edge: alpha + beta = 1",
+                 PointTriangle{{1, 3, 0}, kFloor}, inside(true));
   check::example(query::point_in_triangle_barycentric, "beta < 0", PointTriangle{{1, -1, 0}, kFloor}, inside(false));
 }
 
 TEST_CASE(LABKIT_STEP(L02S3) ": random cases", "[lab02][step3][oracle]") {
-  check::random_cases(query::barycentric, gen::point_triangle(), [](const PointTriangle& in) {
-    return judge::barycentric(in, barycentric(in.x, in.triangle));
-  });
+  check::random_cases(query::barycentric, gen::point_triangle(),
+                      [](const PointTriangle& in) { return judge::barycentric(in, barycentric(in.x, in.triangle)); });
   check::random_cases(query::point_in_triangle_barycentric, gen::point_triangle(), [](const PointTriangle& in) {
     return judge::point_in_triangle(in, point_in_triangle_barycentric(in.x, in.triangle));
   });
@@ -197,58 +209,61 @@ TEST_CASE(LABKIT_STEP(L02S3) ": random cases", "[lab02][step3][oracle]") {
 TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
   check::example(query::find_segment_triangle, "through the inside at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
-                   const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
-                   Expect e;
-                   e.equal("hit", got.hit, true);
-                   e.near("t", got.t, 0.75, 1e-12);
-                   e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
-                   e.near("barycentric", got.barycentric, Vec3(0.5, 0.25, 0.25), 1e-12);
-                   expect_normal(e, got.normal, Vec3(0, 0, 1));
-                   return e.outcome();
-                 });
+    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
+    Expect e;
+    e.equal("hit", got.hit, true);
+    e.near("t", got.t, 0.75, 1e-12);
+    e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
+    e.near("barycentric", got.barycentric, Vec3(0.5, 0.25, 0.25), 1e-12);
+    expect_normal(e, got.normal, Vec3(0, 0, 1));
+    return e.outcome();
+  });
   check::example(query::find_segment_triangle, "from below: same normal, t = 1/4", pair({1, 1, -1}, {1, 1, 3}),
                  [](const SegmentTrianglePair& in) {
-                   const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
-                   Expect e;
-                   e.equal("hit", got.hit, true);
-                   expect_t(e, got.t, 0.25);
-                   expect_normal(e, got.normal, Vec3(0, 0, 1));
-                   return e.outcome();
-                 });
+    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
+    Expect e;
+    e.equal("hit", got.hit, true);
+    expect_t(e, got.t, 0.25);
+    expect_normal(e, got.normal, Vec3(0, 0, 1));
+    return e.outcome();
+  });
   const auto miss = [](const SegmentTrianglePair& in) {
     Expect e;
     e.equal("hit", find_segment_triangle(in.segment, in.triangle).hit, false);
     e.equal("test", test_segment_triangle(in.segment, in.triangle), false);
     return e.outcome();
   };
-  check::example(query::find_segment_triangle, "crosses the plane beside the triangle", pair({3, 3, 1}, {3, 3, -1}), miss);
+  check::example(query::find_segment_triangle, "crosses the plane beside the triangle", pair({3, 3, 1}, {3, 3, -1}),
+                 miss);
   check::example(query::find_segment_triangle, "parallel, above", pair({1, 1, 1}, {2, 1, 1}), miss);
   check::example(query::find_segment_triangle, "stops short of the plane", pair({1, 1, 3}, {1, 1, 1}), miss);
   // In the plane and beside the triangle: a miss, graded (no lift makes it a hit). Only
   // a coplanar hit is ambiguous in this step's random cases.
   check::example(query::find_segment_triangle, "in the plane, beside the triangle: a miss", pair({5, 1, 0}, {5, 3, 0}),
                  [](const SegmentTrianglePair& in) {
-                   const Outcome o = judge::find_segment_triangle(in, find_segment_triangle(in.segment, in.triangle), Rules::exact);
-                   if (o.verdict == Outcome::Verdict::fail) return o;
-                   return judge::test_segment_triangle(in, test_segment_triangle(in.segment, in.triangle), Rules::exact);
-                 });
+    const Outcome o = judge::find_segment_triangle(in, find_segment_triangle(in.segment, in.triangle), Rules::exact);
+    if (o.verdict == Outcome::Verdict::fail) return o;
+    return judge::test_segment_triangle(in, test_segment_triangle(in.segment, in.triangle), Rules::exact);
+  });
   // The floor triangle shrunk by 2^-22 (legs of 9.5e-7): its normal is 9.1e-13 long, below
   // the 1e-12 of Eigen's fuzzy isZero(), and still not zero.
   const double tiny = std::ldexp(1.0, -22);
-  check::example(query::find_segment_triangle, "a triangle a millionth the size",
-                 pair(Vec3(1, 1, 3) * tiny, Vec3(1, 1, -1) * tiny, {{0, 0, 0}, Vec3(4 * tiny, 0, 0), Vec3(0, 4 * tiny, 0)}),
-                 [tiny](const SegmentTrianglePair& in) {
-                   const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
-                   Expect e;
-                   e.that("hit", got.hit, describe(got.hit), "true",
-                          "the triangle's area |n| / 2 = " + fmt(in.triangle.area()) +
-                              " is not zero: only an exactly zero normal means zero area (a fuzzy test such as "
-                              "isZero() drops small triangles)");
-                   e.near("t", got.t, 0.75, 1e-12);
-                   e.near("point", got.point, Vec3(tiny, tiny, 0), 1e-18);
-                   return e.outcome();
-                 });
-  check::example(query::test_segment_triangle, "through the inside", pair({1, 1, 3}, {1, 1, -1}), [](const SegmentTrianglePair& in) {
+  check::example(
+      query::find_segment_triangle, "a triangle a millionth the size",
+      pair(Vec3(1, 1, 3) * tiny, Vec3(1, 1, -1) * tiny, {{0, 0, 0}, Vec3(4 * tiny, 0, 0), Vec3(0, 4 * tiny, 0)}),
+      [tiny](const SegmentTrianglePair& in) {
+    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
+    Expect e;
+    e.that("hit", got.hit, describe(got.hit), "true",
+           "the triangle's area |n| / 2 = " + fmt(in.triangle.area()) +
+               " is not zero: only an exactly zero normal means zero area (a fuzzy test such as "
+               "isZero() drops small triangles)");
+    e.near("t", got.t, 0.75, 1e-12);
+    e.near("point", got.point, Vec3(tiny, tiny, 0), 1e-18);
+    return e.outcome();
+      });
+  check::example(query::test_segment_triangle, "through the inside", pair({1, 1, 3}, {1, 1, -1}),
+                 [](const SegmentTrianglePair& in) {
     Expect e;
     e.equal("test", test_segment_triangle(in.segment, in.triangle), true);
     return e.outcome();
@@ -276,34 +291,35 @@ TEST_CASE(LABKIT_STEP(L02S5) ": worked examples", "[lab02][step5]") {
   const Mesh mesh = floor_and_shelf();
   check::example(query::first_hit, "the shelf before the floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
-                   const MeshHit got = first_hit(in.segment, in.mesh);
-                   Expect e;
-                   e.equal("hit", got.hit, true);
-                   e.that("triangle", got.triangle == 3, std::to_string(got.triangle), "3",
-                          "first_hit is the hit with the smallest t: the shelf (triangle 3, t = 0.5) before the floor "
-                          "(triangle 1, t = 5/6)");
-                   e.near("t", got.t, 0.5, 1e-12);
-                   e.near("point", got.point, Vec3(1, 3, 2), 1e-12);
-                   return e.outcome();
-                 });
+    const MeshHit got = first_hit(in.segment, in.mesh);
+    Expect e;
+    e.equal("hit", got.hit, true);
+    e.that("triangle", got.triangle == 3, std::to_string(got.triangle), "3",
+           "first_hit is the hit with the smallest t: the shelf (triangle 3, t = 0.5) before the floor "
+           "(triangle 1, t = 5/6)");
+    e.near("t", got.t, 0.5, 1e-12);
+    e.near("point", got.point, Vec3(1, 3, 2), 1e-12);
+    return e.outcome();
+  });
   // So nearly along the floor (a slope of 2^-20) that the volumes cannot give the
   // weights: they must be measured on the point (handout, step 3's barycentric).
-  check::example(query::first_hit, "nearly along the floor", SegmentMeshPair{{{0.5, 1, 0x1p-20}, {2.5, 1.5, -0x1p-20}}, mesh},
+  check::example(query::first_hit, "nearly along the floor",
+                 SegmentMeshPair{{{0.5, 1, 0x1p-20}, {2.5, 1.5, -0x1p-20}}, mesh},
                  [](const SegmentMeshPair& in) { return judge::first_hit(in, first_hit(in.segment, in.mesh)); });
   check::example(query::all_hits, "shelf, then floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
-                   const std::vector<MeshHit> got = all_hits(in.segment, in.mesh);
-                   Expect e;
-                   e.equal("count", int(got.size()), 2);
-                   if (got.size() == 2) {
-                     e.that("first triangle", got[0].triangle == 3, std::to_string(got[0].triangle), "3",
-                            "all_hits must be sorted by t: the shelf (triangle 3, t = 0.5) before the floor (triangle 1, t = 5/6)");
-                     e.near("first t", got[0].t, 0.5, 1e-12);
-                     e.equal("second triangle", got[1].triangle, 1);
-                     e.near("second t", got[1].t, 5.0 / 6.0, 1e-12);
-                   }
-                   return e.outcome();
-                 });
+    const std::vector<MeshHit> got = all_hits(in.segment, in.mesh);
+    Expect e;
+    e.equal("count", int(got.size()), 2);
+    if (got.size() == 2) {
+      e.that("first triangle", got[0].triangle == 3, std::to_string(got[0].triangle), "3",
+             "all_hits must be sorted by t: the shelf (triangle 3, t = 0.5) before the floor (triangle 1, t = 5/6)");
+      e.near("first t", got[0].t, 0.5, 1e-12);
+      e.equal("second triangle", got[1].triangle, 1);
+      e.near("second t", got[1].t, 5.0 / 6.0, 1e-12);
+    }
+    return e.outcome();
+  });
   // The floor's two triangles share the diagonal (0,0)-(4,4): both are met, at one t.
   check::example(query::all_hits, "through the shared diagonal: both triangles, at the same t",
                  SegmentMeshPair{{{1, 1, 1}, {3, 3, -1}}, mesh}, [](const SegmentMeshPair& in) {
@@ -311,24 +327,21 @@ TEST_CASE(LABKIT_STEP(L02S5) ": worked examples", "[lab02][step5]") {
                  });
   check::example(query::any_hit, "beside the squares", SegmentMeshPair{{{5, 5, 5}, {5, 5, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
-                   Expect e;
-                   e.equal("any_hit", any_hit(in.segment, in.mesh), false);
-                   e.equal("first_hit.hit", first_hit(in.segment, in.mesh).hit, false);
-                   e.equal("all_hits.size()", int(all_hits(in.segment, in.mesh).size()), 0);
-                   return e.outcome();
-                 });
+    Expect e;
+    e.equal("any_hit", any_hit(in.segment, in.mesh), false);
+    e.equal("first_hit.hit", first_hit(in.segment, in.mesh).hit, false);
+    e.equal("all_hits.size()", int(all_hits(in.segment, in.mesh).size()), 0);
+    return e.outcome();
+  });
 }
 
 TEST_CASE(LABKIT_STEP(L02S5) ": random cases", "[lab02][step5][oracle]") {
-  check::random_cases(query::any_hit, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
-    return judge::any_hit(in, any_hit(in.segment, in.mesh));
-  });
-  check::random_cases(query::first_hit, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
-    return judge::first_hit(in, first_hit(in.segment, in.mesh));
-  });
-  check::random_cases(query::all_hits, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
-    return judge::all_hits(in, all_hits(in.segment, in.mesh));
-  });
+  check::random_cases(query::any_hit, gen::decisive_segment_mesh(),
+                      [](const SegmentMeshPair& in) { return judge::any_hit(in, any_hit(in.segment, in.mesh)); });
+  check::random_cases(query::first_hit, gen::decisive_segment_mesh(),
+                      [](const SegmentMeshPair& in) { return judge::first_hit(in, first_hit(in.segment, in.mesh)); });
+  check::random_cases(query::all_hits, gen::decisive_segment_mesh(),
+                      [](const SegmentMeshPair& in) { return judge::all_hits(in, all_hits(in.segment, in.mesh)); });
 }
 
 // ---- Step 6 ------------------------------------------------------------------------
@@ -339,32 +352,34 @@ TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
   RigidTransform up = RigidTransform::Identity();
   up.translation() = Vec3(0, 0, 2);
   check::example(query::first_hit_moving, "a resting particle, a rising floor",
-                 MovingMesh{{{1, 1, 1}, {1, 1, 1}}, floor, RigidTransform::Identity(), up}, [](const MovingMesh& in) {
-                   const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
-                   Expect e;
-                   e.that("hit", got.hit, describe(got.hit), "true",
-                          "in the floor's own frame the particle goes from m0^-1 a = (1, 1, 1) to m1^-1 b = (1, 1, -1), "
-                          "through the floor: each end goes through its own pose");
-                   e.near("t", got.t, 0.5, 1e-12);
-                   e.near("point", got.point, Vec3(1, 1, 2), 1e-12);
-                   e.near("normal", got.normal, Vec3(0, 0, 1), 1e-12);
-                   return e.outcome();
-                 });
+                 MovingMesh{{{1, 1, 1}, {1, 1, 1}}, floor, RigidTransform::Identity(), up},
+                 [](const MovingMesh& in) {
+    const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
+    Expect e;
+    e.that("hit", got.hit, describe(got.hit), "true",
+           "in the floor's own frame the particle goes from m0^-1 a = (1, 1, 1) to m1^-1 b = (1, 1, -1), "
+           "through the floor: each end goes through its own pose");
+    e.near("t", got.t, 0.5, 1e-12);
+    e.near("point", got.point, Vec3(1, 1, 2), 1e-12);
+    e.near("normal", got.normal, Vec3(0, 0, 1), 1e-12);
+    return e.outcome();
+  });
   // The point is the contact on the mesh at its end pose m1: in the floor's frame the
   // path (2,2,1) -> (2,2,-1) meets it at (2,2,0), which m1 (a shift by 1 in x) puts at
   // (3,2,0); not (2,2,0) (the mesh at m0) and not a + t (b - a) = (2.5,2,0).
   RigidTransform aside = RigidTransform::Identity();
   aside.translation() = Vec3(1, 0, 0);
   check::example(query::first_hit_moving, "a sliding floor: the point is on the mesh at its end pose",
-                 MovingMesh{{{2, 2, 1}, {3, 2, -1}}, floor, RigidTransform::Identity(), aside}, [](const MovingMesh& in) {
-                   const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
-                   Expect e;
-                   e.equal("hit", got.hit, true);
-                   e.near("t", got.t, 0.5, 1e-12);
-                   e.that("point", (got.point - Vec3(3, 2, 0)).norm() <= 1e-12, fmt(got.point), fmt(Vec3(3, 2, 0)),
-                          "the point is the contact on the mesh at its end pose: m1 times the point found in its frame");
-                   return e.outcome();
-                 });
+                 MovingMesh{{{2, 2, 1}, {3, 2, -1}}, floor, RigidTransform::Identity(), aside},
+                 [](const MovingMesh& in) {
+    const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
+    Expect e;
+    e.equal("hit", got.hit, true);
+    e.near("t", got.t, 0.5, 1e-12);
+    e.that("point", (got.point - Vec3(3, 2, 0)).norm() <= 1e-12, fmt(got.point), fmt(Vec3(3, 2, 0)),
+           "the point is the contact on the mesh at its end pose: m1 times the point found in its frame");
+    return e.outcome();
+  });
   check::example(query::first_hit_moving, "the rising floor stops short of a falling particle",
                  MovingMesh{{{1, 1, 3}, {1, 1, 2.5}}, floor, RigidTransform::Identity(), up}, [](const MovingMesh& in) {
                    // In the floor's frame the particle goes from z = 3 to z = 0.5: no hit.
@@ -446,14 +461,13 @@ TEST_CASE(LABKIT_STEP(L02S7) ": worked examples", "[lab02][step7]") {
                  MovingMeshes{upright_a(), {0, 0, -2}, upright_b(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 0, 0}));
   check::example(q, "stops short: the spike falls only 1.5",
                  MovingMeshes{spike(), {0, 0, -1.5}, floor_square(), {0, 0, 0}}, expect_contact(false, 0, {0, 0, 0}));
-  check::example(q, "the same velocity: never closer",
-                 MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, -4}}, expect_contact(false, 0, {0, 0, 0}));
+  check::example(q, "the same velocity: never closer", MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, -4}},
+                 expect_contact(false, 0, {0, 0, 0}));
 }
 
 TEST_CASE(LABKIT_STEP(L02S7) ": random cases", "[lab02][step7][oracle]") {
-  check::random_cases(query::first_contact_moving_meshes, gen::moving_meshes(), [](const MovingMeshes& in) {
-    return judge::first_contact_moving_meshes(in, run_contact(in));
-  });
+  check::random_cases(query::first_contact_moving_meshes, gen::moving_meshes(),
+                      [](const MovingMeshes& in) { return judge::first_contact_moving_meshes(in, run_contact(in)); });
 }
 
 // ---- Step 8: robustness --------------------------------------------------------------
@@ -481,7 +495,8 @@ auto expect_hit(double t) {
                       "and the closed triangle's boundary counts");
     if (got.hit)
       e.that("t", std::abs(got.t - t) <= 1e-12, fmt(got.t), fmt(t),
-             coplanar ? "in the plane, t is the first common point from a" : "t is where the segment first touches the triangle");
+             coplanar ? "in the plane, t is the first common point from a"
+                      : "t is where the segment first touches the triangle");
     const Outcome rules = exact_find(in);
     return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : rules;
   };
@@ -504,7 +519,8 @@ TEST_CASE(LABKIT_STEP(L02S8) ": touching, edges, vertices, coplanar, zero size",
   check::example(q, "through the long edge at t = 1/3", pair({1, 2, 1}, {1, 2, -2}, kSmall), expect_hit(1.0 / 3));
   // Slanted: the crossing point (4/3, 5/3, 0) is not a double, so a test on the rounded
   // point may land outside the edge; a test on signs of input products cannot.
-  check::example(q, "slanted through the long edge at t = 1/3", pair({2, 2, 1}, {0, 1, -2}, kSmall), expect_hit(1.0 / 3));
+  check::example(q, "slanted through the long edge at t = 1/3", pair({2, 2, 1}, {0, 1, -2}, kSmall),
+                 expect_hit(1.0 / 3));
   check::example(q, "in the plane, entering at t = 1/6", pair({-1, 1, 0}, {5, 1, 0}, kSmall), expect_hit(1.0 / 6));
   check::example(q, "in the plane, starting inside", pair({1, 1, 0}, {5, 1, 0}, kSmall), expect_hit(0));
   check::example(q, "in the plane, touching only v1", pair({3, -1, 0}, {3, 1, 0}, kSmall), expect_hit(0.5));
@@ -522,8 +538,8 @@ TEST_CASE(LABKIT_STEP(L02S8) ": touching, edges, vertices, coplanar, zero size",
     return e.outcome();
   };
   check::example(edges, "on the long edge, a third of the way", PointTriangle{{1, 2, 0}, kSmall}, on_boundary);
-  check::example(edges, "a tilted triangle's edge midpoint", PointTriangle{{1, 3, 5}, {{0, 2, 4}, {2, 4, 6}, {0, 0, 9}}},
-                 on_boundary);
+  check::example(edges, "a tilted triangle's edge midpoint",
+                 PointTriangle{{1, 3, 5}, {{0, 2, 4}, {2, 4, 6}, {0, 0, 9}}}, on_boundary);
 }
 
 TEST_CASE(LABKIT_STEP(L02S8) ": shared edges and vertices in a mesh", "[lab02][step8]") {
@@ -532,18 +548,18 @@ TEST_CASE(LABKIT_STEP(L02S8) ": shared edges and vertices in a mesh", "[lab02][s
   constexpr auto q = query::robust_all_hits;
   check::example(q, "through the shared diagonal: both triangles", SegmentMeshPair{{{2, 2, 1}, {2, 2, -1}}, floor},
                  [](const SegmentMeshPair& in) {
-                   const std::vector<MeshHit> got = all_hits(in.segment, in.mesh);
-                   Expect e;
-                   e.equal("count", int(got.size()), 2);
-                   if (got.size() == 2) {
-                     e.equal("order by index on a tie", got[0].triangle, 0);
-                     e.near("t", got[1].t, 0.5, 1e-12);
-                   }
-                   e.equal("first_hit.hit", first_hit(in.segment, in.mesh).hit, true);
-                   return e.outcome();
-                 });
-  check::example(q, "through the shared corner (4, 4, 0): both triangles", SegmentMeshPair{{{4, 4, 3}, {4, 4, -3}}, floor},
-                 [](const SegmentMeshPair& in) {
+    const std::vector<MeshHit> got = all_hits(in.segment, in.mesh);
+    Expect e;
+    e.equal("count", int(got.size()), 2);
+    if (got.size() == 2) {
+      e.equal("order by index on a tie", got[0].triangle, 0);
+      e.near("t", got[1].t, 0.5, 1e-12);
+    }
+    e.equal("first_hit.hit", first_hit(in.segment, in.mesh).hit, true);
+    return e.outcome();
+  });
+  check::example(q, "through the shared corner (4, 4, 0): both triangles",
+                 SegmentMeshPair{{{4, 4, 3}, {4, 4, -3}}, floor}, [](const SegmentMeshPair& in) {
                    Expect e;
                    e.equal("count", int(all_hits(in.segment, in.mesh).size()), 2);
                    return e.outcome();
@@ -554,10 +570,11 @@ TEST_CASE(LABKIT_STEP(L02S8) ": moving meshes touching exactly", "[lab02][step8]
   constexpr auto q = query::robust_first_contact_moving_meshes;
   // The spike's vertex (1, 1, 2) falls onto the floor's shared diagonal (0,0)-(4,4).
   check::example(q, "a vertex onto the shared diagonal at t = 1/2",
-                 MovingMeshes{spike({1, 1, 2}), {0, 0, -4}, floor_square(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 1, 0}));
+                 MovingMeshes{spike({1, 1, 2}), {0, 0, -4}, floor_square(), {0, 0, 0}},
+                 expect_contact(true, 0.5, {1, 1, 0}));
   // The contact happens exactly at the end of the frame: closed, it counts.
-  check::example(q, "touching exactly at t = 1",
-                 MovingMeshes{spike(), {0, 0, -2}, floor_square(), {0, 0, 0}}, expect_contact(true, 1, {1, 2, 0}));
+  check::example(q, "touching exactly at t = 1", MovingMeshes{spike(), {0, 0, -2}, floor_square(), {0, 0, 0}},
+                 expect_contact(true, 1, {1, 2, 0}));
   // The end (2, 0, 1) of A's lowest edge lands exactly on B's top edge.
   Mesh b = upright_b();
   b.vertices = {{2, -2, 0}, {2, 2, 0}, {2, 0, -2}};
@@ -619,7 +636,8 @@ TEST_CASE("L02 preconditions: invalid input throws std::invalid_argument naming 
       names(v, [&] { test_segment_triangle(good, t); });
       names(v, [&] { find_segment_triangle(good, t); });
     }
-    for (const auto& [name, s] : {std::pair{std::string("segment.a"), bad_a}, std::pair{std::string("segment.b"), bad_b}}) {
+    for (const auto& [name, s] :
+         {std::pair{std::string("segment.a"), bad_a}, std::pair{std::string("segment.b"), bad_b}}) {
       names(name, [&] { segment_plane(s, kFloor); });
       names(name, [&] { test_segment_triangle(s, kFloor); });
       names(name, [&] { find_segment_triangle(s, kFloor); });

@@ -8,20 +8,38 @@
 namespace labkit::lab02 {
 
 template <class V> void fields(PlaneCrossing& c, V&& v) {
-  v("d_a", c.d_a); v("d_b", c.d_b); v("crosses", c.crosses); v("t", c.t); v("point", c.point);
+  v("d_a", c.d_a);
+  v("d_b", c.d_b);
+  v("crosses", c.crosses);
+  v("t", c.t);
+  v("point", c.point);
 }
 template <class V> void fields(Barycentric& b, V&& v) {
-  v("dropped_axis", b.dropped_axis); v("alpha", b.alpha); v("beta", b.beta);
+  v("dropped_axis", b.dropped_axis);
+  v("alpha", b.alpha);
+  v("beta", b.beta);
 }
 template <class V> void fields(SegmentTriangleHit& h, V&& v) {
-  v("hit", h.hit); v("t", h.t); v("point", h.point); v("barycentric", h.barycentric); v("normal", h.normal);
+  v("hit", h.hit);
+  v("t", h.t);
+  v("point", h.point);
+  v("barycentric", h.barycentric);
+  v("normal", h.normal);
 }
 template <class V> void fields(MeshHit& h, V&& v) {
-  v("hit", h.hit); v("triangle", h.triangle); v("t", h.t); v("point", h.point);
-  v("barycentric", h.barycentric); v("normal", h.normal);
+  v("hit", h.hit);
+  v("triangle", h.triangle);
+  v("t", h.t);
+  v("point", h.point);
+  v("barycentric", h.barycentric);
+  v("normal", h.normal);
 }
 
-template <class V> void fields(MeshContact& c, V&& v) { v("hit", c.hit); v("t", c.t); v("point", c.point); }
+template <class V> void fields(MeshContact& c, V&& v) {
+  v("hit", c.hit);
+  v("t", c.t);
+  v("point", c.point);
+}
 
 using MeshHits = std::vector<MeshHit>;
 

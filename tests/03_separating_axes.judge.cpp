@@ -89,16 +89,20 @@ std::string why_boxes(const BoxPair& in, bool expected_intersecting) {
     if (depth >= 0 && (k < 6 || length >= kSurelyIncluded) && (least == 0.0 || depth < least)) least = depth;
   }
   if (!expected_intersecting) {
-    if (best < 0) return "the boxes are apart (flat boxes, beside each other in a plane), your answer says they intersect";
+    if (best < 0)
+      return "the boxes are apart (flat boxes, beside each other in a plane), your answer says they intersect";
     std::string why = axis_name(best) + " is a separating axis: the boxes' projections on it are apart (gap " +
                       fmt(gap) + " along the unit axis); your answer says they intersect";
-    if (best >= 6 && !face_separates) why += "; only an edge axis A_i x B_j separates them: are all 9 edge axes tested?";
-    else if (gap < 1e-6 * size) why += "; a gap this small is lost to an epsilon added to the radii";
+    if (best >= 6 && !face_separates)
+      why += "; only an edge axis A_i x B_j separates them: are all 9 edge axes tested?";
+    else if (gap < 1e-6 * size)
+      why += "; a gap this small is lost to an epsilon added to the radii";
     return why;
   }
   std::string why = "no axis separates the boxes: their projections overlap on all 15 axes (least penetration " +
                     fmt(least) + "), your answer says separated";
-  if (least <= 1e-9 * size) why += "; boxes that only touch intersect: separation is strict, |s| > r_A + r_B";
+  if (least <= 1e-9 * size)
+    why += "; boxes that only touch intersect: separation is strict, |s| > r_A + r_B";
   else if (shortest >= 0 && shortest_length < 1e-6)
     why += "; " + axis_name(shortest) + " has length " + fmt(shortest_length) +
            ": nearly parallel edges (a zero axis separates nothing); compute its radius along the vector itself, "
@@ -121,8 +125,9 @@ Outcome project_box(const BoxOnAxis& in, const Projection& got) {
   const std::string answer = "center " + fmt(got.center) + ", radius " + fmt(got.radius);
   const std::string expected = "center " + fmt(exact.center) + ", radius " + fmt(exact.radius);
   if (!(std::abs(got.center - exact.center) <= tol))
-    return fail(expected, answer, "the centre of the interval is c . L = " + fmt(exact.center) + ", yours is off by " +
-                                      fmt(std::abs(got.center - exact.center)) + " (tolerance " + fmt(tol) + ")");
+    return fail(expected, answer,
+                "the centre of the interval is c . L = " + fmt(exact.center) + ", yours is off by " +
+                    fmt(std::abs(got.center - exact.center)) + " (tolerance " + fmt(tol) + ")");
   if (!(std::abs(got.radius - exact.radius) <= tol)) {
     std::string why = "the radius is sum_k h_k |A_k . L| = " + fmt(exact.radius) + ", yours is off by " +
                       fmt(std::abs(got.radius - exact.radius)) + " (tolerance " + fmt(tol) + ")";
@@ -152,13 +157,19 @@ Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules) {
   Outcome o = verdict(got, expected, in.axis != Vec3::Zero() && std::abs(overlap) <= doubt, rules, "separated",
                       "not separated (the projections overlap or touch)");
   if (o.verdict != Outcome::Verdict::fail) return o;
-  if (in.axis == Vec3::Zero()) o.why = "a zero axis separates nothing (0 > 0 is false); your answer says separated";
-  else if (expected) o.why = "the projections on L are apart by a gap of " + fmt(-overlap) + " (along the unit axis): "
-                             "|(c_B - c_A) . L| > r_A + r_B; your answer says not separated";
-  else if (overlap <= position_tolerance(pair)) o.why = "the projections on L touch (overlap " + fmt(overlap) +
-                                                  "): touching intervals are not separated, the test is strict (>)";
-  else o.why = "the projections on L overlap by " + fmt(overlap) + " (along the unit axis): |(c_B - c_A) . L| <= r_A + "
-               "r_B; your answer says separated (is each radius term h_k |A_k . L| with the absolute value?)";
+  if (in.axis == Vec3::Zero())
+    o.why = "a zero axis separates nothing (0 > 0 is false); your answer says separated";
+  else if (expected)
+    o.why = "the projections on L are apart by a gap of " + fmt(-overlap) +
+            " (along the unit axis): "
+            "|(c_B - c_A) . L| > r_A + r_B; your answer says not separated";
+  else if (overlap <= position_tolerance(pair))
+    o.why = "the projections on L touch (overlap " + fmt(overlap) +
+            "): touching intervals are not separated, the test is strict (>)";
+  else
+    o.why = "the projections on L overlap by " + fmt(overlap) +
+            " (along the unit axis): |(c_B - c_A) . L| <= r_A + "
+            "r_B; your answer says separated (is each radius term h_k |A_k . L| with the absolute value?)";
   return o;
 }
 
@@ -171,8 +182,10 @@ Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got) {
                         : k < 6 ? axis_name(k) + " is B's column " + std::to_string(k - 3)
                                 : axis_name(k) + " is that cross product as it is (not normalised)";
       why += ", " + fmt(exact) + "; yours is off by " + fmt((got[k] - exact).norm()) + " (tolerance 1e-12)";
-      if (exact.norm() > 0 && (got[k] + exact).norm() <= 1e-12) why += ": the opposite vector (the order A_i x B_j?)";
-      else if (k >= 6 && exact.norm() > 0 && std::abs(got[k].norm() - 1) <= 1e-12 && got[k].cross(exact).norm() <= 1e-12 * exact.norm())
+      if (exact.norm() > 0 && (got[k] + exact).norm() <= 1e-12)
+        why += ": the opposite vector (the order A_i x B_j?)";
+      else if (k >= 6 && exact.norm() > 0 && std::abs(got[k].norm() - 1) <= 1e-12 &&
+               got[k].cross(exact).norm() <= 1e-12 * exact.norm())
         why += ": normalised; box_axis returns it unnormalised";
       e.that(axis_name(k), false, fmt(got[k]), fmt(exact), why);
     }
@@ -180,7 +193,9 @@ Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got) {
   return e.outcome();
 }
 
-Outcome test_boxes(const BoxPair& in, bool got, Rules rules) { return boxes_verdict(in, got, boxes_in_doubt(in, rules), rules); }
+Outcome test_boxes(const BoxPair& in, bool got, Rules rules) {
+  return boxes_verdict(in, got, boxes_in_doubt(in, rules), rules);
+}
 
 Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules) {
   const bool doubt = boxes_in_doubt(in, rules);
@@ -188,8 +203,8 @@ Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules) {
   if (decision.verdict == Outcome::Verdict::fail) return decision;
 
   const double tol = position_tolerance(in);
-  const std::string answer = (got.intersecting ? "intersecting, " : "separated, ") + axis_name(got.axis_index) +
-                             " = " + fmt(got.axis) + ", depth " + fmt(got.depth);
+  const std::string answer = (got.intersecting ? "intersecting, " : "separated, ") + axis_name(got.axis_index) + " = " +
+                             fmt(got.axis) + ", depth " + fmt(got.depth);
   if (got.axis_index < 0 || got.axis_index > 14 || !got.axis.allFinite() || !std::isfinite(got.depth))
     return fail("an axis index from 0 to 14 with a finite axis and depth", answer, "the axis or the depth is missing");
   if (std::abs(got.axis.norm() - 1) > 1e-9)
@@ -255,7 +270,8 @@ std::string noise_hint(const MovingBoxes& in) {
     if (axis.norm() < kSurelyIncluded) continue;
     const double moved = std::abs(w.dot(axis)) / axis.norm() * in.duration;
     if (moved > 0 && moved <= 1e-3 * position_tolerance(in))
-      return "; along " + axis_name(k) + " B moves by only " + fmt(moved) + " over the whole motion, below the rounding "
+      return "; along " + axis_name(k) + " B moves by only " + fmt(moved) +
+             " over the whole motion, below the rounding "
              "of s and r: times (r - s) / ds from it are rounding noise (test that axis as a static one)";
   }
   return "";
@@ -265,10 +281,9 @@ std::string noise_hint(const MovingBoxes& in) {
 
 Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules) {
   const bool expected = meet(in, 0.0, in.duration, 0.0);
-  const bool doubt =
-      rules == Rules::random &&
-      std::abs(oracle::moving_boxes_swept_margin(in.a, in.velocity_a, in.b, in.velocity_b, in.duration)) <=
-          kMovingDoubt * position_tolerance(in);
+  const bool doubt = rules == Rules::random &&
+                     std::abs(oracle::moving_boxes_swept_margin(in.a, in.velocity_a, in.b, in.velocity_b,
+                                                                in.duration)) <= kMovingDoubt * position_tolerance(in);
   Outcome o = verdict(got, expected, doubt, rules, "they touch at some time in [0, duration]", "they never touch");
   if (o.verdict != Outcome::Verdict::fail) return o;
   if (expected) {
@@ -294,15 +309,18 @@ Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules) {
       swept_15 = swept_15 || (oracle::box_depth_along(in.a, in.b, sign * axis) < 0 &&
                               oracle::box_depth_along(a_end, b_end, sign * axis) < 0);
   }
-  o.why = "the boxes never touch: a separating axis keeps them apart at every time in [0, duration]; your answer "
-          "says they touch";
+  o.why =
+      "the boxes never touch: a separating axis keeps them apart at every time in [0, duration]; your answer "
+      "says they touch";
   const double moved = (in.velocity_b - in.velocity_a).norm() * in.duration;
   if (moved <= 1e-3 * position_tolerance(in))
-    o.why += "; B moves by only " + fmt(moved) + " relative to A over the whole motion, below the rounding of s and r: "
+    o.why += "; B moves by only " + fmt(moved) +
+             " relative to A over the whole motion, below the rounding of s and r: "
              "times (r - s) / ds from such motion are rounding noise (test that axis as a static one)";
   else if (!swept_15)
-    o.why += "; none of the 15 axes separates the swept boxes here: only one of table 6.7's axes W x A_i or W x B_j "
-             "(W = v_B - v_A) does";
+    o.why +=
+        "; none of the 15 axes separates the swept boxes here: only one of table 6.7's axes W x A_i or W x B_j "
+        "(W = v_B - v_A) does";
   return o;
 }
 
@@ -318,18 +336,22 @@ Outcome find_moving_boxes(const MovingBoxes& in, const ContactInterval& got, Rul
   const std::string within = " (tolerance " + fmt(tol) + ")";
   // At the reported times the boxes must be within tol of touching...
   if (!meet(in, got.first, got.first, tol))
-    return fail(expected, answer, "first must be a time of contact: at your first = " + fmt(got.first) +
-                                      " the boxes are more than tol apart along some axis" + within + noise_hint(in));
+    return fail(expected, answer,
+                "first must be a time of contact: at your first = " + fmt(got.first) +
+                    " the boxes are more than tol apart along some axis" + within + noise_hint(in));
   if (!meet(in, got.last, got.last, tol))
-    return fail(expected, answer, "last must be a time of contact: at your last = " + fmt(got.last) +
-                                      " the boxes are more than tol apart along some axis" + within + noise_hint(in));
+    return fail(expected, answer,
+                "last must be a time of contact: at your last = " + fmt(got.last) +
+                    " the boxes are more than tol apart along some axis" + within + noise_hint(in));
   // ...and outside [first, last] never overlap by more than tol.
   if (got.first > 0 && meet(in, 0.0, got.first, -tol))
-    return fail(expected, answer, "first must be the first contact: before your first = " + fmt(got.first) +
-                                      " the boxes already overlap by more than tol" + within + noise_hint(in));
+    return fail(expected, answer,
+                "first must be the first contact: before your first = " + fmt(got.first) +
+                    " the boxes already overlap by more than tol" + within + noise_hint(in));
   if (got.last < end && meet(in, got.last, end, -tol))
-    return fail(expected, answer, "last must be the last contact: after your last = " + fmt(got.last) +
-                                      " the boxes still overlap by more than tol" + within + noise_hint(in));
+    return fail(expected, answer,
+                "last must be the last contact: after your last = " + fmt(got.last) +
+                    " the boxes still overlap by more than tol" + within + noise_hint(in));
   return decision;
 }
 

@@ -18,7 +18,8 @@ using check::verdict;
 
 // Longest edge over smallest height: how much of a needle the triangle is.
 double aspect(const Triangle& t) {
-  const double longest = std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
+  const double longest =
+      std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
   const double n = t.normal().norm();
   return n == 0 ? 0.0 : longest / n;
 }
@@ -46,8 +47,9 @@ std::string why_triangles(const TrianglePair& in, bool expected) {
     if (oracle::triangle_pair_in_doubt(in.t0, in.t1, 1e-12 * size))
       return "the triangles touch (at a point or along a segment): closed triangles that touch intersect, and an "
              "interval end equal to the other's (orient = 0) is an overlap; your answer says they do not";
-    std::string why = "the triangles intersect: their segments on the line where the planes meet overlap; your "
-                      "answer says they do not";
+    std::string why =
+        "the triangles intersect: their segments on the line where the planes meet overlap; your "
+        "answer says they do not";
     if (std::max(off_plane(in.t0, in.t1, size), off_plane(in.t1, in.t0, size)) < 1e-12)
       why += "; they are coplanar up to rounding: a volume d within its rounding is in the plane (sign 0)";
     return why;
@@ -57,11 +59,13 @@ std::string why_triangles(const TrianglePair& in, bool expected) {
   std::string why = "the triangles are apart: they share no point; your answer says they intersect";
   const double needle = std::max(aspect(in.t0), aspect(in.t1));
   if (needle > 1e4)
-    why += "; one is a needle (aspect " + fmt(needle) + "): take its normal from its two shortest edges and count a "
+    why += "; one is a needle (aspect " + fmt(needle) +
+           "): take its normal from its two shortest edges and count a "
            "vertex in its plane only within that construction's rounding, not a bound relative to its long edges";
   else if (std::min(off_plane(in.t0, in.t1, size), off_plane(in.t1, in.t0, size)) < 1e-12)
-    why += "; they are coplanar up to rounding: volumes d of rounding size have noise signs; a vertex counts as in "
-           "the plane when |d| is within its rounding";
+    why +=
+        "; they are coplanar up to rounding: volumes d of rounding size have noise signs; a vertex counts as in "
+        "the plane when |d| is within its rounding";
   return why;
 }
 
@@ -79,14 +83,18 @@ Outcome triangles_by_intervals(const TrianglePair& in, const LineIntervals& got,
   for (int i = 1; i < 3; ++i)
     if (m[i] > m[k]) k = i;
   if (!got.crossing)
-    return fail("crossing", answer, "each triangle has vertices strictly on both sides of the other's plane (no d_i is "
-                                    "0): the lecture's general case, crossing = true");
+    return fail("crossing", answer,
+                "each triangle has vertices strictly on both sides of the other's plane (no d_i is "
+                "0): the lecture's general case, crossing = true");
   if (got.axis < 0 || got.axis > 2 || m[got.axis] < m[k] * (1 - 1e-9)) {
-    std::string why = "the line of the planes, D = n0 x n1 = " + fmt(D) + ", is read on the coordinate where |D_k| is "
-                      "largest, axis " + std::to_string(k);
+    std::string why = "the line of the planes, D = n0 x n1 = " + fmt(D) +
+                      ", is read on the coordinate where |D_k| is "
+                      "largest, axis " +
+                      std::to_string(k);
     if (got.axis >= 0 && got.axis <= 2)
-      why += "; yours, axis " + std::to_string(got.axis) + ", has |D_" + std::to_string(got.axis) + "| = " +
-             fmt(m[got.axis]) + (m[got.axis] == 0 ? ": every point of the line has the same coordinate there" : "");
+      why += "; yours, axis " + std::to_string(got.axis) + ", has |D_" + std::to_string(got.axis) +
+             "| = " + fmt(m[got.axis]) +
+             (m[got.axis] == 0 ? ": every point of the line has the same coordinate there" : "");
     return fail("axis " + std::to_string(k), answer, why);
   }
   if (got.low0 > got.high0 || got.low1 > got.high1)
@@ -107,8 +115,10 @@ Outcome triangles_by_intervals(const TrianglePair& in, const LineIntervals& got,
     const std::string me = t ? "t1" : "t0", it = t ? "t0" : "t1";
     return fail(expected, answer,
                 me + "'s segment in " + it + "'s plane covers [" + fmt(exact_low) + ", " + fmt(exact_high) +
-                    "] (tolerance " + fmt(tol) + "): its ends are where the two edges from the vertex alone on its "
-                    "side, " + me + ".v" + std::to_string(p) + ", cross the plane, x = p + (q - p) d_p / (d_p - d_q)");
+                    "] (tolerance " + fmt(tol) +
+                    "): its ends are where the two edges from the vertex alone on its "
+                    "side, " +
+                    me + ".v" + std::to_string(p) + ", cross the plane, x = p + (q - p) d_p / (d_p - d_q)");
   }
   const bool expected_overlap = oracle::triangles_intersect(in.t0, in.t1);
   const bool doubt = rules == Rules::random && oracle::triangle_pair_in_doubt(in.t0, in.t1, tol);
@@ -130,11 +140,15 @@ Outcome test_triangles(const TrianglePair& in, bool got, Rules rules) {
     // Sampling as well, for triangles whose boxes come near each other: a flip it finds
     // would mean the conservative test above missed one.
     if (!doubt) {
-      const Vec3 low0 = in.t0.v0.cwiseMin(in.t0.v1).cwiseMin(in.t0.v2), high0 = in.t0.v0.cwiseMax(in.t0.v1).cwiseMax(in.t0.v2);
-      const Vec3 low1 = in.t1.v0.cwiseMin(in.t1.v1).cwiseMin(in.t1.v2), high1 = in.t1.v0.cwiseMax(in.t1.v1).cwiseMax(in.t1.v2);
-      const bool near = ((low0.array() - 8 * tol) <= high1.array()).all() && ((low1.array() - 8 * tol) <= high0.array()).all();
+      const Vec3 low0 = in.t0.v0.cwiseMin(in.t0.v1).cwiseMin(in.t0.v2),
+                 high0 = in.t0.v0.cwiseMax(in.t0.v1).cwiseMax(in.t0.v2);
+      const Vec3 low1 = in.t1.v0.cwiseMin(in.t1.v1).cwiseMin(in.t1.v2),
+                 high1 = in.t1.v0.cwiseMax(in.t1.v1).cwiseMax(in.t1.v2);
+      const bool near =
+          ((low0.array() - 8 * tol) <= high1.array()).all() && ((low1.array() - 8 * tol) <= high0.array()).all();
       if (near)
-        doubt = check::flips_under_perturbation(in, [](const TrianglePair& p) { return oracle::triangles_intersect(p.t0, p.t1); });
+        doubt = check::flips_under_perturbation(
+            in, [](const TrianglePair& p) { return oracle::triangles_intersect(p.t0, p.t1); });
     }
   }
   Outcome o = verdict(got, expected, doubt, rules, "intersecting", "not intersecting");

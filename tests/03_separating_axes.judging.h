@@ -13,8 +13,7 @@ namespace labkit::lab03::judge {
 // tol = 1e-9 S, S the input's largest position coordinate (the header's tolerances):
 // scale_of, which counts the moving boxes' end positions and never an axis or a velocity,
 // so not judging::tolerance_of, whose S is every length the input holds.
-template <class Input>
-double position_tolerance(const Input& in) {
+template <class Input> double position_tolerance(const Input& in) {
   return judging::kRelative * std::max(scale_of(in), 1e-300);
 }
 

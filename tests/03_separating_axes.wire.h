@@ -7,15 +7,30 @@
 
 namespace labkit::lab03 {
 
-template <class V> void fields(Projection& p, V&& v) { v("center", p.center); v("radius", p.radius); }
+template <class V> void fields(Projection& p, V&& v) {
+  v("center", p.center);
+  v("radius", p.radius);
+}
 template <class V> void fields(BoxContact& c, V&& v) {
-  v("intersecting", c.intersecting); v("axis_index", c.axis_index); v("axis", c.axis); v("depth", c.depth);
+  v("intersecting", c.intersecting);
+  v("axis_index", c.axis_index);
+  v("axis", c.axis);
+  v("depth", c.depth);
 }
 template <class V> void fields(LineIntervals& i, V&& v) {
-  v("crossing", i.crossing); v("axis", i.axis); v("low0", i.low0); v("high0", i.high0);
-  v("low1", i.low1); v("high1", i.high1); v("overlap", i.overlap);
+  v("crossing", i.crossing);
+  v("axis", i.axis);
+  v("low0", i.low0);
+  v("high0", i.high0);
+  v("low1", i.low1);
+  v("high1", i.high1);
+  v("overlap", i.overlap);
 }
-template <class V> void fields(ContactInterval& c, V&& v) { v("contact", c.contact); v("first", c.first); v("last", c.last); }
+template <class V> void fields(ContactInterval& c, V&& v) {
+  v("contact", c.contact);
+  v("first", c.first);
+  v("last", c.last);
+}
 
 }  // namespace labkit::lab03
 

@@ -52,9 +52,12 @@ double ulps(double x) { return 8 * DBL_EPSILON * std::abs(x); }
 
 std::string summary(const TimeOfImpact& r) {
   std::string s;
-  if (r.overlapping_at_start) s = "overlapping at the start, t = " + fmt(r.t) + ", t_contact = " + fmt(r.t_contact);
-  else if (r.hit) s = "a hit: t = " + fmt(r.t) + ", t_contact = " + fmt(r.t_contact);
-  else s = "no hit, t = " + fmt(r.t);
+  if (r.overlapping_at_start)
+    s = "overlapping at the start, t = " + fmt(r.t) + ", t_contact = " + fmt(r.t_contact);
+  else if (r.hit)
+    s = "a hit: t = " + fmt(r.t) + ", t_contact = " + fmt(r.t_contact);
+  else
+    s = "no hit, t = " + fmt(r.t);
   if (!r.hit && r.overlapping_at_start) s += " (but hit = false)";
   return s + " (steps " + std::to_string(r.steps) + ", iterations " + std::to_string(r.iterations) + ")";
 }
@@ -73,9 +76,10 @@ Check start_rule(const Scene& sc, const TimeOfImpact& got, double t0, bool& doub
     return doubt ? ambiguous() : pass();
   }
   if (s.overlap && !s.doubt)
-    return fail("overlapping_at_start (the bodies overlap at t0 = " + fmt(t0) + ")", summary(got),
-                "the bodies already overlap at t0 (signed gap " + fmt(sc.signed_gap(t0)) +
-                    "): there is no last clear time to search for; report overlapping_at_start, hit, t = t_contact = t0");
+    return fail(
+        "overlapping_at_start (the bodies overlap at t0 = " + fmt(t0) + ")", summary(got),
+        "the bodies already overlap at t0 (signed gap " + fmt(sc.signed_gap(t0)) +
+            "): there is no last clear time to search for; report overlapping_at_start, hit, t = t_contact = t0");
   return std::nullopt;
 }
 
@@ -83,9 +87,10 @@ Check certify(const Scene& sc, const TimeOfImpact& got, double lo, double hi, do
   const std::string bracket = "t = " + fmt(got.t) + ", t_contact = " + fmt(got.t_contact);
   const std::string within = "lo <= t < t_contact <= hi with [lo, hi] = [" + fmt(lo) + ", " + fmt(hi) + "]";
   if (!(got.t < got.t_contact))
-    return fail(within, bracket,
-                "t is the last clear time and t_contact the first overlapping time found, so t < t_contact" +
-                    std::string(got.t == got.t_contact ? ": your t is the overlapping end; return t = lo, not hi" : ""));
+    return fail(
+        within, bracket,
+        "t is the last clear time and t_contact the first overlapping time found, so t < t_contact" +
+            std::string(got.t == got.t_contact ? ": your t is the overlapping end; return t = lo, not hi" : ""));
   if (!(got.t >= lo - ulps(lo) && got.t_contact <= hi + ulps(hi)))
     return fail(within, bracket, "the bracket must lie in the interval the step searches");
   if (!(got.t_contact - got.t <= tolerance + ulps(got.t_contact) + ulps(got.t)))
@@ -97,7 +102,8 @@ Check certify(const Scene& sc, const TimeOfImpact& got, double lo, double hi, do
     if (!clear.doubt)
       return fail("clear at t (the last clear time)", bracket,
                   "t must be the last clear time, but the bodies overlap at your t = " + fmt(got.t) + " (signed gap " +
-                      fmt(sc.signed_gap(got.t)) + "): bisection keeps the half whose ends differ, clear at lo and "
+                      fmt(sc.signed_gap(got.t)) +
+                      "): bisection keeps the half whose ends differ, clear at lo and "
                       "overlapping at hi, and returns t = lo");
     doubt = true;
   }
@@ -105,8 +111,8 @@ Check certify(const Scene& sc, const TimeOfImpact& got, double lo, double hi, do
   if (!contact.overlap) {
     if (!contact.doubt)
       return fail("overlapping at t_contact", bracket,
-                  "t_contact must be a time of overlap, but the bodies are clear at your t_contact = " + fmt(got.t_contact) +
-                      " (distance " + fmt(sc.distance(got.t_contact)) +
+                  "t_contact must be a time of overlap, but the bodies are clear at your t_contact = " +
+                      fmt(got.t_contact) + " (distance " + fmt(sc.distance(got.t_contact)) +
                       "): bisection keeps the half whose ends differ, clear at lo and overlapping at hi");
     doubt = true;
   }
@@ -118,7 +124,7 @@ Check certify(const Scene& sc, const TimeOfImpact& got, double lo, double hi, do
 // to how differently two programs may round their midpoints) one more or one fewer
 // passes; never on exact input.
 Check halvings(const TimeOfImpact& got, double width, double lo, double hi, double tolerance, Rules rules,
-              const std::string& cause) {
+               const std::string& cause) {
   int k = 0;
   while (std::ldexp(width, -k) > tolerance && k < 4096) ++k;
   const double band = 64 * DBL_EPSILON * std::max(std::abs(lo), std::abs(hi)) + 1e-12 * tolerance;
@@ -145,7 +151,8 @@ Outcome closest_point(const PointBox& in, const Vec3& got, Rules rules) {
   const double reach = (got - in.point).norm();
   (void)rules;  // a closest point is a construction: the same tolerance for every input
   if (off_box > tol)
-    return fail("a point of the box", fmt(got), "your point is " + fmt(off_box) + " outside the box (tolerance " + fmt(tol) + ")");
+    return fail("a point of the box", fmt(got),
+                "your point is " + fmt(off_box) + " outside the box (tolerance " + fmt(tol) + ")");
   if (std::abs(reach - exact) > tol)
     return fail("a point at distance " + fmt(exact) + " from p", fmt(got),
                 "your point is " + fmt(reach) + " from p; the nearest point of the box is " + fmt(exact) +
@@ -172,12 +179,15 @@ Outcome overlap_at(const MovingPairCase& in, bool got_t0, bool got_t1, Rules rul
     if (s.overlap) {
       why = "the posed bodies have a point in common at t = " + fmt(t) + " (signed gap " + fmt(gap) +
             "; sets are closed, touching counts): they overlap";
-      if (in.b.is_box) why += ". Is the box posed (centre moved, axes turned) and the sphere's centre clamped in the box's own axes?";
+      if (in.b.is_box)
+        why += ". Is the box posed (centre moved, axes turned) and the sphere's centre clamped in the box's own axes?";
     } else {
-      why = "the posed bodies are apart at t = " + fmt(t) + ", by " + fmt(gap) + ": they are clear (only a gap of 0 counts as touching)";
+      why = "the posed bodies are apart at t = " + fmt(t) + ", by " + fmt(gap) +
+            ": they are clear (only a gap of 0 counts as touching)";
       // A near miss, relative to the bodies or in absolute units: where a fixed epsilon bites.
       if (gap < 1e-6 * sc.scale_at(t) || gap < 1e-3)
-        why += "; a fixed epsilon in the comparison (any tolerance in absolute units) turns this near miss into a contact";
+        why +=
+            "; a fixed epsilon in the comparison (any tolerance in absolute units) turns this near miss into a contact";
     }
     return fail(s.overlap ? yes : no, got ? yes : no, why);
   }

@@ -18,9 +18,9 @@ using check::pass;
 // The header's sample times and the exact status at each, walked up to the first sample
 // that certainly overlaps.
 struct Samples {
-  std::vector<double> times;    // times[k] = t_k, k = 0..n
-  std::vector<Status> status;   // status[k] for k = 1..walked
-  int first_overlap = -1;       // the first k that certainly overlaps, or -1
+  std::vector<double> times;   // times[k] = t_k, k = 0..n
+  std::vector<Status> status;  // status[k] for k = 1..walked
+  int first_overlap = -1;      // the first k that certainly overlaps, or -1
 };
 
 Samples walk(const Scene& sc, const SearchTimes& T, int n) {
@@ -45,10 +45,12 @@ Outcome judge_sampled(const Scene& sc, const SearchTimes& T, int n, const Sample
   const int walked = s.first_overlap > 0 ? s.first_overlap : n;
   if (!got.hit) {
     if (s.first_overlap > 0)
-      return fail("a hit: sample " + std::to_string(s.first_overlap) + " at t = " + fmt(s.times[std::size_t(s.first_overlap)]) +
-                      " overlaps",
-                  summary(got), "point sampling tests every sample t_1, ..., t_n in order and stops at the first that "
-                                "overlaps: sample " + std::to_string(s.first_overlap) + " does");
+      return fail("a hit: sample " + std::to_string(s.first_overlap) +
+                      " at t = " + fmt(s.times[std::size_t(s.first_overlap)]) + " overlaps",
+                  summary(got),
+                  "point sampling tests every sample t_1, ..., t_n in order and stops at the first that "
+                  "overlaps: sample " +
+                      std::to_string(s.first_overlap) + " does");
     if (got.t != T.t1 || got.steps != n)
       return fail("no hit with t = t1 = " + fmt(T.t1) + " and steps = " + std::to_string(n), summary(got),
                   "with no overlapping sample, t = t1 and every sample counts as a step");
@@ -63,15 +65,18 @@ Outcome judge_sampled(const Scene& sc, const SearchTimes& T, int n, const Sample
   for (int j = 1; j < k; ++j) doubt = doubt || s.status[std::size_t(j)].doubt;
   const Status& at_k = s.status[std::size_t(k)];
   if (!at_k.overlap && !at_k.doubt)
-    return fail(first, summary(got), "sample " + std::to_string(k) + " at t = " + fmt(s.times[std::size_t(k)]) + " is clear");
+    return fail(first, summary(got),
+                "sample " + std::to_string(k) + " at t = " + fmt(s.times[std::size_t(k)]) + " is clear");
   doubt = doubt || at_k.doubt;
   const double lo = s.times[std::size_t(k - 1)], hi = s.times[std::size_t(k)];
   if (const Check o = certify(sc, got, lo, hi, T.tolerance, doubt)) return *o;
   int from_t0 = 0;  // the halvings of [t0, t_k]: what bisecting from the start costs
   while (std::ldexp(hi - T.t0, -from_t0) > T.tolerance && from_t0 < 4096) ++from_t0;
   const std::string cause = k > 1 && got.iterations == from_t0
-                                ? " (you bisected [t0, t_" + std::to_string(k) + "]: bisect only the first overlapping "
-                                  "sub-step [t_" + std::to_string(k - 1) + ", t_" + std::to_string(k) + "])"
+                                ? " (you bisected [t0, t_" + std::to_string(k) +
+                                      "]: bisect only the first overlapping "
+                                      "sub-step [t_" +
+                                      std::to_string(k - 1) + ", t_" + std::to_string(k) + "])"
                                 : "";
   if (const Check o = halvings(got, hi - lo, lo, hi, T.tolerance, rules, cause)) return *o;
   return settle(doubt);
@@ -109,7 +114,8 @@ Outcome substeps_for(const SubstepRule& in, int got, Rules rules) {
                : "the rule is strict, speed * step / n < size: n = " + std::to_string(r.n) +
                      " is the smallest n, since speed * step / size = " + fmt(ratio);
   if (r.n > 0 && got == r.n - 1 && !r.borderline && std::nearbyint(ratio) == got)
-    why += "; with n = " + std::to_string(got) + " a sub-step moves exactly the size, which is not smaller (floor + 1, not ceil)";
+    why += "; with n = " + std::to_string(got) +
+           " a sub-step moves exactly the size, which is not smaller (floor + 1, not ceil)";
   return fail(std::to_string(r.n), std::to_string(got), why);
 }
 
@@ -123,8 +129,10 @@ Outcome closing_speed(const MovingPairCase& in, double got) {
   const double va = body_speed(in.a, in.times.t0, in.times.t1), vb = body_speed(in.b, in.times.t0, in.times.t1);
   const double exact = va + vb, tol = 1e-9 * exact;
   if (std::abs(got - exact) <= tol) return pass();
-  std::string why = "two moving bodies close on each other at most at their relative speed, bounded by the sum of "
-                    "their max_speeds (each over its reach): " + fmt(va) + " + " + fmt(vb) + " = " + fmt(exact);
+  std::string why =
+      "two moving bodies close on each other at most at their relative speed, bounded by the sum of "
+      "their max_speeds (each over its reach): " +
+      fmt(va) + " + " + fmt(vb) + " = " + fmt(exact);
   if (std::abs(got - std::max(va, vb)) <= tol) why += "; yours is the faster body's speed alone";
   return fail(fmt(exact), fmt(got), why);
 }
@@ -152,12 +160,13 @@ Outcome tunnelling(const MovingPairCase& in, double got_speed, int got_substeps,
   // The demonstration itself: clear at both ends for certain, so the frame's samples
   // miss; a sample of the rule's sub-steps overlaps for certain, so they find it.
   const Status start = sc.at(in.times.t0);
-  const bool tunnels = !start.overlap && !start.doubt && ends.first_overlap < 0 && !ends.status[1].doubt &&
-                       fine.first_overlap > 0;
+  const bool tunnels =
+      !start.overlap && !start.doubt && ends.first_overlap < 0 && !ends.status[1].doubt && fine.first_overlap > 0;
   // (A sub-step count on the rule's boundary, one more or one fewer, does not make the
   // demonstration doubtful: the sampling it leads to is judged on its own.)
   if (!tunnels) return ambiguous();
-  return frame.verdict == Outcome::Verdict::ambiguous || sub.verdict == Outcome::Verdict::ambiguous ? ambiguous() : pass();
+  return frame.verdict == Outcome::Verdict::ambiguous || sub.verdict == Outcome::Verdict::ambiguous ? ambiguous()
+                                                                                                    : pass();
 }
 
 // ---- Step 4 ---------------------------------------------------------------------------------
@@ -173,7 +182,8 @@ Outcome distance_at(const MovingPairCase& in, double got_t0, double got_t1) {
                       " (tolerance 1e-9 S = " + fmt(tol) + ")";
     if (radii > 0 && std::abs(got - exact - radii) <= tol + 1e-9 * radii)
       why += ": that is the radii " + fmt(radii) + ", as if measured between centres";
-    else if (exact == 0 && got < 0) why += ": overlapping bodies are at distance 0, never negative";
+    else if (exact == 0 && got < 0)
+      why += ": overlapping bodies are at distance 0, never negative";
     return fail(fmt(exact) + " at t = " + fmt(t), fmt(got), why);
   }
   return pass();
@@ -195,7 +205,8 @@ Outcome advance(const AdvancedPair& in, const TimeOfImpact& got, Rules rules) {
     if (got.t != T.t1) return fail("no hit with t = t1 = " + fmt(T.t1), summary(got), "with no hit, t is t1");
     const Status end = sc.at(T.t1);
     if (end.overlap && !end.doubt)
-      return fail("a hit (the bodies overlap at t1 = " + fmt(T.t1) + ")", summary(got), "the advance to t1 lands in overlap");
+      return fail("a hit (the bodies overlap at t1 = " + fmt(T.t1) + ")", summary(got),
+                  "the advance to t1 lands in overlap");
     doubt = doubt || end.doubt;
   }
   // Conservative: no contact that lasts longer than the tolerance may lie before t. The

@@ -75,7 +75,8 @@ class Scene {
     const RigidTransform pa = pair_.motion_a(t), pb = pair_.motion_b(t);
     double s = std::max((pa * case_.a.sphere.center).cwiseAbs().maxCoeff(), case_.a.sphere.radius);
     if (case_.b.is_box)
-      s = std::max({s, (pb * case_.b.box.center).cwiseAbs().maxCoeff(), case_.b.box.half_extents.cwiseAbs().maxCoeff()});
+      s = std::max(
+          {s, (pb * case_.b.box.center).cwiseAbs().maxCoeff(), case_.b.box.half_extents.cwiseAbs().maxCoeff()});
     else
       s = std::max({s, (pb * case_.b.sphere.center).cwiseAbs().maxCoeff(), case_.b.sphere.radius});
     return s;
@@ -124,7 +125,6 @@ class Scene {
   Rules rules_;
   double delta_;
 };
-
 
 using Check = std::optional<Outcome>;  // a failure, or nothing
 

@@ -102,8 +102,7 @@ auto expect_start(double t0) {
 }
 
 // A search that did not finish: say the header's bound on its loop, with the numbers.
-template <class Search>
-TimeOfImpact bounded(Search search, const std::string& bound) {
+template <class Search> TimeOfImpact bounded(Search search, const std::string& bound) {
   try {
     return search();
   } catch (const remote::Failed& e) {
@@ -114,12 +113,14 @@ TimeOfImpact bounded(Search search, const std::string& bound) {
 std::string halving_bound(const SearchTimes& T) {
   const double rounds = std::ceil(std::log2(std::max(1.0, (T.t1 - T.t0) / T.tolerance))) + 2;
   return "Bisection halves while hi - lo > tolerance, and each halving halves the bracket: at most log2((t1 - t0) / "
-         "tolerance) + 2 = " + fmt(rounds) + " rounds here";
+         "tolerance) + 2 = " +
+         fmt(rounds) + " rounds here";
 }
 
 // The searches on a case, by query name.
 TimeOfImpact run_bisect(const MovingPairCase& in) {
-  return bounded([&] { return bisect(pair_of(in), in.times.t0, in.times.t1, in.times.tolerance); }, halving_bound(in.times));
+  return bounded([&] { return bisect(pair_of(in), in.times.t0, in.times.t1, in.times.tolerance); },
+                 halving_bound(in.times));
 }
 TimeOfImpact run_sampled(const SampledPair& in) {
   const SearchTimes& T = in.pair.times;
@@ -131,8 +132,9 @@ TimeOfImpact run_advance(const AdvancedPair& in) {
   const SearchTimes& T = in.pair.times;
   return bounded([&] { return advance(pair_of(in.pair), T.t0, T.t1, judge::closing_speed_of(in), T.tolerance); },
                  "Conservative advancement moves at least one tolerance per step (next = t + max(d / v, tolerance)): "
-                 "at most (t1 - t0) / tolerance + 1 = " + fmt(std::ceil((T.t1 - T.t0) / T.tolerance) + 1) +
-                     " steps here, then one bisection. " + halving_bound(T));
+                 "at most (t1 - t0) / tolerance + 1 = " +
+                     fmt(std::ceil((T.t1 - T.t0) / T.tolerance) + 1) + " steps here, then one bisection. " +
+                     halving_bound(T));
 }
 // The pair's closing speed, by the code under test.
 double run_closing_speed(const MovingPairCase& in) {
@@ -175,12 +177,14 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
     e.near("sphere centre", s.center, Vec3(5, 1, 0), 1e-12);
     e.near("sphere radius", s.radius, 2, 0);
     e.near("box centre", b.center, Vec3(5, 1, 0), 1e-12);
-    const bool turned = (Vec3(b.axes.col(0)) - Vec3(0, 1, 0)).norm() <= 1e-12 && (Vec3(b.axes.col(1)) - Vec3(-1, 0, 0)).norm() <= 1e-12;
+    const bool turned =
+        (Vec3(b.axes.col(0)) - Vec3(0, 1, 0)).norm() <= 1e-12 && (Vec3(b.axes.col(1)) - Vec3(-1, 0, 0)).norm() <= 1e-12;
     e.that("box axes 0, 1", turned, fmt(Vec3(b.axes.col(0))) + ", " + fmt(Vec3(b.axes.col(1))), "(0, 1, 0), (-1, 0, 0)",
            "the quarter turn takes axis x to y");
     e.near("box half extents", b.half_extents, Vec3(2, 1, 1), 0);
-    return because(e, "a pose moves a centre by the whole pose and turns a box's axes by its rotation, "
-                      "pose.linear() * axes; sizes stay");
+    return because(e,
+                   "a pose moves a centre by the whole pose and turns a box's axes by its rotation, "
+                   "pose.linear() * axes; sizes stay");
   });
 
   const std::string closed = "sets are closed, touching counts: overlap <=> |c_a - c_b|^2 <= (r_a + r_b)^2";
@@ -193,7 +197,8 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
     };
   };
   check::example(query::overlap_spheres, "5 apart, radii 1 and 3: clear", Sphere{{3, 4, 0}, 3}, spheres(false));
-  check::example(query::overlap_spheres, "5 apart, radii 1 and 4: touching counts", Sphere{{3, 4, 0}, 4}, spheres(true));
+  check::example(query::overlap_spheres, "5 apart, radii 1 and 4: touching counts", Sphere{{3, 4, 0}, 4},
+                 spheres(true));
   check::example(query::overlap_spheres, "5 apart, radii 1 and 5: overlap", Sphere{{3, 4, 0}, 5}, spheres(true));
 
   const Box wall{{4, 0, 0}, Mat3::Identity(), {4, 4, 4}};
@@ -208,7 +213,8 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   check::example(query::closest_point, "inside: the point itself", PointBox{{1, 2, 3}, wall}, nearest({1, 2, 3}));
   // A box turned a quarter turn: long along y. Clamping world coordinates would give (3, 1, 0).
   const Box turned{Vec3::Zero(), quarter_turn_then(Vec3::Zero()).linear(), {4, 1, 1}};
-  check::example(query::closest_point, "a turned box: clamp in its own axes", PointBox{{3, 2, 0}, turned}, nearest({1, 2, 0}));
+  check::example(query::closest_point, "a turned box: clamp in its own axes", PointBox{{3, 2, 0}, turned},
+                 nearest({1, 2, 0}));
 
   const auto sphere_box = [wall](bool expected) {
     return [wall, expected](const Sphere& a) {
@@ -220,8 +226,10 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
       return e.outcome();
     };
   };
-  check::example(query::overlap_sphere_box, "squared distance 10, radius 3: clear", Sphere{{-3, 2, 5}, 3}, sphere_box(false));
-  check::example(query::overlap_sphere_box, "squared distance 10, radius 4: overlap", Sphere{{-3, 2, 5}, 4}, sphere_box(true));
+  check::example(query::overlap_sphere_box, "squared distance 10, radius 3: clear", Sphere{{-3, 2, 5}, 3},
+                 sphere_box(false));
+  check::example(query::overlap_sphere_box, "squared distance 10, radius 4: overlap", Sphere{{-3, 2, 5}, 4},
+                 sphere_box(true));
   check::example(query::overlap_sphere_box, "touching the face x = 0", Sphere{{-2, 0, 0}, 2}, sphere_box(true));
 
   const auto at = [](bool at_t0, bool at_t1) {
@@ -236,19 +244,19 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
       return e.outcome();
     };
   };
-  check::example(query::overlap_at, "the ball at x = -1.125, then at x = -0.75", ball_and_wall(0.40625, 0.4375, 1), at(false, true));
+  check::example(query::overlap_at, "the ball at x = -1.125, then at x = -0.75", ball_and_wall(0.40625, 0.4375, 1),
+                 at(false, true));
   // A bar 8 long spins a quarter turn about z in one unit of time, and sweeps into a
   // resting ball 3 from its middle.
   MovingBody bar = block({4, 1, 1}, resting_at(Vec3::Zero()));
   bar.motion.spin = std::acos(-1.0) / 2;
-  check::example(query::overlap_at, "a spinning bar reaches the ball", scene(ball(1, resting_at({0, 3, 0})), bar, 0, 1, 1),
-                 at(false, true));
+  check::example(query::overlap_at, "a spinning bar reaches the ball",
+                 scene(ball(1, resting_at({0, 3, 0})), bar, 0, 1, 1), at(false, true));
 }
 
 TEST_CASE(LABKIT_STEP(L04S1) ": random cases", "[lab04][step1][oracle]") {
-  check::random_cases(query::closest_point, gen::point_box(), [](const PointBox& in) {
-    return judge::closest_point(in, closest_point(in.box, in.point));
-  });
+  check::random_cases(query::closest_point, gen::point_box(),
+                      [](const PointBox& in) { return judge::closest_point(in, closest_point(in.box, in.point)); });
   check::random_cases(query::overlap_at, gen::moving_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     return judge::overlap_at(in, overlap_at(pair, in.times.t0), overlap_at(pair, in.times.t1));
@@ -265,23 +273,22 @@ TEST_CASE(LABKIT_STEP(L04S2) ": worked examples", "[lab04][step2]") {
   // After the two ends, the times asked are the lecture's midpoints, in its order.
   check::example(query::bisect, "the lecture's midpoints, seen by a recording motion", ball_and_wall(0, 1, 1.0 / 32),
                  [](const MovingPairCase& in) {
-                   MovingPair pair = pair_of(in);
-                   const RecordingMotion recording{motion_of(in.a.motion)};
-                   pair.motion_a = recording;
-                   const TimeOfImpact got = bisect(pair, in.times.t0, in.times.t1, in.times.tolerance);
-                   std::vector<double> midpoints;
-                   for (double t : *recording.asked)
-                     if (t != in.times.t0 && t != in.times.t1 &&
-                         std::find(midpoints.begin(), midpoints.end(), t) == midpoints.end())
-                       midpoints.push_back(t);
-                   Expect e;
-                   e.equal("times asked besides t0 and t1", int(midpoints.size()), 5);
-                   const double lecture[] = {0.5, 0.25, 0.375, 0.4375, 0.40625};
-                   for (std::size_t k = 0; k < std::min<std::size_t>(5, midpoints.size()); ++k)
-                     e.near("midpoint " + std::to_string(k + 1), midpoints[k], lecture[k], 0);
-                   e.near("t", got.t, 0.40625, 0);
-                   return e.outcome();
-                 });
+    MovingPair pair = pair_of(in);
+    const RecordingMotion recording{motion_of(in.a.motion)};
+    pair.motion_a = recording;
+    const TimeOfImpact got = bisect(pair, in.times.t0, in.times.t1, in.times.tolerance);
+    std::vector<double> midpoints;
+    for (double t : *recording.asked)
+      if (t != in.times.t0 && t != in.times.t1 && std::find(midpoints.begin(), midpoints.end(), t) == midpoints.end())
+        midpoints.push_back(t);
+    Expect e;
+    e.equal("times asked besides t0 and t1", int(midpoints.size()), 5);
+    const double lecture[] = {0.5, 0.25, 0.375, 0.4375, 0.40625};
+    for (std::size_t k = 0; k < std::min<std::size_t>(5, midpoints.size()); ++k)
+      e.near("midpoint " + std::to_string(k + 1), midpoints[k], lecture[k], 0);
+    e.near("t", got.t, 0.40625, 0);
+    return e.outcome();
+  });
   check::example(query::bisect, "a coarse tolerance: two iterations", ball_and_wall(0, 1, 0.25),
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_hit(0.25, 0.5, 0, 2)));
   check::example(query::bisect, "already overlapping at t0", ball_and_wall(0.5, 1, 1.0 / 32),
@@ -300,11 +307,11 @@ TEST_CASE(LABKIT_STEP(L04S2) ": random cases", "[lab04][step2][oracle]") {
 TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
   check::example(query::smallest_size, "a sphere's diameter, a box's thinnest extent", bullet_and_window(1.0 / 64),
                  [](const MovingPairCase& in) {
-                   Expect e;
-                   e.near("bullet", smallest_size(shape_of(in.a)), 0.25, 0);
-                   e.near("window", smallest_size(shape_of(in.b)), 0.5, 0);
-                   return e.outcome();
-                 });
+    Expect e;
+    e.near("bullet", smallest_size(shape_of(in.a)), 0.25, 0);
+    e.near("window", smallest_size(shape_of(in.b)), 0.5, 0);
+    return e.outcome();
+  });
   const auto rule = [](int expected) {
     return [expected](const SubstepRule& in) {
       const int got = substeps_for(in.max_speed, in.step, in.smallest_size);
@@ -317,7 +324,8 @@ TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
   };
   check::example(query::substeps_for, "6 per unit, size 1/4: 24 is not enough, 25", SubstepRule{6, 1, 0.25}, rule(25));
   check::example(query::substeps_for, "6 per unit, size 0.3: 21", SubstepRule{6, 1, 0.3}, rule(21));
-  check::example(query::substeps_for, "a step of 1/64 at 30 per unit, size 1/8: 3.75, so 4", SubstepRule{30, 1.0 / 64, 0.125}, rule(4));
+  check::example(query::substeps_for, "a step of 1/64 at 30 per unit, size 1/8: 3.75, so 4",
+                 SubstepRule{30, 1.0 / 64, 0.125}, rule(4));
   check::example(query::substeps_for, "not moving: 1", SubstepRule{0, 1, 0.25}, rule(1));
   check::example(query::substeps_for, "a point can always be missed: 0", SubstepRule{6, 1, 0}, rule(0));
   check::example(query::substeps_for, "more than 2^20 sub-steps: 0", SubstepRule{1e9, 1, 1e-3}, rule(0));
@@ -326,7 +334,8 @@ TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
   MovingPairCase head_on = bullet_and_window(1.0 / 64);
   head_on.a.motion = moving({-1.5, 0, 0}, {3, 0, 0});
   head_on.b.motion = moving({1.5, 0, 0}, {-3, 0, 0});
-  check::example(query::closing_speed, "the bullet and the window head on, 3 each: 6", head_on, [](const MovingPairCase& in) {
+  check::example(query::closing_speed, "the bullet and the window head on, 3 each: 6", head_on,
+                 [](const MovingPairCase& in) {
     const double got = run_closing_speed(in);
     const Outcome o = judge::closing_speed(in, got);
     if (o.verdict == Outcome::Verdict::fail) return o;
@@ -334,9 +343,11 @@ TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
     e.near("closing_speed", got, 6, 0);
     return e.outcome();
   });
-  check::example(query::sample_then_bisect, "the frame's ends only: the bullet tunnels", SampledPair{bullet_and_window(1.0 / 64), 1},
+  check::example(query::sample_then_bisect, "the frame's ends only: the bullet tunnels",
+                 SampledPair{bullet_and_window(1.0 / 64), 1},
                  both<SampledPair>(run_sampled, judge_sampled, expect_no_hit(1, 1)));
-  check::example(query::sample_then_bisect, "25 sub-steps: sample 11 at t = 0.44 overlaps", SampledPair{bullet_and_window(1.0 / 64), 25},
+  check::example(query::sample_then_bisect, "25 sub-steps: sample 11 at t = 0.44 overlaps",
+                 SampledPair{bullet_and_window(1.0 / 64), 25},
                  both<SampledPair>(run_sampled, judge_sampled, expect_hit(0.43, 0.44, 11, 2)));
   const auto tunnels = [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
@@ -391,7 +402,8 @@ TEST_CASE(LABKIT_STEP(L04S4) ": worked examples", "[lab04][step4]") {
   };
   check::example(query::distance_sphere_box, "sqrt(10) - 3", Sphere{{-3, 2, 5}, 3}, sphere_box(std::sqrt(10.0) - 3));
   check::example(query::distance_sphere_box, "overlapping: 0", Sphere{{-3, 2, 5}, 4}, sphere_box(0));
-  check::example(query::distance_at, "the ball at t = 0 and at t = 0.3125", ball_and_wall(0, 0.3125, 1), [](const MovingPairCase& in) {
+  check::example(query::distance_at, "the ball at t = 0 and at t = 0.3125", ball_and_wall(0, 0.3125, 1),
+                 [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     Expect e;
     e.near("distance_at(0)", distance_at(pair, 0), 5, 1e-12);
@@ -400,13 +412,15 @@ TEST_CASE(LABKIT_STEP(L04S4) ": worked examples", "[lab04][step4]") {
   });
 
   // The ball closes at 12; advancing with the bound 16 leaves 1/4 of the gap each step.
-  check::example(query::advance, "the ball, bound 16: gaps 5, 1.25, 0.3125, ...", AdvancedPair{ball_and_wall(0, 1, 1.0 / 256), 16.0 / 12},
+  check::example(query::advance, "the ball, bound 16: gaps 5, 1.25, 0.3125, ...",
+                 AdvancedPair{ball_and_wall(0, 1, 1.0 / 256), 16.0 / 12},
                  both<AdvancedPair>(run_advance, judge_advance,
                                     expect_hit(0.4150390625, 0.4189453125, 5, 0,
                                                "each advance jumps by the time d / v, the gap over the closing speed "
                                                "(5 / 16, then 1.25 / 16, ...), at least one tolerance: 5 advances")));
   // The exact bound 6 lands on the first touch, t = 7/16; bisection finishes.
-  check::example(query::advance, "the bullet, exact bound 6: no tunnelling", AdvancedPair{bullet_and_window(1.0 / 64), 1},
+  check::example(query::advance, "the bullet, exact bound 6: no tunnelling",
+                 AdvancedPair{bullet_and_window(1.0 / 64), 1},
                  both<AdvancedPair>(run_advance, judge_advance, expect_hit(0.423828125, 0.4375, 1, 5)));
 }
 
@@ -437,25 +451,29 @@ TEST_CASE(LABKIT_STEP(L04S5) ": touching, grazing, zero sizes", "[lab04][step5]"
   const MovingBody cube = block({2, 2, 2}, resting_at(Vec3::Zero()));
   const MovingBody square = block({0, 2, 2}, resting_at(Vec3::Zero()));  // a flat box
   constexpr auto o = query::robust_overlap_at;
-  check::example(o, "a sphere touching an edge, (3, 4) / 5 from it", still(ball(5, resting_at({5, 6, 0})), cube), overlapping(true));
+  check::example(o, "a sphere touching an edge, (3, 4) / 5 from it", still(ball(5, resting_at({5, 6, 0})), cube),
+                 overlapping(true));
   check::example(o, "the same sphere, radius 4", still(ball(4, resting_at({5, 6, 0})), cube), overlapping(false));
-  check::example(o, "a sphere touching a corner, (2, 3, 6) / 7 from it", still(ball(7, resting_at({4, 5, 8})), cube), overlapping(true));
+  check::example(o, "a sphere touching a corner, (2, 3, 6) / 7 from it", still(ball(7, resting_at({4, 5, 8})), cube),
+                 overlapping(true));
   check::example(o, "a point on a face", still(ball(0, resting_at({2, 1, -1})), cube), overlapping(true));
   check::example(o, "a point on a flat box", still(ball(0, resting_at({0, 1, 1})), square), overlapping(true));
   check::example(o, "a sphere touching a flat box", still(ball(1, resting_at({1, 1, 1})), square), overlapping(true));
   // A box 2^-19 wide and a point 2^-20 beyond its face: the squared gap is 2^-40, far
   // below a fuzzy 1e-9, and still not zero.
   const double tiny = std::ldexp(1.0, -20);
-  check::example(o, "a near miss at the scale 1e-6", still(ball(0, resting_at({2 * tiny, 0, 0})), block({tiny, tiny, tiny}, resting_at(Vec3::Zero()))),
+  check::example(o, "a near miss at the scale 1e-6",
+                 still(ball(0, resting_at({2 * tiny, 0, 0})), block({tiny, tiny, tiny}, resting_at(Vec3::Zero()))),
                  overlapping(false));
-  check::example(o, "spheres (3, 4, 0) apart, radii 2 and 3: touching", still(ball(2, resting_at(Vec3::Zero())), ball(3, resting_at({3, 4, 0}))),
+  check::example(o, "spheres (3, 4, 0) apart, radii 2 and 3: touching",
+                 still(ball(2, resting_at(Vec3::Zero())), ball(3, resting_at({3, 4, 0}))),
                  [&](const MovingPairCase& in) {
-                   const Outcome touch = overlapping(true)(in);
-                   if (touch.verdict == Outcome::Verdict::fail) return touch;
-                   Expect e;
-                   e.near("distance_at(0)", distance_at(pair_of(in), 0), 0, 0);
-                   return e.outcome();
-                 });
+    const Outcome touch = overlapping(true)(in);
+    if (touch.verdict == Outcome::Verdict::fail) return touch;
+    Expect e;
+    e.near("distance_at(0)", distance_at(pair_of(in), 0), 0, 0);
+    return e.outcome();
+  });
 
   constexpr auto q = query::robust_bisect;
   // x(t) = -4 + 3 t touches the wall's face (x = -1) exactly at t1 = 1, and only there.
@@ -467,12 +485,14 @@ TEST_CASE(LABKIT_STEP(L04S5) ": touching, grazing, zero sizes", "[lab04][step5]"
   check::example(q, "touching at t0", scene(ball(1, moving({-1, 0, 0}, {2, 0, 0})), kWall, 0, 1, 0.125),
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_start(0)));
   // A ball along y = 2 grazes a ball of radius 1 at the origin: they touch only at t = 1/2.
-  const MovingPairCase graze = scene(ball(1, moving({-4, 2, 0}, {8, 0, 0})), ball(1, resting_at(Vec3::Zero())), 0, 1, 0.0625);
+  const MovingPairCase graze =
+      scene(ball(1, moving({-4, 2, 0}, {8, 0, 0})), ball(1, resting_at(Vec3::Zero())), 0, 1, 0.0625);
   check::example(q, "a graze between the ends is not seen", graze,
                  both<MovingPairCase>(run_bisect, exact_bisect, expect_no_hit(1, 0)));
   check::example(query::robust_sample_then_bisect, "a graze at a sample time is a contact", SampledPair{graze, 2},
                  both<SampledPair>(run_sampled, exact_sampled, expect_hit(0.4375, 0.5, 1, 3)));
-  check::example(query::robust_advance, "touching at t0: nothing to advance", AdvancedPair{scene(ball(1, moving({-1, 0, 0}, {2, 0, 0})), kWall, 0, 1, 0.125), 1},
+  check::example(query::robust_advance, "touching at t0: nothing to advance",
+                 AdvancedPair{scene(ball(1, moving({-1, 0, 0}, {2, 0, 0})), kWall, 0, 1, 0.125), 1},
                  both<AdvancedPair>(run_advance, exact_advance, expect_start(0)));
   check::example(query::robust_advance, "nothing moves: one advance to t1",
                  AdvancedPair{scene(ball(1, resting_at({-3, 0, 0})), kWall, 0, 1, 0.125), 1},
@@ -506,8 +526,7 @@ TEST_CASE(LABKIT_STEP(L04S5) ": random exact cases", "[lab04][step5][oracle]") {
 
 namespace {
 
-template <class Call>
-void rejects(const std::string& what, Call call, const std::string& names) {
+template <class Call> void rejects(const std::string& what, Call call, const std::string& names) {
   INFO(what);
   try {
     call();
@@ -540,60 +559,133 @@ TEST_CASE("L04 preconditions: invalid input is rejected, naming the argument", "
            {"bisect", [&](double t0, double t1, double tol) { bisect(good, t0, t1, tol); }},
            {"sample_then_bisect", [&](double t0, double t1, double tol) { sample_then_bisect(good, t0, t1, 4, tol); }},
            {"advance", [&](double t0, double t1, double tol) { advance(good, t0, t1, 12, tol); }}}) {
-    rejects(search + ": tolerance 0 (halving forever)", [&] { run(0, 1, 0); }, search + ": tolerance");
-    rejects(search + ": tolerance -1", [&] { run(0, 1, -1); }, search + ": tolerance");
-    rejects(search + ": tolerance NaN", [&] { run(0, 1, nan); }, search + ": tolerance");
-    rejects(search + ": tolerance infinite", [&] { run(0, 1, inf); }, search + ": tolerance");
-    rejects(search + ": tolerance below the spacing of doubles near t", [&] { run(1e6, 1e6 + 1, 1e-20); }, search + ": tolerance");
-    rejects(search + ": t0 NaN", [&] { run(nan, 1, 0.25); }, search + ": t0");
-    rejects(search + ": t1 infinite", [&] { run(0, inf, 0.25); }, search + ": t1");
-    rejects(search + ": t0 > t1", [&] { run(1, 0, 0.25); }, search + ": t0 <= t1");
-    rejects(search + ": t1 - t0 overflows", [&] { run(-1e308, 1e308, 1e300); }, search + ": t1 - t0");
+    rejects(
+        search + ": tolerance 0 (halving forever)", [&] { run(0, 1, 0); }, search + ": tolerance");
+    rejects(
+        search + ": tolerance -1", [&] { run(0, 1, -1); }, search + ": tolerance");
+    rejects(
+        search + ": tolerance NaN", [&] { run(0, 1, nan); }, search + ": tolerance");
+    rejects(
+        search + ": tolerance infinite", [&] { run(0, 1, inf); }, search + ": tolerance");
+    rejects(
+        search + ": tolerance below the spacing of doubles near t", [&] { run(1e6, 1e6 + 1, 1e-20); },
+        search + ": tolerance");
+    rejects(
+        search + ": t0 NaN", [&] { run(nan, 1, 0.25); }, search + ": t0");
+    rejects(
+        search + ": t1 infinite", [&] { run(0, inf, 0.25); }, search + ": t1");
+    rejects(
+        search + ": t0 > t1", [&] { run(1, 0, 0.25); }, search + ": t0 <= t1");
+    rejects(
+        search + ": t1 - t0 overflows", [&] { run(-1e308, 1e308, 1e300); }, search + ": t1 - t0");
   }
-  rejects("sample_then_bisect: 0 sub-steps", [&] { sample_then_bisect(good, 0, 1, 0, 0.25); }, "sample_then_bisect: substeps");
-  rejects("sample_then_bisect: -3 sub-steps", [&] { sample_then_bisect(good, 0, 1, -3, 0.25); }, "sample_then_bisect: substeps");
-  rejects("advance: a negative speed bound", [&] { advance(good, 0, 1, -1, 0.25); }, "advance: max_closing_speed");
-  rejects("advance: a NaN speed bound", [&] { advance(good, 0, 1, nan, 0.25); }, "advance: max_closing_speed");
+  rejects(
+      "sample_then_bisect: 0 sub-steps", [&] { sample_then_bisect(good, 0, 1, 0, 0.25); },
+      "sample_then_bisect: substeps");
+  rejects(
+      "sample_then_bisect: -3 sub-steps", [&] { sample_then_bisect(good, 0, 1, -3, 0.25); },
+      "sample_then_bisect: substeps");
+  rejects(
+      "advance: a negative speed bound", [&] { advance(good, 0, 1, -1, 0.25); }, "advance: max_closing_speed");
+  rejects(
+      "advance: a NaN speed bound", [&] { advance(good, 0, 1, nan, 0.25); }, "advance: max_closing_speed");
 
   // The bodies, in every function that takes one.
-  rejects("a negative radius", [&] { bisect(with_ball({Vec3::Zero(), -1}), 0, 1, 0.25); }, "bisect: pair.a.radius");
-  rejects("a NaN radius", [&] { overlap_at(with_ball({Vec3::Zero(), nan}), 0); }, "overlap_at: pair.a.radius");
-  rejects("a NaN centre", [&] { distance_at(with_ball({{nan, 0, 0}, 1}), 0); }, "distance_at: pair.a.center");
-  rejects("a negative half extent", [&] { advance(with_box({wall.center, wall.axes, {4, -1, 4}}), 0, 1, 12, 0.25); },
-          "advance: pair.b.half_extents");
-  rejects("a NaN half extent", [&] { smallest_size(shape_of(Box{wall.center, wall.axes, {nan, 4, 4}})); },
-          "smallest_size: shape.half_extents");
-  rejects("NaN box axes", [&] { sample_then_bisect(with_box({wall.center, Mat3::Constant(nan), wall.half_extents}), 0, 1, 2, 0.25); },
-          "sample_then_bisect: pair.b.axes");
-  rejects("overlap: a negative radius", [] { overlap(Sphere{Vec3::Zero(), -1}, Sphere{Vec3::Zero(), 1}); }, "overlap: a.radius");
-  rejects("overlap: an infinite centre", [&] { overlap(Sphere{{inf, 0, 0}, 1}, wall); }, "overlap: a.center");
-  rejects("distance: a NaN radius", [] { distance(Sphere{Vec3::Zero(), 1}, Sphere{Vec3::Zero(), nan}); }, "distance: b.radius");
-  rejects("distance: a negative half extent", [] { distance(Sphere{Vec3::Zero(), 1}, Box{Vec3::Zero(), Mat3::Identity(), {-1, 1, 1}}); },
-          "distance: b.half_extents");
-  rejects("closest_point: a NaN point", [&] { closest_point(wall, Vec3(nan, 0, 0)); }, "closest_point: p");
-  rejects("overlap_at: a NaN time", [&] { overlap_at(good, nan); }, "overlap_at: t");
+  rejects(
+      "a negative radius",
+      [&] {
+    bisect(with_ball({Vec3::Zero(), -1}), 0, 1, 0.25);
+      },
+      "bisect: pair.a.radius");
+  rejects(
+      "a NaN radius",
+      [&] {
+    overlap_at(with_ball({Vec3::Zero(), nan}), 0);
+      },
+      "overlap_at: pair.a.radius");
+  rejects(
+      "a NaN centre",
+      [&] {
+    distance_at(with_ball({{nan, 0, 0}, 1}), 0);
+      },
+      "distance_at: pair.a.center");
+  rejects(
+      "a negative half extent",
+      [&] {
+    advance(with_box({wall.center, wall.axes, {4, -1, 4}}), 0, 1, 12, 0.25);
+      },
+      "advance: pair.b.half_extents");
+  rejects(
+      "a NaN half extent",
+      [&] {
+    smallest_size(shape_of(Box{wall.center, wall.axes, {nan, 4, 4}}));
+      },
+      "smallest_size: shape.half_extents");
+  rejects(
+      "NaN box axes",
+      [&] {
+    sample_then_bisect(with_box({wall.center, Mat3::Constant(nan), wall.half_extents}), 0, 1, 2, 0.25);
+      },
+      "sample_then_bisect: pair.b.axes");
+  rejects(
+      "overlap: a negative radius",
+      [] {
+    overlap(Sphere{Vec3::Zero(), -1}, Sphere{Vec3::Zero(), 1});
+      },
+      "overlap: a.radius");
+  rejects(
+      "overlap: an infinite centre",
+      [&] {
+    overlap(Sphere{{inf, 0, 0}, 1}, wall);
+      },
+      "overlap: a.center");
+  rejects(
+      "distance: a NaN radius",
+      [] {
+    distance(Sphere{Vec3::Zero(), 1}, Sphere{Vec3::Zero(), nan});
+      },
+      "distance: b.radius");
+  rejects(
+      "distance: a negative half extent",
+      [] {
+    distance(Sphere{Vec3::Zero(), 1}, Box{Vec3::Zero(), Mat3::Identity(), {-1, 1, 1}});
+      },
+      "distance: b.half_extents");
+  rejects(
+      "closest_point: a NaN point", [&] { closest_point(wall, Vec3(nan, 0, 0)); }, "closest_point: p");
+  rejects(
+      "overlap_at: a NaN time", [&] { overlap_at(good, nan); }, "overlap_at: t");
 
   // The motions: a NaN velocity poses the body nowhere.
   MotionParameters nan_velocity = moving({-6, 0, 0}, {nan, 0, 0});
   MovingPair lost = good;
   lost.motion_a = motion_of(nan_velocity);
-  rejects("a motion that returns a NaN pose", [&] { bisect(lost, 0, 1, 0.25); }, "pair.motion_a");
-  rejects("closing_speed: a NaN velocity", [&] {
+  rejects(
+      "a motion that returns a NaN pose", [&] { bisect(lost, 0, 1, 0.25); }, "pair.motion_a");
+  rejects(
+      "closing_speed: a NaN velocity",
+      [&] {
     closing_speed(good.a, motion_of(nan_velocity), good.b, motion_of(resting_at({4, 0, 0})), 0, 1);
-  }, "closing_speed: motion_a");
-  rejects("closing_speed: t0 > t1", [&] { closing_speed(good.a, StandardMotion{}, good.b, StandardMotion{}, 1, 0); },
-          "closing_speed: t0 <= t1");
+      },
+      "closing_speed: motion_a");
+  rejects(
+      "closing_speed: t0 > t1", [&] { closing_speed(good.a, StandardMotion{}, good.b, StandardMotion{}, 1, 0); },
+      "closing_speed: t0 <= t1");
 
   // The sub-step rule's numbers.
-  rejects("substeps_for: a negative speed", [] { substeps_for(-6, 1, 0.25); }, "substeps_for: closing_speed");
-  rejects("substeps_for: an infinite speed", [] { substeps_for(inf, 1, 0.25); }, "substeps_for: closing_speed");
-  rejects("substeps_for: a NaN step", [] { substeps_for(6, nan, 0.25); }, "substeps_for: step");
-  rejects("substeps_for: a negative size", [] { substeps_for(6, 1, -0.25); }, "substeps_for: smallest_size");
+  rejects(
+      "substeps_for: a negative speed", [] { substeps_for(-6, 1, 0.25); }, "substeps_for: closing_speed");
+  rejects(
+      "substeps_for: an infinite speed", [] { substeps_for(inf, 1, 0.25); }, "substeps_for: closing_speed");
+  rejects(
+      "substeps_for: a NaN step", [] { substeps_for(6, nan, 0.25); }, "substeps_for: step");
+  rejects(
+      "substeps_for: a negative size", [] { substeps_for(6, 1, -0.25); }, "substeps_for: smallest_size");
 
   // What the header allows, at its edges, is answered.
   CHECK(bisect(good, 0.5, 0.5, 1.0 / 32).overlapping_at_start);  // t0 = t1
   CHECK(bisect(good, 0, 0.25, 0.25).hit == false);
   CHECK_NOTHROW(bisect(good, 1e6, 1e6 + 1, std::ldexp(1e6 + 1, -50)));  // the finest tolerance allowed
-  CHECK(substeps_for(6, 1, 0) == 0);  // a size of 0: the documented 0
-  CHECK(advance(good, 0, 0.25, 0, 1.0 / 32).steps == 1);  // a bound of 0 jumps to t1
+  CHECK(substeps_for(6, 1, 0) == 0);                                    // a size of 0: the documented 0
+  CHECK(advance(good, 0, 0.25, 0, 1.0 / 32).steps == 1);                // a bound of 0 jumps to t1
 }

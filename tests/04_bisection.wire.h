@@ -14,15 +14,30 @@
 namespace labkit::lab04 {
 
 template <class V> void fields(TimeOfImpact& r, V&& v) {
-  v("hit", r.hit); v("overlapping_at_start", r.overlapping_at_start); v("t", r.t); v("t_contact", r.t_contact);
-  v("steps", r.steps); v("iterations", r.iterations);
+  v("hit", r.hit);
+  v("overlapping_at_start", r.overlapping_at_start);
+  v("t", r.t);
+  v("t_contact", r.t_contact);
+  v("steps", r.steps);
+  v("iterations", r.iterations);
 }
 template <class V> void fields(StandardMotion& m, V&& v) {
-  v("start", m.start); v("velocity", m.velocity); v("acceleration", m.acceleration); v("axis", m.axis); v("spin", m.spin);
+  v("start", m.start);
+  v("velocity", m.velocity);
+  v("acceleration", m.acceleration);
+  v("axis", m.axis);
+  v("spin", m.spin);
 }
-template <class V> void fields(Shape& s, V&& v) { v("kind", s.kind); v("sphere", s.sphere); v("box", s.box); }
+template <class V> void fields(Shape& s, V&& v) {
+  v("kind", s.kind);
+  v("sphere", s.sphere);
+  v("box", s.box);
+}
 template <class V> void fields(MovingPair& p, V&& v) {
-  v("a", p.a); v("motion_a", p.motion_a); v("b", p.b); v("motion_b", p.motion_b);
+  v("a", p.a);
+  v("motion_a", p.motion_a);
+  v("b", p.b);
+  v("motion_b", p.motion_b);
 }
 
 // A motion that writes down every time it is asked for a pose (step 2's example shows
@@ -39,8 +54,7 @@ struct RecordingMotion {
 
 }  // namespace labkit::lab04
 
-template <>
-struct labkit::wire::Codec<labkit::lab04::Motion> {
+template <> struct labkit::wire::Codec<labkit::lab04::Motion> {
   static void put(Writer& w, const lab04::Motion& m) {
     if (const auto* recording = m.target<lab04::RecordingMotion>()) {
       wire::put(w, true);

@@ -14,9 +14,12 @@ namespace labkit::lab05 {
 
 std::string describe(SweepStatus s) {
   switch (s) {
-    case SweepStatus::none: return "none";
-    case SweepStatus::overlapping: return "overlapping";
-    case SweepStatus::contact: return "contact";
+    case SweepStatus::none:
+      return "none";
+    case SweepStatus::overlapping:
+      return "overlapping";
+    case SweepStatus::contact:
+      return "contact";
   }
   return "an invalid status";
 }
@@ -65,7 +68,8 @@ Outcome distance_verdict(const oracle::SquaredDistance& exact, double got_square
   const double d = exact.distance();
   const std::string expected = "distance " + fmt(d) + " (squared " + fmt(exact.value()) + ")";
   if (!(got_squared >= 0) || !std::isfinite(got_squared))
-    return fail(expected, "squared_distance = " + fmt(got_squared), "the squared distance must be a finite number >= 0");
+    return fail(expected, "squared_distance = " + fmt(got_squared),
+                "the squared distance must be a finite number >= 0");
   const double got = std::sqrt(got_squared);
   if (exact.compare(got, -tol) < 0)  // larger than the minimum: a nearer pair was missed
     return fail(expected, "distance " + fmt(got) + " (squared " + fmt(got_squared) + ")",
@@ -82,8 +86,8 @@ Outcome distance_verdict(const oracle::SquaredDistance& exact, double got_square
   Expect e;
   shape_checks(e);
   const oracle::SquaredDistance pair = oracle::squared_distance(p0, p1);
-  e.that("closest pair", pair.compare(d, tol) <= 0, fmt(p0) + " and " + fmt(p1) + ", " + fmt(pair.distance()) + " apart",
-         "a pair " + fmt(d) + " apart",
+  e.that("closest pair", pair.compare(d, tol) <= 0,
+         fmt(p0) + " and " + fmt(p1) + ", " + fmt(pair.distance()) + " apart", "a pair " + fmt(d) + " apart",
          "your closest points are " + fmt(pair.distance()) + " apart, the shapes only " + fmt(d) + " (tolerance " +
              fmt(tol) + ")");
   return e.outcome();
@@ -97,8 +101,10 @@ void check_segment_point(Expect& e, const char* name, const Segment& s, double t
          std::string("a + ") + t_name + " (b - a) is " + fmt((s.point(t) - p).norm()) + " away from " + name);
 }
 
-void check_rectangle_point(Expect& e, const char* name, const Rectangle& r, double s, double t, const Vec3& p, double tol) {
-  const std::string range = parameter_range_problem(s, -r.half_u, r.half_u, "s") + parameter_range_problem(t, -r.half_v, r.half_v, "t");
+void check_rectangle_point(Expect& e, const char* name, const Rectangle& r, double s, double t, const Vec3& p,
+                           double tol) {
+  const std::string range =
+      parameter_range_problem(s, -r.half_u, r.half_u, "s") + parameter_range_problem(t, -r.half_v, r.half_v, "t");
   e.that("s, t", range.empty(), fmt(s) + ", " + fmt(t), "|s| <= half_u and |t| <= half_v", range);
   e.that(name, oracle::rectangle_point_reproduces(r, s, t, p, tol), fmt(p), "center + s u + t v",
          "center + s u + t v is " + fmt((r.center + s * r.u + t * r.v - p).norm()) + " away from " + name);
@@ -119,13 +125,14 @@ Outcome test_verdict(const oracle::SquaredDistance& cores, double r0, double r1,
                      const char* missed, const char* parallel_note) {
   const bool expected = cores.compare(r0, r1) <= 0;
   const double margin = kTestDoubt * tol;
-  const bool doubt = rules == Rules::random && cores.compare(r0, r1, margin) <= 0 && cores.compare(r0, r1, -margin) >= 0;
+  const bool doubt =
+      rules == Rules::random && cores.compare(r0, r1, margin) <= 0 && cores.compare(r0, r1, -margin) >= 0;
   if (got == expected) return doubt ? ambiguous() : pass();
   if (doubt) return ambiguous();
   const double d = cores.distance();
-  std::string why = "two sphere-swept volumes meet exactly when their cores are within r0 + r1: the cores are " + fmt(d) +
-                    " apart and r0 + r1 = " + fmt(r0 + r1) + ", so they " + (expected ? "meet" : "do not meet") +
-                    ", your answer says they " + (got ? "meet" : "do not");
+  std::string why = "two sphere-swept volumes meet exactly when their cores are within r0 + r1: the cores are " +
+                    fmt(d) + " apart and r0 + r1 = " + fmt(r0 + r1) + ", so they " +
+                    (expected ? "meet" : "do not meet") + ", your answer says they " + (got ? "meet" : "do not");
   if (expected) {
     // The likely causes, most telling first: the sum not squared, the exact touch decided
     // on a rounded distance, a candidate of steps 1 and 2 forgotten.
@@ -133,8 +140,9 @@ Outcome test_verdict(const oracle::SquaredDistance& cores, double r0, double r1,
     if (d * d > r0 * r0 + r1 * r1)
       causes.push_back("is it (r0 + r1)^2 you compare with? r0^2 + r1^2 = " + fmt(r0 * r0 + r1 * r1) + " is smaller");
     if (cores.compare(r0, r1) == 0)
-      causes.push_back("they touch exactly, and touching counts: a rounded distance can come out a hair above r0 + r1, "
-                       "so decide on exact products of the input (num <= (r0 + r1)^2 den), then construct");
+      causes.push_back(
+          "they touch exactly, and touching counts: a rounded distance can come out a hair above r0 + r1, "
+          "so decide on exact products of the input (num <= (r0 + r1)^2 den), then construct");
     causes.push_back(missed);
     why += " (";
     for (std::size_t i = 0; i < causes.size(); ++i) why += (i ? "; or " : "") + causes[i];
@@ -145,7 +153,8 @@ Outcome test_verdict(const oracle::SquaredDistance& cores, double r0, double r1,
     why += parallel_note;
   }
   const auto yes_no = [](bool b) { return std::string(b ? "they meet" : "they do not meet"); };
-  return fail(yes_no(expected) + " (the cores are " + fmt(d) + " apart, r0 + r1 = " + fmt(r0 + r1) + ")", yes_no(got), why);
+  return fail(yes_no(expected) + " (the cores are " + fmt(d) + " apart, r0 + r1 = " + fmt(r0 + r1) + ")", yes_no(got),
+              why);
 }
 
 double scale_of_shapes(const Sphere& s) { return largest({s.center}, {s.radius}); }
@@ -156,8 +165,12 @@ double scale_of_shapes(const Lozenge& l) {
 
 // Where a "no" most often goes wrong, per pair: the candidates of steps 1 and 2.
 const char* missed(const SpherePair&) { return "the centres' distance is the cores' distance"; }
-const char* missed(const SphereCapsule&) { return "the centre's nearest point of the axis is its projection, clamped to the segment"; }
-const char* missed(const SphereLozenge&) { return "the nearest point of the rectangle clamps s and t to the half-sizes"; }
+const char* missed(const SphereCapsule&) {
+  return "the centre's nearest point of the axis is its projection, clamped to the segment";
+}
+const char* missed(const SphereLozenge&) {
+  return "the nearest point of the rectangle clamps s and t to the half-sizes";
+}
 const char* missed(const CapsulePair&) {
   return "the lines' closest pair when it lies inside both segments, else an end against the other segment; "
          "for nearly parallel axes measure the pair itself, the rounded cross product says nothing";
@@ -176,14 +189,12 @@ const char* missed(const LozengePair&) {
 constexpr const char* kParallelNote =
     " (where two of the lines are nearly parallel, the rounded n = d0 x d1 is mostly noise and (w . n)^2 <= R^2 |n|^2 "
     "says nothing about their distance: measure the pair itself there)";
-template <class Pair>
-const char* parallel_note(const Pair&) { return nullptr; }
+template <class Pair> const char* parallel_note(const Pair&) { return nullptr; }
 const char* parallel_note(const CapsulePair&) { return kParallelNote; }
 const char* parallel_note(const CapsuleLozenge&) { return kParallelNote; }
 const char* parallel_note(const LozengePair&) { return kParallelNote; }
 
-template <class Pair>
-Outcome test_pair_verdict(const Pair& p, bool got, Rules rules) {
+template <class Pair> Outcome test_pair_verdict(const Pair& p, bool got, Rules rules) {
   const double tol = kRelative * std::max(scale_of_shapes(p.a), scale_of_shapes(p.b));
   return test_verdict(core_distance(p), p.a.radius, p.b.radius, tol, got, rules, missed(p), parallel_note(p));
 }
@@ -222,8 +233,9 @@ double scale(const BoxPlaneMotion& in) {
 
 Outcome point_segment(const PointSegmentPair& in, const PointSegmentDistance& got) {
   const double tol = kRelative * scale(in);
-  return distance_verdict(oracle::squared_distance(in.p, in.segment), got.squared_distance, in.p, got.closest, tol,
-                          [&](Expect& e) { check_segment_point(e, "closest", in.segment, got.t, "t", got.closest, tol); });
+  return distance_verdict(
+      oracle::squared_distance(in.p, in.segment), got.squared_distance, in.p, got.closest, tol,
+      [&](Expect& e) { check_segment_point(e, "closest", in.segment, got.t, "t", got.closest, tol); });
 }
 
 Outcome segment_segment(const SegmentPair& in, const SegmentSegmentDistance& got) {
@@ -236,8 +248,9 @@ Outcome segment_segment(const SegmentPair& in, const SegmentSegmentDistance& got
   const Vec3 d0 = in.first.b - in.first.a, d1 = in.second.b - in.second.a;
   const double nn = d0.cross(d1).squaredNorm(), scale2 = d0.squaredNorm() * d1.squaredNorm();
   if (o.verdict == Outcome::Verdict::fail && nn > 0 && nn < 1e-8 * scale2)
-    o.why += " (the segments are nearly parallel, sin^2 of their angle " + fmt(nn / scale2) +
-             ": the textbook denominator a c - b^2 cancels there; |d0 x d1|^2 is the same number without the cancellation)";
+    o.why +=
+        " (the segments are nearly parallel, sin^2 of their angle " + fmt(nn / scale2) +
+        ": the textbook denominator a c - b^2 cancels there; |d0 x d1|^2 is the same number without the cancellation)";
   return o;
 }
 
@@ -245,8 +258,9 @@ Outcome segment_segment(const SegmentPair& in, const SegmentSegmentDistance& got
 
 Outcome point_rectangle(const PointRectanglePair& in, const PointRectangleDistance& got) {
   const double tol = kRelative * scale(in);
-  return distance_verdict(oracle::squared_distance(in.p, in.rectangle), got.squared_distance, in.p, got.closest, tol,
-                          [&](Expect& e) { check_rectangle_point(e, "closest", in.rectangle, got.s, got.t, got.closest, tol); });
+  return distance_verdict(
+      oracle::squared_distance(in.p, in.rectangle), got.squared_distance, in.p, got.closest, tol,
+      [&](Expect& e) { check_rectangle_point(e, "closest", in.rectangle, got.s, got.t, got.closest, tol); });
 }
 
 Outcome segment_rectangle(const SegmentRectanglePair& in, const SegmentRectangleDistance& got) {

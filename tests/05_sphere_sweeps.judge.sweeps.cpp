@@ -18,7 +18,8 @@ using check::fail;
 using check::pass;
 
 // How far the exact status of a sweep can move when every length moves by tol and every
-// direction component by 1e-9 (kTestDoubt is the same bound for a test): a centre at time t moves by sqrt(3) tol (itself) + sqrt(3) tol
+// direction component by 1e-9 (kTestDoubt is the same bound for a test): a centre at time t
+// moves by sqrt(3) tol (itself) + sqrt(3) tol
 // (the displacement v t, |v T| <= S) + sqrt(3) tol (T itself, relative 1e-9), a box's
 // corner by 3 sqrt(3) tol + 3 tol more (axes, half-sizes), a plane near the shapes by
 // tol (offset) + 1e-9 |x| sqrt(3) (normal, |x| <= 2 sqrt(3) S) < 7 tol. Sphere-sphere
@@ -32,8 +33,7 @@ double from_plane(const Plane& p, const Vec3& x) {
   return std::abs(q.value(x)) / q.normal.norm();
 }
 
-template <class Motion>
-std::string expected_sweep(const Motion& m, double duration) {
+template <class Motion> std::string expected_sweep(const Motion& m, double duration) {
   const double t = oracle::first_contact(m, duration);
   if (t < 0) return "none";
   if (oracle::gap_sign(m, 0.0, 0.0) <= 0) return "overlapping (at t = 0)";
@@ -50,9 +50,9 @@ std::string describe_sweep(const Sweep& s) {
 // status or time that the numbers of this input point at.
 struct Facts {
   std::function<double(double)> gap;  // the gap at time t
-  double later = -1;                   // the later root (they part again), if any
-  std::string wrong_status;            // a likely cause of a wrong status, or ""
-  std::string wrong_time;              // a likely cause of a time past the first contact, or ""
+  double later = -1;                  // the later root (they part again), if any
+  std::string wrong_status;           // a likely cause of a wrong status, or ""
+  std::string wrong_time;             // a likely cause of a time past the first contact, or ""
 };
 
 // A shape whose value f0 + g t against the plane (|n| times the centre's signed distance)
@@ -71,7 +71,7 @@ Facts plane_facts(const Plane& given, const Vec3& c, const Vec3& v, double reach
   if (unit_mistake) {  // what that mistake answers, against what was answered
     const bool toward = sigma * given.normal.dot(v) < 0;
     const double would_time = rate > 0 ? (value0 - reach_unit) / rate : -1;
-    const SweepStatus would = value0 <= reach_unit                      ? SweepStatus::overlapping
+    const SweepStatus would = value0 <= reach_unit               ? SweepStatus::overlapping
                               : toward && would_time <= duration ? SweepStatus::contact
                                                                  : SweepStatus::none;
     const std::string unit = " (is n unit? n . c + offset is |n| = " + fmt(length) +
@@ -81,8 +81,9 @@ Facts plane_facts(const Plane& given, const Vec3& c, const Vec3& v, double reach
       f.wrong_time = unit;
   }
   if (f.wrong_status.empty() && sigma < 0 && got.status == SweepStatus::none)
-    f.wrong_status = " (the centre starts behind the plane, n . c + offset < 0: the plane is two-sided, and it is "
-                     "reached from either side)";
+    f.wrong_status =
+        " (the centre starts behind the plane, n . c + offset < 0: the plane is two-sided, and it is "
+        "reached from either side)";
   if (f.wrong_status.empty() && sigma * g >= 0 && got.status == SweepStatus::contact)
     f.wrong_status = " (it moves away from the plane or along it, sign(f0) (n . v) >= 0: the lecture's \"T < 0\")";
   if (f.wrong_time.empty() && signed_reach_unit < reach_unit * (1 - 1e-9))
@@ -174,9 +175,12 @@ Facts facts(const SphereCapsuleMotion& in, const Sweep& got) {
                    std::string(along < 0 ? "a" : "b") + " (axial fraction " + fmt(along) +
                    "): the side's root counts only inside the slab 0 <= (c(t) - a) . d <= d . d; beyond it, the "
                    "end sphere (cap) decides)";
-  else if (R > 0 && (std::abs(dist - k.radius) <= 1e-6 * S || std::abs(dist - r) <= 1e-6 * S) && std::abs(dist - R) > 1e-6 * S)
-    f.wrong_time = " (at your time the centre is " + fmt(dist) + " from the axis: that is the capsule grown by one radius "
-                   "only; the Minkowski sum grows it by both, R = r + rc = " + fmt(R) + ")";
+  else if (R > 0 && (std::abs(dist - k.radius) <= 1e-6 * S || std::abs(dist - r) <= 1e-6 * S) &&
+           std::abs(dist - R) > 1e-6 * S)
+    f.wrong_time = " (at your time the centre is " + fmt(dist) +
+                   " from the axis: that is the capsule grown by one radius "
+                   "only; the Minkowski sum grows it by both, R = r + rc = " +
+                   fmt(R) + ")";
   else {
     // The first contact on a cap while the answer came later: the caps left out?
     const double exact_first = oracle::first_contact(oracle::SphereCapsuleSweep{in.sphere, v, k}, in.duration);
@@ -197,11 +201,13 @@ Facts facts(const SphereCapsuleMotion& in, const Sweep& got) {
 // both shapes. Ambiguous statuses get the slack of the doubt margin in those checks.
 // Each why states the header's rule, the numbers, then a likely cause when one shows.
 template <class Motion, class Input, class PointCheck>
-Outcome sweep_verdict(const Motion& m, const Input& in, const Sweep& got, double tol, Rules rules, PointCheck&& point_ok) {
+Outcome sweep_verdict(const Motion& m, const Input& in, const Sweep& got, double tol, Rules rules,
+                      PointCheck&& point_ok) {
   const double duration = in.duration;
   const bool overlapping_now = oracle::gap_sign(m, 0.0, 0.0) <= 0;
   const bool touches = oracle::min_gap_sign(m, duration, 0.0) <= 0;
-  const SweepStatus exact = overlapping_now ? SweepStatus::overlapping : (touches ? SweepStatus::contact : SweepStatus::none);
+  const SweepStatus exact =
+      overlapping_now ? SweepStatus::overlapping : (touches ? SweepStatus::contact : SweepStatus::none);
   const double margin = kSweepDoubt * tol;
   bool doubt_now = false, doubt_ever = false;
   if (rules == Rules::random) {
@@ -227,7 +233,8 @@ Outcome sweep_verdict(const Motion& m, const Input& in, const Sweep& got, double
             ", within [0, T = " + fmt(duration) + "]: the status is contact";
     else
       why = "they never touch during [0, T = " + fmt(duration) + "] (the gap at t = 0 is " + fmt(f.gap(0)) +
-            (got.status == SweepStatus::contact && std::isfinite(got.time) ? ", at your time " + fmt(f.gap(got.time)) : "") +
+            (got.status == SweepStatus::contact && std::isfinite(got.time) ? ", at your time " + fmt(f.gap(got.time))
+                                                                           : "") +
             "): the status is none";
     return fail(expected, describe_sweep(got), why + f.wrong_status);
   }
@@ -267,8 +274,8 @@ Outcome sweep_sphere_plane(const SpherePlaneMotion& in, const Sweep& got, Rules 
   return sweep_verdict(m, in, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
     if (oracle::within_moving_sphere(in.sphere, in.velocity, t, p, slack) && oracle::within_plane(in.plane, p, slack))
       return std::string();
-    return "yours is " + fmt((p - in.sphere.center - t * in.velocity).norm()) + " from the centre (r = " +
-           fmt(in.sphere.radius) + ") and " + fmt(from_plane(in.plane, p)) +
+    return "yours is " + fmt((p - in.sphere.center - t * in.velocity).norm()) +
+           " from the centre (r = " + fmt(in.sphere.radius) + ") and " + fmt(from_plane(in.plane, p)) +
            " from the plane; the sphere's point nearest the plane is c(t) - sign(s(0)) r n / |n|";
   });
 }
@@ -276,7 +283,8 @@ Outcome sweep_sphere_plane(const SpherePlaneMotion& in, const Sweep& got, Rules 
 Outcome sweep_sphere_sphere(const SphereSphereMotion& in, const Sweep& got, Rules rules) {
   const oracle::SphereSphereSweep m{in.s0, in.s1, in.v0, in.v1};
   const Outcome o = sweep_verdict(m, in, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
-    if (oracle::within_moving_sphere(in.s0, in.v0, t, p, slack) && oracle::within_moving_sphere(in.s1, in.v1, t, p, slack))
+    if (oracle::within_moving_sphere(in.s0, in.v0, t, p, slack) &&
+        oracle::within_moving_sphere(in.s1, in.v1, t, p, slack))
       return std::string();
     return "yours is " + fmt((p - in.s0.center - t * in.v0).norm()) + " from c0(t) (r0 = " + fmt(in.s0.radius) +
            ") and " + fmt((p - in.s1.center - t * in.v1).norm()) + " from c1(t) (r1 = " + fmt(in.s1.radius) +
@@ -291,7 +299,8 @@ Outcome sweep_sphere_sphere(const SphereSphereMotion& in, const Sweep& got, Rule
   const double exact = oracle::first_contact(m, in.duration);
   return fail(expected_sweep(m, in.duration), describe_sweep(got),
               "with exact coefficients and a steep approach the first root must be within a relative 1e-9 of the exact "
-              "one; yours is off by a relative " + fmt(std::abs(got.time - exact) / exact) +
+              "one; yours is off by a relative " +
+                  fmt(std::abs(got.time - exact) / exact) +
                   " (does your root formula cancel? -b - sqrt(b^2 - ac) subtracts nearly equal numbers when contact "
                   "comes very soon: use q = -b + sqrt(b^2 - ac), t = c / q)");
 }
@@ -299,11 +308,13 @@ Outcome sweep_sphere_sphere(const SphereSphereMotion& in, const Sweep& got, Rule
 Outcome sweep_sphere_capsule(const SphereCapsuleMotion& in, const Sweep& got, Rules rules) {
   const oracle::SphereCapsuleSweep m{in.sphere, in.velocity, in.capsule};
   return sweep_verdict(m, in, got, kRelative * scale(in), rules, [&](double t, const Vec3& p, double slack) {
-    if (oracle::within_moving_sphere(in.sphere, in.velocity, t, p, slack) && oracle::within_capsule(in.capsule, p, slack))
+    if (oracle::within_moving_sphere(in.sphere, in.velocity, t, p, slack) &&
+        oracle::within_capsule(in.capsule, p, slack))
       return std::string();
-    return "yours is " + fmt((p - in.sphere.center - t * in.velocity).norm()) + " from c(t) (r = " +
-           fmt(in.sphere.radius) + ") and " + fmt(axis_distance(in.capsule, p)) + " from the axis (rc = " +
-           fmt(in.capsule.radius) + "); the point is r / R of the way from c(t) to its nearest point of the axis";
+    return "yours is " + fmt((p - in.sphere.center - t * in.velocity).norm()) +
+           " from c(t) (r = " + fmt(in.sphere.radius) + ") and " + fmt(axis_distance(in.capsule, p)) +
+           " from the axis (rc = " + fmt(in.capsule.radius) +
+           "); the point is r / R of the way from c(t) to its nearest point of the axis";
   });
 }
 

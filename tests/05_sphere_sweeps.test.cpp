@@ -31,8 +31,12 @@ Outcome both(const Expect& e, const Outcome& rules) {
   return rules.verdict == Outcome::Verdict::fail ? rules : e.outcome();
 }
 
-Outcome run_point_segment(const PointSegmentPair& in) { return judge::point_segment(in, point_segment(in.p, in.segment)); }
-Outcome run_segment_segment(const SegmentPair& in) { return judge::segment_segment(in, segment_segment(in.first, in.second)); }
+Outcome run_point_segment(const PointSegmentPair& in) {
+  return judge::point_segment(in, point_segment(in.p, in.segment));
+}
+Outcome run_segment_segment(const SegmentPair& in) {
+  return judge::segment_segment(in, segment_segment(in.first, in.second));
+}
 Outcome run_point_rectangle(const PointRectanglePair& in) {
   return judge::point_rectangle(in, point_rectangle(in.p, in.rectangle));
 }
@@ -58,7 +62,9 @@ Outcome run_sweep(const SpherePlaneMotion& in, Rules rules = Rules::random) {
 Outcome run_sweep(const SphereSphereMotion& in, Rules rules = Rules::random) {
   return judge::sweep_sphere_sphere(in, run(in), rules);
 }
-Outcome run_sweep(const BoxPlaneMotion& in, Rules rules = Rules::random) { return judge::sweep_box_plane(in, run(in), rules); }
+Outcome run_sweep(const BoxPlaneMotion& in, Rules rules = Rules::random) {
+  return judge::sweep_box_plane(in, run(in), rules);
+}
 
 // A sweep example: the judge (the header's rules, which also decide the point), then the
 // status and for a contact the hand-worked time. The point is compared with the worked
@@ -90,8 +96,7 @@ bool test(const CapsulePair& p) { return test_capsule_capsule(p.a, p.b); }
 bool test(const CapsuleLozenge& p) { return test_capsule_lozenge(p.a, p.b); }
 bool test(const LozengePair& p) { return test_lozenge_lozenge(p.a, p.b); }
 
-template <class Pair>
-auto expect_test(bool meet) {
+template <class Pair> auto expect_test(bool meet) {
   return [meet](const Pair& in) {
     Expect e;
     e.equal("meet", test(in), meet);
@@ -99,10 +104,8 @@ auto expect_test(bool meet) {
   };
 }
 
-template <class Pair>
-Outcome run_test(const Pair& in) { return judge::test_pair(in, test(in)); }
-template <class Pair>
-Outcome run_exact_test(const Pair& in) { return judge::test_pair(in, test(in), Rules::exact); }
+template <class Pair> Outcome run_test(const Pair& in) { return judge::test_pair(in, test(in)); }
+template <class Pair> Outcome run_exact_test(const Pair& in) { return judge::test_pair(in, test(in), Rules::exact); }
 
 }  // namespace
 
@@ -127,9 +130,12 @@ TEST_CASE(LABKIT_STEP(L05S1) ": worked examples", "[lab05][step1]") {
       return both(e, run_point_segment(in));
     };
   };
-  check::example(query::point_segment, "projects inside: t = 1/4", PointSegmentPair{{1, 2, 0}, kAxis}, point(0.25, {1, 0, 0}, 4));
-  check::example(query::point_segment, "beyond b: clamp to t = 1", PointSegmentPair{{6, 1, 0}, kAxis}, point(1, {4, 0, 0}, 5));
-  check::example(query::point_segment, "behind a: clamp to t = 0", PointSegmentPair{{-3, 0, 4}, kAxis}, point(0, {0, 0, 0}, 25));
+  check::example(query::point_segment, "projects inside: t = 1/4", PointSegmentPair{{1, 2, 0}, kAxis},
+                 point(0.25, {1, 0, 0}, 4));
+  check::example(query::point_segment, "beyond b: clamp to t = 1", PointSegmentPair{{6, 1, 0}, kAxis},
+                 point(1, {4, 0, 0}, 5));
+  check::example(query::point_segment, "behind a: clamp to t = 0", PointSegmentPair{{-3, 0, 4}, kAxis},
+                 point(0, {0, 0, 0}, 25));
   check::example(query::point_segment, "a zero-length segment", PointSegmentPair{{1, 1, 3}, {{1, 1, 1}, {1, 1, 1}}},
                  point(0, {1, 1, 1}, 4));
 
@@ -143,22 +149,24 @@ TEST_CASE(LABKIT_STEP(L05S1) ": worked examples", "[lab05][step1]") {
       return both(e, run_segment_segment(in));
     };
   };
-  check::example(query::segment_segment, "skew, crossing over: s = t = 1/4", SegmentPair{kAxis, {{1, -1, 2}, {1, 3, 2}}},
-                 pair(0.25, 0.25, 4));
-  check::example(query::segment_segment, "an end against the middle", SegmentPair{kAxis, {{2, 1, 0}, {2, 5, 0}}}, pair(0.5, 0, 1));
+  check::example(query::segment_segment, "skew, crossing over: s = t = 1/4",
+                 SegmentPair{kAxis, {{1, -1, 2}, {1, 3, 2}}}, pair(0.25, 0.25, 4));
+  check::example(query::segment_segment, "an end against the middle", SegmentPair{kAxis, {{2, 1, 0}, {2, 5, 0}}},
+                 pair(0.5, 0, 1));
   check::example(query::segment_segment, "the lines' pair is outside: re-project, do not just clamp",
                  SegmentPair{kAxis, {{5, -2, 1}, {7, 2, 1}}}, pair(1, 0.3, 4.2));
-  check::example(query::segment_segment, "collinear, a gap of 2", SegmentPair{kAxis, {{6, 0, 0}, {9, 0, 0}}}, pair(1, 0, 4));
+  check::example(query::segment_segment, "collinear, a gap of 2", SegmentPair{kAxis, {{6, 0, 0}, {9, 0, 0}}},
+                 pair(1, 0, 4));
   // Parallel and overlapping: every x in [2, 4] gives a closest pair; the judge checks
   // the distance and that the pair is a closest one, not which one.
-  check::example(query::segment_segment, "parallel, overlapping: any closest pair", SegmentPair{kAxis, {{2, 3, 0}, {6, 3, 0}}},
-                 [](const SegmentPair& in) {
+  check::example(query::segment_segment, "parallel, overlapping: any closest pair",
+                 SegmentPair{kAxis, {{2, 3, 0}, {6, 3, 0}}}, [](const SegmentPair& in) {
                    Expect e;
                    e.near("squared_distance", segment_segment(in.first, in.second).squared_distance, 9, kExample);
                    return both(e, run_segment_segment(in));
                  });
-  check::example(query::segment_segment, "both zero length", SegmentPair{{{1, 2, 3}, {1, 2, 3}}, {{1, 2, 5}, {1, 2, 5}}},
-                 pair(0, 0, 4));
+  check::example(query::segment_segment, "both zero length",
+                 SegmentPair{{{1, 2, 3}, {1, 2, 3}}, {{1, 2, 5}, {1, 2, 5}}}, pair(0, 0, 4));
 }
 
 TEST_CASE(LABKIT_STEP(L05S1) ": random cases", "[lab05][step1][oracle]") {
@@ -180,8 +188,10 @@ TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
     };
   };
   check::example(query::point_rectangle, "above the inside", PointRectanglePair{{1, 0.5, 3}, kFloor}, point(1, 0.5, 9));
-  check::example(query::point_rectangle, "beyond a corner: clamp both", PointRectanglePair{{5, 3, 4}, kFloor}, point(2, 1, 29));
-  check::example(query::point_rectangle, "beside a side, in the plane", PointRectanglePair{{3, 0, 0}, kFloor}, point(2, 0, 1));
+  check::example(query::point_rectangle, "beyond a corner: clamp both", PointRectanglePair{{5, 3, 4}, kFloor},
+                 point(2, 1, 29));
+  check::example(query::point_rectangle, "beside a side, in the plane", PointRectanglePair{{3, 0, 0}, kFloor},
+                 point(2, 0, 1));
   check::example(query::point_rectangle, "a rectangle of zero width is a segment",
                  PointRectanglePair{{1, 2, 0}, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, 2, 0}}, point(1, 0, 4));
 
@@ -201,11 +211,12 @@ TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
                    e.near("closest1", got.closest1, Vec3(1, 0, 0), kExample);
                    return both(e, run_segment_rectangle(in));
                  });
-  check::example(query::segment_rectangle, "parallel, 2 above", SegmentRectanglePair{{{-5, 0.5, 2}, {5, 0.5, 2}}, kFloor}, segment(4));
-  check::example(query::segment_rectangle, "across a side, 1 out and 1 up", SegmentRectanglePair{{{3, -3, 1}, {3, 3, 1}}, kFloor},
-                 segment(2));
-  check::example(query::segment_rectangle, "through the plane beside it", SegmentRectanglePair{{{3, 0, -1}, {3, 0, 1}}, kFloor},
-                 segment(1));
+  check::example(query::segment_rectangle, "parallel, 2 above",
+                 SegmentRectanglePair{{{-5, 0.5, 2}, {5, 0.5, 2}}, kFloor}, segment(4));
+  check::example(query::segment_rectangle, "across a side, 1 out and 1 up",
+                 SegmentRectanglePair{{{3, -3, 1}, {3, 3, 1}}, kFloor}, segment(2));
+  check::example(query::segment_rectangle, "through the plane beside it",
+                 SegmentRectanglePair{{{3, 0, -1}, {3, 0, 1}}, kFloor}, segment(1));
 
   const auto rectangles = [](double d2) {
     return [=](const RectanglePair& in) {
@@ -214,11 +225,12 @@ TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
       return both(e, run_rectangle_rectangle(in));
     };
   };
-  check::example(query::rectangle_rectangle, "standing 1 above the floor", RectanglePair{kFloor, kStanding}, rectangles(1));
+  check::example(query::rectangle_rectangle, "standing 1 above the floor", RectanglePair{kFloor, kStanding},
+                 rectangles(1));
   check::example(query::rectangle_rectangle, "standing through the floor",
                  RectanglePair{kFloor, {{0, 0, 0.5}, {0, 0, 1}, {1, 0, 0}, 1, 1}}, rectangles(0));
-  check::example(query::rectangle_rectangle, "stacked, 3 apart", RectanglePair{kFloor, {{1, 0, 3}, {1, 0, 0}, {0, 1, 0}, 2, 1}},
-                 rectangles(9));
+  check::example(query::rectangle_rectangle, "stacked, 3 apart",
+                 RectanglePair{kFloor, {{1, 0, 3}, {1, 0, 0}, {0, 1, 0}, 2, 1}}, rectangles(9));
 }
 
 TEST_CASE(LABKIT_STEP(L05S2) ": random cases", "[lab05][step2][oracle]") {
@@ -230,41 +242,41 @@ TEST_CASE(LABKIT_STEP(L05S2) ": random cases", "[lab05][step2][oracle]") {
 // ---- Step 3 ------------------------------------------------------------------------
 
 TEST_CASE(LABKIT_STEP(L05S3) ": worked examples", "[lab05][step3]") {
-  check::example(query::test_sphere_sphere, "5 apart, radii 2 + 3: touching counts", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 3}},
-                 expect_test<SpherePair>(true));
+  check::example(query::test_sphere_sphere, "5 apart, radii 2 + 3: touching counts",
+                 SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 3}}, expect_test<SpherePair>(true));
   check::example(query::test_sphere_sphere, "5 apart, radii 2 + 2.5", SpherePair{{{0, 0, 0}, 2}, {{3, 4, 0}, 2.5}},
                  expect_test<SpherePair>(false));
   check::example(query::test_sphere_capsule, "3 from the axis, radii 1 + 2", SphereCapsule{{{2, 3, 0}, 1}, {kAxis, 2}},
                  expect_test<SphereCapsule>(true));
   check::example(query::test_sphere_capsule, "beyond the end: 5 from b", SphereCapsule{{{7, 4, 0}, 1}, {kAxis, 3.5}},
                  expect_test<SphereCapsule>(false));
-  check::example(query::test_sphere_lozenge, "above a corner: sqrt(29) away", SphereLozenge{{{5, 3, 4}, 2}, {kFloor, 3.5}},
-                 expect_test<SphereLozenge>(true));
+  check::example(query::test_sphere_lozenge, "above a corner: sqrt(29) away",
+                 SphereLozenge{{{5, 3, 4}, 2}, {kFloor, 3.5}}, expect_test<SphereLozenge>(true));
   check::example(query::test_capsule_capsule, "crossing 2 apart, radii 1 + 1: compare d^2 with (r0 + r1)^2",
                  CapsulePair{{kAxis, 1}, {{{1, -1, 2}, {1, 3, 2}}, 1}}, expect_test<CapsulePair>(true));
-  check::example(query::test_capsule_capsule, "crossing 2 apart, radii 0.5 + 1", CapsulePair{{kAxis, 0.5}, {{{1, -1, 2}, {1, 3, 2}}, 1}},
-                 expect_test<CapsulePair>(false));
+  check::example(query::test_capsule_capsule, "crossing 2 apart, radii 0.5 + 1",
+                 CapsulePair{{kAxis, 0.5}, {{{1, -1, 2}, {1, 3, 2}}, 1}}, expect_test<CapsulePair>(false));
   check::example(query::test_capsule_lozenge, "parallel 2 above, radii 0.5 + 1",
                  CapsuleLozenge{{{{-5, 0.5, 2}, {5, 0.5, 2}}, 0.5}, {kFloor, 1}}, expect_test<CapsuleLozenge>(false));
-  check::example(query::test_capsule_lozenge, "piercing it, radius 0", CapsuleLozenge{{{{1, 0, -1}, {1, 0, 3}}, 0}, {kFloor, 0}},
-                 expect_test<CapsuleLozenge>(true));
-  check::example(query::test_lozenge_lozenge, "standing 1 above, radii 0.25 + 0.75", LozengePair{{kFloor, 0.25}, {kStanding, 0.75}},
-                 expect_test<LozengePair>(true));
-  check::example(query::test_lozenge_lozenge, "standing 1 above, radii 0.25 + 0.5", LozengePair{{kFloor, 0.25}, {kStanding, 0.5}},
-                 expect_test<LozengePair>(false));
+  check::example(query::test_capsule_lozenge, "piercing it, radius 0",
+                 CapsuleLozenge{{{{1, 0, -1}, {1, 0, 3}}, 0}, {kFloor, 0}}, expect_test<CapsuleLozenge>(true));
+  check::example(query::test_lozenge_lozenge, "standing 1 above, radii 0.25 + 0.75",
+                 LozengePair{{kFloor, 0.25}, {kStanding, 0.75}}, expect_test<LozengePair>(true));
+  check::example(query::test_lozenge_lozenge, "standing 1 above, radii 0.25 + 0.5",
+                 LozengePair{{kFloor, 0.25}, {kStanding, 0.5}}, expect_test<LozengePair>(false));
   // Found by secret-seed runs: flat lozenges (one half-size 0) whose sides run parallel
   // to the other core, where the rounded n = d0 x d1 says nothing about the lines' distance.
   check::example(query::test_capsule_lozenge, "an axis parallel to a flat lozenge, 532 apart, radii 133 + 133",
-                 input_from_token<CapsuleLozenge>(parse_token(kFlatLozengeToken)),
-                 expect_test<CapsuleLozenge>(false));
-  check::example(query::test_lozenge_lozenge, "two flat lozenges in line, a gap just wider than r0 + r1",
-                 input_from_token<LozengePair>(parse_token(
-                     "test_lozenge_lozenge:0,0.0078125,0,-0.18181818181818188,0.5454545454545454,0.8181818181818182,"
-                     "0.5454545454545454,-0.6363636363636365,0.5454545454545454,0,0.0068359375,0.0009756064996508932,"
-                     "-0.007457386363636363,0.016512784090909092,-0.007457386363636363,-0.18181818181818188,0.5454545454545454,"
-                     "0.8181818181818182,0.5454545454545454,-0.6363636363636365,0.5454545454545454,0,0.004882817156612873,"
-                     "0.0009756064996508932")),
-                 expect_test<LozengePair>(false));
+                 input_from_token<CapsuleLozenge>(parse_token(kFlatLozengeToken)), expect_test<CapsuleLozenge>(false));
+  check::example(
+      query::test_lozenge_lozenge, "two flat lozenges in line, a gap just wider than r0 + r1",
+      input_from_token<LozengePair>(parse_token(
+          "test_lozenge_lozenge:0,0.0078125,0,-0.18181818181818188,0.5454545454545454,0.8181818181818182,"
+          "0.5454545454545454,-0.6363636363636365,0.5454545454545454,0,0.0068359375,0.0009756064996508932,"
+          "-0.007457386363636363,0.016512784090909092,-0.007457386363636363,-0.18181818181818188,0.5454545454545454,"
+          "0.8181818181818182,0.5454545454545454,-0.6363636363636365,0.5454545454545454,0,0.004882817156612873,"
+          "0.0009756064996508932")),
+      expect_test<LozengePair>(false));
 }
 
 TEST_CASE(LABKIT_STEP(L05S3) ": random cases", "[lab05][step3][oracle]") {
@@ -292,17 +304,20 @@ TEST_CASE(LABKIT_STEP(L05S4) ": worked examples", "[lab05][step4]") {
                  expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
   check::example(q, "a slanted fall: contact at t = 1.5", SP{{{1, 2, 5}, 1}, {2, 0, -2}, kShelf, 4},
                  expect_sweep<SP>(SweepStatus::contact, 1.5, {4, 2, 1}));
-  check::example(q, "not there by T = 1", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 1}, expect_sweep<SP>(SweepStatus::none));
+  check::example(q, "not there by T = 1", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 1},
+                 expect_sweep<SP>(SweepStatus::none));
   check::example(q, "moving away (the lecture's T < 0)", SP{{{0, 0, 5}, 1}, {0, 0, 1}, kShelf, 4},
                  expect_sweep<SP>(SweepStatus::none));
   check::example(q, "moving along it", SP{{{0, 0, 5}, 1}, {1, 0, 0}, kShelf, 4}, expect_sweep<SP>(SweepStatus::none));
-  check::example(q, "touching at t = 0", SP{{{0, 0, 2}, 1}, {0, 0, 1}, kShelf, 4}, expect_sweep<SP>(SweepStatus::overlapping));
+  check::example(q, "touching at t = 0", SP{{{0, 0, 2}, 1}, {0, 0, 1}, kShelf, 4},
+                 expect_sweep<SP>(SweepStatus::overlapping));
   check::example(q, "cutting it at t = 0", SP{{{0, 0, 1.5}, 1}, {0, 0, -1}, kShelf, 4},
                  expect_sweep<SP>(SweepStatus::overlapping));
 }
 
 TEST_CASE(LABKIT_STEP(L05S4) ": random cases", "[lab05][step4][oracle]") {
-  check::random_cases(query::sweep_sphere_plane, gen::sphere_plane_motion(), [](const SP& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_sphere_plane, gen::sphere_plane_motion(),
+                      [](const SP& in) { return run_sweep(in); });
 }
 
 // ---- Step 5 ------------------------------------------------------------------------
@@ -323,7 +338,8 @@ TEST_CASE(LABKIT_STEP(L05S5) ": worked examples", "[lab05][step5]") {
   check::example(q, "passing by: t = 3 - sqrt(3)/2", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 1, 0}, 1}, {-2, 0, 0}, 4},
                  expect_sweep<SS>(SweepStatus::contact, 3 - std::sqrt(3.0) / 2, {std::sqrt(3.0) / 2, 0.5, 0}));
   check::example(q, "an exact graze: d^2 = A^2 - (A.B)^2 / B^2 = R^2, contact at t = 3",
-                 SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 2, 0}, 1}, {-2, 0, 0}, 4}, expect_sweep<SS>(SweepStatus::contact, 3, {0, 1, 0}));
+                 SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 2, 0}, 1}, {-2, 0, 0}, 4},
+                 expect_sweep<SS>(SweepStatus::contact, 3, {0, 1, 0}));
   check::example(q, "passing by, 3 off: misses", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 3, 0}, 1}, {-2, 0, 0}, 4},
                  expect_sweep<SS>(SweepStatus::none));
   check::example(q, "moving apart", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 1, 0}, 1}, {2, 0, 0}, 4},
@@ -335,8 +351,8 @@ TEST_CASE(LABKIT_STEP(L05S5) ": worked examples", "[lab05][step5]") {
   check::example(q, "not there by T = 2", SS{{{0, 0, 0}, 1}, {1, 0, 0}, {{10, 0, 0}, 2}, {-2, 0, 0}, 2},
                  expect_sweep<SS>(SweepStatus::none));
   // The stable root: c / q keeps every digit; (-b - sqrt(b^2 - ac)) / a loses about half.
-  check::example(q, "a hair apart, closing fast: contact very soon", SS{{kHair, 1}, {-1, -2, -2}, {{0, 0, 0}, 2}, {0, 0, 0}, 1},
-                 [](const SS& in) {
+  check::example(q, "a hair apart, closing fast: contact very soon",
+                 SS{{kHair, 1}, {-1, -2, -2}, {{0, 0, 0}, 2}, {0, 0, 0}, 1}, [](const SS& in) {
                    const Sweep got = run(in);
                    Expect e;
                    e.equal("status", got.status, SweepStatus::contact);
@@ -346,8 +362,10 @@ TEST_CASE(LABKIT_STEP(L05S5) ": worked examples", "[lab05][step5]") {
 }
 
 TEST_CASE(LABKIT_STEP(L05S5) ": random cases", "[lab05][step5][oracle]") {
-  check::random_cases(query::sweep_sphere_sphere, gen::sphere_sphere_motion(), [](const SS& in) { return run_sweep(in); });
-  check::random_cases(query::sweep_sphere_sphere_grazing, gen::grazing_spheres(), [](const SS& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_sphere_sphere, gen::sphere_sphere_motion(),
+                      [](const SS& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_sphere_sphere_grazing, gen::grazing_spheres(),
+                      [](const SS& in) { return run_sweep(in); });
   check::random_cases(query::sweep_sphere_sphere_soon, gen::soon_spheres(), [](const SS& in) { return run_sweep(in); });
 }
 
@@ -380,7 +398,8 @@ TEST_CASE(LABKIT_STEP(L05S6) ": worked examples", "[lab05][step6]") {
 }
 
 TEST_CASE(LABKIT_STEP(L05S6) ": random cases", "[lab05][step6][oracle]") {
-  check::random_cases(query::sweep_sphere_capsule, gen::sphere_capsule_motion(), [](const SC& in) { return run_sweep(in); });
+  check::random_cases(query::sweep_sphere_capsule, gen::sphere_capsule_motion(),
+                      [](const SC& in) { return run_sweep(in); });
 }
 
 // ---- Step 7 ------------------------------------------------------------------------
@@ -416,7 +435,8 @@ TEST_CASE(LABKIT_STEP(L05S7) ": worked examples", "[lab05][step7]") {
           Outcome::Verdict::pass);
   CHECK(judge::sweep_box_plane(upright, {SweepStatus::contact, 2, {1, 2, 1}}, Rules::exact).verdict ==
         Outcome::Verdict::fail);
-  check::example(q, "resting on the ground at t = 0", BP{{{0, 0, 3}, Mat3::Identity(), {1, 2, 3}}, {0, 0, 1}, kGround, 4},
+  check::example(q, "resting on the ground at t = 0",
+                 BP{{{0, 0, 3}, Mat3::Identity(), {1, 2, 3}}, {0, 0, 1}, kGround, 4},
                  expect_sweep<BP>(SweepStatus::overlapping));
   check::example(q, "rising away", BP{{{0, 0, 5}, Mat3::Identity(), {1, 2, 3}}, {0, 0, 1}, kGround, 4},
                  expect_sweep<BP>(SweepStatus::none));
@@ -433,21 +453,24 @@ TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
   constexpr auto q = query::robust_segment_segment;
   check::example(q, "collinear and overlapping: distance 0", SegmentPair{kAxis, {{2, 0, 0}, {7, 0, 0}}},
                  [](const SegmentPair& in) {
-                   Expect e;
-                   e.near("squared_distance", segment_segment(in.first, in.second).squared_distance, 0, kExample);
-                   return both(e, run_segment_segment(in));
-                 });
+    Expect e;
+    e.near("squared_distance", segment_segment(in.first, in.second).squared_distance, 0, kExample);
+    return both(e, run_segment_segment(in));
+  });
   check::example(query::robust_test_capsule_capsule, "crossing at 1/3 and 2/3, exactly touching",
-                 CapsulePair{{{{0, 0, 0}, {3, 0, 0}}, 1}, {{{1, -2, 2}, {1, 1, 2}}, 1}}, expect_test<CapsulePair>(true));
+                 CapsulePair{{{{0, 0, 0}, {3, 0, 0}}, 1}, {{{1, -2, 2}, {1, 1, 2}}, 1}},
+                 expect_test<CapsulePair>(true));
   check::example(query::robust_test_capsule_lozenge, "resting exactly on the floor",
                  CapsuleLozenge{{{{-1, 0, 3}, {1, 0, 3}}, 1}, {kFloor, 2}}, expect_test<CapsuleLozenge>(true));
   check::example(query::robust_test_lozenge_lozenge, "a zero-size lozenge touching a corner",
-                 LozengePair{{kFloor, 0}, {{{3, 1, 0}, {1, 0, 0}, {0, 1, 0}, 0, 0}, 1}}, expect_test<LozengePair>(true));
+                 LozengePair{{kFloor, 0}, {{{3, 1, 0}, {1, 0, 0}, {0, 1, 0}, 0, 0}, 1}},
+                 expect_test<LozengePair>(true));
 
   constexpr auto s = query::robust_sweep_sphere_sphere;
   check::example(s, "touching at t = 0, moving apart", SS{{{0, 0, 0}, 2}, {0, 0, 0}, {{0, 3, 4}, 3}, {0, 3, 4}, 1},
                  expect_sweep<SS>(SweepStatus::overlapping));
-  check::example(s, "head-on, contact exactly at T = 1.75", SS{{{0, 0, 0}, 1}, {1, 0, 0}, {{10, 0, 0}, 2}, {-3, 0, 0}, 1.75},
+  check::example(s, "head-on, contact exactly at T = 1.75",
+                 SS{{{0, 0, 0}, 1}, {1, 0, 0}, {{10, 0, 0}, 2}, {-3, 0, 0}, 1.75},
                  expect_sweep<SS>(SweepStatus::contact, 1.75, {2.75, 0, 0}));
   check::example(s, "an exact graze at T", SS{{{0, 0, 0}, 1}, {0, 0, 0}, {{6, 2, 0}, 1}, {-2, 0, 0}, 3},
                  expect_sweep<SS>(SweepStatus::contact, 3, {0, 1, 0}));
@@ -455,13 +478,14 @@ TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
                  expect_sweep<SS>(SweepStatus::contact, kHairTime, Vec3(kHair * (2.0 / 3)), 1e-9 * kHairTime));
   check::example(query::robust_sweep_sphere_plane, "touching the plane, moving along it",
                  SP{{{0, 0, 2}, 1}, {1, 0, 0}, kShelf, 4}, expect_sweep<SP>(SweepStatus::overlapping));
-  check::example(query::robust_sweep_sphere_plane, "reaching it exactly at T", SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 1.5},
-                 expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
+  check::example(query::robust_sweep_sphere_plane, "reaching it exactly at T",
+                 SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 1.5}, expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
   // Step 3's flat lozenge: an axis parallel to a side only up to rounding. The recipe
   // (w . n)^2 <= R^2 |n|^2 alone says "meet" here; measure the pair itself instead.
   check::example(query::robust_test_capsule_lozenge, "an axis parallel to a flat lozenge in floating point, 532 apart",
                  input_from_token<CapsuleLozenge>(parse_token(kFlatLozengeToken)), expect_test<CapsuleLozenge>(false));
-  check::example(query::robust_sweep_sphere_capsule, "sliding exactly parallel to the axis, R from it: touches the cap at t = 2",
+  check::example(query::robust_sweep_sphere_capsule,
+                 "sliding exactly parallel to the axis, R from it: touches the cap at t = 2",
                  SC{{{-4, 2, 0}, 1}, {2, 0, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 2, {0, 1, 0}));
   check::example(query::robust_sweep_sphere_capsule, "starting exactly touching the side, moving away",
                  SC{{{3, 0, 2}, 1}, {0, 0, 1}, kRod, 4}, expect_sweep<SC>(SweepStatus::overlapping));
@@ -471,7 +495,8 @@ TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
                  SC{{{0, 0, 5}, 1}, {0, 0, -1}, {{{0, 0, 0}, {0, 0, 0}}, 1}, 3},
                  expect_sweep<SC>(SweepStatus::contact, 3, {0, 0, 1}));
   check::example(query::robust_sweep_box_plane, "a point box resting on the ground",
-                 BP{{{0, 0, 0}, Mat3::Identity(), {0, 0, 0}}, {0, 0, -1}, kGround, 1}, expect_sweep<BP>(SweepStatus::overlapping));
+                 BP{{{0, 0, 0}, Mat3::Identity(), {0, 0, 0}}, {0, 0, -1}, kGround, 1},
+                 expect_sweep<BP>(SweepStatus::overlapping));
 }
 
 TEST_CASE(LABKIT_STEP(L05S8) ": random exact degenerate cases", "[lab05][step8][oracle]") {
@@ -491,15 +516,13 @@ TEST_CASE(LABKIT_STEP(L05S8) ": random exact degenerate cases", "[lab05][step8][
                       [](const BP& in) { return run_sweep(in, Rules::exact); });
 }
 
-
 // ---- The header's preconditions ---------------------------------------------------------
 // Tagged [contract], in no step: the kit runs it with the reference (students are not
 // graded on invalid input). Every kind of invalid input must be rejected with
 // std::invalid_argument whose message names the argument.
 
 namespace {
-template <class Call>
-void rejects(const std::string& argument, Call&& call) {
+template <class Call> void rejects(const std::string& argument, Call&& call) {
   INFO("expected std::invalid_argument naming " << argument);
   try {
     call();
@@ -543,7 +566,9 @@ TEST_CASE("L05 preconditions: invalid input is rejected, naming the argument", "
   rejects("b.axis.a", [&] { test_sphere_capsule(unit, {{bad, {0, 0, 0}}, 1}); });
   rejects("b.radius", [&] { test_sphere_lozenge(unit, {floor, nan}); });
   rejects("a.radius", [&] { test_capsule_capsule({kAxis, inf}, {kAxis, 1}); });
-  rejects("b.rectangle.half_u", [&] { test_capsule_lozenge({kAxis, 1}, {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, -2, 1}, 1}); });
+  rejects("b.rectangle.half_u", [&] {
+    test_capsule_lozenge({kAxis, 1}, {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, -2, 1}, 1});
+  });
   rejects("a.radius", [&] { test_lozenge_lozenge({floor, -1}, {floor, 1}); });
 
   const Plane ground{{0, 0, 1}, 0};

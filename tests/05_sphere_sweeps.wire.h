@@ -8,22 +8,41 @@
 namespace labkit::lab05 {
 
 template <class V> void fields(PointSegmentDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("t", x.t); v("closest", x.closest);
+  v("squared_distance", x.squared_distance);
+  v("t", x.t);
+  v("closest", x.closest);
 }
 template <class V> void fields(SegmentSegmentDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("s", x.s); v("t", x.t); v("closest0", x.closest0); v("closest1", x.closest1);
+  v("squared_distance", x.squared_distance);
+  v("s", x.s);
+  v("t", x.t);
+  v("closest0", x.closest0);
+  v("closest1", x.closest1);
 }
 template <class V> void fields(PointRectangleDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("s", x.s); v("t", x.t); v("closest", x.closest);
+  v("squared_distance", x.squared_distance);
+  v("s", x.s);
+  v("t", x.t);
+  v("closest", x.closest);
 }
 template <class V> void fields(SegmentRectangleDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("r", x.r); v("s", x.s); v("t", x.t);
-  v("closest0", x.closest0); v("closest1", x.closest1);
+  v("squared_distance", x.squared_distance);
+  v("r", x.r);
+  v("s", x.s);
+  v("t", x.t);
+  v("closest0", x.closest0);
+  v("closest1", x.closest1);
 }
 template <class V> void fields(RectangleRectangleDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance); v("closest0", x.closest0); v("closest1", x.closest1);
+  v("squared_distance", x.squared_distance);
+  v("closest0", x.closest0);
+  v("closest1", x.closest1);
 }
-template <class V> void fields(Sweep& s, V&& v) { v("status", s.status); v("time", s.time); v("point", s.point); }
+template <class V> void fields(Sweep& s, V&& v) {
+  v("status", s.status);
+  v("time", s.time);
+  v("point", s.point);
+}
 
 }  // namespace labkit::lab05
 

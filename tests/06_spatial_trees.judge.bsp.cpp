@@ -29,13 +29,15 @@ bool near_triangle(const Triangle& t, const Vec3& x, double tol) {
   return true;
 }
 
-double longest_edge(const Triangle& t) { return std::max({(t.v1 - t.v0).norm(), (t.v2 - t.v1).norm(), (t.v0 - t.v2).norm()}); }
+double longest_edge(const Triangle& t) {
+  return std::max({(t.v1 - t.v0).norm(), (t.v2 - t.v1).norm(), (t.v0 - t.v2).norm()});
+}
 
 struct BspShape {
-  std::vector<int> owner;                                  // the node of each piece
-  std::vector<int> parent;                                 // -1 for the root
-  std::vector<std::vector<std::pair<int, int>>> path;      // per node: (ancestor, side +1 front / -1 back)
-  std::vector<int> post_order;                             // children before parents
+  std::vector<int> owner;                              // the node of each piece
+  std::vector<int> parent;                             // -1 for the root
+  std::vector<std::vector<std::pair<int, int>>> path;  // per node: (ancestor, side +1 front / -1 back)
+  std::vector<int> post_order;                         // children before parents
 };
 
 std::string walk_bsp(const BspTree& tree, BspShape& shape) {
@@ -60,8 +62,8 @@ std::string walk_bsp(const BspTree& tree, BspShape& shape) {
     if (oracle::is_degenerate(tree.triangles[std::size_t(node.plane)]))
       return name + " takes its plane from triangle " + str(node.plane) + ", which has zero area";
     if (node.count < 0 || node.first < 0 || std::size_t(node.first) + std::size_t(node.count) > tree.pieces.size())
-      return name + " owns pieces " + str(node.first) + " to " + str(node.first + node.count - 1) + ", outside pieces (size " +
-             str(tree.pieces.size()) + ")";
+      return name + " owns pieces " + str(node.first) + " to " + str(node.first + node.count - 1) +
+             ", outside pieces (size " + str(tree.pieces.size()) + ")";
     for (int k = node.first; k < node.first + node.count; ++k) {
       if (shape.owner[std::size_t(k)] >= 0) return "piece " + str(k) + " belongs to two nodes";
       shape.owner[std::size_t(k)] = at;
@@ -69,7 +71,8 @@ std::string walk_bsp(const BspTree& tree, BspShape& shape) {
     for (const auto& [child, side] : {std::pair<int, int>{node.front, 1}, std::pair<int, int>{node.back, -1}}) {
       if (child < 0) continue;
       if (std::size_t(child) >= n) return name + " has child " + str(child) + ": no such node";
-      if (seen[std::size_t(child)]) return "node " + str(child) + " is reached twice from the root: the nodes do not form a tree";
+      if (seen[std::size_t(child)])
+        return "node " + str(child) + " is reached twice from the root: the nodes do not form a tree";
       seen[std::size_t(child)] = 1;
       shape.parent[std::size_t(child)] = at;
       shape.path[std::size_t(child)] = shape.path[std::size_t(at)];
@@ -86,7 +89,8 @@ std::string walk_bsp(const BspTree& tree, BspShape& shape) {
 }
 
 std::string check_bsp(const Mesh& mesh, const BspTree& tree, BspShape& shape) {
-  if (tree.triangles.size() != mesh.size()) return "tree.triangles must hold the mesh's " + str(mesh.size()) + " triangles";
+  if (tree.triangles.size() != mesh.size())
+    return "tree.triangles must hold the mesh's " + str(mesh.size()) + " triangles";
   bool any_area = false;
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const Triangle t = mesh.triangle(i);
@@ -106,26 +110,30 @@ std::string check_bsp(const Mesh& mesh, const BspTree& tree, BspShape& shape) {
     const BspPiece& piece = tree.pieces[k];
     const int node = shape.owner[k];
     const std::string name = "piece " + str(k) + " (at node " + str(node) + ")";
-    if (piece.source < 0 || std::size_t(piece.source) >= mesh.size()) return name + " comes from triangle " + str(piece.source) + ": no such triangle";
+    if (piece.source < 0 || std::size_t(piece.source) >= mesh.size())
+      return name + " comes from triangle " + str(piece.source) + ": no such triangle";
     const Triangle source = mesh.triangle(std::size_t(piece.source));
-    if (oracle::is_degenerate(source)) return name + " comes from triangle " + str(piece.source) + ", which has zero area";
+    if (oracle::is_degenerate(source))
+      return name + " comes from triangle " + str(piece.source) + ", which has zero area";
     const Triangle plane = mesh.triangle(std::size_t(tree.nodes[std::size_t(node)].plane));
     // In the plane exactly, or within tol of it: the header decides sides in doubles, and
     // rounding may call a triangle a hair off the plane coplanar.
     for (int v = 0; v < 3; ++v)
-      if (oracle::orientation(plane.v0, plane.v1, plane.v2, source[v]) != 0 && !(std::abs(plane_distance(plane, source[v])) <= tol))
+      if (oracle::orientation(plane.v0, plane.v1, plane.v2, source[v]) != 0 &&
+          !(std::abs(plane_distance(plane, source[v])) <= tol))
         return name + ": its triangle " + str(piece.source) + " does not lie in the node's plane (that of triangle " +
                str(tree.nodes[std::size_t(node)].plane) + ")";
     for (int v = 0; v < 3; ++v) {
       const Vec3& x = piece.triangle[v];
       if (!x.allFinite() || !near_triangle(source, x, tol))
-        return name + ": its corner " + fmt(x) + " is not on triangle " + str(piece.source) + " (tolerance " + fmt(tol) + ")";
+        return name + ": its corner " + fmt(x) + " is not on triangle " + str(piece.source) + " (tolerance " +
+               fmt(tol) + ")";
       for (const auto& [ancestor, side] : shape.path[std::size_t(node)]) {
         const Triangle& cut = mesh.triangle(std::size_t(tree.nodes[std::size_t(ancestor)].plane));
         if (side * plane_distance(cut, x) < -tol)
-          return name + ": its corner " + fmt(x) + " is " + (side > 0 ? "behind" : "in front of") + " the plane of node " +
-                 str(ancestor) + " by " + fmt(std::abs(plane_distance(cut, x))) + ", but the node sent it " +
-                 (side > 0 ? "front" : "back");
+          return name + ": its corner " + fmt(x) + " is " + (side > 0 ? "behind" : "in front of") +
+                 " the plane of node " + str(ancestor) + " by " + fmt(std::abs(plane_distance(cut, x))) +
+                 ", but the node sent it " + (side > 0 ? "front" : "back");
       }
     }
     const Vec3 n = piece.triangle.normal();
@@ -151,7 +159,8 @@ Outcome bsp_tree(const Mesh& mesh, const BspTree& got) {
   BspShape shape;
   const std::string problem = check_bsp(mesh, got, shape);
   if (!problem.empty())
-    return fail("a BSP tree of the mesh (the header's rules)", str(got.nodes.size()) + " nodes, " + str(got.pieces.size()) + " pieces", problem);
+    return fail("a BSP tree of the mesh (the header's rules)",
+                str(got.nodes.size()) + " nodes, " + str(got.pieces.size()) + " pieces", problem);
   return pass();
 }
 
@@ -170,15 +179,18 @@ Outcome classify(const PointQuery& in, Where got, Rules rules) {
   }
   if (got == expected) return doubt ? ambiguous() : pass();
   if (doubt) return ambiguous();
-  std::string why = "the point is " + (expected == Where::on ? std::string("on the surface") : describe(expected) + " the solid") +
-                    " of the closed mesh" +
-                    (rules == Rules::exact ? std::string() : " (more than 8 tol from its surface)") + ", not " + describe(got);
+  std::string why =
+      "the point is " + (expected == Where::on ? std::string("on the surface") : describe(expected) + " the solid") +
+      " of the closed mesh" + (rules == Rules::exact ? std::string() : " (more than 8 tol from its surface)") +
+      ", not " + describe(got);
   if (expected == Where::on)
-    why += ": it lies on a closed triangle of the surface; a point on a node's plane (side = 0) is neither in front nor "
-           "behind: test the node's pieces, then classify it in both subtrees";
+    why +=
+        ": it lies on a closed triangle of the surface; a point on a node's plane (side = 0) is neither in front nor "
+        "behind: test the node's pieces, then classify it in both subtrees";
   else
-    why += ": descend strictly in front to the front child, strictly behind to the back child; a missing front child "
-           "is outside, a missing back child inside";
+    why +=
+        ": descend strictly in front to the front child, strictly behind to the back child; a missing front child "
+        "is outside, a missing back child inside";
   return fail(describe(expected), describe(got), why);
 }
 
@@ -187,12 +199,14 @@ Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vect
   const std::string problem = check_bsp(in.mesh, tree, shape);
   if (!problem.empty()) return fail("a valid BSP tree first (step 3)", "an invalid one", problem);
   const std::size_t n = tree.pieces.size();
-  if (got.size() != n) return fail("all " + str(n) + " pieces", str(got.size()) + " entries", "list every piece exactly once");
+  if (got.size() != n)
+    return fail("all " + str(n) + " pieces", str(got.size()) + " entries", "list every piece exactly once");
   std::vector<int> position(n, -1);
   for (std::size_t k = 0; k < got.size(); ++k) {
     const int piece = got[k];
     if (piece < 0 || std::size_t(piece) >= n) return fail("piece indices", "entry " + str(piece), "no such piece");
-    if (position[std::size_t(piece)] >= 0) return fail("each piece once", "piece " + str(piece) + " twice", "list every piece exactly once");
+    if (position[std::size_t(piece)] >= 0)
+      return fail("each piece once", "piece " + str(piece) + " twice", "list every piece exactly once");
     position[std::size_t(piece)] = int(k);
   }
   // Per node: the first and last positions of its own pieces, and of its whole subtree.
@@ -228,13 +242,16 @@ Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vect
     const std::string where = std::string(side > 0 ? "in front of" : "behind") + " the plane of node " + str(node) +
                               " (triangle " + str(b.plane) + ")";
     if (far_range.hi >= 0 && mine.hi >= 0 && far_range.hi > mine.lo)
-      why = "the eye is " + where + ", so its far subtree comes before its own pieces; yet a far piece is at position " +
-            str(far_range.hi) + " and the node's own at " + str(mine.lo);
+      why = "the eye is " + where +
+            ", so its far subtree comes before its own pieces; yet a far piece is at position " + str(far_range.hi) +
+            " and the node's own at " + str(mine.lo);
     else if (mine.hi >= 0 && near_range.hi >= 0 && mine.hi > near_range.lo)
-      why = "the eye is " + where + ", so its own pieces come before its near subtree; yet a near piece is at position " +
-            str(near_range.lo) + " and the node's own at " + str(mine.hi);
+      why = "the eye is " + where +
+            ", so its own pieces come before its near subtree; yet a near piece is at position " + str(near_range.lo) +
+            " and the node's own at " + str(mine.hi);
     else if (far_range.hi >= 0 && near_range.hi >= 0 && far_range.hi > near_range.lo)
-      why = "the eye is " + where + ", so its far subtree comes before its near subtree; yet a near piece is at position " +
+      why = "the eye is " + where +
+            ", so its far subtree comes before its near subtree; yet a near piece is at position " +
             str(near_range.lo) + " and a far one at " + str(far_range.hi);
     if (why.empty()) continue;
     if (rules == Rules::random && oracle::side_in_doubt(plane, in.point, tol)) {

@@ -52,14 +52,16 @@ std::string walk_kd_tree(const KdTree& tree, std::vector<LeafCell>& leaves) {
       for (int k = 1; k <= count; ++k) {
         const int i = tree.items[std::size_t(node.index + k)];
         if (i < 0 || std::size_t(i) >= tree.triangles.size())
-          return name + " lists triangle " + str(i) + ", which does not exist (" + str(tree.triangles.size()) + " triangles)";
+          return name + " lists triangle " + str(i) + ", which does not exist (" + str(tree.triangles.size()) +
+                 " triangles)";
         if (!listed.insert(i).second) return name + " lists triangle " + str(i) + " twice";
       }
       leaves.push_back({at.node, at.cell});
       continue;
     }
     if (node.axis < 0 || node.axis > 2) return name + " has axis " + str(node.axis) + " (0, 1, 2, or kLeaf = 3)";
-    if (at.depth >= kMaxDepth) return name + " is an interior node at depth " + str(at.depth) + ": deeper than kMaxDepth";
+    if (at.depth >= kMaxDepth)
+      return name + " is an interior node at depth " + str(at.depth) + ": deeper than kMaxDepth";
     const int axis = node.axis;
     if (!(node.split >= at.cell.min[axis] && node.split <= at.cell.max[axis]))
       return name + " splits at " + fmt(node.split) + " on axis " + str(axis) + ", outside its cell [" +
@@ -146,9 +148,14 @@ KdTree checker_tree(const Mesh& mesh, int seed) {
         split = std::clamp(t[random.below(3)][axis], lo, hi);
         break;
       }
-      case 2: split = lo + (hi - lo) / 2; break;
-      case 3: split = random.below(2) ? lo : hi; break;  // on a wall of the cell: one side is flat
-      default: split = std::clamp(lo + (hi - lo) * random.uniform(), lo, hi);
+      case 2:
+        split = lo + (hi - lo) / 2;
+        break;
+      case 3:
+        split = random.below(2) ? lo : hi;
+        break;  // on a wall of the cell: one side is flat
+      default:
+        split = std::clamp(lo + (hi - lo) * random.uniform(), lo, hi);
     }
     std::vector<int> below, above;
     for (int i : list) {
@@ -173,7 +180,8 @@ KdTree checker_tree(const Mesh& mesh, int seed) {
 Outcome kd_tree(const Mesh& mesh, const KdTree& got) {
   const std::string expected = "a valid k-d tree (the header's rule)";
   if (got.triangles.size() != mesh.size())
-    return fail(expected, str(got.triangles.size()) + " triangles", "tree.triangles must hold the mesh's " + str(mesh.size()) + " triangles");
+    return fail(expected, str(got.triangles.size()) + " triangles",
+                "tree.triangles must hold the mesh's " + str(mesh.size()) + " triangles");
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const Triangle t = mesh.triangle(i);
     if (got.triangles[i].v0 != t.v0 || got.triangles[i].v1 != t.v1 || got.triangles[i].v2 != t.v2)
@@ -182,7 +190,8 @@ Outcome kd_tree(const Mesh& mesh, const KdTree& got) {
     if (t.normal() == Vec3::Zero()) continue;
     const Aabb b = box_of(t);
     if (!((b.min.array() >= got.bounds.min.array()).all() && (b.max.array() <= got.bounds.max.array()).all()))
-      return fail(expected, "bounds " + labkit::describe(got.bounds), "triangle " + str(i) + " is not inside the bounds");
+      return fail(expected, "bounds " + labkit::describe(got.bounds),
+                  "triangle " + str(i) + " is not inside the bounds");
   }
   std::vector<LeafCell> leaves;
   const std::string shape = walk_kd_tree(got, leaves);
@@ -222,14 +231,15 @@ Outcome kd_tree(const Mesh& mesh, const KdTree& got) {
     for (const LeafCell& leaf : reached) {
       if (!meets(leaf.cell)) continue;
       const std::vector<int>& l = lists[leaf.node];
-      if (!std::binary_search(l.begin(), l.end(), int(i)))
-      {  // only touching the cell's wall: the classic strict comparison
+      if (!std::binary_search(l.begin(), l.end(),
+                              int(i))) {  // only touching the cell's wall: the classic strict comparison
         bool touches = false;
-        for (int a = 0; a < 3; ++a) touches = touches || box.max[a] == leaf.cell.min[a] || box.min[a] == leaf.cell.max[a];
+        for (int a = 0; a < 3; ++a)
+          touches = touches || box.max[a] == leaf.cell.min[a] || box.min[a] == leaf.cell.max[a];
         return fail(expected, "leaf " + str(leaf.node) + " without triangle " + str(i),
-                    "every triangle that meets a leaf's closed cell, even at one point, is listed in it: triangle " + str(i) +
-                        " (" + labkit::describe(t) + ") meets the closed cell of leaf " + str(leaf.node) + " (" +
-                        labkit::describe(leaf.cell) + ")" +
+                    "every triangle that meets a leaf's closed cell, even at one point, is listed in it: triangle " +
+                        str(i) + " (" + labkit::describe(t) + ") meets the closed cell of leaf " + str(leaf.node) +
+                        " (" + labkit::describe(leaf.cell) + ")" +
                         (touches ? ", touching its wall: a triangle touching the split plane goes to both sides "
                                    "(min[axis] <= split, max[axis] >= split)"
                                  : ""));

@@ -40,16 +40,20 @@ std::vector<Aabb> triangle_boxes(const std::vector<Triangle>& triangles);
 KdHit brute_first_hit(const std::vector<Triangle>& triangles, const std::vector<Aabb>& boxes, const Segment& segment);
 
 // Step 2. `calls`: how many times given::segment_triangle ran during the query.
-Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls, Rules rules = Rules::random);
-Outcome any_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls, Rules rules = Rules::random);
-Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std::uint64_t calls, Rules rules = Rules::random);
+Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls,
+                  Rules rules = Rules::random);
+Outcome any_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls,
+                Rules rules = Rules::random);
+Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std::uint64_t calls,
+                 Rules rules = Rules::random);
 
 // Step 3: the tree is a BSP tree of the mesh (pieces in their planes, in their cells,
 // tiling their triangles); a point is classified like the exact oracle does.
 Outcome bsp_tree(const Mesh& mesh, const BspTree& got);
 Outcome classify(const PointQuery& in, Where got, Rules rules = Rules::random);
 // Step 4: `tree` must pass bsp_tree; the order obeys the painter's rule at every node.
-Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vector<int>& got, Rules rules = Rules::random);
+Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vector<int>& got,
+                      Rules rules = Rules::random);
 
 // Step 5.
 Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rules = Rules::random);
@@ -68,7 +72,8 @@ long long changed_order(const std::vector<Sphere>& before, const std::vector<Sph
 ObbTree obb_tree(const Mesh& mesh, int seed);
 // Step 7: the pairs against the exact brute force over all triangle pairs, and the counts
 // against the header's traversal (box tests, triangle tests) run on the same trees.
-Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got, Rules rules = Rules::random);
+Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got,
+                            Rules rules = Rules::random);
 
 }  // namespace judge
 }  // namespace labkit::lab06

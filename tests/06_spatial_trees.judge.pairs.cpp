@@ -32,13 +32,16 @@ Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rul
   const std::string expected = describe_pairs(exact), answer = describe_pairs(got.pairs);
   for (std::size_t k = 0; k < got.pairs.size(); ++k) {
     const auto& p = got.pairs[k];
-    if (p[0] < 0 || p[1] >= n || p[0] >= p[1]) return fail(expected, answer, "{" + str(p[0]) + ", " + str(p[1]) + "} is not a pair i < j of spheres");
-    if (k > 0 && !(got.pairs[k - 1] < p)) return fail(expected, answer, "the pairs are not sorted, or a pair is reported twice");
+    if (p[0] < 0 || p[1] >= n || p[0] >= p[1])
+      return fail(expected, answer, "{" + str(p[0]) + ", " + str(p[1]) + "} is not a pair i < j of spheres");
+    if (k > 0 && !(got.pairs[k - 1] < p))
+      return fail(expected, answer, "the pairs are not sorted, or a pair is reported twice");
   }
   const long long all = (long long)n * (n - 1) / 2;
   if (got.tests < (long long)got.pairs.size() || got.tests > all)
     return fail(expected, answer + ", tests = " + str(got.tests),
-                "tests must count the pairs you tested: at least the " + str(got.pairs.size()) + " you report, at most all " + str(all));
+                "tests must count the pairs you tested: at least the " + str(got.pairs.size()) +
+                    " you report, at most all " + str(all));
   // Within 6 tol of touching, a perturbation may part them or make them meet: moving the
   // centres by tol changes their distance by up to 2 sqrt(3) tol, the radii by 2 tol.
   const double tol = tolerance_of(in);
@@ -59,8 +62,9 @@ Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rul
     if (j == got.pairs.size() || (i < exact.size() && exact[i] < got.pairs[j])) {  // missing
       if (!in_doubt(exact[i]))
         return fail(expected, answer,
-                    "closed balls meet when |c_i - c_j| <= r_i + r_j: spheres " + str(exact[i][0]) + " and " + str(exact[i][1]) +
-                        " have |c_i - c_j| - (r_i + r_j) = " + gap(exact[i]) + ", yet the pair is missing" +
+                    "closed balls meet when |c_i - c_j| <= r_i + r_j: spheres " + str(exact[i][0]) + " and " +
+                        str(exact[i][1]) + " have |c_i - c_j| - (r_i + r_j) = " + gap(exact[i]) +
+                        ", yet the pair is missing" +
                         (gap_of(exact[i]) == 0 ? " (they touch, and touching counts: compare with <=, never <)" : "") +
                         ". A pair is lost before its test when a sweep stops too early (keep going while low[j] <= "
                         "high[i]) or a grid's cells are narrower than the largest diameter 2 r_max (balls that meet "
@@ -71,7 +75,8 @@ Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rul
       if (!in_doubt(got.pairs[j]))
         return fail(expected, answer,
                     "closed balls meet when |c_i - c_j| <= r_i + r_j: spheres " + str(got.pairs[j][0]) + " and " +
-                        str(got.pairs[j][1]) + " have |c_i - c_j| - (r_i + r_j) = " + gap(got.pairs[j]) + " > 0: apart");
+                        str(got.pairs[j][1]) + " have |c_i - c_j| - (r_i + r_j) = " + gap(got.pairs[j]) +
+                        " > 0: apart");
       doubt = true;
       ++j;
     } else {
@@ -125,30 +130,37 @@ Outcome sweep_frames(const SweepCase& in, const SweepRuns& got, Rules rules) {
     const std::string frame = "frame " + str(int(k) + 1) + " of " + str(in.frames.size()) + ": ";
     Outcome right = overlapping_pairs(SphereSet{spheres}, SpherePairs{f.pairs, f.tests}, rules);
     if (right.verdict == Outcome::Verdict::fail) {
-      right.why = frame + right.why +
-                  (k > 0 ? " (the pairs overlapping on x change only when a low end and a high end swap: add the pair when a low "
-                           "end passes a high end, remove it when a high end passes a low end)"
-                         : "");
+      right.why =
+          frame + right.why +
+          (k > 0
+               ? " (the pairs overlapping on x change only when a low end and a high end swap: add the pair when a low "
+                 "end passes a high end, remove it when a high end passes a low end)"
+               : "");
       return right;
     }
     doubt = doubt || right.verdict == Outcome::Verdict::ambiguous;
     const long long on_x = overlapping_on_x(spheres);
     if (f.tests > on_x)
-      return fail(str(on_x) + " pairs overlap on x", "tests = " + str(f.tests),
-                  frame + "test only the pairs whose intervals overlap on x; a pair leaves the set when a high end passes its "
-                          "low end (a swap), and must not be tested after");
+      return fail(
+          str(on_x) + " pairs overlap on x", "tests = " + str(f.tests),
+          frame +
+              "test only the pairs whose intervals overlap on x; a pair leaves the set when a high end passes its "
+              "low end (a swap), and must not be tested after");
     if (k == 0) continue;
     const long long changed = changed_order(in.frames[k - 1], spheres);
     const long long ends = 2 * (long long)spheres.size();
     if (f.swaps > changed)
       return fail("swaps <= " + str(changed) + " (pairs of ends whose order changed)", "swaps = " + str(f.swaps),
-                  frame + "frame coherence: insertion sort on the kept list swaps only ends whose order changed since the "
-                          "last frame; more swaps mean the list was not kept (or not sorted) from the frame before");
+                  frame +
+                      "frame coherence: insertion sort on the kept list swaps only ends whose order changed since the "
+                      "last frame; more swaps mean the list was not kept (or not sorted) from the frame before");
     if (got[k].comparisons > ends + changed)
-      return fail("compare_ends calls <= " + str(ends) + " + " + str(changed), "compare_ends calls = " + str(got[k].comparisons),
-                  frame + "frame coherence: keep the sorted ends between frames and re-sort by insertion, about one "
-                          "comparison per end plus one per swap; sorting from scratch costs n log n however little the "
-                          "spheres moved");
+      return fail("compare_ends calls <= " + str(ends) + " + " + str(changed),
+                  "compare_ends calls = " + str(got[k].comparisons),
+                  frame +
+                      "frame coherence: keep the sorted ends between frames and re-sort by insertion, about one "
+                      "comparison per end plus one per swap; sorting from scratch costs n log n however little the "
+                      "spheres moved");
   }
   return doubt ? ambiguous() : pass();
 }
@@ -205,7 +217,8 @@ ObbTree obb_tree(const Mesh& mesh, int seed) {
       return u.dot(t.v0 + t.v1 + t.v2);
     };
     std::sort(list.begin(), list.end(), [&](int x, int y) { return key(x) < key(y) || (key(x) == key(y) && x < y); });
-    const std::vector<int> lower(list.begin(), list.begin() + std::ptrdiff_t(list.size() / 2)), upper(list.begin() + std::ptrdiff_t(list.size() / 2), list.end());
+    const std::vector<int> lower(list.begin(), list.begin() + std::ptrdiff_t(list.size() / 2)),
+        upper(list.begin() + std::ptrdiff_t(list.size() / 2), list.end());
     const int left = self(self, lower);
     const int right = self(self, upper);
     tree.nodes[std::size_t(at)].left = left, tree.nodes[std::size_t(at)].right = right;
@@ -221,7 +234,9 @@ namespace {
 TrianglePairs header_traversal(const ObbTree& a, const ObbTree& b) {
   TrianglePairs out;
   if (a.nodes.empty() || b.nodes.empty()) return out;
-  const auto volume = [](const ObbNode& n) { return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2]; };
+  const auto volume = [](const ObbNode& n) {
+    return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2];
+  };
   std::vector<std::array<int, 2>> todo{{0, 0}};
   while (!todo.empty()) {
     const auto [i, j] = todo.back();
@@ -246,13 +261,17 @@ TrianglePairs header_traversal(const ObbTree& a, const ObbTree& b) {
 
 bool pair_meets(const Triangle& s, const Triangle& t) {
   for (int k = 0; k < 3; ++k)
-    if (oracle::segment_crosses_triangle({s[k], s[(k + 1) % 3]}, t) || oracle::segment_crosses_triangle({t[k], t[(k + 1) % 3]}, s)) return true;
+    if (oracle::segment_crosses_triangle({s[k], s[(k + 1) % 3]}, t) ||
+        oracle::segment_crosses_triangle({t[k], t[(k + 1) % 3]}, s))
+      return true;
   return false;
 }
 
 bool pair_in_doubt(const Triangle& s, const Triangle& t, double tol) {
   for (int k = 0; k < 3; ++k)
-    if (oracle::segment_triangle_in_doubt({s[k], s[(k + 1) % 3]}, t, tol) || oracle::segment_triangle_in_doubt({t[k], t[(k + 1) % 3]}, s, tol)) return true;
+    if (oracle::segment_triangle_in_doubt({s[k], s[(k + 1) % 3]}, t, tol) ||
+        oracle::segment_triangle_in_doubt({t[k], t[(k + 1) % 3]}, s, tol))
+      return true;
   return false;
 }
 
@@ -269,32 +288,40 @@ Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree&
   const std::string expected = describe_pairs(exact), answer = describe_pairs(got.answer.pairs);
   const TrianglePairs bound = header_traversal(a, b);
   if (got.box_calls != got.answer.box_tests || got.triangle_calls != got.answer.triangle_tests)
-    return fail("box_tests = " + str(got.box_calls) + ", triangle_tests = " + str(got.triangle_calls) + " (the calls counted)",
-                "box_tests = " + str(got.answer.box_tests) + ", triangle_tests = " + str(got.answer.triangle_tests),
-                "box_tests and triangle_tests count your calls of given_boxes_overlap and given_triangles_meet");
+    return fail(
+        "box_tests = " + str(got.box_calls) + ", triangle_tests = " + str(got.triangle_calls) + " (the calls counted)",
+        "box_tests = " + str(got.answer.box_tests) + ", triangle_tests = " + str(got.answer.triangle_tests),
+        "box_tests and triangle_tests count your calls of given_boxes_overlap and given_triangles_meet");
   if (got.answer.box_tests > bound.box_tests)
-    return fail("at most " + str(bound.box_tests) + " box tests", "box_tests = " + str(got.answer.box_tests),
-                "the dual traversal descends one node at a time, the one that is not a leaf or else the larger box "
-                "(by volume; a's at a tie), and stops where the boxes are apart: more box tests than the header's traversal");
+    return fail(
+        "at most " + str(bound.box_tests) + " box tests", "box_tests = " + str(got.answer.box_tests),
+        "the dual traversal descends one node at a time, the one that is not a leaf or else the larger box "
+        "(by volume; a's at a tie), and stops where the boxes are apart: more box tests than the header's traversal");
   if (got.answer.triangle_tests > bound.triangle_tests)
-    return fail("at most " + str(bound.triangle_tests) + " triangle tests", "triangle_tests = " + str(got.answer.triangle_tests),
-                "triangles are tested only in pairs of leaves whose boxes overlap, after descending both trees to their leaves");
+    return fail("at most " + str(bound.triangle_tests) + " triangle tests",
+                "triangle_tests = " + str(got.answer.triangle_tests),
+                "triangles are tested only in pairs of leaves whose boxes overlap, after descending both trees to "
+                "their leaves");
   const double tol = kRelative * std::max(scale_of(in.a), scale_of(in.b));
   const auto doubt = [&](const std::array<int, 2>& p) {
-    return rules == Rules::random && pair_in_doubt(in.a.triangle(std::size_t(p[0])), in.b.triangle(std::size_t(p[1])), tol);
+    return rules == Rules::random &&
+           pair_in_doubt(in.a.triangle(std::size_t(p[0])), in.b.triangle(std::size_t(p[1])), tol);
   };
   const int na = int(in.a.size()), nb = int(in.b.size());
   for (std::size_t k = 0; k < got.answer.pairs.size(); ++k) {
     const auto& p = got.answer.pairs[k];
-    if (p[0] < 0 || p[0] >= na || p[1] < 0 || p[1] >= nb) return fail(expected, answer, "{" + str(p[0]) + ", " + str(p[1]) + "} is not a pair of triangles of a and b");
-    if (k > 0 && !(got.answer.pairs[k - 1] < p)) return fail(expected, answer, "the pairs are not sorted, or a pair is reported twice");
+    if (p[0] < 0 || p[0] >= na || p[1] < 0 || p[1] >= nb)
+      return fail(expected, answer, "{" + str(p[0]) + ", " + str(p[1]) + "} is not a pair of triangles of a and b");
+    if (k > 0 && !(got.answer.pairs[k - 1] < p))
+      return fail(expected, answer, "the pairs are not sorted, or a pair is reported twice");
   }
   bool in_doubt = false;
   const auto meets = [&](const std::array<int, 2>& p) { return std::binary_search(exact.begin(), exact.end(), p); };
   for (const auto& p : got.answer.pairs)
     if (!meets(p)) {
       if (!doubt(p))
-        return fail(expected, answer, "triangles " + str(p[0]) + " and " + str(p[1]) + " do not meet: no edge of one hits the other");
+        return fail(expected, answer,
+                    "triangles " + str(p[0]) + " and " + str(p[1]) + " do not meet: no edge of one hits the other");
       in_doubt = true;
     }
   if (in.every) {
@@ -303,12 +330,14 @@ Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree&
         if (!doubt(p))
           return fail(expected, answer,
                       "every pair that meets, when every = true: triangles " + str(p[0]) + " and " + str(p[1]) +
-                          " meet, yet the pair is missing (descend both trees until both nodes are leaves, and test all the leaves' pairs; "
+                          " meet, yet the pair is missing (descend both trees until both nodes are leaves, and test "
+                          "all the leaves' pairs; "
                           "stop early only when one pair is asked for)");
         in_doubt = true;
       }
   } else {
-    if (got.answer.pairs.size() > 1) return fail("one pair or none", answer, "every = false asks for one pair: stop at the first pair found");
+    if (got.answer.pairs.size() > 1)
+      return fail("one pair or none", answer, "every = false asks for one pair: stop at the first pair found");
     if (got.answer.pairs.empty() && !exact.empty()) {
       bool all_doubt = true;
       for (const auto& p : exact) all_doubt = all_doubt && doubt(p);

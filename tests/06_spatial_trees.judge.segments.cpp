@@ -46,8 +46,7 @@ double t_tolerance(const Segment& s, const Triangle& tri, double tol) {
 }
 
 // "triangle 3 at t = 0.5, ...": the exact crossings or the answer's hits.
-template <class Hit>
-std::string describe_hits(const std::vector<Hit>& hits) {
+template <class Hit> std::string describe_hits(const std::vector<Hit>& hits) {
   std::string s;
   for (std::size_t k = 0; k < hits.size() && k < 12; ++k)
     s += (s.empty() ? "" : ", ") + ("triangle " + str(hits[k].triangle) + " at t = " + fmt(hits[k].t));
@@ -55,17 +54,22 @@ std::string describe_hits(const std::vector<Hit>& hits) {
   return s.empty() ? "no hit" : s;
 }
 
-std::string describe_hit(const KdHit& h) { return h.hit ? "triangle " + str(h.triangle) + " at t = " + fmt(h.t) : "no hit"; }
+std::string describe_hit(const KdHit& h) {
+  return h.hit ? "triangle " + str(h.triangle) + " at t = " + fmt(h.t) : "no hit";
+}
 
 // A reported hit on a triangle: it is that triangle's crossing, as given::segment_triangle
 // reports it (point on the segment and the triangle, t and the weights reproduce it).
 std::string check_hit(const Segment& s, const Mesh& mesh, const KdHit& h, double tol) {
-  if (h.triangle < 0 || std::size_t(h.triangle) >= mesh.size()) return "triangle " + str(h.triangle) + " does not exist";
+  if (h.triangle < 0 || std::size_t(h.triangle) >= mesh.size())
+    return "triangle " + str(h.triangle) + " does not exist";
   const Triangle tri = mesh.triangle(std::size_t(h.triangle));
   if (!h.point.allFinite() || !oracle::within(h.point, tri, tol))
     return "the point " + fmt(h.point) + " is not on triangle " + str(h.triangle) + " (tolerance " + fmt(tol) + ")";
-  if (!oracle::within(h.point, s, tol)) return "the point " + fmt(h.point) + " is not on the segment (tolerance " + fmt(tol) + ")";
-  if (!oracle::parameter_reproduces(s, h.t, h.point, tol)) return "a + t (b - a) with t = " + fmt(h.t) + " is not the point " + fmt(h.point);
+  if (!oracle::within(h.point, s, tol))
+    return "the point " + fmt(h.point) + " is not on the segment (tolerance " + fmt(tol) + ")";
+  if (!oracle::parameter_reproduces(s, h.t, h.point, tol))
+    return "a + t (b - a) with t = " + fmt(h.t) + " is not the point " + fmt(h.point);
   if (!(std::abs(h.barycentric.sum() - 1) <= kRelative) || !oracle::weights_reproduce(tri, h.barycentric, h.point, tol))
     return "the weights " + fmt(h.barycentric) + " do not describe the point (use given::segment_triangle's)";
   return "";
@@ -80,8 +84,8 @@ std::string missed_in(const KdTree& tree, const Segment& s, int triangle) {
     const auto [t0, t1] = clip(leaf.cell, s, 0.0);
     const std::vector<int> l = listed(tree, leaf.node);
     if (t0 <= t1 && std::binary_search(l.begin(), l.end(), triangle))
-      return ": leaf " + str(leaf.node) + " lists it, and the segment meets that leaf's cell on t = [" + fmt(t0) + ", " +
-             fmt(t1) + "]; the walk must visit every leaf the segment meets";
+      return ": leaf " + str(leaf.node) + " lists it, and the segment meets that leaf's cell on t = [" + fmt(t0) +
+             ", " + fmt(t1) + "]; the walk must visit every leaf the segment meets";
   }
   return "";
 }
@@ -99,7 +103,8 @@ Outcome mesh_yes_no(const TreeQuery& in, const KdTree& tree, const std::vector<S
   const std::string clear = rules == Rules::exact ? "" : " (no input within 1e-9 S answers otherwise)";
   if (expected)
     return fail("a hit", "no hit",
-                "the segment hits triangle " + str(first) + " by the given test's rule" + clear + missed_in(tree, in.segment, first));
+                "the segment hits triangle " + str(first) + " by the given test's rule" + clear +
+                    missed_in(tree, in.segment, first));
   return fail("no hit", "a hit",
               "by the given test's rule the segment hits no triangle" + clear +
                   " (a segment in a triangle's plane, or of zero length, never hits here)");
@@ -115,7 +120,8 @@ std::string check_tests(const TreeQuery& in, const KdTree& tree, int reported, s
   const long long allowed = allowed_tests(tree, leaves, in.segment, tolerance_of(in), until);
   if (reported <= allowed) return "";
   if (until < kInfinity)
-    return "first_hit and any_hit may search only the leaves the segment enters no later than the hit they return (t = " +
+    return "first_hit and any_hit may search only the leaves the segment enters no later than the hit they return (t "
+           "= " +
            fmt(until) + "): those list " + str(allowed) + " triangle(s), you made " + str(reported) +
            " tests (stop once the best hit is at or before the leaf's far end t1)";
   return "a query may search only the leaves whose closed cell the segment meets: those list " + str(allowed) +
@@ -137,16 +143,19 @@ Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std
   if (got.hit) {
     // A hit on a triangle whose crossing is in doubt (nearly flat, grazed) is not checked
     // for its geometry: there the given test's point may be far off, and any answer passes.
-    const bool doubtful = got.triangle >= 0 && std::size_t(got.triangle) < all.size() && all[std::size_t(got.triangle)].unstable;
+    const bool doubtful =
+        got.triangle >= 0 && std::size_t(got.triangle) < all.size() && all[std::size_t(got.triangle)].unstable;
     const std::string problem = doubtful ? std::string() : check_hit(in.segment, in.mesh, got, tol);
     if (!problem.empty()) return fail(expected, describe_hit(got), problem);
     const Status& st = all[std::size_t(got.triangle)];
-    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "the segment does not hit triangle " + str(got.triangle));
+    if (!st.hit && !st.unstable)
+      return fail(expected, describe_hit(got), "the segment does not hit triangle " + str(got.triangle));
     // The first hit whose existence is not in doubt bounds t from above.
     const Triangle mine = in.mesh.triangle(std::size_t(got.triangle));
     for (const oracle::Crossing& h : hits) {
       if (all[std::size_t(h.triangle)].unstable) continue;
-      const double slack = t_tolerance(in.segment, in.mesh.triangle(std::size_t(h.triangle)), tol) + t_tolerance(in.segment, mine, tol);
+      const double slack =
+          t_tolerance(in.segment, in.mesh.triangle(std::size_t(h.triangle)), tol) + t_tolerance(in.segment, mine, tol);
       if (got.t > h.t + slack)
         return fail(expected, describe_hit(got),
                     "first_hit returns the smallest t: triangle " + str(h.triangle) + " is hit at t = " + fmt(h.t) +
@@ -167,11 +176,13 @@ Outcome any_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::
   const auto expected = [&] { return describe_hits(oracle::segment_mesh_crossings(in.segment, in.mesh)); };
   if (decision.verdict == Outcome::Verdict::fail) return fail(expected(), describe_hit(got), decision.why);
   if (got.hit) {
-    const bool doubtful = got.triangle >= 0 && std::size_t(got.triangle) < all.size() && all[std::size_t(got.triangle)].unstable;
+    const bool doubtful =
+        got.triangle >= 0 && std::size_t(got.triangle) < all.size() && all[std::size_t(got.triangle)].unstable;
     const std::string problem = doubtful ? std::string() : check_hit(in.segment, in.mesh, got, tol);
     if (!problem.empty()) return fail(expected(), describe_hit(got), problem);
     const Status& st = all[std::size_t(got.triangle)];
-    if (!st.hit && !st.unstable) return fail(expected(), describe_hit(got), "the segment does not hit triangle " + str(got.triangle));
+    if (!st.hit && !st.unstable)
+      return fail(expected(), describe_hit(got), "the segment does not hit triangle " + str(got.triangle));
   }
   const std::string counts = check_tests(in, tree, got.tests, calls, got.hit ? got.t : kInfinity);
   if (!counts.empty()) return fail(expected(), describe_hit(got) + ", tests = " + str(got.tests), counts);
@@ -192,20 +203,23 @@ Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std
     const std::string problem = doubtful ? std::string() : check_hit(in.segment, in.mesh, h, tol);
     if (!problem.empty()) return fail(expected, answer, problem);
     if (!reported.insert(h.triangle).second)
-      return fail(expected, answer, "all_hits reports each triangle once: triangle " + str(h.triangle) +
-                                        " is reported twice (a triangle listed in two leaves is tested in both)");
+      return fail(expected, answer,
+                  "all_hits reports each triangle once: triangle " + str(h.triangle) +
+                      " is reported twice (a triangle listed in two leaves is tested in both)");
     const Triangle tri = in.mesh.triangle(std::size_t(h.triangle));
     if (!crossing({in.segment, tri})) {
-      if (!unstable(in.segment, tri, tol, rules)) return fail(expected, answer, "the segment does not hit triangle " + str(h.triangle));
+      if (!unstable(in.segment, tri, tol, rules))
+        return fail(expected, answer, "the segment does not hit triangle " + str(h.triangle));
       doubt = true;
     }
     if (k + 1 < got.hits.size()) {
       const KdHit& next = got.hits[k + 1];
       const bool ordered = h.t < next.t || (h.t == next.t && h.triangle < next.triangle);
       if (!ordered && next.triangle != h.triangle)  // a repeat is named as such next
-        return fail(expected, answer, "all_hits lists its hits sorted by t (ties: lower index first): triangle " +
-                                          str(h.triangle) + " at t = " + fmt(h.t) + " comes before triangle " +
-                                          str(next.triangle) + " at t = " + fmt(next.t));
+        return fail(expected, answer,
+                    "all_hits lists its hits sorted by t (ties: lower index first): triangle " + str(h.triangle) +
+                        " at t = " + fmt(h.t) + " comes before triangle " + str(next.triangle) +
+                        " at t = " + fmt(next.t));
     }
   }
   for (const oracle::Crossing& h : hits) {
@@ -214,8 +228,9 @@ Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std
       doubt = true;
       continue;
     }
-    return fail(expected, answer, "all_hits reports every triangle hit: triangle " + str(h.triangle) + " (hit at t = " +
-                                      fmt(h.t) + ") is missing" + missed_in(tree, in.segment, h.triangle));
+    return fail(expected, answer,
+                "all_hits reports every triangle hit: triangle " + str(h.triangle) + " (hit at t = " + fmt(h.t) +
+                    ") is missing" + missed_in(tree, in.segment, h.triangle));
   }
   const std::string counts = check_tests(in, tree, got.tests, calls, kInfinity);
   if (!counts.empty()) return fail(expected, answer + ", tests = " + str(got.tests), counts);

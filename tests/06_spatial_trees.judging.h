@@ -25,8 +25,7 @@ using judging::tolerance_of;
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
-template <class Integer>
-std::string str(Integer n) { return std::to_string(n); }
+template <class Integer> std::string str(Integer n) { return std::to_string(n); }
 
 // The triangle's bounding box, corner by corner.
 inline Aabb box_of(const Triangle& t) {

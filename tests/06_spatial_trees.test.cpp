@@ -3,9 +3,9 @@
 #include "06_spatial_trees.judge.h"
 #include "spatial_trees.h"
 
-#include "common/splitmix.h"
 #include "common/given/segment_triangle.h"
 #include "common/oracle/oracle.h"
+#include "common/splitmix.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,14 +22,17 @@ using judge::Rules;
 // What keeps each query's calls finite, in the header's words: a crash or a time-out in
 // that query says it first (check::rule).
 const bool kRules = [] {
-  check::rule(query::build_kd_tree, "a tree has at most kMaxDepth = 64 interior nodes on any root-to-leaf path: "
-                               "stop splitting at a leaf size, or when a split makes no progress");
+  check::rule(query::build_kd_tree,
+              "a tree has at most kMaxDepth = 64 interior nodes on any root-to-leaf path: "
+              "stop splitting at a leaf size, or when a split makes no progress");
   check::rule(query::build_kd_tree_lattice, check::rule_of(query::build_kd_tree));
   for (const auto& q : {query::first_hit, query::any_hit, query::all_hits})
-    check::rule(q, "the walk visits each node at most once: the near child, then the far child only when "
-                   "0 < t_split <= t1, each with a shorter t-range, never a node twice");
-  check::rule(query::build_bsp, "each split puts every triangle in front, behind, or in the node's list: "
-                           "a subtree has fewer triangles than its parent");
+    check::rule(q,
+                "the walk visits each node at most once: the near child, then the far child only when "
+                "0 < t_split <= t1, each with a shorter t-range, never a node twice");
+  check::rule(query::build_bsp,
+              "each split puts every triangle in front, behind, or in the node's list: "
+              "a subtree has fewer triangles than its parent");
   check::rule(query::back_to_front, "each node is visited once: one subtree, the node's triangles, the other subtree");
   return true;
 }();
@@ -60,7 +63,8 @@ const Triangle kB{{5, 0, 0}, {5, 3, 0}, {5, 0, 3}};
 Mesh lean_and_stand() { return mesh_of({kA, kB}); }
 
 KdTree handout_tree() {
-  return judge::tree_of(lean_and_stand(), {{2, -1, 0}, {8, 3, 3}}, {{4, 0, 2}, {0, kLeaf, 0}, {0, kLeaf, 2}}, {1, 0, 2, 0, 1});
+  return judge::tree_of(lean_and_stand(), {{2, -1, 0}, {8, 3, 3}}, {{4, 0, 2}, {0, kLeaf, 0}, {0, kLeaf, 2}},
+                        {1, 0, 2, 0, 1});
 }
 
 // Runs a query on a tree, counting the given test's calls, and judges it.
@@ -97,11 +101,14 @@ TEST_CASE(LABKIT_STEP(L06S1) ": worked examples", "[lab06][step1]") {
   check::example(query::build_kd_tree, "the two triangles of step 2", lean_and_stand(), valid);
   // The picture in the header: triangle 7 touches y = 2, the others lie well inside
   // their leaves.
-  check::example(query::build_kd_tree, "the header's picture",
-                 mesh_of({{{1, 0, 0}, {3, 0, 0}, {2, 1, 0}}, {{5, 1, 0}, {7, 1, 0}, {6, 3, 0}}, {{1, 2, 0}, {3, 2, 0}, {2, 4, 0}}}),
-                 valid);
+  check::example(
+      query::build_kd_tree, "the header's picture",
+      mesh_of(
+          {{{1, 0, 0}, {3, 0, 0}, {2, 1, 0}}, {{5, 1, 0}, {7, 1, 0}, {6, 3, 0}}, {{1, 2, 0}, {3, 2, 0}, {2, 4, 0}}}),
+      valid);
   // Whatever the split rule, the floor of a box lies in some plane z = 0 or touches it.
-  check::example(query::build_kd_tree, "a box: faces in the planes of the cells' walls", gen::box_mesh({{0, 0, 0}, {4, 2, 1}}), valid);
+  check::example(query::build_kd_tree, "a box: faces in the planes of the cells' walls",
+                 gen::box_mesh({{0, 0, 0}, {4, 2, 1}}), valid);
   check::example(query::build_kd_tree, "twenty copies of one triangle: no split separates them",
                  mesh_of(std::vector<Triangle>(20, Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})), valid);
   check::example(query::build_kd_tree, "a sphere of 200 triangles", gen::sphere_mesh(200), valid);
@@ -111,20 +118,24 @@ TEST_CASE(LABKIT_STEP(L06S1) ": worked examples", "[lab06][step1]") {
     e.equal("nodes", int(tree.nodes.size()), 1);
     if (tree.nodes.size() == 1) {
       e.equal("axis", tree.nodes[0].axis, kLeaf);
-      e.that("items", tree.nodes[0].index >= 0 && std::size_t(tree.nodes[0].index) < tree.items.size() &&
-                          tree.items[std::size_t(tree.nodes[0].index)] == 0,
-             "a list of " + (tree.items.empty() ? std::string("nothing") : std::to_string(tree.items[0])), "a count of 0",
-             "the only leaf lists no triangle");
+      e.that("items",
+             tree.nodes[0].index >= 0 && std::size_t(tree.nodes[0].index) < tree.items.size() &&
+                 tree.items[std::size_t(tree.nodes[0].index)] == 0,
+             "a list of " + (tree.items.empty() ? std::string("nothing") : std::to_string(tree.items[0])),
+             "a count of 0", "the only leaf lists no triangle");
     }
     return e.outcome();
   });
-  check::example(query::build_kd_tree, "a zero-area triangle alone", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}), valid);
+  check::example(query::build_kd_tree, "a zero-area triangle alone", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}),
+                 valid);
 }
 
 TEST_CASE(LABKIT_STEP(L06S1) ": random cases", "[lab06][step1][oracle]") {
-  check::random_cases(query::build_kd_tree, gen::any_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+  check::random_cases(query::build_kd_tree, gen::any_mesh(),
+                      [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
   // Lattice meshes with faces in the planes the splits use: triangles touch split planes.
-  check::random_cases(query::build_kd_tree_lattice, gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+  check::random_cases(query::build_kd_tree_lattice, gen::exact_mesh(),
+                      [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
 }
 
 // ---- Step 2 --------------------------------------------------------------------------------------
@@ -147,26 +158,27 @@ TEST_CASE(LABKIT_STEP(L06S2) ": worked examples", "[lab06][step2]") {
   };
   // A is found first, in the leaf below, at t = 3/4: beyond that leaf's far end t = 1/2.
   // B, in the leaf above, is nearer: t = 5/8.
-  check::example(query::first_hit, "a hit beyond the leaf's end does not end the search", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
-                 expect_hit(1, 0.625, 3));
-  check::example(query::first_hit, "backwards: the leaf above first, A at t = 1/4", TreeQuery{mesh, {{8, 1, 1}, {0, 1, 1}}, 0},
-                 expect_hit(0, 0.25, 2));
-  check::example(query::first_hit, "in the split plane x = 4: no t_split, the leaf below", TreeQuery{mesh, {{4, 1, 4}, {4, 1, 0}}, 0},
-                 expect_hit(0, 0.5, 1));
+  check::example(query::first_hit, "a hit beyond the leaf's end does not end the search",
+                 TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0}, expect_hit(1, 0.625, 3));
+  check::example(query::first_hit, "backwards: the leaf above first, A at t = 1/4",
+                 TreeQuery{mesh, {{8, 1, 1}, {0, 1, 1}}, 0}, expect_hit(0, 0.25, 2));
+  check::example(query::first_hit, "in the split plane x = 4: no t_split, the leaf below",
+                 TreeQuery{mesh, {{4, 1, 4}, {4, 1, 0}}, 0}, expect_hit(0, 0.5, 1));
   check::example(query::all_hits, "B then A, A once though listed twice", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
                  [&tree](const TreeQuery& in) {
-                   const KdHits got = all_hits(tree, in.segment);
-                   Expect e;
-                   e.equal("count", int(got.hits.size()), 2);
-                   if (got.hits.size() == 2) {
-                     e.equal("first", got.hits[0].triangle, 1);
-                     e.near("first t", got.hits[0].t, 0.625, 1e-12);
-                     e.equal("second", got.hits[1].triangle, 0);
-                     e.near("second t", got.hits[1].t, 0.75, 1e-12);
-                   }
-                   return both(judge_all(in, tree, Rules::exact), e.outcome());
-                 });
-  check::example(query::any_hit, "A, in the first leaf: one test", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0}, [&tree](const TreeQuery& in) {
+    const KdHits got = all_hits(tree, in.segment);
+    Expect e;
+    e.equal("count", int(got.hits.size()), 2);
+    if (got.hits.size() == 2) {
+      e.equal("first", got.hits[0].triangle, 1);
+      e.near("first t", got.hits[0].t, 0.625, 1e-12);
+      e.equal("second", got.hits[1].triangle, 0);
+      e.near("second t", got.hits[1].t, 0.75, 1e-12);
+    }
+    return both(judge_all(in, tree, Rules::exact), e.outcome());
+  });
+  check::example(query::any_hit, "A, in the first leaf: one test", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
+                 [&tree](const TreeQuery& in) {
     const KdHit got = any_hit(tree, in.segment);
     Expect e;
     e.equal("hit", got.hit, true);
@@ -176,15 +188,15 @@ TEST_CASE(LABKIT_STEP(L06S2) ": worked examples", "[lab06][step2]") {
   });
   check::example(query::first_hit, "above the bounds: no leaf, no test", TreeQuery{mesh, {{0, 1, 5}, {8, 1, 5}}, 0},
                  [&tree](const TreeQuery& in) {
-                   Expect e;
-                   const KdHit first = first_hit(tree, in.segment), any = any_hit(tree, in.segment);
-                   const KdHits all = all_hits(tree, in.segment);
-                   e.equal("first_hit.hit", first.hit, false);
-                   e.equal("first_hit.tests", first.tests, 0);
-                   e.equal("any_hit.tests", any.tests, 0);
-                   e.equal("all_hits.tests", all.tests, 0);
-                   return e.outcome();
-                 });
+    Expect e;
+    const KdHit first = first_hit(tree, in.segment), any = any_hit(tree, in.segment);
+    const KdHits all = all_hits(tree, in.segment);
+    e.equal("first_hit.hit", first.hit, false);
+    e.equal("first_hit.tests", first.tests, 0);
+    e.equal("any_hit.tests", any.tests, 0);
+    e.equal("all_hits.tests", all.tests, 0);
+    return e.outcome();
+  });
   // The header's walk: t_split <= 0 means the segment moves away from the plane (or
   // starts on it): the near child only, whose leaf lists A alone.
   const auto near_only = [&tree](const TreeQuery& in) {
@@ -202,16 +214,20 @@ TEST_CASE(LABKIT_STEP(L06S2) ": worked examples", "[lab06][step2]") {
   // The given test's rule, not lab 02's: a segment in a triangle's plane, or of zero
   // length, never hits it.
   const auto no_hit = [&tree](const TreeQuery& in) {
-    return both(judge_first(in, tree, Rules::exact), both(judge_any(in, tree, Rules::exact), judge_all(in, tree, Rules::exact)));
+    return both(judge_first(in, tree, Rules::exact),
+                both(judge_any(in, tree, Rules::exact), judge_all(in, tree, Rules::exact)));
   };
   check::example(query::first_hit, "lying in B's plane x = 5, across B: no hit (the given test's rule)",
                  TreeQuery{mesh, {{5, 0.5, 0.5}, {5, 2, 0.5}}, 0}, no_hit);
-  check::example(query::first_hit, "zero length, on B: no hit (the given test's rule)", TreeQuery{mesh, {{5, 1, 1}, {5, 1, 1}}, 0}, no_hit);
+  check::example(query::first_hit, "zero length, on B: no hit (the given test's rule)",
+                 TreeQuery{mesh, {{5, 1, 1}, {5, 1, 1}}, 0}, no_hit);
 }
 
 TEST_CASE(LABKIT_STEP(L06S2) ": random cases", "[lab06][step2][oracle]") {
   const auto query = [](auto&& judge_one) {
-    return [judge_one](const TreeQuery& in) { return judge_one(in, judge::checker_tree(in.mesh, in.tree), Rules::random); };
+    return [judge_one](const TreeQuery& in) {
+      return judge_one(in, judge::checker_tree(in.mesh, in.tree), Rules::random);
+    };
   };
   check::random_cases(query::first_hit, gen::tree_query(), query(judge_first));
   check::random_cases(query::any_hit, gen::tree_query(), query(judge_any));
@@ -265,8 +281,10 @@ TEST_CASE(LABKIT_STEP(L06S3) ": worked examples", "[lab06][step3]") {
            "3 (the wall cut in two) or 4 (the floor cut in three)", "exactly one triangle is cut by the other's plane");
     return both(judge::bsp_tree(m, tree), e.outcome());
   });
-  check::example(query::build_bsp, "two faces in one plane stay at one node", gen::box_mesh({{0, 0, 0}, {2, 2, 2}}), valid);
-  check::example(query::build_bsp, "a zero-area triangle is left out", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}), [](const Mesh& m) {
+  check::example(query::build_bsp, "two faces in one plane stay at one node", gen::box_mesh({{0, 0, 0}, {2, 2, 2}}),
+                 valid);
+  check::example(query::build_bsp, "a zero-area triangle is left out", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}),
+                 [](const Mesh& m) {
     const BspTree tree = build_bsp(m);
     Expect e;
     e.equal("nodes", int(tree.nodes.size()), 0);
@@ -275,19 +293,22 @@ TEST_CASE(LABKIT_STEP(L06S3) ": worked examples", "[lab06][step3]") {
   });
   const Mesh t = tetrahedron();
   check::example(query::classify, "(1, 1, 1): inside", PointQuery{t, {1, 1, 1}}, expect_where(Where::inside));
-  check::example(query::classify, "(3, 3, 3): beyond the slanted face", PointQuery{t, {3, 3, 3}}, expect_where(Where::outside));
+  check::example(query::classify, "(3, 3, 3): beyond the slanted face", PointQuery{t, {3, 3, 3}},
+                 expect_where(Where::outside));
   check::example(query::classify, "(1, 1, 2): on the slanted face", PointQuery{t, {1, 1, 2}}, expect_where(Where::on));
   check::example(query::classify, "(2, 2, 0): on an edge", PointQuery{t, {2, 2, 0}}, expect_where(Where::on));
   check::example(query::classify, "(0, 0, 0): a vertex", PointQuery{t, {0, 0, 0}}, expect_where(Where::on));
-  check::example(query::classify, "(6, 0, 0): on two planes, outside", PointQuery{t, {6, 0, 0}}, expect_where(Where::outside));
-  check::example(query::classify, "(-1, 1, 1): behind nothing", PointQuery{t, {-1, 1, 1}}, expect_where(Where::outside));
+  check::example(query::classify, "(6, 0, 0): on two planes, outside", PointQuery{t, {6, 0, 0}},
+                 expect_where(Where::outside));
+  check::example(query::classify, "(-1, 1, 1): behind nothing", PointQuery{t, {-1, 1, 1}},
+                 expect_where(Where::outside));
 }
 
 TEST_CASE(LABKIT_STEP(L06S3) ": random cases", "[lab06][step3][oracle]") {
-  check::random_cases(query::build_bsp, gen::bsp_mesh(), [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
-  check::random_cases(query::classify, gen::point_query(), [](const PointQuery& in) {
-    return judge::classify(in, classify(build_bsp(in.mesh), in.point));
-  });
+  check::random_cases(query::build_bsp, gen::bsp_mesh(),
+                      [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
+  check::random_cases(query::classify, gen::point_query(),
+                      [](const PointQuery& in) { return judge::classify(in, classify(build_bsp(in.mesh), in.point)); });
 }
 
 // ---- Step 4 --------------------------------------------------------------------------------------
@@ -297,7 +318,8 @@ namespace {
 // Three squares' worth of triangles stacked at z = 0, 1, 2, each hiding the one below it
 // from above.
 Mesh stack_of_three() {
-  return mesh_of({{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, {{0, 0, 1}, {4, 0, 1}, {0, 4, 1}}, {{0, 0, 2}, {4, 0, 2}, {0, 4, 2}}});
+  return mesh_of(
+      {{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}}, {{0, 0, 1}, {4, 0, 1}, {0, 4, 1}}, {{0, 0, 2}, {4, 0, 2}, {0, 4, 2}}});
 }
 
 // Three long triangles, each lying over the next: no order of the whole triangles works,
@@ -328,13 +350,17 @@ TEST_CASE(LABKIT_STEP(L06S4) ": worked examples", "[lab06][step4]") {
       return both(judge::back_to_front(in, tree, order, Rules::exact), e.outcome());
     };
   };
-  check::example(query::back_to_front, "from above: bottom first", PointQuery{stack_of_three(), {1, 1, 10}}, sources({0, 1, 2}));
-  check::example(query::back_to_front, "from below: top first", PointQuery{stack_of_three(), {1, 1, -10}}, sources({2, 1, 0}));
-  check::example(query::back_to_front, "level with the middle one", PointQuery{stack_of_three(), {1, 1, 1}}, [](const PointQuery& in) {
+  check::example(query::back_to_front, "from above: bottom first", PointQuery{stack_of_three(), {1, 1, 10}},
+                 sources({0, 1, 2}));
+  check::example(query::back_to_front, "from below: top first", PointQuery{stack_of_three(), {1, 1, -10}},
+                 sources({2, 1, 0}));
+  check::example(query::back_to_front, "level with the middle one", PointQuery{stack_of_three(), {1, 1, 1}},
+                 [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
   });
-  check::example(query::back_to_front, "a pinwheel: cut, then ordered", PointQuery{pinwheel(), {2, 3, 20}}, [](const PointQuery& in) {
+  check::example(query::back_to_front, "a pinwheel: cut, then ordered", PointQuery{pinwheel(), {2, 3, 20}},
+                 [](const PointQuery& in) {
     const BspTree tree = build_bsp(in.mesh);
     Expect e;
     e.that("pieces", tree.pieces.size() > 3, std::to_string(tree.pieces.size()), "more than 3",
@@ -371,18 +397,18 @@ TEST_CASE(LABKIT_STEP(L06S5) ": worked examples", "[lab06][step5]") {
   check::example(query::overlapping_pairs, "the lecture's A R B C: only R and B meet", lecture, expect_pairs({{1, 2}}));
   check::example(query::overlapping_pairs, "touching along x: intervals [-1, 1] and [1, 3]",
                  SphereSet{{{{0, 0, 0}, 1}, {{2, 0, 0}, 1}}}, expect_pairs({{0, 1}}));
-  check::example(query::overlapping_pairs, "a point on a sphere", SphereSet{{{{3, 4, 0}, 5}, {{0, 0, 0}, 0}}}, expect_pairs({{0, 1}}));
+  check::example(query::overlapping_pairs, "a point on a sphere", SphereSet{{{{3, 4, 0}, 5}, {{0, 0, 0}, 0}}},
+                 expect_pairs({{0, 1}}));
   check::example(query::overlapping_pairs, "a row along y: x tells nothing",
                  SphereSet{{{{0, 0, 0}, 1}, {{0, 3, 0}, 1}, {{0, 6, 0}, 1.5}, {{0, 8, 0}, 1}}}, expect_pairs({{2, 3}}));
   check::example(query::overlapping_pairs, "no spheres", SphereSet{}, expect_pairs({}));
-  check::example(query::overlapping_pairs, "one sphere inside another", SphereSet{{{{0, 0, 0}, 5}, {{1, 1, 1}, 1}, {{20, 0, 0}, 1}}},
-                 expect_pairs({{0, 1}}));
+  check::example(query::overlapping_pairs, "one sphere inside another",
+                 SphereSet{{{{0, 0, 0}, 5}, {{1, 1, 1}, 1}, {{20, 0, 0}, 1}}}, expect_pairs({{0, 1}}));
 }
 
 TEST_CASE(LABKIT_STEP(L06S5) ": random cases", "[lab06][step5][oracle]") {
-  check::random_cases(query::overlapping_pairs, gen::sphere_set_case(), [](const SphereSet& in) {
-    return judge::overlapping_pairs(in, overlapping_pairs(in.spheres));
-  });
+  check::random_cases(query::overlapping_pairs, gen::sphere_set_case(),
+                      [](const SphereSet& in) { return judge::overlapping_pairs(in, overlapping_pairs(in.spheres)); });
 }
 
 // ---- Step 6 --------------------------------------------------------------------------------------
@@ -426,8 +452,10 @@ TEST_CASE(LABKIT_STEP(L06S6) ": worked examples", "[lab06][step6]") {
   moved[3].center = {7, 9, 0};
   check::example(query::sweep_frames, "the lecture's A R B C, then C 2 to the left", SweepCase{{lecture, moved}},
                  expect_frames({{{{1, 2}}, 2, 0}, {{{1, 2}}, 3, 1}}));
-  check::example(query::sweep_frames, "no spheres, twice", SweepCase{{{}, {}}}, expect_frames({{{}, 0, 0}, {{}, 0, 0}}));
-  check::example(query::sweep_frames_moving, "1,000 spheres, 10 frames of small moves along x", MovingSpheres{1000, 10, 6},
+  check::example(query::sweep_frames, "no spheres, twice", SweepCase{{{}, {}}},
+                 expect_frames({{{}, 0, 0}, {{}, 0, 0}}));
+  check::example(query::sweep_frames_moving, "1,000 spheres, 10 frames of small moves along x",
+                 MovingSpheres{1000, 10, 6},
                  [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(gen::moving_spheres(m)); });
 }
 
@@ -467,14 +495,17 @@ Mesh piercing() { return mesh_of({{{10.5, 0.5, -1}, {10.5, 0.5, 1}, {11.5, 3, 0}
 
 TEST_CASE(LABKIT_STEP(L06S7) ": OBB trees, worked examples", "[lab06][step7]") {
   check::example(query::colliding_triangles, "one triangle through another: 1 box test, 1 triangle test",
-                 BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}), mesh_of({{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, 3, 0}}}), 0, 0, true},
+                 BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}),
+                          mesh_of({{{0.5, 0.5, -1}, {0.5, 0.5, 1}, {1.5, 3, 0}}}), 0, 0, true},
                  expect_bvh({{0, 0}}, 1, 1));
   check::example(query::colliding_triangles, "a's root, then its two leaves against b: 3 box tests, 1 triangle test",
                  BvhQuery{two_apart(), piercing(), 0, 0, true}, expect_bvh({{1, 0}}, 3, 1));
   check::example(query::colliding_triangles, "b far away: the roots' boxes are apart, 1 box test",
-                 BvhQuery{two_apart(), mesh_of({{{0, 0, 50}, {2, 0, 50}, {0, 2, 50}}}), 0, 0, true}, expect_bvh({}, 1, 0));
+                 BvhQuery{two_apart(), mesh_of({{{0, 0, 50}, {2, 0, 50}, {0, 2, 50}}}), 0, 0, true},
+                 expect_bvh({}, 1, 0));
   check::example(query::colliding_triangles, "coplanar overlapping triangles never meet here",
-                 BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}), mesh_of({{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}}), 0, 0, true},
+                 BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}),
+                          mesh_of({{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}}), 0, 0, true},
                  expect_bvh({}, 1, 1));
   check::example(query::colliding_triangles, "two spheres of 80 triangles overlapping, every pair",
                  BvhQuery{gen::sphere_mesh(80, {0, 0, 0}, 1), gen::sphere_mesh(80, {1.2, 0.3, 0.1}, 0.8), 3, 5, true},
@@ -520,7 +551,8 @@ std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short
       // Two points of the box grown by a tenth, at least half its diagonal apart.
       const auto any = [&] {
         Vec3 p;
-        for (int i = 0; i < 3; ++i) p[i] = box.min[i] - 0.1 * size + (box.max[i] - box.min[i] + 0.2 * size) * random.uniform();
+        for (int i = 0; i < 3; ++i)
+          p[i] = box.min[i] - 0.1 * size + (box.max[i] - box.min[i] + 0.2 * size) * random.uniform();
         return p;
       };
       const Vec3 a = any(), b = any();
@@ -564,12 +596,15 @@ Outcome run_efficiency(const EfficiencyCase& in) {
       const KdHit& first = runs[k].first;
       const KdHit& any = runs[k].any;
       if (first.tests != runs[k].first_calls || any.tests != runs[k].any_calls)
-        return check::fail("tests = the calls of given::segment_triangle", "a different count", "count every call in `tests`");
+        return check::fail("tests = the calls of given::segment_triangle", "a different count",
+                           "count every call in `tests`");
       if (first.hit != expected.hit || (expected.hit && first.t != expected.t))
         return check::fail(expected.hit ? "a hit at t = " + fmt(expected.t) : "no hit",
                            first.hit ? "a hit at t = " + fmt(first.t) : "no hit",
-                           "first_hit on the " + name + " disagrees with testing every triangle, for a=" + fmt(s.a) + " b=" + fmt(s.b));
-      if (any.hit != expected.hit) return check::fail(expected.hit ? "a hit" : "no hit", any.hit ? "a hit" : "no hit", "any_hit on the " + name);
+                           "first_hit on the " + name + " disagrees with testing every triangle, for a=" + fmt(s.a) +
+                               " b=" + fmt(s.b));
+      if (any.hit != expected.hit)
+        return check::fail(expected.hit ? "a hit" : "no hit", any.hit ? "a hit" : "no hit", "any_hit on the " + name);
       if (short_ones) {
         short_first.add(first.tests);
         short_any.add(any.tests);
@@ -583,18 +618,25 @@ Outcome run_efficiency(const EfficiencyCase& in) {
                           "; long first_hit mean " + fmt(std::round(long_first.mean())) + "; long all_hits mean " +
                           fmt(std::round(long_all.mean()));
   const std::string expected = "short: mean <= " + fmt(kShortMean) + ", worst <= " + std::to_string(kShortWorst) +
-                               "; long first_hit mean <= " + fmt(kLongFirstMean) + "; long all_hits mean <= " + fmt(kLongAllMean);
-  const std::string leaves = ": are the leaves too big? Split while a split is cheaper than a leaf (the SAH), down to a "
-                             "few triangles per leaf";
+                               "; long first_hit mean <= " + fmt(kLongFirstMean) +
+                               "; long all_hits mean <= " + fmt(kLongAllMean);
+  const std::string leaves =
+      ": are the leaves too big? Split while a split is cheaper than a leaf (the SAH), down to a "
+      "few triangles per leaf";
   for (const Tally* t : {&short_first, &short_any})
     if (t->mean() > kShortMean || t->worst > kShortWorst)
-      return check::fail(expected, got, "a short segment meets few leaves, so its tests per query are bounded: short "
-                                        "segments test too many triangles of the " + name + leaves);
+      return check::fail(expected, got,
+                         "a short segment meets few leaves, so its tests per query are bounded: short "
+                         "segments test too many triangles of the " +
+                             name + leaves);
   if (long_first.mean() > kLongFirstMean)
-    return check::fail(expected, got, "first_hit on long segments must stop early (at the first leaf whose far end t1 is "
-                                      "past the best hit): too many tests on the " + name + leaves);
+    return check::fail(expected, got,
+                       "first_hit on long segments must stop early (at the first leaf whose far end t1 is "
+                       "past the best hit): too many tests on the " +
+                           name + leaves);
   if (long_all.mean() > kLongAllMean)
-    return check::fail(expected, got, "all_hits tests only the leaves the segment meets: too many tests on the " + name + leaves);
+    return check::fail(expected, got,
+                       "all_hits tests only the leaves the segment meets: too many tests on the " + name + leaves);
   return check::pass();
 }
 
@@ -603,8 +645,10 @@ Outcome run_efficiency(const EfficiencyCase& in) {
 TEST_CASE(LABKIT_STEP(L06S8) ": tests counted on 10,000 triangles", "[lab06][step8]") {
   const int seed = int(check::settings().seed % 1000000);
   for (int kind = 0; kind < 4; ++kind)
-    check::example(query::efficiency_segments, gen::name_of(gen::MeshKind(kind)), EfficiencyCase{kind, 10000, 1000, seed}, run_efficiency);
-  check::example(query::efficiency_spheres, "2,000 spheres spread over a cube", SpreadSpheres{2000, seed}, [](const SpreadSpheres& in) {
+    check::example(query::efficiency_segments, gen::name_of(gen::MeshKind(kind)),
+                   EfficiencyCase{kind, 10000, 1000, seed}, run_efficiency);
+  check::example(query::efficiency_spheres, "2,000 spheres spread over a cube", SpreadSpheres{2000, seed},
+                 [](const SpreadSpheres& in) {
     const SphereSet set{gen::spread_spheres(in.count, 100, 0.25, 1, std::uint64_t(in.seed))};
     const SpherePairs got = overlapping_pairs(set.spheres);
     const Outcome right = judge::overlapping_pairs(set, got);
@@ -613,7 +657,8 @@ TEST_CASE(LABKIT_STEP(L06S8) ": tests counted on 10,000 triangles", "[lab06][ste
     e.that("tests", got.tests <= kSphereTests, std::to_string(got.tests), "at most " + std::to_string(kSphereTests),
            "a broad phase tests only pairs that can meet: a sweep, those whose intervals overlap on the sweep axis "
            "(stop at the first interval starting after high[i]); a grid, those in the same or adjacent cells (cells at "
-           "least one diameter wide, not much more); the brute force makes " + std::to_string(in.count * (in.count - 1) / 2));
+           "least one diameter wide, not much more); the brute force makes " +
+               std::to_string(in.count * (in.count - 1) / 2));
     return e.outcome();
   });
 }
@@ -657,15 +702,18 @@ TEST_CASE(LABKIT_STEP(L06S9) ": k-d trees on exact input", "[lab06][step9]") {
   const KdTree tree = cubes_tree();
   const Mesh mesh = two_cubes();
   const auto exact_all = [&tree](const TreeQuery& in) {
-    return both(judge_all(in, tree, Rules::exact), both(judge_first(in, tree, Rules::exact), judge_any(in, tree, Rules::exact)));
+    return both(judge_all(in, tree, Rules::exact),
+                both(judge_first(in, tree, Rules::exact), judge_any(in, tree, Rules::exact)));
   };
   constexpr auto q = query::robust_segment_queries;
   check::example(q, "down the split plane x = 2", TreeQuery{mesh, {{2, 1, 4}, {2, 1, -4}}, 0}, exact_all);
   check::example(q, "along the top, in the plane z = 2", TreeQuery{mesh, {{-2, 1, 2}, {6, 1, 2}}, 0}, exact_all);
   check::example(q, "along the wall y = 0 of the root's cell", TreeQuery{mesh, {{1, 0, 1}, {1, 0, -1}}, 0}, exact_all);
   check::example(q, "ending exactly on the split plane", TreeQuery{mesh, {{-2, 1, 1}, {2, 1, 1}}, 0}, exact_all);
-  check::example(q, "starting on the split plane, through a shared edge", TreeQuery{mesh, {{2, 1, 4}, {2, 1, 2}}, 0}, exact_all);
-  check::example(q, "through the corner (2, 0, 2) of three cells", TreeQuery{mesh, {{0, -2, 0}, {4, 2, 4}}, 0}, exact_all);
+  check::example(q, "starting on the split plane, through a shared edge", TreeQuery{mesh, {{2, 1, 4}, {2, 1, 2}}, 0},
+                 exact_all);
+  check::example(q, "through the corner (2, 0, 2) of three cells", TreeQuery{mesh, {{0, -2, 0}, {4, 2, 4}}, 0},
+                 exact_all);
   check::example(query::robust_build_kd_tree, "two cubes: splits along their faces", mesh,
                  [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
 }
@@ -688,22 +736,24 @@ TEST_CASE(LABKIT_STEP(L06S9) ": BSP trees and spheres on exact input", "[lab06][
   // test is exact): an edge through the other triangle's edge, an edge starting on it.
   const Mesh floor = mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}});
   check::example(query::robust_colliding_triangles, "an edge crossing the other's edge at (1, 0, 0)",
-                 BvhQuery{floor, mesh_of({{{1, 0, -1}, {1, 0, 1}, {1, -2, 0}}}), 0, 0, true}, expect_bvh({{0, 0}}, 1, 1));
+                 BvhQuery{floor, mesh_of({{{1, 0, -1}, {1, 0, 1}, {1, -2, 0}}}), 0, 0, true},
+                 expect_bvh({{0, 0}}, 1, 1));
   check::example(query::robust_colliding_triangles, "a vertex exactly on the other's edge, at (1, 1, 0)",
                  BvhQuery{floor, mesh_of({{{1, 1, 0}, {1, 1, 2}, {3, 3, 2}}}), 0, 0, true}, expect_bvh({{0, 0}}, 1, 1));
   // Three equal balls whose ends meet exactly: a low end arrives at a high end's value
   // (touching: the low end must pass it), twice.
   check::example(query::robust_sweep_frames, "ends arriving exactly on ends",
                  SweepCase{{{{{0, 0, 0}, 1}, {{4, 0, 0}, 1}, {{8, 0, 0}, 1}},
-                                   {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{8, 0, 0}, 1}},
-                                   {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{4, 0, 0}, 1}}}},
+                            {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{8, 0, 0}, 1}},
+                            {{{0, 0, 0}, 1}, {{2, 0, 0}, 1}, {{4, 0, 0}, 1}}}},
                  expect_frames({{{}, 0, 0}, {{{0, 1}}, 1, 1}, {{{0, 1}, {1, 2}}, 2, 1}}));
 }
 
 TEST_CASE(LABKIT_STEP(L06S9) ": random exact degenerate cases", "[lab06][step9][oracle]") {
   check::random_cases(query::robust_segment_queries, gen::exact_tree_query(),
                       [](const TreeQuery& in) { return all_three(in, Rules::exact); });
-  check::random_cases(query::robust_build_kd_tree, gen::exact_mesh(), [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+  check::random_cases(query::robust_build_kd_tree, gen::exact_mesh(),
+                      [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
   check::random_cases(query::robust_classify, gen::exact_point_query(), [](const PointQuery& in) {
     return judge::classify(in, classify(build_bsp(in.mesh), in.point), Rules::exact);
   });
@@ -714,9 +764,8 @@ TEST_CASE(LABKIT_STEP(L06S9) ": random exact degenerate cases", "[lab06][step9][
   check::random_cases(query::robust_overlapping_pairs, gen::exact_sphere_set_case(), [](const SphereSet& in) {
     return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
   });
-  check::random_cases(query::robust_sweep_frames, gen::exact_sweep_case(), [](const SweepCase& in) {
-    return judge::sweep_frames(in, run_sweep(in.frames), Rules::exact);
-  });
+  check::random_cases(query::robust_sweep_frames, gen::exact_sweep_case(),
+                      [](const SweepCase& in) { return judge::sweep_frames(in, run_sweep(in.frames), Rules::exact); });
 }
 
 // ---- The header's preconditions (not a graded step) ---------------------------------------------
@@ -808,7 +857,8 @@ TEST_CASE("L06 figures: primitive tests per query", "[.][lab06-figures]") {
       };
       std::printf("%-8s %9zu | %-24s | %-24s | %-24s | %-24s   (brute force: %zu per query; %zu nodes, %zu items)\n",
                   gen::name_of(gen::MeshKind(kind)), mesh.size(), cell(tallies[0]).c_str(), cell(tallies[1]).c_str(),
-                  cell(tallies[2]).c_str(), cell(tallies[3]).c_str(), mesh.size(), tree.nodes.size(), tree.items.size());
+                  cell(tallies[2]).c_str(), cell(tallies[3]).c_str(), mesh.size(), tree.nodes.size(),
+                  tree.items.size());
       std::fflush(stdout);
     }
   SUCCEED();

@@ -24,7 +24,8 @@ bool launch_in_doubt(const LaunchCase& in) {
   const double cross = d.cross(in.gravity).norm();
   const double dg = std::abs(d.dot(in.gravity));
   const double change = 4.01 * eps * v2 * v2 + 2 * v2 * (2.01 * eps * dg + dd * g + dn * kRoot3 * eps * g) +
-                        2 * cross * (dd * g + dn * kRoot3 * eps * g) + (dd * g + dn * kRoot3 * eps * g) * (dd * g + dn * kRoot3 * eps * g);
+                        2 * cross * (dd * g + dn * kRoot3 * eps * g) +
+                        (dd * g + dn * kRoot3 * eps * g) * (dd * g + dn * kRoot3 * eps * g);
   const double D = oracle::launch_discriminant(in.from, in.target, in.speed, in.gravity);
   return std::abs(D) <= 2 * change || cross <= 4 * (dd * g + dn * kRoot3 * eps * g);
 }
@@ -40,13 +41,15 @@ void check_shot(Expect& e, const std::string& name, const LaunchCase& in, const 
   const Vec3 up = -in.gravity.normalized();
   e.that(name + ".velocity", std::abs(s.velocity.norm() - in.speed) <= kRelative * in.speed, fmt(s.velocity),
          "a velocity of length " + fmt(in.speed), "its length is " + fmt(s.velocity.norm()));
-  e.that(name + ".angle", in.speed > 0 && std::abs(std::sin(s.angle) - s.velocity.dot(up) / in.speed) <= 1e-9, fmt(s.angle),
-         "the elevation of the velocity", "sin(angle) does not match the velocity's upward part over the speed");
-  e.that(name + ".time", s.time > 0 && oracle::trajectory_reaches(in.from, s.velocity, s.time, in.gravity, in.target, tol),
-         fmt(s.time), "from + velocity t + g t^2 / 2 = target",
+  e.that(name + ".angle", in.speed > 0 && std::abs(std::sin(s.angle) - s.velocity.dot(up) / in.speed) <= 1e-9,
+         fmt(s.angle), "the elevation of the velocity",
+         "sin(angle) does not match the velocity's upward part over the speed");
+  e.that(name + ".time",
+         s.time > 0 && oracle::trajectory_reaches(in.from, s.velocity, s.time, in.gravity, in.target, tol), fmt(s.time),
+         "from + velocity t + g t^2 / 2 = target",
          "at t = " + fmt(s.time) + " the shot is at " +
-             fmt(Vec3(in.from + s.velocity * s.time + 0.5 * s.time * s.time * in.gravity)) + ", not at the target (tolerance " +
-             fmt(tol) + ")");
+             fmt(Vec3(in.from + s.velocity * s.time + 0.5 * s.time * s.time * in.gravity)) +
+             ", not at the target (tolerance " + fmt(tol) + ")");
 }
 
 // The exact angles, and how far a relative perturbation of 1e-9 of the input moves them.
@@ -79,20 +82,23 @@ Angles exact_angles(const LaunchCase& in, int count) {
     if (root == 0) return Real(1e-9) * std::abs(u);  // D = 0 exactly: one root, v^2 / (g x)
     return 2 * ((1 + u * u) * d_gx + 2 * std::abs(u) * d_v2 + d_y_term) / (2 * root) / (1 + u * u);
   };
-  return {double(std::atan(low)), double(std::atan(high)), double(tolerance(low) + 1e-15), double(tolerance(high) + 1e-15),
-          double(g * x / v2)};
+  return {double(std::atan(low)), double(std::atan(high)), double(tolerance(low) + 1e-15),
+          double(tolerance(high) + 1e-15), double(g * x / v2)};
 }
 
 void check_angles(Expect& e, const LaunchCase& in, const Aim& got, int count) {
   const Angles exact = exact_angles(in, count);
   const double low_off = std::abs(got.low.angle - exact.low), high_off = std::abs(got.high.angle - exact.high);
   const bool swapped = std::abs(got.low.angle - exact.high) <= exact.high_tol;
-  std::string why = "low.angle must be the low root, atan((v^2 - sqrt(D)) / (g x)) = " + fmt(exact.low) + ": yours is off by " +
-                    fmt(low_off) + " (tolerance " + fmt(exact.low_tol) + ")";
-  if (swapped && count == 2) why += "; yours is the high root, the lobbed shot";
+  std::string why = "low.angle must be the low root, atan((v^2 - sqrt(D)) / (g x)) = " + fmt(exact.low) +
+                    ": yours is off by " + fmt(low_off) + " (tolerance " + fmt(exact.low_tol) + ")";
+  if (swapped && count == 2)
+    why += "; yours is the high root, the lobbed shot";
   else if (exact.fast < 1e-4)
-    why += ". Here g x / v^2 = " + fmt(exact.fast) + ": v^2 - sqrt(D) cancels (subtracts two nearly equal numbers) and "
-           "loses the low root's digits; take the product of the roots, (g x^2 + 2 y v^2) / (g x^2), divided by the high root";
+    why += ". Here g x / v^2 = " + fmt(exact.fast) +
+           ": v^2 - sqrt(D) cancels (subtracts two nearly equal numbers) and "
+           "loses the low root's digits; take the product of the roots, (g x^2 + 2 y v^2) / (g x^2), divided by the "
+           "high root";
   e.that("low.angle", low_off <= exact.low_tol, fmt(got.low.angle), fmt(exact.low), why);
   e.that("high.angle", high_off <= exact.high_tol, fmt(got.high.angle), fmt(exact.high),
          "high.angle must be the high root, atan((v^2 + sqrt(D)) / (g x)) = " + fmt(exact.high) + ": yours is off by " +
@@ -117,9 +123,11 @@ Outcome aim(const LaunchCase& in, const Aim& got, Rules rules) {
   Expect e;
   const bool vertical = in.speed == 0 || oracle::launch_vertical(in.from, in.target, in.gravity);
   const double radicand = oracle::launch_radicand(in.from, in.target, in.speed, in.gravity);
-  if (!std::isfinite(got.radicand) || !std::isfinite(got.low.angle) || !std::isfinite(got.high.angle) || !finite(got.low.velocity) ||
-      !finite(got.high.velocity) || !std::isfinite(got.low.time) || !std::isfinite(got.high.time))
-    return fail("finite numbers", "radicand " + fmt(got.radicand) + ", angles " + fmt(got.low.angle) + ", " + fmt(got.high.angle),
+  if (!std::isfinite(got.radicand) || !std::isfinite(got.low.angle) || !std::isfinite(got.high.angle) ||
+      !finite(got.low.velocity) || !finite(got.high.velocity) || !std::isfinite(got.low.time) ||
+      !std::isfinite(got.high.time))
+    return fail("finite numbers",
+                "radicand " + fmt(got.radicand) + ", angles " + fmt(got.low.angle) + ", " + fmt(got.high.angle),
                 "an aim's radicand, angles, velocities and times must be finite numbers");
   if (vertical) {
     e.equal("radicand", got.radicand, 0.0);

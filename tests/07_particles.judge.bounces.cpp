@@ -41,11 +41,13 @@ Outcome collide(const CollideCase& in, const Collision& got) {
   const std::string answer = describe(got);
   if (got.bounces < 0 || got.bounces > cap)
     return fail("between 0 and " + std::to_string(cap) + " bounces", answer,
-                "the bounce cap is " + std::to_string(cap) + ": at most that many impulses, then the next hit stops the particle");
+                "the bounce cap is " + std::to_string(cap) +
+                    ": at most that many impulses, then the next hit stops the particle");
   if (got.stopped && got.bounces != cap)
     return fail("no stop before the cap", answer,
                 "the bounce cap: a particle stops only when it hits again after " + std::to_string(cap) + " bounces");
-  if (!finite(got.position) || !finite(got.velocity)) return fail("a finite position and velocity", answer, "not finite");
+  if (!finite(got.position) || !finite(got.velocity))
+    return fail("a finite position and velocity", answer, "not finite");
 
   const double e_ = scene.material.restitution, mu = scene.material.friction;
   // A moving scene (u != 0): the loop runs in its frame, from the relative step a' -> b.
@@ -69,12 +71,14 @@ Outcome collide(const CollideCase& in, const Collision& got) {
     if (k == got.bounces && !got.stopped) {  // the last piece: clear to its end
       const Outcome o = within(where, first_hit_on(piece, scene, SurfaceHit{}, Rules::random, left));
       if (o.verdict == Outcome::Verdict::fail)
-        return fail(o.expected, answer, o.why + " (a hit there is another bounce, or the stop when the cap is used up)");
+        return fail(o.expected, answer,
+                    o.why + " (a hit there is another bounce, or the stop when the cap is used up)");
       doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
       Expect e;
       e.that("position", (got.position - piece.b).norm() <= tol, fmt(got.position), fmt(piece.b),
              "the particle must end where " + where + " ends, " + fmt(piece.b) +
-                 ": after each hit it moves on from the hit point for the remaining time (1 - t) r only (tolerance " + fmt(tol) + ")");
+                 ": after each hit it moves on from the hit point for the remaining time (1 - t) r only (tolerance " +
+                 fmt(tol) + ")");
       e.near("velocity", got.velocity, v, tol_v);
       const Outcome end = e.outcome();
       if (end.verdict == Outcome::Verdict::fail) return end;
@@ -88,7 +92,8 @@ Outcome collide(const CollideCase& in, const Collision& got) {
     if (!finite(b.from) || !finite(b.velocity))
       return fail("a finite `from` and velocity", answer, "bounce " + std::to_string(k) + ": not finite");
     if ((b.from - b.hit.point).norm() > tol)
-      return fail(fmt(b.hit.point), fmt(b.from), "bounce " + std::to_string(k) + ": `from` must be the hit point (settled by at most tol)");
+      return fail(fmt(b.hit.point), fmt(b.from),
+                  "bounce " + std::to_string(k) + ": `from` must be the hit point (settled by at most tol)");
     if (k == got.bounces) {  // the stop
       Expect e;
       e.that("position", (got.position - b.from).norm() <= tol, fmt(got.position), fmt(b.from),
@@ -97,12 +102,12 @@ Outcome collide(const CollideCase& in, const Collision& got) {
              "a stopped particle is at rest on the surface: velocity zero, or the moving scene's u");
       return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : (doubt ? ambiguous() : pass());
     }
-    const oracle::Impulse exact = oracle::impulse(v, u, exact_normal(scene, b.hit), in.mass,
-                                                  scene.material.restitution, scene.material.friction);
+    const oracle::Impulse exact =
+        oracle::impulse(v, u, exact_normal(scene, b.hit), in.mass, scene.material.restitution, scene.material.friction);
     if ((b.velocity - exact.velocity).norm() > tol_v)
       return fail(fmt(exact.velocity), fmt(b.velocity),
-                  "bounce " + std::to_string(k) + ": the velocity after the impulse (e = " + fmt(scene.material.restitution) +
-                      ", mu = " + fmt(scene.material.friction) + ") on " + fmt(v) +
+                  "bounce " + std::to_string(k) + ": the velocity after the impulse (e = " +
+                      fmt(scene.material.restitution) + ", mu = " + fmt(scene.material.friction) + ") on " + fmt(v) +
                       (moving ? ", against surfaces moving at u = " + fmt(u) +
                                     ": the impulse takes the relative velocity v - u, impulse(v, u, n, ...)"
                               : std::string()));
@@ -119,7 +124,8 @@ Outcome invariants(const CollideCase& in, const Collision& got) {
   const Scene& scene = in.scene;
   const std::string answer = describe(got);
   const int used = std::clamp(got.bounces + (got.stopped ? 1 : 0), 0, kMaxBounceCap + 1);
-  if (!finite(got.position) || !finite(got.velocity)) return fail("a finite position and velocity", answer, "not finite");
+  if (!finite(got.position) || !finite(got.velocity))
+    return fail("a finite position and velocity", answer, "not finite");
   for (int k = 0; k < used; ++k)
     if (!finite(got.trace[std::size_t(k)].from))
       return fail("a finite `from`", answer, "bounce " + std::to_string(k) + "'s `from` is not finite");
@@ -147,8 +153,8 @@ Outcome invariants(const CollideCase& in, const Collision& got) {
       return fail("a hit on one surface", answer, "bounce " + std::to_string(k) + " names no valid surface");
     if (side_of(b.hit, b.from) <= 0)
       return fail("`from` strictly in front of the surface hit", answer,
-                  "every `from` must be strictly in front of the surface it bounced off, exactly: bounce " + std::to_string(k) +
-                      "'s " + fmt(b.from) + " is on or behind it (a rounded hit point: settle it)");
+                  "every `from` must be strictly in front of the surface it bounced off, exactly: bounce " +
+                      std::to_string(k) + "'s " + fmt(b.from) + " is on or behind it (a rounded hit point: settle it)");
   }
   if (used > 0 && side_of(got.trace[std::size_t(used - 1)].hit, got.position) < 0)
     return fail("an end not behind the last surface hit", answer,
@@ -187,7 +193,8 @@ Outcome settle(const SettleCase& in, const Vec3& got) {
     // Clearly behind from the start (more than 1000 rounding errors): not settle's business.
     const Vec3 terms = p.normal.cwiseProduct(in.x);
     const double value = terms.x() + terms.y() + terms.z() + p.offset;
-    if (!strict && (p.normal == Vec3::Zero() || value < -1000 * 1e-15 * (terms.cwiseAbs().sum() + std::abs(p.offset)))) continue;
+    if (!strict && (p.normal == Vec3::Zero() || value < -1000 * 1e-15 * (terms.cwiseAbs().sum() + std::abs(p.offset))))
+      continue;
     const int side = oracle::plane_side(p, got);
     if (strict ? side <= 0 : side < 0)
       return fail(strict ? "strictly in front of plane " + std::to_string(i) + " (the one just hit)"
@@ -198,8 +205,8 @@ Outcome settle(const SettleCase& in, const Vec3& got) {
     const Triangle tri = scene.mesh.triangle(std::size_t(in.last.triangle));
     const int facing = in.last.normal.dot(tri.normal()) < 0 ? -1 : 1;
     if (facing * oracle::orientation(tri.v0, tri.v1, tri.v2, got) <= 0)
-      return fail("strictly in front of triangle " + std::to_string(in.last.triangle) + ", on last.normal's side", fmt(got),
-                  "exactly, the point is on or behind the triangle's plane");
+      return fail("strictly in front of triangle " + std::to_string(in.last.triangle) + ", on last.normal's side",
+                  fmt(got), "exactly, the point is on or behind the triangle's plane");
   }
   return pass();
 }
@@ -222,7 +229,8 @@ Outcome system_step(const SystemCase& in, const System& after, int step) {
     const std::string who = which + "particle " + std::to_string(i);
     if (!finite(p.position) || !finite(p.velocity)) return fail("finite", describe(p), who + " is not finite");
     if (!p.alive || !(p.age < p.lifetime))
-      return fail("alive, age < lifetime", "alive = " + describe(p.alive) + ", age " + fmt(p.age) + ", lifetime " + fmt(p.lifetime),
+      return fail("alive, age < lifetime",
+                  "alive = " + describe(p.alive) + ", age " + fmt(p.age) + ", lifetime " + fmt(p.lifetime),
                   who + ": the dead are removed at the end of the step");
     for (std::size_t k = 0; k < in.scene.planes.size(); ++k)
       if (oracle::plane_side(in.scene.planes[k], p.position) < 0)

@@ -59,13 +59,15 @@ std::string describe(const Scene& s) {
   std::string text = describe(s.material) + ", bounce cap " + std::to_string(s.bounce_cap) + ", " +
                      std::to_string(s.planes.size()) + (s.planes.size() == 1 ? " plane" : " planes");
   if (s.velocity != Vec3::Zero()) text += ", moving at u = " + fmt(s.velocity) + " (given where it ends the step)";
-  for (std::size_t i = 0; i < s.planes.size(); ++i) text += "\n    plane " + std::to_string(i) + ": " + describe(s.planes[i]);
+  for (std::size_t i = 0; i < s.planes.size(); ++i)
+    text += "\n    plane " + std::to_string(i) + ": " + describe(s.planes[i]);
   if (s.mesh.size() > 0) text += "\n    mesh: " + describe(s.mesh);
   return text;
 }
 std::string describe(const Collision& c) {
   std::string text = "position " + fmt(c.position) + ", velocity " + fmt(c.velocity) + ", " +
-                     std::to_string(c.bounces) + (c.bounces == 1 ? " bounce" : " bounces") + (c.stopped ? ", stopped" : "");
+                     std::to_string(c.bounces) + (c.bounces == 1 ? " bounce" : " bounces") +
+                     (c.stopped ? ", stopped" : "");
   const int shown = std::clamp(c.bounces + (c.stopped ? 1 : 0), 0, kMaxBounceCap + 1);
   for (int k = 0; k < shown; ++k) {
     const Bounce& b = c.trace[std::size_t(k)];
@@ -116,8 +118,10 @@ Outcome emit(const EmitCase& in, const std::vector<Particle>& first, const std::
       return fail("a direction within " + fmt(em.cone) + " rad of " + fmt(axis), fmt(p.velocity),
                   which + "its direction is " + fmt(std::acos(std::clamp(p.velocity.dot(axis) / speed, -1.0, 1.0))) +
                       " rad from the cone's axis");
-    if (!(p.lifetime >= em.lifetime - em.lifetime_spread - tol_l && p.lifetime <= em.lifetime + em.lifetime_spread + tol_l))
-      return fail("a lifetime in [" + fmt(em.lifetime - em.lifetime_spread) + ", " + fmt(em.lifetime + em.lifetime_spread) + "]",
+    if (!(p.lifetime >= em.lifetime - em.lifetime_spread - tol_l &&
+          p.lifetime <= em.lifetime + em.lifetime_spread + tol_l))
+      return fail("a lifetime in [" + fmt(em.lifetime - em.lifetime_spread) + ", " +
+                      fmt(em.lifetime + em.lifetime_spread) + "]",
                   fmt(p.lifetime), which + "its lifetime is out of the emitter's range");
     Expect e;
     e.equal("mass", p.mass, em.mass);
@@ -131,15 +135,17 @@ Outcome emit(const EmitCase& in, const std::vector<Particle>& first, const std::
     if (q.position != p.position || q.velocity != p.velocity || q.lifetime != p.lifetime)
       return fail(describe(p), describe(q),
                   which + "emitted again from the same seed it came out different: draw only from `random`");
-    if (i > 0 && (p.position != first[0].position || p.velocity != first[0].velocity || p.lifetime != first[0].lifetime))
+    if (i > 0 &&
+        (p.position != first[0].position || p.velocity != first[0].velocity || p.lifetime != first[0].lifetime))
       varied = true;
   }
   // A spread only shows when it moves something: the cone turns nothing at zero speed.
   const bool moving = em.speed != 0 || em.speed_spread > 0;
-  const bool spread = em.half_extents != Vec3::Zero() || (em.cone > 0 && moving) || em.speed_spread > 0 ||
-                      em.lifetime_spread > 0;
+  const bool spread =
+      em.half_extents != Vec3::Zero() || (em.cone > 0 && moving) || em.speed_spread > 0 || em.lifetime_spread > 0;
   if (spread && first.size() >= 4 && !varied)
-    return fail("particles that differ (the emitter has spreads)", "identical particles", "every particle came out the same");
+    return fail("particles that differ (the emitter has spreads)", "identical particles",
+                "every particle came out the same");
   return pass();
 }
 
@@ -155,8 +161,8 @@ Outcome births(const BirthsCase& in, const std::vector<Births>& got) {
       return fail("owed in [0, 1)", fmt(got[k].owed), which + "what is owed must be the fraction left over");
     if (total < std::floor(due - slack) || total > std::floor(due + slack))
       return fail(std::to_string((long long)std::floor(due)) + " births so far", std::to_string((long long)total),
-                  which + "after " + std::to_string(k + 1) + " steps the births must be owed + rate * time = " +
-                      fmt(double(due)) + ", rounded down");
+                  which + "after " + std::to_string(k + 1) +
+                      " steps the births must be owed + rate * time = " + fmt(double(due)) + ", rounded down");
     if (std::abs((long double)got[k].owed + total - due) > slack + 1e-15L * due)
       return fail("births + owed = " + fmt(double(due)), fmt(double(got[k].owed + total)),
                   which + "the births so far plus what is owed must add up to owed + rate * time");
@@ -177,13 +183,15 @@ Outcome age(const AgeCase& in, const std::vector<Particle>& got) {
   want = "ages/lifetimes [" + want + "]";
   have = "ages/lifetimes [" + have + "]";
   if (got.size() != expected.size())
-    return fail(want, have, std::to_string(expected.size()) + " particles survive (a new age >= the lifetime dies), not " +
-                                std::to_string(got.size()));
+    return fail(want, have,
+                std::to_string(expected.size()) + " particles survive (a new age >= the lifetime dies), not " +
+                    std::to_string(got.size()));
   for (std::size_t i = 0; i < got.size(); ++i) {
     const Particle &g = got[i], &x = expected[i];
     if (g.position != x.position || g.velocity != x.velocity || g.lifetime != x.lifetime)
       return fail(want, have, "survivor " + std::to_string(i) + " is not the one expected there: keep their order");
-    if (g.age != x.age) return fail(want, have, "survivor " + std::to_string(i) + "'s age must be age + dt = " + fmt(x.age));
+    if (g.age != x.age)
+      return fail(want, have, "survivor " + std::to_string(i) + "'s age must be age + dt = " + fmt(x.age));
     if (!g.alive) return fail(want, have, "survivor " + std::to_string(i) + " says alive = false");
   }
   return pass();
@@ -199,10 +207,12 @@ oracle::State state_of(const Particle& p) { return {p.position, p.velocity, p.pr
 // The size of the acceleration's terms, for tolerances: |g| + (k1 |v| + k2 |v|^2) / m.
 double acceleration_size(const MotionCase& in) {
   const double v = in.particle.velocity.norm();
-  return largest(in.forces.gravity) + (std::abs(in.forces.drag) * v + std::abs(in.forces.air_drag) * v * v) / in.particle.mass;
+  return largest(in.forces.gravity) +
+         (std::abs(in.forces.drag) * v + std::abs(in.forces.air_drag) * v * v) / in.particle.mass;
 }
 
-Outcome compare_particle(const MotionCase& in, const oracle::State& exact, const Particle& got, double tol_p, double tol_v) {
+Outcome compare_particle(const MotionCase& in, const oracle::State& exact, const Particle& got, double tol_p,
+                         double tol_v) {
   Expect e;
   e.near("position", got.position, exact.position, tol_p);
   e.near("velocity", got.velocity, exact.velocity, tol_v);
@@ -230,18 +240,21 @@ Outcome force(const MotionCase& in, const Vec3& got) {
 }
 
 Outcome euler_step(const MotionCase& in, const Particle& got) {
-  const oracle::State exact = oracle::euler_step(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
+  const oracle::State exact =
+      oracle::euler_step(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
   const double tol_v = kRelative * (largest(in.particle.velocity) + in.dt * acceleration_size(in) + 1e-300);
   return compare_particle(in, exact, got, position_tolerance(in), tol_v);
 }
 
 Outcome start_verlet(const MotionCase& in, const Particle& got) {
-  const oracle::State exact = oracle::start_verlet(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
+  const oracle::State exact =
+      oracle::start_verlet(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
   return compare_particle(in, exact, got, position_tolerance(in), kRelative * largest(in.particle.velocity) + 1e-300);
 }
 
 Outcome verlet_step(const MotionCase& in, const Particle& got) {
-  const oracle::State exact = oracle::verlet_step(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
+  const oracle::State exact =
+      oracle::verlet_step(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
   const double tol_p = position_tolerance(in);
   return compare_particle(in, exact, got, tol_p, tol_p / in.dt);
 }

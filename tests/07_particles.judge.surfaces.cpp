@@ -76,13 +76,15 @@ std::string plane_rule(const Segment& s, const Plane& p) {
   if (p.normal == Vec3::Zero()) return "a plane with a zero normal is never hit";
   const std::string va = "value(a) = " + fmt(p.value(s.a)), vb = "value(b) = " + fmt(p.value(s.b));
   if (plane_hit_by_rule(s, p))
-    return oracle::plane_side(p, s.a) < 0 ? "a is on the plane to within value(a)'s rounding bound (" + va +
-                                                "), so it counts as on it, and b is behind it (" + vb + "): a hit at t = 0"
-                                          : "the step starts on or in front of the plane (" + va + " >= 0) and ends behind it (" +
-                                                vb + " < 0): a hit";
+    return oracle::plane_side(p, s.a) < 0
+               ? "a is on the plane to within value(a)'s rounding bound (" + va +
+                     "), so it counts as on it, and b is behind it (" + vb + "): a hit at t = 0"
+               : "the step starts on or in front of the plane (" + va + " >= 0) and ends behind it (" + vb +
+                     " < 0): a hit";
   if (oracle::plane_side(p, s.a) < 0)
     return "planes are one-sided: the step starts behind the plane (" + va + " < 0), which is no hit";
-  return "the step ends on or in front of the plane (" + vb + " >= 0): on the plane is not behind it, and only a step "
+  return "the step ends on or in front of the plane (" + vb +
+         " >= 0): on the plane is not behind it, and only a step "
          "that ends behind a plane hits it";
 }
 
@@ -102,7 +104,8 @@ std::string triangle_rule(const Segment& s, const Triangle& tri) {
   if (oracle::sheet_hit(s, tri))
     return "a is off the triangle's plane and the segment meets the closed triangle (edges and vertices count); "
            "triangles are two-sided: a hit from either side";
-  if (oracle::orientation(tri.v0, tri.v1, tri.v2, s.b) == side) return "the segment stays on one side of the triangle's plane: no hit";
+  if (oracle::orientation(tri.v0, tri.v1, tri.v2, s.b) == side)
+    return "the segment stays on one side of the triangle's plane: no hit";
   return "the segment crosses the triangle's plane outside the closed triangle: no hit";
 }
 
@@ -134,7 +137,8 @@ double triangle_t_tolerance(const Segment& s, const Triangle& t, double tol) {
 // A hit's numbers must be finite before the exact oracle reads them.
 bool finite_hit(Expect& e, const SurfaceHit& got) {
   const bool ok = std::isfinite(got.t) && got.point.allFinite() && got.normal.allFinite();
-  e.that("finite", ok, "t = " + fmt(got.t) + ", point " + fmt(got.point) + ", normal " + fmt(got.normal), "finite numbers",
+  e.that("finite", ok, "t = " + fmt(got.t) + ", point " + fmt(got.point) + ", normal " + fmt(got.normal),
+         "finite numbers",
          "a hit's t, point and normal must be finite numbers (a NaN: 0 / 0 from a step that does not cross?)");
   return ok;
 }
@@ -145,20 +149,21 @@ void check_plane_hit(Expect& e, const Segment& s, const Plane& p, const SurfaceH
          "the hit point must lie on the plane: yours is " + fmt(std::abs(oracle::plane_distance(p, got.point))) +
              " from it (tolerance " + fmt(tol) + ")");
   e.that("point on segment", oracle::within(got.point, s, tol), fmt(got.point), "a point of the segment",
-         "the hit point must lie on the step a -> b: yours is " + fmt(oracle::distance(got.point, s)) + " from it (tolerance " +
-             fmt(tol) + ")");
+         "the hit point must lie on the step a -> b: yours is " + fmt(oracle::distance(got.point, s)) +
+             " from it (tolerance " + fmt(tol) + ")");
   e.that("t", oracle::parameter_reproduces(s, got.t, got.point, tol), fmt(got.t), "a + t (b - a) = point",
          "the point must be a + t (b - a) for your t: it is " + fmt((s.point(got.t) - got.point).norm()) + " away");
   const double exact_t = oracle::plane_hit_t(s, p), slack = plane_t_tolerance(s, p, tol);
   e.that("t exact", std::abs(got.t - exact_t) <= slack, fmt(got.t), fmt(exact_t),
-         "t must be where value changes sign, value(a) / (value(a) - value(b)) = " + fmt(exact_t) + ": yours is off by " +
-             fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
+         "t must be where value changes sign, value(a) / (value(a) - value(b)) = " + fmt(exact_t) +
+             ": yours is off by " + fmt(std::abs(got.t - exact_t)) + " (tolerance " + fmt(slack) + ")");
   const Vec3 n = p.normal.normalized();
   const double length = got.normal.norm();
   e.that("normal", (got.normal - n).norm() <= kRelative, fmt(got.normal), fmt(n),
          std::abs(length - 1) > kRelative ? "the normal must be unit length, n / |n|: yours has length " + fmt(length)
-         : got.normal.dot(n) < 0          ? "a plane's normal is its own direction, n / |n|, the side a particle comes from: yours points behind"
-                                          : "a plane's normal is its own direction, made unit length: n / |n|");
+         : got.normal.dot(n) < 0
+             ? "a plane's normal is its own direction, n / |n|, the side a particle comes from: yours points behind"
+             : "a plane's normal is its own direction, made unit length: n / |n|");
 }
 
 void check_triangle_hit(Expect& e, const Segment& s, const Triangle& tri, const SurfaceHit& got, double tol) {
@@ -166,8 +171,8 @@ void check_triangle_hit(Expect& e, const Segment& s, const Triangle& tri, const 
   e.that("point", oracle::within(got.point, tri, tol), fmt(got.point), "a point of the triangle",
          "the point is " + fmt(oracle::distance(got.point, tri)) + " from the triangle (tolerance " + fmt(tol) + ")");
   e.that("point on segment", oracle::within(got.point, s, tol), fmt(got.point), "a point of the segment",
-         "the hit point must lie on the step a -> b: yours is " + fmt(oracle::distance(got.point, s)) + " from it (tolerance " +
-             fmt(tol) + ")");
+         "the hit point must lie on the step a -> b: yours is " + fmt(oracle::distance(got.point, s)) +
+             " from it (tolerance " + fmt(tol) + ")");
   e.that("t", oracle::parameter_reproduces(s, got.t, got.point, tol), fmt(got.t), "a + t (b - a) = point",
          "the point must be a + t (b - a) for your t: it is " + fmt((s.point(got.t) - got.point).norm()) + " away");
   // The exact t: of the first common point or, for a hit in doubt that is exactly a miss
@@ -210,11 +215,13 @@ struct SceneStatus {
 SceneStatus statuses(const Segment& s, const Scene& scene, double tol, Rules rules, const SurfaceHit* left = nullptr) {
   SceneStatus all;
   const double scale = tol / kRelative;
-  for (const Plane& p : scene.planes) all.planes.push_back({plane_hit_by_rule(s, p), plane_unstable(s, p, scale, rules)});
+  for (const Plane& p : scene.planes)
+    all.planes.push_back({plane_hit_by_rule(s, p), plane_unstable(s, p, scale, rules)});
   for (std::size_t i = 0; i < scene.mesh.size(); ++i) {
     const Triangle tri = scene.mesh.triangle(i);
     const int facing = left && left->triangle == int(i) && left->normal.dot(tri.normal()) < 0 ? -1 : 1;
-    const bool leaving = left && left->triangle == int(i) && facing * oracle::orientation(tri.v0, tri.v1, tri.v2, s.a) > 0 &&
+    const bool leaving = left && left->triangle == int(i) &&
+                         facing * oracle::orientation(tri.v0, tri.v1, tri.v2, s.a) > 0 &&
                          facing * oracle::triangle_plane_distance(tri, s.b) > 8 * tol;
     all.triangles.push_back({oracle::sheet_hit(s, tri), !leaving && triangle_unstable(s, tri, tol, rules)});
   }
@@ -226,29 +233,36 @@ SceneStatus statuses(const Segment& s, const Scene& scene, double tol, Rules rul
 std::string describe_hits(const Segment& s, const Scene& scene, const SceneStatus& all) {
   std::string text;
   for (std::size_t i = 0; i < all.planes.size(); ++i)
-    if (all.planes[i].hit) text += (text.empty() ? "" : ", ") + ("plane " + std::to_string(i) + " at t = " + fmt(oracle::plane_hit_t(s, scene.planes[i])));
+    if (all.planes[i].hit)
+      text += (text.empty() ? "" : ", ") +
+              ("plane " + std::to_string(i) + " at t = " + fmt(oracle::plane_hit_t(s, scene.planes[i])));
   for (std::size_t i = 0; i < all.triangles.size(); ++i)
     if (all.triangles[i].hit)
-      text += (text.empty() ? "" : ", ") + ("triangle " + std::to_string(i) + " at t = " + fmt(oracle::segment_triangle(s, scene.mesh.triangle(i)).t));
+      text += (text.empty() ? "" : ", ") + ("triangle " + std::to_string(i) +
+                                            " at t = " + fmt(oracle::segment_triangle(s, scene.mesh.triangle(i)).t));
   return text.empty() ? "no hit" : text;
 }
 
 std::string describe_hit(const SurfaceHit& h) {
   if (!h.hit) return "no hit";
-  return (h.plane >= 0 ? "plane " + std::to_string(h.plane) : "triangle " + std::to_string(h.triangle)) + " at t = " + fmt(h.t);
+  return (h.plane >= 0 ? "plane " + std::to_string(h.plane) : "triangle " + std::to_string(h.triangle)) +
+         " at t = " + fmt(h.t);
 }
 
 // The rule that decides a scene's yes/no: that of a surface certainly hit, else of the
 // surface the answer names.
 std::string scene_rule(const Segment& s, const Scene& scene, const SceneStatus& all, const SurfaceHit& got) {
   for (std::size_t i = 0; i < all.planes.size(); ++i)
-    if (all.planes[i].hit && !all.planes[i].unstable) return "plane " + std::to_string(i) + ": " + plane_rule(s, scene.planes[i]);
+    if (all.planes[i].hit && !all.planes[i].unstable)
+      return "plane " + std::to_string(i) + ": " + plane_rule(s, scene.planes[i]);
   for (std::size_t i = 0; i < all.triangles.size(); ++i)
     if (all.triangles[i].hit && !all.triangles[i].unstable)
       return "triangle " + std::to_string(i) + ": " + triangle_rule(s, scene.mesh.triangle(i));
-  if (valid_plane(scene, got.plane)) return "plane " + std::to_string(got.plane) + ": " + plane_rule(s, scene.planes[std::size_t(got.plane)]);
+  if (valid_plane(scene, got.plane))
+    return "plane " + std::to_string(got.plane) + ": " + plane_rule(s, scene.planes[std::size_t(got.plane)]);
   if (valid_triangle(scene, got.triangle))
-    return "triangle " + std::to_string(got.triangle) + ": " + triangle_rule(s, scene.mesh.triangle(std::size_t(got.triangle)));
+    return "triangle " + std::to_string(got.triangle) + ": " +
+           triangle_rule(s, scene.mesh.triangle(std::size_t(got.triangle)));
   return "the step hits no plane (it starts behind, or does not end behind, each) and meets no triangle";
 }
 
@@ -262,8 +276,7 @@ Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got
   const bool again = left && got.hit && got.triangle >= 0 && got.triangle == left->triangle;
   const SceneStatus all = statuses(s, scene, tol, rules, again ? nullptr : left);
   const std::string expected = describe_hits(s, scene, all);
-  const Outcome decision =
-      decide(got.hit, all.any.hit, all.any.in_doubt(), rules, scene_rule(s, scene, all, got));
+  const Outcome decision = decide(got.hit, all.any.hit, all.any.in_doubt(), rules, scene_rule(s, scene, all, got));
   if (decision.verdict == Outcome::Verdict::fail) return fail(expected, describe_hit(got), decision.why);
   if (!got.hit || !all.any.hit) return decision;
 
@@ -276,14 +289,16 @@ Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got
   if (on_plane) {
     const Plane& p = scene.planes[std::size_t(got.plane)];
     const Status& st = all.planes[std::size_t(got.plane)];
-    if (!st.hit && !st.unstable) return fail(expected, describe_hit(got), "plane " + std::to_string(got.plane) + ": " + plane_rule(s, p));
+    if (!st.hit && !st.unstable)
+      return fail(expected, describe_hit(got), "plane " + std::to_string(got.plane) + ": " + plane_rule(s, p));
     check_plane_hit(e, s, p, got, tol);
     slack = plane_t_tolerance(s, p, tol);
   } else {
     const Triangle tri = scene.mesh.triangle(std::size_t(got.triangle));
     const Status& st = all.triangles[std::size_t(got.triangle)];
     if (!st.hit && !st.unstable)
-      return fail(expected, describe_hit(got), "triangle " + std::to_string(got.triangle) + ": " + triangle_rule(s, tri));
+      return fail(expected, describe_hit(got),
+                  "triangle " + std::to_string(got.triangle) + ": " + triangle_rule(s, tri));
     check_triangle_hit(e, s, tri, got, tol);
     slack = triangle_t_tolerance(s, tri, tol);
   }
@@ -292,14 +307,18 @@ Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got
     if (!all.planes[i].hit || all.planes[i].unstable) continue;
     const double t = oracle::plane_hit_t(s, scene.planes[i]);
     if (got.t > t + slack + plane_t_tolerance(s, scene.planes[i], tol))
-      return fail(expected, describe_hit(got), "the first hit is the one with the smallest t: plane " + std::to_string(i) + " is hit at t = " + fmt(t) + ", before yours");
+      return fail(expected, describe_hit(got),
+                  "the first hit is the one with the smallest t: plane " + std::to_string(i) +
+                      " is hit at t = " + fmt(t) + ", before yours");
   }
   for (std::size_t i = 0; i < all.triangles.size(); ++i) {
     if (!all.triangles[i].hit || all.triangles[i].unstable) continue;
     const Triangle tri = scene.mesh.triangle(i);
     const double t = oracle::segment_triangle(s, tri).t;
     if (got.t > t + slack + triangle_t_tolerance(s, tri, tol))
-      return fail(expected, describe_hit(got), "the first hit is the one with the smallest t: triangle " + std::to_string(i) + " is hit at t = " + fmt(t) + ", before yours");
+      return fail(expected, describe_hit(got),
+                  "the first hit is the one with the smallest t: triangle " + std::to_string(i) +
+                      " is hit at t = " + fmt(t) + ", before yours");
   }
   const Outcome o = e.outcome();
   return o.verdict == Outcome::Verdict::fail ? o : decision;
@@ -346,7 +365,9 @@ Outcome first_hit(const SegmentScene& in, const SurfaceHit& got, Rules rules) {
 // ---- Doubt, for the generators -------------------------------------------------------
 
 bool plane_in_doubt(const Plane& p, const Vec3& x, double scale) { return plane_value_in_doubt(p, x, scale); }
-bool sheet_in_doubt(const Segment& s, const Triangle& tri, double tol) { return triangle_unstable(s, tri, tol, Rules::random); }
+bool sheet_in_doubt(const Segment& s, const Triangle& tri, double tol) {
+  return triangle_unstable(s, tri, tol, Rules::random);
+}
 double closing_band(const ImpulseCase& in) {
   return 2 * kRelative * (in.velocity.norm() + in.object_velocity.norm()) * (kRoot3 + 1);
 }

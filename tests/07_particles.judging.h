@@ -39,7 +39,8 @@ bool valid_triangle(const Scene& scene, int i);
 
 // The first hit of a segment on a scene: lab 02's mesh verdict, with planes beside the
 // triangles. `left`: the hit the piece s starts from (collide), or none.
-Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got, Rules rules, const SurfaceHit* left = nullptr);
+Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got, Rules rules,
+                     const SurfaceHit* left = nullptr);
 
 // The exact unit normal of the surface a hit names, facing where the hit's normal faces.
 Vec3 exact_normal(const Scene& scene, const SurfaceHit& h);

@@ -13,41 +13,98 @@
 namespace labkit::lab07 {
 
 template <class V> void fields(Particle& p, V&& v) {
-  v("position", p.position); v("velocity", p.velocity); v("previous", p.previous); v("mass", p.mass);
-  v("age", p.age); v("lifetime", p.lifetime); v("alive", p.alive); v("bounces", p.bounces);
+  v("position", p.position);
+  v("velocity", p.velocity);
+  v("previous", p.previous);
+  v("mass", p.mass);
+  v("age", p.age);
+  v("lifetime", p.lifetime);
+  v("alive", p.alive);
+  v("bounces", p.bounces);
 }
 template <class V> void fields(Emitter& e, V&& v) {
-  v("position", e.position); v("half_extents", e.half_extents); v("direction", e.direction); v("cone", e.cone);
-  v("speed", e.speed); v("speed_spread", e.speed_spread); v("lifetime", e.lifetime);
-  v("lifetime_spread", e.lifetime_spread); v("mass", e.mass); v("rate", e.rate); v("owed", e.owed);
+  v("position", e.position);
+  v("half_extents", e.half_extents);
+  v("direction", e.direction);
+  v("cone", e.cone);
+  v("speed", e.speed);
+  v("speed_spread", e.speed_spread);
+  v("lifetime", e.lifetime);
+  v("lifetime_spread", e.lifetime_spread);
+  v("mass", e.mass);
+  v("rate", e.rate);
+  v("owed", e.owed);
 }
-template <class V> void fields(Births& b, V&& v) { v("count", b.count); v("owed", b.owed); }
-template <class V> void fields(Shot& s, V&& v) { v("angle", s.angle); v("velocity", s.velocity); v("time", s.time); }
-template <class V> void fields(Aim& a, V&& v) { v("count", a.count); v("radicand", a.radicand); v("low", a.low); v("high", a.high); }
+template <class V> void fields(Births& b, V&& v) {
+  v("count", b.count);
+  v("owed", b.owed);
+}
+template <class V> void fields(Shot& s, V&& v) {
+  v("angle", s.angle);
+  v("velocity", s.velocity);
+  v("time", s.time);
+}
+template <class V> void fields(Aim& a, V&& v) {
+  v("count", a.count);
+  v("radicand", a.radicand);
+  v("low", a.low);
+  v("high", a.high);
+}
 template <class V> void fields(SurfaceHit& h, V&& v) {
-  v("hit", h.hit); v("plane", h.plane); v("triangle", h.triangle); v("t", h.t); v("point", h.point); v("normal", h.normal);
+  v("hit", h.hit);
+  v("plane", h.plane);
+  v("triangle", h.triangle);
+  v("t", h.t);
+  v("point", h.point);
+  v("normal", h.normal);
 }
 template <class V> void fields(Impulse& i, V&& v) {
-  v("closing", i.closing); v("v_close", i.v_close); v("normal_impulse", i.normal_impulse); v("friction", i.friction);
+  v("closing", i.closing);
+  v("v_close", i.v_close);
+  v("normal_impulse", i.normal_impulse);
+  v("friction", i.friction);
   v("velocity", i.velocity);
 }
-template <class V> void fields(Bounce& b, V&& v) { v("hit", b.hit); v("velocity", b.velocity); v("from", b.from); }
+template <class V> void fields(Bounce& b, V&& v) {
+  v("hit", b.hit);
+  v("velocity", b.velocity);
+  v("from", b.from);
+}
 
 // Coefficients (drag, restitution, friction) and plane normals are unit-free numbers:
 // the ambiguity check moves them by 1e-9, not by 1e-9 S.
-template <class V> void fields(Forces& f, V&& v) { v("gravity", f.gravity); v("drag", f.drag); v("air_drag", f.air_drag); }
-template <class V> void fields(Material& m, V&& v) { v("restitution", m.restitution); v("friction", m.friction); }
+template <class V> void fields(Forces& f, V&& v) {
+  v("gravity", f.gravity);
+  v("drag", f.drag);
+  v("air_drag", f.air_drag);
+}
+template <class V> void fields(Material& m, V&& v) {
+  v("restitution", m.restitution);
+  v("friction", m.friction);
+}
 template <class V> void fields(Scene& s, V&& v) {
-  v("planes", s.planes); v("mesh", s.mesh); v("material", s.material); v("bounce_cap", s.bounce_cap);
-  v("velocity", s.velocity); v("mesh_query", s.mesh_query);
+  v("planes", s.planes);
+  v("mesh", s.mesh);
+  v("material", s.material);
+  v("bounce_cap", s.bounce_cap);
+  v("velocity", s.velocity);
+  v("mesh_query", s.mesh_query);
 }
 template <class V> void fields(Collision& c, V&& v) {
-  v("position", c.position); v("velocity", c.velocity); v("bounces", c.bounces); v("stopped", c.stopped);
+  v("position", c.position);
+  v("velocity", c.velocity);
+  v("bounces", c.bounces);
+  v("stopped", c.stopped);
   v("trace", c.trace);
 }
 template <class V> void fields(System& s, V&& v) {
-  v("emitter", s.emitter); v("scene", s.scene); v("forces", s.forces); v("integrator", s.integrator);
-  v("random", s.random); v("particles", s.particles); v("time", s.time);
+  v("emitter", s.emitter);
+  v("scene", s.scene);
+  v("forces", s.forces);
+  v("integrator", s.integrator);
+  v("random", s.random);
+  v("particles", s.particles);
+  v("time", s.time);
 }
 
 using Particles = std::vector<Particle>;
@@ -55,8 +112,7 @@ using MeshQuery = std::function<SurfaceHit(const Segment&, const Mesh&)>;
 
 }  // namespace labkit::lab07
 
-template <>
-struct labkit::wire::Codec<labkit::lab07::Random> {
+template <> struct labkit::wire::Codec<labkit::lab07::Random> {
   static void put(Writer& w, const lab07::Random& random) { wire::put(w, random.state()); }
   static void get(Reader& r, lab07::Random& random) {
     std::uint64_t state = 0;
@@ -66,8 +122,7 @@ struct labkit::wire::Codec<labkit::lab07::Random> {
 };
 
 // Scene::mesh_query is the viewer's (a k-d tree); the tests never set it.
-template <>
-struct labkit::wire::Codec<labkit::lab07::MeshQuery> {
+template <> struct labkit::wire::Codec<labkit::lab07::MeshQuery> {
   static void put(Writer&, const lab07::MeshQuery& query) {
     if (query) throw Error("Scene::mesh_query cannot be sent to the answerer (the tests never set it)");
   }

@@ -14,10 +14,7 @@ namespace labkit::judging {
 // coordinate magnitude, check::scale_of_input). It is the harness's ambiguity band too.
 inline constexpr double kRelative = check::kAmbiguity;
 
-template <class Input>
-double tolerance_of(const Input& in) {
-  return kRelative * check::scale_of_input(in);
-}
+template <class Input> double tolerance_of(const Input& in) { return kRelative * check::scale_of_input(in); }
 
 // ---- A segment against a mesh's triangles, each by the lab's own hit rule --------------
 
@@ -29,8 +26,7 @@ struct Status {
 
 // Could a perturbation of tol change whether `hit` (a predicate on SegmentTrianglePair)
 // holds for this triangle? Only random cases have doubt; exact input is judged exactly.
-template <class Hit>
-bool unstable(const Segment& s, const Triangle& tri, double tol, check::Rules rules, Hit&& hit) {
+template <class Hit> bool unstable(const Segment& s, const Triangle& tri, double tol, check::Rules rules, Hit&& hit) {
   return rules == check::Rules::random && check::segment_triangle_in_doubt(s, tri, tol, hit);
 }
 

@@ -1,15 +1,15 @@
 #include "viewer/app.h"
 
-#include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
+#include <epoxy/gl.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 #include <stb_image_write.h>
 
+#include <sys/resource.h>
 #include <algorithm>
 #include <chrono>
-#include <sys/resource.h>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -43,7 +43,8 @@ int samples(bool software) {
 }
 bool software_renderer() {
   const char* r = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return r && (std::string(r).find("llvmpipe") != std::string::npos || std::string(r).find("softpipe") != std::string::npos);
+  return r &&
+         (std::string(r).find("llvmpipe") != std::string::npos || std::string(r).find("softpipe") != std::string::npos);
 }
 
 // A filled dot in the colour of a verdict, on the current line.
@@ -56,8 +57,10 @@ void dot(Color c) {
 }
 
 void colour_key() {
-  const std::pair<Color, const char*> keys[] = {{palette::agree, "agrees"}, {palette::disagree, "disagrees"},
-                                                {palette::ambiguous, "ambiguous"}, {palette::stub, "not implemented"},
+  const std::pair<Color, const char*> keys[] = {{palette::agree, "agrees"},
+                                                {palette::disagree, "disagrees"},
+                                                {palette::ambiguous, "ambiguous"},
+                                                {palette::stub, "not implemented"},
                                                 {palette::exact, "exact answer"}};
   for (const auto& [c, text] : keys) {
     dot(c);
@@ -208,8 +211,10 @@ void App::steps_table() {
         ImGui::TextDisabled("%s", r.quantity.c_str());
         ImGui::TableNextColumn();
         const bool differs = s.verdict == Verdict::disagree && r.yours != r.exact;
-        if (differs) ImGui::TextColored(im(palette::disagree), "%s", r.yours.c_str());
-        else ImGui::TextUnformatted(r.yours.c_str());
+        if (differs)
+          ImGui::TextColored(im(palette::disagree), "%s", r.yours.c_str());
+        else
+          ImGui::TextUnformatted(r.yours.c_str());
         ImGui::TableNextColumn();
         ImGui::TextColored(im(palette::exact), "%s", r.exact.c_str());
       }
@@ -229,8 +234,9 @@ void App::panel() {
   const ImGuiIO& io = ImGui::GetIO();
   ImGui::SetNextWindowPos(ImVec2(io.DisplaySize.x - kPanelWidth, 0));
   ImGui::SetNextWindowSize(ImVec2(kPanelWidth, io.DisplaySize.y));
-  ImGui::Begin("labkit viewer", nullptr,
-               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar);
+  ImGui::Begin(
+      "labkit viewer", nullptr,
+      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoTitleBar);
   ImGui::TextDisabled("labkit viewer   labs (keys 1-%d):", int(std::size(kScenes)));
   for (int i = 0; i < int(std::size(kScenes)); ++i) {
     const std::string name = std::string(kScenes[i].lab) + "  " + kScenes[i].title;
@@ -325,8 +331,10 @@ int App::run(GLFWwindow* window) {
     const float scale = float(fb_width) / float(std::max(win_width, 1));
 
     if (!offscreen) input(view_width, win_height);
-    if (show_panel) panel();
-    else caption();
+    if (show_panel)
+      panel();
+    else
+      caption();
     if (dirty_) {
       const auto u0 = std::chrono::steady_clock::now();
       scene_->update();
@@ -356,18 +364,21 @@ int App::run(GLFWwindow* window) {
     if (frame + 1 == warm_up) timed_from = std::chrono::steady_clock::now(), cpu_from = cpu_ms();
     if (frame + 1 < last) continue;
     if (options_.benchmark > 0) {
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - timed_from).count() /
-                        options_.benchmark;
+      const double ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - timed_from).count() /
+          options_.benchmark;
       const double cpu = (cpu_ms() - cpu_from) / options_.benchmark;
-      std::printf("lab %s (%s): %.1f ms/frame (%.0f frames per second), %.1f ms of CPU per frame, over %d frames at "
-                  "%dx%d, %zu triangles drawn, update %.1f ms, on %s\n",
-                  kScenes[index_].lab, scene_->mode.c_str(), ms, 1000 / ms, cpu, options_.benchmark, options_.width,
-                  options_.height, render_.triangles_drawn(), update_ms,
-                  reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+      std::printf(
+          "lab %s (%s): %.1f ms/frame (%.0f frames per second), %.1f ms of CPU per frame, over %d frames at "
+          "%dx%d, %zu triangles drawn, update %.1f ms, on %s\n",
+          kScenes[index_].lab, scene_->mode.c_str(), ms, 1000 / ms, cpu, options_.benchmark, options_.width,
+          options_.height, render_.triangles_drawn(), update_ms,
+          reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
     }
     if (!options_.screenshot.empty()) {
       const std::vector<unsigned char> pixels = target.read();
-      if (!stbi_write_png(options_.screenshot.c_str(), options_.width, options_.height, 4, pixels.data(), options_.width * 4))
+      if (!stbi_write_png(options_.screenshot.c_str(), options_.width, options_.height, 4, pixels.data(),
+                          options_.width * 4))
         return fail("cannot write " + options_.screenshot);
       std::cout << "wrote " << options_.screenshot << " (" << options_.width << "x" << options_.height << ")\n";
       print_steps();
@@ -391,10 +402,12 @@ int run(const Options& options) {
   const char* display = std::getenv("DISPLAY");
   const char* wayland = std::getenv("WAYLAND_DISPLAY");
   if ((!display || !*display) && (!wayland || !*wayland))
-    return fail("no display (DISPLAY is not set): run it from a desktop session, or headless under "
-                "xvfb-run (./labkit view does that for --screenshot)");
+    return fail(
+        "no display (DISPLAY is not set): run it from a desktop session, or headless under "
+        "xvfb-run (./labkit view does that for --screenshot)");
   glfwSetErrorCallback(remember_glfw_error);
-  if (!glfwInit()) return fail("cannot open the display " + std::string(display ? display : "") + " (" + glfw_error + ")");
+  if (!glfwInit())
+    return fail("cannot open the display " + std::string(display ? display : "") + " (" + glfw_error + ")");
 
   const bool offscreen = !options.screenshot.empty() || options.benchmark > 0;
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);

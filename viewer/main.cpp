@@ -90,16 +90,19 @@ int main(int argc, char** argv) {
     } else if (arg == "--lab") {
       if (!value(lab)) return usage_error("--lab needs a lab number");
     } else if (arg == "--case") {
-      if (!value(options.setup.token)) return usage_error("--case needs a replay token, e.g. --case 'segment_plane:1,1,3,...'");
+      if (!value(options.setup.token))
+        return usage_error("--case needs a replay token, e.g. --case 'segment_plane:1,1,3,...'");
     } else if (arg == "--preset" || arg == "--figure") {
       if (!value(options.setup.preset)) return usage_error(arg + " needs a name (labkit-viewer --list-presets)");
       options.figure = arg == "--figure";
     } else if (arg == "--screenshot") {
       if (!value(options.screenshot)) return usage_error("--screenshot needs a file name, e.g. --screenshot out.png");
     } else if (arg == "--frames") {
-      if (!value(v) || !whole_number(v, options.frames, 1, 10000)) return usage_error("--frames needs a number from 1 to 10000");
+      if (!value(v) || !whole_number(v, options.frames, 1, 10000))
+        return usage_error("--frames needs a number from 1 to 10000");
     } else if (arg == "--benchmark") {
-      if (!value(v) || !whole_number(v, options.benchmark, 1, 100000)) return usage_error("--benchmark needs a number of frames");
+      if (!value(v) || !whole_number(v, options.benchmark, 1, 100000))
+        return usage_error("--benchmark needs a number of frames");
     } else if (arg == "--size") {
       const std::size_t x = value(v) ? v.find('x') : std::string::npos;
       if (x == std::string::npos || !whole_number(v.substr(0, x), options.width, 64, 8192) ||

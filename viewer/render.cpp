@@ -160,7 +160,8 @@ void Renderer::triangle(const labkit::Vec3& a, const labkit::Vec3& b, const labk
   triangle(a, b, c, color, color, color);
 }
 
-void Renderer::triangle(const labkit::Vec3& a, const labkit::Vec3& b, const labkit::Vec3& c, Color ca, Color cb, Color cc) {
+void Renderer::triangle(const labkit::Vec3& a, const labkit::Vec3& b, const labkit::Vec3& c, Color ca, Color cb,
+                        Color cc) {
   const Vec3f pa = f(a), pb = f(b), pc = f(c);
   Vec3f n = (pb - pa).cross(pc - pa);
   if (!(n.squaredNorm() > 0)) n = view_.forward;  // zero area: still visible as an edge-on sliver
@@ -278,7 +279,8 @@ void Renderer::end() {
     const ImU32 shadow = IM_COL32(15, 17, 20, 230);
     for (const ImVec2& o : {ImVec2(-1, 0), ImVec2(1, 0), ImVec2(0, -1), ImVec2(0, 1), ImVec2(1, 1)})
       list->AddText(ImVec2(x + o.x, y + o.y), shadow, l.text.c_str());
-    list->AddText(ImVec2(x, y), ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, 1)), l.text.c_str());
+    list->AddText(ImVec2(x, y), ImGui::ColorConvertFloat4ToU32(ImVec4(l.color.r, l.color.g, l.color.b, 1)),
+                  l.text.c_str());
   }
 }
 

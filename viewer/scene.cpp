@@ -60,11 +60,10 @@ void Scene::draw_ground(Renderer& r) const {
   r.axes();
 }
 
-UnknownQuery unknown_query(const std::string& lab, const std::string& query, const std::string& shown,
-                           bool listed) {
+UnknownQuery unknown_query(const std::string& lab, const std::string& query, const std::string& shown, bool listed) {
   if (listed)
-    return UnknownQuery("lab " + lab + "'s scene does not draw '" + query + "' (run it with ./labkit replay; the scene draws " +
-                        shown + ")");
+    return UnknownQuery("lab " + lab + "'s scene does not draw '" + query +
+                        "' (run it with ./labkit replay; the scene draws " + shown + ")");
   return UnknownQuery("lab " + lab + " has no query '" + query + "' (its scene draws " + shown + ")");
 }
 

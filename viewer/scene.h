@@ -32,22 +32,32 @@ enum class Verdict { agree, disagree, ambiguous, stub, none };
 
 inline Color colour(Verdict v) {
   switch (v) {
-    case Verdict::agree: return palette::agree;
-    case Verdict::disagree: return palette::disagree;
-    case Verdict::ambiguous: return palette::ambiguous;
-    case Verdict::stub: return palette::stub;
-    case Verdict::none: break;
+    case Verdict::agree:
+      return palette::agree;
+    case Verdict::disagree:
+      return palette::disagree;
+    case Verdict::ambiguous:
+      return palette::ambiguous;
+    case Verdict::stub:
+      return palette::stub;
+    case Verdict::none:
+      break;
   }
   return palette::muted;
 }
 
 inline const char* word(Verdict v) {
   switch (v) {
-    case Verdict::agree: return "agrees";
-    case Verdict::disagree: return "disagrees";
-    case Verdict::ambiguous: return "ambiguous: any answer passes";
-    case Verdict::stub: return "not implemented yet";
-    case Verdict::none: break;
+    case Verdict::agree:
+      return "agrees";
+    case Verdict::disagree:
+      return "disagrees";
+    case Verdict::ambiguous:
+      return "ambiguous: any answer passes";
+    case Verdict::stub:
+      return "not implemented yet";
+    case Verdict::none:
+      break;
   }
   return "";
 }
@@ -63,12 +73,11 @@ struct Step {
   std::string title;  // "segment_plane: d_a, d_b, the crossing point"
   Verdict verdict = Verdict::none;
   std::vector<Row> rows;
-  std::string note;   // why it disagrees, the stub's message, or why the step has nothing to show
+  std::string note;  // why it disagrees, the stub's message, or why the step has nothing to show
 };
 
 // The student's answer to one call, or why there is none.
-template <class T>
-struct Attempt {
+template <class T> struct Attempt {
   std::optional<T> value;
   bool stub = false;    // NotImplemented: "not implemented yet (L02S1)"
   std::string problem;  // the stub's message, or the exception's
@@ -77,8 +86,7 @@ struct Attempt {
   const T* operator->() const { return &*value; }
 };
 
-template <class F>
-auto attempt(F&& call) {
+template <class F> auto attempt(F&& call) {
   Attempt<decltype(call())> a;
   try {
     a.value = call();
@@ -93,8 +101,7 @@ auto attempt(F&& call) {
 
 // A step for an attempt: the judge's verdict when there is an answer, otherwise "not
 // implemented yet" or the exception. `judge` is called only when there is an answer.
-template <class T, class Judge>
-Step judged(std::string tag, std::string title, const Attempt<T>& a, Judge&& judge) {
+template <class T, class Judge> Step judged(std::string tag, std::string title, const Attempt<T>& a, Judge&& judge) {
   Step s{std::move(tag), std::move(title), Verdict::none, {}, {}};
   if (!a) {
     s.verdict = a.stub ? Verdict::stub : Verdict::disagree;
@@ -106,7 +113,8 @@ Step judged(std::string tag, std::string title, const Attempt<T>& a, Judge&& jud
   }
   const labkit::check::Outcome o = judge(*a);
   using V = labkit::check::Outcome::Verdict;
-  s.verdict = o.verdict == V::pass ? Verdict::agree : (o.verdict == V::ambiguous ? Verdict::ambiguous : Verdict::disagree);
+  s.verdict =
+      o.verdict == V::pass ? Verdict::agree : (o.verdict == V::ambiguous ? Verdict::ambiguous : Verdict::disagree);
   if (s.verdict == Verdict::disagree) s.note = o.why.empty() ? "expected " + o.expected + ", got " + o.got : o.why;
   return s;
 }
@@ -114,7 +122,11 @@ Step judged(std::string tag, std::string title, const Attempt<T>& a, Judge&& jud
 // Two verdicts of one step joined: the worse one shows.
 inline Verdict worse(Verdict a, Verdict b) {
   const auto rank = [](Verdict v) {
-    return v == Verdict::disagree ? 4 : v == Verdict::stub ? 3 : v == Verdict::ambiguous ? 2 : v == Verdict::agree ? 1 : 0;
+    return v == Verdict::disagree    ? 4
+           : v == Verdict::stub      ? 3
+           : v == Verdict::ambiguous ? 2
+           : v == Verdict::agree     ? 1
+                                     : 0;
   };
   return rank(a) >= rank(b) ? a : b;
 }
@@ -122,8 +134,7 @@ inline Verdict worse(Verdict a, Verdict b) {
 // A second answer judged within the same step (test_ beside find_, any_hit beside
 // first_hit): the worse verdict shows, and the first note.
 void join(Step& step, const Step& other);
-template <class T, class Judge>
-void join(Step& step, const Attempt<T>& a, Judge&& judge) {
+template <class T, class Judge> void join(Step& step, const Attempt<T>& a, Judge&& judge) {
   join(step, judged("", "", a, std::forward<Judge>(judge)));
 }
 
@@ -161,8 +172,8 @@ class Scene {
   virtual std::vector<Handle> handles() = 0;
   virtual std::string token() const = 0;  // the input now, as `./labkit check --case` takes it
 
-  std::string mode;           // which of the scene's inputs it shows: "segment and triangle"
-  std::vector<Step> steps;    // filled by update()
+  std::string mode;                            // which of the scene's inputs it shows: "segment and triangle"
+  std::vector<Step> steps;                     // filled by update()
   labkit::Vec3 center = labkit::Vec3::Zero();  // what the camera frames at first
   double radius = 1;
   float yaw = -60, pitch = 28;
@@ -180,7 +191,7 @@ class Scene {
 // Helpers for the panel and for scenes' text.
 bool edit(const char* label, labkit::Vec3& v, float speed = 0.05f);
 bool edit(const char* label, double& x, float speed = 0.05f, double low = 0, double high = 0);
-std::string num(double x);                 // 4 significant digits, for the screen
+std::string num(double x);  // 4 significant digits, for the screen
 std::string num(const labkit::Vec3& v);
 // A yes/no answer in the panel, in the step's own words ("hit" / "miss").
 inline std::string yes_no(bool b, const char* yes = "yes", const char* no = "no") { return b ? yes : no; }
@@ -196,12 +207,8 @@ UnknownQuery unknown_query(const std::string& lab, const std::string& query, con
                            bool listed = false);
 
 // Loaders, one per input type: `Loaders{[&](auto q, const TreeQuery& in) {...}, ...}`.
-template <class... F>
-struct Loaders : F... {
-  using F::operator()...;
-};
-template <class... F>
-Loaders(F...) -> Loaders<F...>;
+template <class... F> struct Loaders : F... { using F::operator()...; };
+template <class... F> Loaders(F...) -> Loaders<F...>;
 
 // A replay token's input, read as the type its query takes in the lab's table
 // (common/inputs/NN_name.h) and handed to the loader that takes that type. The scene

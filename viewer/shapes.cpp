@@ -37,14 +37,17 @@ void draw_faces(Renderer& r, const Corners& p, Color c) {
   }
 }
 
-void draw_circle(Renderer& r, const Vec3& c, const Vec3& e1, const Vec3& e2, double radius, Color col, float width, int sides) {
+void draw_circle(Renderer& r, const Vec3& c, const Vec3& e1, const Vec3& e2, double radius, Color col, float width,
+                 int sides) {
   for (int i = 0; i < sides; ++i) {
     const double a = 2 * M_PI * i / sides, b = 2 * M_PI * (i + 1) / sides;
-    r.line(c + radius * (std::cos(a) * e1 + std::sin(a) * e2), c + radius * (std::cos(b) * e1 + std::sin(b) * e2), col, width);
+    r.line(c + radius * (std::cos(a) * e1 + std::sin(a) * e2), c + radius * (std::cos(b) * e1 + std::sin(b) * e2), col,
+           width);
   }
 }
 
-void draw_sphere(Renderer& r, const Vec3& c, double radius, Color col, float width, int sides, const labkit::Mat3& axes) {
+void draw_sphere(Renderer& r, const Vec3& c, double radius, Color col, float width, int sides,
+                 const labkit::Mat3& axes) {
   for (int axis = 0; axis < 3; ++axis)
     draw_circle(r, c, axes.col((axis + 1) % 3), axes.col((axis + 2) % 3), radius, col, width, sides);
 }
@@ -60,8 +63,10 @@ void fill(Renderer& r, const Square& q, Color c) {
 
 void outline(Renderer& r, const Square& q, Color c, float width, bool dashed) {
   for (std::size_t i = 0; i < 4; ++i) {
-    if (dashed) r.dashed(q[i], q[(i + 1) % 4], c, width);
-    else r.line(q[i], q[(i + 1) % 4], c, width);
+    if (dashed)
+      r.dashed(q[i], q[(i + 1) % 4], c, width);
+    else
+      r.line(q[i], q[(i + 1) % 4], c, width);
   }
 }
 

@@ -22,7 +22,9 @@ using Corners = std::array<labkit::Vec3, 8>;
 Corners corners_of(const labkit::Box& b);
 void draw_edges(Renderer& r, const Corners& p, Color c, float width);
 void draw_faces(Renderer& r, const Corners& p, Color c);
-inline void draw_box(Renderer& r, const labkit::Box& b, Color c, float width) { draw_edges(r, corners_of(b), c, width); }
+inline void draw_box(Renderer& r, const labkit::Box& b, Color c, float width) {
+  draw_edges(r, corners_of(b), c, width);
+}
 
 // A circle around `c` in the plane of the unit vectors e1, e2, as `sides` lines.
 void draw_circle(Renderer& r, const labkit::Vec3& c, const labkit::Vec3& e1, const labkit::Vec3& e2, double radius,

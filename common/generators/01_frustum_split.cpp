@@ -121,7 +121,8 @@ struct PlaneFrame {
 rc::Gen<PlaneFrame> plane_frame(double s, bool exact) {
   return rc::gen::exec([s, exact] {
     const Vec3 n = *direction(1, exact ? 2 : 8);
-    const Vec3 a = *rc::gen::suchThat(direction(1, exact ? 2 : 4), [n](const Vec3& v) { return n.cross(v) != Vec3::Zero(); });
+    const Vec3 a =
+        *rc::gen::suchThat(direction(1, exact ? 2 : 4), [n](const Vec3& v) { return n.cross(v) != Vec3::Zero(); });
     const Vec3 u = n.cross(a), w = n.cross(u);
     const Vec3 origin = exact ? *lattice_point(8 * s, 16) : *point(s);
     return PlaneFrame{Plane{n, -n.dot(origin)}, origin, u * s, w * s, n * s};
@@ -131,9 +132,8 @@ rc::Gen<PlaneFrame> plane_frame(double s, bool exact) {
 // A coefficient: small integers for exact input, integers plus a 20-bit fraction else.
 rc::Gen<double> coefficient(bool exact, int magnitude) {
   if (exact) return rc::gen::map(integer(magnitude), [](int k) { return double(k); });
-  return rc::gen::exec([magnitude] {
-    return *integer(magnitude) + std::ldexp(double(*rc::gen::inRange(0, 1 << 20)), -20);
-  });
+  return rc::gen::exec(
+      [magnitude] { return *integer(magnitude) + std::ldexp(double(*rc::gen::inRange(0, 1 << 20)), -20); });
 }
 
 // How far each vertex sits off the plane, in units of |n|^2 s: exactly 0 for the
@@ -148,12 +148,24 @@ rc::Gen<TrianglePlane> plane_case(bool exact, Heights kind, bool nudge) {
     const double side = *rc::gen::element(-1.0, 1.0);
     std::array<double, 3> h{};
     switch (kind) {
-      case Heights::generic: h = {*coefficient(exact, 4), *coefficient(exact, 4), *coefficient(exact, 4)}; break;
-      case Heights::one_on: h = {0, off(), off()}; break;
-      case Heights::two_on: h = {0, 0, off()}; break;
-      case Heights::all_on: h = {0, 0, 0}; break;
-      case Heights::touch_vertex: h = {0, side * std::abs(off()), side * std::abs(off())}; break;
-      case Heights::touch_edge: h = {0, 0, side * std::abs(off())}; break;
+      case Heights::generic:
+        h = {*coefficient(exact, 4), *coefficient(exact, 4), *coefficient(exact, 4)};
+        break;
+      case Heights::one_on:
+        h = {0, off(), off()};
+        break;
+      case Heights::two_on:
+        h = {0, 0, off()};
+        break;
+      case Heights::all_on:
+        h = {0, 0, 0};
+        break;
+      case Heights::touch_vertex:
+        h = {0, side * std::abs(off()), side * std::abs(off())};
+        break;
+      case Heights::touch_edge:
+        h = {0, 0, side * std::abs(off())};
+        break;
     }
     if (nudge)
       for (double& x : h)
@@ -196,12 +208,15 @@ rc::Gen<TrianglePlane> needle_plane_case() {
   return rc::gen::exec([] {
     const double s = *scale();
     const PlaneFrame f = *plane_frame(s, false);
-    const auto along = [&] { return double(*integer(4)) * f.u + double(*integer(4)) * f.w + double(*integer(4)) * f.n; };
+    const auto along = [&] {
+      return double(*integer(4)) * f.u + double(*integer(4)) * f.w + double(*integer(4)) * f.n;
+    };
     Vec3 d = along();
     if (d == Vec3::Zero()) d = f.u;
     const Vec3 across = *rc::gen::suchThat(direction(1, 4), [d](const Vec3& v) { return d.cross(v) != Vec3::Zero(); });
     const Vec3 thin = d.cross(across).normalized() * (d.norm() * std::ldexp(1.0, -*rc::gen::inRange(10, 28)));
-    const Vec3 middle = f.origin + *coefficient(false, 2) * f.u + *coefficient(false, 2) * f.w + *coefficient(false, 1) * f.n;
+    const Vec3 middle =
+        f.origin + *coefficient(false, 2) * f.u + *coefficient(false, 2) * f.w + *coefficient(false, 1) * f.n;
     const double lambda = *rc::gen::inRange(0, 9) / 8.0;
     const Triangle t{middle - d, middle + d, middle - d + 2 * lambda * d + thin};
     return TrianglePlane{wound(t), f.plane};
@@ -247,7 +262,7 @@ struct ExactFrustum {
   Vec3 eye, right, up, forward;
   double px, qx, py, qy, wx, wy;  // integers
   double near, far;
-  double s;                      // the lattice unit
+  double s;  // the lattice unit
 
   Vec3 world(double x, double y, double z) const { return eye + x * right + y * up + z * forward; }
   double half_width(double z) const { return wx + px / qx * z; }
@@ -255,12 +270,18 @@ struct ExactFrustum {
   // Plane i (left, right, bottom, top, near, far) as a local normal and offset.
   Plane local_plane(int i) const {
     switch (i) {
-      case 0: return {Vec3(qx, 0, px), qx * wx};   // qx (X + wx) + px Z >= 0
-      case 1: return {Vec3(-qx, 0, px), qx * wx};
-      case 2: return {Vec3(0, qy, py), qy * wy};
-      case 3: return {Vec3(0, -qy, py), qy * wy};
-      case 4: return {Vec3(0, 0, 1), -near};
-      default: return {Vec3(0, 0, -1), far};
+      case 0:
+        return {Vec3(qx, 0, px), qx * wx};  // qx (X + wx) + px Z >= 0
+      case 1:
+        return {Vec3(-qx, 0, px), qx * wx};
+      case 2:
+        return {Vec3(0, qy, py), qy * wy};
+      case 3:
+        return {Vec3(0, -qy, py), qy * wy};
+      case 4:
+        return {Vec3(0, 0, 1), -near};
+      default:
+        return {Vec3(0, 0, -1), far};
     }
   }
   Plane plane(int i) const {
@@ -305,8 +326,8 @@ enum class Feature { corner, edge, face };
 
 struct FeaturePoint {
   Vec3 point;
-  std::array<int, 2> planes;      // the planes it lies on (-1: none)
-  Vec3 along = Vec3::Zero();      // on an edge line: a lattice step along it
+  std::array<int, 2> planes;  // the planes it lies on (-1: none)
+  Vec3 along = Vec3::Zero();  // on an edge line: a lattice step along it
 };
 
 FeaturePoint feature_point(const ExactFrustum& f, Feature kind, bool side_edge = false) {
@@ -371,8 +392,9 @@ Vec3 outward(const ExactFrustum& f, int a, int b) {
 // changes neither value.
 Vec3 sideways(const ExactFrustum& f, int a, int b) {
   const Vec3 na = f.plane(a).normal;
-  const Vec3 other = b < 0 ? *rc::gen::suchThat(direction(1, 2), [na](const Vec3& d) { return na.cross(d) != Vec3::Zero(); })
-                           : f.plane(b).normal;
+  const Vec3 other =
+      b < 0 ? *rc::gen::suchThat(direction(1, 2), [na](const Vec3& d) { return na.cross(d) != Vec3::Zero(); })
+            : f.plane(b).normal;
   return na.cross(other) * (f.s * *rc::gen::inRange(1, 3));
 }
 
@@ -385,7 +407,9 @@ Triangle wound(Triangle t) {
 rc::Gen<TriangleFrustum> exact_case() {
   return rc::gen::exec([] {
     const ExactFrustum f = *exact_frustum();
-    const auto feature = [&] { return feature_point(f, *rc::gen::element(Feature::corner, Feature::edge, Feature::face)); };
+    const auto feature = [&] {
+      return feature_point(f, *rc::gen::element(Feature::corner, Feature::edge, Feature::face));
+    };
     Triangle t;
     switch (*rc::gen::inRange(0, 11)) {
       case 0: {  // a vertex on a feature, the others anywhere around
@@ -429,7 +453,8 @@ rc::Gen<TriangleFrustum> exact_case() {
       case 5: {  // touching along an edge line from outside
         const FeaturePoint p = feature_point(f, Feature::edge);
         FeaturePoint q = p;
-        for (int tries = 0; tries < 8 && (q.point == p.point || q.planes != p.planes); ++tries) q = feature_point(f, Feature::edge);
+        for (int tries = 0; tries < 8 && (q.point == p.point || q.planes != p.planes); ++tries)
+          q = feature_point(f, Feature::edge);
         t = {p.point, q.point, p.point + outward(f, p.planes[0], p.planes[1]) * f.s};
         break;
       }
@@ -488,12 +513,18 @@ Vec3 anchor(const CameraFrustum& cf) {
   const auto& k = cf.corners;
   const int i = *rc::gen::inRange(0, 8), j = *rc::gen::inRange(0, 8), l = *rc::gen::inRange(0, 8);
   switch (*rc::gen::inRange(0, 5)) {
-    case 0: return k[std::size_t(i)];
-    case 1: return cf.center;
-    case 2: return cf.camera.eye;
-    case 3: return (k[std::size_t(i)] + k[std::size_t(i ^ (1 << (j % 3)))]) / 2;  // an edge's middle
-    default: return (k[std::size_t(i)] + k[std::size_t(i ^ (1 << (j % 3)))] + k[std::size_t(i ^ (1 << (l % 3)))] +
-                     k[std::size_t(i ^ (1 << (j % 3)) ^ (1 << (l % 3)))]) / 4;
+    case 0:
+      return k[std::size_t(i)];
+    case 1:
+      return cf.center;
+    case 2:
+      return cf.camera.eye;
+    case 3:
+      return (k[std::size_t(i)] + k[std::size_t(i ^ (1 << (j % 3)))]) / 2;  // an edge's middle
+    default:
+      return (k[std::size_t(i)] + k[std::size_t(i ^ (1 << (j % 3)))] + k[std::size_t(i ^ (1 << (l % 3)))] +
+              k[std::size_t(i ^ (1 << (j % 3)) ^ (1 << (l % 3)))]) /
+             4;
   }
 }
 
@@ -510,7 +541,8 @@ rc::Gen<TriangleFrustum> camera_case() {
     switch (*rc::gen::inRange(0, 6)) {
       case 5: {  // a needle through a point of interest, in any direction, aspect 2^10 to 2^27
         const Vec3 d = *direction(std::ldexp(1.0, std::ilogb(cf.size) - 2), 8);
-        const Vec3 across = *rc::gen::suchThat(direction(1, 4), [d](const Vec3& v) { return d.cross(v) != Vec3::Zero(); });
+        const Vec3 across =
+            *rc::gen::suchThat(direction(1, 4), [d](const Vec3& v) { return d.cross(v) != Vec3::Zero(); });
         const Vec3 thin = d.cross(across).normalized() * (d.norm() * std::ldexp(1.0, -*rc::gen::inRange(10, 28)));
         const Vec3 middle = anchor(cf) + jitter(cf) / 4;
         t = {middle - d, middle + d, middle - d + (*rc::gen::inRange(0, 9) / 4.0) * d + thin};
@@ -531,7 +563,8 @@ rc::Gen<TriangleFrustum> camera_case() {
         const double depth = c.near + (c.far - c.near) * *rc::gen::inRange(-1, 10) / 8.0;
         const Vec3 middle = c.eye + depth * f;
         const double reach = 4 * cf.size;
-        t = {middle - reach * (r + u) + jitter(cf) / 8, middle + reach * (r - u) + jitter(cf) / 8, middle + reach * u + jitter(cf) / 8};
+        t = {middle - reach * (r + u) + jitter(cf) / 8, middle + reach * (r - u) + jitter(cf) / 8,
+             middle + reach * u + jitter(cf) / 8};
         break;
       }
       case 3: {  // through the eye: where every side plane meets
@@ -555,12 +588,14 @@ rc::Gen<TrianglePlane> triangle_plane() {
       {1, plane_case(false, Heights::all_on, true)},
       {1, plane_case(false, Heights::touch_vertex, true)},
   });
-  const rc::Gen<TrianglePlane> families = rc::gen::weightedOneOf<TrianglePlane>({
-      {6, exactly}, {3, nearly}, {1, zero_area_plane_case()}, {2, rc::gen::map(exactly, unit_normal)},
-      {2, needle_plane_case()}});
-  const rc::Gen<TrianglePlane> extremes = rc::gen::exec([families] {
-    return scaled(*families, signed_extreme(), *rc::gen::inRange(-100, 101));
-  });
+  const rc::Gen<TrianglePlane> families =
+      rc::gen::weightedOneOf<TrianglePlane>({{6, exactly},
+                                             {3, nearly},
+                                             {1, zero_area_plane_case()},
+                                             {2, rc::gen::map(exactly, unit_normal)},
+                                             {2, needle_plane_case()}});
+  const rc::Gen<TrianglePlane> extremes =
+      rc::gen::exec([families] { return scaled(*families, signed_extreme(), *rc::gen::inRange(-100, 101)); });
   return rc::gen::weightedOneOf<TrianglePlane>({{12, families}, {2, far_away(families)}, {2, extremes}});
 }
 
@@ -609,7 +644,8 @@ rc::Gen<Mat4> view_projection_matrix() {
     if (*rc::gen::inRange(0, 3) == 0) {
       // An orthographic view instead: glOrtho(l, r, b, t, near, far) times the same view.
       const double half = c.far * std::tan(c.fov_y / 2);
-      const double l = -half * c.aspect * *rc::gen::inRange(1, 5) / 4, r = half * c.aspect * *rc::gen::inRange(1, 5) / 4;
+      const double l = -half * c.aspect * *rc::gen::inRange(1, 5) / 4,
+                   r = half * c.aspect * *rc::gen::inRange(1, 5) / 4;
       const double b = -half * *rc::gen::inRange(1, 5) / 4, t = half * *rc::gen::inRange(1, 5) / 4;
       Mat4 ortho = Mat4::Identity();
       ortho(0, 0) = 2 / (r - l);

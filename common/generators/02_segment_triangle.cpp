@@ -18,7 +18,8 @@ rc::Gen<lab02::PointTriangle> point_triangle() {
     const auto off = [] { return *rc::gen::weightedElement<int>({{1, 0}, {3, 1}, {3, -1}, {2, 2}, {2, -2}}); };
     const auto near = [&](int base) { return base * std::ldexp(1.0, bits - 3) + off(); };
     const auto weight = [&] {
-      return *rc::gen::oneOf(rc::gen::just(near(*rc::gen::inRange(-4, 13))), rc::gen::just(double(*integer(1 << 12)))) * unit;
+      return *rc::gen::oneOf(rc::gen::just(near(*rc::gen::inRange(-4, 13))), rc::gen::just(double(*integer(1 << 12)))) *
+             unit;
     };
     const double alpha = weight();
     // Sometimes near the edge v1 v2 (alpha + beta = 1).
@@ -72,9 +73,12 @@ Mesh small_mesh() {
     const bool thin = count == 4 && std::abs(e1.cross(e2).dot(m.vertices[3] - m.vertices[0])) < 1.0 / 16;
     if (!flat && !thin) break;
   }
-  if (shape == 0) m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
-  else if (shape == 1) m.triangles = {{0, 1, 2}, {0, 3, 1}};
-  else m.triangles = {{0, 1, 2}};
+  if (shape == 0)
+    m.triangles = {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}};
+  else if (shape == 1)
+    m.triangles = {{0, 1, 2}, {0, 3, 1}};
+  else
+    m.triangles = {{0, 1, 2}};
   return m;
 }
 
@@ -82,7 +86,8 @@ Mesh small_mesh() {
 // feature's kind (0 vertex, 1 edge, 2 face).
 Vec3 feature_point(const Mesh& m, int kind) {
   const auto& tri = m.triangles[std::size_t(*rc::gen::inRange<int>(0, int(m.triangles.size())))];
-  const Vec3 v0 = m.vertices[std::size_t(tri[0])], v1 = m.vertices[std::size_t(tri[1])], v2 = m.vertices[std::size_t(tri[2])];
+  const Vec3 v0 = m.vertices[std::size_t(tri[0])], v1 = m.vertices[std::size_t(tri[1])],
+             v2 = m.vertices[std::size_t(tri[2])];
   if (kind == 0) return v0;
   // On an edge at an odd sixteenth, 3/16 to 13/16 from either end: never at a time t0 of
   // the aim below, since the swept parallelogram's diagonal (u = t) is an exact
@@ -112,13 +117,16 @@ rc::Gen<lab02::MovingMeshes> moving_meshes() {
     const int family = *rc::gen::inRange(0, 3);
     const Vec3 x_a = feature_point(in.a, family == 0 ? 0 : family == 1 ? 2 : 1);
     const Vec3 x_b = feature_point(in.b, family == 0 ? 2 : family == 1 ? 0 : 1);
-    const double t0 = *rc::gen::weightedElement<double>({{6, 0.25}, {6, 0.5}, {6, 0.75}, {3, 0.9375}, {3, 1.25}, {2, 2.0}});
+    const double t0 =
+        *rc::gen::weightedElement<double>({{6, 0.25}, {6, 0.5}, {6, 0.75}, {3, 0.9375}, {3, 1.25}, {2, 2.0}});
     Vec3 nudge = Vec3::Zero();
     if (*rc::gen::element(0, 0, 1)) nudge = Vec3(*integer(4), *integer(4), *integer(4)) * *tiny(10, 20);
     const Vec3 d = (x_b + nudge - x_a) / t0;
     const Vec3 velocity_b = *rc::gen::element(0, 1) ? Vec3::Zero() : Vec3(*integer(8), *integer(8), *integer(8));
     in.velocity_b = velocity_b;
-    in.velocity_a = *rc::gen::element(0, 0, 0, 0, 0, 0, 0, 0, 0, 1) ? velocity_b : Vec3(d + velocity_b);  // now and then: no relative motion
+    in.velocity_a = *rc::gen::element(0, 0, 0, 0, 0, 0, 0, 0, 0, 1)
+                        ? velocity_b
+                        : Vec3(d + velocity_b);  // now and then: no relative motion
     for (Vec3& v : in.a.vertices) v *= s;
     for (Vec3& v : in.b.vertices) v *= s;
     in.velocity_a *= s, in.velocity_b *= s;

@@ -8,7 +8,9 @@
 namespace labkit {
 
 namespace {
-double box_scale(const Box& b) { return std::max(b.center.cwiseAbs().maxCoeff(), b.half_extents.cwiseAbs().maxCoeff()); }
+double box_scale(const Box& b) {
+  return std::max(b.center.cwiseAbs().maxCoeff(), b.half_extents.cwiseAbs().maxCoeff());
+}
 }  // namespace
 
 double scale_of(const BoxOnAxis& in) { return box_scale(in.box); }
@@ -182,8 +184,8 @@ BoxPair edge_contact(Grid g) {
   const double size = std::max(a.half_extents.maxCoeff(), b.half_extents.maxCoeff()) + g.s;
   // A's edge along A_i farthest along n, at a point part way along it; B's edge along
   // B_j farthest along -n, placed through that point plus the gap.
-  const Vec3 p = a.center - extreme_toward(a, n, i) +
-                 (*rc::gen::inRange(-8, 9) / 8.0) * a.half_extents[i] * a.axes.col(i);
+  const Vec3 p =
+      a.center - extreme_toward(a, n, i) + (*rc::gen::inRange(-8, 9) / 8.0) * a.half_extents[i] * a.axes.col(i);
   const Vec3 q = extreme_toward(b, n, j) + (*rc::gen::inRange(-8, 9) / 8.0) * b.half_extents[j] * b.axes.col(j);
   b.center = p + gap(g, size, reach(a, size)) * n - q;
   return {a, b};
@@ -236,34 +238,34 @@ BoxPair far_away(BoxPair p) {
 }
 
 BoxPair pair_of(Grid g) {
-    switch (*rc::gen::weightedElement<int>({{4, 0}, {3, 1}, {3, 2}, {2, 3}, {1, 4}})) {
-      case 0:
-        return nearby(g);
-      case 1:
-        return face_contact(g);
-      case 2:
-        return edge_contact(g);
-      case 3:
-        return corner_contact(g);
-      default:
-        return nested(g);
-    }
+  switch (*rc::gen::weightedElement<int>({{4, 0}, {3, 1}, {3, 2}, {2, 3}, {1, 4}})) {
+    case 0:
+      return nearby(g);
+    case 1:
+      return face_contact(g);
+    case 2:
+      return edge_contact(g);
+    case 3:
+      return corner_contact(g);
+    default:
+      return nested(g);
+  }
 }
 
 rc::Gen<BoxPair> pair_family(bool exact) {
   return rc::gen::exec([exact] { return pair_of(*grid(exact)); });
 }
 
-Vec3 rounded_unit() {
-  return Vec3(*direction(1.0, 8)).normalized();
-}
+Vec3 rounded_unit() { return Vec3(*direction(1.0, 8)).normalized(); }
 
 // ---- Triangles -------------------------------------------------------------------------
 
 Vec3 grid_point(Grid g) { return g.exact ? Vec3(*lattice_point(8 * g.s, 16)) : Vec3(*point(g.s)); }
 Vec3 grid_direction(Grid g) { return *direction(g.exact ? 8 * g.s : g.s, 8); }
 Triangle grid_triangle(Grid g) {
-  return *rc::gen::suchThat(rc::gen::exec([g] { return Triangle{grid_point(g), grid_point(g), grid_point(g)}; }),
+  return *rc::gen::suchThat(rc::gen::exec([g] {
+                              return Triangle{grid_point(g), grid_point(g), grid_point(g)};
+                            }),
                             [](const Triangle& t) { return t.normal() != Vec3::Zero(); });
 }
 Vec3 eighths(const Vec3& origin, const Vec3& u, int p, const Vec3& v, int q) {
@@ -275,14 +277,21 @@ Vec3 eighths(const Vec3& origin, const Vec3& u, int p, const Vec3& v, int q) {
 TrianglePair through_point(Grid g) {
   const Triangle t0 = grid_triangle(g);
   const int i = *rc::gen::inRange(0, 3);
-  const Vec3 x = *rc::gen::oneOf(point_in_triangle(t0),
-                                 rc::gen::just(eighths(t0[i], t0[(i + 1) % 3] - t0[i], *rc::gen::inRange(0, 9), Vec3::Zero(), 0)));
+  const Vec3 x =
+      *rc::gen::oneOf(point_in_triangle(t0),
+                      rc::gen::just(eighths(t0[i], t0[(i + 1) % 3] - t0[i], *rc::gen::inRange(0, 9), Vec3::Zero(), 0)));
   const Vec3 d1 = grid_direction(g), d2 = grid_direction(g);
   Triangle t1;
   switch (*rc::gen::weightedElement<int>({{3, 0}, {1, 1}, {1, 2}})) {
-    case 0: t1 = {x + d1, x + d2, x - d1 - d2}; break;
-    case 1: t1 = {x, x + d1, x + d2}; break;
-    default: t1 = {x + d1, x - (*rc::gen::inRange(1, 17) / 8.0) * d1, x + d2}; break;
+    case 0:
+      t1 = {x + d1, x + d2, x - d1 - d2};
+      break;
+    case 1:
+      t1 = {x, x + d1, x + d2};
+      break;
+    default:
+      t1 = {x + d1, x - (*rc::gen::inRange(1, 17) / 8.0) * d1, x + d2};
+      break;
   }
   // On rounded input, three in four are moved off the contact by 1 to 8 times 1e-8 S along
   // T0's normal (10 tol: just outside the band where the check calls them ambiguous),
@@ -331,8 +340,8 @@ TrianglePair near_coplanar() {
 TrianglePair near_touching() {
   TrianglePair p = through_point(*grid(false));
   const double size = scale_of(p);
-  const Vec3 shift = *rc::gen::element(-3.0, -2.0, -1.0, 1.0, 2.0, 3.0) * *tiny(12, 25) * size *
-                     Vec3(*direction(1.0, 4)).normalized();
+  const Vec3 shift =
+      *rc::gen::element(-3.0, -2.0, -1.0, 1.0, 2.0, 3.0) * *tiny(12, 25) * size * Vec3(*direction(1.0, 4)).normalized();
   for (int k = 0; k < 3; ++k) p.t1[k] += shift;
   return p;
 }
@@ -523,8 +532,7 @@ MovingBoxes scaled(MovingBoxes m, double f) {
   return m;
 }
 // One case in 16 at an end of the scale range.
-template <class T>
-rc::Gen<T> with_scale_ends(rc::Gen<T> gen) {
+template <class T> rc::Gen<T> with_scale_ends(rc::Gen<T> gen) {
   return rc::gen::weightedOneOf<T>({{15, gen}, {1, rc::gen::exec([gen] { return scaled(*gen, scale_end()); })}});
 }
 
@@ -543,9 +551,15 @@ rc::Gen<BoxOnAxis> box_on_axis() {
     const Grid g = *grid(false);
     BoxOnAxis in{grid_box(g), Vec3::UnitX()};
     switch (*rc::gen::inRange(0, 4)) {
-      case 0: in.axis = *direction(1.0, 8); break;  // a lattice direction, any length
-      case 1: in.axis = rounded_unit(); break;
-      case 2: in.axis = in.box.axes.col(*rc::gen::inRange(0, 3)); break;  // its own axis
+      case 0:
+        in.axis = *direction(1.0, 8);
+        break;  // a lattice direction, any length
+      case 1:
+        in.axis = rounded_unit();
+        break;
+      case 2:
+        in.axis = in.box.axes.col(*rc::gen::inRange(0, 3));
+        break;  // its own axis
       default:  // perpendicular to one of its axes, to rounding: |A_k . L| is noise
         in.axis = in.box.axes.col(0).cross(in.box.axes.col(*rc::gen::inRange(1, 3)));
     }
@@ -585,24 +599,34 @@ rc::Gen<BoxPair> exact_box_pair() { return pair_family(true); }
 // The header's domain: zero area, or a smallest height at least 1e-8 of the longest edge
 // (longest^2 <= 1e8 |n|, |n| twice the area).
 bool in_domain(const Triangle& t) {
-  const double longest = std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
+  const double longest =
+      std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
   const double n = t.normal().norm();
   return n == 0 || longest <= 1e8 * n;
 }
 
 rc::Gen<TrianglePair> triangle_pair() {
-  const rc::Gen<TrianglePair> families = rc::gen::suchThat(rc::gen::exec([] {
-    const Grid g = *grid(false);
-    switch (*rc::gen::weightedElement<int>({{6, 0}, {8, 1}, {3, 2}, {4, 3}, {4, 4}, {1, 5}, {8, 6}})) {
-      case 0: return generic_triangles(g);
-      case 1: return through_point(g);
-      case 2: return lifted_coplanar();
-      case 3: return near_coplanar();
-      case 4: return near_touching();
-      case 5: return zero_area(g);
-      default: return needles();
-    }
-  }), [](const TrianglePair& p) { return in_domain(p.t0) && in_domain(p.t1); });
+  const rc::Gen<TrianglePair> families = rc::gen::suchThat(
+      rc::gen::exec([] {
+        const Grid g = *grid(false);
+        switch (*rc::gen::weightedElement<int>({{6, 0}, {8, 1}, {3, 2}, {4, 3}, {4, 4}, {1, 5}, {8, 6}})) {
+          case 0:
+            return generic_triangles(g);
+          case 1:
+            return through_point(g);
+          case 2:
+            return lifted_coplanar();
+          case 3:
+            return near_coplanar();
+          case 4:
+            return near_touching();
+          case 5:
+            return zero_area(g);
+          default:
+            return needles();
+        }
+      }),
+      [](const TrianglePair& p) { return in_domain(p.t0) && in_domain(p.t1); });
   return with_scale_ends(rc::gen::weightedOneOf<TrianglePair>(
       {{7, families}, {1, rc::gen::exec([families] { return far_triangles(*families); })}}));
 }
@@ -612,7 +636,8 @@ rc::Gen<TrianglePair> triangle_pair() {
 namespace {
 
 bool fat(const Triangle& t) {
-  const double longest = std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
+  const double longest =
+      std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
   return 100 * t.normal().norm() >= longest;  // smallest height >= longest edge / 100
 }
 
@@ -636,27 +661,31 @@ bool in_interval_domain(const TrianglePair& p) {
 }
 
 rc::Gen<TrianglePair> crossing_triangle_pair() {
-  const rc::Gen<TrianglePair> families = rc::gen::suchThat(rc::gen::exec([] {
-    const Grid g = *grid(false);
-    const Triangle t0 = grid_triangle(g);
-    const Vec3 d1 = grid_direction(g), d2 = grid_direction(g);
-    if (*rc::gen::inRange(0, 3) == 0) {  // through a point inside t0
-      const Vec3 x = *point_in_triangle(t0);
-      return *rc::gen::element(TrianglePair{t0, {x + d1, x + d2, x - d1 - d2}}, TrianglePair{{x + d1, x + d2, x - d1 - d2}, t0});
-    }
-    // An edge of t1 through a point x of an edge of t0: both segments on the line of the
-    // planes end at x. Then t1 slides along that line by 2 to 16 times 1e-8 S (10 tol
-    // and more: outside the band where the check calls them ambiguous): two ends just
-    // apart, or just overlapping.
-    const int i = *rc::gen::inRange(0, 3);
-    const Vec3 x = eighths(t0[i], t0[(i + 1) % 3] - t0[i], *rc::gen::inRange(1, 8), Vec3::Zero(), 0);
-    Triangle t1{x + d1, x - (*rc::gen::inRange(1, 17) / 8.0) * d1, x + d2};
-    const Vec3 line = t0.normal().cross(t1.normal());
-    if (line.isZero()) return TrianglePair{t0, t1};  // rejected below
-    const double slide = *rc::gen::element(-1.0, 1.0) * *rc::gen::inRange(2, 17) * 1e-8 * scale_of(TrianglePair{t0, t1});
-    for (int k = 0; k < 3; ++k) t1[k] += slide * line.normalized();
-    return *rc::gen::element(TrianglePair{t0, t1}, TrianglePair{t1, t0});
-  }), in_interval_domain);
+  const rc::Gen<TrianglePair> families = rc::gen::suchThat(
+      rc::gen::exec([] {
+        const Grid g = *grid(false);
+        const Triangle t0 = grid_triangle(g);
+        const Vec3 d1 = grid_direction(g), d2 = grid_direction(g);
+        if (*rc::gen::inRange(0, 3) == 0) {  // through a point inside t0
+          const Vec3 x = *point_in_triangle(t0);
+          return *rc::gen::element(TrianglePair{t0, {x + d1, x + d2, x - d1 - d2}},
+                                   TrianglePair{{x + d1, x + d2, x - d1 - d2}, t0});
+        }
+        // An edge of t1 through a point x of an edge of t0: both segments on the line of the
+        // planes end at x. Then t1 slides along that line by 2 to 16 times 1e-8 S (10 tol
+        // and more: outside the band where the check calls them ambiguous): two ends just
+        // apart, or just overlapping.
+        const int i = *rc::gen::inRange(0, 3);
+        const Vec3 x = eighths(t0[i], t0[(i + 1) % 3] - t0[i], *rc::gen::inRange(1, 8), Vec3::Zero(), 0);
+        Triangle t1{x + d1, x - (*rc::gen::inRange(1, 17) / 8.0) * d1, x + d2};
+        const Vec3 line = t0.normal().cross(t1.normal());
+        if (line.isZero()) return TrianglePair{t0, t1};  // rejected below
+        const double slide =
+            *rc::gen::element(-1.0, 1.0) * *rc::gen::inRange(2, 17) * 1e-8 * scale_of(TrianglePair{t0, t1});
+        for (int k = 0; k < 3; ++k) t1[k] += slide * line.normalized();
+        return *rc::gen::element(TrianglePair{t0, t1}, TrianglePair{t1, t0});
+      }),
+      in_interval_domain);
   return with_scale_ends(families);  // not far from the origin: S/100 off the planes, S counting the offset
 }
 
@@ -664,9 +693,12 @@ rc::Gen<TrianglePair> exact_triangle_pair() {
   return rc::gen::exec([] {
     const Grid g = *grid(true);
     switch (*rc::gen::weightedElement<int>({{4, 0}, {3, 1}, {1, 2}})) {
-      case 0: return through_point(g);
-      case 1: return coplanar(g);
-      default: return zero_area(g);
+      case 0:
+        return through_point(g);
+      case 1:
+        return coplanar(g);
+      default:
+        return zero_area(g);
     }
   });
 }

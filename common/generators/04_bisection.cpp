@@ -78,7 +78,9 @@ double reach_of(const MovingBody& b) {
 }
 
 // Where the body's shape centre is at time t.
-Vec3 centre_at(const MovingBody& b, double t) { return pose_at(b.motion, t) * (b.is_box ? b.box.center : b.sphere.center); }
+Vec3 centre_at(const MovingBody& b, double t) {
+  return pose_at(b.motion, t) * (b.is_box ? b.box.center : b.sphere.center);
+}
 
 // A signed permutation matrix: a box turned by quarter turns, exactly.
 rc::Gen<Mat3> quarter_turns() {
@@ -93,9 +95,10 @@ rc::Gen<Mat3> quarter_turns() {
 }
 
 rc::Gen<Mat3> axes() {
-  return rc::gen::weightedOneOf<Mat3>({{2, rc::gen::just<Mat3>(Mat3::Identity())},
-                                       {2, quarter_turns()},
-                                       {5, rc::gen::map(rigid_transform(1.0), [](const RigidTransform& m) { return Mat3(m.linear()); })}});
+  return rc::gen::weightedOneOf<Mat3>(
+      {{2, rc::gen::just<Mat3>(Mat3::Identity())},
+       {2, quarter_turns()},
+       {5, rc::gen::map(rigid_transform(1.0), [](const RigidTransform& m) { return Mat3(m.linear()); })}});
 }
 
 // Sizes: quarters of the scale up to 8, now and then exactly zero.
@@ -235,8 +238,9 @@ struct RationalDirection {
 
 rc::Gen<RationalDirection> rational_direction() {
   return rc::gen::exec([] {
-    const auto [n, d] = *rc::gen::element(std::pair<Vec3, double>{Vec3(1, 0, 0), 1}, std::pair<Vec3, double>{Vec3(3, 4, 0), 5},
-                                          std::pair<Vec3, double>{Vec3(1, 2, 2), 3}, std::pair<Vec3, double>{Vec3(2, 3, 6), 7});
+    const auto [n, d] =
+        *rc::gen::element(std::pair<Vec3, double>{Vec3(1, 0, 0), 1}, std::pair<Vec3, double>{Vec3(3, 4, 0), 5},
+                          std::pair<Vec3, double>{Vec3(1, 2, 2), 3}, std::pair<Vec3, double>{Vec3(2, 3, 6), 7});
     int order[3] = {0, 1, 2};
     std::swap(order[0], order[*pick(0, 3)]);
     std::swap(order[1], order[*pick(1, 3)]);
@@ -312,14 +316,18 @@ rc::Gen<MovingPairCase> touching(bool exact) {
     Vec3 centre = pose_at(mb, tau) * touch.centre;
     // Nudged off: by a hair (random cases), or exactly one lattice step out (a near miss
     // a fuzzy comparison takes for a touch).
-    if (!exact) centre += *integer(4) * *tiny(20, 50) * s * touch.normal.normalized();
-    else if (*pick(0, 4) == 0) centre += s / 8 * touch.normal;
+    if (!exact)
+      centre += *integer(4) * *tiny(20, 50) * s * touch.normal.normalized();
+    else if (*pick(0, 4) == 0)
+      centre += s / 8 * touch.normal;
 
     // Relative velocity at tau: toward, away from, or along the surface.
     Vec3 v = *lattice_point(s, 8);
     const int how = *pick(0, 3);
-    if (how == 2) v = touch.normal.cross(v) / 8;  // along: perpendicular to the normal (whole numbers)
-    else if ((how == 0) == (v.dot(touch.normal) > 0)) v = -v;
+    if (how == 2)
+      v = touch.normal.cross(v) / 8;  // along: perpendicular to the normal (whole numbers)
+    else if ((how == 0) == (v.dot(touch.normal) > 0))
+      v = -v;
     if (how != 2 && v.dot(touch.normal) == 0) v -= how == 0 ? touch.normal : -touch.normal;
     const Vec3 g = *rc::gen::element(0, 0, 1) ? Vec3(*lattice_point(2 * s, 4)) : Vec3::Zero();
     const Vec3 u = mb.velocity + v;
@@ -362,7 +370,7 @@ rc::Gen<MovingPairCase> tunnelling() {
     // The sphere crosses the target's middle at t_c, tilted at most 1/8 off its normal,
     // moving `ratio` smallest sizes per search: far enough that both ends are clear.
     const double smallest = std::min(2 * r, thickness);
-    const double needed = 12 * (thickness / 2 + r) / smallest;  // keeps 1/6 of the path clear at either end
+    const double needed = 12 * (thickness / 2 + r) / smallest;           // keeps 1/6 of the path clear at either end
     const double ratio = std::max(needed, double(*pick(4, 401))) + 0.5;  // not a whole number of sizes
     const double t_c = c.times.t0 + span * *pick(2, 7) / 8.0;
     const Vec3 tilt = Vec3(*direction(1.0, 4)).normalized() / 8;
@@ -444,7 +452,8 @@ rc::Gen<SubstepRule> substep_rule(bool exact) {
     const double fraction = exact ? 0.0 : *pick(1, 1 << 20) / double(1 << 20);
     const int kind = *rc::gen::weightedElement<int>({{exact ? 4 : 1, 0}, {1, 1}, {1, 2}, {exact ? 0 : 4, 3}});
     if (kind == 0 && !exact)
-      return SubstepRule{size / step * (*pick(1, 2000) + *rc::gen::element(1.0, -1.0) * std::ldexp(1.0, -20)), step, size};
+      return SubstepRule{size / step * (*pick(1, 2000) + *rc::gen::element(1.0, -1.0) * std::ldexp(1.0, -20)), step,
+                         size};
     if (kind == 0) return SubstepRule{size / step * *pick(0, 2000), step, size};
     if (kind == 1) return SubstepRule{size / step * (*pick((1 << 20) - 2, (1 << 20) + 2) + fraction), step, size};
     if (kind == 2) return SubstepRule{*pick(0, 1000) * 1.0, step, 0.0};

@@ -93,8 +93,7 @@ Vec3 rectangle_point(const Grid& g, const Rectangle& r, bool inside) {
   return r.center + coordinate(r.half_u) * r.u + coordinate(r.half_v) * r.v;
 }
 
-template <class T>
-rc::Gen<T> far_away(rc::Gen<T> base, void (*move)(T&, const Vec3&), double (*size)(const T&)) {
+template <class T> rc::Gen<T> far_away(rc::Gen<T> base, void (*move)(T&, const Vec3&), double (*size)(const T&)) {
   return rc::gen::exec([base, move, size] {
     T x = *base;
     move(x, *lattice_point(std::max(1.0, size(x)) * 1024.0, 64));
@@ -115,10 +114,13 @@ rc::Gen<PointSegmentPair> point_segment_families(bool exact) {
     const Grid g = *grid(exact);
     const Segment s = segment(g);
     switch (*rc::gen::inRange(0, 4)) {
-      case 0: return PointSegmentPair{grid_point(g), s};                          // anywhere
-      case 1: return PointSegmentPair{along(g, s.a, s.b - s.a), s};               // on its line
-      case 2: return PointSegmentPair{s.a + fraction(g) * (s.b - s.a) + grid_direction(g), s};
-      default: {                                                                  // a hair off it
+      case 0:
+        return PointSegmentPair{grid_point(g), s};  // anywhere
+      case 1:
+        return PointSegmentPair{along(g, s.a, s.b - s.a), s};  // on its line
+      case 2:
+        return PointSegmentPair{s.a + fraction(g) * (s.b - s.a) + grid_direction(g), s};
+      default: {  // a hair off it
         if (exact) return PointSegmentPair{s.b, s};
         const Vec3 x = s.a + fraction(g) * (s.b - s.a);
         return PointSegmentPair{x + hair(largest({s.a, s.b})) * grid_direction(g) / g.s, s};
@@ -133,7 +135,8 @@ rc::Gen<SegmentPair> segment_pair_families(bool exact) {
     const Segment first = segment(g);
     const Vec3 d0 = first.b - first.a;
     switch (*rc::gen::weightedElement<int>({{2, 0}, {2, 1}, {2, 2}, {3, 3}, {2, 4}, {1, 5}, {exact ? 0 : 2, 6}})) {
-      case 0: return SegmentPair{first, segment(g)};
+      case 0:
+        return SegmentPair{first, segment(g)};
       case 6: {  // crossing (or a hair apart) at an angle of 2^-20 to 2^-27 inside both: only
                  // |d0 x d1|^2 keeps the lines' pair; a c - b^2 is then rounding noise (below
                  // about 2^-24, more than the tolerance)
@@ -172,10 +175,17 @@ rc::Gen<SegmentPair> segment_pair_families(bool exact) {
   });
 }
 
-void move_point_segment(PointSegmentPair& x, const Vec3& o) { x.p += o; x.segment.a += o; x.segment.b += o; }
+void move_point_segment(PointSegmentPair& x, const Vec3& o) {
+  x.p += o;
+  x.segment.a += o;
+  x.segment.b += o;
+}
 double size_point_segment(const PointSegmentPair& x) { return scale_of({x.p, x.segment.a, x.segment.b}); }
 void move_segment_pair(SegmentPair& x, const Vec3& o) {
-  x.first.a += o; x.first.b += o; x.second.a += o; x.second.b += o;
+  x.first.a += o;
+  x.first.b += o;
+  x.second.a += o;
+  x.second.b += o;
 }
 double size_segment_pair(const SegmentPair& x) { return scale_of({x.first.a, x.first.b, x.second.a, x.second.b}); }
 
@@ -188,10 +198,14 @@ rc::Gen<PointRectanglePair> point_rectangle_families(bool exact) {
     const Vec3 x = rectangle_point(g, r, *rc::gen::arbitrary<bool>());
     const Vec3 n = normal_of(r);
     switch (*rc::gen::inRange(0, 4)) {
-      case 0: return PointRectanglePair{grid_point(g), r};
-      case 1: return PointRectanglePair{x, r};  // in its plane
-      case 2: return PointRectanglePair{x + grid_length(g) * n, r};
-      default: return PointRectanglePair{exact ? x : Vec3(x + hair(largest({r.center})) * n), r};
+      case 0:
+        return PointRectanglePair{grid_point(g), r};
+      case 1:
+        return PointRectanglePair{x, r};  // in its plane
+      case 2:
+        return PointRectanglePair{x + grid_length(g) * n, r};
+      default:
+        return PointRectanglePair{exact ? x : Vec3(x + hair(largest({r.center})) * n), r};
     }
   });
 }
@@ -204,13 +218,15 @@ rc::Gen<SegmentRectanglePair> segment_rectangle_families(bool exact) {
     const Vec3 x = rectangle_point(g, r, *rc::gen::arbitrary<bool>());
     const Vec3 y = rectangle_point(g, r, *rc::gen::arbitrary<bool>());
     switch (*rc::gen::weightedElement<int>({{2, 0}, {3, 1}, {2, 2}, {2, 3}, {2, 4}, {1, 5}})) {
-      case 0: return SegmentRectanglePair{segment(g), r};
+      case 0:
+        return SegmentRectanglePair{segment(g), r};
       case 1: {  // through the plane at x (inside, on a side, or outside)
         const Vec3 d = grid_direction(g);
         return SegmentRectanglePair{{x + d, x - fraction(g) * d}, r};
       }
-      case 2: return SegmentRectanglePair{{x, y}, r};  // in the plane
-      case 3: {  // parallel to the plane, above it
+      case 2:
+        return SegmentRectanglePair{{x, y}, r};  // in the plane
+      case 3: {                                  // parallel to the plane, above it
         const Vec3 lift = grid_length(g) * n;
         return SegmentRectanglePair{{x + lift, y + lift}, r};
       }
@@ -218,7 +234,8 @@ rc::Gen<SegmentRectanglePair> segment_rectangle_families(bool exact) {
         const double h = exact ? 0.0 : hair(largest({r.center, x, y}));
         return SegmentRectanglePair{{x + h * n, y + grid_length(g) * n}, r};
       }
-      default: return SegmentRectanglePair{{x, x}, r};  // zero length
+      default:
+        return SegmentRectanglePair{{x, x}, r};  // zero length
     }
   });
 }
@@ -230,8 +247,9 @@ rc::Gen<RectanglePair> rectangle_pair_families(bool exact) {
     Rectangle second = rectangle(g);
     const Vec3 n = normal_of(first);
     switch (*rc::gen::weightedElement<int>({{2, 0}, {2, 1}, {2, 2}, {2, 3}})) {
-      case 0: break;  // anywhere
-      case 1:         // parallel: the same axes, stacked or side by side in one plane
+      case 0:
+        break;  // anywhere
+      case 1:   // parallel: the same axes, stacked or side by side in one plane
         second.u = first.u;
         second.v = first.v;
         second.center = rectangle_point(g, first, false) + *rc::gen::element(0.0, 0.0, 1.0) * grid_length(g) * n;
@@ -244,23 +262,31 @@ rc::Gen<RectanglePair> rectangle_pair_families(bool exact) {
       default:  // crossing it, or a hair above
         second.u = n;
         second.v = first.u;
-        second.center = rectangle_point(g, first, true) +
-                        (exact ? 0.0 : hair(largest({first.center}))) * n + *rc::gen::element(0.0, 1.0) * second.half_u * n;
+        second.center = rectangle_point(g, first, true) + (exact ? 0.0 : hair(largest({first.center}))) * n +
+                        *rc::gen::element(0.0, 1.0) * second.half_u * n;
         break;
     }
     return RectanglePair{first, second};
   });
 }
 
-void move_point_rectangle(PointRectanglePair& x, const Vec3& o) { x.p += o; x.rectangle.center += o; }
+void move_point_rectangle(PointRectanglePair& x, const Vec3& o) {
+  x.p += o;
+  x.rectangle.center += o;
+}
 double size_point_rectangle(const PointRectanglePair& x) { return scale_of({x.p, x.rectangle.center}); }
 void move_segment_rectangle(SegmentRectanglePair& x, const Vec3& o) {
-  x.segment.a += o; x.segment.b += o; x.rectangle.center += o;
+  x.segment.a += o;
+  x.segment.b += o;
+  x.rectangle.center += o;
 }
 double size_segment_rectangle(const SegmentRectanglePair& x) {
   return scale_of({x.segment.a, x.segment.b, x.rectangle.center});
 }
-void move_rectangle_pair(RectanglePair& x, const Vec3& o) { x.first.center += o; x.second.center += o; }
+void move_rectangle_pair(RectanglePair& x, const Vec3& o) {
+  x.first.center += o;
+  x.second.center += o;
+}
 double size_rectangle_pair(const RectanglePair& x) { return scale_of({x.first.center, x.second.center}); }
 
 // ---- Moving shapes --------------------------------------------------------------------
@@ -279,15 +305,19 @@ Vec3 velocity_for(const Grid& g, const Plane& plane, const Vec3& center) {
   const double side = plane.value(center) >= 0 ? 1.0 : -1.0;
   const double rate = plane.normal.dot(d);
   switch (*rc::gen::weightedElement<int>({{4, 0}, {1, 1}, {1, 2}, {1, 3}, {1, 4}})) {
-    case 0: return side * rate > 0 ? Vec3(-d) : d;  // toward
-    case 1: return side * rate < 0 ? Vec3(-d) : d;  // away
-    case 2: {                                          // along the plane
+    case 0:
+      return side * rate > 0 ? Vec3(-d) : d;  // toward
+    case 1:
+      return side * rate < 0 ? Vec3(-d) : d;  // away
+    case 2: {                                 // along the plane
       Vec3 along = plane.normal.cross(d);
       if (!g.exact) along /= std::max(1.0, plane.normal.cwiseAbs().maxCoeff());
       return along;
     }
-    case 3: return Vec3::Zero();
-    default: return d;
+    case 3:
+      return Vec3::Zero();
+    default:
+      return d;
   }
 }
 
@@ -305,9 +335,11 @@ rc::Gen<SpherePlaneMotion> sphere_plane_families(bool exact) {
     const double T = duration(g);
     const double side = *rc::gen::element(-1.0, 1.0);
     Vec3 center = grid_point(g);
-    const int family = *rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}});
+    const int family =
+        *rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}});
     switch (family) {
-      case 0: break;  // anywhere
+      case 0:
+        break;   // anywhere
       case 1: {  // touching at t = 0 exactly (exact lattice), or decisively near it, beside x
         Vec3 beside = plane.normal.cross(grid_direction(g));
         if (!exact) beside /= plane.normal.cwiseAbs().maxCoeff();
@@ -334,7 +366,7 @@ rc::Gen<SpherePlaneMotion> sphere_plane_families(bool exact) {
 // Pythagorean quadruples (a, b, c, n): a^2 + b^2 + c^2 = n^2, so that distances are exact.
 // The first `count` of them have n <= 9.
 Vec3 pythagorean(int& norm, int count = 10) {
-  static const int q[][4] = {{0, 3, 4, 5}, {1, 2, 2, 3}, {2, 3, 6, 7}, {1, 4, 8, 9}, {4, 4, 7, 9},
+  static const int q[][4] = {{0, 3, 4, 5},  {1, 2, 2, 3},  {2, 3, 6, 7},   {1, 4, 8, 9},    {4, 4, 7, 9},
                              {2, 6, 9, 11}, {6, 6, 7, 11}, {3, 4, 12, 13}, {2, 10, 11, 15}, {1, 12, 12, 17}};
   const int* pick = q[*rc::gen::inRange(0, count)];
   norm = pick[3];
@@ -387,11 +419,13 @@ rc::Gen<SphereSphereMotion> sphere_sphere_families(bool exact) {
         return place_near(g, dir * (k * g.s), -dir * (j * g.s / T), n * (k - j) * g.s, T);
       }
       case 3: {  // no relative motion
-        SphereSphereMotion m{{grid_point(g), grid_length(g)}, grid_direction(g), {grid_point(g), grid_length(g)}, Vec3::Zero(), T};
+        SphereSphereMotion m{
+            {grid_point(g), grid_length(g)}, grid_direction(g), {grid_point(g), grid_length(g)}, Vec3::Zero(), T};
         m.v1 = m.v0;
         return m;
       }
-      default: return exact ? *soon_spheres(true) : *grazing_spheres();
+      default:
+        return exact ? *soon_spheres(true) : *grazing_spheres();
     }
   });
 }
@@ -425,7 +459,7 @@ rc::Gen<SphereCapsuleMotion> sphere_capsule_families() {
     const Vec3 a = grid_point(g);
     const double L = (*rc::gen::inRange(1, 17) / 4.0) * g.s;
     const Segment axis{a, a + L * e0};
-    const double f = *rc::gen::inRange(1, 16) / 16.0;  // an axial fraction strictly inside
+    const double f = *rc::gen::inRange(1, 16) / 16.0;         // an axial fraction strictly inside
     const double D = (*rc::gen::inRange(1, 33) / 8.0) * g.s;  // a distance from the axis
     SphereCapsuleMotion m{{a, 0}, Vec3::Zero(), {axis, 0}, T};
     switch (*rc::gen::weightedElement<int>({{4, 0}, {2, 1}, {2, 2}, {2, 3}, {2, 4}, {1, 5}, {1, 6}})) {
@@ -575,7 +609,10 @@ void move_sphere_plane(SpherePlaneMotion& x, const Vec3& o) {
   x.plane.offset -= x.plane.normal.dot(o);
 }
 double size_sphere_plane(const SpherePlaneMotion& x) { return scale_of({x.sphere.center, x.velocity * x.duration}); }
-void move_sphere_sphere(SphereSphereMotion& x, const Vec3& o) { x.s0.center += o; x.s1.center += o; }
+void move_sphere_sphere(SphereSphereMotion& x, const Vec3& o) {
+  x.s0.center += o;
+  x.s1.center += o;
+}
 double size_sphere_sphere(const SphereSphereMotion& x) { return scale_of({x.s0.center, x.s1.center}); }
 void move_box_plane(BoxPlaneMotion& x, const Vec3& o) {
   x.box.center += o;
@@ -597,9 +634,11 @@ rc::Gen<BoxPlaneMotion> box_plane_families(bool exact) {
     for (int i = 0; i < 3; ++i) reach += box.half_extents[i] * std::abs(unit.dot(box.axes.col(i)));
     const double side = *rc::gen::element(-1.0, 1.0);
     const double size = box.half_extents.maxCoeff();
-    const int family = *rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}});
+    const int family =
+        *rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}});
     switch (family) {
-      case 0: break;
+      case 0:
+        break;
       case 1:  // resting on the plane at t = 0 exactly (exact lattice), or decisively near it
         box.center = x + side * reach * unit;
         break;
@@ -614,7 +653,8 @@ rc::Gen<BoxPlaneMotion> box_plane_families(bool exact) {
         break;
     }
     const Vec3 velocity = velocity_for(g, plane, box.center);
-    if (!exact && family != 0) box.center += side * decisive_hair(motion_scale(box.center, velocity * T, size, plane)) * unit;
+    if (!exact && family != 0)
+      box.center += side * decisive_hair(motion_scale(box.center, velocity * T, size, plane)) * unit;
     return BoxPlaneMotion{box, velocity, plane, T};
   });
 }
@@ -623,25 +663,68 @@ rc::Gen<BoxPlaneMotion> box_plane_families(bool exact) {
 // structure): the ends of the header's domain, S from about 1e-40 to 1e40.
 void times(Vec3& x, double k) { x *= k; }
 void times(double& x, double k) { x *= k; }
-void times(Segment& x, double k) { times(x.a, k); times(x.b, k); }
-void times(Rectangle& x, double k) { times(x.center, k); times(x.half_u, k); times(x.half_v, k); }
-void times(Sphere& x, double k) { times(x.center, k); times(x.radius, k); }
-void times(Plane& x, double k) { times(x.offset, k); }
-void times(Box& x, double k) { times(x.center, k); times(x.half_extents, k); }
-void times(PointSegmentPair& x, double k) { times(x.p, k); times(x.segment, k); }
-void times(SegmentPair& x, double k) { times(x.first, k); times(x.second, k); }
-void times(PointRectanglePair& x, double k) { times(x.p, k); times(x.rectangle, k); }
-void times(SegmentRectanglePair& x, double k) { times(x.segment, k); times(x.rectangle, k); }
-void times(RectanglePair& x, double k) { times(x.first, k); times(x.second, k); }
-void times(SpherePlaneMotion& x, double k) { times(x.sphere, k); times(x.velocity, k); times(x.plane, k); }
-void times(SphereSphereMotion& x, double k) { times(x.s0, k); times(x.s1, k); times(x.v0, k); times(x.v1, k); }
-void times(SphereCapsuleMotion& x, double k) {
-  times(x.sphere, k); times(x.velocity, k); times(x.capsule.axis, k); times(x.capsule.radius, k);
+void times(Segment& x, double k) {
+  times(x.a, k);
+  times(x.b, k);
 }
-void times(BoxPlaneMotion& x, double k) { times(x.box, k); times(x.velocity, k); times(x.plane, k); }
+void times(Rectangle& x, double k) {
+  times(x.center, k);
+  times(x.half_u, k);
+  times(x.half_v, k);
+}
+void times(Sphere& x, double k) {
+  times(x.center, k);
+  times(x.radius, k);
+}
+void times(Plane& x, double k) { times(x.offset, k); }
+void times(Box& x, double k) {
+  times(x.center, k);
+  times(x.half_extents, k);
+}
+void times(PointSegmentPair& x, double k) {
+  times(x.p, k);
+  times(x.segment, k);
+}
+void times(SegmentPair& x, double k) {
+  times(x.first, k);
+  times(x.second, k);
+}
+void times(PointRectanglePair& x, double k) {
+  times(x.p, k);
+  times(x.rectangle, k);
+}
+void times(SegmentRectanglePair& x, double k) {
+  times(x.segment, k);
+  times(x.rectangle, k);
+}
+void times(RectanglePair& x, double k) {
+  times(x.first, k);
+  times(x.second, k);
+}
+void times(SpherePlaneMotion& x, double k) {
+  times(x.sphere, k);
+  times(x.velocity, k);
+  times(x.plane, k);
+}
+void times(SphereSphereMotion& x, double k) {
+  times(x.s0, k);
+  times(x.s1, k);
+  times(x.v0, k);
+  times(x.v1, k);
+}
+void times(SphereCapsuleMotion& x, double k) {
+  times(x.sphere, k);
+  times(x.velocity, k);
+  times(x.capsule.axis, k);
+  times(x.capsule.radius, k);
+}
+void times(BoxPlaneMotion& x, double k) {
+  times(x.box, k);
+  times(x.velocity, k);
+  times(x.plane, k);
+}
 
-template <class T>
-rc::Gen<T> at_extreme_scale(rc::Gen<T> base) {
+template <class T> rc::Gen<T> at_extreme_scale(rc::Gen<T> base) {
   return rc::gen::exec([base] {
     T x = *base;
     times(x, std::ldexp(1.0, *rc::gen::element(-110, -100, 90, 100)));
@@ -652,8 +735,7 @@ rc::Gen<T> at_extreme_scale(rc::Gen<T> base) {
 // A plane's normal of extreme length, 2^j for j from -1000 to 900, the offset with it:
 // the same plane (when the offset stays a finite double), whose n . n overflows or
 // underflows unless scaled first.
-template <class T>
-rc::Gen<T> with_extreme_normal(rc::Gen<T> base) {
+template <class T> rc::Gen<T> with_extreme_normal(rc::Gen<T> base) {
   return rc::gen::exec([base] {
     T x = *base;
     const double k = std::ldexp(1.0, *rc::gen::element(-1000, -700, -540, 500, 520, 700, 900));
@@ -668,7 +750,8 @@ rc::Gen<T> with_extreme_normal(rc::Gen<T> base) {
 template <class T>
 rc::Gen<T> with_far(rc::Gen<T> families, bool exact, void (*move)(T&, const Vec3&), double (*size)(const T&)) {
   if (exact) return families;
-  return rc::gen::weightedOneOf<T>({{14, families}, {2, far_away(families, move, size)}, {1, at_extreme_scale(families)}});
+  return rc::gen::weightedOneOf<T>(
+      {{14, families}, {2, far_away(families, move, size)}, {1, at_extreme_scale(families)}});
 }
 
 }  // namespace

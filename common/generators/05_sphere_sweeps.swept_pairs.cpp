@@ -13,9 +13,13 @@ namespace labkit::lab05 {
 
 oracle::SquaredDistance core_distance(const SpherePair& p) { return oracle::squared_distance(p.a.center, p.b.center); }
 oracle::SquaredDistance core_distance(const SphereCapsule& p) { return oracle::squared_distance(p.a.center, p.b.axis); }
-oracle::SquaredDistance core_distance(const SphereLozenge& p) { return oracle::squared_distance(p.a.center, p.b.rectangle); }
+oracle::SquaredDistance core_distance(const SphereLozenge& p) {
+  return oracle::squared_distance(p.a.center, p.b.rectangle);
+}
 oracle::SquaredDistance core_distance(const CapsulePair& p) { return oracle::squared_distance(p.a.axis, p.b.axis); }
-oracle::SquaredDistance core_distance(const CapsuleLozenge& p) { return oracle::squared_distance(p.a.axis, p.b.rectangle); }
+oracle::SquaredDistance core_distance(const CapsuleLozenge& p) {
+  return oracle::squared_distance(p.a.axis, p.b.rectangle);
+}
 oracle::SquaredDistance core_distance(const LozengePair& p) {
   return oracle::squared_distance(p.a.rectangle, p.b.rectangle);
 }
@@ -49,8 +53,10 @@ double radius_total(double d, double size) {
       return d > hair && *rc::gen::arbitrary<bool>() ? d - hair : d + hair;
     }
     // Cores that meet (d = 0) with radii 0 touch exactly: step 7's; here they overlap.
-    case 2: return d > 0 ? d * *rc::gen::element(0.5, 0.875, 1.125, 2.0) : decisive_hair(size);
-    default: return *rc::gen::inRange(1, 9) / 4.0 * std::max(size, 1e-300);
+    case 2:
+      return d > 0 ? d * *rc::gen::element(0.5, 0.875, 1.125, 2.0) : decisive_hair(size);
+    default:
+      return *rc::gen::inRange(1, 9) / 4.0 * std::max(size, 1e-300);
   }
 }
 
@@ -115,8 +121,7 @@ Rectangle canonical_rectangle(const Canonical& c, double z) {
           c.frame.col(1) * *rc::gen::element(-1.0, 1.0), hu, hv};
 }
 
-template <class Pair>
-Pair with_radii(Pair p, double total) {
+template <class Pair> Pair with_radii(Pair p, double total) {
   const auto [r0, r1] = *split_radius(total);
   p.a.radius = r0;
   p.b.radius = r1;
@@ -125,7 +130,9 @@ Pair with_radii(Pair p, double total) {
 
 // The numbers of a shape's core (coordinates and half-sizes), for the exact families'
 // lattice unit and for the scale of the near-touching radii.
-void core_numbers(const Sphere& x, std::vector<double>& out) { out.insert(out.end(), x.center.data(), x.center.data() + 3); }
+void core_numbers(const Sphere& x, std::vector<double>& out) {
+  out.insert(out.end(), x.center.data(), x.center.data() + 3);
+}
 void core_numbers(const Capsule& x, std::vector<double>& out) {
   out.insert(out.end(), x.axis.a.data(), x.axis.a.data() + 3);
   out.insert(out.end(), x.axis.b.data(), x.axis.b.data() + 3);
@@ -198,42 +205,69 @@ CapsulePair parallel_touching() {
   return with_radii(p, x.n * s);
 }
 
-
 }  // namespace
 
 rc::Gen<SpherePair> sphere_pair(bool exact) {
   return pair_generator<SpherePair>(
-      point_segment(exact), exact, [](const PointSegmentPair& c) { return SpherePair{{c.p, 0}, {c.segment.b, 0}}; },
-      [](const Canonical& k) { return SpherePair{{canonical_point(k, 0), 0}, {canonical_point(k, k.h), 0}}; });
+      point_segment(exact), exact,
+      [](const PointSegmentPair& c) {
+    return SpherePair{{c.p, 0}, {c.segment.b, 0}};
+      },
+      [](const Canonical& k) {
+    return SpherePair{{canonical_point(k, 0), 0}, {canonical_point(k, k.h), 0}};
+  });
 }
 rc::Gen<SphereCapsule> sphere_capsule(bool exact) {
   return pair_generator<SphereCapsule>(
-      point_segment(exact), exact, [](const PointSegmentPair& c) { return SphereCapsule{{c.p, 0}, {c.segment, 0}}; },
-      [](const Canonical& k) { return SphereCapsule{{canonical_point(k, k.h), 0}, {canonical_segment(k, 0), 0}}; });
+      point_segment(exact), exact,
+      [](const PointSegmentPair& c) {
+    return SphereCapsule{{c.p, 0}, {c.segment, 0}};
+      },
+      [](const Canonical& k) {
+    return SphereCapsule{{canonical_point(k, k.h), 0}, {canonical_segment(k, 0), 0}};
+  });
 }
 rc::Gen<SphereLozenge> sphere_lozenge(bool exact) {
   return pair_generator<SphereLozenge>(
       point_rectangle(exact), exact,
-      [](const PointRectanglePair& c) { return SphereLozenge{{c.p, 0}, {c.rectangle, 0}}; },
-      [](const Canonical& k) { return SphereLozenge{{canonical_point(k, k.h), 0}, {canonical_rectangle(k, 0), 0}}; });
+      [](const PointRectanglePair& c) {
+    return SphereLozenge{{c.p, 0}, {c.rectangle, 0}};
+      },
+      [](const Canonical& k) {
+    return SphereLozenge{{canonical_point(k, k.h), 0}, {canonical_rectangle(k, 0), 0}};
+  });
 }
 rc::Gen<CapsulePair> capsule_pair(bool exact) {
   const rc::Gen<CapsulePair> families = pair_generator<CapsulePair>(
-      segment_pair(exact), exact, [](const SegmentPair& c) { return CapsulePair{{c.first, 0}, {c.second, 0}}; },
-      [](const Canonical& k) { return CapsulePair{{canonical_segment(k, 0), 0}, {canonical_segment(k, k.h), 0}}; });
+      segment_pair(exact), exact,
+      [](const SegmentPair& c) {
+    return CapsulePair{{c.first, 0}, {c.second, 0}};
+      },
+      [](const Canonical& k) {
+    return CapsulePair{{canonical_segment(k, 0), 0}, {canonical_segment(k, k.h), 0}};
+  });
   if (!exact) return families;
   return rc::gen::weightedOneOf<CapsulePair>({{4, families}, {1, rc::gen::exec(parallel_touching)}});
 }
 rc::Gen<CapsuleLozenge> capsule_lozenge(bool exact) {
   return pair_generator<CapsuleLozenge>(
       segment_rectangle(exact), exact,
-      [](const SegmentRectanglePair& c) { return CapsuleLozenge{{c.segment, 0}, {c.rectangle, 0}}; },
-      [](const Canonical& k) { return CapsuleLozenge{{canonical_segment(k, k.h), 0}, {canonical_rectangle(k, 0), 0}}; });
+      [](const SegmentRectanglePair& c) {
+    return CapsuleLozenge{{c.segment, 0}, {c.rectangle, 0}};
+      },
+      [](const Canonical& k) {
+    return CapsuleLozenge{{canonical_segment(k, k.h), 0}, {canonical_rectangle(k, 0), 0}};
+  });
 }
 rc::Gen<LozengePair> lozenge_pair(bool exact) {
   return pair_generator<LozengePair>(
-      rectangle_pair(exact), exact, [](const RectanglePair& c) { return LozengePair{{c.first, 0}, {c.second, 0}}; },
-      [](const Canonical& k) { return LozengePair{{canonical_rectangle(k, 0), 0}, {canonical_rectangle(k, k.h), 0}}; });
+      rectangle_pair(exact), exact,
+      [](const RectanglePair& c) {
+    return LozengePair{{c.first, 0}, {c.second, 0}};
+      },
+      [](const Canonical& k) {
+    return LozengePair{{canonical_rectangle(k, 0), 0}, {canonical_rectangle(k, k.h), 0}};
+  });
 }
 
 }  // namespace labkit::gen

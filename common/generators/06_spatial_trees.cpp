@@ -107,7 +107,8 @@ rc::Gen<lab06::SweepCase> exact_sweep_case() {
     const int frames = *rc::gen::inRange(2, 6);
     for (int k = 1; k < frames; ++k) {
       std::vector<Sphere> next = c.frames.back();
-      for (Sphere& b : next) b.center.x() += unit * *rc::gen::inRange(-1, 2), b.center.y() += unit * *rc::gen::inRange(-1, 2);
+      for (Sphere& b : next)
+        b.center.x() += unit * *rc::gen::inRange(-1, 2), b.center.y() += unit * *rc::gen::inRange(-1, 2);
       c.frames.push_back(next);
     }
     return c;

@@ -127,7 +127,8 @@ rc::Gen<MotionCase> motion_case() {
     p.position = *point(s);
     p.velocity = *point(s);
     p.previous = p.position - c.dt * p.velocity + *lattice_point(s / 64, 2);
-    p.mass = *rc::gen::weightedOneOf<double>({{3, rc::gen::just(1.0)}, {2, dyadic(1, 64, 3)}, {1, rc::gen::element(1e-3, 1e3)}});
+    p.mass = *rc::gen::weightedOneOf<double>(
+        {{3, rc::gen::just(1.0)}, {2, dyadic(1, 64, 3)}, {1, rc::gen::element(1e-3, 1e3)}});
     p.age = *dyadic(0, 16, 3);
     p.lifetime = p.age + 1;
     c.forces.gravity = *rc::gen::oneOf(rc::gen::just(Vec3(0, 0, -9.81)), lattice_point(s, 10));
@@ -344,7 +345,6 @@ rc::Gen<SegmentTrianglePair> sheet_case() {
   });
 }
 
-
 rc::Gen<SegmentScene> plane_case() {
   return rc::gen::exec([] {
     const StepSurfaces c = *rc::gen::suchThat(step_surfaces(), [](const StepSurfaces& x) { return !x.planes.empty(); });
@@ -368,11 +368,12 @@ rc::Gen<ImpulseCase> impulse_case() {
   return rc::gen::exec([] {
     const double s = *particle_scale();
     ImpulseCase c;
-    c.normal = *rc::gen::weightedOneOf<Vec3>({{1, rc::gen::element(Vec3(Vec3::UnitZ()), Vec3(-Vec3::UnitX()))}, {3, unit_vector()}});
+    c.normal = *rc::gen::weightedOneOf<Vec3>(
+        {{1, rc::gen::element(Vec3(Vec3::UnitZ()), Vec3(-Vec3::UnitX()))}, {3, unit_vector()}});
     c.velocity = *point(s);
     const int family = *rc::gen::inRange(0, 5);
     if (family == 1) c.velocity -= c.velocity.dot(c.normal) * c.normal;  // (nearly) tangential: v_close about 0
-    if (family == 2) c.velocity = -*dyadic(1, 64, 2) * s * c.normal;    // straight in: no sliding
+    if (family == 2) c.velocity = -*dyadic(1, 64, 2) * s * c.normal;     // straight in: no sliding
     if (family == 3) c.velocity -= 2 * std::abs(c.velocity.dot(c.normal)) * c.normal;  // closing
     c.object_velocity = *rc::gen::weightedOneOf<Vec3>({{2, rc::gen::just(Vec3(Vec3::Zero()))}, {1, point(s)}});
     c.mass = *rc::gen::weightedOneOf<double>({{2, rc::gen::just(1.0)}, {2, dyadic(1, 64, 3)}});
@@ -412,7 +413,8 @@ rc::Gen<CollideCase> collide_case(bool decided) {
     out.step = c.step;
     out.scene = scene_of(c);
     out.scene.material = *material();
-    out.scene.bounce_cap = *rc::gen::weightedOneOf<int>({{3, rc::gen::inRange(0, 5)}, {1, rc::gen::just(kMaxBounceCap)}});
+    out.scene.bounce_cap =
+        *rc::gen::weightedOneOf<int>({{3, rc::gen::inRange(0, 5)}, {1, rc::gen::just(kMaxBounceCap)}});
     out.dt = *time_step();
     out.mass = *rc::gen::weightedOneOf<double>({{3, rc::gen::just(1.0)}, {1, dyadic(1, 64, 3)}});
     // The integrator's velocity: the step's own, or one that differs from it (Euler's new
@@ -420,7 +422,8 @@ rc::Gen<CollideCase> collide_case(bool decided) {
     const Vec3 along = (c.step.b - c.step.a) / out.dt;
     const double size = std::max(largest(along), 1e-300);
     out.velocity = *rc::gen::weightedOneOf<Vec3>(
-        {{3, rc::gen::just(along)}, {1, rc::gen::map(lattice_point(size / 4, 4), [along](const Vec3& d) { return Vec3(along + d); })}});
+        {{3, rc::gen::just(along)},
+         {1, rc::gen::map(lattice_point(size / 4, 4), [along](const Vec3& d) { return Vec3(along + d); })}});
     // A moving scene: the drawn step is the relative one, a' -> b, as the scene sees it.
     // The world's a is a' - u dt, chosen so that a + u dt (computed as the header says)
     // gives a' back exactly: the relative step keeps the drawn step's exact degeneracies
@@ -428,7 +431,8 @@ rc::Gen<CollideCase> collide_case(bool decided) {
     // particle both move (u dt up to twice the step, on a grid of 2^-24 of the scale), or a
     // particle at rest (a = b) is struck by the scene (u dt = a' - b). A draw whose
     // rounding would move a' stays still.
-    const int motion = *rc::gen::weightedOneOf<int>({{4, rc::gen::just(0)}, {2, rc::gen::just(1)}, {1, rc::gen::just(2)}});
+    const int motion =
+        *rc::gen::weightedOneOf<int>({{4, rc::gen::just(0)}, {2, rc::gen::just(1)}, {1, rc::gen::just(2)}});
     const Vec3 relative = out.velocity, start = c.step.a;
     const auto carry = [&](const Vec3& world_a, const Vec3& u) {
       if (world_a + u * out.dt != start) return false;  // a' would not come back exactly
@@ -457,9 +461,8 @@ rc::Gen<CollideCase> collide_case(bool decided) {
 // them; the surface is met from the side the step starts on, as a particle would.
 rc::Gen<SettleCase> settle_case() {
   return rc::gen::exec([] {
-    const StepSurfaces c = *rc::gen::suchThat(valid_steps(), [](const StepSurfaces& x) {
-      return !x.planes.empty() || x.mesh.size() > 0;
-    });
+    const StepSurfaces c =
+        *rc::gen::suchThat(valid_steps(), [](const StepSurfaces& x) { return !x.planes.empty() || x.mesh.size() > 0; });
     SettleCase out;
     out.scene = scene_of(c);
     SurfaceHit& last = out.last;

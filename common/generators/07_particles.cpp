@@ -29,8 +29,8 @@ Plane through(const Vec3& p, const Vec3& n) { return Plane{n, -n.dot(p)}; }
 // Two lattice vectors lying in the plane with normal n (exactly: n . u = 0).
 std::array<Vec3, 2> in_plane(const Vec3& n) {
   const Vec3 axis = std::abs(n.x()) <= std::abs(n.y()) && std::abs(n.x()) <= std::abs(n.z()) ? Vec3::UnitX()
-                    : std::abs(n.y()) <= std::abs(n.z())                                   ? Vec3::UnitY()
-                                                                                            : Vec3::UnitZ();
+                    : std::abs(n.y()) <= std::abs(n.z())                                     ? Vec3::UnitY()
+                                                                                             : Vec3::UnitZ();
   const Vec3 u = n.cross(axis);
   return {u, n.cross(u)};
 }
@@ -51,24 +51,31 @@ std::vector<Plane> plane_set(const Grid& g, const Vec3& anchor) {
     if (n.dot(inside) == 0) n += inside;
     return n.dot(inside) < 0 ? Vec3(-n) : n;
   };
-  const auto normal = [] { return *rc::gen::weightedOneOf<Vec3>({{1, rc::gen::just(Vec3(Vec3::UnitZ()))}, {3, integer_normal(3)}}); };
+  const auto normal = [] {
+    return *rc::gen::weightedOneOf<Vec3>({{1, rc::gen::just(Vec3(Vec3::UnitZ()))}, {3, integer_normal(3)}});
+  };
   std::vector<Plane> planes;
   switch (kind) {
-    case 0: break;
-    case 1: planes.push_back(through(anchor, normal())); break;
+    case 0:
+      break;
+    case 1:
+      planes.push_back(through(anchor, normal()));
+      break;
     case 2:
     case 3:
       for (int i = 0; i < kind; ++i) {
         Vec3 n = toward_inside(normal());
         // No two parallel: through one point they would be one plane, or leave no room.
         for (int k = 0; k < 3; ++k)
-          if (std::any_of(planes.begin(), planes.end(), [&](const Plane& p) { return p.normal.cross(n) == Vec3::Zero(); }))
+          if (std::any_of(planes.begin(), planes.end(),
+                          [&](const Plane& p) { return p.normal.cross(n) == Vec3::Zero(); }))
             n = toward_inside(n + Vec3::Unit(k));
         planes.push_back(through(anchor, n));
       }
       break;
     case 4:
-      for (int k = 0; k < 3; ++k) planes.push_back(through(anchor, inside[k] < 0 ? Vec3(-Vec3::Unit(k)) : Vec3(Vec3::Unit(k))));
+      for (int k = 0; k < 3; ++k)
+        planes.push_back(through(anchor, inside[k] < 0 ? Vec3(-Vec3::Unit(k)) : Vec3(Vec3::Unit(k))));
       break;
     default: {
       const Vec3 n = normal();
@@ -125,10 +132,14 @@ Segment through_point(const Grid& g, const Vec3& x, const Vec3& normal) {
   const Vec3 d = *grid_direction(g);
   const int k = *rc::gen::inRange(1, 17);
   switch (*rc::gen::inRange(0, g.exact ? 5 : 7)) {
-    case 0: return {x + d, x - (k / 8.0) * d};
-    case 1: return {x, x + d};
-    case 2: return {x, x - d};
-    case 3: return {x + d, x};
+    case 0:
+      return {x + d, x - (k / 8.0) * d};
+    case 1:
+      return {x, x + d};
+    case 2:
+      return {x, x - d};
+    case 3:
+      return {x + d, x};
     case 4: {
       auto [u, v] = in_plane(normal);
       // A triangle's normal (large): only roughly in its plane, but a is on it. Exact cases
@@ -146,7 +157,8 @@ Segment through_point(const Grid& g, const Vec3& x, const Vec3& normal) {
       const Vec3 b = eighths(x, unit_of(g) * u.normalized(), *rc::gen::inRange(1, 17), Vec3::Zero(), 0);
       return {x + *integer(4) * *tiny(20, 50) * lift, b + *integer(4) * *tiny(20, 50) * lift};
     }
-    default: return {x, x};
+    default:
+      return {x, x};
   }
 }
 
@@ -162,7 +174,8 @@ StepSurfaces surfaces(bool exact) {
   const bool aim_at_mesh = !c.mesh.triangles.empty() && (c.planes.empty() || *rc::gen::inRange(0, 2) == 0);
   if (aim_at_mesh) {
     const Triangle t = c.mesh.triangle(std::size_t(*rc::gen::inRange(0, int(c.mesh.size()))));
-    const Vec3 x = *rc::gen::weightedOneOf<Vec3>({{3, point_in_triangle(t)}, {1, rc::gen::just(on_triangle_plane(t, false))}});
+    const Vec3 x =
+        *rc::gen::weightedOneOf<Vec3>({{3, point_in_triangle(t)}, {1, rc::gen::just(on_triangle_plane(t, false))}});
     c.step = through_point(g, x, t.normal() == Vec3::Zero() ? Vec3(Vec3::UnitZ()) : t.normal());
   } else if (!c.planes.empty() && *rc::gen::inRange(0, 5) != 0) {
     const Vec3 x = on_planes(g, c.planes, anchor);
@@ -180,9 +193,10 @@ StepSurfaces surfaces(bool exact) {
 StepSurfaces exact_surfaces() {
   if (*rc::gen::inRange(0, 4) != 0) return surfaces(true);
   const Grid g = *grid(true);
-  const Triangle t = *rc::gen::suchThat(
-      rc::gen::exec([g] { return Triangle{*grid_point(g), *grid_point(g), *grid_point(g)}; }),
-      [](const Triangle& tri) { return tri.normal() != Vec3::Zero(); });
+  const Triangle t = *rc::gen::suchThat(rc::gen::exec([g] {
+                                          return Triangle{*grid_point(g), *grid_point(g), *grid_point(g)};
+                                        }),
+                                        [](const Triangle& tri) { return tri.normal() != Vec3::Zero(); });
   StepSurfaces c;
   c.mesh.vertices = {t.v0, t.v1, t.v2};
   c.mesh.triangles = {{0, 1, 2}};
@@ -207,7 +221,8 @@ StepSurfaces far_away(StepSurfaces c) {
 
 rc::Gen<double> particle_scale() {
   return rc::gen::weightedOneOf<double>(
-      {{9, scale()}, {1, rc::gen::element(std::ldexp(1.0, -100), std::ldexp(1.0, -60), std::ldexp(1.0, 60), std::ldexp(1.0, 100))}});
+      {{9, scale()},
+       {1, rc::gen::element(std::ldexp(1.0, -100), std::ldexp(1.0, -60), std::ldexp(1.0, 60), std::ldexp(1.0, 100))}});
 }
 
 rc::Gen<Plane> plane_through(const Vec3& point, int magnitude) {
@@ -241,9 +256,9 @@ bool cracks_in_domain(const StepSurfaces& c) {
 
 rc::Gen<StepSurfaces> step_surfaces() {
   const rc::Gen<StepSurfaces> near = rc::gen::exec([] { return surfaces(false); });
-  return rc::gen::suchThat(rc::gen::weightedOneOf<StepSurfaces>(
-                               {{7, near}, {1, rc::gen::exec([near] { return far_away(*near); })}}),
-                           cracks_in_domain);
+  return rc::gen::suchThat(
+      rc::gen::weightedOneOf<StepSurfaces>({{7, near}, {1, rc::gen::exec([near] { return far_away(*near); })}}),
+      cracks_in_domain);
 }
 
 rc::Gen<StepSurfaces> exact_step_surfaces() {

@@ -20,7 +20,9 @@ struct Grid {
 rc::Gen<Vec3> grid_point(Grid g) { return g.exact ? lattice_point(8 * g.s, 16) : point(g.s); }
 rc::Gen<Vec3> grid_direction(Grid g) { return direction(g.exact ? 8 * g.s : g.s, 8); }
 rc::Gen<Triangle> grid_triangle(Grid g) {
-  return rc::gen::suchThat(rc::gen::exec([g] { return Triangle{*grid_point(g), *grid_point(g), *grid_point(g)}; }),
+  return rc::gen::suchThat(rc::gen::exec([g] {
+                             return Triangle{*grid_point(g), *grid_point(g), *grid_point(g)};
+                           }),
                            [](const Triangle& t) { return t.normal() != Vec3::Zero(); });
 }
 rc::Gen<Grid> grid(bool exact) {
@@ -65,9 +67,11 @@ rc::Gen<SegmentTrianglePair> crossing(bool exact) {
 rc::Gen<SegmentTrianglePair> small_crossing() {
   return rc::gen::exec([] {
     const double s = *scale();
-    const Triangle t = *rc::gen::suchThat(
-        rc::gen::exec([s] { return Triangle{*lattice_point(s, 1), *lattice_point(s, 1), *lattice_point(s, 1)}; }),
-        [](const Triangle& tri) { return tri.normal() != Vec3::Zero(); });
+    const Triangle t =
+        *rc::gen::suchThat(rc::gen::exec([s] {
+                             return Triangle{*lattice_point(s, 1), *lattice_point(s, 1), *lattice_point(s, 1)};
+                           }),
+                           [](const Triangle& tri) { return tri.normal() != Vec3::Zero(); });
     const Vec3 x = *point_in_triangle(t);
     const Vec3 d = *direction(s, 2);
     return SegmentTrianglePair{{x + d, x - d}, t};
@@ -228,8 +232,11 @@ rc::Gen<int> integer(int magnitude) {
 }
 
 rc::Gen<double> scale() {
-  return rc::gen::weightedElement<double>(
-      {{12, 1.0}, {2, std::ldexp(1.0, -10)}, {2, std::ldexp(1.0, 10)}, {1, std::ldexp(1.0, -20)}, {1, std::ldexp(1.0, 20)}});
+  return rc::gen::weightedElement<double>({{12, 1.0},
+                                           {2, std::ldexp(1.0, -10)},
+                                           {2, std::ldexp(1.0, 10)},
+                                           {1, std::ldexp(1.0, -20)},
+                                           {1, std::ldexp(1.0, 20)}});
 }
 
 rc::Gen<double> tiny(int kmin, int kmax) {
@@ -238,7 +245,8 @@ rc::Gen<double> tiny(int kmin, int kmax) {
 }
 
 rc::Gen<Vec3> lattice_point(double s, int magnitude) {
-  return rc::gen::exec([s, magnitude]() -> Vec3 { return Vec3(*integer(magnitude), *integer(magnitude), *integer(magnitude)) * s; });
+  return rc::gen::exec(
+      [s, magnitude]() -> Vec3 { return Vec3(*integer(magnitude), *integer(magnitude), *integer(magnitude)) * s; });
 }
 
 rc::Gen<Vec3> point(double s) {
@@ -264,7 +272,9 @@ rc::Gen<Vec3> point_in_triangle(const Triangle& t) {
 }
 
 rc::Gen<Triangle> triangle(double s) {
-  return rc::gen::suchThat(rc::gen::exec([s] { return Triangle{*point(s), *point(s), *point(s)}; }),
+  return rc::gen::suchThat(rc::gen::exec([s] {
+                             return Triangle{*point(s), *point(s), *point(s)};
+                           }),
                            [](const Triangle& t) { return t.normal() != Vec3::Zero(); });
 }
 

@@ -24,7 +24,9 @@ class Builder {
     if (added) mesh_.vertices.push_back(p);
     return it->second;
   }
-  void triangle(const Vec3& a, const Vec3& b, const Vec3& c) { mesh_.triangles.push_back({vertex(a), vertex(b), vertex(c)}); }
+  void triangle(const Vec3& a, const Vec3& b, const Vec3& c) {
+    mesh_.triangles.push_back({vertex(a), vertex(b), vertex(c)});
+  }
   Mesh take() { return std::move(mesh_); }
 
  private:
@@ -64,7 +66,8 @@ Mesh sphere_mesh(int triangles, const Vec3& center, double radius) {
   for (int k = 1; k < stacks; ++k)
     for (int j = 0; j < slices; ++j) {
       const double theta = kPi * k / stacks, phi = 2 * kPi * j / slices;
-      m.vertices.push_back(center + radius * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
+      m.vertices.push_back(
+          center + radius * Vec3(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)));
     }
   m.vertices.push_back(center - radius * Vec3::UnitZ());
   const int south = int(m.vertices.size()) - 1;
@@ -84,7 +87,7 @@ Mesh sphere_mesh(int triangles, const Vec3& center, double radius) {
 // dp/dalpha x dp/dbeta points out of the tube, so each quad runs alpha first.
 Mesh torus_mesh(int triangles, const Vec3& center, double major, double minor) {
   const int around = std::max(3, int(std::lround(std::sqrt(triangles / 4.0))));  // tube cross-sections
-  const int ring = 2 * around;                                                    // around the main ring
+  const int ring = 2 * around;                                                   // around the main ring
   Mesh m;
   for (int i = 0; i < ring; ++i)
     for (int j = 0; j < around; ++j) {
@@ -118,7 +121,8 @@ Mesh terrain_mesh(int triangles, std::uint64_t seed) {
   });
 }
 
-Mesh height_field(int n, double x0, double x1, double y0, double y1, const std::function<double(double, double)>& height) {
+Mesh height_field(int n, double x0, double x1, double y0, double y1,
+                  const std::function<double(double, double)>& height) {
   Mesh m;
   for (int i = 0; i <= n; ++i)
     for (int j = 0; j <= n; ++j) {
@@ -156,20 +160,28 @@ Mesh soup_mesh(int triangles, std::uint64_t seed) {
 
 const char* name_of(MeshKind kind) {
   switch (kind) {
-    case MeshKind::sphere: return "sphere";
-    case MeshKind::torus: return "torus";
-    case MeshKind::terrain: return "terrain";
-    case MeshKind::soup: return "soup";
+    case MeshKind::sphere:
+      return "sphere";
+    case MeshKind::torus:
+      return "torus";
+    case MeshKind::terrain:
+      return "terrain";
+    case MeshKind::soup:
+      return "soup";
   }
   return "?";
 }
 
 Mesh mesh_of_kind(MeshKind kind, int triangles, std::uint64_t seed) {
   switch (kind) {
-    case MeshKind::sphere: return sphere_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.5);
-    case MeshKind::torus: return torus_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.35, 0.12);
-    case MeshKind::terrain: return terrain_mesh(triangles, seed);
-    case MeshKind::soup: return soup_mesh(triangles, seed);
+    case MeshKind::sphere:
+      return sphere_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.5);
+    case MeshKind::torus:
+      return torus_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.35, 0.12);
+    case MeshKind::terrain:
+      return terrain_mesh(triangles, seed);
+    case MeshKind::soup:
+      return soup_mesh(triangles, seed);
   }
   return {};
 }
@@ -309,7 +321,9 @@ double size_of(const Mesh& m) { return std::max(scale_of(m), 1e-300); }
 
 // Lab 06's domain reaches from S = 1e-50 to S = 1e50: the same shape moved to either
 // end by a power of two (exact), so that only the scale changes.
-double to_range_end(double s, bool huge) { return std::ldexp(1.0, (huge ? 165 : -166) - std::ilogb(std::max(s, 1e-300))); }
+double to_range_end(double s, bool huge) {
+  return std::ldexp(1.0, (huge ? 165 : -166) - std::ilogb(std::max(s, 1e-300)));
+}
 
 rc::Gen<Mesh> at_range_ends(const rc::Gen<Mesh>& g) {
   return rc::gen::exec([g] {
@@ -362,7 +376,8 @@ Aabb bounds_of(const Mesh& m) {
 double unit_of(const Mesh& m) {
   const Aabb b = bounds_of(m);
   const double extent = (b.max - b.min).maxCoeff();
-  return extent > 0 ? std::ldexp(1.0, std::ilogb(extent) - 3) : std::max(std::ldexp(1.0, std::ilogb(size_of(m)) - 3), 1e-300);
+  return extent > 0 ? std::ldexp(1.0, std::ilogb(extent) - 3)
+                    : std::max(std::ldexp(1.0, std::ilogb(size_of(m)) - 3), 1e-300);
 }
 
 // The step of a lattice mesh: the largest power of two that divides all its coordinates,
@@ -397,8 +412,11 @@ rc::Gen<Triangle> face_of(const Mesh& m) {
 }  // namespace
 
 rc::Gen<Mesh> closed_mesh() {
-  const rc::Gen<Mesh> solids = rc::gen::weightedOneOf<Mesh>(
-      {{2, lattice_box()}, {2, lattice_octahedron()}, {3, lattice_voxels()}, {2, coarse_sphere()}, {2, coarse_torus()}});
+  const rc::Gen<Mesh> solids = rc::gen::weightedOneOf<Mesh>({{2, lattice_box()},
+                                                             {2, lattice_octahedron()},
+                                                             {3, lattice_voxels()},
+                                                             {2, coarse_sphere()},
+                                                             {2, coarse_torus()}});
   return rc::gen::weightedOneOf<Mesh>({{9, solids}, {1, at_range_ends(solids)}});
 }
 
@@ -407,8 +425,11 @@ rc::Gen<Mesh> exact_closed_mesh() {
 }
 
 rc::Gen<Mesh> any_mesh() {
-  const rc::Gen<Mesh> any = rc::gen::weightedOneOf<Mesh>(
-      {{4, rc::gen::exec([] { return *mesh(*scale()); })}, {3, closed_mesh()}, {2, flat_terrain()}, {1, pile()}, {1, needles()}});
+  const rc::Gen<Mesh> any = rc::gen::weightedOneOf<Mesh>({{4, rc::gen::exec([] { return *mesh(*scale()); })},
+                                                          {3, closed_mesh()},
+                                                          {2, flat_terrain()},
+                                                          {1, pile()},
+                                                          {1, needles()}});
   return rc::gen::weightedOneOf<Mesh>({{9, any}, {1, at_range_ends(any)}});
 }
 
@@ -429,7 +450,8 @@ rc::Gen<Vec3> point_near(const Mesh& m, bool exact) {
     const Vec3 margin = 0.25 * (b.max - b.min);
     Vec3 p;
     for (int i = 0; i < 3; ++i)
-      p[i] = b.min[i] - margin[i] + (b.max[i] - b.min[i] + 2 * margin[i]) * *rc::gen::inRange(0, 1 << 20) / double(1 << 20);
+      p[i] = b.min[i] - margin[i] +
+             (b.max[i] - b.min[i] + 2 * margin[i]) * *rc::gen::inRange(0, 1 << 20) / double(1 << 20);
     return p;
   });
   // A point of a face (often on an edge or a vertex) moved off it along its normal by a
@@ -463,7 +485,8 @@ rc::Gen<Segment> segment_near(const Mesh& m) {
     const Vec3 p = *point_in_triangle(t);
     const Vec3 x = p + *tiny(1, 12) * (centroid - p);
     Vec3 d = *direction(unit);
-    if (*rc::gen::inRange(0, 4) == 0) d = t[*rc::gen::inRange(0, 3)] - x + *rc::gen::element(1, -1, 2, -2) * unit * t.normal().cwiseSign();
+    if (*rc::gen::inRange(0, 4) == 0)
+      d = t[*rc::gen::inRange(0, 3)] - x + *rc::gen::element(1, -1, 2, -2) * unit * t.normal().cwiseSign();
     if (d == Vec3::Zero()) d = unit * Vec3::UnitX();
     const int k = *rc::gen::inRange(1, 17);
     return Segment{x + d, x - (k / 8.0) * d};
@@ -503,9 +526,12 @@ rc::Gen<Segment> exact_segment_near(const Mesh& m) {
     if (kind == 2) d[(major + 2) % 3] = step * *integer(int(std::abs(d[major]) / step));
     // Both ends, one end or neither on the anchor.
     switch (*rc::gen::inRange(0, 3)) {
-      case 0: return Segment{x - d, x + d};
-      case 1: return Segment{x, x + d};
-      default: return Segment{x - d, x};
+      case 0:
+        return Segment{x - d, x + d};
+      case 1:
+        return Segment{x, x + d};
+      default:
+        return Segment{x - d, x};
     }
   });
 }
@@ -552,7 +578,8 @@ void make_decisive(std::vector<Sphere>& spheres) {
     for (int attempt = 0; attempt < 16; ++attempt) {
       bool close = false;
       for (std::size_t j = 0; j < i && !close; ++j)
-        close = std::abs((spheres[i].center - spheres[j].center).norm() - (spheres[i].radius + spheres[j].radius)) <= band;
+        close =
+            std::abs((spheres[i].center - spheres[j].center).norm() - (spheres[i].radius + spheres[j].radius)) <= band;
       if (!close) break;
       spheres[i].radius += shrink ? -step : step;
     }
@@ -596,7 +623,8 @@ rc::Gen<std::vector<Sphere>> sphere_set() {
         break;
       case 5: {  // one huge sphere among small ones
         for (int i = 0; i < n; ++i) out.push_back({*point(s * 4), s * *rc::gen::inRange(0, 1 << 20) / double(1 << 20)});
-        out.insert(out.begin() + *rc::gen::inRange(0, int(out.size()) + 1), Sphere{*point(s), s * *rc::gen::inRange(8, 40)});
+        out.insert(out.begin() + *rc::gen::inRange(0, int(out.size()) + 1),
+                   Sphere{*point(s), s * *rc::gen::inRange(8, 40)});
         break;
       }
       default:  // lattice spheres: touching and exactly tangent pairs happen often

@@ -36,7 +36,8 @@ Mesh terrain_mesh(int triangles, std::uint64_t seed);
 // The height field z = height(x, y) over [x0, x1] x [y0, y1] on an n x n grid of squares,
 // two triangles each (2 n^2), normals up; vertex (i, j) is number i (n + 1) + j, at
 // x = x0 + (x1 - x0) i / n, y = y0 + (y1 - y0) j / n. Every terrain here is one.
-Mesh height_field(int n, double x0, double x1, double y0, double y1, const std::function<double(double, double)>& height);
+Mesh height_field(int n, double x0, double x1, double y0, double y1,
+                  const std::function<double(double, double)>& height);
 // Adds the square [0, side]^2 at height z, as two triangles with normals up (+z).
 void add_square(Mesh& mesh, double side, double z);
 // `triangles` small triangles at random places in [0, 1]^3, edges about 2 / triangles^(1/3).

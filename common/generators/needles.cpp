@@ -13,7 +13,9 @@ double relative(int kmin, int kmax) { return std::ldexp(1.0, -*rc::gen::inRange(
 
 double sign() { return *rc::gen::element(-1.0, 1.0); }
 
-Vec3 nonzero(double s) { return *rc::gen::suchThat(point(s), [](const Vec3& v) { return v != Vec3::Zero(); }); }
+Vec3 nonzero(double s) {
+  return *rc::gen::suchThat(point(s), [](const Vec3& v) { return v != Vec3::Zero(); });
+}
 
 double size_of(const Triangle& t) {
   return std::max({(t.v1 - t.v0).norm(), (t.v2 - t.v1).norm(), (t.v0 - t.v2).norm()});
@@ -121,17 +123,18 @@ rc::Gen<SegmentTrianglePair> far_away(rc::Gen<SegmentTrianglePair> base) {
 // A small mesh, some of whose faces are double-sided: the same vertices wound both ways.
 rc::Gen<Mesh> mesh_with_twins(double s) {
   return rc::gen::exec([s] {
-    Mesh m = *rc::gen::weightedOneOf<Mesh>({{3, mesh(s)}, {1, rc::gen::exec([s] {
-                                                         Mesh soup;
-                                                         const int k = *rc::gen::inRange(1, 7);
-                                                         for (int i = 0; i < k; ++i) {
-                                                           const Triangle t = *any_triangle(s);
-                                                           const int base = int(soup.vertices.size());
-                                                           soup.vertices.insert(soup.vertices.end(), {t.v0, t.v1, t.v2});
-                                                           soup.triangles.push_back({base, base + 1, base + 2});
-                                                         }
-                                                         return soup;
-                                                       })}});
+    Mesh m =
+        *rc::gen::weightedOneOf<Mesh>({{3, mesh(s)}, {1, rc::gen::exec([s] {
+                                                        Mesh soup;
+                                                        const int k = *rc::gen::inRange(1, 7);
+                                                        for (int i = 0; i < k; ++i) {
+                                                          const Triangle t = *any_triangle(s);
+                                                          const int base = int(soup.vertices.size());
+                                                          soup.vertices.insert(soup.vertices.end(), {t.v0, t.v1, t.v2});
+                                                          soup.triangles.push_back({base, base + 1, base + 2});
+                                                        }
+                                                        return soup;
+                                                      })}});
     if (*rc::gen::inRange(0, 3) == 0 && m.size() > 0) {
       const std::size_t count = m.triangles.size();
       for (std::size_t i = 0; i < count; ++i)
@@ -154,27 +157,31 @@ rc::Gen<double> wide_scale() {
 }
 
 rc::Gen<Triangle> needle(double s) {
-  return rc::gen::suchThat(
-      rc::gen::exec([s] {
-        const Vec3 p = *point(s), u = nonzero(s);
-        // A direction across the long edge u, with any other component removed.
-        Vec3 w = *rc::gen::suchThat(point(1.0), [&u](const Vec3& v) { return v.cross(u).squaredNorm() > 1e-6 * v.squaredNorm() * u.squaredNorm(); });
-        w -= (w.dot(u) / u.dot(u)) * u;
-        const double aspect = std::ldexp(1.0, *rc::gen::inRange(4, 28));
-        w *= u.norm() / (aspect * w.norm());
-        // Where the third vertex sits along the long edge: at an end (a spike), inside it
-        // or beyond it (slivers).
-        const double f = *rc::gen::element(0.0, 1.0, std::ldexp(*rc::gen::inRange(1, 1024), -10), 1.0 + std::ldexp(*rc::gen::inRange(1, 512), -10));
-        Vec3 v[3] = {p, p + u, p + f * u + w};
-        const int first = *rc::gen::inRange(0, 3);
-        std::rotate(v, v + first, v + 3);
-        if (*rc::gen::element(0, 1)) std::swap(v[1], v[2]);
-        return Triangle{v[0], v[1], v[2]};
-      }),
-      [](const Triangle& t) { return t.normal() != Vec3::Zero(); });
+  return rc::gen::suchThat(rc::gen::exec([s] {
+                             const Vec3 p = *point(s), u = nonzero(s);
+                             // A direction across the long edge u, with any other component removed.
+                             Vec3 w = *rc::gen::suchThat(point(1.0), [&u](const Vec3& v) {
+                               return v.cross(u).squaredNorm() > 1e-6 * v.squaredNorm() * u.squaredNorm();
+                             });
+                             w -= (w.dot(u) / u.dot(u)) * u;
+                             const double aspect = std::ldexp(1.0, *rc::gen::inRange(4, 28));
+                             w *= u.norm() / (aspect * w.norm());
+                             // Where the third vertex sits along the long edge: at an end (a spike), inside it
+                             // or beyond it (slivers).
+                             const double f = *rc::gen::element(0.0, 1.0, std::ldexp(*rc::gen::inRange(1, 1024), -10),
+                                                                1.0 + std::ldexp(*rc::gen::inRange(1, 512), -10));
+                             Vec3 v[3] = {p, p + u, p + f * u + w};
+                             const int first = *rc::gen::inRange(0, 3);
+                             std::rotate(v, v + first, v + 3);
+                             if (*rc::gen::element(0, 1)) std::swap(v[1], v[2]);
+                             return Triangle{v[0], v[1], v[2]};
+                           }),
+                           [](const Triangle& t) { return t.normal() != Vec3::Zero(); });
 }
 
-rc::Gen<Triangle> any_triangle(double s) { return rc::gen::weightedOneOf<Triangle>({{3, triangle(s)}, {1, needle(s)}}); }
+rc::Gen<Triangle> any_triangle(double s) {
+  return rc::gen::weightedOneOf<Triangle>({{3, triangle(s)}, {1, needle(s)}});
+}
 
 rc::Gen<SegmentTrianglePair> decisive_segment_triangle() {
   const rc::Gen<SegmentTrianglePair> families = rc::gen::weightedOneOf<SegmentTrianglePair>({

@@ -18,7 +18,7 @@ namespace labkit::given {
 
 struct SegmentHit {
   bool hit = false;
-  double t = 0.0;                   // the point is a + t (b - a), 0 <= t <= 1
+  double t = 0.0;  // the point is a + t (b - a), 0 <= t <= 1
   Vec3 point = Vec3::Zero();
   Vec3 barycentric = Vec3::Zero();  // weights of v0, v1, v2, summing to 1
 };

@@ -48,7 +48,8 @@ class ReportListener : public ListenerBase {
     if (result.hasExpression())
       message += result.getExpressionInMacro() + " with expansion " + result.getExpandedExpression() + "\n";
     if (result.hasMessage()) message += std::string(result.getMessage());
-    message += "\n(" + std::string(result.getSourceInfo().file) + ":" + std::to_string(result.getSourceInfo().line) + ")";
+    message +=
+        "\n(" + std::string(result.getSourceInfo().file) + ":" + std::to_string(result.getSourceInfo().line) + ")";
     labkit::check::report::assertion_failed(message);
     return AssertionEnded(true);
   }

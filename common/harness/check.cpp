@@ -4,14 +4,14 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
-#include <map>
 #include <fstream>
-#include <fcntl.h>
-#include <unistd.h>
+#include <map>
 
 namespace labkit::check {
 

@@ -21,8 +21,8 @@
 #include "common/protocol/answerer.h"
 #include "common/protocol/report.h"
 
-#include "common/harness/catch.h"
 #include <rapidcheck.h>
+#include "common/harness/catch.h"
 
 #include <algorithm>
 #include <chrono>
@@ -91,8 +91,7 @@ Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::str
 //   return e.outcome();
 class Expect {
  public:
-  template <class T>
-  void equal(const std::string& field, const T& got, const T& expected) {
+  template <class T> void equal(const std::string& field, const T& got, const T& expected) {
     add(field, describe(got), describe(expected), got == expected, "");
   }
   void near(const std::string& field, double got, double expected, double tolerance);
@@ -110,8 +109,7 @@ class Expect {
 };
 
 // The input's length scale S: its largest absolute coordinate (never below 1e-300).
-template <class Input>
-double scale_of_input(const Input& input) {
+template <class Input> double scale_of_input(const Input& input) {
   const codec::Values v = values_of(input);
   double s = 0.0;
   for (std::size_t i = 0; i < v.numbers.size(); ++i)
@@ -138,10 +136,8 @@ bool flips_under_perturbation(const Input& input, ExactAnswer&& exact, int sampl
 // the lab's test file, before its cases.
 void rule(const std::string& query, const std::string& text);
 const std::string& rule_of(const std::string& query);
-template <class Input>
-void rule(const Query<Input>& query, const std::string& text) { rule(query.name, text); }
-template <class Input>
-const std::string& rule_of(const Query<Input>& query) { return rule_of(query.name); }
+template <class Input> void rule(const Query<Input>& query, const std::string& text) { rule(query.name, text); }
+template <class Input> const std::string& rule_of(const Query<Input>& query) { return rule_of(query.name); }
 
 // One hand-worked case from the handout.
 template <class Input, class Judge>
@@ -185,8 +181,7 @@ inline std::string with_rule(const std::string& query, const std::string& what) 
 // Runs the judge, turning stubs, stray exceptions and calls that got no answer (a crash
 // or a time-out in the answerer's process) into outcomes. A deferred call (a batch is
 // being gathered) goes through to random_cases.
-template <class Input, class Judge>
-Outcome run_judge(Judge& judge, const Input& input, QueryReport& report) {
+template <class Input, class Judge> Outcome run_judge(Judge& judge, const Input& input, QueryReport& report) {
   try {
     return judge(input);
   } catch (const remote::Deferred&) {
@@ -197,13 +192,15 @@ Outcome run_judge(Judge& judge, const Input& input, QueryReport& report) {
     report.not_implemented = e.what();
     return fail("an answer", "a stub", e.what());
   } catch (const std::invalid_argument& e) {
-    return fail("an answer", std::string("std::invalid_argument: ") + e.what(),
-                with_rule(report.query, "your code rejected a valid input: this input meets every precondition of the header"));
+    return fail(
+        "an answer", std::string("std::invalid_argument: ") + e.what(),
+        with_rule(report.query, "your code rejected a valid input: this input meets every precondition of the header"));
   } catch (const std::exception& e) {
     return fail("an answer", std::string("an exception: ") + e.what(),
                 with_rule(report.query, "your code threw an exception on a valid input"));
   } catch (...) {
-    return fail("an answer", "an exception of unknown type", "the code under test threw something not derived from std::exception");
+    return fail("an answer", "an exception of unknown type",
+                "the code under test threw something not derived from std::exception");
   }
 }
 
@@ -252,8 +249,7 @@ void judge_batch(const std::vector<Input>& inputs, std::size_t begin, std::size_
   remote::end_batch();
 }
 
-template <class Input, class Judge>
-void replay_one(const std::string& query, Judge& judge, QueryReport& report) {
+template <class Input, class Judge> void replay_one(const std::string& query, Judge& judge, QueryReport& report) {
   const ParsedToken token = parse_token(settings().replay);
   const Input input = input_from_token<Input>(token);
   if (settings().describe_only) {
@@ -283,7 +279,9 @@ bool flips_under_perturbation(const Input& input, ExactAnswer&& exact, int sampl
   const double length_step = kAmbiguity * scale_of_input(input);
   const auto step = [&](std::size_t i) { return base.kinds[i] == codec::Kind::unit ? kAmbiguity : length_step; };
   const auto answer = exact(input);
-  const auto differs = [&](const std::vector<double>& numbers) { return !(exact(from_numbers<Input>(numbers)) == answer); };
+  const auto differs = [&](const std::vector<double>& numbers) {
+    return !(exact(from_numbers<Input>(numbers)) == answer);
+  };
   std::mt19937_64 random(hash);
 
   // Each number alone, both ways: this flips every exactly-zero predicate that depends
@@ -334,8 +332,7 @@ void example(const Query<Input>& q, const std::string& title, const typename Que
     SUCCEED();
 }
 
-template <class Input, class Judge>
-void random_cases(const Query<Input>& q, const rc::Gen<Input>& gen, Judge&& judge) {
+template <class Input, class Judge> void random_cases(const Query<Input>& q, const rc::Gen<Input>& gen, Judge&& judge) {
   const std::string query = q.name;
   detail::QueryReport& report = detail::entry(query, "random");
   const Settings& s = settings();
@@ -376,12 +373,13 @@ void random_cases(const Query<Input>& q, const rc::Gen<Input>& gen, Judge&& judg
   // The cases, drawn as RapidCheck draws them: the same seed gives the same cases.
   std::vector<Input> inputs;
   inputs.reserve(std::size_t(s.cases));
-  const auto drawn =
-      rc::detail::checkProperty(rc::detail::toProperty([&] { inputs.push_back(*gen); }), metadata, params, listener, {});
+  const auto drawn = rc::detail::checkProperty(rc::detail::toProperty([&] { inputs.push_back(*gen); }), metadata,
+                                               params, listener, {});
   if (!drawn.template is<rc::detail::SuccessResult>()) {
-    report.error = "the random cases could not be drawn: " +
-                   (drawn.template is<rc::detail::FailureResult>() ? drawn.template get<rc::detail::FailureResult>().description
-                                                                   : std::string("RapidCheck gave up or failed"));
+    report.error =
+        "the random cases could not be drawn: " + (drawn.template is<rc::detail::FailureResult>()
+                                                       ? drawn.template get<rc::detail::FailureResult>().description
+                                                       : std::string("RapidCheck gave up or failed"));
     detail::save_report();
     detail::report_to_catch(report, true);
     return;
@@ -406,8 +404,8 @@ void random_cases(const Query<Input>& q, const rc::Gen<Input>& gen, Judge&& judg
     detail::report_to_catch(report, true);
     return;
   }
-  std::optional<detail::Failure> first_failure =
-      detail::failure_of("", query, inputs[std::size_t(first_failing_case) - 1], outcomes[std::size_t(first_failing_case) - 1]);
+  std::optional<detail::Failure> first_failure = detail::failure_of(
+      "", query, inputs[std::size_t(first_failing_case) - 1], outcomes[std::size_t(first_failing_case) - 1]);
   inputs = {};
   outcomes = {};
   // A call that never finished is not shrunk: each try would wait out the time limit.
@@ -455,7 +453,8 @@ void random_cases(const Query<Input>& q, const rc::Gen<Input>& gen, Judge&& judg
     report.failure = smallest;
   } else if (result.template is<rc::detail::FailureResult>()) {
     // The property failed without a judge's verdict: the generator itself threw.
-    report.error = "a random case could not be generated: " + result.template get<rc::detail::FailureResult>().description;
+    report.error =
+        "a random case could not be generated: " + result.template get<rc::detail::FailureResult>().description;
   } else if (result.template is<rc::detail::GaveUpResult>()) {
     report.error = "the generator gave up: " + result.template get<rc::detail::GaveUpResult>().description;
   } else if (result.template is<rc::detail::Error>()) {

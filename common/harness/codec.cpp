@@ -39,18 +39,56 @@ std::size_t Reader::count(std::size_t limit) {
   return std::size_t(x);
 }
 
-void encode(Writer& w, const Vec3& v) { w.real(v.x()); w.real(v.y()); w.real(v.z()); }
-void decode(Reader& r, Vec3& v) { v.x() = r.real(); v.y() = r.real(); v.z() = r.real(); }
-void encode(Writer& w, const Vec2& v) { w.real(v.x()); w.real(v.y()); }
-void decode(Reader& r, Vec2& v) { v.x() = r.real(); v.y() = r.real(); }
-void encode(Writer& w, const Segment& s) { encode(w, s.a); encode(w, s.b); }
-void decode(Reader& r, Segment& s) { decode(r, s.a); decode(r, s.b); }
-void encode(Writer& w, const Triangle& t) { encode(w, t.v0); encode(w, t.v1); encode(w, t.v2); }
-void decode(Reader& r, Triangle& t) { decode(r, t.v0); decode(r, t.v1); decode(r, t.v2); }
-void encode(Writer& w, const Plane& p) { encode(w, p.normal); w.real(p.offset); }
-void decode(Reader& r, Plane& p) { decode(r, p.normal); p.offset = r.real(); }
-void encode(Writer& w, const Frustum& f) { for (const Plane& p : f.planes) encode(w, p); }
-void decode(Reader& r, Frustum& f) { for (Plane& p : f.planes) decode(r, p); }
+void encode(Writer& w, const Vec3& v) {
+  w.real(v.x());
+  w.real(v.y());
+  w.real(v.z());
+}
+void decode(Reader& r, Vec3& v) {
+  v.x() = r.real();
+  v.y() = r.real();
+  v.z() = r.real();
+}
+void encode(Writer& w, const Vec2& v) {
+  w.real(v.x());
+  w.real(v.y());
+}
+void decode(Reader& r, Vec2& v) {
+  v.x() = r.real();
+  v.y() = r.real();
+}
+void encode(Writer& w, const Segment& s) {
+  encode(w, s.a);
+  encode(w, s.b);
+}
+void decode(Reader& r, Segment& s) {
+  decode(r, s.a);
+  decode(r, s.b);
+}
+void encode(Writer& w, const Triangle& t) {
+  encode(w, t.v0);
+  encode(w, t.v1);
+  encode(w, t.v2);
+}
+void decode(Reader& r, Triangle& t) {
+  decode(r, t.v0);
+  decode(r, t.v1);
+  decode(r, t.v2);
+}
+void encode(Writer& w, const Plane& p) {
+  encode(w, p.normal);
+  w.real(p.offset);
+}
+void decode(Reader& r, Plane& p) {
+  decode(r, p.normal);
+  p.offset = r.real();
+}
+void encode(Writer& w, const Frustum& f) {
+  for (const Plane& p : f.planes) encode(w, p);
+}
+void decode(Reader& r, Frustum& f) {
+  for (Plane& p : f.planes) decode(r, p);
+}
 
 void encode(Writer& w, const Mesh& m) {
   w.count(m.vertices.size());
@@ -73,8 +111,10 @@ void decode(Reader& r, Mesh& m) {
 void encode(Writer& w, const RigidTransform& m) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 4; ++j) {
-      if (j < 3) w.unit(m.matrix()(i, j));
-      else w.real(m.matrix()(i, j));
+      if (j < 3)
+        w.unit(m.matrix()(i, j));
+      else
+        w.real(m.matrix()(i, j));
     }
 }
 void decode(Reader& r, RigidTransform& m) {
@@ -101,10 +141,22 @@ void decode(Reader& r, Mat3& m) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) m(i, j) = r.real();
 }
-void encode(Writer& w, const Sphere& s) { encode(w, s.center); w.real(s.radius); }
-void decode(Reader& r, Sphere& s) { decode(r, s.center); s.radius = r.real(); }
-void encode(Writer& w, const Capsule& c) { encode(w, c.axis); w.real(c.radius); }
-void decode(Reader& r, Capsule& c) { decode(r, c.axis); c.radius = r.real(); }
+void encode(Writer& w, const Sphere& s) {
+  encode(w, s.center);
+  w.real(s.radius);
+}
+void decode(Reader& r, Sphere& s) {
+  decode(r, s.center);
+  s.radius = r.real();
+}
+void encode(Writer& w, const Capsule& c) {
+  encode(w, c.axis);
+  w.real(c.radius);
+}
+void decode(Reader& r, Capsule& c) {
+  decode(r, c.axis);
+  c.radius = r.real();
+}
 void encode(Writer& w, const Rectangle& rect) {
   encode(w, rect.center);
   for (int i = 0; i < 3; ++i) w.unit(rect.u[i]);
@@ -119,12 +171,32 @@ void decode(Reader& r, Rectangle& rect) {
   rect.half_u = r.real();
   rect.half_v = r.real();
 }
-void encode(Writer& w, const Lozenge& l) { encode(w, l.rectangle); w.real(l.radius); }
-void decode(Reader& r, Lozenge& l) { decode(r, l.rectangle); l.radius = r.real(); }
-void encode(Writer& w, const Box& b) { encode(w, b.center); encode(w, b.axes); encode(w, b.half_extents); }
-void decode(Reader& r, Box& b) { decode(r, b.center); decode(r, b.axes); decode(r, b.half_extents); }
-void encode(Writer& w, const Aabb& b) { encode(w, b.min); encode(w, b.max); }
-void decode(Reader& r, Aabb& b) { decode(r, b.min); decode(r, b.max); }
+void encode(Writer& w, const Lozenge& l) {
+  encode(w, l.rectangle);
+  w.real(l.radius);
+}
+void decode(Reader& r, Lozenge& l) {
+  decode(r, l.rectangle);
+  l.radius = r.real();
+}
+void encode(Writer& w, const Box& b) {
+  encode(w, b.center);
+  encode(w, b.axes);
+  encode(w, b.half_extents);
+}
+void decode(Reader& r, Box& b) {
+  decode(r, b.center);
+  decode(r, b.axes);
+  decode(r, b.half_extents);
+}
+void encode(Writer& w, const Aabb& b) {
+  encode(w, b.min);
+  encode(w, b.max);
+}
+void decode(Reader& r, Aabb& b) {
+  decode(r, b.min);
+  decode(r, b.max);
+}
 
 }  // namespace codec
 
@@ -134,9 +206,7 @@ std::string describe(bool x) { return x ? "true" : "false"; }
 std::string describe(const Vec2& v) { return fmt(v); }
 std::string describe(const Vec3& v) { return fmt(v); }
 std::string describe(const Segment& s) { return "a=" + fmt(s.a) + " b=" + fmt(s.b); }
-std::string describe(const Triangle& t) {
-  return "v0=" + fmt(t.v0) + " v1=" + fmt(t.v1) + " v2=" + fmt(t.v2);
-}
+std::string describe(const Triangle& t) { return "v0=" + fmt(t.v0) + " v1=" + fmt(t.v1) + " v2=" + fmt(t.v2); }
 std::string describe(const Plane& p) { return "normal=" + fmt(p.normal) + " offset=" + fmt(p.offset); }
 
 std::string describe(const Frustum& f) {
@@ -195,7 +265,8 @@ std::string describe(const Aabb& b) { return "min=" + fmt(b.min) + " max=" + fmt
 ParsedToken parse_token(const std::string& token) {
   const auto colon = token.find(':');
   if (colon == std::string::npos || colon == 0)
-    throw BadToken("a replay case looks like 'query:1,2,3', and '" + token.substr(0, 40) + "' has no 'query:' in front");
+    throw BadToken("a replay case looks like 'query:1,2,3', and '" + token.substr(0, 40) +
+                   "' has no 'query:' in front");
   ParsedToken parsed;
   parsed.query = token.substr(0, colon);
   const std::string rest = token.substr(colon + 1);
@@ -208,9 +279,12 @@ ParsedToken parse_token(const std::string& token) {
     const auto result = std::from_chars(item.data(), item.data() + item.size(), x);
     if (item.empty() || result.ec != std::errc() || result.ptr != item.data() + item.size()) {
       // from_chars does not read "inf"/"nan" in every library; accept them by hand.
-      if (item == "inf") x = INFINITY;
-      else if (item == "-inf") x = -INFINITY;
-      else if (item == "nan") x = NAN;
+      if (item == "inf")
+        x = INFINITY;
+      else if (item == "-inf")
+        x = -INFINITY;
+      else if (item == "nan")
+        x = NAN;
       else
         throw BadToken("number " + std::to_string(parsed.numbers.size() + 1) + " of the replay case, '" +
                        item.substr(0, 30) + "', is not a number");

@@ -38,11 +38,9 @@ namespace codec {
 
 // Matches any field list; used only to detect whether a type has one.
 struct AnyFieldVisitor {
-  template <class F>
-  void operator()(const char*, F&) const {}
+  template <class F> void operator()(const char*, F&) const {}
 };
-template <class T>
-using HasFields = decltype(fields(std::declval<T&>(), AnyFieldVisitor{}));
+template <class T> using HasFields = decltype(fields(std::declval<T&>(), AnyFieldVisitor{}));
 
 // The flat list of numbers behind an input, each with its kind: a length (a coordinate,
 // perturbed by the ambiguity check relative to the input's scale S), a unit-free number
@@ -129,32 +127,26 @@ void decode(Reader& r, Box& b);
 void encode(Writer& w, const Aabb& b);
 void decode(Reader& r, Aabb& b);
 
-template <class T, std::size_t N>
-void encode(Writer& w, const std::array<T, N>& xs) {
+template <class T, std::size_t N> void encode(Writer& w, const std::array<T, N>& xs) {
   for (const T& x : xs) encode(w, x);
 }
-template <class T, std::size_t N>
-void decode(Reader& r, std::array<T, N>& xs) {
+template <class T, std::size_t N> void decode(Reader& r, std::array<T, N>& xs) {
   for (T& x : xs) decode(r, x);
 }
-template <class T>
-void encode(Writer& w, const std::vector<T>& xs) {
+template <class T> void encode(Writer& w, const std::vector<T>& xs) {
   w.count(xs.size());
   for (const T& x : xs) encode(w, x);
 }
-template <class T>
-void decode(Reader& r, std::vector<T>& xs) {
+template <class T> void decode(Reader& r, std::vector<T>& xs) {
   xs.resize(r.count());
   for (T& x : xs) decode(r, x);
 }
 
 // Structs that list their fields (see the top of this file).
-template <class T, class>
-void encode(Writer& w, const T& x) {
+template <class T, class> void encode(Writer& w, const T& x) {
   fields(const_cast<T&>(x), [&](const char*, auto& field) { encode(w, field); });
 }
-template <class T, class>
-void decode(Reader& r, T& x) {
+template <class T, class> void decode(Reader& r, T& x) {
   fields(x, [&](const char*, auto& field) { decode(r, field); });
 }
 
@@ -184,20 +176,17 @@ std::string describe(const Lozenge& l);
 std::string describe(const Box& b);
 std::string describe(const Aabb& b);
 
-template <class T, std::size_t N>
-std::string describe(const std::array<T, N>& xs) {
+template <class T, std::size_t N> std::string describe(const std::array<T, N>& xs) {
   std::string s = "[";
   for (std::size_t i = 0; i < N; ++i) s += (i ? ", " : "") + describe(xs[i]);
   return s + "]";
 }
-template <class T>
-std::string describe(const std::vector<T>& xs) {
+template <class T> std::string describe(const std::vector<T>& xs) {
   std::string s = "[";
   for (std::size_t i = 0; i < xs.size(); ++i) s += (i ? ", " : "") + describe(xs[i]);
   return s + "]";
 }
-template <class T, class>
-std::string describe(const T& x) {
+template <class T, class> std::string describe(const T& x) {
   std::string s;
   fields(const_cast<T&>(x), [&](const char* name, auto& field) {
     s += (s.empty() ? "" : "\n") + std::string(name) + ": " + describe(field);
@@ -206,26 +195,24 @@ std::string describe(const T& x) {
 }
 
 // The numbers of an input, and the input rebuilt from them.
-template <class T>
-codec::Values values_of(const T& x) {
+template <class T> codec::Values values_of(const T& x) {
   codec::Writer w;
   codec::encode(w, x);
   return w.values();
 }
 
-template <class T>
-T from_numbers(std::vector<double> numbers) {
+template <class T> T from_numbers(std::vector<double> numbers) {
   codec::Reader r(std::move(numbers));
   T x{};
   codec::decode(r, x);
   if (!r.done())
-    throw BadToken("the case has " + std::to_string(r.position()) + " numbers too few for its query, or extra numbers at the end");
+    throw BadToken("the case has " + std::to_string(r.position()) +
+                   " numbers too few for its query, or extra numbers at the end");
   return x;
 }
 
 // "query:v1,v2,..." and back.
-template <class T>
-std::string replay_token(const std::string& query, const T& x) {
+template <class T> std::string replay_token(const std::string& query, const T& x) {
   std::string s = query + ":";
   const auto v = values_of(x);
   for (std::size_t i = 0; i < v.numbers.size(); ++i) s += (i ? "," : "") + fmt(v.numbers[i]);
@@ -239,8 +226,7 @@ struct ParsedToken {
 // Throws BadToken with a one-line reason.
 ParsedToken parse_token(const std::string& token);
 
-template <class T>
-T input_from_token(const ParsedToken& token) {
+template <class T> T input_from_token(const ParsedToken& token) {
   try {
     return from_numbers<T>(token.numbers);
   } catch (const BadToken& e) {

@@ -18,19 +18,17 @@
 
 namespace labkit::check {
 
-template <class Input>
-struct Query {
+template <class Input> struct Query {
   using InputType = Input;
   const char* name;
 };
 
-template <class Input>
-bool operator==(const Query<Input>& q, const std::string& name) { return name == q.name; }
-template <class A, class B>
-bool operator==(const Query<A>& a, const Query<B>& b) { return std::string_view(a.name) == b.name; }
+template <class Input> bool operator==(const Query<Input>& q, const std::string& name) { return name == q.name; }
+template <class A, class B> bool operator==(const Query<A>& a, const Query<B>& b) {
+  return std::string_view(a.name) == b.name;
+}
 
-template <class... Inputs>
-struct QueryTable {
+template <class... Inputs> struct QueryTable {
   std::tuple<Query<Inputs>...> queries;
 
   // "build_kd_tree, first_hit, ...": for an error that lists what a token may start with.
@@ -42,23 +40,20 @@ struct QueryTable {
 
   // Calls visit(query, input) with the token's numbers read as the input its query takes;
   // false when the table has no query of that name. A malformed token throws BadToken.
-  template <class Visit>
-  bool visit(const ParsedToken& token, Visit&& fn) const {
+  template <class Visit> bool visit(const ParsedToken& token, Visit&& fn) const {
     bool found = false;
     std::apply([&](const auto&... q) { ((found = found || visit_if(token, q, fn)), ...); }, queries);
     return found;
   }
 
  private:
-  template <class Input, class Visit>
-  static bool visit_if(const ParsedToken& token, const Query<Input>& q, Visit& fn) {
+  template <class Input, class Visit> static bool visit_if(const ParsedToken& token, const Query<Input>& q, Visit& fn) {
     if (token.query != q.name) return false;
     fn(q, input_from_token<Input>(token));
     return true;
   }
 };
-template <class... Inputs>
-QueryTable(std::tuple<Query<Inputs>...>) -> QueryTable<Inputs...>;
+template <class... Inputs> QueryTable(std::tuple<Query<Inputs>...>) -> QueryTable<Inputs...>;
 
 }  // namespace labkit::check
 

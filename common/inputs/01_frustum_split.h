@@ -15,8 +15,7 @@ struct TrianglePlane {
   Triangle triangle;
   Plane plane;
 };
-template <class Visit>
-void fields(TrianglePlane& p, Visit&& visit) {
+template <class Visit> void fields(TrianglePlane& p, Visit&& visit) {
   visit("triangle", p.triangle);
   visit("plane", p.plane);
 }
@@ -25,8 +24,7 @@ struct TriangleFrustum {
   Triangle triangle;
   Frustum frustum;
 };
-template <class Visit>
-void fields(TriangleFrustum& p, Visit&& visit) {
+template <class Visit> void fields(TriangleFrustum& p, Visit&& visit) {
   visit("triangle", p.triangle);
   visit("frustum", p.frustum);
 }
@@ -37,8 +35,7 @@ struct MeshFrustum {
   std::vector<Vec3> colors;
   Frustum frustum;
 };
-template <class Visit>
-void fields(MeshFrustum& p, Visit&& visit) {
+template <class Visit> void fields(MeshFrustum& p, Visit&& visit) {
   visit("mesh", p.mesh);
   visit("colors", p.colors);
   visit("frustum", p.frustum);
@@ -55,8 +52,7 @@ struct CameraParameters {
   double near = 1.0;
   double far = 100.0;
 };
-template <class Visit>
-void fields(CameraParameters& c, Visit&& visit) {
+template <class Visit> void fields(CameraParameters& c, Visit&& visit) {
   visit("eye", c.eye);
   visit("forward", c.forward);
   visit("up", c.up);

@@ -13,8 +13,7 @@ struct BoxOnAxis {
   Box box;
   Vec3 axis = Vec3::UnitX();
 };
-template <class Visit>
-void fields(BoxOnAxis& p, Visit&& visit) {
+template <class Visit> void fields(BoxOnAxis& p, Visit&& visit) {
   visit("box", p.box);
   visit("axis", p.axis);
 }
@@ -23,8 +22,7 @@ struct BoxPair {
   Box a;
   Box b;
 };
-template <class Visit>
-void fields(BoxPair& p, Visit&& visit) {
+template <class Visit> void fields(BoxPair& p, Visit&& visit) {
   visit("a", p.a);
   visit("b", p.b);
 }
@@ -34,8 +32,7 @@ struct BoxPairOnAxis {
   Box b;
   Vec3 axis = Vec3::UnitX();
 };
-template <class Visit>
-void fields(BoxPairOnAxis& p, Visit&& visit) {
+template <class Visit> void fields(BoxPairOnAxis& p, Visit&& visit) {
   visit("a", p.a);
   visit("b", p.b);
   visit("axis", p.axis);
@@ -45,8 +42,7 @@ struct TrianglePair {
   Triangle t0;
   Triangle t1;
 };
-template <class Visit>
-void fields(TrianglePair& p, Visit&& visit) {
+template <class Visit> void fields(TrianglePair& p, Visit&& visit) {
   visit("t0", p.t0);
   visit("t1", p.t1);
 }
@@ -59,8 +55,7 @@ struct MovingBoxes {
   Vec3 velocity_b = Vec3::Zero();
   double duration = 1.0;
 };
-template <class Visit>
-void fields(MovingBoxes& p, Visit&& visit) {
+template <class Visit> void fields(MovingBoxes& p, Visit&& visit) {
   visit("a", p.a);
   visit("velocity_a", p.velocity_a);
   visit("b", p.b);

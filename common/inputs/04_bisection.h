@@ -73,15 +73,33 @@ struct AdvancedPair {
 };
 
 template <class V> void fields(MovingBody& b, V&& v) {
-  v("is_box", b.is_box); v("sphere", b.sphere); v("box", b.box); v("motion", b.motion);
+  v("is_box", b.is_box);
+  v("sphere", b.sphere);
+  v("box", b.box);
+  v("motion", b.motion);
 }
-template <class V> void fields(MovingPairCase& c, V&& v) { v("a", c.a); v("b", c.b); v("times", c.times); }
-template <class V> void fields(PointBox& p, V&& v) { v("point", p.point); v("box", p.box); }
+template <class V> void fields(MovingPairCase& c, V&& v) {
+  v("a", c.a);
+  v("b", c.b);
+  v("times", c.times);
+}
+template <class V> void fields(PointBox& p, V&& v) {
+  v("point", p.point);
+  v("box", p.box);
+}
 template <class V> void fields(SubstepRule& r, V&& v) {
-  v("max_speed", r.max_speed); v("step", r.step); v("smallest_size", r.smallest_size);
+  v("max_speed", r.max_speed);
+  v("step", r.step);
+  v("smallest_size", r.smallest_size);
 }
-template <class V> void fields(SampledPair& s, V&& v) { v("pair", s.pair); v("substeps", s.substeps); }
-template <class V> void fields(AdvancedPair& a, V&& v) { v("pair", a.pair); v("speed_factor", a.speed_factor); }
+template <class V> void fields(SampledPair& s, V&& v) {
+  v("pair", s.pair);
+  v("substeps", s.substeps);
+}
+template <class V> void fields(AdvancedPair& a, V&& v) {
+  v("pair", a.pair);
+  v("speed_factor", a.speed_factor);
+}
 
 // Times, spins and axes are unit-free for the ambiguity check: they move by 1e-9, not by
 // 1e-9 S, and they do not count toward the length scale S.

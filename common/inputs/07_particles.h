@@ -1,6 +1,7 @@
-// Lab 07's inputs: each query's arguments as one struct (the table of queries is at the end), whose fields() let reports print
+// Lab 07's inputs: each query's arguments as one struct, whose fields() let reports print
 // it and replay tokens carry it (the answers' fields are in tests/07_particles.wire.h; the
-// tokens of Forces, Material and Scene in tests/07_particles.judge.h).
+// tokens of Forces, Material and Scene in tests/07_particles.judge.h), and at the end the
+// table of the queries that take them.
 #pragma once
 
 #include "particles.h"
@@ -18,27 +19,42 @@ struct EmitCase {
   int seed = 1;
   int count = 1;  // particles emitted, twice from the same seed
 };
-template <class V> void fields(EmitCase& c, V&& v) { v("emitter", c.emitter); v("seed", c.seed); v("count", c.count); }
+template <class V> void fields(EmitCase& c, V&& v) {
+  v("emitter", c.emitter);
+  v("seed", c.seed);
+  v("count", c.count);
+}
 
 struct BirthsCase {
   Emitter emitter;  // its rate and owed
   double dt = 0.0;
   int steps = 1;
 };
-template <class V> void fields(BirthsCase& c, V&& v) { v("emitter", c.emitter); v("dt", c.dt); v("steps", c.steps); }
+template <class V> void fields(BirthsCase& c, V&& v) {
+  v("emitter", c.emitter);
+  v("dt", c.dt);
+  v("steps", c.steps);
+}
 
 struct AgeCase {
   std::vector<Particle> particles;
   double dt = 0.0;
 };
-template <class V> void fields(AgeCase& c, V&& v) { v("particles", c.particles); v("dt", c.dt); }
+template <class V> void fields(AgeCase& c, V&& v) {
+  v("particles", c.particles);
+  v("dt", c.dt);
+}
 
 struct MotionCase {
   Particle particle;
   Forces forces;
   double dt = 0.0;
 };
-template <class V> void fields(MotionCase& c, V&& v) { v("particle", c.particle); v("forces", c.forces); v("dt", c.dt); }
+template <class V> void fields(MotionCase& c, V&& v) {
+  v("particle", c.particle);
+  v("forces", c.forces);
+  v("dt", c.dt);
+}
 
 struct LaunchCase {
   Vec3 from = Vec3::Zero();
@@ -47,14 +63,20 @@ struct LaunchCase {
   Vec3 gravity = Vec3::Zero();
 };
 template <class V> void fields(LaunchCase& c, V&& v) {
-  v("from", c.from); v("target", c.target); v("speed", c.speed); v("gravity", c.gravity);
+  v("from", c.from);
+  v("target", c.target);
+  v("speed", c.speed);
+  v("gravity", c.gravity);
 }
 
 struct SegmentScene {
   Segment segment;
   Scene scene;
 };
-template <class V> void fields(SegmentScene& c, V&& v) { v("segment", c.segment); v("scene", c.scene); }
+template <class V> void fields(SegmentScene& c, V&& v) {
+  v("segment", c.segment);
+  v("scene", c.scene);
+}
 
 struct ImpulseCase {
   Vec3 velocity = Vec3::Zero();
@@ -64,7 +86,10 @@ struct ImpulseCase {
   Material material;
 };
 template <class V> void fields(ImpulseCase& c, V&& v) {
-  v("velocity", c.velocity); v("object_velocity", c.object_velocity); v("normal", c.normal); v("mass", c.mass);
+  v("velocity", c.velocity);
+  v("object_velocity", c.object_velocity);
+  v("normal", c.normal);
+  v("mass", c.mass);
   v("material", c.material);
 }
 
@@ -76,7 +101,11 @@ struct CollideCase {
   Scene scene;
 };
 template <class V> void fields(CollideCase& c, V&& v) {
-  v("step", c.step); v("velocity", c.velocity); v("mass", c.mass); v("dt", c.dt); v("scene", c.scene);
+  v("step", c.step);
+  v("velocity", c.velocity);
+  v("mass", c.mass);
+  v("dt", c.dt);
+  v("scene", c.scene);
 }
 
 struct SettleCase {
@@ -84,7 +113,11 @@ struct SettleCase {
   Scene scene;
   SurfaceHit last;
 };
-template <class V> void fields(SettleCase& c, V&& v) { v("x", c.x); v("scene", c.scene); v("last", c.last); }
+template <class V> void fields(SettleCase& c, V&& v) {
+  v("x", c.x);
+  v("scene", c.scene);
+  v("last", c.last);
+}
 
 struct SystemCase {
   Emitter emitter;
@@ -96,8 +129,13 @@ struct SystemCase {
   int steps = 1;
 };
 template <class V> void fields(SystemCase& c, V&& v) {
-  v("emitter", c.emitter); v("scene", c.scene); v("forces", c.forces); v("verlet", c.verlet); v("seed", c.seed);
-  v("dt", c.dt); v("steps", c.steps);
+  v("emitter", c.emitter);
+  v("scene", c.scene);
+  v("forces", c.forces);
+  v("verlet", c.verlet);
+  v("seed", c.seed);
+  v("dt", c.dt);
+  v("steps", c.steps);
 }
 
 }  // namespace labkit::lab07

@@ -11,8 +11,7 @@ struct SegmentTrianglePair {
   Segment segment;
   Triangle triangle;
 };
-template <class Visit>
-void fields(SegmentTrianglePair& p, Visit&& visit) {
+template <class Visit> void fields(SegmentTrianglePair& p, Visit&& visit) {
   visit("segment", p.segment);
   visit("triangle", p.triangle);
 }
@@ -21,8 +20,7 @@ struct SegmentMeshPair {
   Segment segment;
   Mesh mesh;
 };
-template <class Visit>
-void fields(SegmentMeshPair& p, Visit&& visit) {
+template <class Visit> void fields(SegmentMeshPair& p, Visit&& visit) {
   visit("segment", p.segment);
   visit("mesh", p.mesh);
 }

@@ -20,19 +20,11 @@ namespace {
 using Interval = CGAL::Interval_nt<false>;
 using Exact = CGAL::Mpzf;
 
-template <class NT>
-using V3 = std::array<NT, 3>;
+template <class NT> using V3 = std::array<NT, 3>;
 
-template <class NT>
-V3<NT> vec(const Vec3& v) {
-  return {NT(v.x()), NT(v.y()), NT(v.z())};
-}
-template <class NT>
-NT dot(const V3<NT>& u, const V3<NT>& v) {
-  return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-}
-template <class NT>
-V3<NT> cross(const V3<NT>& u, const V3<NT>& v) {
+template <class NT> V3<NT> vec(const Vec3& v) { return {NT(v.x()), NT(v.y()), NT(v.z())}; }
+template <class NT> NT dot(const V3<NT>& u, const V3<NT>& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
+template <class NT> V3<NT> cross(const V3<NT>& u, const V3<NT>& v) {
   return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
 }
 
@@ -42,8 +34,7 @@ Exact smaller(const Exact& x, const Exact& y) { return y < x ? y : x; }
 Exact larger(const Exact& x, const Exact& y) { return x < y ? y : x; }
 
 // One box, exactly: its corners and axes.
-template <class NT>
-struct ExactBox {
+template <class NT> struct ExactBox {
   std::array<V3<NT>, 8> corners;
   std::array<V3<NT>, 3> axes;
 
@@ -116,15 +107,11 @@ struct AxisSet {
   void add(const Vec3& u, const Vec3& v) {
     if (!parallel(u, v)) pairs[size++] = {u, v};
   }
-  template <class NT>
-  V3<NT> exact(int k) const {
-    return cross(vec<NT>(pairs[k][0]), vec<NT>(pairs[k][1]));
-  }
+  template <class NT> V3<NT> exact(int k) const { return cross(vec<NT>(pairs[k][0]), vec<NT>(pairs[k][1])); }
   Vec3 rounded(int k) const { return rounded_cross(pairs[k][0], pairs[k][1]); }
 };
 
-template <class NT>
-bool intersect(const Box& box_a, const Box& box_b) {
+template <class NT> bool intersect(const Box& box_a, const Box& box_b) {
   const ExactBox<NT> a(box_a), b(box_b);
   const AxisSet axes(box_a, box_b);
   for (int k = 0; k < axes.size; ++k) {
@@ -137,8 +124,7 @@ bool intersect(const Box& box_a, const Box& box_b) {
   return true;
 }
 
-template <class NT>
-bool apart_along(const Box& box_a, const Box& box_b, const Vec3& direction, bool either_way) {
+template <class NT> bool apart_along(const Box& box_a, const Box& box_b, const Vec3& direction, bool either_way) {
   const ExactBox<NT> a(box_a), b(box_b);
   const V3<NT> u = vec<NT>(direction);
   NT lo_a, hi_a, lo_b, hi_b;
@@ -148,13 +134,11 @@ bool apart_along(const Box& box_a, const Box& box_b, const Vec3& direction, bool
 }
 
 // Runs `f` on intervals, and exactly when the intervals cannot decide.
-template <class F>
-bool filtered(F&& f) {
+template <class F> bool filtered(F&& f) {
   try {
     CGAL::Protect_FPU_rounding<true> rounding;
     return f(Interval());
-  } catch (const CGAL::Uncertain_conversion_exception&) {
-  }
+  } catch (const CGAL::Uncertain_conversion_exception&) {}
   return f(Exact());
 }
 
@@ -197,14 +181,8 @@ double margin(const Box& box_a, const Box& box_b, const Vec3* sweep) {
 }
 
 // A time bound num / den, den > 0, compared by cross-multiplying.
-template <class NT>
-struct Fraction {
-  NT num, den;
-};
-template <class NT>
-bool less(const Fraction<NT>& x, const Fraction<NT>& y) {
-  return x.num * y.den < y.num * x.den;
-}
+template <class NT> struct Fraction { NT num, den; };
+template <class NT> bool less(const Fraction<NT>& x, const Fraction<NT>& y) { return x.num * y.den < y.num * x.den; }
 
 // The times t in [from, to] at which, on every facet normal L, the projections are
 // apart by at most slack |L| (lengths |L| rounded). On each axis that is two linear

@@ -13,8 +13,7 @@ using namespace kernel;
 namespace {
 
 FT value(const Plane& plane, const Epeck::Point_3& x) {
-  return FT(plane.normal.x()) * x.x() + FT(plane.normal.y()) * x.y() + FT(plane.normal.z()) * x.z() +
-         FT(plane.offset);
+  return FT(plane.normal.x()) * x.x() + FT(plane.normal.y()) * x.y() + FT(plane.normal.z()) * x.z() + FT(plane.offset);
 }
 
 FT squared_norm(const Vec3& v) { return FT(v.x()) * FT(v.x()) + FT(v.y()) * FT(v.y()) + FT(v.z()) * FT(v.z()); }
@@ -76,10 +75,10 @@ std::array<int, 3> sides(const Triangle& t, const Plane& plane) {
 //   planes k and l across the plane: w = d^k x d^l
 struct Corner {
   enum class Kind { vertex, edge_cut, plane_cut } kind = Kind::vertex;
-  int a = 0, b = 0;        // the vertex, or the edge's ends
-  int k = 0;               // the cutting plane (the first of two)
-  unsigned edges = 0;      // bit e: lies on the edge from vertex e to vertex e + 1
-  unsigned planes = 0;     // bit k: lies on plane k
+  int a = 0, b = 0;     // the vertex, or the edge's ends
+  int k = 0;            // the cutting plane (the first of two)
+  unsigned edges = 0;   // bit e: lies on the edge from vertex e to vertex e + 1
+  unsigned planes = 0;  // bit k: lies on plane k
 };
 
 int sign(double x) { return (x > 0) - (x < 0); }
@@ -92,8 +91,8 @@ int stable_sign(const Corner& c, int m, const std::vector<Vec3>& d, double eta) 
   const Vec3& dk = d[std::size_t(c.k)];
   if (c.kind == Corner::Kind::edge_cut) {
     const double num = dk[c.a] * dm[c.b] - dk[c.b] * dm[c.a];
-    const double num_bound = eta * (std::abs(dk[c.a]) + std::abs(dk[c.b]) + std::abs(dm[c.a]) + std::abs(dm[c.b])) +
-                             2 * eta * eta;
+    const double num_bound =
+        eta * (std::abs(dk[c.a]) + std::abs(dk[c.b]) + std::abs(dm[c.a]) + std::abs(dm[c.b])) + 2 * eta * eta;
     const double den = dk[c.a] - dk[c.b];
     if (std::abs(num) <= 2 * num_bound || std::abs(den) <= 4 * eta) return 0;
     return sign(num) * sign(den);
@@ -141,14 +140,12 @@ int dominant_axis(const Vec3& n) {
   return a.x() >= a.y() && a.x() >= a.z() ? 0 : (a.y() >= a.z() ? 1 : 2);
 }
 
-template <class K>
-typename K::Point_2 drop(const Vec3& p, int axis) {
+template <class K> typename K::Point_2 drop(const Vec3& p, int axis) {
   const int u = (axis + 1) % 3, v = (axis + 2) % 3;
   return {p[u], p[v]};
 }
 
-template <class Point>
-std::array<Point, 3> counterclockwise(Point a, Point b, Point c) {
+template <class Point> std::array<Point, 3> counterclockwise(Point a, Point b, Point c) {
   if (CGAL::orientation(a, b, c) == CGAL::CLOCKWISE) std::swap(b, c);
   return {a, b, c};
 }
@@ -253,7 +250,8 @@ double overlap_area(const Triangle& a, const Triangle& b, const Triangle& refere
   if (separated(fa, fb)) return 0.0;
   const auto ea = counterclockwise(drop<Epeck>(a.v0, axis), drop<Epeck>(a.v1, axis), drop<Epeck>(a.v2, axis));
   const auto eb = counterclockwise(drop<Epeck>(b.v0, axis), drop<Epeck>(b.v1, axis), drop<Epeck>(b.v2, axis));
-  const auto overlap = CGAL::intersection(Epeck::Triangle_2(ea[0], ea[1], ea[2]), Epeck::Triangle_2(eb[0], eb[1], eb[2]));
+  const auto overlap =
+      CGAL::intersection(Epeck::Triangle_2(ea[0], ea[1], ea[2]), Epeck::Triangle_2(eb[0], eb[1], eb[2]));
   if (!overlap) return 0.0;
   FT area2d = 0;
   if (const auto* t = boost::get<Epeck::Triangle_2>(&*overlap)) area2d = CGAL::abs(t->area());
@@ -291,8 +289,9 @@ std::array<Plane, 6> frustum_planes(const Mat4& m) {
       planes[std::size_t(i)] = Plane{Vec3::Zero(), 0.0};
       continue;
     }
-    planes[std::size_t(i)] = Plane{Vec3(divided_by_root(c[0], n2), divided_by_root(c[1], n2), divided_by_root(c[2], n2)),
-                                   divided_by_root(c[3], n2)};
+    planes[std::size_t(i)] =
+        Plane{Vec3(divided_by_root(c[0], n2), divided_by_root(c[1], n2), divided_by_root(c[2], n2)),
+              divided_by_root(c[3], n2)};
   }
   return planes;
 }

@@ -20,7 +20,7 @@ using labkit::Vec3;
 struct ClippedPolygon {
   std::vector<Vec3> corners;  // in order, winding like the triangle
   double area = 0.0;
-  bool has_area = false;      // exactly: area > 0
+  bool has_area = false;  // exactly: area > 0
   // How many triangles the rule gives: m - 2 for m corners, none without area.
   int triangles() const { return has_area ? int(corners.size()) - 2 : 0; }
 };

@@ -62,7 +62,8 @@ std::optional<FT> vertex_face(const P& p, const V& d, const P& v0, const P& v1, 
 // The edge p0 + u e swept by d against the still edge q0 + s f: p0 + u e + t d = q0 + s f
 // with u, s, t in [0, 1], by Cramer's rule. A zero determinant (e, d, f in one plane) is
 // left out, as above.
-std::optional<std::pair<FT, FT>> edge_edge(const P& p0, const V& e, const V& d, const P& q0, const V& f, double* approach) {
+std::optional<std::pair<FT, FT>> edge_edge(const P& p0, const V& e, const V& d, const P& q0, const V& f,
+                                           double* approach) {
   const V r = q0 - p0;
   const V minus_f = -f;
   const FT det = triple(e, d, minus_f);
@@ -79,8 +80,7 @@ std::optional<std::pair<FT, FT>> edge_edge(const P& p0, const V& e, const V& d, 
 }
 
 // Every candidate, passed to `keep`; `keep` returns true to stop early.
-template <class Keep>
-void candidates(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, Keep&& keep) {
+template <class Keep> void candidates(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, Keep&& keep) {
   const V wa = exact(va) - CGAL::ORIGIN, wb = exact(vb) - CGAL::ORIGIN;
   const V d = wa - wb;  // A's motion as seen from B
   std::vector<P> pa, pb;
@@ -149,10 +149,12 @@ bool touch_during_frame_fast(const Mesh& a, const Vec3& va, const Mesh& b, const
   };
   for (const Vec3& p : a.vertices)
     for (std::size_t k = 0; k < b.size(); ++k)
-      if (hits({fast(p), fast(p + d)}, {fast(b.triangle(k).v0), fast(b.triangle(k).v1), fast(b.triangle(k).v2)})) return true;
+      if (hits({fast(p), fast(p + d)}, {fast(b.triangle(k).v0), fast(b.triangle(k).v1), fast(b.triangle(k).v2)}))
+        return true;
   for (const Vec3& q : b.vertices)
     for (std::size_t k = 0; k < a.size(); ++k)
-      if (hits({fast(q), fast(q - d)}, {fast(a.triangle(k).v0), fast(a.triangle(k).v1), fast(a.triangle(k).v2)})) return true;
+      if (hits({fast(q), fast(q - d)}, {fast(a.triangle(k).v0), fast(a.triangle(k).v1), fast(a.triangle(k).v2)}))
+        return true;
   const auto eb = mesh_edges(b);
   for (const auto& e : mesh_edges(a)) {
     const Vec3& p0 = a.vertices[std::size_t(e[0])];
@@ -171,7 +173,8 @@ bool within_translated(const Vec3& p, const Mesh& mesh, const Vec3& offset, doub
   const V o = exact(offset) - CGAL::ORIGIN;
   const FT tol2 = FT(tolerance) * FT(tolerance);
   for (std::size_t k = 0; k < mesh.size(); ++k) {
-    const Epeck::Triangle_3 tri(exact(mesh.triangle(k).v0) + o, exact(mesh.triangle(k).v1) + o, exact(mesh.triangle(k).v2) + o);
+    const Epeck::Triangle_3 tri(exact(mesh.triangle(k).v0) + o, exact(mesh.triangle(k).v1) + o,
+                                exact(mesh.triangle(k).v2) + o);
     if (tri.is_degenerate()) {
       for (int i = 0; i < 3; ++i)
         if (CGAL::squared_distance(x, Epeck::Segment_3(tri[i], tri[(i + 1) % 3])) <= tol2) return true;

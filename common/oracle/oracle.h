@@ -7,10 +7,10 @@
 
 #include "common/oracle/boxes.h"
 #include "common/oracle/clipping.h"
-#include "common/oracle/posed_shapes.h"
 #include "common/oracle/particles.h"
+#include "common/oracle/posed_shapes.h"
 #include "common/oracle/predicates.h"
 #include "common/oracle/segment_triangle.h"
+#include "common/oracle/spatial_trees.h"
 #include "common/oracle/sphere_sweeps.h"
 #include "common/oracle/triangle_pair.h"
-#include "common/oracle/spatial_trees.h"

@@ -18,37 +18,19 @@ namespace {
 using Interval = CGAL::Interval_nt<false>;  // needs the rounding mode set by the caller
 using Rational = CGAL::Gmpq;
 
-template <class NT>
-using V = std::array<NT, 3>;
+template <class NT> using V = std::array<NT, 3>;
 
-template <class NT>
-V<NT> operator-(const V<NT>& a, const V<NT>& b) {
-  return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
-}
-template <class NT>
-V<NT> operator+(const V<NT>& a, const V<NT>& b) {
-  return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
-}
-template <class NT>
-V<NT> operator*(const NT& s, const V<NT>& a) {
-  return {s * a[0], s * a[1], s * a[2]};
-}
-template <class NT>
-NT dot(const V<NT>& a, const V<NT>& b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-template <class NT>
-V<NT> cross(const V<NT>& a, const V<NT>& b) {
+template <class NT> V<NT> operator-(const V<NT>& a, const V<NT>& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+template <class NT> V<NT> operator+(const V<NT>& a, const V<NT>& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+template <class NT> V<NT> operator*(const NT& s, const V<NT>& a) { return {s * a[0], s * a[1], s * a[2]}; }
+template <class NT> NT dot(const V<NT>& a, const V<NT>& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+template <class NT> V<NT> cross(const V<NT>& a, const V<NT>& b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
 }
-template <class NT>
-NT det(const V<NT>& a, const V<NT>& b, const V<NT>& c) {
-  return dot(a, cross(b, c));
-}
+template <class NT> NT det(const V<NT>& a, const V<NT>& b, const V<NT>& c) { return dot(a, cross(b, c)); }
 
 // R x + p (translate = true) or R x, exactly.
-template <class NT>
-V<NT> apply(const RigidTransform& pose, const labkit::Vec3& x, bool translate) {
+template <class NT> V<NT> apply(const RigidTransform& pose, const labkit::Vec3& x, bool translate) {
   const auto& m = pose.matrix();
   V<NT> r;
   for (int i = 0; i < 3; ++i) {
@@ -60,8 +42,7 @@ V<NT> apply(const RigidTransform& pose, const labkit::Vec3& x, bool translate) {
 
 // The sphere's centre relative to the box's centre, w, and the box's posed half edges
 // u_k = R (h_k axis_k): the box is { w' : w' = sum s_k u_k, |s_k| <= 1 } around it.
-template <class NT>
-struct Relative {
+template <class NT> struct Relative {
   V<NT> w;
   std::array<V<NT>, 3> u;
 };
@@ -83,8 +64,7 @@ Relative<NT> relative(const Sphere& a, const RigidTransform& pose_a, const Box& 
 // polytope lies inside one face, and there it is that face's foot. `visit` gets each
 // such candidate (0 when w is inside) and returns true to stop. `skip(value)` says that
 // a value is not worth the face test (so an interval run decides fewer comparisons).
-template <class NT, class Skip, class Visit>
-void candidates(const Relative<NT>& r, Skip&& skip, Visit&& visit) {
+template <class NT, class Skip, class Visit> void candidates(const Relative<NT>& r, Skip&& skip, Visit&& visit) {
   const NT zero(0);
   const auto& u = r.u;
   const V<NT>& w = r.w;
@@ -104,7 +84,7 @@ void candidates(const Relative<NT>& r, Skip&& skip, Visit&& visit) {
     const V<NT>& uj = u[(k + 2) % 3];
     const NT gii = dot(ui, ui), gij = dot(ui, uj), gjj = dot(uj, uj);
     const NT gram = gii * gjj - gij * gij;  // |ui x uj|^2
-    if (CGAL::is_zero(gram)) continue;       // a flat face: its edges stand in for it
+    if (CGAL::is_zero(gram)) continue;      // a flat face: its edges stand in for it
     const V<NT> n = cross(ui, uj);
     for (int sk : signs) {
       const V<NT> v = w - NT(sk) * u[k];
@@ -139,22 +119,22 @@ void candidates(const Relative<NT>& r, Skip&& skip, Visit&& visit) {
   }
 }
 
-template <class NT>
-bool within(const Relative<NT>& r, const NT& radius2) {
+template <class NT> bool within(const Relative<NT>& r, const NT& radius2) {
   bool found = false;
-  candidates(r, [&](const NT& value) { return !(value <= radius2); },
-             [&](const NT& value) { return found = value <= radius2; });
+  candidates(
+      r, [&](const NT& value) { return !(value <= radius2); },
+      [&](const NT& value) { return found = value <= radius2; });
   return found;
 }
 
-template <class NT>
-NT least(const Relative<NT>& r) {
+template <class NT> NT least(const Relative<NT>& r) {
   std::optional<NT> best;
-  candidates(r, [&](const NT& value) { return best && !(value < *best); },
-             [&](const NT& value) {
-               if (!best || value < *best) best = value;
-               return CGAL::is_zero(value);
-             });
+  candidates(
+      r, [&](const NT& value) { return best && !(value < *best); },
+      [&](const NT& value) {
+    if (!best || value < *best) best = value;
+    return CGAL::is_zero(value);
+      });
   return *best;  // the vertices always visit
 }
 
@@ -165,14 +145,12 @@ NT centres_squared(const Sphere& a, const RigidTransform& pose_a, const Sphere& 
 }
 
 // Runs `decide` with intervals, and again exactly when they could not decide.
-template <class Decide>
-bool filtered(Decide&& decide) {
+template <class Decide> bool filtered(Decide&& decide) {
   {
     CGAL::Protect_FPU_rounding<true> upward;
     try {
       return decide(Interval());
-    } catch (const CGAL::Uncertain_conversion_exception&) {
-    }
+    } catch (const CGAL::Uncertain_conversion_exception&) {}
   }
   return decide(Rational());
 }

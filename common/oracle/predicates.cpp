@@ -68,8 +68,6 @@ double distance(const Vec3& p, const Triangle& t) {
   return std::sqrt(rounded(squared_distance_to(exact(p), exact(t))));
 }
 
-double distance(const Vec3& p, const Segment& s) {
-  return std::sqrt(rounded(squared_distance_to(exact(p), exact(s))));
-}
+double distance(const Vec3& p, const Segment& s) { return std::sqrt(rounded(squared_distance_to(exact(p), exact(s)))); }
 
 }  // namespace oracle

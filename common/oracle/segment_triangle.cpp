@@ -182,8 +182,7 @@ double separation(const Segment& s, const Triangle& t) {
   double d2 = std::numeric_limits<double>::infinity();
   if (!tri.is_degenerate())
     d2 = std::min(CGAL::squared_distance(seg.source(), tri), CGAL::squared_distance(seg.target(), tri));
-  for (int i = 0; i < 3; ++i)
-    d2 = std::min(d2, squared_distance_fast(seg, Epick::Segment_3(tri[i], tri[(i + 1) % 3])));
+  for (int i = 0; i < 3; ++i) d2 = std::min(d2, squared_distance_fast(seg, Epick::Segment_3(tri[i], tri[(i + 1) % 3])));
   return std::sqrt(d2);
 }
 
@@ -202,7 +201,8 @@ bool segment_triangle_in_doubt(const Segment& s, const Triangle& t, double delta
   const Vec3 unit = n / twice_area;
   const auto lambda = [&](const Vec3& p) {
     return Vec3((t.v1 - p).cross(t.v2 - p).dot(unit), (t.v2 - p).cross(t.v0 - p).dot(unit),
-                (t.v0 - p).cross(t.v1 - p).dot(unit)) / twice_area;
+                (t.v0 - p).cross(t.v1 - p).dot(unit)) /
+           twice_area;
   };
   const auto slack = [&](const Vec3& p) { return 2 * eps * (1 + lambda(p).cwiseAbs().sum()); };
   const double h_a = (s.a - t.v0).dot(unit), h_b = (s.b - t.v0).dot(unit);
@@ -262,8 +262,8 @@ bool moving_mesh_hit_any(const Segment& s, const Mesh& mesh, const RigidTransfor
   return false;
 }
 
-std::string check_moving_hit(const Segment& s, const Mesh& mesh, const RigidTransform& m0,
-                             const RigidTransform& m1, int index, double t, const Vec3& point, double tolerance) {
+std::string check_moving_hit(const Segment& s, const Mesh& mesh, const RigidTransform& m0, const RigidTransform& m1,
+                             int index, double t, const Vec3& point, double tolerance) {
   if (index < 0 || std::size_t(index) >= mesh.size()) return "the triangle index is out of range";
   const Epeck::Aff_transformation_3 pose = exact_transform(m1);
   const Epeck::Triangle_3 posed = exact(mesh.triangle(std::size_t(index))).transform(pose);

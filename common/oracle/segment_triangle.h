@@ -28,10 +28,10 @@ bool segment_triangle_in_doubt(const Segment& s, const Triangle& t, double delta
 
 // The segment against the triangle's plane, n = (v1 - v0) x (v2 - v0).
 struct PlaneCrossing {
-  int side_a = 0, side_b = 0;  // exact signs of (a - v0) . n and (b - v0) . n
-  double d_a = 0.0, d_b = 0.0; // signed distances (unit normal); 0 for a zero-area triangle
-  bool crosses = false;        // exactly one common point with the plane
-  double t = 0.0;              // that point is a + t (b - a)
+  int side_a = 0, side_b = 0;   // exact signs of (a - v0) . n and (b - v0) . n
+  double d_a = 0.0, d_b = 0.0;  // signed distances (unit normal); 0 for a zero-area triangle
+  bool crosses = false;         // exactly one common point with the plane
+  double t = 0.0;               // that point is a + t (b - a)
   Vec3 point = Vec3::Zero();
 };
 PlaneCrossing segment_plane(const Segment& s, const Triangle& t);
@@ -55,10 +55,10 @@ bool parameter_reproduces(const Segment& s, double t, const Vec3& x, double tole
 
 struct SegmentHit {
   bool hit = false;
-  bool coplanar = false;     // the segment lies in the triangle's plane
-  double t = 0.0;            // parameter of the first common point: a + t (b - a)
-  Vec3 point = Vec3::Zero(); // that point
-  int triangle = -1;         // for meshes: which triangle
+  bool coplanar = false;      // the segment lies in the triangle's plane
+  double t = 0.0;             // parameter of the first common point: a + t (b - a)
+  Vec3 point = Vec3::Zero();  // that point
+  int triangle = -1;          // for meshes: which triangle
 };
 
 // The first common point along the segment (exact, rounded once).
@@ -85,7 +85,7 @@ bool moving_mesh_hit_any(const Segment& s, const Mesh& mesh, const RigidTransfor
 // is within `tolerance` of triangle `index` posed at m1 and of the segment a' b, where
 // a' = m1 m0^-1 a (the lecture's delta matrix), and a' + t (b - a') reproduces it.
 // Returns "" when all hold, else which one fails.
-std::string check_moving_hit(const Segment& s, const Mesh& mesh, const RigidTransform& m0,
-                             const RigidTransform& m1, int index, double t, const Vec3& point, double tolerance);
+std::string check_moving_hit(const Segment& s, const Mesh& mesh, const RigidTransform& m0, const RigidTransform& m1,
+                             int index, double t, const Vec3& point, double tolerance);
 
 }  // namespace oracle

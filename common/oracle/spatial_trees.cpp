@@ -122,10 +122,10 @@ int point_in_solid(const Vec3& p, const Mesh& closed) {
   }
   // Directions with unrelated dyadic components: a ray through an edge or a vertex is a
   // coincidence that the next direction will not repeat.
-  static const Vec3 directions[] = {{1, 0.3134765625, 0.0712890625},   {-0.4482421875, 1, 0.1962890625},
-                                    {0.2548828125, -0.6728515625, 1},   {-1, -0.1103515625, 0.5830078125},
-                                    {0.8623046875, 0.4189453125, -1},   {0.0380859375, -1, -0.7451171875},
-                                    {1, -0.8935546875, 0.6611328125},   {-0.5322265625, 0.9716796875, -1}};
+  static const Vec3 directions[] = {{1, 0.3134765625, 0.0712890625},  {-0.4482421875, 1, 0.1962890625},
+                                    {0.2548828125, -0.6728515625, 1}, {-1, -0.1103515625, 0.5830078125},
+                                    {0.8623046875, 0.4189453125, -1}, {0.0380859375, -1, -0.7451171875},
+                                    {1, -0.8935546875, 0.6611328125}, {-0.5322265625, 0.9716796875, -1}};
   for (const Vec3& d : directions) {
     // r: far enough to be outside the mesh's box (the rounding of r does not matter).
     const Vec3 r = p + 4 * reach * d;
@@ -146,7 +146,8 @@ bool side_in_doubt(const Triangle& t, const Vec3& x, double delta) {
   if (twice_area == 0) return true;
   const Vec3 unit = n / twice_area;
   const Vec3 lambda = Vec3((t.v1 - x).cross(t.v2 - x).dot(unit), (t.v2 - x).cross(t.v0 - x).dot(unit),
-                           (t.v0 - x).cross(t.v1 - x).dot(unit)) / twice_area;
+                           (t.v0 - x).cross(t.v1 - x).dot(unit)) /
+                      twice_area;
   const double eps = std::sqrt(3.0) * delta;
   return std::abs((x - t.v0).dot(unit)) <= 2 * eps * (1 + lambda.cwiseAbs().sum());
 }

@@ -1,8 +1,8 @@
 #include "common/oracle/sphere_sweeps.h"
 #include "common/oracle/kernel.h"
 
-#include <CGAL/Interval_nt.h>
 #include <CGAL/Bbox_3.h>
+#include <CGAL/Interval_nt.h>
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
@@ -46,14 +46,12 @@ template <class K> typename K::Point_3 point_of(const Vec3& v) { return {v.x(), 
 template <class K> typename K::Vector_3 vector_of(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
 template <class K> typename K::Segment_3 segment_of(const Segment& s) { return {point_of<K>(s.a), point_of<K>(s.b)}; }
 
-template <class K>
-typename K::FT distance2(const typename K::Point_3& p, const typename K::Segment_3& s) {
+template <class K> typename K::FT distance2(const typename K::Point_3& p, const typename K::Segment_3& s) {
   if (s.is_degenerate()) return CGAL::squared_distance(p, s.source());
   return CGAL::squared_distance(p, s);
 }
 
-template <class K>
-typename K::FT distance2(const typename K::Segment_3& s0, const typename K::Segment_3& s1) {
+template <class K> typename K::FT distance2(const typename K::Segment_3& s0, const typename K::Segment_3& s1) {
   if (s0.is_degenerate()) return distance2<K>(s0.source(), s1);
   if (s1.is_degenerate()) return distance2<K>(s1.source(), s0);
   return CGAL::squared_distance(s0, s1);
@@ -66,15 +64,15 @@ typename K::FT distance2(const typename K::Segment_3& s0, const typename K::Segm
 //    |     v ^   |        triangles: c0 c1 c3 and c0 c3 c2
 //    |       +-> u
 //    c0 ------- c1
-template <class K>
-struct RectangleOf {
+template <class K> struct RectangleOf {
   using P = typename K::Point_3;
   std::array<P, 4> corner;
   bool flat = false;  // half_u == 0 or half_v == 0: a segment (or a point)
 
   explicit RectangleOf(const Rectangle& r) {
     const P c = point_of<K>(r.center);
-    const typename K::Vector_3 u = vector_of<K>(r.u) * typename K::FT(r.half_u), v = vector_of<K>(r.v) * typename K::FT(r.half_v);
+    const typename K::Vector_3 u = vector_of<K>(r.u) * typename K::FT(r.half_u),
+                               v = vector_of<K>(r.v) * typename K::FT(r.half_v);
     for (int k = 0; k < 4; ++k) corner[k] = c + (k & 1 ? u : -u) + (k & 2 ? v : -v);
     flat = r.half_u == 0 || r.half_v == 0;
   }
@@ -85,7 +83,8 @@ struct RectangleOf {
     return {corner[from[i]], corner[to[i]]};
   }
   typename K::Triangle_3 triangle(int i) const {
-    return i == 0 ? typename K::Triangle_3(corner[0], corner[1], corner[3]) : typename K::Triangle_3(corner[0], corner[3], corner[2]);
+    return i == 0 ? typename K::Triangle_3(corner[0], corner[1], corner[3])
+                  : typename K::Triangle_3(corner[0], corner[3], corner[2]);
   }
 };
 
@@ -104,8 +103,7 @@ class Minimum {
  public:
   // a, b: the two objects in interval arithmetic (for their boxes and a vertex each);
   // bound(): the squared distance in interval arithmetic (may throw); exact(): exactly.
-  template <class A, class B, class Bound, class Exact>
-  void add(const A& a, const B& b, Bound&& bound, Exact&& exact) {
+  template <class A, class B, class Bound, class Exact> void add(const A& a, const B& b, Bound&& bound, Exact&& exact) {
     CGAL::Protect_FPU_rounding<true> rounding;
     Item item;
     item.lower = box_gap2(a.bbox(), b.bbox());
@@ -125,8 +123,7 @@ class Minimum {
       try {
         meet = bound();
         certain = true;
-      } catch (const CGAL::Uncertain_conversion_exception&) {
-      }
+      } catch (const CGAL::Uncertain_conversion_exception&) {}
     }
     if (!certain) meet = exact();
     zero_ = zero_ || meet;
@@ -184,7 +181,8 @@ class Minimum {
   static double box_gap2(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b) {
     Interval sum(0);
     for (int k = 0; k < 3; ++k) {
-      const double gap = std::max({0.0, -(Interval(a.max(k)) - Interval(b.min(k))).sup(), -(Interval(b.max(k)) - Interval(a.min(k))).sup()});
+      const double gap = std::max(
+          {0.0, -(Interval(a.max(k)) - Interval(b.min(k))).sup(), -(Interval(b.max(k)) - Interval(a.min(k))).sup()});
       sum += CGAL::square(Interval(gap));
     }
     return sum.inf();
@@ -195,8 +193,7 @@ class Minimum {
       try {
         i.interval = i.bound();
         return;
-      } catch (const CGAL::Uncertain_conversion_exception&) {
-      }
+      } catch (const CGAL::Uncertain_conversion_exception&) {}
     }
     i.value = i.exact();
     i.interval = CGAL::to_interval(*i.value);
@@ -211,13 +208,17 @@ struct PointSource {
   Vec3 p = Vec3::Zero();
   Rectangle rect;
   int corner = -1;  // -1: p itself
-  template <class K> typename K::Point_3 get() const { return corner < 0 ? point_of<K>(p) : RectangleOf<K>(rect).corner[corner]; }
+  template <class K> typename K::Point_3 get() const {
+    return corner < 0 ? point_of<K>(p) : RectangleOf<K>(rect).corner[corner];
+  }
 };
 struct SegmentSource {
   Segment s;
   Rectangle rect;
   int side = -1;  // -1: s itself
-  template <class K> typename K::Segment_3 get() const { return side < 0 ? segment_of<K>(s) : RectangleOf<K>(rect).side(side); }
+  template <class K> typename K::Segment_3 get() const {
+    return side < 0 ? segment_of<K>(s) : RectangleOf<K>(rect).side(side);
+  }
   PointSource end(int k) const {
     static const int from[4] = {0, 1, 3, 2}, to[4] = {1, 3, 2, 0};
     if (side < 0) return {k == 0 ? s.a : s.b, {}, -1};
@@ -236,14 +237,16 @@ void add_point_rectangle(Minimum& m, const PointSource& p, const Rectangle& r) {
   const RectangleOf<IK> ri(r);
   if (flat(r)) {
     const IK::Segment_3 d = ri.diagonal();
-    m.add(pi, d, [pi, d] { return distance2<IK>(pi, d); },
-          [p, r] { return distance2<Epeck>(p.get<Epeck>(), RectangleOf<Epeck>(r).diagonal()); });
+    m.add(
+        pi, d, [pi, d] { return distance2<IK>(pi, d); },
+        [p, r] { return distance2<Epeck>(p.get<Epeck>(), RectangleOf<Epeck>(r).diagonal()); });
     return;
   }
   for (int i = 0; i < 2; ++i) {
     const IK::Triangle_3 t = ri.triangle(i);
-    m.add(pi, t, [pi, t] { return CGAL::squared_distance(pi, t); },
-          [p, r, i] { return CGAL::squared_distance(p.get<Epeck>(), RectangleOf<Epeck>(r).triangle(i)); });
+    m.add(
+        pi, t, [pi, t] { return CGAL::squared_distance(pi, t); },
+        [p, r, i] { return CGAL::squared_distance(p.get<Epeck>(), RectangleOf<Epeck>(r).triangle(i)); });
   }
 }
 
@@ -261,14 +264,16 @@ void add_segment_rectangle(Minimum& m, const SegmentSource& s, const Rectangle& 
   const RectangleOf<IK> ri(r);
   if (flat(r)) {
     const IK::Segment_3 d = ri.diagonal();
-    m.add(si, d, [si, d] { return distance2<IK>(si, d); },
-          [s, r] { return distance2<Epeck>(s.get<Epeck>(), RectangleOf<Epeck>(r).diagonal()); });
+    m.add(
+        si, d, [si, d] { return distance2<IK>(si, d); },
+        [s, r] { return distance2<Epeck>(s.get<Epeck>(), RectangleOf<Epeck>(r).diagonal()); });
     return;
   }
   for (int i = 0; i < 2; ++i) {
     const IK::Triangle_3 t = ri.triangle(i);
-    m.meets(si, t, [&] { return bool(CGAL::do_intersect(si, t)); },
-            [&] { return bool(CGAL::do_intersect(s.get<Epeck>(), RectangleOf<Epeck>(r).triangle(i))); });
+    m.meets(
+        si, t, [&] { return bool(CGAL::do_intersect(si, t)); },
+        [&] { return bool(CGAL::do_intersect(s.get<Epeck>(), RectangleOf<Epeck>(r).triangle(i))); });
   }
   if (m.zero()) return;
   if (ends) {
@@ -277,8 +282,9 @@ void add_segment_rectangle(Minimum& m, const SegmentSource& s, const Rectangle& 
   }
   for (int i = 0; i < 4; ++i) {
     const IK::Segment_3 side = ri.side(i);
-    m.add(si, side, [si, side] { return distance2<IK>(si, side); },
-          [s, r, i] { return distance2<Epeck>(s.get<Epeck>(), RectangleOf<Epeck>(r).side(i)); });
+    m.add(
+        si, side, [si, side] { return distance2<IK>(si, side); },
+        [s, r, i] { return distance2<Epeck>(s.get<Epeck>(), RectangleOf<Epeck>(r).side(i)); });
   }
 }
 
@@ -398,16 +404,20 @@ int SquaredDistance::compare(double l0, double l1, double l2) const {
 
 SquaredDistance squared_distance(const Vec3& p, const Vec3& q) {
   const IK::Point_3 a = point_of<IK>(p), b = point_of<IK>(q);
-  return make(a, b, [a, b] { return CGAL::squared_distance(a, b); }, [p, q] { return CGAL::squared_distance(exact(p), exact(q)); });
+  return make(
+      a, b, [a, b] { return CGAL::squared_distance(a, b); },
+      [p, q] { return CGAL::squared_distance(exact(p), exact(q)); });
 }
 SquaredDistance squared_distance(const Vec3& p, const Segment& s) {
   const IK::Point_3 a = point_of<IK>(p);
   const IK::Segment_3 b = segment_of<IK>(s);
-  return make(a, b, [a, b] { return distance2<IK>(a, b); }, [p, s] { return distance2<Epeck>(exact(p), exact(s)); });
+  return make(
+      a, b, [a, b] { return distance2<IK>(a, b); }, [p, s] { return distance2<Epeck>(exact(p), exact(s)); });
 }
 SquaredDistance squared_distance(const Segment& s0, const Segment& s1) {
   const IK::Segment_3 a = segment_of<IK>(s0), b = segment_of<IK>(s1);
-  return make(a, b, [a, b] { return distance2<IK>(a, b); }, [s0, s1] { return distance2<Epeck>(exact(s0), exact(s1)); });
+  return make(
+      a, b, [a, b] { return distance2<IK>(a, b); }, [s0, s1] { return distance2<Epeck>(exact(s0), exact(s1)); });
 }
 SquaredDistance squared_distance(const Vec3& p, const Rectangle& r) {
   Minimum m;
@@ -500,7 +510,9 @@ double first_contact(const BoxPlaneSweep& in, double t_end) {
 }
 
 // The moving centre c + t v, exactly.
-Point centre_at(const SphereCapsuleSweep& in, const FT& t) { return exact(in.sphere.center) + exact_vector(in.velocity) * t; }
+Point centre_at(const SphereCapsuleSweep& in, const FT& t) {
+  return exact(in.sphere.center) + exact_vector(in.velocity) * t;
+}
 FT grown_radius(const SphereCapsuleSweep& in) { return FT(in.sphere.radius) + FT(in.capsule.radius); }
 
 int gap_sign(const SphereCapsuleSweep& in, double t, double extra) {

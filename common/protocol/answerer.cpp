@@ -3,17 +3,17 @@
 
 #include <nlohmann/json.hpp>
 
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
-#include <fcntl.h>
-#include <poll.h>
 #include <unordered_set>
-#include <sys/prctl.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace labkit::remote {
 
@@ -71,14 +71,22 @@ class Frames {
 
 std::string signal_words(int s) {
   switch (s) {
-    case SIGSEGV: return "segmentation fault: a read or write through a bad pointer or past an array's end";
-    case SIGFPE: return "floating-point exception: an integer division by zero";
-    case SIGABRT: return "aborted: a failed assert(), or an exception nobody caught";
-    case SIGBUS: return "bus error: a misaligned or unmapped memory access";
-    case SIGILL: return "illegal instruction";
-    case SIGKILL: return "killed (SIGKILL): out of memory, or a limit was reached";
-    case SIGXCPU: return "killed: the CPU-time limit was reached";
-    case SIGXFSZ: return "killed: it wrote a file beyond the size limit";
+    case SIGSEGV:
+      return "segmentation fault: a read or write through a bad pointer or past an array's end";
+    case SIGFPE:
+      return "floating-point exception: an integer division by zero";
+    case SIGABRT:
+      return "aborted: a failed assert(), or an exception nobody caught";
+    case SIGBUS:
+      return "bus error: a misaligned or unmapped memory access";
+    case SIGILL:
+      return "illegal instruction";
+    case SIGKILL:
+      return "killed (SIGKILL): out of memory, or a limit was reached";
+    case SIGXCPU:
+      return "killed: the CPU-time limit was reached";
+    case SIGXFSZ:
+      return "killed: it wrote a file beyond the size limit";
   }
   return std::string("killed by signal ") + std::to_string(s) + " (" + strsignal(s) + ")";
 }
@@ -148,7 +156,8 @@ bool Answerer::start() {
     const int in = fcntl(requests[0], F_DUPFD_CLOEXEC, 10), out = fcntl(answers[1], F_DUPFD_CLOEXEC, 10);
     if (in < 0 || out < 0 || dup2(in, 3) != 3 || dup2(out, 4) != 4) _exit(127);
     execvpe(args[0], args.data(), environment);
-    const std::string why = std::string("labkit: cannot run the code under test (") + argv_[0] + "): " + strerror(errno) + "\n";
+    const std::string why =
+        std::string("labkit: cannot run the code under test (") + argv_[0] + "): " + strerror(errno) + "\n";
     if (write(2, why.data(), why.size()) < 0) {}
     _exit(127);
   }
@@ -218,8 +227,10 @@ std::string Answerer::ended_how() {
     const int code = info.si_status;
     if (info.si_code == CLD_KILLED || info.si_code == CLD_DUMPED) how = signal_words(code);
     // A confinement wrapper reports its child's signal N as exit status 128 + N.
-    else if (code > 128 && code < 128 + 65) how = signal_words(code - 128);
-    else if (code == 127) how = "its program could not be started (" + argv_[0] + ": the reason is in the output above)";
+    else if (code > 128 && code < 128 + 65)
+      how = signal_words(code - 128);
+    else if (code == 127)
+      how = "its program could not be started (" + argv_[0] + ": the reason is in the output above)";
     else
       how = "the process exited with status " + std::to_string(code) +
             " in the middle of a call (exit(), quick_exit() or _exit() in the code?)";
@@ -320,7 +331,8 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
       continue;
     }
     stop(true);
-    const std::string printed = output_tail_.substr(output_tail_.size() - std::min<std::size_t>(output_tail_.size(), 600));
+    const std::string printed =
+        output_tail_.substr(output_tail_.size() - std::min<std::size_t>(output_tail_.size(), 600));
     if (greeted_ || kind != Response::Kind::crashed) out[received++] = {kind, {}, problem, printed};
   }
   return out;

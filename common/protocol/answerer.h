@@ -21,11 +21,11 @@
 // that call's answer says so, the answerer is started again, and the rest go on.
 #pragma once
 
+#include <sys/types.h>
 #include <chrono>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
-#include <sys/types.h>
 #include <unordered_map>
 #include <vector>
 
@@ -96,11 +96,11 @@ class Answerer {
 };
 
 // Batches, for the harness; they cost nothing in a process that never calls the answerer.
-void begin_batch();       // calls whose answer is not known yet are recorded, and defer
-bool flush();             // sends them (false: there were none) and keeps the answers
-void stop_deferring();    // calls not known yet are asked one by one again
-void end_batch();         // forgets the answers
-void new_query();         // a new query: the time-out budget starts afresh
+void begin_batch();     // calls whose answer is not known yet are recorded, and defer
+bool flush();           // sends them (false: there were none) and keeps the answers
+void stop_deferring();  // calls not known yet are asked one by one again
+void end_batch();       // forgets the answers
+void new_query();       // a new query: the time-out budget starts afresh
 
 // How many time-outs a query tolerates before its remaining calls are not run.
 constexpr int kTimeoutsPerQuery = 2;

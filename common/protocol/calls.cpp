@@ -2,16 +2,16 @@
 
 #include "common/given/segment_triangle.h"
 
+#include <unistd.h>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <typeinfo>
-#include <unistd.h>
 
 namespace labkit::remote {
 
 namespace {
-std::vector<double> samples;        // the answerer's, for the current call
+std::vector<double> samples;          // the answerer's, for the current call
 std::vector<double>* sink = nullptr;  // the judge's, for the next answer
 }  // namespace
 
@@ -28,9 +28,11 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
                                   (response.output.empty() ? "" : "\nwhat it printed last:\n" + response.output));
     case Response::Kind::timed_out:
       throw Failed(kNoAnswer, "your code did not finish this call: " + response.detail +
-                                    ". Every loop needs a bound that the header's rules guarantee");
-    case Response::Kind::broken: throw Failed("an answer that cannot be read", response.detail);
-    case Response::Kind::answered: break;
+                                  ". Every loop needs a bound that the header's rules guarantee");
+    case Response::Kind::broken:
+      throw Failed("an answer that cannot be read", response.detail);
+    case Response::Kind::answered:
+      break;
   }
   wire::Reader r(response.bytes);
   Status status;
@@ -49,8 +51,8 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
     }
     wire::get(r, message);
   } catch (const wire::Error& e) {
-    throw Failed("an answer that cannot be read", std::string("the reply is malformed: ") + e.what() +
-                                                      " (does the code write to file descriptor 4?)");
+    throw Failed("an answer that cannot be read",
+                 std::string("the reply is malformed: ") + e.what() + " (does the code write to file descriptor 4?)");
   }
   switch (status) {
     case Status::not_implemented: {
@@ -61,14 +63,17 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
     }
     case Status::threw:
       if (message == "std::bad_alloc")
-        throw Failed("an exception: std::bad_alloc", "your code ran out of memory during this call: an allocation "
-                                                     "too large for the memory limit, or one that never stops growing?");
+        throw Failed("an exception: std::bad_alloc",
+                     "your code ran out of memory during this call: an allocation "
+                     "too large for the memory limit, or one that never stops growing?");
       throw std::runtime_error(message);
-    case Status::rejected: throw std::invalid_argument(message);
+    case Status::rejected:
+      throw std::invalid_argument(message);
     case Status::unknown_call:
       throw std::logic_error("kit error: the answerer cannot run " + id + ": " + message +
                              " (is it built from the same kit as the tests?)");
-    default: throw Failed("an answer that cannot be read", "the reply has an unknown status");
+    default:
+      throw Failed("an answer that cannot be read", "the reply has an unknown status");
   }
 }
 

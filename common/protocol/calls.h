@@ -71,17 +71,14 @@ wire::Reader open_reply(const std::string& id, const Response& response);
 }  // namespace detail
 
 // A non-const reference argument comes back with the answer; the others only go.
-template <class P, class A>
-void get_out(wire::Reader& r, A& a) {
+template <class P, class A> void get_out(wire::Reader& r, A& a) {
   if constexpr (is_out<P>) wire::get(r, a);
 }
-template <class P, class A>
-void put_out(wire::Writer& w, const A& a) {
+template <class P, class A> void put_out(wire::Writer& w, const A& a) {
   if constexpr (is_out<P>) wire::put(w, a);
 }
 
-template <class R, class... P>
-R call(const char* id, P... args) {
+template <class R, class... P> R call(const char* id, P... args) {
   wire::Writer w;
   wire::put(w, std::string(id));
   (wire::put(w, args), ...);
@@ -122,11 +119,9 @@ void run_call(R (*function)(P...), wire::Reader& in, wire::Writer& out, std::ind
   (put_out<P>(out, std::get<I>(args)), ...);
 }
 
-template <class R, class... P>
-Handler handler(R (*function)(P...)) {
-  return [function](wire::Reader& in, wire::Writer& out) {
-    run_call(function, in, out, std::index_sequence_for<P...>{});
-  };
+template <class R, class... P> Handler handler(R (*function)(P...)) {
+  return
+      [function](wire::Reader& in, wire::Writer& out) { run_call(function, in, out, std::index_sequence_for<P...>{}); };
 }
 
 // The answerer's main loop: greets, then answers calls until its input ends.
@@ -139,20 +134,18 @@ int serve(const Table& table);
 #define LABKIT_CALL_ID(R, name, params) #name #params
 
 // In the judge's process: the function, defined as a call to the answerer.
-#define LABKIT_DEFINE_CALL(R, name, params)                                                   \
-  R name(LABKIT_NAMED params) {                                               \
-    return ::labkit::remote::call<R, LABKIT_UNPAREN params>(                 \
-        LABKIT_CALL_ID(R, name, params), LABKIT_ARGS params);                                \
+#define LABKIT_DEFINE_CALL(R, name, params)                                                                       \
+  R name(LABKIT_NAMED params) {                                                                                   \
+    return ::labkit::remote::call<R, LABKIT_UNPAREN params>(LABKIT_CALL_ID(R, name, params), LABKIT_ARGS params); \
   }
-#define LABKIT_DEFINE_METHOD(Class, name, params)                                             \
-  void Class::name(LABKIT_NAMED params) {                                                    \
-    ::labkit::remote::call<void, Class&, LABKIT_UNPAREN params>(#Class "::" #name #params, *this, \
-                                                                  LABKIT_ARGS params);       \
+#define LABKIT_DEFINE_METHOD(Class, name, params)                                                                      \
+  void Class::name(LABKIT_NAMED params) {                                                                              \
+    ::labkit::remote::call<void, Class&, LABKIT_UNPAREN params>(#Class "::" #name #params, *this, LABKIT_ARGS params); \
   }
 
 // In the answerer: the table entry that runs the student's function.
 #define LABKIT_TABLE_CALL(R, name, params) \
   table[LABKIT_CALL_ID(R, name, params)] = ::labkit::remote::handler<R, LABKIT_UNPAREN params>(&name);
-#define LABKIT_TABLE_METHOD(Class, name, params)                                                                 \
-  table[#Class "::" #name #params] = ::labkit::remote::handler<void, Class&, LABKIT_UNPAREN params>(            \
+#define LABKIT_TABLE_METHOD(Class, name, params)                                                     \
+  table[#Class "::" #name #params] = ::labkit::remote::handler<void, Class&, LABKIT_UNPAREN params>( \
       +[](Class& self, LABKIT_NAMED params) { self.name(LABKIT_ARGS params); });

@@ -18,8 +18,7 @@ template <class T> constexpr bool is_list<std::vector<T>> = true;
 template <class T> constexpr bool is_record = std::is_class_v<T> && !std::is_same_v<T, std::string>;
 
 // A value as JSON: a record (a struct with fields()) as an object, keyed by its fields.
-template <class T>
-json write(const T& value) {
+template <class T> json write(const T& value) {
   if constexpr (is_optional<T>) {
     return value ? write(*value) : json(nullptr);
   } else if constexpr (is_list<T>) {
@@ -37,8 +36,7 @@ json write(const T& value) {
 
 // `json` into `out`, or an error naming the place (`where`: "query 0's \"failure\"") that
 // is missing, misspelt or of another type.
-template <class T>
-void read(const json& j, T& out, const std::string& where) {
+template <class T> void read(const json& j, T& out, const std::string& where) {
   if constexpr (is_optional<T>) {
     if (j.is_null()) return out.reset();
     read(j, out.emplace(), where);

@@ -27,8 +27,13 @@ struct Failure {
   int shrinks = 0;       // how often RapidCheck shrank it
 };
 template <class V> void fields(Failure& f, V&& v) {
-  v("title", f.title); v("input", f.input); v("expected", f.expected); v("got", f.got); v("why", f.why);
-  v("replay", f.replay); v("shrinks", f.shrinks);
+  v("title", f.title);
+  v("input", f.input);
+  v("expected", f.expected);
+  v("got", f.got);
+  v("why", f.why);
+  v("replay", f.replay);
+  v("shrinks", f.shrinks);
 }
 
 // One query of one test case: its examples, or its random cases.
@@ -40,13 +45,20 @@ struct Query {
   int passed = 0;
   int ambiguous = 0;
   int failed = 0;
-  std::string not_implemented;  // the stub's message, when a stub was hit
-  std::string error;            // a failure of the harness itself
+  std::string not_implemented;     // the stub's message, when a stub was hit
+  std::string error;               // a failure of the harness itself
   std::optional<Failure> failure;  // null in JSON when every case passed
 };
 template <class V> void fields(Query& q, V&& v) {
-  v("test_case", q.test_case); v("query", q.query); v("kind", q.kind); v("cases", q.cases); v("passed", q.passed);
-  v("ambiguous", q.ambiguous); v("failed", q.failed); v("not_implemented", q.not_implemented); v("error", q.error);
+  v("test_case", q.test_case);
+  v("query", q.query);
+  v("kind", q.kind);
+  v("cases", q.cases);
+  v("passed", q.passed);
+  v("ambiguous", q.ambiguous);
+  v("failed", q.failed);
+  v("not_implemented", q.not_implemented);
+  v("error", q.error);
   v("failure", q.failure);
 }
 
@@ -60,7 +72,11 @@ struct TestCase {
   std::string not_implemented;        // set when a stub was reached
 };
 template <class V> void fields(TestCase& t, V&& v) {
-  v("name", t.name); v("tags", t.tags); v("passed", t.passed); v("ended", t.ended); v("failures", t.failures);
+  v("name", t.name);
+  v("tags", t.tags);
+  v("passed", t.passed);
+  v("ended", t.ended);
+  v("failures", t.failures);
   v("not_implemented", t.not_implemented);
 }
 
@@ -72,7 +88,10 @@ struct Step {
   std::vector<Query> queries;
 };
 template <class V> void fields(Step& s, V&& v) {
-  v("seed", s.seed); v("cases_per_query", s.cases_per_query); v("finished", s.finished); v("test_cases", s.test_cases);
+  v("seed", s.seed);
+  v("cases_per_query", s.cases_per_query);
+  v("finished", s.finished);
+  v("test_cases", s.test_cases);
   v("queries", s.queries);
 }
 

@@ -30,11 +30,9 @@ struct Error : std::runtime_error {
 
 // Matches any field list; used only to detect whether a type has one.
 struct AnyField {
-  template <class F>
-  void operator()(const char*, F&) const {}
+  template <class F> void operator()(const char*, F&) const {}
 };
-template <class T>
-using HasFields = decltype(fields(std::declval<T&>(), AnyField{}));
+template <class T> using HasFields = decltype(fields(std::declval<T&>(), AnyField{}));
 
 class Writer {
  public:
@@ -50,8 +48,9 @@ class Reader {
  public:
   explicit Reader(const std::string& bytes) : at_(bytes.data()), end_(bytes.data() + bytes.size()) {}
   void raw(void* data, std::size_t size) {
-    if (size > left()) throw Error("a message ended early (" + std::to_string(left()) + " bytes left, " +
-                                   std::to_string(size) + " needed)");
+    if (size > left())
+      throw Error("a message ended early (" + std::to_string(left()) + " bytes left, " + std::to_string(size) +
+                  " needed)");
     std::memcpy(data, at_, size);
     at_ += size;
   }
@@ -78,8 +77,7 @@ template <class T, std::enable_if_t<std::is_arithmetic_v<T> || std::is_enum_v<T>
 void put(Writer& w, const T& x) {
   w.raw(&x, sizeof x);
 }
-template <class T, std::enable_if_t<std::is_arithmetic_v<T> || std::is_enum_v<T>, int> = 0>
-void get(Reader& r, T& x) {
+template <class T, std::enable_if_t<std::is_arithmetic_v<T> || std::is_enum_v<T>, int> = 0> void get(Reader& r, T& x) {
   r.raw(&x, sizeof x);
   if constexpr (std::is_same_v<T, bool>) {
     unsigned char byte;
@@ -100,12 +98,10 @@ inline void get(Reader& r, std::string& s) {
 
 // ---- Eigen: fixed-size matrices and rigid transforms, their doubles in order ----------
 
-template <int R, int C, int O>
-void put(Writer& w, const Eigen::Matrix<double, R, C, O, R, C>& m) {
+template <int R, int C, int O> void put(Writer& w, const Eigen::Matrix<double, R, C, O, R, C>& m) {
   w.raw(m.data(), sizeof(double) * R * C);
 }
-template <int R, int C, int O>
-void get(Reader& r, Eigen::Matrix<double, R, C, O, R, C>& m) {
+template <int R, int C, int O> void get(Reader& r, Eigen::Matrix<double, R, C, O, R, C>& m) {
   r.raw(m.data(), sizeof(double) * R * C);
 }
 inline void put(Writer& w, const RigidTransform& m) { put(w, m.matrix()); }
@@ -115,16 +111,9 @@ inline void get(Reader& r, RigidTransform& m) { get(r, m.matrix()); }
 
 // A type with no field list (a class with private state, a std::function) joins in by
 // specialising Codec<T> with static put and get (see tests/04_bisection.wire.h).
-template <class T>
-struct Codec {};
-template <class T>
-auto put(Writer& w, const T& x) -> decltype(Codec<T>::put(w, x)) {
-  Codec<T>::put(w, x);
-}
-template <class T>
-auto get(Reader& r, T& x) -> decltype(Codec<T>::get(r, x)) {
-  Codec<T>::get(r, x);
-}
+template <class T> struct Codec {};
+template <class T> auto put(Writer& w, const T& x) -> decltype(Codec<T>::put(w, x)) { Codec<T>::put(w, x); }
+template <class T> auto get(Reader& r, T& x) -> decltype(Codec<T>::get(r, x)) { Codec<T>::get(r, x); }
 
 template <class T, std::size_t N> void put(Writer& w, const std::array<T, N>& xs);
 template <class T, std::size_t N> void get(Reader& r, std::array<T, N>& xs);
@@ -158,34 +147,28 @@ void get(Reader& r, Box& b);
 void put(Writer& w, const Aabb& b);
 void get(Reader& r, Aabb& b);
 
-template <class T, std::size_t N>
-void put(Writer& w, const std::array<T, N>& xs) {
+template <class T, std::size_t N> void put(Writer& w, const std::array<T, N>& xs) {
   for (const T& x : xs) put(w, x);
 }
-template <class T, std::size_t N>
-void get(Reader& r, std::array<T, N>& xs) {
+template <class T, std::size_t N> void get(Reader& r, std::array<T, N>& xs) {
   for (T& x : xs) get(r, x);
 }
-template <class T>
-void put(Writer& w, const std::vector<T>& xs) {
+template <class T> void put(Writer& w, const std::vector<T>& xs) {
   const std::uint64_t n = xs.size();
   w.raw(&n, sizeof n);
   for (const T& x : xs) put(w, x);
 }
-template <class T>
-void get(Reader& r, std::vector<T>& xs) {
+template <class T> void get(Reader& r, std::vector<T>& xs) {
   // Every element takes at least one byte on the wire.
   xs.resize(r.count(1));
   for (T& x : xs) get(r, x);
 }
 
 // Structs that list their fields.
-template <class T, class>
-void put(Writer& w, const T& x) {
+template <class T, class> void put(Writer& w, const T& x) {
   fields(const_cast<T&>(x), [&](const char*, auto& field) { put(w, field); });
 }
-template <class T, class>
-void get(Reader& r, T& x) {
+template <class T, class> void get(Reader& r, T& x) {
   fields(x, [&](const char*, auto& field) { get(r, field); });
 }
 

@@ -107,9 +107,9 @@ std::vector<Triangle> split_triangle(const Triangle& triangle, const Plane& plan
 // A perspective camera, as OpenGL's gluLookAt and gluPerspective take it.
 struct Camera {
   Vec3 eye = Vec3::Zero();
-  Vec3 forward = -Vec3::UnitZ();  // where it looks; any length
-  Vec3 up = Vec3::UnitY();        // any length, not parallel to forward; the image's up is
-                                  // the part of it perpendicular to forward
+  Vec3 forward = -Vec3::UnitZ();      // where it looks; any length
+  Vec3 up = Vec3::UnitY();            // any length, not parallel to forward; the image's up is
+                                      // the part of it perpendicular to forward
   double fov_y = 1.5707963267948966;  // the vertical field of view, top to bottom, radians
   double aspect = 1.0;                // image width / height
   double near = 1.0;                  // distances along forward, 0 < near < far

@@ -71,8 +71,7 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
 }
 
 // L02S6: the delta matrix.
-MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0,
-                         const RigidTransform& m1) {
+MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0, const RigidTransform& m1) {
   (void)segment;
   (void)mesh;
   (void)m0;
@@ -81,8 +80,7 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
 }
 
 // L02S7: vertex paths against faces, both ways, and swept edges against edges.
-MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b,
-                                        const Vec3& velocity_b) {
+MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b, const Vec3& velocity_b) {
   (void)a;
   (void)velocity_a;
   (void)b;

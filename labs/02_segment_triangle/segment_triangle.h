@@ -112,7 +112,7 @@ SegmentTriangleHit find_segment_triangle(const Segment& segment, const Triangle&
 
 struct MeshHit {
   bool hit = false;
-  int triangle = -1;                // which triangle: an index into mesh.triangles
+  int triangle = -1;  // which triangle: an index into mesh.triangles
   double t = 0.0;
   Vec3 point = Vec3::Zero();
   Vec3 barycentric = Vec3::Zero();
@@ -136,8 +136,7 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh);
 // the mesh at m1: t along that path (in the mesh's frame), the point as the contact on
 // the mesh at its end pose (m1 times the point found in the mesh's frame; not a point
 // of the world segment a-b, nor of the mesh at m0), the normal turned by m1.
-MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0,
-                         const RigidTransform& m1);
+MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0, const RigidTransform& m1);
 
 // ---- Step 7 (L02S7): moving mesh against moving mesh -------------------------------
 
@@ -182,8 +181,7 @@ struct MeshContact {
   Vec3 point = Vec3::Zero();  // a point where they touch then, in the world
 };
 
-MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b,
-                                        const Vec3& velocity_b);
+MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b, const Vec3& velocity_b);
 
 // ---- Step 8 (L02S8): robustness: touching and coplanar -----------------------------
 // No new function: steps 1 to 7 must follow the rules at the top of this file on exact

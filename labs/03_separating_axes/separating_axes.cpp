@@ -59,8 +59,7 @@ bool test_triangles(const Triangle& t0, const Triangle& t1) {
 }
 
 // L03S5: the swept test, with the six axes of table 6.7.
-bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b,
-                       double duration) {
+bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b, double duration) {
   (void)a;
   (void)velocity_a;
   (void)b;

@@ -143,9 +143,9 @@ struct LineIntervals {
   int axis = -1;          // k, the coordinate where |D_k| is largest (ties: either)
   double low0 = 0.0;      // t0's segment in t1's plane, read on coordinate k: low0 <= high0
   double high0 = 0.0;
-  double low1 = 0.0;      // t1's segment in t0's plane: low1 <= high1
+  double low1 = 0.0;  // t1's segment in t0's plane: low1 <= high1
   double high1 = 0.0;
-  bool overlap = false;   // the intervals share a point (ends that touch count)
+  bool overlap = false;  // the intervals share a point (ends that touch count)
 };
 // Its domain (where it is checked, and where it is exact): both triangles with a smallest
 // height at least 1/100 of their longest edge, every vertex at least S/100 away from the
@@ -189,8 +189,7 @@ struct ContactInterval {
 // Do the boxes touch at any time in [0, duration]? A test on the swept boxes: the 15
 // axes, each swept by the motion, and the 6 axes W x A_i, W x B_j of the lecture's
 // table 6.7 (W = velocity_b - velocity_a).
-bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b,
-                       double duration);
+bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b, double duration);
 
 // When do they touch? Equal velocities: [0, duration] if they touch at all. Boxes that
 // touch at a single instant: first == last. duration >= 0 (0: a test at t = 0).

@@ -190,8 +190,8 @@ double smallest_size(const Shape& shape);
 // speed of a relative to b, at most max_speed(a) + max_speed(b) (two bodies each at 3,
 // head on, close at 6). closing_speed returns that sum, each body's max_speed over its
 // own reach, on [t0, t1]. (The fastest body's speed alone is not a bound on it.)
-double closing_speed(const Sphere& a, const StandardMotion& motion_a, const Shape& b,
-                     const StandardMotion& motion_b, double t0, double t1);
+double closing_speed(const Sphere& a, const StandardMotion& motion_a, const Shape& b, const StandardMotion& motion_b,
+                     double t0, double t1);
 
 // The lecture's rule: the speed times the time step must be smaller than the smallest
 // object; for two moving bodies the speed is their closing speed (above). The smallest

@@ -177,7 +177,8 @@ KdHits all_hits(const KdTree& tree, const Segment& segment);
 // one of its pieces; the plane of that piece's triangle is the node's plane. A piece
 // whose triangle lies in that plane (all three vertices on it) stays at the node, facing
 // either way; the pieces of the plane's own triangle always do (rounding may put its
-// vertices a hair off its own plane: they stay anyway, or the build never ends). Any other piece goes front when no vertex is behind, back when no vertex
+// vertices a hair off its own plane: they stay anyway, or the build never ends). Any other
+// piece goes front when no vertex is behind, back when no vertex
 // is in front (vertices on the plane go along), and is split in two when it has vertices
 // strictly on both sides: cut its edges at x = (d_p q - d_q p) / (d_p - d_q), where d is
 // n . (x - v0), and cut the front and back polygons into triangles wound like the
@@ -337,10 +338,10 @@ class SweepAndPrune {
 // children indices in range; not checked: that would cost what the tree saves).
 
 struct ObbNode {
-  Box box;         // holds every triangle of the node's subtree (closed)
-  int left = -1;   // an interior node's children are nodes[left] and nodes[right]; -1: a leaf
+  Box box;        // holds every triangle of the node's subtree (closed)
+  int left = -1;  // an interior node's children are nodes[left] and nodes[right]; -1: a leaf
   int right = -1;
-  int first = 0;   // a leaf's triangles are items[first], ..., items[first + count - 1]
+  int first = 0;  // a leaf's triangles are items[first], ..., items[first + count - 1]
   int count = 0;
 };
 
@@ -368,9 +369,12 @@ inline bool given_boxes_overlap(const Box& a, const Box& b) {
     const double length = u.norm();
     if (!(length > 1e-9)) return false;
     double ra = 0, rb = 0;
-    for (int k = 0; k < 3; ++k) ra += a.half_extents[k] * std::abs(a.axes.col(k).dot(u)), rb += b.half_extents[k] * std::abs(b.axes.col(k).dot(u));
+    for (int k = 0; k < 3; ++k)
+      ra += a.half_extents[k] * std::abs(a.axes.col(k).dot(u)),
+          rb += b.half_extents[k] * std::abs(b.axes.col(k).dot(u));
     const double gap = std::abs(d.dot(u)) - ra - rb;
-    return gap > 1e-12 * (std::abs(d.dot(u)) + ra + rb + length * (a.center.cwiseAbs().maxCoeff() + b.center.cwiseAbs().maxCoeff()));
+    return gap > 1e-12 * (std::abs(d.dot(u)) + ra + rb +
+                          length * (a.center.cwiseAbs().maxCoeff() + b.center.cwiseAbs().maxCoeff()));
   };
   for (int k = 0; k < 3; ++k)
     if (apart_along(a.axes.col(k)) || apart_along(b.axes.col(k))) return false;
@@ -383,7 +387,9 @@ inline bool given_boxes_overlap(const Box& a, const Box& b) {
 inline bool given_triangles_meet(const Triangle& s, const Triangle& t) {
   ++given_triangle_tests();
   for (int k = 0; k < 3; ++k)
-    if (given::segment_triangle({s[k], s[(k + 1) % 3]}, t).hit || given::segment_triangle({t[k], t[(k + 1) % 3]}, s).hit) return true;
+    if (given::segment_triangle({s[k], s[(k + 1) % 3]}, t).hit ||
+        given::segment_triangle({t[k], t[(k + 1) % 3]}, s).hit)
+      return true;
   return false;
 }
 

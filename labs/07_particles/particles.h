@@ -146,8 +146,8 @@ struct Emitter {
 Particle emit(const Emitter& emitter, Random& random);
 
 struct Births {
-  int count = 0;       // particles born in this step
-  double owed = 0.0;   // what is carried to the next step, in [0, 1)
+  int count = 0;      // particles born in this step
+  double owed = 0.0;  // what is carried to the next step, in [0, 1)
 };
 
 // How many particles are born in a step of length dt: rate * dt plus what earlier steps
@@ -191,9 +191,9 @@ Particle verlet_step(const Particle& p, const Forces& forces, double dt);
 
 // A shot from `from` at the given speed: p(t) = from + velocity t + gravity t^2 / 2.
 struct Shot {
-  double angle = 0.0;             // elevation above the horizontal, radians, in (-pi/2, pi/2)
-  Vec3 velocity = Vec3::Zero();   // |velocity| = speed, aimed at the target's side
-  double time = 0.0;              // when it reaches the target: p(time) = target
+  double angle = 0.0;            // elevation above the horizontal, radians, in (-pi/2, pi/2)
+  Vec3 velocity = Vec3::Zero();  // |velocity| = speed, aimed at the target's side
+  double time = 0.0;             // when it reaches the target: p(time) = target
 };
 
 struct Aim {
@@ -220,13 +220,13 @@ Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity)
 // ---- Step 4 (L07S4): the step as a segment against surfaces ------------------------
 
 struct SurfaceHit {
-  bool hit = false;           // false: no hit; the other fields mean nothing
-  int plane = -1;             // first_hit: which plane (an index into scene.planes), or -1
-  int triangle = -1;          // first_hit: which triangle of scene.mesh, or -1
-  double t = 0.0;             // the hit point is a + t (b - a), 0 <= t <= 1
-  Vec3 point = Vec3::Zero();  // that point
-  Vec3 normal = Vec3::Zero(); // unit normal of the surface, pointing to the side the
-                              // particle comes from (a plane: its own normal direction)
+  bool hit = false;            // false: no hit; the other fields mean nothing
+  int plane = -1;              // first_hit: which plane (an index into scene.planes), or -1
+  int triangle = -1;           // first_hit: which triangle of scene.mesh, or -1
+  double t = 0.0;              // the hit point is a + t (b - a), 0 <= t <= 1
+  Vec3 point = Vec3::Zero();   // that point
+  Vec3 normal = Vec3::Zero();  // unit normal of the surface, pointing to the side the
+                               // particle comes from (a plane: its own normal direction)
 };
 
 struct Material {
@@ -241,7 +241,7 @@ struct Scene {
   std::vector<Plane> planes;  // one-sided: solid behind
   Mesh mesh;                  // two-sided triangles
   Material material;
-  int bounce_cap = 4;         // 0 to kMaxBounceCap
+  int bounce_cap = 4;  // 0 to kMaxBounceCap
   // The surfaces' velocity u during the step (collide, step 6): all of them move together,
   // and planes and mesh are given where they are at the end of the step. Zero: a still
   // scene. first_hit and settle take the surfaces where they are (they ignore u).
@@ -260,13 +260,13 @@ SurfaceHit first_hit(const Segment& segment, const Scene& scene);
 // ---- Step 5 (L07S5): impulse with restitution and friction -------------------------
 
 struct Impulse {
-  bool closing = false;               // v_close < 0: the particle moves into the surface
-  double v_close = 0.0;               // (velocity - object_velocity) . normal
-  Vec3 normal_impulse = Vec3::Zero(); // j_n = -(1 + e) m v_close n when closing, else zero
-  Vec3 friction = Vec3::Zero();       // opposes the tangential relative velocity v_t:
-                                      // magnitude min(mu |j_n|, m |v_t|), so it never
-                                      // reverses v_t (zero when not closing or v_t = 0)
-  Vec3 velocity = Vec3::Zero();       // velocity + (normal_impulse + friction) / m
+  bool closing = false;                // v_close < 0: the particle moves into the surface
+  double v_close = 0.0;                // (velocity - object_velocity) . normal
+  Vec3 normal_impulse = Vec3::Zero();  // j_n = -(1 + e) m v_close n when closing, else zero
+  Vec3 friction = Vec3::Zero();        // opposes the tangential relative velocity v_t:
+                                       // magnitude min(mu |j_n|, m |v_t|), so it never
+                                       // reverses v_t (zero when not closing or v_t = 0)
+  Vec3 velocity = Vec3::Zero();        // velocity + (normal_impulse + friction) / m
 };
 
 // A particle of mass m (> 0) with `velocity` meets an object moving with `object_velocity`

@@ -205,9 +205,11 @@ Frustum frustum_from_camera(const Camera& camera) {
   require(camera.forward != Vec3::Zero(), q, "camera.forward must be non-zero, got (0, 0, 0)");
   require(camera.up != Vec3::Zero(), q, "camera.up must be non-zero, got (0, 0, 0)");
   require(camera.forward.normalized().cross(camera.up.normalized()) != Vec3::Zero(), q,
-          "camera.up must not be parallel to camera.forward, got up " + text(camera.up) + " and forward " + text(camera.forward));
+          "camera.up must not be parallel to camera.forward, got up " + text(camera.up) + " and forward " +
+              text(camera.forward));
   require(camera.fov_y > 0 && camera.fov_y < M_PI, q, "camera.fov_y must be in (0, pi), got " + text(camera.fov_y));
-  require(camera.aspect > 0 && std::isfinite(camera.aspect), q, "camera.aspect must be finite and > 0, got " + text(camera.aspect));
+  require(camera.aspect > 0 && std::isfinite(camera.aspect), q,
+          "camera.aspect must be finite and > 0, got " + text(camera.aspect));
   require(camera.near > 0, q, "camera.near must be > 0, got " + text(camera.near));
   require(camera.far > camera.near && std::isfinite(camera.far), q,
           "camera.far must be finite and > near = " + text(camera.near) + ", got " + text(camera.far));
@@ -235,12 +237,14 @@ Frustum frustum_from_camera(const Camera& camera) {
 //   sum of rows 3 and 0. Each of the six inequalities gives one plane this way.
 Frustum frustum_from_matrix(const Mat4& view_projection) {
   require(view_projection.allFinite(), "frustum_from_matrix", "view_projection must be finite");
-  static const char* names[6] = {"left r3 + r0", "right r3 - r0", "bottom r3 + r1", "top r3 - r1", "near r3 + r2", "far r3 - r2"};
+  static const char* names[6] = {"left r3 + r0", "right r3 - r0", "bottom r3 + r1",
+                                 "top r3 - r1",  "near r3 + r2",  "far r3 - r2"};
   const auto plane = [&](int row, double sign) {
     const Vec4 c = (view_projection.row(3) + sign * view_projection.row(row)).transpose();
     const double length = c.head<3>().norm();
     require(length > 0, "frustum_from_matrix",
-            std::string("view_projection: the ") + names[2 * row + (sign < 0)] + " plane's normal (a, b, c) must be non-zero, got (0, 0, 0)");
+            std::string("view_projection: the ") + names[2 * row + (sign < 0)] +
+                " plane's normal (a, b, c) must be non-zero, got (0, 0, 0)");
     return Plane{c.head<3>() / length, c[3] / length};
   };
   Frustum frustum;
@@ -264,16 +268,18 @@ std::vector<Triangle> clip_triangle(const Triangle& triangle, const Frustum& fru
 ClippedMesh clip_mesh(const ColoredMesh& in, const Frustum& frustum) {
   const char* q = "clip_mesh";
   const std::size_t n = in.mesh.vertices.size();
-  require(in.colors.size() == n, q, "mesh.colors must have one colour per vertex: " + std::to_string(in.colors.size()) +
-                                        " colours for " + std::to_string(n) + " vertices");
+  require(in.colors.size() == n, q,
+          "mesh.colors must have one colour per vertex: " + std::to_string(in.colors.size()) + " colours for " +
+              std::to_string(n) + " vertices");
   for (std::size_t i = 0; i < n; ++i) {
     require_point(in.mesh.vertices[i], q, "mesh.mesh.vertices[" + std::to_string(i) + "]");
     require_point(in.colors[i], q, "mesh.colors[" + std::to_string(i) + "]");
   }
   for (std::size_t k = 0; k < in.mesh.size(); ++k)
     for (int i : in.mesh.triangles[k])
-      require(i >= 0 && std::size_t(i) < n, q, "mesh.mesh.triangles[" + std::to_string(k) + "] must index the vertices (0 to " +
-                                                   std::to_string(n) + " - 1), got " + std::to_string(i));
+      require(i >= 0 && std::size_t(i) < n, q,
+              "mesh.mesh.triangles[" + std::to_string(k) + "] must index the vertices (0 to " + std::to_string(n) +
+                  " - 1), got " + std::to_string(i));
   require_frustum(frustum, q);
   ClippedMesh out;
   out.mesh.vertices = in.mesh.vertices;
@@ -291,8 +297,8 @@ ClippedMesh clip_mesh(const ColoredMesh& in, const Frustum& frustum) {
       }
       index[i] = int(out.mesh.vertices.size());
       out.mesh.vertices.push_back(blend(c, t.v0, t.v1, t.v2));
-      out.colors.push_back(blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])],
-                                 in.colors[std::size_t(face[2])]));
+      out.colors.push_back(
+          blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])], in.colors[std::size_t(face[2])]));
     }
     for (int i = 2; i < polygon.size; ++i) {
       out.mesh.triangles.push_back({index[0], index[i - 1], index[i]});

@@ -7,8 +7,8 @@
 // decision, and only they carry rounding error.
 #include "segment_triangle.h"
 
-#include <array>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -47,7 +47,8 @@ void require(const char* query, const Triangle& t) {
 void require(const char* query, const Mesh& mesh) {
   for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
     if (!mesh.vertices[i].allFinite())
-      reject(query, "mesh.vertices[" + std::to_string(i) + "] must have finite coordinates, got " + text(mesh.vertices[i]));
+      reject(query,
+             "mesh.vertices[" + std::to_string(i) + "] must have finite coordinates, got " + text(mesh.vertices[i]));
   for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
     for (int v : mesh.triangles[i])
       if (v < 0 || std::size_t(v) >= mesh.vertices.size())
@@ -202,7 +203,8 @@ Decision decide_coplanar(const Segment& s, const Triangle& tri, const Vec3& n) {
   const Vec2 a = drop(s.a, axis), b = drop(s.b, axis);
   Decision d;
   double t = std::numeric_limits<double>::infinity();
-  if (inside_2d(a, p, turn)) t = 0.0;
+  if (inside_2d(a, p, turn))
+    t = 0.0;
   else
     for (int i = 0; i < 3; ++i) t = std::min(t, first_contact_2d(a, b, p[i], p[(i + 1) % 3]));
   if (!std::isfinite(t)) return d;  // the segment misses the triangle in its plane
@@ -258,10 +260,10 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
   const Vec3 p0 = tri.v0 - s.a, p1 = tri.v1 - s.a, p2 = tri.v2 - s.a;
   const Vec3 direction = s.b - s.a;
   const Vec3 a_to_v = s.a - c.v, b_to_v = s.b - c.v;
-  const double d_a = a_to_v.dot(n);  // (a - v_c) . n
-  const double d_b = b_to_v.dot(n);  // (b - v_c) . n
+  const double d_a = a_to_v.dot(n);                             // (a - v_c) . n
+  const double d_b = b_to_v.dot(n);                             // (b - v_c) . n
   if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side
-  if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit
+  if (n == Vec3::Zero()) return {};                             // zero area: no plane, never hit
   if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);
 
   // A segment in the plane up to rounding: its volumes below are noise, in 2D.
@@ -503,9 +505,8 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
     const Decision d = decide(segment, tri);
     if (d.hit) hits.push_back(mesh_hit_from(hit_from(d, segment, tri), int(i)));
   }
-  std::sort(hits.begin(), hits.end(), [](const MeshHit& x, const MeshHit& y) {
-    return x.t != y.t ? x.t < y.t : x.triangle < y.triangle;
-  });
+  std::sort(hits.begin(), hits.end(),
+            [](const MeshHit& x, const MeshHit& y) { return x.t != y.t ? x.t < y.t : x.triangle < y.triangle; });
   return hits;
 }
 
@@ -513,8 +514,7 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
 // the mesh at the end of the step. We go one step further and express the whole
 // segment in the mesh's own frame, a' = M0^-1 a and b' = M1^-1 b: one transform per
 // end instead of one per mesh vertex. The hit found there goes back to the world by M1.
-MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0,
-                         const RigidTransform& m1) {
+MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0, const RigidTransform& m1) {
   require("first_hit_moving", segment);
   require("first_hit_moving", mesh);
   require_rigid("first_hit_moving", "m0", m0);
@@ -557,8 +557,7 @@ struct Earliest {
 // Seen from B, B stands still and A moves by d = va - vb (the delta matrix of step 6,
 // for translations). Every family below is a segment against a still triangle, so the
 // decisions are step 4's exact signs (decide); only t and the point are constructed.
-MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b,
-                                        const Vec3& velocity_b) {
+MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b, const Vec3& velocity_b) {
   require("first_contact_moving_meshes", a);
   require("first_contact_moving_meshes", b);
   require_finite("first_contact_moving_meshes", "velocity_a", velocity_a);

@@ -37,7 +37,8 @@ std::string text(const Vec3& v) {
   return out.str();
 }
 
-[[noreturn]] void reject(const char* function, const std::string& argument, const std::string& rule, const std::string& got) {
+[[noreturn]] void reject(const char* function, const std::string& argument, const std::string& rule,
+                         const std::string& got) {
   throw std::invalid_argument(std::string(function) + ": " + argument + " " + rule + ", got " + got);
 }
 
@@ -99,11 +100,11 @@ struct AxisTest {
 
 // Everything the 15 axes are made of, in A's frame.
 struct Pair {
-  Mat3 R;        // R(i, j) = A_i . B_j
-  Vec3 t;        // A^T (c_B - c_A)
-  Vec3 w;        // A^T (v_B - v_A): the relative velocity (zero for static boxes)
-  Vec3 a, b;     // half extents
-  Mat3 C;        // the cofactors of R (filled by cofactors() before the edge axes)
+  Mat3 R;     // R(i, j) = A_i . B_j
+  Vec3 t;     // A^T (c_B - c_A)
+  Vec3 w;     // A^T (v_B - v_A): the relative velocity (zero for static boxes)
+  Vec3 a, b;  // half extents
+  Mat3 C;     // the cofactors of R (filled by cofactors() before the edge axes)
 
   Pair(const Box& box_a, const Box& box_b, const Vec3& velocity)
       : R(box_a.axes.transpose() * box_b.axes),
@@ -299,7 +300,7 @@ LineIntervals triangles_by_intervals(const Triangle& t0, const Triangle& t1) {
   LineIntervals out;
   double d0[3], d1[3];  // t0's vertices against t1's plane, t1's against t0's
   if (!straddles(t1, t0, d0) || !straddles(t0, t1, d1)) return out;  // no crossing segments
-  const Vec3 m = t0.normal().cross(t1.normal()).cwiseAbs();  // |D_k|, D = n0 x n1
+  const Vec3 m = t0.normal().cross(t1.normal()).cwiseAbs();          // |D_k|, D = n0 x n1
   // The coordinate that varies most along the line (never one where D_k = 0, which
   // would read every point of the line as the same number).
   out.axis = m.x() >= m.y() && m.x() >= m.z() ? 0 : (m.y() >= m.z() ? 1 : 2);
@@ -335,9 +336,7 @@ LineIntervals triangles_by_intervals(const Triangle& t0, const Triangle& t1) {
 
 namespace {
 
-double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  return (b - a).cross(c - a).dot(d - a);
-}
+double orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return (b - a).cross(c - a).dot(d - a); }
 
 int sign(double x) { return (x > 0) - (x < 0); }
 
@@ -347,9 +346,9 @@ int sign(double x) { return (x > 0) - (x < 0); }
 // its area, and the "normal" then tilts by up to 1e-8 rad: enough to take a triangle
 // turned by 1e-7 for coplanar, or to give a vertex off the plane the wrong side.
 struct Plane3 {
-  Vec3 at;               // the vertex between the two shortest edges
-  Vec3 n;                // e_a x e_b: the normal, |n| twice the area
-  double edges = 0.0;    // |e_a| |e_b|: the scale of n's rounding
+  Vec3 at;             // the vertex between the two shortest edges
+  Vec3 n;              // e_a x e_b: the normal, |n| twice the area
+  double edges = 0.0;  // |e_a| |e_b|: the scale of n's rounding
 };
 
 Plane3 plane_of(const Triangle& t) {
@@ -438,7 +437,7 @@ bool test_triangles(const Triangle& t0, const Triangle& t1) {
   require_triangle("test_triangles", "t0", t0);
   require_triangle("test_triangles", "t1", t1);
   if (t0.normal() == Vec3::Zero() || t1.normal() == Vec3::Zero()) return false;  // zero area: no plane
-  const Sides s1 = sides(t0, t1);  // T1's vertices against T0's plane
+  const Sides s1 = sides(t0, t1);                                                // T1's vertices against T0's plane
   if (one_side(s1)) return false;  // T1 lies strictly on one side of T0's plane
   const Sides s0 = sides(t1, t0);  // T0's vertices against T1's plane
   if (one_side(s0)) return false;
@@ -446,7 +445,7 @@ bool test_triangles(const Triangle& t0, const Triangle& t1) {
   Triangle a = t0, b = t1;
   const bool flip_b = canonical(a, s0);  // a's vertex 0 above b's plane
   const bool flip_a = canonical(b, s1);
-  if (flip_b) std::swap(b.v1, b.v2);     // swapping b's q and r flips b's plane
+  if (flip_b) std::swap(b.v1, b.v2);  // swapping b's q and r flips b's plane
   if (flip_a) std::swap(a.v1, a.v2);
   // The two segments on L overlap: T1's starts before T0's ends, and ends after it starts.
   return orient(a.v0, a.v1, b.v0, b.v1) <= 0 && orient(a.v0, a.v2, b.v2, b.v0) <= 0;
@@ -503,8 +502,7 @@ ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Bo
 // axes, B's projection sweeps from s to s + duration ds: apart when both ends are beyond
 // r on the same side. Six more axes are needed, perpendicular to the motion, W x A_i and
 // W x B_j: along them nothing moves and the test is the static |s| > r.
-bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b,
-                       double duration) {
+bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b, double duration) {
   require_motion("test_moving_boxes", a, velocity_a, b, velocity_b, duration);
   Pair p(a, b, velocity_b - velocity_a);
   p.cofactors();

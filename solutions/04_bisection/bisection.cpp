@@ -55,8 +55,10 @@ void require_body(const char* where, const char* name, const Box& b) {
     reject(where, std::string(name) + ".half_extents must be >= 0", str(b.half_extents));
 }
 void require_body(const char* where, const char* name, const Shape& b) {
-  if (b.kind == Shape::Kind::sphere) require_body(where, name, b.sphere);
-  else require_body(where, name, b.box);
+  if (b.kind == Shape::Kind::sphere)
+    require_body(where, name, b.sphere);
+  else
+    require_body(where, name, b.box);
 }
 
 // [t0, t1] and the tolerance. Why the floor on the tolerance: the halving loop stops only
@@ -70,12 +72,13 @@ void require_times(const char* where, double t0, double t1, double tolerance) {
   if (!std::isfinite(t1)) reject(where, "t1 must be finite", str(t1));
   if (!(t0 <= t1)) reject(where, "t0 <= t1 must hold", "t0 = " + str(t0) + ", t1 = " + str(t1));
   if (!std::isfinite(t1 - t0)) reject(where, "t1 - t0 must be finite", "t0 = " + str(t0) + ", t1 = " + str(t1));
-  if (!(std::isfinite(tolerance) && tolerance > 0))
-    reject(where, "tolerance must be finite and > 0", str(tolerance));
+  if (!(std::isfinite(tolerance) && tolerance > 0)) reject(where, "tolerance must be finite and > 0", str(tolerance));
   const double floor = std::ldexp(std::max(std::abs(t0), std::abs(t1)), -50);
   if (!(tolerance >= floor))
-    reject(where, "tolerance must be at least 2^-50 max(|t0|, |t1|) = " + str(floor) + " (finer times are not distinct doubles)",
-           str(tolerance));
+    reject(
+        where,
+        "tolerance must be at least 2^-50 max(|t0|, |t1|) = " + str(floor) + " (finer times are not distinct doubles)",
+        str(tolerance));
 }
 
 void require_pair(const char* where, const MovingPair& pair) {
@@ -123,8 +126,10 @@ struct Posed {
 Posed posed_at(const MovingPair& pair, double t) {
   Posed p{placed(pair.a, pose_of(pair.motion_a, "pair.motion_a", t)), pair.b};
   const RigidTransform pose_b = pose_of(pair.motion_b, "pair.motion_b", t);
-  if (pair.b.kind == Shape::Kind::sphere) p.b.sphere = placed(pair.b.sphere, pose_b);
-  else p.b.box = placed(pair.b.box, pose_b);
+  if (pair.b.kind == Shape::Kind::sphere)
+    p.b.sphere = placed(pair.b.sphere, pose_b);
+  else
+    p.b.box = placed(pair.b.box, pose_b);
   return p;
 }
 
@@ -155,8 +160,10 @@ TimeOfImpact halve(const MovingPair& pair, double lo, double hi, double toleranc
   while (hi - lo > tolerance) {
     const double mid = lo + 0.5 * (hi - lo);
     ++r.iterations;
-    if (overlap_at(pair, mid)) hi = mid;  // the contact began at or before mid: look back
-    else lo = mid;                        // still clear at mid: look forward
+    if (overlap_at(pair, mid))
+      hi = mid;  // the contact began at or before mid: look back
+    else
+      lo = mid;  // still clear at mid: look forward
   }
   r.t = lo;
   r.t_contact = hi;

@@ -58,7 +58,8 @@ void require_unit(const char* query, const std::string& argument, const Vec3& x)
   if (!(std::abs(x.squaredNorm() - 1) <= 1e-6)) reject(query, argument, "have unit length", vector(x));
 }
 void require_perpendicular(const char* query, const std::string& argument, const Vec3& x, const Vec3& y) {
-  if (!(std::abs(x.dot(y)) <= 1e-6)) reject(query, argument, "be perpendicular", number(x.dot(y)) + " for their dot product");
+  if (!(std::abs(x.dot(y)) <= 1e-6))
+    reject(query, argument, "be perpendicular", number(x.dot(y)) + " for their dot product");
 }
 void require(const char* query, const std::string& name, const Segment& s) {
   require_finite(query, name + ".a", s.a);
@@ -96,7 +97,8 @@ void require(const char* query, const std::string& name, const Box& b) {
     require_unit(query, axis, b.axes.col(i));
     require_size(query, name + ".half_extents[" + std::to_string(i) + "]", b.half_extents[i]);
     for (int j = 0; j < i; ++j)
-      require_perpendicular(query, name + ".axes.col(" + std::to_string(j) + ") and " + axis, b.axes.col(j), b.axes.col(i));
+      require_perpendicular(query, name + ".axes.col(" + std::to_string(j) + ") and " + axis, b.axes.col(j),
+                            b.axes.col(i));
   }
 }
 void require_motion(const char* query, const Vec3& velocity, const char* velocity_name, double duration) {
@@ -135,8 +137,8 @@ bool point_segment_within(const Vec3& p, const Segment& s, double r2) {
 // with n = d0 x d1, the lines' distance is |w . n| / |n|, and the closest points have
 // s = ((w x d1) . n) / |n|^2, t = ((w x d0) . n) / |n|^2.
 bool segment_segment_within(const Segment& s0, const Segment& s1, double r2) {
-  if (point_segment_within(s0.a, s1, r2) || point_segment_within(s0.b, s1, r2) ||
-      point_segment_within(s1.a, s0, r2) || point_segment_within(s1.b, s0, r2))
+  if (point_segment_within(s0.a, s1, r2) || point_segment_within(s0.b, s1, r2) || point_segment_within(s1.a, s0, r2) ||
+      point_segment_within(s1.b, s0, r2))
     return true;
   const Vec3 d0 = s0.b - s0.a, d1 = s1.b - s1.a, w = s1.a - s0.a;
   const Vec3 n = d0.cross(d1);
@@ -186,7 +188,7 @@ Crossing crossing(const Segment& seg, const Rectangle& r) {
   const Vec3 wa = seg.a - r.center, wb = seg.b - r.center;
   const double fa = wa.dot(n), fb = wb.dot(n);
   if ((fa > 0 && fb > 0) || (fa < 0 && fb < 0)) return {};  // both ends strictly on one side
-  if (fa == 0 && fb == 0) return {};  // in the plane: the ends and the sides decide
+  if (fa == 0 && fb == 0) return {};                        // in the plane: the ends and the sides decide
   const double den = fa - fb;
   const double s = fa * wb.dot(r.u) - fb * wa.dot(r.u), t = fa * wb.dot(r.v) - fb * wa.dot(r.v);
   if (std::abs(s) > r.half_u * std::abs(den) || std::abs(t) > r.half_v * std::abs(den)) return {};  // beside it
@@ -245,9 +247,12 @@ PointSegmentDistance point_segment(const Vec3& p, const Segment& segment) {
   const Vec3 d = segment.b - segment.a;
   const double wd = (p - segment.a).dot(d), dd = d.squaredNorm();
   PointSegmentDistance r;
-  if (wd <= 0 || dd == 0) r.t = 0.0;  // behind a, or a zero-length segment
-  else if (wd >= dd) r.t = 1.0;       // beyond b
-  else r.t = wd / dd;
+  if (wd <= 0 || dd == 0)
+    r.t = 0.0;  // behind a, or a zero-length segment
+  else if (wd >= dd)
+    r.t = 1.0;  // beyond b
+  else
+    r.t = wd / dd;
   r.closest = point_at(segment, r.t);
   r.squared_distance = (p - r.closest).squaredNorm();
   return r;

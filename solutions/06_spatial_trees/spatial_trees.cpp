@@ -36,7 +36,8 @@ std::string text(double x) {
 std::string text(const Vec3& v) { return "(" + text(v.x()) + ", " + text(v.y()) + ", " + text(v.z()) + ")"; }
 
 void require_finite(const char* query, const std::string& argument, const Vec3& v) {
-  if (!v.allFinite()) throw std::invalid_argument(std::string(query) + ": " + argument + " must be finite, got " + text(v));
+  if (!v.allFinite())
+    throw std::invalid_argument(std::string(query) + ": " + argument + " must be finite, got " + text(v));
 }
 
 void require_mesh(const char* query, const Mesh& mesh) {
@@ -46,8 +47,8 @@ void require_mesh(const char* query, const Mesh& mesh) {
     for (int k : mesh.triangles[i])
       if (k < 0 || std::size_t(k) >= mesh.vertices.size())
         throw std::invalid_argument(std::string(query) + ": mesh.triangles[" + std::to_string(i) +
-                                    "] must index mesh.vertices (0 to " + std::to_string(int(mesh.vertices.size()) - 1) +
-                                    "), got " + std::to_string(k));
+                                    "] must index mesh.vertices (0 to " +
+                                    std::to_string(int(mesh.vertices.size()) - 1) + "), got " + std::to_string(k));
 }
 
 void require_segment(const char* query, const Segment& s) {
@@ -101,7 +102,9 @@ class KdBuilder {
   // The depth limit grows with the number of triangles as in pbrt (8 + 1.3 log2 n): deep
   // enough for any useful split, shallow enough that a bad case cannot run away.
   KdBuilder(KdTree& tree, std::vector<Aabb> boxes, std::vector<int> list)
-      : tree_(tree), boxes_(std::move(boxes)), refs_(std::move(list)),
+      : tree_(tree),
+        boxes_(std::move(boxes)),
+        refs_(std::move(list)),
         max_depth_(std::min(kMaxDepth, int(8 + 1.3 * std::log2(double(std::max<std::size_t>(boxes_.size(), 1)))))) {
     refs_.reserve(3 * refs_.size() + 64);
   }
@@ -162,7 +165,9 @@ class KdBuilder {
     const Vec3 lo = cell.min, extent = cell.max - cell.min;
     double bins_per_unit[3];
     for (int axis = 0; axis < 3; ++axis) bins_per_unit[axis] = extent[axis] > 0 ? kBins / extent[axis] : 0.0;
-    const auto bin = [&](double x, int axis) { return std::clamp(int((x - lo[axis]) * bins_per_unit[axis]), 0, kBins - 1); };
+    const auto bin = [&](double x, int axis) {
+      return std::clamp(int((x - lo[axis]) * bins_per_unit[axis]), 0, kBins - 1);
+    };
     int starts[3][kBins] = {}, ends[3][kBins] = {};
     for (std::size_t k = first; k < last; ++k) {
       const Aabb& box = boxes_[std::size_t(refs_[k])];
@@ -234,8 +239,7 @@ Span clip(const Aabb& box, const Vec3& a, const Vec3& d) {
 // returns the t beyond which nothing more is wanted (+infinity: everything; the best hit
 // so far; -infinity: stop). A leaf that ends at or after that t ends the walk, since
 // every later leaf starts after it.
-template <class Leaf>
-void front_to_back(const KdTree& tree, const Segment& s, Leaf&& leaf) {
+template <class Leaf> void front_to_back(const KdTree& tree, const Segment& s, Leaf&& leaf) {
   const Vec3 d = s.b - s.a;
   Span span = clip(tree.bounds, s.a, d);
   if (span.empty() || tree.nodes.empty()) return;
@@ -293,8 +297,7 @@ void prefetch_triangles(const KdTree& tree, const int* list) {
 }
 
 // One leaf's triangles: calls test(triangle index) for each.
-template <class Test>
-void for_each_listed(const KdTree& tree, const KdNode& leaf, Test&& test) {
+template <class Test> void for_each_listed(const KdTree& tree, const KdNode& leaf, Test&& test) {
   const int* list = &tree.items[std::size_t(leaf.index)];
   const int count = list[0];
   prefetch_triangles(tree, list);
@@ -365,7 +368,8 @@ void split(const Work& w, const double (&d)[3], std::vector<Work>& front, std::v
       behind[nb++] = x;
     }
   }
-  for (int k = 1; k + 1 < nf; ++k) front.push_back({{{in_front[0], in_front[k], in_front[k + 1]}, w.piece.source}, false});
+  for (int k = 1; k + 1 < nf; ++k)
+    front.push_back({{{in_front[0], in_front[k], in_front[k + 1]}, w.piece.source}, false});
   for (int k = 1; k + 1 < nb; ++k) back.push_back({{{behind[0], behind[k], behind[k + 1]}, w.piece.source}, false});
 }
 
@@ -505,9 +509,8 @@ KdHits all_hits(const KdTree& tree, const Segment& segment) {
   });
   // A triangle listed in two leaves was tested twice, with the same answer: after sorting
   // by t, then index, its two hits are neighbours.
-  std::sort(out.hits.begin(), out.hits.end(), [](const KdHit& x, const KdHit& y) {
-    return x.t != y.t ? x.t < y.t : x.triangle < y.triangle;
-  });
+  std::sort(out.hits.begin(), out.hits.end(),
+            [](const KdHit& x, const KdHit& y) { return x.t != y.t ? x.t < y.t : x.triangle < y.triangle; });
   out.hits.erase(std::unique(out.hits.begin(), out.hits.end(),
                              [](const KdHit& x, const KdHit& y) { return x.triangle == y.triangle; }),
                  out.hits.end());
@@ -556,9 +559,12 @@ BspTree build_bsp(const Mesh& mesh) {
       const double d[3] = {build_side(p, w.piece.triangle.v0), build_side(p, w.piece.triangle.v1),
                            build_side(p, w.piece.triangle.v2)};
       const bool any_front = d[0] > 0 || d[1] > 0 || d[2] > 0, any_back = d[0] < 0 || d[1] < 0 || d[2] < 0;
-      if (any_front && any_back) split(w, d, front, back);
-      else if (any_back) back.push_back(w);
-      else front.push_back(w);  // in front, or a zero-area sliver lying on the plane
+      if (any_front && any_back)
+        split(w, d, front, back);
+      else if (any_back)
+        back.push_back(w);
+      else
+        front.push_back(w);  // in front, or a zero-area sliver lying on the plane
     }
     node.count = int(tree.pieces.size()) - node.first;
     if (!front.empty()) {
@@ -606,11 +612,16 @@ Where classify(const BspTree& tree, const Vec3& point) {
         // On the plane: on the surface if on a triangle lying here (the piece is that
         // triangle within this cell, and the point is in the cell); else look both ways.
         for (int k = n.first; k < n.first + n.count; ++k)
-          if (in_closed_triangle(tree.triangles[std::size_t(tree.pieces[std::size_t(k)].source)], point)) return Where::on;
-        if (n.front < 0) outside = true;
-        else pending.push_back(n.front);
-        if (n.back < 0) inside = true;
-        else pending.push_back(n.back);
+          if (in_closed_triangle(tree.triangles[std::size_t(tree.pieces[std::size_t(k)].source)], point))
+            return Where::on;
+        if (n.front < 0)
+          outside = true;
+        else
+          pending.push_back(n.front);
+        if (n.back < 0)
+          inside = true;
+        else
+          pending.push_back(n.back);
         break;
       }
     }
@@ -744,7 +755,8 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
   std::array<std::uint64_t, 9> low_offset{}, high_offset{};
   for (int column = 0; column < 9; ++column) {
     const std::int64_t dx = column / 3 - 1, dy = column % 3 - 1;
-    low_offset[std::size_t(column)] = std::uint64_t(dx * (std::int64_t(1) << (2 * kCellBits)) + dy * (std::int64_t(1) << kCellBits) - 1);
+    low_offset[std::size_t(column)] =
+        std::uint64_t(dx * (std::int64_t(1) << (2 * kCellBits)) + dy * (std::int64_t(1) << kCellBits) - 1);
     high_offset[std::size_t(column)] = low_offset[std::size_t(column)] + 3;  // past z + 1
   }
   const std::size_t size = entries.size();
@@ -804,8 +816,8 @@ std::array<int, 2> ordered(int i, int j) { return {std::min(i, j), std::max(i, j
 SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
   require_spheres("SweepAndPrune::update", spheres);
   if (started && spheres.size() * 2 != ends.size())
-    throw std::invalid_argument("SweepAndPrune::update: spheres must keep the first frame's count, " + std::to_string(ends.size() / 2) +
-                                ", got " + std::to_string(spheres.size()));
+    throw std::invalid_argument("SweepAndPrune::update: spheres must keep the first frame's count, " +
+                                std::to_string(ends.size() / 2) + ", got " + std::to_string(spheres.size()));
   SweepFrame out;
   for (Endpoint& e : ends) {
     const Sphere& s = spheres[std::size_t(e.sphere)];
@@ -878,7 +890,8 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
   for (const std::array<int, 2>& p : added) test(p);
   std::size_t from = kept, next = added.size(), to = kept + added.size();
   overlapping.resize(to);
-  while (next > 0) overlapping[--to] = from > 0 && overlapping[from - 1] > added[next - 1] ? overlapping[--from] : added[--next];
+  while (next > 0)
+    overlapping[--to] = from > 0 && overlapping[from - 1] > added[next - 1] ? overlapping[--from] : added[--next];
   std::sort(out.pairs.begin(), out.pairs.end());
   return out;
 }
@@ -891,7 +904,9 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
 TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every) {
   TrianglePairs out;
   if (a.nodes.empty() || b.nodes.empty()) return out;
-  const auto volume = [](const ObbNode& n) { return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2]; };
+  const auto volume = [](const ObbNode& n) {
+    return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2];
+  };
   std::vector<std::array<int, 2>> todo{{0, 0}};
   while (!todo.empty()) {
     const auto [i, j] = todo.back();

@@ -56,13 +56,15 @@ void require_not_negative(const char* query, const std::string& argument, double
 }
 
 void require_valid(const char* query, const std::string& name, const Emitter& e) {
-  for (const auto& [field, v] : {std::pair{"position", e.position}, {"half_extents", e.half_extents}, {"direction", e.direction}})
+  for (const auto& [field, v] :
+       {std::pair{"position", e.position}, {"half_extents", e.half_extents}, {"direction", e.direction}})
     require_finite(query, name + "." + field, v);
   require((e.half_extents.array() >= 0).all(), query, name + ".half_extents", "must be >= 0", e.half_extents);
   require(e.direction != Vec3::Zero(), query, name + ".direction", "must be non-zero", e.direction);
   require(e.cone >= 0 && e.cone <= kPi, query, name + ".cone", "must be in [0, pi]", e.cone);
   require_not_negative(query, name + ".speed_spread", e.speed_spread);
-  require(std::isfinite(e.speed) && e.speed >= e.speed_spread, query, name + ".speed", "must be finite and >= speed_spread", e.speed);
+  require(std::isfinite(e.speed) && e.speed >= e.speed_spread, query, name + ".speed",
+          "must be finite and >= speed_spread", e.speed);
   require_not_negative(query, name + ".lifetime_spread", e.lifetime_spread);
   require(std::isfinite(e.lifetime) && e.lifetime >= e.lifetime_spread, query, name + ".lifetime",
           "must be finite and >= lifetime_spread", e.lifetime);
@@ -102,7 +104,8 @@ void require_valid(const char* query, const Material& m) {
 }
 
 void require_valid(const char* query, const Scene& scene) {
-  for (std::size_t i = 0; i < scene.planes.size(); ++i) require_valid(query, scene.planes[i], "scene.planes[" + std::to_string(i) + "]");
+  for (std::size_t i = 0; i < scene.planes.size(); ++i)
+    require_valid(query, scene.planes[i], "scene.planes[" + std::to_string(i) + "]");
   // A mesh has thousands of vertices: each is checked, and a name is built only for
   // the one that breaks the rule.
   for (std::size_t i = 0; i < scene.mesh.vertices.size(); ++i)
@@ -112,12 +115,12 @@ void require_valid(const char* query, const Scene& scene) {
   for (std::size_t i = 0; i < scene.mesh.size(); ++i)
     for (const int v : scene.mesh.triangles[i])
       if (!(v >= 0 && v < count))
-        require(false, query, "scene.mesh.triangles[" + std::to_string(i) + "]", "must index vertices (0 to vertices.size() - 1)",
-                double(v));
+        require(false, query, "scene.mesh.triangles[" + std::to_string(i) + "]",
+                "must index vertices (0 to vertices.size() - 1)", double(v));
   require_valid(query, scene.material);
   require_finite(query, "scene.velocity", scene.velocity);
-  require(scene.bounce_cap >= 0 && scene.bounce_cap <= kMaxBounceCap, query, "scene.bounce_cap", "must be in [0, kMaxBounceCap]",
-          double(scene.bounce_cap));
+  require(scene.bounce_cap >= 0 && scene.bounce_cap <= kMaxBounceCap, query, "scene.bounce_cap",
+          "must be in [0, kMaxBounceCap]", double(scene.bounce_cap));
 }
 
 }  // namespace
@@ -390,8 +393,8 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
   require_finite("impulse", "velocity", velocity);
   require_finite("impulse", "object_velocity", object_velocity);
   // The formulas take n . n = 1; a normal of another length scales v_close and j_n.
-  require(normal.allFinite() && std::abs(normal.squaredNorm() - 1) <= 1e-9, "impulse", "normal", "must be a unit vector",
-          normal);
+  require(normal.allFinite() && std::abs(normal.squaredNorm() - 1) <= 1e-9, "impulse", "normal",
+          "must be a unit vector", normal);
   require_positive("impulse", "mass", mass);
   require_valid("impulse", material);
   Impulse r;
@@ -547,7 +550,7 @@ Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
   const auto plane_standing = [&](std::size_t i, const Vec3& p) {
     const Plane& plane = scene.planes[i];
     const Signed s = plane_value(plane, p);
-    const bool strict = last.hit && last.plane == int(i);  // the plane just hit: strictly in front
+    const bool strict = last.hit && last.plane == int(i);                    // the plane just hit: strictly in front
     if (strict ? s.value > s.error : s.value >= s.error) return Standing{};  // certainly fine
     const double length = plane.normal.norm();
     return Standing{true, std::max(0.0, -s.value / length), s.error / length};
@@ -568,7 +571,8 @@ Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
   std::vector<bool> keep(scene.planes.size(), false);
   for (std::size_t i = 0; i < scene.planes.size(); ++i) {
     const Signed s = plane_value(scene.planes[i], x);
-    keep[i] = scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));
+    keep[i] =
+        scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));
   }
 
   // Push away from every surface found in doubt so far: once a surface has needed a push
@@ -621,10 +625,11 @@ Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
   if (last.hit) {
     const bool plane = last.plane >= 0 && std::size_t(last.plane) < scene.planes.size();
     const bool triangle = last.triangle >= 0 && std::size_t(last.triangle) < scene.mesh.size();
-    require(plane != triangle, "settle", "last", "must name one plane or one triangle of the scene when last.hit (plane, triangle)",
+    require(plane != triangle, "settle", "last",
+            "must name one plane or one triangle of the scene when last.hit (plane, triangle)",
             Vec3(last.plane, last.triangle, 0));
-    require(last.normal.allFinite() && last.normal != Vec3::Zero(), "settle", "last.normal", "must be finite and non-zero",
-            last.normal);
+    require(last.normal.allFinite() && last.normal != Vec3::Zero(), "settle", "last.normal",
+            "must be finite and non-zero", last.normal);
   }
   return settle_in(x, scene, last);
 }
@@ -634,7 +639,8 @@ void System::step(double dt) {
   require_valid("System::step", "emitter", emitter);
   require_valid("System::step", forces);
   require_valid("System::step", scene);
-  for (std::size_t i = 0; i < particles.size(); ++i) require_valid("System::step", "particles[" + std::to_string(i) + "]", particles[i]);
+  for (std::size_t i = 0; i < particles.size(); ++i)
+    require_valid("System::step", "particles[" + std::to_string(i) + "]", particles[i]);
   // 1. Births, with their attributes.
   const Births born = births(emitter, dt);
   emitter.owed = born.owed;

@@ -5,6 +5,12 @@
 //   spin N S      N children, each in a session (an autogroup) of its own, spin for S
 //                 seconds: how many cores they got together
 //   files N MB    N files of MB each in /tmp: how much was written
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -14,12 +20,6 @@
 #include <set>
 #include <string>
 #include <vector>
-#include <fcntl.h>
-#include <poll.h>
-#include <signal.h>
-#include <sys/resource.h>
-#include <sys/wait.h>
-#include <unistd.h>
 
 namespace {
 
@@ -83,8 +83,10 @@ int forks(int n) {
       pause();
       _exit(0);
     }
-    if (pid > 0) children.push_back(pid);
-    else if (!first_error) first_error = errno;
+    if (pid > 0)
+      children.push_back(pid);
+    else if (!first_error)
+      first_error = errno;
   }
   std::printf("fork: %zu of %d children started (%s)\n", children.size(), n,
               first_error ? std::strerror(first_error) : "no failure");
@@ -105,7 +107,8 @@ int spin(int n, double seconds) {
   const double wall = since(start);
   rusage u{};
   getrusage(RUSAGE_CHILDREN, &u);
-  const double cpu = double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
+  const double cpu =
+      double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + double(u.ru_utime.tv_usec + u.ru_stime.tv_usec) / 1e6;
   std::printf("spin: %d children, %.1f s, %.1f s of CPU: %.2f cores\n", n, wall, cpu, cpu / wall);
   return 0;
 }
@@ -120,8 +123,10 @@ int files(int n, long mb) {
     const int fd = open(("/tmp/fill" + std::to_string(written)).c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
     if (fd < 0) why = std::strerror(errno);
     for (long m = 0; fd >= 0 && m < mb && why == "no failure"; ++m) {
-      if (write(fd, block.data(), block.size()) == ssize_t(block.size())) ++total;
-      else why = std::strerror(errno);
+      if (write(fd, block.data(), block.size()) == ssize_t(block.size()))
+        ++total;
+      else
+        why = std::strerror(errno);
     }
     if (fd >= 0) close(fd);
   }

@@ -16,7 +16,12 @@
 using namespace labkit;
 
 TEST_CASE("replay tokens rebuild the input bit for bit", "[kit]") {
-  const double awkward[] = {0.1, -0.0, 1e-310, std::numeric_limits<double>::max(), -3.0, 1.0 / 3.0,
+  const double awkward[] = {0.1,
+                            -0.0,
+                            1e-310,
+                            std::numeric_limits<double>::max(),
+                            -3.0,
+                            1.0 / 3.0,
                             std::numeric_limits<double>::denorm_min()};
   for (double x : awkward) {
     const SegmentTrianglePair in{{{x, 1, 2}, {3, x, 5}}, {{x, x, x}, {0, 1, 0}, {0, 0, 1}}};
@@ -37,11 +42,13 @@ TEST_CASE("replay tokens rebuild the input bit for bit", "[kit]") {
 TEST_CASE("malformed replay tokens give one clear reason", "[kit]") {
   CHECK_THROWS_WITH(parse_token("nonsense"), labkit::check::contains_text("query:"));
   CHECK_THROWS_WITH(parse_token("q:1,2,x"), labkit::check::contains_text("is not a number"));
-  CHECK_THROWS_WITH(input_from_token<SegmentTrianglePair>(parse_token("q:1,2,3")), labkit::check::contains_text("numbers"));
+  CHECK_THROWS_WITH(input_from_token<SegmentTrianglePair>(parse_token("q:1,2,3")),
+                    labkit::check::contains_text("numbers"));
   // Every lab's input is finite: nan and inf are named, never handed to the oracle.
   for (const char* bad : {"nan", "inf", "-inf"}) {
     const std::string token = std::string("q:0,0,1,0,0,-1,0,0,0,1,0,0,0,1,") + bad;
-    CHECK_THROWS_WITH(input_from_token<SegmentTrianglePair>(parse_token(token)), labkit::check::contains_text("number 15 of the case is"));
+    CHECK_THROWS_WITH(input_from_token<SegmentTrianglePair>(parse_token(token)),
+                      labkit::check::contains_text("number 15 of the case is"));
   }
   // A mesh whose triangle names a vertex it does not have.
   CHECK_THROWS_WITH(input_from_token<SegmentMeshPair>(parse_token("q:0,0,0,1,1,1,3,0,0,0,1,0,0,0,1,0,1,0,1,7")),
@@ -104,7 +111,7 @@ TEST_CASE("the given segment-triangle test agrees with the oracle and is waterti
   // A segment through the shared diagonal of a square, or its shared corner, hits it.
   const Triangle t0{{0, 0, 0}, {4, 0, 0}, {4, 4, 0}}, t1{{0, 0, 0}, {4, 4, 0}, {0, 4, 0}};
   for (const Segment& s : {Segment{{2, 2, 1}, {2, 2, -1}}, Segment{{1.3, 1.3, 0.7}, {1.1, 1.1, -0.3}},
-                          Segment{{4, 4, 3}, {4, 4, -3}}, Segment{{0.1, 0.1, 1}, {1.0 / 3, 1.0 / 3, -1}}})
+                           Segment{{4, 4, 3}, {4, 4, -3}}, Segment{{0.1, 0.1, 1}, {1.0 / 3, 1.0 / 3, -1}}})
     CHECK((given::segment_triangle(s, t0).hit || given::segment_triangle(s, t1).hit));
 }
 
@@ -131,5 +138,6 @@ TEST_CASE("a step's report reads back what was written, and a bad one names the 
   CHECK_THROWS_WITH(report::step_from_json(bad), "the report's \"queries\"[0]'s \"failure\" has no \"why\"");
   bad = report::to_json(step);
   bad["test_cases"][0]["passed"] = "yes";
-  CHECK_THROWS_WITH(report::step_from_json(bad), "the report's \"test_cases\"[0]'s \"passed\" has the wrong type (string)");
+  CHECK_THROWS_WITH(report::step_from_json(bad),
+                    "the report's \"test_cases\"[0]'s \"passed\" has the wrong type (string)");
 }

@@ -16,7 +16,9 @@ bool has_type(const json& value, const std::string& type) {
   if (type == "array") return value.is_array();
   if (type == "string") return value.is_string();
   if (type == "number") return value.is_number();
-  if (type == "integer") return value.is_number_integer() || (value.is_number_float() && value.get<double>() == double(static_cast<long long>(value.get<double>())));
+  if (type == "integer")
+    return value.is_number_integer() ||
+           (value.is_number_float() && value.get<double>() == double(static_cast<long long>(value.get<double>())));
   if (type == "boolean") return value.is_boolean();
   if (type == "null") return value.is_null();
   return false;
@@ -50,12 +52,15 @@ void check(const json& schema, const json& value, const std::string& path, int& 
       if (!value.contains(name.get<std::string>())) fail("has no '" + name.get<std::string>() + "'");
     const json properties = schema.value("properties", json::object());
     for (const auto& [name, item] : value.items()) {
-      if (properties.contains(name)) check(properties[name], item, path + "." + name, errors);
-      else if (schema.value("additionalProperties", true) == false) fail("has '" + name + "', which the schema does not allow");
+      if (properties.contains(name))
+        check(properties[name], item, path + "." + name, errors);
+      else if (schema.value("additionalProperties", true) == false)
+        fail("has '" + name + "', which the schema does not allow");
     }
   }
   if (value.is_array() && schema.contains("items"))
-    for (std::size_t i = 0; i < value.size(); ++i) check(schema["items"], value[i], path + "[" + std::to_string(i) + "]", errors);
+    for (std::size_t i = 0; i < value.size(); ++i)
+      check(schema["items"], value[i], path + "[" + std::to_string(i) + "]", errors);
 }
 
 }  // namespace

@@ -134,12 +134,13 @@ int main(int argc, char** argv) {
       }
   std::string oracle;
   for (const auto& e : fs::recursive_directory_iterator(kit / "common" / "oracle")) oracle += normalise(read(e.path()));
-  needles.erase(std::remove_if(needles.begin(), needles.end(),
-                               [&](const Needle& n) {
-                                 const bool shared = oracle.find(n.text) != std::string::npos;
-                                 if (shared && n.origin.find("mutants") != std::string::npos) --mutant_strings;
-                                 return shared;
-                               }),
+  needles.erase(std::remove_if(
+                    needles.begin(), needles.end(),
+                    [&](const Needle& n) {
+    const bool shared = oracle.find(n.text) != std::string::npos;
+    if (shared && n.origin.find("mutants") != std::string::npos) --mutant_strings;
+    return shared;
+                    }),
                 needles.end());
   if (needles.size() < 5) {
     std::cerr << "kit_no_solution: found only " << needles.size() << " pieces of reference code to look for\n";

@@ -53,7 +53,7 @@ TEST_CASE("each handout's headings give the manifest's lab and step titles", "[k
       const std::regex heading("^## Step [0-9]+: (.*) \\(" + tag + "\\)$", std::regex::multiline);
       std::smatch m;
       INFO(tag << ": the handout needs the heading \"" << heading_start << step["title"].get<std::string>() << " ("
-                << tag << ")\"");
+               << tag << ")\"");
       REQUIRE(std::regex_search(text, m, heading));
       CHECK(m[0].str().rfind(heading_start, 0) == 0);
       CHECK(m[1].str() == step["title"].get<std::string>());

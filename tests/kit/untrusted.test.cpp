@@ -64,13 +64,13 @@ TEST_CASE("text that is already fine passes unchanged", "[kit][untrusted]") {
 }
 
 TEST_CASE("invalid UTF-8 becomes U+FFFD, one per broken sequence, and the rest is kept", "[kit][untrusted]") {
-  CHECK(safe_text("caf\xE9 ok") == "caf" + fffd + " ok");                  // a Latin-1 byte
-  CHECK(safe_text("\xA9t\xC3\xA9") == fffd + "t\xC3\xA9");                 // a tail cut mid-character
-  CHECK(safe_text("ab\xE2\x82") == "ab" + fffd);                           // cut short at the end
-  CHECK(safe_text("\xC0\xAF") == fffd + fffd);                             // an overlong '/'
-  CHECK(safe_text("\xED\xA0\x80") == fffd + fffd + fffd);                  // a surrogate
-  CHECK(safe_text("\xF4\x90\x80\x80") == fffd + fffd + fffd + fffd);       // past U+10FFFF
-  CHECK(safe_text("\xF0\x9F\x99") == fffd);                                // one maximal subpart
+  CHECK(safe_text("caf\xE9 ok") == "caf" + fffd + " ok");             // a Latin-1 byte
+  CHECK(safe_text("\xA9t\xC3\xA9") == fffd + "t\xC3\xA9");            // a tail cut mid-character
+  CHECK(safe_text("ab\xE2\x82") == "ab" + fffd);                      // cut short at the end
+  CHECK(safe_text("\xC0\xAF") == fffd + fffd);                        // an overlong '/'
+  CHECK(safe_text("\xED\xA0\x80") == fffd + fffd + fffd);             // a surrogate
+  CHECK(safe_text("\xF4\x90\x80\x80") == fffd + fffd + fffd + fffd);  // past U+10FFFF
+  CHECK(safe_text("\xF0\x9F\x99") == fffd);                           // one maximal subpart
   CHECK(safe_text(std::string("a\0b", 3)) == "a\\x00b");
   std::string every_byte;
   for (int c = 0; c < 256; ++c) every_byte += char(c);
@@ -83,9 +83,10 @@ TEST_CASE("terminal controls are shown, not obeyed", "[kit][untrusted]") {
   CHECK(safe_text("100%\rpassed") == "100%\\x0dpassed");
   CHECK(safe_text("dos line\r\nnext") == "dos line\nnext");
   CHECK(safe_text("\x7f") == "\\x7f");
-  CHECK(safe_text("\xC2\x9B" "31m") == "\\u009b31m");                      // C1 CSI
-  CHECK(safe_text("\xE2\x80\xAEtxt.exe") == "\\u202etxt.exe");             // right-to-left override
-  CHECK(safe_text("\xEF\xBF\xBE") == "\\ufffe");                           // XML refuses it
+  CHECK(safe_text("\xC2\x9B"
+                  "31m") == "\\u009b31m");                      // C1 CSI
+  CHECK(safe_text("\xE2\x80\xAEtxt.exe") == "\\u202etxt.exe");  // right-to-left override
+  CHECK(safe_text("\xEF\xBF\xBE") == "\\ufffe");                // XML refuses it
 }
 
 TEST_CASE("safe_text is idempotent", "[kit][untrusted]") {
@@ -104,8 +105,8 @@ TEST_CASE("replay tokens: the harness's grammar, and nothing else", "[kit][untru
                             "robust.advance:4.9406564584124654e-324,-0", "q:",
                             "first_hit:1,3,5,1,3,-1,8,0,0,0,4,0,0,4,4,0,0,4,0,0,0,2,4,0,2,4,4,2,0,4,2,4,0,1,2,0,2"})
     CHECK(is_replay_token(token));
-  for (const char* token : {"", "nonsense", ":1,2", "q:1,,2", "q:1,2,", "q:1;id", "q:$(id)", "q':1", "q:1 2",
-                            "q\n:1", "q:0x1p3", "q:1,2' ; rm -rf ~ ; echo '"})
+  for (const char* token : {"", "nonsense", ":1,2", "q:1,,2", "q:1,2,", "q:1;id", "q:$(id)", "q':1", "q:1 2", "q\n:1",
+                            "q:0x1p3", "q:1,2' ; rm -rf ~ ; echo '"})
     CHECK_FALSE(is_replay_token(token));
   CHECK(replay_command("check", "02", "segment_plane:1,2,3") == "./labkit check 02 --case 'segment_plane:1,2,3'");
   CHECK(replay_command("check", "02", "q:1' ; touch /tmp/owned ; '") == "");

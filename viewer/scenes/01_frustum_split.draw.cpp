@@ -35,7 +35,8 @@ void FrustumSplitScene::draw_exact(Renderer& r, const Triangle& t, const std::ve
   const oracle::ClippedPolygon e = oracle::clip(t, planes);
   if (!e.has_area) return;
   const float width = mode_ == Mode::mesh ? 1.2f : 3.0f;
-  for (std::size_t i = 0; i < e.corners.size(); ++i) r.line(e.corners[i], e.corners[(i + 1) % e.corners.size()], palette::exact, width);
+  for (std::size_t i = 0; i < e.corners.size(); ++i)
+    r.line(e.corners[i], e.corners[(i + 1) % e.corners.size()], palette::exact, width);
 }
 
 void FrustumSplitScene::draw(Frame& f) {
@@ -119,8 +120,8 @@ void FrustumSplitScene::draw(Frame& f) {
   };
   for (std::size_t i = 0; i < out.size(); ++i) {
     const auto& face = out.triangles[i];
-    r.triangle(out.vertices[std::size_t(face[0])], out.vertices[std::size_t(face[1])], out.vertices[std::size_t(face[2])],
-               colour_of(face[0]), colour_of(face[1]), colour_of(face[2]));
+    r.triangle(out.vertices[std::size_t(face[0])], out.vertices[std::size_t(face[1])],
+               out.vertices[std::size_t(face[2])], colour_of(face[0]), colour_of(face[1]), colour_of(face[2]));
     const Triangle t = out.triangle(i);
     for (int k = 0; k < 3; ++k) r.line(t[k], t[(k + 1) % 3], colour(verdict_[5]), 1.5f);
   }
@@ -136,14 +137,19 @@ bool FrustumSplitScene::inputs() {
   }
   if (source_ == Source::camera) {
     changed |= edit("eye", camera_.eye) | edit("forward", camera_.forward) | edit("up", camera_.up);
-    changed |= edit("fov_y (radians)", camera_.fov_y, 0.01f, 0.05, 3.0) | edit("aspect", camera_.aspect, 0.01f, 0.1, 10);
-    changed |= edit("near", camera_.near, 0.01f, 1e-3, camera_.far) | edit("far", camera_.far, 0.05f, camera_.near, 1e6);
+    changed |=
+        edit("fov_y (radians)", camera_.fov_y, 0.01f, 0.05, 3.0) | edit("aspect", camera_.aspect, 0.01f, 0.1, 10);
+    changed |=
+        edit("near", camera_.near, 0.01f, 1e-3, camera_.far) | edit("far", camera_.far, 0.05f, camera_.near, 1e6);
     if (changed) look_ = last_look_ = camera_.eye + camera_.forward.normalized() * 0.5 * (camera_.near + camera_.far);
   } else {
-    ImGui::TextDisabled(source_ == Source::matrix ? "the frustum: from a view-projection matrix" : "the frustum: six planes");
+    ImGui::TextDisabled(source_ == Source::matrix ? "the frustum: from a view-projection matrix"
+                                                  : "the frustum: six planes");
   }
-  if (mode_ == Mode::frustum) changed |= edit("v0", triangle_.v0) | edit("v1", triangle_.v1) | edit("v2", triangle_.v2);
-  else ImGui::TextDisabled("mesh: %zu vertices, %zu triangles", mesh_.mesh.vertices.size(), mesh_.mesh.size());
+  if (mode_ == Mode::frustum)
+    changed |= edit("v0", triangle_.v0) | edit("v1", triangle_.v1) | edit("v2", triangle_.v2);
+  else
+    ImGui::TextDisabled("mesh: %zu vertices, %zu triangles", mesh_.mesh.vertices.size(), mesh_.mesh.size());
   return changed;
 }
 

@@ -56,12 +56,12 @@ class FrustumSplitScene : public Scene {
 
   Mode mode_ = Mode::plane;
   Source source_ = Source::camera;
-  TrianglePlane split_;           // plane mode
-  Vec3 anchor_, last_anchor_;     // plane mode: the plane's handle, a point on it
+  TrianglePlane split_;        // plane mode
+  Vec3 anchor_, last_anchor_;  // plane mode: the plane's handle, a point on it
   Camera camera_ = default_camera();
   Vec3 look_, last_look_, last_eye_;  // frustum modes: the camera's look-at handle
   Mat4 matrix_ = Mat4::Identity();
-  Frustum planes_;                // Source::planes: the token's frustum
+  Frustum planes_;  // Source::planes: the token's frustum
   Triangle triangle_{{-4, 2.5, 0.2}, {3.5, 3.5, 0}, {-0.5, 5.5, 3.8}};
   ColoredMesh mesh_;
 

@@ -29,7 +29,8 @@ const std::vector<Preset> kPresets = {
     {"shelf", "a mesh: the shelf is hit before the floor", nullptr, true, -35, 18},
     {"moving", "a rising floor meets a falling particle", nullptr, true, -60, 12},
     {"extrusion", "edge against edge: A's lowest edge sweeps a parallelogram, B's top edge pierces it at t = 1/2",
-     "first_contact_moving_meshes:3,-2,0,1,2,0,1,0,0,3,1,0,1,2,0,0,-2,3,1,-2,0,1,2,0,1,0,-2,1,0,1,2,0,0,0", true, -52, 8, 7},
+     "first_contact_moving_meshes:3,-2,0,1,2,0,1,0,0,3,1,0,1,2,0,0,-2,3,1,-2,0,1,2,0,1,0,-2,1,0,1,2,0,0,0", true, -52,
+     8, 7},
     {"mesh-100k", "a terrain of 100,352 triangles", nullptr},
 };
 
@@ -45,7 +46,6 @@ Vec3 weights(const Vec3& x, const Triangle& t) {
   return Vec3(double(1 - alpha - beta), double(alpha), double(beta));
 }
 
-
 // ---- setup ---------------------------------------------------------------------------
 
 SegmentTriangleScene::SegmentTriangleScene(const Setup& setup) {
@@ -53,30 +53,36 @@ SegmentTriangleScene::SegmentTriangleScene(const Setup& setup) {
   if (setup.token.empty() && preset && !preset->token) {
     mode_ = preset->name == std::string("moving") ? Mode::moving : Mode::mesh;
     if (preset->name == std::string("mesh-100k")) {
-      mesh_ = gen::height_field(224, 0, 8, 0, 8, [](double x, double y) { return 0.6 * std::sin(x * 1.3) * std::cos(y * 0.9); });
+      mesh_ = gen::height_field(224, 0, 8, 0, 8,
+                                [](double x, double y) { return 0.6 * std::sin(x * 1.3) * std::cos(y * 0.9); });
       segment_ = {{1.5, 6.5, 3}, {6.5, 1.5, -1}};
     } else {
       gen::add_square(mesh_, 4, 0);  // the tests' floor, and the shelf above it
-      if (mode_ == Mode::mesh) gen::add_square(mesh_, 4, 2), segment_ = {{1, 3, 5}, {1, 3, -1}};
-      else m1_.translation() = Vec3(0, 0, 2), segment_ = {{1, 2.5, 3}, {1, 2.5, 0.5}};
+      if (mode_ == Mode::mesh)
+        gen::add_square(mesh_, 4, 2), segment_ = {{1, 3, 5}, {1, 3, -1}};
+      else
+        m1_.translation() = Vec3(0, 0, 2), segment_ = {{1, 2.5, 3}, {1, 2.5, 0.5}};
     }
     frame_inputs();
     return;
   }
-  const ParsedToken token = parse_token(starting_token(setup, kPresets, "find_segment_triangle:1,1,3,1,1,-1,0,0,0,4,0,0,0,4,0"));
-  load_token("02", query::table, token,
-             Loaders{[&](auto, const SegmentTrianglePair& in) { segment_ = in.segment, triangle_ = in.triangle; },
-                     [&](auto, const PointTriangle& in) { mode_ = Mode::point, x_ = in.x, triangle_ = in.triangle; },
-                     [&](auto, const SegmentMeshPair& in) { mode_ = Mode::mesh, segment_ = in.segment, mesh_ = in.mesh; },
-                     [&](auto, const MovingMesh& in) {
-                       mode_ = Mode::moving, segment_ = in.segment, mesh_ = in.mesh, m0_ = in.m0, m1_ = in.m1;
-                     },
-                     [&](auto, const MovingMeshes& in) { mode_ = Mode::contact, meshes_ = in; }});
+  const ParsedToken token =
+      parse_token(starting_token(setup, kPresets, "find_segment_triangle:1,1,3,1,1,-1,0,0,0,4,0,0,0,4,0"));
+  load_token(
+      "02", query::table, token,
+      Loaders{[&](auto, const SegmentTrianglePair& in) { segment_ = in.segment, triangle_ = in.triangle; },
+              [&](auto, const PointTriangle& in) { mode_ = Mode::point, x_ = in.x, triangle_ = in.triangle; },
+              [&](auto, const SegmentMeshPair& in) { mode_ = Mode::mesh, segment_ = in.segment, mesh_ = in.mesh; },
+              [&](auto, const MovingMesh& in) {
+    mode_ = Mode::moving, segment_ = in.segment, mesh_ = in.mesh, m0_ = in.m0, m1_ = in.m1;
+              },
+              [&](auto, const MovingMeshes& in) { mode_ = Mode::contact, meshes_ = in; }});
   frame_inputs();
 }
 
 void SegmentTriangleScene::frame_inputs() {
-  const char* names[] = {"segment and triangle", "point and triangle", "segment and mesh", "moving mesh", "two moving meshes"};
+  const char* names[] = {"segment and triangle", "point and triangle", "segment and mesh", "moving mesh",
+                         "two moving meshes"};
   mode = names[int(mode_)];
   std::vector<Vec3> points{segment_.a, segment_.b};
   if (mode_ == Mode::contact) {  // both meshes at the start and at the end of the frame
@@ -95,11 +101,16 @@ void SegmentTriangleScene::frame_inputs() {
 
 std::string SegmentTriangleScene::token() const {
   switch (mode_) {
-    case Mode::triangle: return replay_token(query::find_segment_triangle, SegmentTrianglePair{segment_, triangle_});
-    case Mode::point: return replay_token(query::barycentric, PointTriangle{x_, triangle_});
-    case Mode::mesh: return replay_token(query::first_hit, SegmentMeshPair{segment_, mesh_});
-    case Mode::moving: break;
-    case Mode::contact: return replay_token(query::first_contact_moving_meshes, meshes_);
+    case Mode::triangle:
+      return replay_token(query::find_segment_triangle, SegmentTrianglePair{segment_, triangle_});
+    case Mode::point:
+      return replay_token(query::barycentric, PointTriangle{x_, triangle_});
+    case Mode::mesh:
+      return replay_token(query::first_hit, SegmentMeshPair{segment_, mesh_});
+    case Mode::moving:
+      break;
+    case Mode::contact:
+      return replay_token(query::first_contact_moving_meshes, meshes_);
   }
   return replay_token(query::first_hit_moving, MovingMesh{segment_, mesh_, m0_, m1_});
 }
@@ -115,11 +126,21 @@ std::string describe_hits(const std::vector<MeshHit>& hits) {
 void SegmentTriangleScene::update() {
   steps.clear();
   switch (mode_) {
-    case Mode::triangle: update_triangle(); break;
-    case Mode::point: update_point(); break;
-    case Mode::mesh: update_mesh(); break;
-    case Mode::moving: update_moving(); break;
-    case Mode::contact: update_contact(); break;
+    case Mode::triangle:
+      update_triangle();
+      break;
+    case Mode::point:
+      update_point();
+      break;
+    case Mode::mesh:
+      update_mesh();
+      break;
+    case Mode::moving:
+      update_moving();
+      break;
+    case Mode::contact:
+      update_contact();
+      break;
   }
 }
 
@@ -138,7 +159,8 @@ void SegmentTriangleScene::update_triangle() {
               {"d_b", c ? num(c->d_b) : "", num(e.d_b)},
               {"crosses", c ? yes_no(c->crosses) : "", yes_no(e.crosses)}};
   if (e.crosses || (c && c->crosses))
-    one.rows.push_back({"t, x", c && c->crosses ? num(c->t) + ", " + num(c->point) : "", e.crosses ? num(e.t) + ", " + num(e.point) : ""});
+    one.rows.push_back({"t, x", c && c->crosses ? num(c->t) + ", " + num(c->point) : "",
+                        e.crosses ? num(e.t) + ", " + num(e.point) : ""});
   verdict_[1] = one.verdict;
   steps.push_back(one);
   probe_.reset();
@@ -169,7 +191,8 @@ void SegmentTriangleScene::update_triangle() {
 void SegmentTriangleScene::update_point() {
   const Triangle& tri = triangle_;
   plane_ = {tri.normal(), -tri.normal().dot(tri.v0)};
-  const bool moved = last_triangle_ && (last_triangle_->v0 != tri.v0 || last_triangle_->v1 != tri.v1 || last_triangle_->v2 != tri.v2);
+  const bool moved =
+      last_triangle_ && (last_triangle_->v0 != tri.v0 || last_triangle_->v1 != tri.v1 || last_triangle_->v2 != tri.v2);
   if (moved && plane_.normal != Vec3::Zero()) x_ -= plane_.value(x_) / plane_.normal.squaredNorm() * plane_.normal;
   last_triangle_ = tri;
   probe_ = x_;
@@ -216,18 +239,21 @@ void SegmentTriangleScene::update_mesh() {
   any_ = attempt([&] { return any_hit(s, mesh_); });
   all_ = attempt([&] { return all_hits(s, mesh_); });
   exact_hits_ = oracle::segment_mesh_hits(s, mesh_);
-  Step step = judged("L02S5", "first_hit, any_hit, all_hits", first_, [&](const MeshHit& got) { return judge::first_hit(in, got); });
+  Step step = judged("L02S5", "first_hit, any_hit, all_hits", first_,
+                     [&](const MeshHit& got) { return judge::first_hit(in, got); });
   join(step, any_, [&](bool got) { return judge::any_hit(in, got); });
   join(step, all_, [&](const std::vector<MeshHit>& got) { return judge::all_hits(in, got); });
   std::vector<MeshHit> exact;
-  for (const oracle::SegmentHit& h : exact_hits_) exact.push_back({true, h.triangle, h.t, h.point, Vec3::Zero(), Vec3::Zero()});
+  for (const oracle::SegmentHit& h : exact_hits_)
+    exact.push_back({true, h.triangle, h.t, h.point, Vec3::Zero(), Vec3::Zero()});
   const auto& f = first_;
-  step.rows = {{"any_hit", any_ ? yes_no(*any_) : "", yes_no(!exact.empty())},
-               {"first: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "",
-                exact.empty() ? "none" : std::to_string(exact[0].triangle)},
-               {"first: t, point", f && f->hit ? num(f->t) + ", " + num(f->point) : "",
-                exact.empty() ? "" : num(exact[0].t) + ", " + num(exact[0].point)},
-               {"all (triangle at t)", all_ ? describe_hits(*all_).substr(0, 60) : "", describe_hits(exact).substr(0, 60)}};
+  step.rows = {
+      {"any_hit", any_ ? yes_no(*any_) : "", yes_no(!exact.empty())},
+      {"first: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "",
+       exact.empty() ? "none" : std::to_string(exact[0].triangle)},
+      {"first: t, point", f && f->hit ? num(f->t) + ", " + num(f->point) : "",
+       exact.empty() ? "" : num(exact[0].t) + ", " + num(exact[0].point)},
+      {"all (triangle at t)", all_ ? describe_hits(*all_).substr(0, 60) : "", describe_hits(exact).substr(0, 60)}};
   verdict_[5] = step.verdict;
   steps.push_back(step);
 }
@@ -237,10 +263,12 @@ void SegmentTriangleScene::update_moving() {
   const MovingMesh in{s, mesh_, m0_, m1_};
   first_ = attempt([&] { return first_hit_moving(s, mesh_, m0_, m1_); });
   exact_hits_ = oracle::moving_mesh_hits(s, mesh_, m0_, m1_);
-  Step step = judged("L02S6", "first_hit_moving", first_, [&](const MeshHit& got) { return judge::first_hit_moving(in, got); });
+  Step step =
+      judged("L02S6", "first_hit_moving", first_, [&](const MeshHit& got) { return judge::first_hit_moving(in, got); });
   const auto& f = first_;
   const oracle::SegmentHit* e = exact_hits_.empty() ? nullptr : &exact_hits_[0];
-  step.rows = {{"hit: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "", e ? std::to_string(e->triangle) : "none"},
+  step.rows = {{"hit: triangle", f ? (f->hit ? std::to_string(f->triangle) : "none") : "",
+                e ? std::to_string(e->triangle) : "none"},
                {"t", f && f->hit ? num(f->t) : "", e ? num(e->t) : ""},
                {"point (at m1)", f && f->hit ? num(f->point) : "", e ? num(e->point) : ""}};
   verdict_[6] = step.verdict;

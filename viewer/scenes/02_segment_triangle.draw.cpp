@@ -45,7 +45,8 @@ void SegmentTriangleScene::draw_steps_1_to_4(Frame& f) const {
       r.label(crossing_->point, "x   t = " + num(crossing_->t), c, 12, 10);
     }
   }
-  if (f.show_exact && mode_ == Mode::triangle && exact_crossing_.crosses && (f.shows(1) || f.shows(4))) r.ring(exact_crossing_.point, palette::exact, 9);
+  if (f.show_exact && mode_ == Mode::triangle && exact_crossing_.crosses && (f.shows(1) || f.shows(4)))
+    r.ring(exact_crossing_.point, palette::exact, 9);
   if (probe_ && barycentric_ && barycentric_->dropped_axis >= 0 && f.shows(3)) {  // step 3: x = v0 + alpha e1 + beta e2
     const Color c = colour(verdict_[3]);
     const Vec3 p = t.v0 + barycentric_->alpha * (t.v1 - t.v0);
@@ -66,7 +67,8 @@ void SegmentTriangleScene::draw_steps_1_to_4(Frame& f) const {
   } else if (find_) {
     r.label(0.5 * (s.a + s.b), "find: miss", colour(verdict_[4]), 12, 0);
   }
-  if (f.show_exact && exact_hit_.hit) r.arrow(exact_hit_.point, exact_hit_.point + 0.3 * size * n, palette::exact, 1.5f);
+  if (f.show_exact && exact_hit_.hit)
+    r.arrow(exact_hit_.point, exact_hit_.point + 0.3 * size * n, palette::exact, 1.5f);
 }
 
 void SegmentTriangleScene::draw_hits(Frame& f) const {
@@ -118,8 +120,12 @@ void SegmentTriangleScene::draw_contact(Frame& f) const {
     for (const Vec3& v : m.vertices) sum += v;
     return m.vertices.empty() ? sum : Vec3(sum / double(m.vertices.size()));
   };
-  if (in.velocity_a != Vec3::Zero()) r.arrow(centre(in.a), centre(in.a) + in.velocity_a, palette::input, 2), r.label(centre(in.a) + in.velocity_a, "va", palette::input);
-  if (in.velocity_b != Vec3::Zero()) r.arrow(centre(in.b), centre(in.b) + in.velocity_b, palette::surface, 2), r.label(centre(in.b) + in.velocity_b, "vb", palette::surface);
+  if (in.velocity_a != Vec3::Zero())
+    r.arrow(centre(in.a), centre(in.a) + in.velocity_a, palette::input, 2),
+        r.label(centre(in.a) + in.velocity_a, "va", palette::input);
+  if (in.velocity_b != Vec3::Zero())
+    r.arrow(centre(in.b), centre(in.b) + in.velocity_b, palette::surface, 2),
+        r.label(centre(in.b) + in.velocity_b, "vb", palette::surface);
   const oracle::MeshContact& e = exact_contact_;
   if (e.hit && e.kind == 2) {  // the swept parallelogram of the contact's edge of A, in B's frame (B still)
     const auto edge = oracle::mesh_edges(in.a)[std::size_t(e.feature_a)];
@@ -178,11 +184,10 @@ bool SegmentTriangleScene::inputs() {
   bool changed = false;
   if (mode_ != Mode::point) changed |= edit("a", segment_.a) | edit("b", segment_.b);
   if (mode_ == Mode::point) changed |= edit("x", x_);
-  if (mode_ <= Mode::point)
-    changed |= edit("v0", triangle_.v0) | edit("v1", triangle_.v1) | edit("v2", triangle_.v2);
-  if (mode_ == Mode::contact)
-    return edit("velocity_a", meshes_.velocity_a) | edit("velocity_b", meshes_.velocity_b);
-  if (mode_ >= Mode::mesh) ImGui::TextDisabled("mesh: %zu vertices, %zu triangles", mesh_.vertices.size(), mesh_.size());
+  if (mode_ <= Mode::point) changed |= edit("v0", triangle_.v0) | edit("v1", triangle_.v1) | edit("v2", triangle_.v2);
+  if (mode_ == Mode::contact) return edit("velocity_a", meshes_.velocity_a) | edit("velocity_b", meshes_.velocity_b);
+  if (mode_ >= Mode::mesh)
+    ImGui::TextDisabled("mesh: %zu vertices, %zu triangles", mesh_.vertices.size(), mesh_.size());
   if (mode_ == Mode::moving) {
     Vec3 t0 = m0_.translation(), t1 = m1_.translation();
     if (edit("m0 translation", t0)) m0_.translation() = t0, changed = true;
@@ -194,8 +199,10 @@ bool SegmentTriangleScene::inputs() {
 std::vector<Handle> SegmentTriangleScene::handles() {
   std::vector<Handle> h;
   if (mode_ == Mode::contact) return h;
-  if (mode_ == Mode::point) h.push_back({&x_, "x", &plane_});
-  else h.insert(h.end(), {{&segment_.a, "a"}, {&segment_.b, "b"}});
+  if (mode_ == Mode::point)
+    h.push_back({&x_, "x", &plane_});
+  else
+    h.insert(h.end(), {{&segment_.a, "a"}, {&segment_.b, "b"}});
   if (mode_ <= Mode::point) h.insert(h.end(), {{&triangle_.v0, "v0"}, {&triangle_.v1, "v1"}, {&triangle_.v2, "v2"}});
   return h;
 }

@@ -46,7 +46,7 @@ class SegmentTriangleScene : public Scene {
   Vec3 x_ = Vec3::Zero();  // point mode: the point tested
   Mesh mesh_;
   RigidTransform m0_ = RigidTransform::Identity(), m1_ = RigidTransform::Identity();
-  Plane plane_;            // the triangle's plane, where x slides
+  Plane plane_;                            // the triangle's plane, where x slides
   std::optional<Triangle> last_triangle_;  // point mode: x follows the plane when it moves
 
   // The student's answers, the exact ones, and each step's verdict.
@@ -56,7 +56,7 @@ class SegmentTriangleScene : public Scene {
   Attempt<SegmentTriangleHit> find_;
   Attempt<MeshHit> first_;
   Attempt<std::vector<MeshHit>> all_;
-  MovingMeshes meshes_;            // contact mode: the two meshes and their velocities
+  MovingMeshes meshes_;  // contact mode: the two meshes and their velocities
   Attempt<MeshContact> contact_;
   oracle::MeshContact exact_contact_;
   std::optional<Vec3> probe_;  // the point steps 2 and 3 test

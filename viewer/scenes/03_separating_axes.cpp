@@ -17,12 +17,16 @@
 namespace viewer::separating_axes {
 
 const std::vector<Preset> kPresets = {
-    {"edge-axis", "least penetration along the edge axis A_0 x B_0: depth 25 / (4 sqrt 10) = 1.976", nullptr, true, -20, 20, 3},
+    {"edge-axis", "least penetration along the edge axis A_0 x B_0: depth 25 / (4 sqrt 10) = 1.976", nullptr, true, -20,
+     20, 3},
     {"edge-apart", "apart along A_0 x B_0 only: every face axis overlaps", nullptr, true, -20, 20, 2},
-    {"projection", "the projections onto x: radius 5 (0.6) + 2.5 (0.8) = 5, apart as 7 > 1 + 5", nullptr, true, -90, 80, 1},
+    {"projection", "the projections onto x: radius 5 (0.6) + 2.5 (0.8) = 5, apart as 7 > 1 + 5", nullptr, true, -90, 80,
+     1},
     {"near-parallel", "B turned by 2^-54: the tiny axis A_0 x B_0 must not separate", nullptr},
-    {"triangles", "crossing triangles: t1's vertex t1.v2 lies in t0's plane; they intersect", nullptr, true, -50, 25, 4},
-    {"intervals", "the lecture's intervals on the line of the planes (read on y): t0 [0, 3], t1 [-5/3, 1] overlap", nullptr, true, -8, 38, 4},
+    {"triangles", "crossing triangles: t1's vertex t1.v2 lies in t0's plane; they intersect", nullptr, true, -50, 25,
+     4},
+    {"intervals", "the lecture's intervals on the line of the planes (read on y): t0 [0, 3], t1 [-5/3, 1] overlap",
+     nullptr, true, -8, 38, 4},
     {"coplanar", "coplanar triangles sharing the long edge", nullptr},
     {"plate", "through a thin plate within one step: contact from 0.46875 to 0.53125", nullptr, true, -70, 30, 5},
     {"corner", "past a corner: only W x A_2 separates the swept boxes", nullptr, true, -90, 80, 5},
@@ -33,7 +37,6 @@ Mat3 three_four_five() {
   m << 0.6, -0.8, 0, 0.8, 0.6, 0, 0, 0, 1;
   return m;
 }
-
 
 std::string axis_name(int index) {
   if (index < 0 || index > 14) return std::to_string(index);
@@ -85,17 +88,16 @@ SeparatingAxesScene::SeparatingAxesScene(const Setup& setup) {
     const ParsedToken token = parse_token(setup.token);
     load_token("03", query::table, token,
                Loaders{[&](auto, const BoxOnAxis& in) {
-                         a_ = in.box, axis_ = in.axis;
-                         b_ = make_box(in.box.center + Vec3(0, 0, 3 * in.box.half_extents.maxCoeff() + 1),
-                                       Vec3(0.5, 0.5, 0.5));
+      a_ = in.box, axis_ = in.axis;
+      b_ = make_box(in.box.center + Vec3(0, 0, 3 * in.box.half_extents.maxCoeff() + 1), Vec3(0.5, 0.5, 0.5));
                        },
                        [&](auto, const BoxPairOnAxis& in) { a_ = in.a, b_ = in.b, axis_ = in.axis; },
                        [&](auto, const BoxPair& in) { a_ = in.a, b_ = in.b; },
                        [&](auto, const TrianglePair& in) { mode_ = Mode::triangles, t0_ = in.t0, t1_ = in.t1; },
                        [&](auto, const MovingBoxes& in) {
-                         mode_ = Mode::moving, a_ = in.a, va_ = in.velocity_a, b_ = in.b, vb_ = in.velocity_b;
-                         duration_ = in.duration;
-                       }});
+      mode_ = Mode::moving, a_ = in.a, va_ = in.velocity_a, b_ = in.b, vb_ = in.velocity_b;
+      duration_ = in.duration;
+               }});
   }
   angles_a_ = angles_of(a_.axes), angles_b_ = angles_of(b_.axes);
   frame_inputs();
@@ -118,9 +120,12 @@ void SeparatingAxesScene::frame_inputs() {
 
 std::string SeparatingAxesScene::token() const {
   switch (mode_) {
-    case Mode::boxes: return replay_token(query::find_boxes, BoxPair{a_, b_});
-    case Mode::triangles: return replay_token(query::test_triangles, TrianglePair{t0_, t1_});
-    case Mode::moving: break;
+    case Mode::boxes:
+      return replay_token(query::find_boxes, BoxPair{a_, b_});
+    case Mode::triangles:
+      return replay_token(query::test_triangles, TrianglePair{t0_, t1_});
+    case Mode::moving:
+      break;
   }
   return replay_token(query::find_moving_boxes, MovingBoxes{a_, va_, b_, vb_, duration_});
 }
@@ -140,14 +145,18 @@ void SeparatingAxesScene::update_boxes() {
   proj_a_ = attempt([&] { return project_box(a_, axis_); });
   proj_b_ = attempt([&] { return project_box(b_, axis_); });
   separated_ = attempt([&] { return separated_on_axis(a_, b_, axis_); });
-  Step s1 = judged("L03S1", "project_box, separated_on_axis along L", proj_a_,
-                   [&](const Projection& got) { return judge::project_box(BoxOnAxis{a_, axis_}, got); });
+  Step s1 = judged("L03S1", "project_box, separated_on_axis along L", proj_a_, [&](const Projection& got) {
+    return judge::project_box(BoxOnAxis{a_, axis_}, got);
+  });
   join(s1, proj_b_, [&](const Projection& got) { return judge::project_box(BoxOnAxis{b_, axis_}, got); });
   join(s1, separated_, [&](bool got) { return judge::separated_on_axis(BoxPairOnAxis{a_, b_, axis_}, got); });
   const oracle::BoxProjection ea = oracle::box_projection(a_, axis_), eb = oracle::box_projection(b_, axis_);
-  s1.rows = {{"A: centre, radius", proj_a_ ? num(proj_a_->center) + ", " + num(proj_a_->radius) : "", num(ea.center) + ", " + num(ea.radius)},
-             {"B: centre, radius", proj_b_ ? num(proj_b_->center) + ", " + num(proj_b_->radius) : "", num(eb.center) + ", " + num(eb.radius)},
-             {"separated along L", separated_ ? yes_no(*separated_) : "", yes_no(oracle::boxes_separated_along(a_, b_, axis_))}};
+  s1.rows = {{"A: centre, radius", proj_a_ ? num(proj_a_->center) + ", " + num(proj_a_->radius) : "",
+              num(ea.center) + ", " + num(ea.radius)},
+             {"B: centre, radius", proj_b_ ? num(proj_b_->center) + ", " + num(proj_b_->radius) : "",
+              num(eb.center) + ", " + num(eb.radius)},
+             {"separated along L", separated_ ? yes_no(*separated_) : "",
+              yes_no(oracle::boxes_separated_along(a_, b_, axis_))}};
   verdict_[1] = s1.verdict;
   steps.push_back(s1);
 
@@ -163,9 +172,11 @@ void SeparatingAxesScene::update_boxes() {
   join(s2, axes_, [&](const std::array<Vec3, 15>& got) { return judge::box_axes(pair, got); });
   double worst = 0;
   if (axes_)
-    for (int k = 0; k < 15; ++k) worst = std::max(worst, ((*axes_)[std::size_t(k)] - oracle::box_pair_axis(a_, b_, k)).norm());
+    for (int k = 0; k < 15; ++k)
+      worst = std::max(worst, ((*axes_)[std::size_t(k)] - oracle::box_pair_axis(a_, b_, k)).norm());
   s2.rows = {{"the 15 axes: largest error", axes_ ? num(worst) : "", "0"},
-             {"test_boxes", test_ ? yes_no(*test_, "intersecting", "separated") : "", yes_no(exact_intersect_, "intersecting", "separated")},
+             {"test_boxes", test_ ? yes_no(*test_, "intersecting", "separated") : "",
+              yes_no(exact_intersect_, "intersecting", "separated")},
              {"exact margin", "", num(oracle::box_pair_margin(a_, b_))}};
   verdict_[2] = s2.verdict;
   steps.push_back(s2);
@@ -198,7 +209,8 @@ void SeparatingAxesScene::update_triangles() {
   // The lecture's intervals (graded on their domain only), then the sign-based test.
   line_ = attempt([&] { return triangles_by_intervals(t0_, t1_); });
   tri_ = attempt([&] { return test_triangles(t0_, t1_); });
-  Step s = judged("L03S4", "triangles_by_intervals, test_triangles", tri_, [&](bool got) { return judge::test_triangles(in, got); });
+  Step s = judged("L03S4", "triangles_by_intervals, test_triangles", tri_,
+                  [&](bool got) { return judge::test_triangles(in, got); });
   join(s, line_, [&](const LineIntervals& got) { return judge::triangles_by_intervals(in, got); });
   const auto interval = [](double low, double high) { return "[" + num(low) + ", " + num(high) + "]"; };
   const bool domain = gen::in_interval_domain(in);
@@ -207,8 +219,10 @@ void SeparatingAxesScene::update_triangles() {
   const auto& l = line_;
   s.rows = {{"intervals: crossing, axis", l ? yes_no(l->crossing) + ", " + std::to_string(l->axis) : "",
              yes_no(exact.crossing) + (domain ? "" : " (outside the method's domain)")},
-            {"t0 in t1's plane", l && l->crossing ? interval(l->low0, l->high0) : "", exact.crossing ? interval(exact.low0, exact.high0) : ""},
-            {"t1 in t0's plane", l && l->crossing ? interval(l->low1, l->high1) : "", exact.crossing ? interval(exact.low1, exact.high1) : ""},
+            {"t0 in t1's plane", l && l->crossing ? interval(l->low0, l->high0) : "",
+             exact.crossing ? interval(exact.low0, exact.high0) : ""},
+            {"t1 in t0's plane", l && l->crossing ? interval(l->low1, l->high1) : "",
+             exact.crossing ? interval(exact.low1, exact.high1) : ""},
             {"intersect", tri_ ? yes_no(*tri_) : "", yes_no(oracle::triangles_intersect(t0_, t1_))}};
   verdict_[4] = s.verdict;
   steps.push_back(s);
@@ -223,7 +237,8 @@ void SeparatingAxesScene::update_moving() {
                   [&](const ContactInterval& got) { return judge::find_moving_boxes(in, got); });
   join(s, moving_test_, [&](bool got) { return judge::test_moving_boxes(in, got); });
   const auto& c = interval_;
-  s.rows = {{"test", moving_test_ ? yes_no(*moving_test_, "contact", "never") : "", yes_no(exact_times_.contact, "contact", "never")},
+  s.rows = {{"test", moving_test_ ? yes_no(*moving_test_, "contact", "never") : "",
+             yes_no(exact_times_.contact, "contact", "never")},
             {"first", c && c->contact ? num(c->first) : "", exact_times_.contact ? num(exact_times_.first) : ""},
             {"last", c && c->contact ? num(c->last) : "", exact_times_.contact ? num(exact_times_.last) : ""}};
   verdict_[5] = s.verdict;

@@ -40,7 +40,8 @@ void SeparatingAxesScene::draw_projection(Frame& f) const {
       // The two corners that project to the ends, and their projectors.
       for (const double end : {-1.0, 1.0}) {
         Vec3 corner = b.center;
-        for (int k = 0; k < 3; ++k) corner += end * (b.axes.col(k).dot(u) >= 0 ? 1 : -1) * b.half_extents[k] * b.axes.col(k);
+        for (int k = 0; k < 3; ++k)
+          corner += end * (b.axes.col(k).dot(u) >= 0 ? 1 : -1) * b.half_extents[k] * b.axes.col(k);
         r.dashed(corner, base + up + corner.dot(u) * u, palette::muted, 1.0f, 5.0f);
       }
     }
@@ -61,7 +62,8 @@ void SeparatingAxesScene::draw_projection(Frame& f) const {
     r.line(base + from * u, base + to * u, c, 7);
     r.point(base + from * u, c, 4), r.point(base + to * u, c, 4);
     const std::string verdict = separated_ ? (*separated_ ? ": separated along L" : ": not separated along L") : "";
-    r.label(base + 0.5 * (from + to) * u, (from < to ? "gap " + num(to - from) : "overlap " + num(from - to)) + verdict, c, 8, 18);
+    r.label(base + 0.5 * (from + to) * u, (from < to ? "gap " + num(to - from) : "overlap " + num(from - to)) + verdict,
+            c, 8, 18);
   }
 }
 
@@ -152,17 +154,22 @@ void SeparatingAxesScene::draw(Frame& f) {
     draw_shaded_box(r, b_, palette::muted, 0, 1);
     r.dashed(b_.center, b_.center + duration_ * vb_, palette::muted);
     if (va_ != Vec3::Zero()) r.dashed(a_.center, a_.center + duration_ * va_, palette::muted);
-    const auto moved = [](Box b, const Vec3& v, double t) { b.center += t * v; return b; };
+    const auto moved = [](Box b, const Vec3& v, double t) {
+      b.center += t * v;
+      return b;
+    };
     draw_shaded_box(r, moved(a_, va_, shown_time_), palette::surface, 0.35f);
     draw_shaded_box(r, moved(b_, vb_, shown_time_), palette::input, 0.25f);
     r.label(b_.center + shown_time_ * vb_, "t = " + num(shown_time_), palette::input);
     if (interval_ && interval_->contact && f.shows(5)) {
       const Color c = colour(verdict_[5]);
       draw_shaded_box(r, moved(b_, vb_ - va_, interval_->first), c, 0, 2.5f);
-      r.label(b_.center + interval_->first * (vb_ - va_), "first " + num(interval_->first) + " (seen from A)", c, 10, 14);
+      r.label(b_.center + interval_->first * (vb_ - va_), "first " + num(interval_->first) + " (seen from A)", c, 10,
+              14);
     }
     if (interval_ && !interval_->contact && f.shows(5))
-      r.label(b_.center + 0.5 * duration_ * vb_, "no contact in [0, " + num(duration_) + "]", colour(verdict_[5]), 12, 14);
+      r.label(b_.center + 0.5 * duration_ * vb_, "no contact in [0, " + num(duration_) + "]", colour(verdict_[5]), 12,
+              14);
     if (f.show_exact && exact_times_.contact) r.ring(b_.center + exact_times_.first * (vb_ - va_), palette::exact, 9);
     return;
   }
@@ -174,10 +181,12 @@ void SeparatingAxesScene::draw(Frame& f) {
     const Color c = colour(verdict_[3]);
     const double len = std::max(std::abs(find_->depth), 0.3 * radius);
     r.arrow(a_.center, a_.center + len * find_->axis, c, 3);
-    r.label(a_.center + len * find_->axis, "axis " + axis_name(find_->axis_index) + ", depth " + num(find_->depth), c, 10, -10);
+    r.label(a_.center + len * find_->axis, "axis " + axis_name(find_->axis_index) + ", depth " + num(find_->depth), c,
+            10, -10);
   }
   if (f.show_exact && exact_index_ >= 0 && (f.shows(3) || f.shows(2)))
-    r.arrow(a_.center, a_.center + 0.8 * std::max(std::abs(exact_depth_), 0.3 * radius) * exact_axis_, palette::exact, 1.5f);
+    r.arrow(a_.center, a_.center + 0.8 * std::max(std::abs(exact_depth_), 0.3 * radius) * exact_axis_, palette::exact,
+            1.5f);
   if (test_ && f.shows(2))
     r.label(b_.center, *test_ ? "test: intersecting" : "test: separated", colour(verdict_[2]), 12, 14);
 }

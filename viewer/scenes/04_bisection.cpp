@@ -25,7 +25,8 @@ namespace viewer::bisection {
 
 const std::vector<Preset> kPresets = {
     {"lecture", "the lecture's bisection: 0.5, 0.25, 0.375, 0.4375, 0.40625", nullptr, true, -90, 86, 2},
-    {"tunnelling", "a bullet passes a thin window between the frame's ends; 25 sub-steps see it", nullptr, true, -90, 86, 3},
+    {"tunnelling", "a bullet passes a thin window between the frame's ends; 25 sub-steps see it", nullptr, true, -90,
+     86, 3},
     {"advance", "conservative advancement: each advance leaves a quarter of the gap", nullptr, true, -90, 86, 4},
     {"spinning-bar", "a spinning bar sweeps into a resting ball", nullptr, false, -90, 86, 2},
     {"graze", "a graze at a sample time is a contact", nullptr, false, -90, 86, 3},
@@ -54,7 +55,8 @@ MovingPairCase ball_and_wall(double tolerance) {
 }
 // The bullet x(t) = -3 + 6 t, radius 1/8, and the window |x| <= 1/4 (step 3).
 MovingPairCase bullet_and_window(double tolerance) {
-  return {ball(0.125, moving({-3, 0, 0}, {6, 0, 0})), block({0.25, 2, 2}, still(Vec3::Zero())), SearchTimes{0, 1, tolerance}};
+  return {ball(0.125, moving({-3, 0, 0}, {6, 0, 0})), block({0.25, 2, 2}, still(Vec3::Zero())),
+          SearchTimes{0, 1, tolerance}};
 }
 
 // ---- setup ---------------------------------------------------------------------------
@@ -85,24 +87,24 @@ BisectionScene::BisectionScene(const Setup& setup) {
     return;
   }
   const ParsedToken token = parse_token(setup.token);
-  load_token("04", query::table, token,
-             Loaders{[&](auto q, const MovingPairCase& in) {
-                       case_ = in;
-                       if (q == query::tunnelling || q == query::closing_speed) mode_ = Mode::tunnelling;
-                     },
-                     [&](auto, const SampledPair& in) {
-                       mode_ = Mode::sampled, case_ = in.pair, substeps_ = std::max(1, in.substeps);
-                     },
-                     [&](auto, const AdvancedPair& in) {
-                       mode_ = Mode::advance, case_ = in.pair, speed_factor_ = in.speed_factor;
-                     },
-                     [&](auto, const PointBox& in) { mode_ = Mode::point, point_box_ = in; },
-                     [&](auto, const SubstepRule& in) { mode_ = Mode::rule, rule_ = in; }});
+  load_token(
+      "04", query::table, token,
+      Loaders{[&](auto q, const MovingPairCase& in) {
+    case_ = in;
+    if (q == query::tunnelling || q == query::closing_speed) mode_ = Mode::tunnelling;
+              },
+              [&](auto, const SampledPair& in) {
+    mode_ = Mode::sampled, case_ = in.pair, substeps_ = std::max(1, in.substeps);
+      },
+      [&](auto, const AdvancedPair& in) { mode_ = Mode::advance, case_ = in.pair, speed_factor_ = in.speed_factor; },
+      [&](auto, const PointBox& in) { mode_ = Mode::point, point_box_ = in; },
+      [&](auto, const SubstepRule& in) { mode_ = Mode::rule, rule_ = in; }});
   frame_inputs();
 }
 
 void BisectionScene::frame_inputs() {
-  const char* names[] = {"bisection", "sub-steps", "tunnelling", "conservative advancement", "closest point", "sub-step rule"};
+  const char* names[] = {"bisection",     "sub-steps",    "tunnelling", "conservative advancement",
+                         "closest point", "sub-step rule"};
   mode = names[int(mode_)];
   Eigen::AlignedBox3d box;
   if (mode_ == Mode::point) {
@@ -124,12 +126,18 @@ void BisectionScene::frame_inputs() {
 
 std::string BisectionScene::token() const {
   switch (mode_) {
-    case Mode::bisect: return replay_token(query::bisect, case_);
-    case Mode::sampled: return replay_token(query::sample_then_bisect, SampledPair{case_, substeps_});
-    case Mode::tunnelling: return replay_token(query::tunnelling, case_);
-    case Mode::advance: return replay_token(query::advance, AdvancedPair{case_, speed_factor_});
-    case Mode::point: return replay_token(query::closest_point, point_box_);
-    case Mode::rule: break;
+    case Mode::bisect:
+      return replay_token(query::bisect, case_);
+    case Mode::sampled:
+      return replay_token(query::sample_then_bisect, SampledPair{case_, substeps_});
+    case Mode::tunnelling:
+      return replay_token(query::tunnelling, case_);
+    case Mode::advance:
+      return replay_token(query::advance, AdvancedPair{case_, speed_factor_});
+    case Mode::point:
+      return replay_token(query::closest_point, point_box_);
+    case Mode::rule:
+      break;
   }
   return replay_token(query::substeps_for, rule_);
 }
@@ -161,7 +169,9 @@ void BisectionScene::step_overlap() {
 // The rows every search shows, and the exact first contact beside them.
 std::vector<Row> search_rows(const Attempt<TimeOfImpact>& g, bool exact_hit, bool exact_at_start, double exact_lo,
                              double exact_hi) {
-  const std::string contact = exact_at_start ? "at t0" : exact_hit ? "in (" + num(exact_lo) + ", " + num(exact_hi) + "]" : "none seen";
+  const std::string contact = exact_at_start ? "at t0"
+                              : exact_hit    ? "in (" + num(exact_lo) + ", " + num(exact_hi) + "]"
+                                             : "none seen";
   return {{"hit", g ? yes_no(g->hit) + (g->overlapping_at_start ? " (at start)" : "") : "", exact_hit ? "yes" : "no"},
           {"t (last clear)", g ? num(g->t) : "", exact_hit && !exact_at_start ? num(exact_lo) : ""},
           {"t_contact", g && g->hit ? num(g->t_contact) : "", "first contact " + contact},
@@ -185,7 +195,8 @@ void BisectionScene::step_bisect(const char* title) {
 void BisectionScene::step_closing_speed() {
   const SearchTimes& T = case_.times;
   const auto got = attempt([&] {
-    return closing_speed(case_.a.sphere, motion_of(case_.a.motion), shape_of(case_.b), motion_of(case_.b.motion), T.t0, T.t1);
+    return closing_speed(case_.a.sphere, motion_of(case_.a.motion), shape_of(case_.b), motion_of(case_.b.motion), T.t0,
+                         T.t1);
   });
   Step s = judged("L04S3", "closing_speed: max_speed(a) + max_speed(b)", got,
                   [&](double v) { return judge::closing_speed(case_, v); });
@@ -255,12 +266,24 @@ void BisectionScene::update() {
   search_ = {};
   tested_.clear(), tested_overlap_.clear();
   switch (mode_) {
-    case Mode::point: update_point(); return;
-    case Mode::rule: step_rule(rule_); return;
-    case Mode::bisect: update_bisect(); break;
-    case Mode::sampled: update_sampled(); break;
-    case Mode::tunnelling: update_tunnelling(); break;
-    case Mode::advance: update_advance(); break;
+    case Mode::point:
+      update_point();
+      return;
+    case Mode::rule:
+      step_rule(rule_);
+      return;
+    case Mode::bisect:
+      update_bisect();
+      break;
+    case Mode::sampled:
+      update_sampled();
+      break;
+    case Mode::tunnelling:
+      update_tunnelling();
+      break;
+    case Mode::advance:
+      update_advance();
+      break;
   }
   for (double t : tested_) tested_overlap_.push_back(exact_overlap(t));
 }

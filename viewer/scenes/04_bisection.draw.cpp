@@ -34,7 +34,8 @@ void BisectionScene::layout() {
 
 // A sphere as three great circles (and a translucent ball), a box as its 12 edges (and
 // its faces).
-void BisectionScene::draw_body(Renderer& r, const MovingBody& body, const RigidTransform& pose, Color c, bool filled) const {
+void BisectionScene::draw_body(Renderer& r, const MovingBody& body, const RigidTransform& pose, Color c,
+                               bool filled) const {
   const float width = filled ? 2.0f : 1.0f;
   if (!body.is_box) {
     const Vec3 o = pose * body.sphere.center;
@@ -88,7 +89,7 @@ void BisectionScene::draw_timeline(Frame& f) const {
   // lecture numbers its iterations (1 to 5 in its example). Labels that would overlap are
   // stacked upward, each on a thin leader down to its tick.
   const std::size_t shown = std::min<std::size_t>(tested_.size(), 40);
-  const double pixel = r.pixels(at(T.t0, 0), 1);  // world length of a pixel on the axis
+  const double pixel = r.pixels(at(T.t0, 0), 1);              // world length of a pixel on the axis
   std::vector<std::vector<std::pair<double, double>>> taken;  // per stacking level: label spans, in pixels
   int number = 0;
   for (std::size_t i = 0; i < shown; ++i) {
@@ -120,13 +121,15 @@ void BisectionScene::draw_timeline(Frame& f) const {
     if (!std::isfinite(hi) || hi == tested_[0]) continue;
     for (std::size_t j = 0; j <= i; ++j)
       if (!tested_overlap_[j] && tested_[j] < hi) lo = std::max(lo, tested_[j]);
-    if (std::isfinite(lo) && (brackets.empty() || brackets.back() != std::make_pair(lo, hi))) brackets.push_back({lo, hi});
+    if (std::isfinite(lo) && (brackets.empty() || brackets.back() != std::make_pair(lo, hi)))
+      brackets.push_back({lo, hi});
   }
   const std::size_t first = brackets.size() > kRows ? brackets.size() - kRows : 0;
   for (std::size_t i = first; i < brackets.size(); ++i) {
     const int k = int(i - first) + 1;
     r.line(at(brackets[i].first, k), at(brackets[i].second, k), palette::muted, 3);
-    r.label(at(brackets[i].second, k), "[" + num(brackets[i].first) + ", " + num(brackets[i].second) + "]", palette::muted, 8, -7);
+    r.label(at(brackets[i].second, k), "[" + num(brackets[i].first) + ", " + num(brackets[i].second) + "]",
+            palette::muted, 8, -7);
   }
   // The student's final bracket, and the exact first contact.
   const int last = int(brackets.size() - first) + 1;
@@ -180,7 +183,8 @@ void BisectionScene::draw(Frame& f) {
   // Every tested time, faint: where the search looked.
   if (tested_.size() <= 64)
     for (std::size_t i = 0; i < tested_.size(); ++i)
-      draw_body(r, case_.a, pose_a(tested_[i]), (tested_overlap_[i] ? palette::surface : palette::input).with_alpha(0.35f), false);
+      draw_body(r, case_.a, pose_a(tested_[i]),
+                (tested_overlap_[i] ? palette::surface : palette::input).with_alpha(0.35f), false);
   if (search_ && search_->hit && f.shows(search_step_)) {
     const Color c = colour(search_verdict_);
     draw_pair(r, search_->t, c, true);
@@ -214,7 +218,8 @@ bool BisectionScene::inputs() {
   bool box = case_.b.is_box;
   if (ImGui::Checkbox("b is a box", &box)) {
     case_.b.is_box = box, changed = true;
-    if (box && case_.b.box.half_extents == Vec3::Zero()) case_.b.box.half_extents = Vec3::Constant(case_.b.sphere.radius);
+    if (box && case_.b.box.half_extents == Vec3::Zero())
+      case_.b.box.half_extents = Vec3::Constant(case_.b.sphere.radius);
     if (!box && case_.b.sphere.radius == 0) case_.b.sphere.radius = case_.b.box.half_extents.maxCoeff();
   }
   if (case_.b.is_box) {

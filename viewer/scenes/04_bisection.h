@@ -89,7 +89,7 @@ class BisectionScene : public Scene {
   Verdict verdict_[6] = {};
   // The time axis: t0 at (left_, y0_, z_), t1 width_ to the right; rows row_ apart below.
   double left_ = 0, width_ = 1, y0_ = 0, z_ = 0, row_ = 0.1;
-  Eigen::AlignedBox3d bodies_;  // what the bodies sweep over [t0, t1], roughly
+  Eigen::AlignedBox3d bodies_;      // what the bodies sweep over [t0, t1], roughly
   static constexpr int kRows = 12;  // bracket rows at most
 };
 

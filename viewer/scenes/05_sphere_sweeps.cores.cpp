@@ -16,7 +16,8 @@ Step distance_step(const char* tag, const char* title, const In& in, Call&& call
 
 // Step 3: the student's test beside "the cores' exact distance <= r0 + r1".
 template <class Pair, class Test>
-Step test_step(const char* title, const Pair& in, Test&& test, const oracle::SquaredDistance& cores, Attempt<bool>& got) {
+Step test_step(const char* title, const Pair& in, Test&& test, const oracle::SquaredDistance& cores,
+               Attempt<bool>& got) {
   got = attempt([&] { return test(in.a, in.b); });
   Step s = judged("L05S3", title, got, [&](bool g) { return judge::test_pair(in, g); });
   const bool exact = cores.compare(in.a.radius, in.b.radius) <= 0;
@@ -40,7 +41,8 @@ void SphereSweepsScene::update_cores() {
     const PointSegmentPair in{a_.p, b_.s};
     const oracle::SquaredDistance d = oracle::squared_distance(in.p, in.segment);
     Attempt<PointSegmentDistance> got;
-    Step s = distance_step("L05S1", "point_segment", in, [&] { return point_segment(in.p, in.segment); }, judge::point_segment, d, got);
+    Step s = distance_step(
+        "L05S1", "point_segment", in, [&] { return point_segment(in.p, in.segment); }, judge::point_segment, d, got);
     if (got) s.rows.push_back({"t", num(got->t), ""}), keep(in.p, got->closest);
     steps.push_back(s);
     steps.push_back(test_step("test_sphere_capsule", SphereCapsule{sa, cb}, test_sphere_capsule, d, meet_));
@@ -48,7 +50,9 @@ void SphereSweepsScene::update_cores() {
     const SegmentPair in{a_.s, b_.s};
     const oracle::SquaredDistance d = oracle::squared_distance(in.first, in.second);
     Attempt<SegmentSegmentDistance> got;
-    Step s = distance_step("L05S1", "segment_segment", in, [&] { return segment_segment(in.first, in.second); }, judge::segment_segment, d, got);
+    Step s = distance_step(
+        "L05S1", "segment_segment", in, [&] { return segment_segment(in.first, in.second); }, judge::segment_segment, d,
+        got);
     if (got) s.rows.push_back({"s, t", num(got->s) + ", " + num(got->t), ""}), keep(got->closest0, got->closest1);
     steps.push_back(s);
     steps.push_back(test_step("test_capsule_capsule", CapsulePair{ca, cb}, test_capsule_capsule, d, meet_));
@@ -56,7 +60,9 @@ void SphereSweepsScene::update_cores() {
     const PointRectanglePair in{a_.p, b_.r};
     const oracle::SquaredDistance d = oracle::squared_distance(in.p, in.rectangle);
     Attempt<PointRectangleDistance> got;
-    Step s = distance_step("L05S2", "point_rectangle", in, [&] { return point_rectangle(in.p, in.rectangle); }, judge::point_rectangle, d, got);
+    Step s = distance_step(
+        "L05S2", "point_rectangle", in, [&] { return point_rectangle(in.p, in.rectangle); }, judge::point_rectangle, d,
+        got);
     if (got) s.rows.push_back({"s, t", num(got->s) + ", " + num(got->t), ""}), keep(in.p, got->closest);
     steps.push_back(s);
     steps.push_back(test_step("test_sphere_lozenge", SphereLozenge{sa, lb}, test_sphere_lozenge, d, meet_));
@@ -64,15 +70,21 @@ void SphereSweepsScene::update_cores() {
     const SegmentRectanglePair in{a_.s, b_.r};
     const oracle::SquaredDistance d = oracle::squared_distance(in.segment, in.rectangle);
     Attempt<SegmentRectangleDistance> got;
-    Step s = distance_step("L05S2", "segment_rectangle", in, [&] { return segment_rectangle(in.segment, in.rectangle); }, judge::segment_rectangle, d, got);
-    if (got) s.rows.push_back({"r; s, t", num(got->r) + "; " + num(got->s) + ", " + num(got->t), ""}), keep(got->closest0, got->closest1);
+    Step s = distance_step(
+        "L05S2", "segment_rectangle", in, [&] { return segment_rectangle(in.segment, in.rectangle); },
+        judge::segment_rectangle, d, got);
+    if (got)
+      s.rows.push_back({"r; s, t", num(got->r) + "; " + num(got->s) + ", " + num(got->t), ""}),
+          keep(got->closest0, got->closest1);
     steps.push_back(s);
     steps.push_back(test_step("test_capsule_lozenge", CapsuleLozenge{ca, lb}, test_capsule_lozenge, d, meet_));
   } else {
     const RectanglePair in{a_.r, b_.r};
     const oracle::SquaredDistance d = oracle::squared_distance(in.first, in.second);
     Attempt<RectangleRectangleDistance> got;
-    Step s = distance_step("L05S2", "rectangle_rectangle", in, [&] { return rectangle_rectangle(in.first, in.second); }, judge::rectangle_rectangle, d, got);
+    Step s = distance_step(
+        "L05S2", "rectangle_rectangle", in, [&] { return rectangle_rectangle(in.first, in.second); },
+        judge::rectangle_rectangle, d, got);
     if (got) keep(got->closest0, got->closest1);
     steps.push_back(s);
     steps.push_back(test_step("test_lozenge_lozenge", LozengePair{la, lb}, test_lozenge_lozenge, d, meet_));

@@ -33,8 +33,8 @@ const std::vector<Preset> kPresets = {
      "test_lozenge_lozenge:0,0,0,1,0,0,0,1,0,2,1,0.25,0,0,2,0,0,1,1,0,0,1,1,0.75", true, -70, 15, 3},
     {"sphere-plane", "a sphere falls on the plane z = 1 (normal of length 2): contact at t = 1.5",
      "sweep_sphere_plane:1,2,5,1,2,0,-2,0,0,2,-2,4", true, -80, 10, 4},
-    {"spheres", "passing by: first contact at t = 3 - sqrt(3)/2",
-     "sweep_sphere_sphere:0,0,0,1,0,0,0,6,1,0,1,-2,0,0,4", true, -90, 80, 5},
+    {"spheres", "passing by: first contact at t = 3 - sqrt(3)/2", "sweep_sphere_sphere:0,0,0,1,0,0,0,6,1,0,1,-2,0,0,4",
+     true, -90, 80, 5},
     {"graze", "an exact graze at t = 3 (b^2 = ac)", "sweep_sphere_sphere:0,0,0,1,0,0,0,6,2,0,1,-2,0,0,4"},
     {"sphere-capsule", "beyond the end: the side's root (t = 2) lies outside the slab; the cap's is t = 3 - sqrt(3)/2",
      "sweep_sphere_capsule:9,6,0,1,0,-2,0,0,0,0,8,0,0,1,4", true, -90, 80, 6},
@@ -58,7 +58,6 @@ Plane drawable(const Plane& p) {
           std::ldexp(p.offset, -e)};
 }
 
-
 // ---- setup ---------------------------------------------------------------------------
 
 SphereSweepsScene::SphereSweepsScene(const Setup& setup) {
@@ -73,52 +72,50 @@ SphereSweepsScene::SphereSweepsScene(const Setup& setup) {
   };
   load_token(
       "05", query::table, token,
-      Loaders{
-          [&](auto, const SpherePlaneMotion& in) {
-            mode_ = Mode::sphere_plane, s0_ = in.sphere, v0_ = in.velocity, plane_ = in.plane, duration_ = in.duration;
-          },
-          [&](auto, const SphereSphereMotion& in) {
-            mode_ = Mode::sphere_sphere, s0_ = in.s0, v0_ = in.v0, s1_ = in.s1, v1_ = in.v1, duration_ = in.duration;
-          },
-          [&](auto, const SphereCapsuleMotion& in) {
-            mode_ = Mode::sphere_capsule, s0_ = in.sphere, v0_ = in.velocity, capsule_ = in.capsule;
-            duration_ = in.duration;
-          },
-          [&](auto, const BoxPlaneMotion& in) {
-            mode_ = Mode::box_plane, box_ = in.box, v0_ = in.velocity, plane_ = in.plane, duration_ = in.duration;
-          },
-          [&](auto, const PointSegmentPair& in) { kinds(Core::point, Core::segment), a_.p = in.p, b_.s = in.segment; },
-          [&](auto, const SegmentPair& in) { kinds(Core::segment, Core::segment), a_.s = in.first, b_.s = in.second; },
-          [&](auto, const PointRectanglePair& in) {
-            kinds(Core::point, Core::rectangle), a_.p = in.p, b_.r = in.rectangle;
-          },
-          [&](auto, const SegmentRectanglePair& in) {
-            kinds(Core::segment, Core::rectangle), a_.s = in.segment, b_.r = in.rectangle;
-          },
-          [&](auto, const RectanglePair& in) {
-            kinds(Core::rectangle, Core::rectangle), a_.r = in.first, b_.r = in.second;
-          },
-          [&](auto q, const SpherePair& in) {
-            shapes(q, Core::point, Core::point, in.a.radius, in.b.radius), a_.p = in.a.center, b_.p = in.b.center;
-          },
-          [&](auto q, const SphereCapsule& in) {
-            shapes(q, Core::point, Core::segment, in.a.radius, in.b.radius), a_.p = in.a.center, b_.s = in.b.axis;
-          },
-          [&](auto q, const SphereLozenge& in) {
-            shapes(q, Core::point, Core::rectangle, in.a.radius, in.b.radius), a_.p = in.a.center;
-            b_.r = in.b.rectangle;
-          },
-          [&](auto q, const CapsulePair& in) {
-            shapes(q, Core::segment, Core::segment, in.a.radius, in.b.radius), a_.s = in.a.axis, b_.s = in.b.axis;
-          },
-          [&](auto q, const CapsuleLozenge& in) {
-            shapes(q, Core::segment, Core::rectangle, in.a.radius, in.b.radius), a_.s = in.a.axis;
-            b_.r = in.b.rectangle;
-          },
-          [&](auto q, const LozengePair& in) {
-            shapes(q, Core::rectangle, Core::rectangle, in.a.radius, in.b.radius), a_.r = in.a.rectangle;
-            b_.r = in.b.rectangle;
-          }});
+      Loaders{[&](auto, const SpherePlaneMotion& in) {
+    mode_ = Mode::sphere_plane, s0_ = in.sphere, v0_ = in.velocity, plane_ = in.plane, duration_ = in.duration;
+              },
+              [&](auto, const SphereSphereMotion& in) {
+    mode_ = Mode::sphere_sphere, s0_ = in.s0, v0_ = in.v0, s1_ = in.s1, v1_ = in.v1, duration_ = in.duration;
+      },
+      [&](auto, const SphereCapsuleMotion& in) {
+    mode_ = Mode::sphere_capsule, s0_ = in.sphere, v0_ = in.velocity, capsule_ = in.capsule;
+    duration_ = in.duration;
+      },
+      [&](auto, const BoxPlaneMotion& in) {
+    mode_ = Mode::box_plane, box_ = in.box, v0_ = in.velocity, plane_ = in.plane, duration_ = in.duration;
+  },
+      [&](auto, const PointSegmentPair& in) { kinds(Core::point, Core::segment), a_.p = in.p, b_.s = in.segment; },
+      [&](auto, const SegmentPair& in) { kinds(Core::segment, Core::segment), a_.s = in.first, b_.s = in.second; },
+      [&](auto, const PointRectanglePair& in) {
+    kinds(Core::point, Core::rectangle), a_.p = in.p, b_.r = in.rectangle;
+      },
+      [&](auto, const SegmentRectanglePair& in) {
+    kinds(Core::segment, Core::rectangle), a_.s = in.segment, b_.r = in.rectangle;
+      },
+      [&](auto, const RectanglePair& in) {
+    kinds(Core::rectangle, Core::rectangle), a_.r = in.first, b_.r = in.second;
+      },
+      [&](auto q, const SpherePair& in) {
+    shapes(q, Core::point, Core::point, in.a.radius, in.b.radius), a_.p = in.a.center, b_.p = in.b.center;
+      },
+      [&](auto q, const SphereCapsule& in) {
+    shapes(q, Core::point, Core::segment, in.a.radius, in.b.radius), a_.p = in.a.center, b_.s = in.b.axis;
+      },
+      [&](auto q, const SphereLozenge& in) {
+    shapes(q, Core::point, Core::rectangle, in.a.radius, in.b.radius), a_.p = in.a.center;
+    b_.r = in.b.rectangle;
+      },
+      [&](auto q, const CapsulePair& in) {
+    shapes(q, Core::segment, Core::segment, in.a.radius, in.b.radius), a_.s = in.a.axis, b_.s = in.b.axis;
+      },
+      [&](auto q, const CapsuleLozenge& in) {
+    shapes(q, Core::segment, Core::rectangle, in.a.radius, in.b.radius), a_.s = in.a.axis;
+    b_.r = in.b.rectangle;
+      }, [&](auto q, const LozengePair& in) {
+        shapes(q, Core::rectangle, Core::rectangle, in.a.radius, in.b.radius), a_.r = in.a.rectangle;
+        b_.r = in.b.rectangle;
+      }});
   const Vec3 c = mode_ == Mode::box_plane ? box_.center : s0_.center;
   end0_ = last_end0_ = c + duration_ * v0_;
   end1_ = last_end1_ = s1_.center + duration_ * v1_;
@@ -133,7 +130,9 @@ void SphereSweepsScene::frame_inputs() {
                          "moving sphere and capsule"};
   mode = names[int(mode_)];
   Eigen::AlignedBox3d box;
-  const auto ball_box = [&](const Vec3& c, double r) { box.extend(c - Vec3::Constant(r)), box.extend(c + Vec3::Constant(r)); };
+  const auto ball_box = [&](const Vec3& c, double r) {
+    box.extend(c - Vec3::Constant(r)), box.extend(c + Vec3::Constant(r));
+  };
   const auto add = [&](const Shape& s) {
     if (s.kind == Core::point) ball_box(s.p, s.radius);
     if (s.kind == Core::segment) ball_box(s.s.a, s.radius), ball_box(s.s.b, s.radius);
@@ -147,22 +146,28 @@ void SphereSweepsScene::frame_inputs() {
     box.extend(plane_point_);
   } else {
     ball_box(s0_.center, s0_.radius), ball_box(end0_, s0_.radius);
-    if (mode_ == Mode::sphere_sphere) ball_box(s1_.center, s1_.radius), ball_box(end1_, s1_.radius);
+    if (mode_ == Mode::sphere_sphere)
+      ball_box(s1_.center, s1_.radius), ball_box(end1_, s1_.radius);
     else if (mode_ == Mode::sphere_capsule)
       ball_box(capsule_.axis.a, capsule_.radius + s0_.radius), ball_box(capsule_.axis.b, capsule_.radius + s0_.radius);
-    else box.extend(plane_point_);
+    else
+      box.extend(plane_point_);
   }
   frame(box);
 }
 
 std::string SphereSweepsScene::token() const {
   switch (mode_) {
-    case Mode::sphere_plane: return replay_token(query::sweep_sphere_plane, SpherePlaneMotion{s0_, v0_, plane_, duration_});
-    case Mode::sphere_sphere: return replay_token(query::sweep_sphere_sphere, SphereSphereMotion{s0_, v0_, s1_, v1_, duration_});
-    case Mode::box_plane: return replay_token(query::sweep_box_plane, BoxPlaneMotion{box_, v0_, plane_, duration_});
+    case Mode::sphere_plane:
+      return replay_token(query::sweep_sphere_plane, SpherePlaneMotion{s0_, v0_, plane_, duration_});
+    case Mode::sphere_sphere:
+      return replay_token(query::sweep_sphere_sphere, SphereSphereMotion{s0_, v0_, s1_, v1_, duration_});
+    case Mode::box_plane:
+      return replay_token(query::sweep_box_plane, BoxPlaneMotion{box_, v0_, plane_, duration_});
     case Mode::sphere_capsule:
       return replay_token(query::sweep_sphere_capsule, SphereCapsuleMotion{s0_, v0_, capsule_, duration_});
-    case Mode::cores: break;
+    case Mode::cores:
+      break;
   }
   const Sphere sa{a_.p, a_.radius}, sb{b_.p, b_.radius};
   const Capsule ca{a_.s, a_.radius}, cb{b_.s, b_.radius};
@@ -170,9 +175,11 @@ std::string SphereSweepsScene::token() const {
   const Core k0 = a_.kind, k1 = b_.kind;
   if (k0 == Core::point && k1 == Core::point) return replay_token(query::test_sphere_sphere, SpherePair{sa, sb});
   if (k0 == Core::point && k1 == Core::segment)
-    return test_query_ ? replay_token(query::test_sphere_capsule, SphereCapsule{sa, cb}) : replay_token(query::point_segment, PointSegmentPair{a_.p, b_.s});
+    return test_query_ ? replay_token(query::test_sphere_capsule, SphereCapsule{sa, cb})
+                       : replay_token(query::point_segment, PointSegmentPair{a_.p, b_.s});
   if (k0 == Core::segment && k1 == Core::segment)
-    return test_query_ ? replay_token(query::test_capsule_capsule, CapsulePair{ca, cb}) : replay_token(query::segment_segment, SegmentPair{a_.s, b_.s});
+    return test_query_ ? replay_token(query::test_capsule_capsule, CapsulePair{ca, cb})
+                       : replay_token(query::segment_segment, SegmentPair{a_.s, b_.s});
   if (k0 == Core::point && k1 == Core::rectangle)
     return test_query_ ? replay_token(query::test_sphere_lozenge, SphereLozenge{sa, lb})
                        : replay_token(query::point_rectangle, PointRectanglePair{a_.p, b_.r});
@@ -209,11 +216,20 @@ void SphereSweepsScene::update() {
   }
   follow_handles();
   switch (mode_) {
-    case Mode::sphere_plane: update_sphere_plane(); break;
-    case Mode::sphere_sphere: update_sphere_sphere(); break;
-    case Mode::sphere_capsule: update_sphere_capsule(); break;
-    case Mode::box_plane: update_box_plane(); break;
-    case Mode::cores: break;
+    case Mode::sphere_plane:
+      update_sphere_plane();
+      break;
+    case Mode::sphere_sphere:
+      update_sphere_sphere();
+      break;
+    case Mode::sphere_capsule:
+      update_sphere_capsule();
+      break;
+    case Mode::box_plane:
+      update_box_plane();
+      break;
+    case Mode::cores:
+      break;
   }
   verdict_[step_of(mode_)] = steps[0].verdict;
 }
@@ -225,7 +241,8 @@ Step sweep_step(const char* tag, const char* title, const Motion& in, const Atte
   const std::string exact = exact_overlapping ? "overlapping" : (exact_time < 0 ? "none" : "contact");
   s.rows = {{"status", got ? describe(got->status) : "", exact}};
   const bool contact = got && got->status == SweepStatus::contact;
-  if (contact || exact == "contact") s.rows.push_back({"time", contact ? num(got->time) : "", exact == "contact" ? num(exact_time) : ""});
+  if (contact || exact == "contact")
+    s.rows.push_back({"time", contact ? num(got->time) : "", exact == "contact" ? num(exact_time) : ""});
   if (contact) s.rows.push_back({"point", num(got->point), ""});
   return s;
 }
@@ -235,9 +252,10 @@ void SphereSweepsScene::update_sphere_plane() {
   const oracle::SpherePlaneSweep m{s0_, v0_, plane_};
   sweep_ = attempt([&] { return sweep_sphere_plane(s0_, v0_, plane_, duration_); });
   exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
-  steps.push_back(sweep_step("L05S4", "sweep_sphere_plane", in, sweep_,
-                             [](const SpherePlaneMotion& i, const Sweep& g) { return judge::sweep_sphere_plane(i, g); },
-                             exact_time_, exact_overlapping_));
+  steps.push_back(sweep_step(
+      "L05S4", "sweep_sphere_plane", in, sweep_,
+      [](const SpherePlaneMotion& i, const Sweep& g) { return judge::sweep_sphere_plane(i, g); }, exact_time_,
+      exact_overlapping_));
 }
 
 void SphereSweepsScene::update_sphere_sphere() {
@@ -245,9 +263,10 @@ void SphereSweepsScene::update_sphere_sphere() {
   const oracle::SphereSphereSweep m{s0_, s1_, v0_, v1_};
   sweep_ = attempt([&] { return sweep_sphere_sphere(s0_, v0_, s1_, v1_, duration_); });
   exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
-  Step s = sweep_step("L05S5", "sweep_sphere_sphere", in, sweep_,
-                      [](const SphereSphereMotion& i, const Sweep& g) { return judge::sweep_sphere_sphere(i, g); },
-                      exact_time_, exact_overlapping_);
+  Step s = sweep_step(
+      "L05S5", "sweep_sphere_sphere", in, sweep_,
+      [](const SphereSphereMotion& i, const Sweep& g) { return judge::sweep_sphere_sphere(i, g); }, exact_time_,
+      exact_overlapping_);
   // The quadratic's coefficients (rounded), for the handout's special cases.
   const Vec3 A = s0_.center - s1_.center, B = v0_ - v1_;
   const double R = s0_.radius + s1_.radius;
@@ -260,9 +279,10 @@ void SphereSweepsScene::update_sphere_capsule() {
   const oracle::SphereCapsuleSweep m{s0_, v0_, capsule_};
   sweep_ = attempt([&] { return sweep_sphere_capsule(s0_, v0_, capsule_, duration_); });
   exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
-  Step s = sweep_step("L05S6", "sweep_sphere_capsule", in, sweep_,
-                      [](const SphereCapsuleMotion& i, const Sweep& g) { return judge::sweep_sphere_capsule(i, g); },
-                      exact_time_, exact_overlapping_);
+  Step s = sweep_step(
+      "L05S6", "sweep_sphere_capsule", in, sweep_,
+      [](const SphereCapsuleMotion& i, const Sweep& g) { return judge::sweep_sphere_capsule(i, g); }, exact_time_,
+      exact_overlapping_);
   s.rows.push_back({"grown radius R = r + rc", "", num(s0_.radius + capsule_.radius)});
   steps.push_back(s);
 }
@@ -272,9 +292,10 @@ void SphereSweepsScene::update_box_plane() {
   const oracle::BoxPlaneSweep m{box_, v0_, plane_};
   sweep_ = attempt([&] { return sweep_box_plane(box_, v0_, plane_, duration_); });
   exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
-  Step s = sweep_step("L05S7", "sweep_box_plane", in, sweep_,
-                      [](const BoxPlaneMotion& i, const Sweep& g) { return judge::sweep_box_plane(i, g); },
-                      exact_time_, exact_overlapping_);
+  Step s = sweep_step(
+      "L05S7", "sweep_box_plane", in, sweep_,
+      [](const BoxPlaneMotion& i, const Sweep& g) { return judge::sweep_box_plane(i, g); }, exact_time_,
+      exact_overlapping_);
   const Plane plane = drawable(plane_);
   const double n = plane.normal.norm();
   double reach = 0;

@@ -21,7 +21,8 @@ void arc(Renderer& r, const Vec3& c, const Vec3& e1, const Vec3& e2, double radi
   constexpr int kSides = 24;
   for (int i = 0; i < kSides; ++i) {
     const double a = M_PI * i / kSides, b = M_PI * (i + 1) / kSides;
-    r.line(c + radius * (std::cos(a) * e1 + std::sin(a) * e2), c + radius * (std::cos(b) * e1 + std::sin(b) * e2), col, width);
+    r.line(c + radius * (std::cos(a) * e1 + std::sin(a) * e2), c + radius * (std::cos(b) * e1 + std::sin(b) * e2), col,
+           width);
   }
 }
 
@@ -44,10 +45,12 @@ void capsule_hull(Renderer& r, const Segment& axis, double radius, Color hull, f
   }
   const Vec3 along = d.normalized();
   const Vec3 side = across - across.dot(along) * along;
-  const Vec3 e1 = side.norm() > 1e-9 * across.norm() && across != Vec3::Zero() ? Vec3(side.normalized()) : perpendicular(d);
+  const Vec3 e1 =
+      side.norm() > 1e-9 * across.norm() && across != Vec3::Zero() ? Vec3(side.normalized()) : perpendicular(d);
   const Vec3 e2 = along.cross(e1).normalized();
   for (const Vec3& end : {axis.a, axis.b}) draw_circle(r, end, e1, e2, radius, hull, width);
-  for (const Vec3& off : {e1, Vec3(-e1), e2, Vec3(-e2)}) r.line(axis.a + radius * off, axis.b + radius * off, hull, width);
+  for (const Vec3& off : {e1, Vec3(-e1), e2, Vec3(-e2)})
+    r.line(axis.a + radius * off, axis.b + radius * off, hull, width);
   for (const Vec3& e : {e1, e2}) {
     arc(r, axis.a, e, -along, radius, hull, width);
     arc(r, axis.b, e, along, radius, hull, width);
@@ -78,7 +81,8 @@ void draw_shape(Renderer& r, const Shape& s, const char* name, Color core, Color
       if (s.radius <= 0) break;
       const Vec3 n = s.r.u.cross(s.r.v).normalized();
       for (double side : {-1.0, 1.0})
-        for (int i = 0; i < 4; ++i) r.line(c[i] + side * s.radius * n, c[(i + 1) % 4] + side * s.radius * n, hull, 1.2f);
+        for (int i = 0; i < 4; ++i)
+          r.line(c[i] + side * s.radius * n, c[(i + 1) % 4] + side * s.radius * n, hull, 1.2f);
       for (int i = 0; i < 4; ++i) draw_circle(r, c[i], s.r.u, s.r.v, s.radius, hull, 1.2f);
       break;
     }
@@ -127,8 +131,9 @@ void SphereSweepsScene::draw_cores(Frame& f) const {
       if ((s < 0 || s > 1 || t < 0 || t > 1) && wrong > right * (1 + 1e-9) + 1e-12) {
         r.dashed(p, q, palette::disagree, 2.5f);
         r.point(p, palette::disagree, 4), r.point(q, palette::disagree, 4);
-        r.label(q, "wrong, clamped: s = " + num(std::clamp(s, 0.0, 1.0)) + ", t = " + num(std::clamp(t, 0.0, 1.0)) +
-                       ", d = " + num(wrong),
+        r.label(q,
+                "wrong, clamped: s = " + num(std::clamp(s, 0.0, 1.0)) + ", t = " + num(std::clamp(t, 0.0, 1.0)) +
+                    ", d = " + num(wrong),
                 palette::disagree, 12, -14);
       }
     }
@@ -146,7 +151,8 @@ void SphereSweepsScene::draw_sweep(Frame& f) const {
   const int step = step_of(mode_);
   const Color c = colour(verdict_[step]);
   const Vec3 start0 = mode_ == Mode::box_plane ? box_.center : s0_.center;
-  if (mode_ == Mode::sphere_plane || mode_ == Mode::box_plane) draw_plane(r, plane_, start0 + 0.5 * duration_ * v0_, radius);
+  if (mode_ == Mode::sphere_plane || mode_ == Mode::box_plane)
+    draw_plane(r, plane_, start0 + 0.5 * duration_ * v0_, radius);
   if (mode_ == Mode::sphere_capsule) {
     // The capsule (its axis and hull), and the Minkowski sum the centre runs into: the
     // same axis grown to R = r + rc, dashed ends of the slab where the side stops.
@@ -228,8 +234,10 @@ void SphereSweepsScene::draw_sweep(Frame& f) const {
 void SphereSweepsScene::draw(Frame& f) {
   Renderer& r = f.render;
   draw_ground(r);
-  if (mode_ == Mode::cores) draw_cores(f);
-  else draw_sweep(f);
+  if (mode_ == Mode::cores)
+    draw_cores(f);
+  else
+    draw_sweep(f);
 }
 
 bool SphereSweepsScene::inputs() {
@@ -240,7 +248,8 @@ bool SphereSweepsScene::inputs() {
     if (s.kind == Core::point) changed |= edit("centre", s.p);
     if (s.kind == Core::segment) changed |= edit("a", s.s.a) | edit("b", s.s.b);
     if (s.kind == Core::rectangle) {
-      changed |= edit("centre", s.r.center) | edit("half u", s.r.half_u, 0.05f, 0, 1e9) | edit("half v", s.r.half_v, 0.05f, 0, 1e9);
+      changed |= edit("centre", s.r.center) | edit("half u", s.r.half_u, 0.05f, 0, 1e9) |
+                 edit("half v", s.r.half_v, 0.05f, 0, 1e9);
       Vec3 u = s.r.u;
       if (edit("u", u, 0.01f) && u != Vec3::Zero()) {  // keep u, v orthonormal
         s.r.u = u.normalized();
@@ -259,8 +268,9 @@ bool SphereSweepsScene::inputs() {
   if (mode_ == Mode::box_plane) {
     changed |= edit("box centre", box_.center) | edit("half extents", box_.half_extents);
     if (edit("turn about z (deg)", turn_, 0.5f) | edit("tilt about x (deg)", tilt_, 0.5f)) {
-      box_.axes = (Eigen::AngleAxisd(turn_ * M_PI / 180, Vec3::UnitZ()) * Eigen::AngleAxisd(tilt_ * M_PI / 180, Vec3::UnitX()))
-                      .toRotationMatrix();
+      box_.axes =
+          (Eigen::AngleAxisd(turn_ * M_PI / 180, Vec3::UnitZ()) * Eigen::AngleAxisd(tilt_ * M_PI / 180, Vec3::UnitX()))
+              .toRotationMatrix();
       changed = true;
     }
   } else {
@@ -297,9 +307,12 @@ std::vector<Handle> SphereSweepsScene::handles() {
   }
   h.push_back({mode_ == Mode::box_plane ? &box_.center : &s0_.center, "centre"});
   h.push_back({&end0_, "centre at T"});
-  if (mode_ == Mode::sphere_sphere) h.insert(h.end(), {{&s1_.center, "centre 1"}, {&end1_, "centre 1 at T"}});
-  else if (mode_ == Mode::sphere_capsule) h.insert(h.end(), {{&capsule_.axis.a, "capsule a"}, {&capsule_.axis.b, "capsule b"}});
-  else h.push_back({&plane_point_, "plane", &plane_});
+  if (mode_ == Mode::sphere_sphere)
+    h.insert(h.end(), {{&s1_.center, "centre 1"}, {&end1_, "centre 1 at T"}});
+  else if (mode_ == Mode::sphere_capsule)
+    h.insert(h.end(), {{&capsule_.axis.a, "capsule a"}, {&capsule_.axis.b, "capsule b"}});
+  else
+    h.push_back({&plane_point_, "plane", &plane_});
   return h;
 }
 

@@ -24,18 +24,26 @@
 namespace viewer::spatial_trees {
 
 const std::vector<Preset> kPresets = {
-    {"torus", "a k-d tree over a torus of 2,048 triangles: the leaves a segment visits, front to back", nullptr, false, -50, 35, 2},
-    {"walk", "step 2: the leaves a segment meets, numbered front to back; first_hit stops in leaf 8, after its hit at t = 0.676 (grey: never visited)", nullptr, true, -90, 89, 2},
-    {"handout", "step 2's example: a hit beyond the first leaf's end does not end the search", nullptr, false, -80, 20, 2},
+    {"torus", "a k-d tree over a torus of 2,048 triangles: the leaves a segment visits, front to back", nullptr, false,
+     -50, 35, 2},
+    {"walk",
+     "step 2: the leaves a segment meets, numbered front to back; first_hit stops in leaf 8, after its hit at t = "
+     "0.676 (grey: never visited)",
+     nullptr, true, -90, 89, 2},
+    {"handout", "step 2's example: a hit beyond the first leaf's end does not end the search", nullptr, false, -80, 20,
+     2},
     {"terrain", "a terrain of 20,000 triangles, a long segment across it", nullptr, false, -40, 30, 2},
     {"bsp", "a BSP tree of an L of three cubes: classify a point, paint back to front", nullptr, false, -35, 25, 3},
-    {"split", "step 3: the floor's plane z = 0, the root's, cuts the wall in two: a piece in front, one behind", nullptr, true, -75, 18, 3},
+    {"split", "step 3: the floor's plane z = 0, the root's, cuts the wall in two: a piece in front, one behind",
+     nullptr, true, -75, 18, 3},
     {"spheres", "sort and sweep: 60 spheres, the pairs that meet", nullptr, false, -60, 30, 5},
     {"sweep", "step 5: the intervals on x, ends A0 A1 R0 B0 R1 C0 C1 B1; two pairs tested", nullptr, true, -90, 89, 5},
-    {"bvh", "step 7: two OBB trees; the leaf boxes whose pairs the traversal reaches, the triangles that meet", nullptr, true, -60, 30, 7},
-    {"coherence", "step 6: C moves 2 to the left; its end C0 = 6 passes R1 = 7: one swap, and {R, C} joins the pairs on x", nullptr, true, -90, 89, 6},
+    {"bvh", "step 7: two OBB trees; the leaf boxes whose pairs the traversal reaches, the triangles that meet", nullptr,
+     true, -60, 30, 7},
+    {"coherence",
+     "step 6: C moves 2 to the left; its end C0 = 6 passes R1 = 7: one swap, and {R, C} joins the pairs on x", nullptr,
+     true, -90, 89, 6},
 };
-
 
 // ---- setup ---------------------------------------------------------------------------
 
@@ -55,7 +63,8 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
         const Vec3 c(x, y, 0);
         const int base = int(mesh_.vertices.size());
         for (int k = 0; k < 3; ++k)
-          mesh_.vertices.push_back(c + Vec3(0.35 * std::cos(a + 2.1 * k), 0.35 * std::sin(a + 2.1 * k), 0.12 * (k - 1)));
+          mesh_.vertices.push_back(c +
+                                   Vec3(0.35 * std::cos(a + 2.1 * k), 0.35 * std::sin(a + 2.1 * k), 0.12 * (k - 1)));
         mesh_.triangles.push_back({base, base + 1, base + 2});
       }
       segment_ = {{-0.3, 3.9, 0.02}, {8.3, 0.6, -0.02}};
@@ -107,46 +116,54 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
   load_token("06", query::table, token,
              Loaders{[&](auto, const TreeQuery& in) { mesh_ = in.mesh, segment_ = in.segment, tree_seed_ = in.tree; },
                      [&](auto q, const Mesh& in) {
-                       mesh_ = in;
-                       if (q == query::build_bsp) {
-                         mode_ = Mode::bsp;
-                         if (!mesh_.vertices.empty()) point_ = mesh_.vertices[0];
-                       } else if (mesh_.size() > 0) {
-                         segment_ = {mesh_.vertices[0] - Vec3(1, 1, 1), mesh_.vertices.back() + Vec3(1, 1, 1)};
-                       }
+    mesh_ = in;
+    if (q == query::build_bsp) {
+      mode_ = Mode::bsp;
+      if (!mesh_.vertices.empty()) point_ = mesh_.vertices[0];
+    } else if (mesh_.size() > 0) {
+      segment_ = {mesh_.vertices[0] - Vec3(1, 1, 1), mesh_.vertices.back() + Vec3(1, 1, 1)};
+    }
                      },
                      [&](auto, const PointQuery& in) { mode_ = Mode::bsp, mesh_ = in.mesh, point_ = in.point; },
                      [&](auto, const SphereSet& in) { mode_ = Mode::spheres, spheres_ = in.spheres; },
                      [&](auto, const BvhQuery& in) {
-                       mode_ = Mode::bvh, mesh_ = in.a, mesh_b_ = in.b, tree_seed_ = in.tree_a, tree_seed_b_ = in.tree_b;
-                     },
-                     [&](auto, const SweepCase& in) { frames(in.frames); },
-                     [&](auto, const MovingSpheres& in) { frames(gen::moving_spheres(in).frames); }});
+    mode_ = Mode::bvh, mesh_ = in.a, mesh_b_ = in.b, tree_seed_ = in.tree_a, tree_seed_b_ = in.tree_b;
+             },
+             [&](auto, const SweepCase& in) { frames(in.frames); },
+             [&](auto, const MovingSpheres& in) { frames(gen::moving_spheres(in).frames); }});
   frame_inputs();
 }
 
 void SpatialTreesScene::frame_inputs() {
-  const char* names[] = {"k-d tree and segment", "BSP tree and point", "spheres", "spheres over frames", "two OBB trees"};
+  const char* names[] = {"k-d tree and segment", "BSP tree and point", "spheres", "spheres over frames",
+                         "two OBB trees"};
   mode = names[int(mode_)];
   Eigen::AlignedBox3d box;
   for (const Vec3& v : mesh_.vertices) box.extend(v);
   for (const Vec3& v : mesh_b_.vertices) box.extend(v);
   if (mode_ == Mode::kd) box.extend(segment_.a), box.extend(segment_.b);
   if (mode_ == Mode::bsp) box.extend(point_);
-  for (const Sphere& s : spheres_) box.extend(s.center + Vec3::Constant(s.radius)), box.extend(s.center - Vec3::Constant(s.radius));
+  for (const Sphere& s : spheres_)
+    box.extend(s.center + Vec3::Constant(s.radius)), box.extend(s.center - Vec3::Constant(s.radius));
   if (figure_ == "sweep") box.extend(Vec3(0, -7.5, 0));
-  if (mode_ == Mode::frames && !box.isEmpty()) box.extend(Vec3(box.min().x(), box.min().y() - 0.3 * box.diagonal().norm(), 0));
+  if (mode_ == Mode::frames && !box.isEmpty())
+    box.extend(Vec3(box.min().x(), box.min().y() - 0.3 * box.diagonal().norm(), 0));
   if (box.isEmpty()) box.extend(Vec3::Zero()), box.extend(Vec3::Ones());
   frame(box);
 }
 
 std::string SpatialTreesScene::token() const {
   switch (mode_) {
-    case Mode::kd: return replay_token(query::first_hit, TreeQuery{mesh_, segment_, tree_seed_});
-    case Mode::bsp: return replay_token(query::classify, PointQuery{mesh_, point_});
-    case Mode::bvh: return replay_token(query::colliding_triangles, BvhQuery{mesh_, mesh_b_, tree_seed_, tree_seed_b_, true});
-    case Mode::frames: return replay_token(query::sweep_frames, SweepCase{frames_});
-    case Mode::spheres: break;
+    case Mode::kd:
+      return replay_token(query::first_hit, TreeQuery{mesh_, segment_, tree_seed_});
+    case Mode::bsp:
+      return replay_token(query::classify, PointQuery{mesh_, point_});
+    case Mode::bvh:
+      return replay_token(query::colliding_triangles, BvhQuery{mesh_, mesh_b_, tree_seed_, tree_seed_b_, true});
+    case Mode::frames:
+      return replay_token(query::sweep_frames, SweepCase{frames_});
+    case Mode::spheres:
+      break;
   }
   return replay_token(query::overlapping_pairs, SphereSet{spheres_});
 }
@@ -195,8 +212,10 @@ void SpatialTreesScene::update_kd() {
   any_ = counted(1, [&] { return any_hit(tree_, segment_); });
   all_ = counted(2, [&] { return all_hits(tree_, segment_); });
   exact_hits_ = oracle::segment_mesh_crossings(segment_, mesh_);
-  Step s2 = judged("L06S2", std::string("first_hit, any_hit, all_hits on ") + (tree_is_students_ ? "your tree" : "the checker's tree"),
-                   first_, [&](const KdHit& got) { return judge::first_hit(in, tree_, got, calls[0]); });
+  Step s2 =
+      judged("L06S2",
+             std::string("first_hit, any_hit, all_hits on ") + (tree_is_students_ ? "your tree" : "the checker's tree"),
+             first_, [&](const KdHit& got) { return judge::first_hit(in, tree_, got, calls[0]); });
   join(s2, any_, [&](const KdHit& got) { return judge::any_hit(in, tree_, got, calls[1]); });
   join(s2, all_, [&](const KdHits& got) { return judge::all_hits(in, tree_, got, calls[2]); });
   int met = 0;
@@ -204,14 +223,17 @@ void SpatialTreesScene::update_kd() {
   const auto hit_text = [](const Attempt<KdHit>& h) {
     return h ? (h->hit ? std::to_string(h->triangle) + " at t = " + num(h->t) : std::string("none")) : std::string();
   };
-  s2.rows = {{"first hit", hit_text(first_), exact_hits_.empty() ? "none" : std::to_string(exact_hits_[0].triangle) + " at t = " + num(exact_hits_[0].t)},
-             {"any hit", any_ ? yes_no(any_->hit) : "", yes_no(!exact_hits_.empty())},
-             {"all hits", all_ ? std::to_string(all_->hits.size()) : "", std::to_string(exact_hits_.size())},
-             {"tests: first / any / all", first_ && any_ && all_ ? std::to_string(first_->tests) + " / " + std::to_string(any_->tests) + " / " +
-                                                                       std::to_string(all_->tests)
-                                                                 : "",
-              "brute force: " + std::to_string(mesh_.size())},
-             {"leaves the segment meets", std::to_string(met), "of " + std::to_string(leaves_.size())}};
+  s2.rows = {
+      {"first hit", hit_text(first_),
+       exact_hits_.empty() ? "none" : std::to_string(exact_hits_[0].triangle) + " at t = " + num(exact_hits_[0].t)},
+      {"any hit", any_ ? yes_no(any_->hit) : "", yes_no(!exact_hits_.empty())},
+      {"all hits", all_ ? std::to_string(all_->hits.size()) : "", std::to_string(exact_hits_.size())},
+      {"tests: first / any / all",
+       first_ && any_ && all_
+           ? std::to_string(first_->tests) + " / " + std::to_string(any_->tests) + " / " + std::to_string(all_->tests)
+           : "",
+       "brute force: " + std::to_string(mesh_.size())},
+      {"leaves the segment meets", std::to_string(met), "of " + std::to_string(leaves_.size())}};
   if (!tree_is_students_ && s2.note.empty()) s2.note = "step 1 is not done: the queries run on the checker's tree";
   verdict_[2] = s2.verdict;
   steps.push_back(s2);
@@ -222,7 +244,8 @@ void SpatialTreesScene::update_bsp() {
   const PointQuery in{mesh_, point_};
   exact_where_ = oracle::point_in_solid(point_, mesh_);
   const Where exact = exact_where_ > 0 ? Where::inside : (exact_where_ < 0 ? Where::outside : Where::on);
-  Step s3 = judged("L06S3", "build_bsp, classify", bsp_, [&](const BspTree& got) { return judge::bsp_tree(mesh_, got); });
+  Step s3 =
+      judged("L06S3", "build_bsp, classify", bsp_, [&](const BspTree& got) { return judge::bsp_tree(mesh_, got); });
   if (bsp_) {
     where_ = attempt([&] { return classify(*bsp_, point_); });
     join(s3, where_, [&](Where got) { return judge::classify(in, got); });
@@ -249,10 +272,12 @@ void SpatialTreesScene::update_spheres() {
   pairs_ = attempt([&] { return overlapping_pairs(spheres_); });
   exact_pairs_ = oracle::meeting_pairs(spheres_);
   const SphereSet in{spheres_};
-  Step s5 = judged("L06S5", "overlapping_pairs", pairs_, [&](const SpherePairs& got) { return judge::overlapping_pairs(in, got); });
+  Step s5 = judged("L06S5", "overlapping_pairs", pairs_,
+                   [&](const SpherePairs& got) { return judge::overlapping_pairs(in, got); });
   const long long n = (long long)spheres_.size();
-  s5.rows = {{"pairs", pairs_ ? std::to_string(pairs_->pairs.size()) : "", std::to_string(exact_pairs_.size())},
-             {"pair tests", pairs_ ? std::to_string(pairs_->tests) : "", "brute force: " + std::to_string(n * (n - 1) / 2)}};
+  s5.rows = {
+      {"pairs", pairs_ ? std::to_string(pairs_->pairs.size()) : "", std::to_string(exact_pairs_.size())},
+      {"pair tests", pairs_ ? std::to_string(pairs_->tests) : "", "brute force: " + std::to_string(n * (n - 1) / 2)}};
   verdict_[5] = s5.verdict;
   steps.push_back(s5);
 }
@@ -273,15 +298,19 @@ void SpatialTreesScene::update_frames() {
     return runs;
   });
   exact_pairs_ = oracle::meeting_pairs(spheres_);
-  Step s6 = judged("L06S6", "SweepAndPrune::update, frame after frame", runs_, [&](const SweepRuns& got) { return judge::sweep_frames(in, got); });
+  Step s6 = judged("L06S6", "SweepAndPrune::update, frame after frame", runs_,
+                   [&](const SweepRuns& got) { return judge::sweep_frames(in, got); });
   if (runs_ && !runs_->empty()) {
     const SweepRun& last = runs_->back();
     const std::size_t k = frames_.size();
     const long long changed = k > 1 ? judge::changed_order(frames_[k - 2], frames_[k - 1]) : 0;
     s6.rows = {{"pairs (last frame)", std::to_string(last.frame.pairs.size()), std::to_string(exact_pairs_.size())},
-               {"swaps", std::to_string(last.frame.swaps), k > 1 ? "at most " + std::to_string(changed) + " (ends whose order changed)" : "first frame: any sort"},
-               {"compare_ends calls", std::to_string(last.comparisons), k > 1 ? "at most " + std::to_string(2 * spheres_.size() + std::size_t(changed)) : ""},
-               {"tests", std::to_string(last.frame.tests), "brute force: " + std::to_string(spheres_.size() * (spheres_.size() - 1) / 2)}};
+               {"swaps", std::to_string(last.frame.swaps),
+                k > 1 ? "at most " + std::to_string(changed) + " (ends whose order changed)" : "first frame: any sort"},
+               {"compare_ends calls", std::to_string(last.comparisons),
+                k > 1 ? "at most " + std::to_string(2 * spheres_.size() + std::size_t(changed)) : ""},
+               {"tests", std::to_string(last.frame.tests),
+                "brute force: " + std::to_string(spheres_.size() * (spheres_.size() - 1) / 2)}};
   }
   verdict_[6] = s6.verdict;
   steps.push_back(s6);
@@ -302,8 +331,10 @@ void SpatialTreesScene::update_bvh() {
   leaf_pairs_ = reached_leaf_pairs(tree_a_, tree_b_);
   if (bvh_)
     s7.rows = {{"pairs that meet", std::to_string(bvh_->answer.pairs.size()), ""},
-               {"box tests", std::to_string(bvh_->answer.box_tests), "brute force: no boxes, " + std::to_string(mesh_.size() * mesh_b_.size()) + " triangle pairs"},
-               {"triangle tests", std::to_string(bvh_->answer.triangle_tests), "leaf pairs reached: " + std::to_string(leaf_pairs_.size())}};
+               {"box tests", std::to_string(bvh_->answer.box_tests),
+                "brute force: no boxes, " + std::to_string(mesh_.size() * mesh_b_.size()) + " triangle pairs"},
+               {"triangle tests", std::to_string(bvh_->answer.triangle_tests),
+                "leaf pairs reached: " + std::to_string(leaf_pairs_.size())}};
   verdict_[7] = s7.verdict;
   steps.push_back(s7);
 }

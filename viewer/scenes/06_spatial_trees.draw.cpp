@@ -45,26 +45,33 @@ void SpatialTreesScene::draw_frames(Frame& f) {
   double low = 0, left = 0, right = 1;
   for (std::size_t i = 0; i < now.size(); ++i) {
     const Sphere& b = now[i];
-    draw_circle(r, b.center, Vec3::UnitX(), Vec3::UnitY(), b.radius, paired[i] ? c : palette::surface, paired[i] ? 2.0f : 1.2f);
-    if (was[i].center != b.center) r.point(was[i].center, palette::muted, 3), r.arrow(was[i].center, b.center, palette::muted, 1.5f);
+    draw_circle(r, b.center, Vec3::UnitX(), Vec3::UnitY(), b.radius, paired[i] ? c : palette::surface,
+                paired[i] ? 2.0f : 1.2f);
+    if (was[i].center != b.center)
+      r.point(was[i].center, palette::muted, 3), r.arrow(was[i].center, b.center, palette::muted, 1.5f);
     if (now.size() <= 16) r.label(b.center, name(i), palette::input, 6, -6);
     low = i == 0 ? b.center.y() - b.radius : std::min(low, b.center.y() - b.radius);
-    left = i == 0 ? b.center.x() - b.radius : std::min({left, b.center.x() - b.radius, was[i].center.x() - was[i].radius});
-    right = i == 0 ? b.center.x() + b.radius : std::max({right, b.center.x() + b.radius, was[i].center.x() + was[i].radius});
+    left =
+        i == 0 ? b.center.x() - b.radius : std::min({left, b.center.x() - b.radius, was[i].center.x() - was[i].radius});
+    right = i == 0 ? b.center.x() + b.radius
+                   : std::max({right, b.center.x() + b.radius, was[i].center.x() + was[i].radius});
   }
   if (now.empty() || now.size() > 64) return;
   // The ends of both frames on two axes; an end is orange when its order against some other end changed.
   const double gap = 0.08 * (right - left + 1e-300);
   const double y_was = low - 2 * gap, y_now = low - 5 * gap;
   std::vector<char> moved(2 * now.size(), 0);
-  const auto value = [](const std::vector<Sphere>& s, std::size_t e) { return e % 2 ? s[e / 2].center.x() + s[e / 2].radius : s[e / 2].center.x() - s[e / 2].radius; };
+  const auto value = [](const std::vector<Sphere>& s, std::size_t e) {
+    return e % 2 ? s[e / 2].center.x() + s[e / 2].radius : s[e / 2].center.x() - s[e / 2].radius;
+  };
   for (std::size_t p = 0; p < moved.size(); ++p)
     for (std::size_t q = 0; q < moved.size(); ++q) {
       const double a = value(was, p) - value(was, q), b = value(now, p) - value(now, q);
       if ((a > 0) - (a < 0) != (b > 0) - (b < 0)) moved[p] = 1;
     }
   const Color swapped{0.95f, 0.62f, 0.20f};
-  for (const auto& [y, frame, title] : {std::tuple{y_was, &was, "previous frame"}, std::tuple{y_now, &now, "this frame"}}) {
+  for (const auto& [y, frame, title] :
+       {std::tuple{y_was, &was, "previous frame"}, std::tuple{y_now, &now, "this frame"}}) {
     r.arrow({left - gap, y, 0}, {right + 2 * gap, y, 0}, palette::muted, 1.2f);
     r.label({right + 2 * gap, y, 0}, title, palette::muted, 8, -6);
     for (std::size_t e = 0; e < moved.size(); ++e) {
@@ -130,7 +137,8 @@ void SpatialTreesScene::draw_kd(Frame& f) {
     int k = 0;
     for (const auto& [t0, cell] : met) {
       const bool visited = t0 <= stop;
-      draw_box(r, cell, visited ? palette::agree.with_alpha(0.9f) : palette::muted.with_alpha(0.6f), visited ? 1.8f : 1.0f);
+      draw_box(r, cell, visited ? palette::agree.with_alpha(0.9f) : palette::muted.with_alpha(0.6f),
+               visited ? 1.8f : 1.0f);
       const Vec3 at(0.5 * (cell.min.x() + cell.max.x()), 0.5 * (cell.min.y() + cell.max.y()), cell.max.z());
       r.label(at, std::to_string(++k), visited ? palette::agree : palette::muted, -4, -8);
     }
@@ -143,7 +151,8 @@ void SpatialTreesScene::draw_kd(Frame& f) {
     return;
   }
   // The leaves the segment meets: the cells a front-to-back walk may visit.
-  const Color cells = f.shows(1) || f.shows(2) ? colour(tree_is_students_ ? verdict_[1] : Verdict::none) : palette::muted;
+  const Color cells =
+      f.shows(1) || f.shows(2) ? colour(tree_is_students_ ? verdict_[1] : Verdict::none) : palette::muted;
   for (const LeafBox& l : leaves_)
     if (segment_meets(l.cell, segment_)) draw_box(r, l.cell, cells.with_alpha(0.8f), 1.2f);
   draw_box(r, tree_.bounds, palette::muted, 1);
@@ -157,10 +166,12 @@ void SpatialTreesScene::draw_kd(Frame& f) {
         r.triangle(t.v0, t.v1, t.v2, c.with_alpha(0.7f));
       }
       r.ring(first_->point, c, 14, 2.5f);
-      r.label(first_->point, "first hit  t = " + num(first_->t) + "  (" + std::to_string(first_->tests) + " tests)", c, 18, -16);
+      r.label(first_->point, "first hit  t = " + num(first_->t) + "  (" + std::to_string(first_->tests) + " tests)", c,
+              18, -16);
     }
     if (f.show_exact) {
-      for (const oracle::Crossing& h : exact_hits_) r.ring(segment_.a + h.t * (segment_.b - segment_.a), palette::exact, 9);
+      for (const oracle::Crossing& h : exact_hits_)
+        r.ring(segment_.a + h.t * (segment_.b - segment_.a), palette::exact, 9);
       if (!exact_hits_.empty()) {
         const Triangle t = mesh_.triangle(std::size_t(exact_hits_[0].triangle));
         for (int i = 0; i < 3; ++i) r.line(t[i], t[(i + 1) % 3], palette::exact, 2);
@@ -193,8 +204,12 @@ void SpatialTreesScene::draw_bsp(Frame& f) {
       const Color col = at_root ? plane : d > 0 ? palette::agree : palette::surface;
       r.triangle(p.v0, p.v1, p.v2, col.with_alpha(0.45f));
       for (int e = 0; e < 3; ++e) r.line(p[e], p[(e + 1) % 3], col, 2);
-      r.label(at_root ? p.v1 : mid, "piece " + std::to_string(i) + (at_root ? ": the splitter" : d > 0 ? ": front" : ": back"), col,
-              at_root ? -40.0f : 14.0f, at_root ? 18.0f : 0.0f);
+      r.label(at_root ? p.v1 : mid,
+              "piece " + std::to_string(i) +
+                  (at_root ? ": the splitter"
+                   : d > 0 ? ": front"
+                           : ": back"),
+              col, at_root ? -40.0f : 14.0f, at_root ? 18.0f : 0.0f);
       for (int e = 0; e < 3; ++e) {  // the cut points: on the plane, not a vertex of the mesh
         bool vertex = false;
         for (const Vec3& m : mesh_.vertices) vertex |= (m - p[e]).norm() == 0;
@@ -211,13 +226,15 @@ void SpatialTreesScene::draw_bsp(Frame& f) {
       const float w = n > 1 ? float(k) / float(n - 1) : 1.0f;
       const Triangle& t = bsp_->pieces[std::size_t(piece)].triangle;
       r.triangle(t.v0, t.v1, t.v2, Color{0.20f + 0.6f * w, 0.30f + 0.5f * w, 0.55f + 0.4f * w, 0.75f});
-      r.line(t.v0, t.v1, palette::muted, 1), r.line(t.v1, t.v2, palette::muted, 1), r.line(t.v2, t.v0, palette::muted, 1);
+      r.line(t.v0, t.v1, palette::muted, 1), r.line(t.v1, t.v2, palette::muted, 1),
+          r.line(t.v2, t.v0, palette::muted, 1);
     }
   } else {
     for (std::size_t i = 0; i < mesh_.size(); ++i) {
       const Triangle t = mesh_.triangle(i);
       r.triangle(t.v0, t.v1, t.v2, palette::surface.with_alpha(0.45f));
-      r.line(t.v0, t.v1, palette::muted, 1), r.line(t.v1, t.v2, palette::muted, 1), r.line(t.v2, t.v0, palette::muted, 1);
+      r.line(t.v0, t.v1, palette::muted, 1), r.line(t.v1, t.v2, palette::muted, 1),
+          r.line(t.v2, t.v0, palette::muted, 1);
     }
   }
   const Color c = colour(verdict_[3]);
@@ -225,7 +242,11 @@ void SpatialTreesScene::draw_bsp(Frame& f) {
   if (where_) r.label(point_, "p: " + describe(*where_), c, 12, -12);
   if (f.show_exact) {
     r.ring(point_, palette::exact, 10);
-    r.label(point_, "exact: " + std::string(exact_where_ > 0 ? "inside" : exact_where_ < 0 ? "outside" : "on"), palette::exact, 12, 8);
+    r.label(point_,
+            "exact: " + std::string(exact_where_ > 0   ? "inside"
+                                    : exact_where_ < 0 ? "outside"
+                                                       : "on"),
+            palette::exact, 12, 8);
   }
 }
 
@@ -251,7 +272,8 @@ void SpatialTreesScene::draw_spheres(Frame& f) {
     r.label({14, -7, 0}, "x", palette::muted, 6, -6);
     if (spheres_.size() >= 4) {
       r.line(spheres_[1].center, spheres_[2].center, palette::agree, 3);
-      r.label(0.5 * (spheres_[1].center + spheres_[2].center), "R, B tested: |(4, 3, 0)| = 5 <= 2 + 4, meet", palette::agree, 8, 8);
+      r.label(0.5 * (spheres_[1].center + spheres_[2].center), "R, B tested: |(4, 3, 0)| = 5 <= 2 + 4, meet",
+              palette::agree, 8, 8);
       r.dashed(spheres_[2].center, spheres_[3].center, palette::muted, 2);
       r.label(0.5 * (spheres_[2].center + spheres_[3].center), "B, C tested: 6 > 4 + 1, apart", palette::muted, 8, -8);
     }
@@ -266,9 +288,11 @@ void SpatialTreesScene::draw_spheres(Frame& f) {
         r.line(spheres_[std::size_t(p[0])].center, spheres_[std::size_t(p[1])].center, c, 3);
       }
   for (std::size_t i = 0; i < spheres_.size(); ++i)
-    draw_sphere(r, spheres_[i].center, spheres_[i].radius, paired[i] ? c : palette::surface, paired[i] ? 1.8f : 1.0f, 32);
+    draw_sphere(r, spheres_[i].center, spheres_[i].radius, paired[i] ? c : palette::surface, paired[i] ? 1.8f : 1.0f,
+                32);
   if (f.show_exact)
-    for (const auto& p : exact_pairs_) r.dashed(spheres_[std::size_t(p[0])].center, spheres_[std::size_t(p[1])].center, palette::exact, 1.5f);
+    for (const auto& p : exact_pairs_)
+      r.dashed(spheres_[std::size_t(p[0])].center, spheres_[std::size_t(p[1])].center, palette::exact, 1.5f);
 }
 
 void SpatialTreesScene::draw(Frame& f) {
@@ -289,7 +313,8 @@ bool SpatialTreesScene::inputs() {
   }
   if (mode_ == Mode::bsp) changed |= edit("point (and eye)", point_);
   if (mode_ == Mode::spheres) ImGui::TextDisabled("%zu spheres", spheres_.size());
-  if (mode_ == Mode::frames) ImGui::TextDisabled("%zu spheres, %zu frames: the handles move the last", spheres_.size(), frames_.size());
+  if (mode_ == Mode::frames)
+    ImGui::TextDisabled("%zu spheres, %zu frames: the handles move the last", spheres_.size(), frames_.size());
   return changed;
 }
 
@@ -298,7 +323,8 @@ std::vector<Handle> SpatialTreesScene::handles() {
   if (mode_ == Mode::bsp) return {{&point_, "p"}};
   if (mode_ == Mode::bvh) return {};
   std::vector<Handle> h;
-  for (std::size_t i = 0; i < spheres_.size() && i < 64; ++i) h.push_back({&spheres_[i].center, "sphere " + std::to_string(i)});
+  for (std::size_t i = 0; i < spheres_.size() && i < 64; ++i)
+    h.push_back({&spheres_[i].center, "sphere " + std::to_string(i)});
   return h;
 }
 

@@ -61,7 +61,7 @@ class SpatialTreesScene : public Scene {
   Vec3 point_ = Vec3::Zero();
   std::vector<Sphere> spheres_;
   int tree_seed_ = 0;
-  std::string figure_;  // the preset's name: "walk", "split" and "sweep" draw the handout's figures
+  std::string figure_;                // the preset's name: "walk", "split" and "sweep" draw the handout's figures
   std::optional<KdTree> given_tree_;  // a replayed example's hand-made tree: none here, the checker's otherwise
 
   // Step 1 and 2: the tree the queries ran on, and the answers.

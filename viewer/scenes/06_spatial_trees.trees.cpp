@@ -19,7 +19,8 @@ std::vector<LeafBox> leaves_of(const KdTree& tree) {
   while (!todo.empty() && out.size() < 200000) {
     const Todo t = todo.back();
     todo.pop_back();
-    if (t.node < 0 || std::size_t(t.node) >= tree.nodes.size() || t.depth > kMaxDepth) continue;  // malformed: the judge says why
+    if (t.node < 0 || std::size_t(t.node) >= tree.nodes.size() || t.depth > kMaxDepth)
+      continue;  // malformed: the judge says why
     const KdNode& n = tree.nodes[std::size_t(t.node)];
     if (n.axis == kLeaf || n.axis < 0 || n.axis > 2) {
       out.push_back({t.node, t.cell});
@@ -62,7 +63,8 @@ KdTree median_tree(const Mesh& mesh, int depth) {
     std::vector<int> below, above;
     for (int i : list) {
       const Triangle& t = tree.triangles[std::size_t(i)];
-      const double lo = std::min({t.v0[axis], t.v1[axis], t.v2[axis]}), hi = std::max({t.v0[axis], t.v1[axis], t.v2[axis]});
+      const double lo = std::min({t.v0[axis], t.v1[axis], t.v2[axis]}),
+                   hi = std::max({t.v0[axis], t.v1[axis], t.v2[axis]});
       if (lo <= split) below.push_back(i);
       if (hi >= split) above.push_back(i);
     }
@@ -115,7 +117,9 @@ std::vector<std::array<int, 2>> reached_leaf_pairs(const ObbTree& tree_a, const 
         leaf_pairs.push_back({i, j});
         continue;
       }
-      const auto volume = [](const ObbNode& n) { return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2]; };
+      const auto volume = [](const ObbNode& n) {
+        return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2];
+      };
       if (leaf_b || (!leaf_a && volume(na) >= volume(nb))) {
         todo.push_back({na.right, j}), todo.push_back({na.left, j});
       } else {

@@ -31,8 +31,8 @@ const std::vector<Preset> kPresets = {
     {"corner", "floor, then wall: two bounces in the remaining time (e = 1)", nullptr, true, -90, 2, 6},
     {"crack", "a crack between floor and ceiling: bounces up to the cap, then stops", nullptr, false, -90, 2, 6},
     {"dead", "a dead bounce (e = 0): the hit point is settled above the floor", nullptr, false, -90, 2, 7},
-    {"paddle", "a floor rising at u = (0, 0, 2) (e = 1/2): the bounce seen from the floor, from a' = a + u dt", nullptr, true,
-     -90, 2, 6},
+    {"paddle", "a floor rising at u = (0, 0, 2) (e = 1/2): the bounce seen from the floor, from a' = a + u dt", nullptr,
+     true, -90, 2, 6},
 };
 
 // The exact first hit of a segment on a scene (planes, then triangles; ties to the first).
@@ -112,7 +112,8 @@ ParticlesScene::ParticlesScene(const Setup& setup) {
   if (setup.token.empty() && preset && !preset->token) {
     if (preset->name != std::string("fountain")) mode_ = Mode::step, one_ = preset_step(preset->name);
     // A figure shows the fountain grown: two seconds of it.
-    else case_.steps = 120;
+    else
+      case_.steps = 120;
     restart();
     frame_inputs();
     return;
@@ -129,11 +130,11 @@ ParticlesScene::ParticlesScene(const Setup& setup) {
                      [&](auto, const LaunchCase& in) { mode_ = Mode::target, launch_ = in; },
                      [&](auto, const CollideCase& in) { mode_ = Mode::step, one_ = in; },
                      [&](auto q, const SegmentScene& in) {
-                       mode_ = Mode::step, one_ = CollideCase{in.segment, in.segment.b - in.segment.a, 1, 1, in.scene};
-                       if (q == query::hit_plane) {
-                         one_.scene.planes.resize(std::min<std::size_t>(1, one_.scene.planes.size()));
-                         one_.scene.mesh = {};
-                       }
+    mode_ = Mode::step, one_ = CollideCase{in.segment, in.segment.b - in.segment.a, 1, 1, in.scene};
+    if (q == query::hit_plane) {
+      one_.scene.planes.resize(std::min<std::size_t>(1, one_.scene.planes.size()));
+      one_.scene.mesh = {};
+    }
                      }});
   if (mode_ == Mode::fountain) {
     const int steps = case_.steps;
@@ -163,11 +164,13 @@ void ParticlesScene::frame_inputs() {
   } else if (mode_ == Mode::target) {
     box.extend(launch_.from), box.extend(launch_.target);
     const double reach = launch_.speed * launch_.speed / std::max(launch_.gravity.norm(), 1e-9);
-    box.extend(launch_.from - launch_.gravity.normalized() * std::min(reach / 2, 2 * (launch_.target - launch_.from).norm()));
+    box.extend(launch_.from -
+               launch_.gravity.normalized() * std::min(reach / 2, 2 * (launch_.target - launch_.from).norm()));
   } else {
     // A moving scene: also where it carries a (a') and where its surfaces start the step.
     const Vec3 carried = one_.scene.velocity * one_.dt;
-    box.extend(one_.step.a), box.extend(one_.step.b), box.extend(one_.step.a + carried), box.extend(one_.step.b - carried);
+    box.extend(one_.step.a), box.extend(one_.step.b), box.extend(one_.step.a + carried),
+        box.extend(one_.step.b - carried);
     for (const Vec3& v : one_.scene.mesh.vertices) box.extend(v);
   }
   frame(box);
@@ -186,9 +189,12 @@ std::string ParticlesScene::token() const {
 
 void ParticlesScene::update() {
   steps.clear();
-  if (mode_ == Mode::fountain) update_fountain();
-  else if (mode_ == Mode::target) update_target();
-  else update_step(one_, 4);
+  if (mode_ == Mode::fountain)
+    update_fountain();
+  else if (mode_ == Mode::target)
+    update_target();
+  else
+    update_step(one_, 4);
 }
 
 void ParticlesScene::update_target() {
@@ -200,7 +206,8 @@ void ParticlesScene::update_target() {
   const int exact_count = vertical ? 0 : sign > 0 ? 2 : sign == 0 ? 1 : 0;
   const double deg = 180 / M_PI;
   s3.rows = {{"count", aim_ ? std::to_string(aim_->count) : "", std::to_string(exact_count)},
-             {"radicand", aim_ ? num(aim_->radicand) : "", num(oracle::launch_radicand(in.from, in.target, in.speed, in.gravity))}};
+             {"radicand", aim_ ? num(aim_->radicand) : "",
+              num(oracle::launch_radicand(in.from, in.target, in.speed, in.gravity))}};
   if (aim_ && aim_->count > 0) {
     s3.rows.push_back({"low: degrees, time", num(aim_->low.angle * deg) + ", " + num(aim_->low.time), ""});
     s3.rows.push_back({"high: degrees, time", num(aim_->high.angle * deg) + ", " + num(aim_->high.time), ""});
@@ -219,10 +226,14 @@ void ParticlesScene::update_step(const CollideCase& in, int) {
   Step s4 = judged("L07S4", moving ? "first_hit of the relative step a' -> b" : "first_hit of the step a -> b", first_,
                    [&](const SurfaceHit& got) { return judge::first_hit(seg, got); });
   const auto& f = first_;
-  s4.rows = {{"hit", f ? (f->hit ? (f->plane >= 0 ? "plane " + std::to_string(f->plane) : "triangle " + std::to_string(f->triangle)) : "none") : "",
-              exact_hit_.hit ? "yes" : "none"},
-             {"t", f && f->hit ? num(f->t) : "", exact_hit_.hit ? num(exact_hit_.t) : ""},
-             {"point", f && f->hit ? num(f->point) : "", exact_hit_.hit ? num(exact_hit_.point) : ""}};
+  s4.rows = {
+      {"hit",
+       f ? (f->hit ? (f->plane >= 0 ? "plane " + std::to_string(f->plane) : "triangle " + std::to_string(f->triangle))
+                   : "none")
+         : "",
+       exact_hit_.hit ? "yes" : "none"},
+      {"t", f && f->hit ? num(f->t) : "", exact_hit_.hit ? num(exact_hit_.t) : ""},
+      {"point", f && f->hit ? num(f->point) : "", exact_hit_.hit ? num(exact_hit_.point) : ""}};
   verdict_[4] = s4.verdict;
   steps.push_back(s4);
 
@@ -230,9 +241,10 @@ void ParticlesScene::update_step(const CollideCase& in, int) {
   if (exact_hit_.hit && f && f->hit) {
     const ImpulseCase ic{in.velocity, u, f->normal, in.mass, in.scene.material};
     impulse_ = attempt([&] { return impulse(ic.velocity, ic.object_velocity, ic.normal, ic.mass, ic.material); });
-    Step s5 = judged("L07S5", "impulse at the first hit", impulse_, [&](const Impulse& got) { return judge::impulse(ic, got); });
-    const oracle::Impulse e = oracle::impulse(ic.velocity, ic.object_velocity, ic.normal, ic.mass, ic.material.restitution,
-                                              ic.material.friction);
+    Step s5 = judged("L07S5", "impulse at the first hit", impulse_,
+                     [&](const Impulse& got) { return judge::impulse(ic, got); });
+    const oracle::Impulse e = oracle::impulse(ic.velocity, ic.object_velocity, ic.normal, ic.mass,
+                                              ic.material.restitution, ic.material.friction);
     s5.rows = {{"v_close", impulse_ ? num(impulse_->v_close) : "", num(e.v_close)},
                {"velocity after", impulse_ ? num(impulse_->velocity) : "", num(e.velocity)}};
     verdict_[5] = s5.verdict;
@@ -246,15 +258,18 @@ void ParticlesScene::update_step(const CollideCase& in, int) {
   collision_ = attempt([&] { return collide(in.step, in.velocity, in.mass, in.dt, in.scene); });
   Step s6 = judged("L07S6", "collide: bounces in the remaining time", collision_,
                    [&](const Collision& got) { return judge::collide(in, got); });
-  s6.rows = {{"bounces", collision_ ? std::to_string(collision_->bounces) + (collision_->stopped ? ", stopped" : "") : "", ""},
-             {"end", collision_ ? num(collision_->position) : "", ""},
-             {"velocity", collision_ ? num(collision_->velocity) : "", ""}};
+  s6.rows = {
+      {"bounces", collision_ ? std::to_string(collision_->bounces) + (collision_->stopped ? ", stopped" : "") : "", ""},
+      {"end", collision_ ? num(collision_->position) : "", ""},
+      {"velocity", collision_ ? num(collision_->velocity) : "", ""}};
   verdict_[6] = s6.verdict;
   steps.push_back(s6);
   Step s7 = judged("L07S7", "invariants: never behind, energy", collision_,
                    [&](const Collision& got) { return judge::invariants(in, got); });
-  s7.rows = {{moving ? "|v - u|^2 before, after" : "|v|^2 before, after",
-              collision_ ? num((in.velocity - u).squaredNorm()) + ", " + num((collision_->velocity - u).squaredNorm()) : "", ""}};
+  s7.rows = {
+      {moving ? "|v - u|^2 before, after" : "|v|^2 before, after",
+       collision_ ? num((in.velocity - u).squaredNorm()) + ", " + num((collision_->velocity - u).squaredNorm()) : "",
+       ""}};
   verdict_[7] = s7.verdict;
   steps.push_back(s7);
 }

@@ -36,7 +36,8 @@ void ParticlesScene::draw_surfaces(Renderer& r) const {
     const double length = p.normal.norm();
     if (length == 0) continue;
     const Vec3 n = p.normal / length, foot = center - (p.value(center) / length) * n;
-    fill(r, square_around(foot, n.unitOrthogonal(), n.cross(n.unitOrthogonal()), size), palette::surface.with_alpha(0.25f));
+    fill(r, square_around(foot, n.unitOrthogonal(), n.cross(n.unitOrthogonal()), size),
+         palette::surface.with_alpha(0.25f));
     r.arrow(foot, foot + 0.15 * size * n, palette::muted, 1.5f);
   }
   draw_mesh(r, scene.mesh, palette::surface.with_alpha(0.8f));
@@ -99,7 +100,8 @@ void ParticlesScene::draw(Frame& f) {
   if (mode_ == Mode::target) {
     const LaunchCase& in = launch_;
     r.point(in.from, palette::input, 6), r.label(in.from, "from", palette::input);
-    r.point(in.target, palette::input, 7), r.ring(in.target, palette::input, 12), r.label(in.target, "target", palette::input);
+    r.point(in.target, palette::input, 7), r.ring(in.target, palette::input, 12),
+        r.label(in.target, "target", palette::input);
     if (aim_ && aim_->count > 0) {
       const Color c = colour(verdict_[3]);
       for (const Shot* s : {&aim_->low, &aim_->high}) {  // the two parabolas, to the time of arrival
@@ -114,8 +116,10 @@ void ParticlesScene::draw(Frame& f) {
         const Vec3 mid = in.from + s->velocity * (s->time / 2) + 0.125 * in.gravity * s->time * s->time;
         char degrees[64];
         std::snprintf(degrees, sizeof degrees, "%.3f deg, arrives at %.3f s", s->angle * 180 / M_PI, s->time);
-        if (s == &aim_->low) r.label(mid, degrees, c, -90, 22);  // below the flat arc, clear of the lobbed one
-        else r.label(mid, degrees, c);
+        if (s == &aim_->low)
+          r.label(mid, degrees, c, -90, 22);  // below the flat arc, clear of the lobbed one
+        else
+          r.label(mid, degrees, c);
         r.arrow(in.from, in.from + s->velocity * 0.15, c, 2);
       }
     } else if (aim_) {
@@ -148,14 +152,15 @@ void ParticlesScene::draw(Frame& f) {
 bool ParticlesScene::inputs() {
   bool changed = false;
   if (mode_ == Mode::target) {
-    changed |= edit("from", launch_.from) | edit("target", launch_.target) | edit("speed", launch_.speed, 0.1f, 0, 1e6) |
-               edit("gravity", launch_.gravity);
+    changed |= edit("from", launch_.from) | edit("target", launch_.target) |
+               edit("speed", launch_.speed, 0.1f, 0, 1e6) | edit("gravity", launch_.gravity);
     return changed;
   }
   if (mode_ == Mode::step) {
     changed |= edit("a", one_.step.a) | edit("b", one_.step.b) | edit("velocity", one_.velocity) |
                edit("restitution", one_.scene.material.restitution, 0.01f, 0, 1) |
-               edit("friction", one_.scene.material.friction, 0.01f, 0, 2) | edit("scene velocity u", one_.scene.velocity);
+               edit("friction", one_.scene.material.friction, 0.01f, 0, 2) |
+               edit("scene velocity u", one_.scene.velocity);
     int cap = one_.scene.bounce_cap;
     if (ImGui::SliderInt("bounce cap", &cap, 0, kMaxBounceCap)) one_.scene.bounce_cap = cap, changed = true;
     return changed;

@@ -20,7 +20,10 @@ void ParticlesScene::advance() {
     s.emitter.owed = births_->owed;
     for (int i = 0; i < births_->count; ++i) {
       const auto p = attempt([&] { return emit(s.emitter, s.random); });
-      if (!p) { note(p.problem); break; }
+      if (!p) {
+        note(p.problem);
+        break;
+      }
       if (s.integrator == Integrator::verlet) {
         const auto v = attempt([&] { return start_verlet(*p, s.forces, dt); });
         s.particles.push_back(v ? *v : *p);
@@ -36,11 +39,15 @@ void ParticlesScene::advance() {
     Track t;
     const Vec3 a = p.position;
     const MotionCase motion{p, s.forces, dt};
-    const auto moved = attempt([&] {
-      return s.integrator == Integrator::euler ? euler_step(p, s.forces, dt) : verlet_step(p, s.forces, dt);
-    });
+    const auto moved = attempt(
+        [&] { return s.integrator == Integrator::euler ? euler_step(p, s.forces, dt) : verlet_step(p, s.forces, dt); });
     if (&p == &s.particles.front()) motion_in_ = motion, moved_ = moved;
-    if (!moved) { note(moved.problem); t.particle = p; tracks_.push_back(t); continue; }
+    if (!moved) {
+      note(moved.problem);
+      t.particle = p;
+      tracks_.push_back(t);
+      continue;
+    }
     p = *moved;
     t.step = CollideCase{{a, p.position}, p.velocity, p.mass, dt, s.scene};
     t.collision = attempt([&] { return collide(t.step.step, p.velocity, p.mass, dt, s.scene); });
@@ -94,11 +101,12 @@ void ParticlesScene::update_fountain() {
 
   const bool verlet = system_.integrator == Integrator::verlet;
   if (moved_.value || moved_.stub || !moved_.problem.empty()) {
-    Step s2 = judged("L07S2", verlet ? "verlet_step (the followed particle)" : "euler_step (the followed particle)", moved_,
-                     [&](const Particle& got) {
+    Step s2 = judged("L07S2", verlet ? "verlet_step (the followed particle)" : "euler_step (the followed particle)",
+                     moved_, [&](const Particle& got) {
                        return verlet ? judge::verlet_step(motion_in_, got) : judge::euler_step(motion_in_, got);
                      });
-    s2.rows = {{"position", moved_ ? num(moved_->position) : "", ""}, {"velocity", moved_ ? num(moved_->velocity) : "", ""}};
+    s2.rows = {{"position", moved_ ? num(moved_->position) : "", ""},
+               {"velocity", moved_ ? num(moved_->velocity) : "", ""}};
     verdict_[2] = s2.verdict;
     steps.push_back(s2);
   } else {
@@ -121,10 +129,16 @@ void ParticlesScene::update_fountain() {
   // Replace the single-particle step 7 with the whole fountain's.
   if (!steps.empty() && steps.back().tag == "L07S7") steps.pop_back();
   Step s7{"L07S7", "never behind, energy: every particle's step", Verdict::none, {}, {}};
-  s7.verdict = stubbed > 0 ? Verdict::stub : broken > 0 ? Verdict::disagree : judged_count > 0 ? Verdict::agree : Verdict::none;
-  if (stubbed > 0) s7.note = stub_;
-  else if (broken > 0) s7.note = std::to_string(broken) + " particles broke an invariant this step (red)";
-  s7.rows = {{"particles judged", std::to_string(judged_count), ""}, {"invariants broken", std::to_string(broken), "0"}};
+  s7.verdict = stubbed > 0        ? Verdict::stub
+               : broken > 0       ? Verdict::disagree
+               : judged_count > 0 ? Verdict::agree
+                                  : Verdict::none;
+  if (stubbed > 0)
+    s7.note = stub_;
+  else if (broken > 0)
+    s7.note = std::to_string(broken) + " particles broke an invariant this step (red)";
+  s7.rows = {{"particles judged", std::to_string(judged_count), ""},
+             {"invariants broken", std::to_string(broken), "0"}};
   verdict_[7] = s7.verdict;
   steps.push_back(s7);
 }

@@ -27,8 +27,8 @@ struct ExactHit {
 
 // One particle's last step, as the scene saw it.
 struct Track {
-  Particle particle;         // after the step
-  CollideCase step;          // the collision input of that step (no collision: dt = 0)
+  Particle particle;  // after the step
+  CollideCase step;   // the collision input of that step (no collision: dt = 0)
   Attempt<Collision> collision;
   Verdict invariants = Verdict::none;
 };

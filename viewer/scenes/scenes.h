@@ -15,9 +15,9 @@
 namespace viewer {
 
 struct SceneInfo {
-  const char* lab;    // "02": what `./labkit view 02` and the number keys select
-  const char* stem;   // "02_segment_triangle": the stem of the lab's files and figures
-  const char* title;  // from grading/manifest.json (common/harness/titles.h)
+  const char* lab;                                     // "02": what `./labkit view 02` and the number keys select
+  const char* stem;                                    // "02_segment_triangle": the stem of the lab's files and figures
+  const char* title;                                   // from grading/manifest.json (common/harness/titles.h)
   std::unique_ptr<Scene> (*make)(const Setup& setup);  // throws labkit::BadToken
   const std::vector<Preset>& (*presets)();
 };

@@ -33,11 +33,14 @@ int main(int argc, char** argv) {
     for (int i = 0; i < w * h; ++i)
       count += std::abs(p[3 * i] - r) <= 24 && std::abs(p[3 * i + 1] - g) <= 24 && std::abs(p[3 * i + 2] - b) <= 24;
     if (count < least) {
-      std::fprintf(stderr, "png_probe: %s has %ld pixels of colour %s, fewer than %ld\n", argv[1], count, argv[a], least);
+      std::fprintf(stderr, "png_probe: %s has %ld pixels of colour %s, fewer than %ld\n", argv[1], count, argv[a],
+                   least);
       status = 1;
     }
   }
   stbi_image_free(p);
-  if (status == 0) std::printf("png_probe: %s is %dx%d with %zu colours; every colour asked for is there\n", argv[1], w, h, colours.size());
+  if (status == 0)
+    std::printf("png_probe: %s is %dx%d with %zu colours; every colour asked for is there\n", argv[1], w, h,
+                colours.size());
   return status;
 }
