@@ -50,15 +50,15 @@ labkit_mutant(01 frustum_split NAME side_planes_only STEP 4 SAYS "all six planes
   REPLACE "return fan(clip_polygon(triangle, frustum.planes.data(), 4), triangle);")
 
 labkit_mutant(01 frustum_split NAME colour_from_wrong_vertices STEP 5 SAYS "same t" "same vertices"
-  FIND "out.colors.push_back(blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])],
-                                 in.colors[std::size_t(face[2])]));"
+  FIND "out.colors.push_back(
+          blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])], in.colors[std::size_t(face[2])]));"
   REPLACE "out.colors.push_back(blend(c, in.colors[std::size_t(face[1])], in.colors[std::size_t(face[2])],
                                  in.colors[std::size_t(face[0])]));")
 
 # c_b + t (c_a - c_b): the colour's t measured from the other end of the edge.
 labkit_mutant(01 frustum_split NAME colour_t_from_wrong_end STEP 5 SAYS "same t" "other end"
-  FIND "out.colors.push_back(blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])],
-                                 in.colors[std::size_t(face[2])]));"
+  FIND "out.colors.push_back(
+          blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])], in.colors[std::size_t(face[2])]));"
   REPLACE "Corner mirrored = c;
       if (c.edges) {
         const int a = c.edges & 1u ? 0 : (c.edges & 2u ? 1 : 2);
@@ -68,8 +68,8 @@ labkit_mutant(01 frustum_split NAME colour_t_from_wrong_end STEP 5 SAYS "same t"
                                  in.colors[std::size_t(face[2])]));")
 
 labkit_mutant(01 frustum_split NAME new_vertex_without_colour STEP 5 SAYS "every vertex needs a colour"
-  FIND "out.colors.push_back(blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])],
-                                 in.colors[std::size_t(face[2])]));"
+  FIND "out.colors.push_back(
+          blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])], in.colors[std::size_t(face[2])]));"
   REPLACE "")
 
 labkit_mutant(01 frustum_split NAME classify_rounded_points STEP 6 SAYS "rounded cut point"

@@ -18,7 +18,7 @@ labkit_mutant(02 segment_triangle NAME beta_sign STEP 3 SAYS "beta" "sign"
   REPLACE "b.beta = cross(p, e1) / cross(e1, e2);")
 
 labkit_mutant(02 segment_triangle NAME fuzzy_zero_area STEP 4 SAYS "zero area"
-  FIND "if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit"
+  FIND "if (n == Vec3::Zero()) return {};                             // zero area: no plane, never hit"
   REPLACE "if (input_tri.normal().isZero()) return {};")
 
 labkit_mutant(02 segment_triangle NAME magic_epsilon STEP 4 SAYS "same side"

@@ -31,7 +31,8 @@ labkit_mutant(04 bisection NAME returns_the_overlapping_end STEP 2 SAYS "last cl
   r.t_contact = hi;")
 
 labkit_mutant(04 bisection NAME keeps_the_wrong_half STEP 2 SAYS "half whose ends differ"
-  FIND "if (overlap_at(pair, mid)) hi = mid;"
+  FIND "if (overlap_at(pair, mid))
+      hi = mid;"
   REPLACE "if (!overlap_at(pair, mid)) hi = mid;")
 
 labkit_mutant(04 bisection NAME one_halving_too_many STEP 2 SAYS "one halving too many" "hi - lo > tolerance"
