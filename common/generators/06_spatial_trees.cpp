@@ -39,32 +39,21 @@ rc::Gen<lab06::TreeQuery> exact_tree_query() {
 
 rc::Gen<Mesh> bsp_mesh() { return any_mesh(); }
 
-rc::Gen<lab06::PointQuery> point_query() {
-  return rc::gen::exec([] {
-    const Mesh m = *closed_mesh();
-    return lab06::PointQuery{m, *point_near(m, false)};
+namespace {
+// A mesh drawn from `meshes`, then a point near it (on the exact lattice or not).
+rc::Gen<lab06::PointQuery> point_near_mesh(rc::Gen<Mesh> meshes, bool exact) {
+  return rc::gen::exec([meshes, exact] {
+    const Mesh m = *meshes;
+    return lab06::PointQuery{m, *point_near(m, exact)};
   });
 }
+}  // namespace
 
-rc::Gen<lab06::PointQuery> exact_point_query() {
-  return rc::gen::exec([] {
-    const Mesh m = *exact_closed_mesh();
-    return lab06::PointQuery{m, *point_near(m, true)};
-  });
-}
-
-rc::Gen<lab06::PointQuery> eye_query() {
-  return rc::gen::exec([] {
-    const Mesh m = *any_mesh();
-    return lab06::PointQuery{m, *point_near(m, false)};
-  });
-}
-
+rc::Gen<lab06::PointQuery> point_query() { return point_near_mesh(closed_mesh(), false); }
+rc::Gen<lab06::PointQuery> exact_point_query() { return point_near_mesh(exact_closed_mesh(), true); }
+rc::Gen<lab06::PointQuery> eye_query() { return point_near_mesh(any_mesh(), false); }
 rc::Gen<lab06::PointQuery> exact_eye_query() {
-  return rc::gen::exec([] {
-    const Mesh m = *rc::gen::oneOf(exact_mesh(), exact_closed_mesh());
-    return lab06::PointQuery{m, *point_near(m, true)};
-  });
+  return point_near_mesh(rc::gen::oneOf(exact_mesh(), exact_closed_mesh()), true);
 }
 
 rc::Gen<lab06::SphereSet> sphere_set_case() {
