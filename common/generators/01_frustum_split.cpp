@@ -189,16 +189,14 @@ TrianglePlane unit_normal(TrianglePlane c) {
   return c;
 }
 
-// Moved far from the origin, the plane with it (exactly: its normal is an integer one).
-rc::Gen<TrianglePlane> far_away(rc::Gen<TrianglePlane> base) {
-  return rc::gen::exec([base] {
-    TrianglePlane c = *base;
-    const double size = std::max(1.0, scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2}));
-    const Vec3 offset = *lattice_point(size * 1024.0, 64);
-    for (int i = 0; i < 3; ++i) c.triangle[i] += offset;
-    c.plane.offset -= c.plane.normal.dot(offset);
-    return c;
-  });
+// Moved far from the origin (far_away), the plane with it (exactly: its normal is an
+// integer one), by multiples of the triangle's size, at least 1.
+void move_with_plane(TrianglePlane& c, const Vec3& offset) {
+  for (int i = 0; i < 3; ++i) c.triangle[i] += offset;
+  c.plane.offset -= c.plane.normal.dot(offset);
+}
+double triangle_size(const TrianglePlane& c) {
+  return std::max(1.0, scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2}));
 }
 
 // A needle: long along a lattice direction of the plane's frame (in it, steep to it, or
@@ -596,7 +594,8 @@ rc::Gen<TrianglePlane> triangle_plane() {
                                              {2, needle_plane_case()}});
   const rc::Gen<TrianglePlane> extremes =
       rc::gen::exec([families] { return scaled(*families, signed_extreme(), *rc::gen::inRange(-100, 101)); });
-  return rc::gen::weightedOneOf<TrianglePlane>({{12, families}, {2, far_away(families)}, {2, extremes}});
+  return rc::gen::weightedOneOf<TrianglePlane>(
+      {{12, families}, {2, far_away(families, move_with_plane, triangle_size)}, {2, extremes}});
 }
 
 rc::Gen<TrianglePlane> exact_triangle_plane() {

@@ -1,5 +1,6 @@
 #include "common/generators/03_separating_axes.h"
 #include "common/generators/generators.h"
+#include "common/generators/grid.h"
 
 #include <algorithm>
 #include <array>
@@ -32,16 +33,12 @@ namespace {
 
 constexpr double kFraction = 1.0 / (1 << 20);
 
-// Where a family draws its numbers: the fine dyadic lattice with rounded rotations, or
-// (exact) multiples of 8 units with |x| <= 1024 units and signed-permutation axes.
-struct Grid {
-  double s = 1.0;
-  bool exact = false;
+// Where a family draws its numbers (its Grid): the fine dyadic lattice with rounded
+// rotations, or (exact) multiples of 8 units with |x| <= 1024 units and signed-permutation
+// axes. Box pairs in contact carry one more switch.
+struct BoxGrid : Grid {
   bool touching = false;  // rounded pairs may touch exactly (the moving boxes' contacts)
 };
-rc::Gen<Grid> grid(bool exact) {
-  return rc::gen::map(scale(), [exact](double s) { return Grid{s, exact}; });
-}
 
 // A number of units with a 20-bit fraction, or (exact) a multiple of 8 units.
 double length(Grid g, int low, int high) {
@@ -133,7 +130,7 @@ double radius_along(const Box& box, const Vec3& n) {
 // where the check calls a pair ambiguous (2 to 16 times 24 tol, tol = 1e-9 S; `reach`
 // bounds S): near-degenerate but decisive. Exactly touching pairs (zero gap) are the
 // robustness step's, on exact input.
-double gap(Grid g, double size, double reach) {
+double gap(BoxGrid g, double size, double reach) {
   if (g.exact) return *rc::gen::weightedElement<double>({{4, 0.0}, {1, 8 * g.s}, {1, -8 * g.s}});
   const double sign = *rc::gen::element(-1.0, 1.0);
   // Moving boxes touch along an axis they then slide along (W nearly perpendicular to
@@ -156,7 +153,7 @@ Vec3 extreme_toward(const Box& box, const Vec3& n, int free_axis = -1) {
 
 // B against a face of A (or A against a face of B), shifted sideways within the face.
 // `along_face`, when asked for: another axis of the face's owner, so along that face.
-BoxPair face_contact(Grid g, Vec3* along_face = nullptr) {
+BoxPair face_contact(BoxGrid g, Vec3* along_face = nullptr) {
   Box a = grid_box(g), b = grid_box(g);
   b.axes = related_axes(a.axes, g.exact);
   const bool on_b = *rc::gen::inRange(0, 3) == 0;
@@ -174,7 +171,7 @@ BoxPair face_contact(Grid g, Vec3* along_face = nullptr) {
 }
 
 // An edge of A across an edge of B: n = A_i x B_j is the axis between them.
-BoxPair edge_contact(Grid g) {
+BoxPair edge_contact(BoxGrid g) {
   Box a = grid_box(g), b = grid_box(g);
   b.axes = related_axes(a.axes, g.exact);
   const int i = *rc::gen::inRange(0, 3), j = *rc::gen::inRange(0, 3);
@@ -192,7 +189,7 @@ BoxPair edge_contact(Grid g) {
 }
 
 // A corner of B on a face of A.
-BoxPair corner_contact(Grid g) {
+BoxPair corner_contact(BoxGrid g) {
   Box a = grid_box(g), b = grid_box(g);
   b.axes = related_axes(a.axes, g.exact);
   const int k = *rc::gen::inRange(0, 3);
@@ -237,7 +234,7 @@ BoxPair far_away(BoxPair p) {
   return p;
 }
 
-BoxPair pair_of(Grid g) {
+BoxPair pair_of(BoxGrid g) {
   switch (*rc::gen::weightedElement<int>({{4, 0}, {3, 1}, {3, 2}, {2, 3}, {1, 4}})) {
     case 0:
       return nearby(g);
@@ -253,7 +250,7 @@ BoxPair pair_of(Grid g) {
 }
 
 rc::Gen<BoxPair> pair_family(bool exact) {
-  return rc::gen::exec([exact] { return pair_of(*grid(exact)); });
+  return rc::gen::exec([exact] { return pair_of(BoxGrid{*grid(exact)}); });
 }
 
 Vec3 rounded_unit() { return Vec3(*direction(1.0, 8)).normalized(); }
@@ -456,8 +453,7 @@ BoxPair flat_crossing(Grid g, Vec3* across) {
 // along a face or a shared axis: then W . L on the other axes is zero in exact arithmetic
 // but rounding noise in doubles, and times computed from it are noise too.
 MovingBoxes moving(bool exact) {
-  Grid g = *grid(exact);
-  g.touching = true;
+  const BoxGrid g{*grid(exact), /*touching=*/true};
   const int kind = *rc::gen::weightedElement<int>({{6, 0}, {1, 1}, {1, 2}, {1, 3}});
   const bool flat = kind == 1, sliding = kind >= 2;
   Vec3 across = Vec3::Zero(), along = Vec3::Zero();

@@ -385,17 +385,13 @@ rc::Gen<MovingPairCase> tunnelling() {
   });
 }
 
-// Any case moved far from the origin: large coordinates, small features.
-rc::Gen<MovingPairCase> far_away(rc::Gen<MovingPairCase> base) {
-  return rc::gen::exec([base] {
-    MovingPairCase c = *base;
-    const double size = std::max({1.0, reach_of(c.a), reach_of(c.b)});
-    const Vec3 offset = *lattice_point(size * 1024.0, 64);
-    c.a.motion.start += offset;
-    c.b.motion.start += offset;
-    return c;
-  });
+// Moved far from the origin (far_away): both bodies' starts, by multiples of the
+// bodies' reach, at least 1.
+void move_starts(MovingPairCase& c, const Vec3& offset) {
+  c.a.motion.start += offset;
+  c.b.motion.start += offset;
 }
+double reach_of_pair(const MovingPairCase& c) { return std::max({1.0, reach_of(c.a), reach_of(c.b)}); }
 
 rc::Gen<MovingPairCase> pairs(int finest) {
   const rc::Gen<MovingPairCase> families = rc::gen::weightedOneOf<MovingPairCase>({
@@ -406,7 +402,7 @@ rc::Gen<MovingPairCase> pairs(int finest) {
       {1, touching(true)},
       {1, tunnelling()},
   });
-  return rc::gen::weightedOneOf<MovingPairCase>({{7, families}, {1, far_away(families)}});
+  return rc::gen::weightedOneOf<MovingPairCase>({{7, families}, {1, far_away(families, move_starts, reach_of_pair)}});
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "common/generators/05_sphere_sweeps.h"
 
 #include "common/generators/generators.h"
+#include "common/generators/grid.h"
 
 #include <algorithm>
 #include <array>
@@ -11,18 +12,9 @@ namespace labkit::gen {
 
 namespace {
 
-// Where a family draws from: the fine dyadic lattice at scale s, or (exact) integers
-// |x| <= 64 times s, with multipliers kept small so that every combination stays an
-// integer of that size.
-struct Grid {
-  double s = 1.0;
-  bool exact = false;
-};
-
-rc::Gen<Grid> grid(bool exact) {
-  return rc::gen::map(scale(), [exact](double s) { return Grid{s, exact}; });
-}
-
+// Where a family draws from (its Grid): the fine dyadic lattice at scale s, or (exact)
+// integers |x| <= 64 times s, with multipliers kept small so that every combination
+// stays an integer of that size.
 Vec3 grid_point(const Grid& g) { return g.exact ? *lattice_point(g.s, 24) : *point(g.s); }
 Vec3 grid_direction(const Grid& g) { return *direction(g.s, g.exact ? 4 : 8); }
 // A length in [0, 8] s; the exact lattice has no fractions.
@@ -91,14 +83,6 @@ Vec3 rectangle_point(const Grid& g, const Rectangle& r, bool inside) {
     return g.exact ? std::round(k / 8.0) * half : k / 8.0 * half;
   };
   return r.center + coordinate(r.half_u) * r.u + coordinate(r.half_v) * r.v;
-}
-
-template <class T> rc::Gen<T> far_away(rc::Gen<T> base, void (*move)(T&, const Vec3&), double (*size)(const T&)) {
-  return rc::gen::exec([base, move, size] {
-    T x = *base;
-    move(x, *lattice_point(std::max(1.0, size(x)) * 1024.0, 64));
-    return x;
-  });
 }
 
 // ---- Points and segments --------------------------------------------------------------
@@ -751,7 +735,9 @@ template <class T>
 rc::Gen<T> with_far(rc::Gen<T> families, bool exact, void (*move)(T&, const Vec3&), double (*size)(const T&)) {
   if (exact) return families;
   return rc::gen::weightedOneOf<T>(
-      {{14, families}, {2, far_away(families, move, size)}, {1, at_extreme_scale(families)}});
+      {{14, families},
+       {2, far_away(families, move, [size](const T& x) { return std::max(1.0, size(x)); })},
+       {1, at_extreme_scale(families)}});
 }
 
 }  // namespace

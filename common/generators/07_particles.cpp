@@ -1,5 +1,6 @@
 #include "common/generators/07_particles.h"
 #include "common/generators/generators.h"
+#include "common/generators/grid.h"
 
 #include <algorithm>
 #include <array>
@@ -9,15 +10,8 @@ namespace labkit::gen {
 
 namespace {
 
-// The fine dyadic lattice, or (exact) integers that are multiples of 8, times a scale.
-struct Grid {
-  double s = 1.0;
-  bool exact = false;
-};
-
-rc::Gen<Grid> grid(bool exact) {
-  return rc::gen::map(exact ? scale() : particle_scale(), [exact](double s) { return Grid{s, exact}; });
-}
+// Where a family draws from (its Grid): the fine dyadic lattice at the particles'
+// scales, or (exact) integers that are multiples of 8 at the common scales.
 rc::Gen<Vec3> grid_point(const Grid& g) { return g.exact ? lattice_point(8 * g.s, 16) : point(g.s); }
 rc::Gen<Vec3> grid_direction(const Grid& g) { return direction(g.exact ? 8 * g.s : g.s, 8); }
 double unit_of(const Grid& g) { return g.exact ? 8 * g.s : g.s; }
@@ -163,7 +157,7 @@ Segment through_point(const Grid& g, const Vec3& x, const Vec3& normal) {
 }
 
 StepSurfaces surfaces(bool exact) {
-  const Grid g = *grid(exact);
+  const Grid g = *grid(exact, exact ? scale() : particle_scale());
   const Vec3 anchor = *grid_point(g);
   StepSurfaces c;
   c.planes = plane_set(g, anchor);

@@ -1,6 +1,9 @@
 #include "common/generators/generators.h"
+#include "common/generators/grid.h"
+#include "common/generators/meshes.h"
 
 #include <cmath>
+#include <utility>
 
 namespace labkit::gen {
 
@@ -12,11 +15,6 @@ constexpr double kFraction = 1.0 / (1 << 20);
 // are multiples of 8 with |x| <= 1024, times a power of two. Multiples of 8 keep every
 // p/8 combination below an integer, and on such input a careful double computation
 // decides every sign exactly.
-struct Grid {
-  double s = 1.0;
-  bool exact = false;
-};
-
 rc::Gen<Vec3> grid_point(Grid g) { return g.exact ? lattice_point(8 * g.s, 16) : point(g.s); }
 rc::Gen<Vec3> grid_direction(Grid g) { return direction(g.exact ? 8 * g.s : g.s, 8); }
 rc::Gen<Triangle> grid_triangle(Grid g) {
@@ -24,9 +22,6 @@ rc::Gen<Triangle> grid_triangle(Grid g) {
                              return Triangle{*grid_point(g), *grid_point(g), *grid_point(g)};
                            }),
                            [](const Triangle& t) { return t.normal() != Vec3::Zero(); });
-}
-rc::Gen<Grid> grid(bool exact) {
-  return rc::gen::map(scale(), [exact](double s) { return Grid{s, exact}; });
 }
 
 // p/8: every constructed point stays on a dyadic grid, so it is exact in doubles.
@@ -166,17 +161,9 @@ rc::Gen<SegmentTrianglePair> zero_area(bool exact) {
   });
 }
 
-// Any case moved far from the origin: large coordinates, small features.
-rc::Gen<SegmentTrianglePair> far_away(rc::Gen<SegmentTrianglePair> base) {
-  return rc::gen::exec([base] {
-    SegmentTrianglePair c = *base;
-    const double size = std::max(1.0, scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2}));
-    const Vec3 offset = *lattice_point(size * 1024.0, 64);
-    c.segment.a += offset;
-    c.segment.b += offset;
-    for (int i = 0; i < 3; ++i) c.triangle[i] += offset;
-    return c;
-  });
+// The size far_away() moves a case by multiples of: the triangle's, at least 1.
+double triangle_size(const SegmentTrianglePair& c) {
+  return std::max(1.0, scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2}));
 }
 
 // A lattice terrain of n x n cells: heights on the lattice, so segments through grid
@@ -187,12 +174,7 @@ rc::Gen<Mesh> terrain(double s) {
     Mesh m;
     for (int i = 0; i <= n; ++i)
       for (int j = 0; j <= n; ++j) m.vertices.push_back(s * Vec3(i, j, *integer(3)));
-    const auto at = [n](int i, int j) { return i * (n + 1) + j; };
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < n; ++j) {
-        m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-        m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
-      }
+    m.triangles = grid_triangles(n);
     return m;
   });
 }
@@ -229,6 +211,17 @@ rc::Gen<int> integer(int magnitude) {
   // Zig-zag order 0, 1, -1, 2, -2, ...: shrinking the index shrinks toward zero.
   return rc::gen::map(rc::gen::resize(rc::kNominalSize, rc::gen::inRange(0, 2 * magnitude + 1)),
                       [](int k) { return k % 2 == 1 ? (k + 1) / 2 : -(k / 2); });
+}
+
+rc::Gen<Grid> grid(bool exact) { return grid(exact, scale()); }
+rc::Gen<Grid> grid(bool exact, rc::Gen<double> scales) {
+  return rc::gen::map(std::move(scales), [exact](double s) { return Grid{s, exact}; });
+}
+
+void translate(SegmentTrianglePair& c, const Vec3& offset) {
+  c.segment.a += offset;
+  c.segment.b += offset;
+  for (int i = 0; i < 3; ++i) c.triangle[i] += offset;
 }
 
 rc::Gen<double> scale() {
@@ -300,7 +293,8 @@ rc::Gen<SegmentTrianglePair> segment_triangle() {
       {1, zero_length(false)},
       {1, zero_area(false)},
   });
-  return rc::gen::weightedOneOf<SegmentTrianglePair>({{7, families}, {1, far_away(families)}});
+  return rc::gen::weightedOneOf<SegmentTrianglePair>(
+      {{7, families}, {1, far_away(families, translate, triangle_size)}});
 }
 
 rc::Gen<SegmentTrianglePair> typical_segment_triangle() {

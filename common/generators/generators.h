@@ -58,4 +58,18 @@ rc::Gen<SegmentMeshPair> exact_segment_mesh();
 // A rigid motion with a rotation from a small integer quaternion.
 rc::Gen<RigidTransform> rigid_transform(double scale);
 
+// Moves the case by `offset`: both ends of the segment and every vertex of the triangle.
+void translate(SegmentTrianglePair& c, const Vec3& offset);
+
+// Any case moved far from the origin (large coordinates, small features): move(case,
+// offset) by a lattice offset of up to 64 times 1024 size(case) in each coordinate,
+// drawn after the case.
+template <class T, class Move, class Size> rc::Gen<T> far_away(rc::Gen<T> base, Move move, Size size) {
+  return rc::gen::exec([base, move, size] {
+    T x = *base;
+    move(x, *lattice_point(size(x) * 1024.0, 64));
+    return x;
+  });
+}
+
 }  // namespace labkit::gen

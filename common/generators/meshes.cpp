@@ -129,13 +129,19 @@ Mesh height_field(int n, double x0, double x1, double y0, double y1,
       const double x = x0 + (x1 - x0) * i / n, y = y0 + (y1 - y0) * j / n;
       m.vertices.push_back({x, y, height(x, y)});
     }
+  m.triangles = grid_triangles(n);
+  return m;
+}
+
+std::vector<std::array<int, 3>> grid_triangles(int n) {
+  std::vector<std::array<int, 3>> triangles;
   const auto at = [n](int i, int j) { return i * (n + 1) + j; };
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < n; ++j) {
-      m.triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
-      m.triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
+      triangles.push_back({at(i, j), at(i + 1, j), at(i + 1, j + 1)});
+      triangles.push_back({at(i, j), at(i + 1, j + 1), at(i, j + 1)});
     }
-  return m;
+  return triangles;
 }
 
 void add_square(Mesh& mesh, double side, double z) {

@@ -38,6 +38,9 @@ Mesh terrain_mesh(int triangles, std::uint64_t seed);
 // x = x0 + (x1 - x0) i / n, y = y0 + (y1 - y0) j / n. Every terrain here is one.
 Mesh height_field(int n, double x0, double x1, double y0, double y1,
                   const std::function<double(double, double)>& height);
+// The 2 n^2 triangles of that grid, for (n + 1)^2 vertices numbered i (n + 1) + j: square
+// (i, j) split along its diagonal from vertex (i, j) to (i + 1, j + 1).
+std::vector<std::array<int, 3>> grid_triangles(int n);
 // Adds the square [0, side]^2 at height z, as two triangles with normals up (+z).
 void add_square(Mesh& mesh, double side, double z);
 // `triangles` small triangles at random places in [0, 1]^3, edges about 2 / triangles^(1/3).

@@ -107,17 +107,9 @@ rc::Gen<SegmentTrianglePair> family(int which) {
   });
 }
 
-// Any case moved far from the origin: large coordinates, small features.
-rc::Gen<SegmentTrianglePair> far_away(rc::Gen<SegmentTrianglePair> base) {
-  return rc::gen::exec([base] {
-    SegmentTrianglePair c = *base;
-    const double size = scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2, c.segment.a, c.segment.b});
-    const Vec3 offset = *lattice_point(size * 1024.0, 64);
-    c.segment.a += offset;
-    c.segment.b += offset;
-    for (int i = 0; i < 3; ++i) c.triangle[i] += offset;
-    return c;
-  });
+// The size far_away() moves a case by multiples of: the whole case's.
+double case_size(const SegmentTrianglePair& c) {
+  return scale_of({c.triangle.v0, c.triangle.v1, c.triangle.v2, c.segment.a, c.segment.b});
 }
 
 // A small mesh, some of whose faces are double-sided: the same vertices wound both ways.
@@ -194,7 +186,7 @@ rc::Gen<SegmentTrianglePair> decisive_segment_triangle() {
       {1, family(6)},
       {1, family(7)},
   });
-  return rc::gen::weightedOneOf<SegmentTrianglePair>({{7, families}, {1, far_away(families)}});
+  return rc::gen::weightedOneOf<SegmentTrianglePair>({{7, families}, {1, far_away(families, translate, case_size)}});
 }
 
 rc::Gen<SegmentMeshPair> decisive_segment_mesh() {
