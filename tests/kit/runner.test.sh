@@ -8,6 +8,15 @@ cases=200
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
+# Bad input (PROGRAM ARGS, ARGS split on spaces): one clear line, exit 2, never a crash.
+rejects() {
+  local program="$1" args="$2" out code
+  out=$("$program" $args 2>&1); code=$?
+  echo "\$ labkit $args -> exit $code: $out"
+  [ $code -eq 2 ] || fail "'$args' exits $code, not 2"
+  [ "$(wc -l <<<"$out")" -le 2 ] || fail "'$args' says more than one line"
+}
+
 # "N of M steps pass": M counts every step of every lab the kit has.
 total_steps() { sed -n 's/^.*[0-9]* of \([0-9]*\) steps pass.*$/\1/p' <<<"$1" | tail -n 1; }
 
@@ -49,10 +58,7 @@ fi
 
 echo "--- 4. bad input: one clear line, exit 2, never a crash"
 for args in "check 99" "check 02 --case nonsense" "check 02 --case no_such_query:1,2,3" "check 02 --case segment_plane:1,2,3" "check 02 --step 42"; do
-  out=$("$runner" $args 2>&1); code=$?
-  echo "\$ labkit $args -> exit $code: $out"
-  [ $code -eq 2 ] || fail "'$args' exits $code, not 2"
-  [ "$(wc -l <<<"$out")" -le 2 ] || fail "'$args' says more than one line"
+  rejects "$runner" "$args"
 done
 
 echo "--- 5. hints: every 'Stuck? ./labkit hint NN K' of a handout opens that step's hints"
@@ -63,10 +69,7 @@ while read -r _ _ lab step; do
   [ $code -eq 0 ] && grep -q "^## Step $step" <<<"$out" || fail "'./labkit hint $lab $step' (a handout's pointer) exits $code: $out"
 done <<<"$pointers"
 for args in "hint" "hint 99" "hint 02 99" "hint x" "hint 02 1 2"; do
-  out=$("$root/labkit" $args 2>&1); code=$?
-  echo "\$ labkit $args -> exit $code: $out"
-  [ $code -eq 2 ] || fail "'$args' exits $code, not 2"
-  [ "$(wc -l <<<"$out")" -le 2 ] || fail "'$args' says more than one line"
+  rejects "$root/labkit" "$args"
 done
 
 echo "--- 6. handouts: one session each, every step where the runner points, every link resolves"
