@@ -57,16 +57,9 @@ EOF
 chmod 755 "$build/test_02_segment_triangle"
 # Compiling copies the file; linking makes the answerer: the hostile program beside it,
 # and a script that runs it with the student's words.
-compile='cp $0 $2'
-link='dir=$(dirname $3); cp $1 $dir/hostile && { echo "#!/bin/sh"; printf "exec $dir/hostile "; cat $4; } >$3 && chmod 755 $3 $dir/hostile'
-entries=""
-for file in $(grep -o '"labs/[0-9][0-9]_[a-z_]*/[a-z_]*\.cpp"' "$kit/grading/manifest.json" | tr -d '"'); do
-  stem=$(basename "$(dirname "$file")")
-  printf '%s\0' "$build" sh -c "$link" sh "$build/hostile" -o placeholder "$build/libstub.a" >"$build/grading/$stem.link"
-  printf '{"student_library": "%s", "link_record": "%s"}\n' "$build/libstub.a" "$build/grading/$stem.link" >"$build/grading/$stem.json"
-  entries+="${entries:+,}{\"directory\": \"$build\", \"file\": \"$kit/$file\", \"arguments\": [\"sh\", \"-c\", \"$compile\", \"$kit/$file\", \"-o\", \"placeholder.o\"]}"
-done
-echo "[$entries]" >"$build/compile_commands.json"
+source "$(dirname "$0")/stand_in_kit.sh"
+stand_in_build "$kit" "$build" "$build/hostile" 'cp $0 $2' \
+  'dir=$(dirname $3); cp $1 $dir/hostile && { echo "#!/bin/sh"; printf "exec $dir/hostile "; cat $4; } >$3 && chmod 755 $3 $dir/hostile'
 
 # ---- the submissions: lab 02's file holds the attack ---------------------------------
 subs="$work/submissions"

@@ -19,6 +19,7 @@ trap '[ -n "${KEEP:-}" ] || rm -rf "$work"' EXIT
 chmod 755 "$work"  # the sandbox's runs read the stand-in build as other users
 failures=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
+source "$(dirname "$0")/stand_in_kit.sh"
 secret="grader input secret $$"
 owned="$work/owned"  # what a crafted replay command would create if it were ever run
 
@@ -32,18 +33,12 @@ owned="$work/owned"  # what a crafted replay command would create if it were eve
 # "#error ..." fails, with the file as the errors) and links it into an answerer (the
 # answerer's head with the file appended, at the path the runner asks with -o).
 stand_in_kit() {
-  local build="$1" compile link entries="" file stem
-  mkdir -p "$build/grading"
+  local build="$1"
+  mkdir -p "$build"
   echo '#!/bin/sh' >"$build/answerer.sh"
-  compile='if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; cp $0 $2'
-  link='cat $1 $4 >$3 && chmod 755 $3'
-  for file in $(grep -o '"labs/[0-9][0-9]_[a-z_]*/[a-z_]*\.cpp"' "$kit/grading/manifest.json" | tr -d '"'); do
-    stem=$(basename "$(dirname "$file")")
-    printf '%s\0' "$build" sh -c "$link" sh "$build/answerer.sh" -o placeholder "$build/libstub.a" >"$build/grading/$stem.link"
-    printf '{"student_library": "%s", "link_record": "%s"}\n' "$build/libstub.a" "$build/grading/$stem.link" >"$build/grading/$stem.json"
-    entries+="${entries:+,}{\"directory\": \"$build\", \"file\": \"$kit/$file\", \"arguments\": [\"sh\", \"-c\", \"$compile\", \"$kit/$file\", \"-o\", \"placeholder.o\"]}"
-  done
-  echo "[$entries]" >"$build/compile_commands.json"
+  stand_in_build "$kit" "$build" "$build/answerer.sh" \
+    'if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; cp $0 $2' \
+    'cat $1 $4 >$3 && chmod 755 $3'
 }
 build="$work/build"
 stand_in_kit "$build"
