@@ -1,7 +1,9 @@
 #include "viewer/app.h"
 
-#include <GLFW/glfw3.h>
+// libepoxy's gl.h first: GLFW's would otherwise bring in the system's.
 #include <epoxy/gl.h>
+
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
