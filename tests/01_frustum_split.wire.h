@@ -5,29 +5,16 @@
 
 #include "frustum_split.h"
 
+#include "common/fields.h"
+
 #include <array>
 #include <vector>
 
 namespace labkit::lab01 {
 
-template <class V> void fields(Camera& c, V&& v) {
-  v("eye", c.eye);
-  v("forward", c.forward);
-  v("up", c.up);
-  v("fov_y", c.fov_y);
-  v("aspect", c.aspect);
-  v("near", c.near);
-  v("far", c.far);
-}
-template <class V> void fields(ColoredMesh& m, V&& v) {
-  v("mesh", m.mesh);
-  v("colors", m.colors);
-}
-template <class V> void fields(ClippedMesh& m, V&& v) {
-  v("mesh", m.mesh);
-  v("colors", m.colors);
-  v("source", m.source);
-}
+LABKIT_FIELDS(Camera, eye, forward, up, fov_y, aspect, near, far)
+LABKIT_FIELDS(ColoredMesh, mesh, colors)
+LABKIT_FIELDS(ClippedMesh, mesh, colors, source)
 
 using Sides = std::array<Side, 3>;
 using Triangles = std::vector<Triangle>;

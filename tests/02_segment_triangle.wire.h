@@ -5,41 +5,16 @@
 
 #include "segment_triangle.h"
 
+#include "common/fields.h"
+
 namespace labkit::lab02 {
 
-template <class V> void fields(PlaneCrossing& c, V&& v) {
-  v("d_a", c.d_a);
-  v("d_b", c.d_b);
-  v("crosses", c.crosses);
-  v("t", c.t);
-  v("point", c.point);
-}
-template <class V> void fields(Barycentric& b, V&& v) {
-  v("dropped_axis", b.dropped_axis);
-  v("alpha", b.alpha);
-  v("beta", b.beta);
-}
-template <class V> void fields(SegmentTriangleHit& h, V&& v) {
-  v("hit", h.hit);
-  v("t", h.t);
-  v("point", h.point);
-  v("barycentric", h.barycentric);
-  v("normal", h.normal);
-}
-template <class V> void fields(MeshHit& h, V&& v) {
-  v("hit", h.hit);
-  v("triangle", h.triangle);
-  v("t", h.t);
-  v("point", h.point);
-  v("barycentric", h.barycentric);
-  v("normal", h.normal);
-}
+LABKIT_FIELDS(PlaneCrossing, d_a, d_b, crosses, t, point)
+LABKIT_FIELDS(Barycentric, dropped_axis, alpha, beta)
+LABKIT_FIELDS(SegmentTriangleHit, hit, t, point, barycentric, normal)
+LABKIT_FIELDS(MeshHit, hit, triangle, t, point, barycentric, normal)
 
-template <class V> void fields(MeshContact& c, V&& v) {
-  v("hit", c.hit);
-  v("t", c.t);
-  v("point", c.point);
-}
+LABKIT_FIELDS(MeshContact, hit, t, point)
 
 using MeshHits = std::vector<MeshHit>;
 

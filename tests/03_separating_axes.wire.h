@@ -5,32 +5,14 @@
 
 #include "separating_axes.h"
 
+#include "common/fields.h"
+
 namespace labkit::lab03 {
 
-template <class V> void fields(Projection& p, V&& v) {
-  v("center", p.center);
-  v("radius", p.radius);
-}
-template <class V> void fields(BoxContact& c, V&& v) {
-  v("intersecting", c.intersecting);
-  v("axis_index", c.axis_index);
-  v("axis", c.axis);
-  v("depth", c.depth);
-}
-template <class V> void fields(LineIntervals& i, V&& v) {
-  v("crossing", i.crossing);
-  v("axis", i.axis);
-  v("low0", i.low0);
-  v("high0", i.high0);
-  v("low1", i.low1);
-  v("high1", i.high1);
-  v("overlap", i.overlap);
-}
-template <class V> void fields(ContactInterval& c, V&& v) {
-  v("contact", c.contact);
-  v("first", c.first);
-  v("last", c.last);
-}
+LABKIT_FIELDS(Projection, center, radius)
+LABKIT_FIELDS(BoxContact, intersecting, axis_index, axis, depth)
+LABKIT_FIELDS(LineIntervals, crossing, axis, low0, high0, low1, high1, overlap)
+LABKIT_FIELDS(ContactInterval, contact, first, last)
 
 }  // namespace labkit::lab03
 

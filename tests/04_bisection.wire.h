@@ -6,6 +6,7 @@
 
 #include "bisection.h"
 
+#include "common/fields.h"
 #include "common/protocol/calls.h"
 
 #include <memory>
@@ -13,32 +14,10 @@
 
 namespace labkit::lab04 {
 
-template <class V> void fields(TimeOfImpact& r, V&& v) {
-  v("hit", r.hit);
-  v("overlapping_at_start", r.overlapping_at_start);
-  v("t", r.t);
-  v("t_contact", r.t_contact);
-  v("steps", r.steps);
-  v("iterations", r.iterations);
-}
-template <class V> void fields(StandardMotion& m, V&& v) {
-  v("start", m.start);
-  v("velocity", m.velocity);
-  v("acceleration", m.acceleration);
-  v("axis", m.axis);
-  v("spin", m.spin);
-}
-template <class V> void fields(Shape& s, V&& v) {
-  v("kind", s.kind);
-  v("sphere", s.sphere);
-  v("box", s.box);
-}
-template <class V> void fields(MovingPair& p, V&& v) {
-  v("a", p.a);
-  v("motion_a", p.motion_a);
-  v("b", p.b);
-  v("motion_b", p.motion_b);
-}
+LABKIT_FIELDS(TimeOfImpact, hit, overlapping_at_start, t, t_contact, steps, iterations)
+LABKIT_FIELDS(StandardMotion, start, velocity, acceleration, axis, spin)
+LABKIT_FIELDS(Shape, kind, sphere, box)
+LABKIT_FIELDS(MovingPair, a, motion_a, b, motion_b)
 
 // A motion that writes down every time it is asked for a pose (step 2's example shows
 // the lecture's midpoints with it). In the answerer, the times are recorded there and

@@ -5,44 +5,16 @@
 
 #include "sphere_sweeps.h"
 
+#include "common/fields.h"
+
 namespace labkit::lab05 {
 
-template <class V> void fields(PointSegmentDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance);
-  v("t", x.t);
-  v("closest", x.closest);
-}
-template <class V> void fields(SegmentSegmentDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance);
-  v("s", x.s);
-  v("t", x.t);
-  v("closest0", x.closest0);
-  v("closest1", x.closest1);
-}
-template <class V> void fields(PointRectangleDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance);
-  v("s", x.s);
-  v("t", x.t);
-  v("closest", x.closest);
-}
-template <class V> void fields(SegmentRectangleDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance);
-  v("r", x.r);
-  v("s", x.s);
-  v("t", x.t);
-  v("closest0", x.closest0);
-  v("closest1", x.closest1);
-}
-template <class V> void fields(RectangleRectangleDistance& x, V&& v) {
-  v("squared_distance", x.squared_distance);
-  v("closest0", x.closest0);
-  v("closest1", x.closest1);
-}
-template <class V> void fields(Sweep& s, V&& v) {
-  v("status", s.status);
-  v("time", s.time);
-  v("point", s.point);
-}
+LABKIT_FIELDS(PointSegmentDistance, squared_distance, t, closest)
+LABKIT_FIELDS(SegmentSegmentDistance, squared_distance, s, t, closest0, closest1)
+LABKIT_FIELDS(PointRectangleDistance, squared_distance, s, t, closest)
+LABKIT_FIELDS(SegmentRectangleDistance, squared_distance, r, s, t, closest0, closest1)
+LABKIT_FIELDS(RectangleRectangleDistance, squared_distance, closest0, closest1)
+LABKIT_FIELDS(Sweep, status, time, point)
 
 }  // namespace labkit::lab05
 

@@ -6,77 +6,25 @@
 
 #include "spatial_trees.h"
 
+#include "common/fields.h"
 #include "common/given/segment_triangle.h"
 
 #include <vector>
 
 namespace labkit::lab06 {
 
-template <class V> void fields(KdNode& n, V&& v) {
-  v("split", n.split);
-  v("axis", n.axis);
-  v("index", n.index);
-}
-template <class V> void fields(KdTree& t, V&& v) {
-  v("bounds", t.bounds);
-  v("nodes", t.nodes);
-  v("items", t.items);
-  v("triangles", t.triangles);
-}
-template <class V> void fields(KdHit& h, V&& v) {
-  v("hit", h.hit);
-  v("triangle", h.triangle);
-  v("t", h.t);
-  v("point", h.point);
-  v("barycentric", h.barycentric);
-  v("tests", h.tests);
-}
-template <class V> void fields(KdHits& h, V&& v) {
-  v("hits", h.hits);
-  v("tests", h.tests);
-}
-template <class V> void fields(BspPiece& p, V&& v) {
-  v("triangle", p.triangle);
-  v("source", p.source);
-}
-template <class V> void fields(BspNode& n, V&& v) {
-  v("plane", n.plane);
-  v("front", n.front);
-  v("back", n.back);
-  v("first", n.first);
-  v("count", n.count);
-}
-template <class V> void fields(BspTree& t, V&& v) {
-  v("nodes", t.nodes);
-  v("pieces", t.pieces);
-  v("triangles", t.triangles);
-}
-template <class V> void fields(SpherePairs& p, V&& v) {
-  v("pairs", p.pairs);
-  v("tests", p.tests);
-}
-template <class V> void fields(ObbNode& n, V&& v) {
-  v("box", n.box);
-  v("left", n.left);
-  v("right", n.right);
-  v("first", n.first);
-  v("count", n.count);
-}
-template <class V> void fields(ObbTree& t, V&& v) {
-  v("nodes", t.nodes);
-  v("items", t.items);
-  v("triangles", t.triangles);
-}
-template <class V> void fields(TrianglePairs& p, V&& v) {
-  v("pairs", p.pairs);
-  v("box_tests", p.box_tests);
-  v("triangle_tests", p.triangle_tests);
-}
-template <class V> void fields(SweepFrame& f, V&& v) {
-  v("pairs", f.pairs);
-  v("tests", f.tests);
-  v("swaps", f.swaps);
-}
+LABKIT_FIELDS(KdNode, split, axis, index)
+LABKIT_FIELDS(KdTree, bounds, nodes, items, triangles)
+LABKIT_FIELDS(KdHit, hit, triangle, t, point, barycentric, tests)
+LABKIT_FIELDS(KdHits, hits, tests)
+LABKIT_FIELDS(BspPiece, triangle, source)
+LABKIT_FIELDS(BspNode, plane, front, back, first, count)
+LABKIT_FIELDS(BspTree, nodes, pieces, triangles)
+LABKIT_FIELDS(SpherePairs, pairs, tests)
+LABKIT_FIELDS(ObbNode, box, left, right, first, count)
+LABKIT_FIELDS(ObbTree, nodes, items, triangles)
+LABKIT_FIELDS(TrianglePairs, pairs, box_tests, triangle_tests)
+LABKIT_FIELDS(SweepFrame, pairs, tests, swaps)
 
 using Indices = std::vector<int>;
 using Spheres = std::vector<Sphere>;
@@ -91,13 +39,7 @@ struct SegmentRun {
   int any_calls = 0;
   int all_tests = -1;  // all_hits(tree, s).tests, when asked for
 };
-template <class V> void fields(SegmentRun& r, V&& v) {
-  v("first", r.first);
-  v("first_calls", r.first_calls);
-  v("any", r.any);
-  v("any_calls", r.any_calls);
-  v("all_tests", r.all_tests);
-}
+LABKIT_FIELDS(SegmentRun, first, first_calls, any, any_calls, all_tests)
 using SegmentRuns = std::vector<SegmentRun>;
 using Segments = std::vector<Segment>;
 
@@ -109,10 +51,7 @@ struct SweepRun {
   SweepFrame frame;
   long long comparisons = 0;
 };
-template <class V> void fields(SweepRun& r, V&& v) {
-  v("frame", r.frame);
-  v("comparisons", r.comparisons);
-}
+LABKIT_FIELDS(SweepRun, frame, comparisons)
 using SweepRuns = std::vector<SweepRun>;
 using Frames = std::vector<std::vector<Sphere>>;
 
@@ -124,11 +63,7 @@ struct BvhRun {
   long long box_calls = 0;
   long long triangle_calls = 0;
 };
-template <class V> void fields(BvhRun& r, V&& v) {
-  v("answer", r.answer);
-  v("box_calls", r.box_calls);
-  v("triangle_calls", r.triangle_calls);
-}
+LABKIT_FIELDS(BvhRun, answer, box_calls, triangle_calls)
 
 BvhRun run_bvh(const ObbTree& a, const ObbTree& b, bool every);
 

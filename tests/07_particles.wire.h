@@ -6,106 +6,30 @@
 
 #include "particles.h"
 
+#include "common/fields.h"
 #include "common/protocol/wire.h"
 
 #include <vector>
 
 namespace labkit::lab07 {
 
-template <class V> void fields(Particle& p, V&& v) {
-  v("position", p.position);
-  v("velocity", p.velocity);
-  v("previous", p.previous);
-  v("mass", p.mass);
-  v("age", p.age);
-  v("lifetime", p.lifetime);
-  v("alive", p.alive);
-  v("bounces", p.bounces);
-}
-template <class V> void fields(Emitter& e, V&& v) {
-  v("position", e.position);
-  v("half_extents", e.half_extents);
-  v("direction", e.direction);
-  v("cone", e.cone);
-  v("speed", e.speed);
-  v("speed_spread", e.speed_spread);
-  v("lifetime", e.lifetime);
-  v("lifetime_spread", e.lifetime_spread);
-  v("mass", e.mass);
-  v("rate", e.rate);
-  v("owed", e.owed);
-}
-template <class V> void fields(Births& b, V&& v) {
-  v("count", b.count);
-  v("owed", b.owed);
-}
-template <class V> void fields(Shot& s, V&& v) {
-  v("angle", s.angle);
-  v("velocity", s.velocity);
-  v("time", s.time);
-}
-template <class V> void fields(Aim& a, V&& v) {
-  v("count", a.count);
-  v("radicand", a.radicand);
-  v("low", a.low);
-  v("high", a.high);
-}
-template <class V> void fields(SurfaceHit& h, V&& v) {
-  v("hit", h.hit);
-  v("plane", h.plane);
-  v("triangle", h.triangle);
-  v("t", h.t);
-  v("point", h.point);
-  v("normal", h.normal);
-}
-template <class V> void fields(Impulse& i, V&& v) {
-  v("closing", i.closing);
-  v("v_close", i.v_close);
-  v("normal_impulse", i.normal_impulse);
-  v("friction", i.friction);
-  v("velocity", i.velocity);
-}
-template <class V> void fields(Bounce& b, V&& v) {
-  v("hit", b.hit);
-  v("velocity", b.velocity);
-  v("from", b.from);
-}
+LABKIT_FIELDS(Particle, position, velocity, previous, mass, age, lifetime, alive, bounces)
+LABKIT_FIELDS(Emitter, position, half_extents, direction, cone, speed, speed_spread, lifetime, lifetime_spread, mass,
+              rate, owed)
+LABKIT_FIELDS(Births, count, owed)
+LABKIT_FIELDS(Shot, angle, velocity, time)
+LABKIT_FIELDS(Aim, count, radicand, low, high)
+LABKIT_FIELDS(SurfaceHit, hit, plane, triangle, t, point, normal)
+LABKIT_FIELDS(Impulse, closing, v_close, normal_impulse, friction, velocity)
+LABKIT_FIELDS(Bounce, hit, velocity, from)
 
 // Coefficients (drag, restitution, friction) and plane normals are unit-free numbers:
 // the ambiguity check moves them by 1e-9, not by 1e-9 S.
-template <class V> void fields(Forces& f, V&& v) {
-  v("gravity", f.gravity);
-  v("drag", f.drag);
-  v("air_drag", f.air_drag);
-}
-template <class V> void fields(Material& m, V&& v) {
-  v("restitution", m.restitution);
-  v("friction", m.friction);
-}
-template <class V> void fields(Scene& s, V&& v) {
-  v("planes", s.planes);
-  v("mesh", s.mesh);
-  v("material", s.material);
-  v("bounce_cap", s.bounce_cap);
-  v("velocity", s.velocity);
-  v("mesh_query", s.mesh_query);
-}
-template <class V> void fields(Collision& c, V&& v) {
-  v("position", c.position);
-  v("velocity", c.velocity);
-  v("bounces", c.bounces);
-  v("stopped", c.stopped);
-  v("trace", c.trace);
-}
-template <class V> void fields(System& s, V&& v) {
-  v("emitter", s.emitter);
-  v("scene", s.scene);
-  v("forces", s.forces);
-  v("integrator", s.integrator);
-  v("random", s.random);
-  v("particles", s.particles);
-  v("time", s.time);
-}
+LABKIT_FIELDS(Forces, gravity, drag, air_drag)
+LABKIT_FIELDS(Material, restitution, friction)
+LABKIT_FIELDS(Scene, planes, mesh, material, bounce_cap, velocity, mesh_query)
+LABKIT_FIELDS(Collision, position, velocity, bounces, stopped, trace)
+LABKIT_FIELDS(System, emitter, scene, forces, integrator, random, particles, time)
 
 using Particles = std::vector<Particle>;
 using MeshQuery = std::function<SurfaceHit(const Segment&, const Mesh&)>;

@@ -2,13 +2,10 @@
 //  - describe(x): what a person reads in a failure report ("a=(0, 0, -1) b=(0, 0, 1)").
 //  - a replay token "query:v1,v2,...": every double of the input in its shortest exact
 //    text, so `./labkit check --case TOKEN` and the viewer rebuild the input bit for bit.
-// A lab's input struct joins in by listing its fields once:
+// A lab's input struct joins in by listing its fields once (common/fields.h):
 //
 //   struct SegmentTriangleInput { Segment segment; Triangle triangle; };
-//   template <class Visit> void fields(SegmentTriangleInput& in, Visit&& visit) {
-//     visit("segment", in.segment);
-//     visit("triangle", in.triangle);
-//   }
+//   LABKIT_FIELDS(SegmentTriangleInput, segment, triangle)
 #pragma once
 
 #include "common/geometry.h"

@@ -3,10 +3,11 @@
 // end of common/inputs/NN_name.h, as a table the tests, the viewer's scene and its
 // presets read:
 //
-//   #define LABKIT_LAB06_QUERIES(X) X(first_hit, "first_hit", TreeQuery) ...
-//   namespace labkit::lab06::query { LABKIT_LAB06_QUERIES(LABKIT_QUERY) LABKIT_QUERY_TABLE(LABKIT_LAB06_QUERIES) }
+//   #define LABKIT_LAB06_QUERIES(X, X_IN) X(first_hit, TreeQuery) X_IN(robust, classify, PointQuery) ...
+//   namespace labkit::lab06::query { LABKIT_QUERIES(LABKIT_LAB06_QUERIES) }
 //
-// which declares query::first_hit (a Query<TreeQuery>) and query::table.
+// which declares query::first_hit (a Query<TreeQuery> named "first_hit"),
+// query::robust_classify (a Query<PointQuery> named "robust.classify") and query::table.
 #pragma once
 
 #include "common/harness/codec.h"
@@ -68,6 +69,11 @@ std::string replay_token(const check::Query<Input>& q, const typename check::Que
 }  // namespace labkit
 
 // The declarations a lab's table expands to (see the top of this file).
-#define LABKIT_QUERY(id, name, Input) inline constexpr ::labkit::check::Query<Input> id{name};
-#define LABKIT_QUERY_ENTRY(id, name, Input) id,
-#define LABKIT_QUERY_TABLE(TABLE) inline const ::labkit::check::QueryTable table{std::tuple{TABLE(LABKIT_QUERY_ENTRY)}};
+#define LABKIT_QUERY(name, Input) inline constexpr ::labkit::check::Query<Input> name{#name};
+#define LABKIT_QUERY_IN(group, name, Input) \
+  inline constexpr ::labkit::check::Query<Input> group##_##name{#group "." #name};
+#define LABKIT_QUERY_ENTRY(name, Input) name,
+#define LABKIT_QUERY_ENTRY_IN(group, name, Input) group##_##name,
+#define LABKIT_QUERIES(TABLE)          \
+  TABLE(LABKIT_QUERY, LABKIT_QUERY_IN) \
+  inline const ::labkit::check::QueryTable table{std::tuple{TABLE(LABKIT_QUERY_ENTRY, LABKIT_QUERY_ENTRY_IN)}};

@@ -5,6 +5,7 @@
 
 #include "separating_axes.h"
 
+#include "common/fields.h"
 #include "common/harness/query.h"
 
 namespace labkit {
@@ -13,39 +14,26 @@ struct BoxOnAxis {
   Box box;
   Vec3 axis = Vec3::UnitX();
 };
-template <class Visit> void fields(BoxOnAxis& p, Visit&& visit) {
-  visit("box", p.box);
-  visit("axis", p.axis);
-}
+LABKIT_FIELDS(BoxOnAxis, box, axis)
 
 struct BoxPair {
   Box a;
   Box b;
 };
-template <class Visit> void fields(BoxPair& p, Visit&& visit) {
-  visit("a", p.a);
-  visit("b", p.b);
-}
+LABKIT_FIELDS(BoxPair, a, b)
 
 struct BoxPairOnAxis {
   Box a;
   Box b;
   Vec3 axis = Vec3::UnitX();
 };
-template <class Visit> void fields(BoxPairOnAxis& p, Visit&& visit) {
-  visit("a", p.a);
-  visit("b", p.b);
-  visit("axis", p.axis);
-}
+LABKIT_FIELDS(BoxPairOnAxis, a, b, axis)
 
 struct TrianglePair {
   Triangle t0;
   Triangle t1;
 };
-template <class Visit> void fields(TrianglePair& p, Visit&& visit) {
-  visit("t0", p.t0);
-  visit("t1", p.t1);
-}
+LABKIT_FIELDS(TrianglePair, t0, t1)
 
 // Box a moves with velocity_a, box b with velocity_b, for t in [0, duration].
 struct MovingBoxes {
@@ -55,41 +43,26 @@ struct MovingBoxes {
   Vec3 velocity_b = Vec3::Zero();
   double duration = 1.0;
 };
-template <class Visit> void fields(MovingBoxes& p, Visit&& visit) {
-  visit("a", p.a);
-  visit("velocity_a", p.velocity_a);
-  visit("b", p.b);
-  visit("velocity_b", p.velocity_b);
-  visit("duration", p.duration);
-}
+LABKIT_FIELDS(MovingBoxes, a, velocity_a, b, velocity_b, duration)
 
 }  // namespace labkit
 
 // ---- The queries -------------------------------------------------------------------------
-// The name of each question the tests ask (a replay token's prefix) and the input it takes,
-// by the step that asks it first. The tests, the viewer's scene and its presets read this
-// table (common/harness/query.h): a query is added or renamed here and nowhere else.
-#define LABKIT_LAB03_QUERIES(X)                                     \
-  /* step 1 */                                                      \
-  X(project_box, "project_box", BoxOnAxis)                          \
-  X(separated_on_axis, "separated_on_axis", BoxPairOnAxis)          \
-  /* step 2 */                                                      \
-  X(box_axis, "box_axis", BoxPair)                                  \
-  X(test_boxes, "test_boxes", BoxPair)                              \
-  /* step 3 */                                                      \
-  X(find_boxes, "find_boxes", BoxPair)                              \
-  /* step 4 */                                                      \
-  X(triangles_by_intervals, "triangles_by_intervals", TrianglePair) \
-  X(test_triangles, "test_triangles", TrianglePair)                 \
-  /* step 5 */                                                      \
-  X(test_moving_boxes, "test_moving_boxes", MovingBoxes)            \
-  X(find_moving_boxes, "find_moving_boxes", MovingBoxes)            \
-  /* step 6 */                                                      \
-  X(robust_boxes, "robust.boxes", BoxPair)                          \
-  X(robust_triangles, "robust.triangles", TrianglePair)             \
-  X(robust_moving_boxes, "robust.moving_boxes", MovingBoxes)
+// Each question the tests ask and the input it takes, by the step that asks it first:
+// X(name, Input) is the query "name", X_IN(group, name, Input) the query "group.name"
+// (common/harness/query.h). The tests, the viewer's scene and its presets read this table:
+// a query is added or renamed here and nowhere else.
+// clang-format off
+#define LABKIT_LAB03_QUERIES(X, X_IN)                                                  \
+  /* step 1 */ X(project_box, BoxOnAxis) X(separated_on_axis, BoxPairOnAxis)           \
+  /* step 2 */ X(box_axis, BoxPair) X(test_boxes, BoxPair)                             \
+  /* step 3 */ X(find_boxes, BoxPair)                                                  \
+  /* step 4 */ X(triangles_by_intervals, TrianglePair) X(test_triangles, TrianglePair) \
+  /* step 5 */ X(test_moving_boxes, MovingBoxes) X(find_moving_boxes, MovingBoxes)     \
+  /* step 6 */ X_IN(robust, boxes, BoxPair) X_IN(robust, triangles, TrianglePair)      \
+               X_IN(robust, moving_boxes, MovingBoxes)
+// clang-format on
 
 namespace labkit::lab03::query {
-LABKIT_LAB03_QUERIES(LABKIT_QUERY)
-LABKIT_QUERY_TABLE(LABKIT_LAB03_QUERIES)
+LABKIT_QUERIES(LABKIT_LAB03_QUERIES)
 }  // namespace labkit::lab03::query

@@ -5,6 +5,7 @@
 
 #include "bisection.h"
 
+#include "common/fields.h"
 #include "common/harness/query.h"
 
 #include "common/harness/codec.h"
@@ -72,34 +73,12 @@ struct AdvancedPair {
   double speed_factor = 1.0;
 };
 
-template <class V> void fields(MovingBody& b, V&& v) {
-  v("is_box", b.is_box);
-  v("sphere", b.sphere);
-  v("box", b.box);
-  v("motion", b.motion);
-}
-template <class V> void fields(MovingPairCase& c, V&& v) {
-  v("a", c.a);
-  v("b", c.b);
-  v("times", c.times);
-}
-template <class V> void fields(PointBox& p, V&& v) {
-  v("point", p.point);
-  v("box", p.box);
-}
-template <class V> void fields(SubstepRule& r, V&& v) {
-  v("max_speed", r.max_speed);
-  v("step", r.step);
-  v("smallest_size", r.smallest_size);
-}
-template <class V> void fields(SampledPair& s, V&& v) {
-  v("pair", s.pair);
-  v("substeps", s.substeps);
-}
-template <class V> void fields(AdvancedPair& a, V&& v) {
-  v("pair", a.pair);
-  v("speed_factor", a.speed_factor);
-}
+LABKIT_FIELDS(MovingBody, is_box, sphere, box, motion)
+LABKIT_FIELDS(MovingPairCase, a, b, times)
+LABKIT_FIELDS(PointBox, point, box)
+LABKIT_FIELDS(SubstepRule, max_speed, step, smallest_size)
+LABKIT_FIELDS(SampledPair, pair, substeps)
+LABKIT_FIELDS(AdvancedPair, pair, speed_factor)
 
 // Times, spins and axes are unit-free for the ambiguity check: they move by 1e-9, not by
 // 1e-9 S, and they do not count toward the length scale S.
@@ -117,38 +96,24 @@ std::string describe(const MovingBody& b);  // the shape it is, and its motion
 }  // namespace labkit
 
 // ---- The queries -------------------------------------------------------------------------
-// The name of each question the tests ask (a replay token's prefix) and the input it takes,
-// by the step that asks it first. The tests, the viewer's scene and its presets read this
-// table (common/harness/query.h): a query is added or renamed here and nowhere else.
-#define LABKIT_LAB04_QUERIES(X)                                          \
-  /* step 1 */                                                           \
-  X(placed, "placed", Sphere)                                            \
-  X(overlap_spheres, "overlap.spheres", Sphere)                          \
-  X(overlap_sphere_box, "overlap.sphere_box", Sphere)                    \
-  X(closest_point, "closest_point", PointBox)                            \
-  X(overlap_at, "overlap_at", MovingPairCase)                            \
-  /* step 2 */                                                           \
-  X(bisect, "bisect", MovingPairCase)                                    \
-  /* step 3 */                                                           \
-  X(tunnelling, "tunnelling", MovingPairCase)                            \
-  X(smallest_size, "smallest_size", MovingPairCase)                      \
-  X(closing_speed, "closing_speed", MovingPairCase)                      \
-  X(substeps_for, "substeps_for", SubstepRule)                           \
-  X(sample_then_bisect, "sample_then_bisect", SampledPair)               \
-  /* step 4 */                                                           \
-  X(distance_spheres, "distance.spheres", Sphere)                        \
-  X(distance_sphere_box, "distance.sphere_box", Sphere)                  \
-  X(distance_at, "distance_at", MovingPairCase)                          \
-  X(advance, "advance", AdvancedPair)                                    \
-  /* step 5 */                                                           \
-  X(robust_closest_point, "robust.closest_point", PointBox)              \
-  X(robust_overlap_at, "robust.overlap_at", MovingPairCase)              \
-  X(robust_bisect, "robust.bisect", MovingPairCase)                      \
-  X(robust_substeps_for, "robust.substeps_for", SubstepRule)             \
-  X(robust_sample_then_bisect, "robust.sample_then_bisect", SampledPair) \
-  X(robust_advance, "robust.advance", AdvancedPair)
+// Each question the tests ask and the input it takes, by the step that asks it first:
+// X(name, Input) is the query "name", X_IN(group, name, Input) the query "group.name"
+// (common/harness/query.h). The tests, the viewer's scene and its presets read this table:
+// a query is added or renamed here and nowhere else.
+// clang-format off
+#define LABKIT_LAB04_QUERIES(X, X_IN)                                                                            \
+  /* step 1 */ X(placed, Sphere) X_IN(overlap, spheres, Sphere) X_IN(overlap, sphere_box, Sphere)                \
+               X(closest_point, PointBox) X(overlap_at, MovingPairCase)                                          \
+  /* step 2 */ X(bisect, MovingPairCase)                                                                         \
+  /* step 3 */ X(tunnelling, MovingPairCase) X(smallest_size, MovingPairCase) X(closing_speed, MovingPairCase)   \
+               X(substeps_for, SubstepRule) X(sample_then_bisect, SampledPair)                                   \
+  /* step 4 */ X_IN(distance, spheres, Sphere) X_IN(distance, sphere_box, Sphere) X(distance_at, MovingPairCase) \
+               X(advance, AdvancedPair)                                                                          \
+  /* step 5 */ X_IN(robust, closest_point, PointBox) X_IN(robust, overlap_at, MovingPairCase)                    \
+               X_IN(robust, bisect, MovingPairCase) X_IN(robust, substeps_for, SubstepRule)                      \
+               X_IN(robust, sample_then_bisect, SampledPair) X_IN(robust, advance, AdvancedPair)
+// clang-format on
 
 namespace labkit::lab04::query {
-LABKIT_LAB04_QUERIES(LABKIT_QUERY)
-LABKIT_QUERY_TABLE(LABKIT_LAB04_QUERIES)
+LABKIT_QUERIES(LABKIT_LAB04_QUERIES)
 }  // namespace labkit::lab04::query

@@ -5,6 +5,7 @@
 
 #include "sphere_sweeps.h"
 
+#include "common/fields.h"
 #include "common/harness/query.h"
 
 namespace labkit {
@@ -13,44 +14,29 @@ struct PointSegmentPair {
   Vec3 p = Vec3::Zero();
   Segment segment;
 };
-template <class V> void fields(PointSegmentPair& x, V&& v) {
-  v("p", x.p);
-  v("segment", x.segment);
-}
+LABKIT_FIELDS(PointSegmentPair, p, segment)
 
 struct SegmentPair {
   Segment first, second;
 };
-template <class V> void fields(SegmentPair& x, V&& v) {
-  v("first", x.first);
-  v("second", x.second);
-}
+LABKIT_FIELDS(SegmentPair, first, second)
 
 struct PointRectanglePair {
   Vec3 p = Vec3::Zero();
   Rectangle rectangle;
 };
-template <class V> void fields(PointRectanglePair& x, V&& v) {
-  v("p", x.p);
-  v("rectangle", x.rectangle);
-}
+LABKIT_FIELDS(PointRectanglePair, p, rectangle)
 
 struct SegmentRectanglePair {
   Segment segment;
   Rectangle rectangle;
 };
-template <class V> void fields(SegmentRectanglePair& x, V&& v) {
-  v("segment", x.segment);
-  v("rectangle", x.rectangle);
-}
+LABKIT_FIELDS(SegmentRectanglePair, segment, rectangle)
 
 struct RectanglePair {
   Rectangle first, second;
 };
-template <class V> void fields(RectanglePair& x, V&& v) {
-  v("first", x.first);
-  v("second", x.second);
-}
+LABKIT_FIELDS(RectanglePair, first, second)
 
 // Moving shapes: centre + t velocity for t in [0, duration].
 struct SpherePlaneMotion {
@@ -59,12 +45,7 @@ struct SpherePlaneMotion {
   Plane plane;
   double duration = 1.0;
 };
-template <class V> void fields(SpherePlaneMotion& x, V&& v) {
-  v("sphere", x.sphere);
-  v("velocity", x.velocity);
-  v("plane", x.plane);
-  v("duration", x.duration);
-}
+LABKIT_FIELDS(SpherePlaneMotion, sphere, velocity, plane, duration)
 
 struct SphereSphereMotion {
   Sphere s0;
@@ -73,13 +54,7 @@ struct SphereSphereMotion {
   Vec3 v1 = Vec3::Zero();
   double duration = 1.0;
 };
-template <class V> void fields(SphereSphereMotion& x, V&& v) {
-  v("s0", x.s0);
-  v("v0", x.v0);
-  v("s1", x.s1);
-  v("v1", x.v1);
-  v("duration", x.duration);
-}
+LABKIT_FIELDS(SphereSphereMotion, s0, v0, s1, v1, duration)
 
 // A sphere moving against a static capsule (step 6).
 struct SphereCapsuleMotion {
@@ -88,12 +63,7 @@ struct SphereCapsuleMotion {
   Capsule capsule;
   double duration = 1.0;
 };
-template <class V> void fields(SphereCapsuleMotion& x, V&& v) {
-  v("sphere", x.sphere);
-  v("velocity", x.velocity);
-  v("capsule", x.capsule);
-  v("duration", x.duration);
-}
+LABKIT_FIELDS(SphereCapsuleMotion, sphere, velocity, capsule, duration)
 
 struct BoxPlaneMotion {
   Box box;
@@ -101,12 +71,7 @@ struct BoxPlaneMotion {
   Plane plane;
   double duration = 1.0;
 };
-template <class V> void fields(BoxPlaneMotion& x, V&& v) {
-  v("box", x.box);
-  v("velocity", x.velocity);
-  v("plane", x.plane);
-  v("duration", x.duration);
-}
+LABKIT_FIELDS(BoxPlaneMotion, box, velocity, plane, duration)
 
 }  // namespace labkit
 
@@ -134,75 +99,41 @@ struct CapsuleLozenge {
 struct LozengePair {
   Lozenge a, b;
 };
-template <class V> void fields(SpherePair& x, V&& v) {
-  v("a", x.a);
-  v("b", x.b);
-}
-template <class V> void fields(SphereCapsule& x, V&& v) {
-  v("a", x.a);
-  v("b", x.b);
-}
-template <class V> void fields(SphereLozenge& x, V&& v) {
-  v("a", x.a);
-  v("b", x.b);
-}
-template <class V> void fields(CapsulePair& x, V&& v) {
-  v("a", x.a);
-  v("b", x.b);
-}
-template <class V> void fields(CapsuleLozenge& x, V&& v) {
-  v("a", x.a);
-  v("b", x.b);
-}
-template <class V> void fields(LozengePair& x, V&& v) {
-  v("a", x.a);
-  v("b", x.b);
-}
+LABKIT_FIELDS(SpherePair, a, b)
+LABKIT_FIELDS(SphereCapsule, a, b)
+LABKIT_FIELDS(SphereLozenge, a, b)
+LABKIT_FIELDS(CapsulePair, a, b)
+LABKIT_FIELDS(CapsuleLozenge, a, b)
+LABKIT_FIELDS(LozengePair, a, b)
 
 }  // namespace labkit::lab05
 
 // ---- The queries -------------------------------------------------------------------------
-// The name of each question the tests ask (a replay token's prefix) and the input it takes,
-// by the step that asks it first. The tests, the viewer's scene and its presets read this
-// table (common/harness/query.h): a query is added or renamed here and nowhere else.
-#define LABKIT_LAB05_QUERIES(X)                                                      \
-  /* step 1 */                                                                       \
-  X(point_segment, "point_segment", PointSegmentPair)                                \
-  X(segment_segment, "segment_segment", SegmentPair)                                 \
-  /* step 2 */                                                                       \
-  X(point_rectangle, "point_rectangle", PointRectanglePair)                          \
-  X(segment_rectangle, "segment_rectangle", SegmentRectanglePair)                    \
-  X(rectangle_rectangle, "rectangle_rectangle", RectanglePair)                       \
-  /* step 3 */                                                                       \
-  X(test_sphere_sphere, "test_sphere_sphere", SpherePair)                            \
-  X(test_sphere_capsule, "test_sphere_capsule", SphereCapsule)                       \
-  X(test_sphere_lozenge, "test_sphere_lozenge", SphereLozenge)                       \
-  X(test_capsule_capsule, "test_capsule_capsule", CapsulePair)                       \
-  X(test_capsule_lozenge, "test_capsule_lozenge", CapsuleLozenge)                    \
-  X(test_lozenge_lozenge, "test_lozenge_lozenge", LozengePair)                       \
-  /* step 4 */                                                                       \
-  X(sweep_sphere_plane, "sweep_sphere_plane", SpherePlaneMotion)                     \
-  /* step 5 */                                                                       \
-  X(sweep_sphere_sphere, "sweep_sphere_sphere", SphereSphereMotion)                  \
-  X(sweep_sphere_sphere_soon, "sweep_sphere_sphere.soon", SphereSphereMotion)        \
-  X(sweep_sphere_sphere_grazing, "sweep_sphere_sphere.grazing", SphereSphereMotion)  \
-  /* step 6 */                                                                       \
-  X(sweep_sphere_capsule, "sweep_sphere_capsule", SphereCapsuleMotion)               \
-  /* step 7 */                                                                       \
-  X(sweep_box_plane, "sweep_box_plane", BoxPlaneMotion)                              \
-  /* step 8 */                                                                       \
-  X(robust_segment_segment, "robust.segment_segment", SegmentPair)                   \
-  X(robust_segment_rectangle, "robust.segment_rectangle", SegmentRectanglePair)      \
-  X(robust_test_sphere_capsule, "robust.test_sphere_capsule", SphereCapsule)         \
-  X(robust_test_capsule_capsule, "robust.test_capsule_capsule", CapsulePair)         \
-  X(robust_test_capsule_lozenge, "robust.test_capsule_lozenge", CapsuleLozenge)      \
-  X(robust_test_lozenge_lozenge, "robust.test_lozenge_lozenge", LozengePair)         \
-  X(robust_sweep_sphere_plane, "robust.sweep_sphere_plane", SpherePlaneMotion)       \
-  X(robust_sweep_sphere_sphere, "robust.sweep_sphere_sphere", SphereSphereMotion)    \
-  X(robust_sweep_sphere_capsule, "robust.sweep_sphere_capsule", SphereCapsuleMotion) \
-  X(robust_sweep_box_plane, "robust.sweep_box_plane", BoxPlaneMotion)
+// Each question the tests ask and the input it takes, by the step that asks it first:
+// X(name, Input) is the query "name", X_IN(group, name, Input) the query "group.name"
+// (common/harness/query.h). The tests, the viewer's scene and its presets read this table:
+// a query is added or renamed here and nowhere else.
+// clang-format off
+#define LABKIT_LAB05_QUERIES(X, X_IN)                                                                                \
+  /* step 1 */ X(point_segment, PointSegmentPair) X(segment_segment, SegmentPair)                                    \
+  /* step 2 */ X(point_rectangle, PointRectanglePair) X(segment_rectangle, SegmentRectanglePair)                     \
+               X(rectangle_rectangle, RectanglePair)                                                                 \
+  /* step 3 */ X(test_sphere_sphere, SpherePair) X(test_sphere_capsule, SphereCapsule)                               \
+               X(test_sphere_lozenge, SphereLozenge) X(test_capsule_capsule, CapsulePair)                            \
+               X(test_capsule_lozenge, CapsuleLozenge) X(test_lozenge_lozenge, LozengePair)                          \
+  /* step 4 */ X(sweep_sphere_plane, SpherePlaneMotion)                                                              \
+  /* step 5 */ X(sweep_sphere_sphere, SphereSphereMotion) X_IN(sweep_sphere_sphere, soon, SphereSphereMotion)        \
+               X_IN(sweep_sphere_sphere, grazing, SphereSphereMotion)                                                \
+  /* step 6 */ X(sweep_sphere_capsule, SphereCapsuleMotion)                                                          \
+  /* step 7 */ X(sweep_box_plane, BoxPlaneMotion)                                                                    \
+  /* step 8 */ X_IN(robust, segment_segment, SegmentPair) X_IN(robust, segment_rectangle, SegmentRectanglePair)      \
+               X_IN(robust, test_sphere_capsule, SphereCapsule) X_IN(robust, test_capsule_capsule, CapsulePair)      \
+               X_IN(robust, test_capsule_lozenge, CapsuleLozenge) X_IN(robust, test_lozenge_lozenge, LozengePair)    \
+               X_IN(robust, sweep_sphere_plane, SpherePlaneMotion)                                                   \
+               X_IN(robust, sweep_sphere_sphere, SphereSphereMotion)                                                 \
+               X_IN(robust, sweep_sphere_capsule, SphereCapsuleMotion) X_IN(robust, sweep_box_plane, BoxPlaneMotion)
+// clang-format on
 
 namespace labkit::lab05::query {
-LABKIT_LAB05_QUERIES(LABKIT_QUERY)
-LABKIT_QUERY_TABLE(LABKIT_LAB05_QUERIES)
+LABKIT_QUERIES(LABKIT_LAB05_QUERIES)
 }  // namespace labkit::lab05::query

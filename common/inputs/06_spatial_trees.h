@@ -5,6 +5,7 @@
 
 #include "spatial_trees.h"
 
+#include "common/fields.h"
 #include "common/harness/query.h"
 
 #include <vector>
@@ -18,32 +19,25 @@ struct TreeQuery {
   Segment segment;
   int tree = 0;
 };
-template <class V> void fields(TreeQuery& q, V&& v) {
-  v("mesh", q.mesh);
-  v("segment", q.segment);
-  v("tree", q.tree);
-}
+LABKIT_FIELDS(TreeQuery, mesh, segment, tree)
 
 // A point against the solid of a closed mesh (step 3), or an eye for the painter (step 4).
 struct PointQuery {
   Mesh mesh;
   Vec3 point = Vec3::Zero();
 };
-template <class V> void fields(PointQuery& q, V&& v) {
-  v("mesh", q.mesh);
-  v("point", q.point);
-}
+LABKIT_FIELDS(PointQuery, mesh, point)
 
 struct SphereSet {
   std::vector<Sphere> spheres;
 };
-template <class V> void fields(SphereSet& s, V&& v) { v("spheres", s.spheres); }
+LABKIT_FIELDS(SphereSet, spheres)
 
 // Step 6: the frames of one simulation, the same spheres moved a little each time.
 struct SweepCase {
   std::vector<std::vector<Sphere>> frames;
 };
-template <class V> void fields(SweepCase& c, V&& v) { v("frames", c.frames); }
+LABKIT_FIELDS(SweepCase, frames)
 
 // Step 6's big case: `count` spheres spread over a cube of side 100 (radii 0.25 to 1),
 // then `frames` frames in which each centre moves along x by at most 0.05.
@@ -52,11 +46,7 @@ struct MovingSpheres {
   int frames = 10;
   int seed = 1;
 };
-template <class V> void fields(MovingSpheres& m, V&& v) {
-  v("count", m.count);
-  v("frames", m.frames);
-  v("seed", m.seed);
-}
+LABKIT_FIELDS(MovingSpheres, count, frames, seed)
 
 // Step 7: two meshes, the checker's OBB trees over them (seeds), and whether every pair
 // is asked for.
@@ -65,13 +55,7 @@ struct BvhQuery {
   int tree_a = 0, tree_b = 0;
   bool every = true;
 };
-template <class V> void fields(BvhQuery& q, V&& v) {
-  v("a", q.a);
-  v("b", q.b);
-  v("tree_a", q.tree_a);
-  v("tree_b", q.tree_b);
-  v("every", q.every);
-}
+LABKIT_FIELDS(BvhQuery, a, b, tree_a, tree_b, every)
 
 // Step 8: one of the four big meshes (gen::MeshKind), its size, and a seed for the mesh
 // (terrain, soup) and for the random segments.
@@ -81,62 +65,38 @@ struct EfficiencyCase {
   int segments = 1000;
   int seed = 1;
 };
-template <class V> void fields(EfficiencyCase& c, V&& v) {
-  v("kind", c.kind);
-  v("triangles", c.triangles);
-  v("segments", c.segments);
-  v("seed", c.seed);
-}
+LABKIT_FIELDS(EfficiencyCase, kind, triangles, segments, seed)
 
 // Step 8's spheres: n spread over a cube of side 100, radii from 0.25 to 1.
 struct SpreadSpheres {
   int count = 2000;
   int seed = 1;
 };
-template <class V> void fields(SpreadSpheres& s, V&& v) {
-  v("count", s.count);
-  v("seed", s.seed);
-}
+LABKIT_FIELDS(SpreadSpheres, count, seed)
 
 }  // namespace labkit::lab06
 
 // ---- The queries -------------------------------------------------------------------------
-// The name of each question the tests ask (a replay token's prefix) and the input it takes,
-// by the step that asks it first. The tests, the viewer's scene and its presets read this
-// table (common/harness/query.h): a query is added or renamed here and nowhere else.
-#define LABKIT_LAB06_QUERIES(X)                                      \
-  /* step 1 */                                                       \
-  X(build_kd_tree, "build_kd_tree", Mesh)                            \
-  X(build_kd_tree_lattice, "build_kd_tree.lattice", Mesh)            \
-  /* step 2 */                                                       \
-  X(first_hit, "first_hit", TreeQuery)                               \
-  X(any_hit, "any_hit", TreeQuery)                                   \
-  X(all_hits, "all_hits", TreeQuery)                                 \
-  /* step 3 */                                                       \
-  X(build_bsp, "build_bsp", Mesh)                                    \
-  X(classify, "classify", PointQuery)                                \
-  /* step 4 */                                                       \
-  X(back_to_front, "back_to_front", PointQuery)                      \
-  /* step 5 */                                                       \
-  X(overlapping_pairs, "overlapping_pairs", SphereSet)               \
-  /* step 6 */                                                       \
-  X(sweep_frames, "sweep_frames", SweepCase)                         \
-  X(sweep_frames_moving, "sweep_frames.moving", MovingSpheres)       \
-  /* step 7 */                                                       \
-  X(colliding_triangles, "colliding_triangles", BvhQuery)            \
-  /* step 8 */                                                       \
-  X(efficiency_segments, "efficiency.segments", EfficiencyCase)      \
-  X(efficiency_spheres, "efficiency.spheres", SpreadSpheres)         \
-  /* step 9 */                                                       \
-  X(robust_build_kd_tree, "robust.build_kd_tree", Mesh)              \
-  X(robust_segment_queries, "robust.segment_queries", TreeQuery)     \
-  X(robust_classify, "robust.classify", PointQuery)                  \
-  X(robust_back_to_front, "robust.back_to_front", PointQuery)        \
-  X(robust_overlapping_pairs, "robust.overlapping_pairs", SphereSet) \
-  X(robust_sweep_frames, "robust.sweep_frames", SweepCase)           \
-  X(robust_colliding_triangles, "robust.colliding_triangles", BvhQuery)
+// Each question the tests ask and the input it takes, by the step that asks it first:
+// X(name, Input) is the query "name", X_IN(group, name, Input) the query "group.name"
+// (common/harness/query.h). The tests, the viewer's scene and its presets read this table:
+// a query is added or renamed here and nowhere else.
+// clang-format off
+#define LABKIT_LAB06_QUERIES(X, X_IN)                                                              \
+  /* step 1 */ X(build_kd_tree, Mesh) X_IN(build_kd_tree, lattice, Mesh)                           \
+  /* step 2 */ X(first_hit, TreeQuery) X(any_hit, TreeQuery) X(all_hits, TreeQuery)                \
+  /* step 3 */ X(build_bsp, Mesh) X(classify, PointQuery)                                          \
+  /* step 4 */ X(back_to_front, PointQuery)                                                        \
+  /* step 5 */ X(overlapping_pairs, SphereSet)                                                     \
+  /* step 6 */ X(sweep_frames, SweepCase) X_IN(sweep_frames, moving, MovingSpheres)                \
+  /* step 7 */ X(colliding_triangles, BvhQuery)                                                    \
+  /* step 8 */ X_IN(efficiency, segments, EfficiencyCase) X_IN(efficiency, spheres, SpreadSpheres) \
+  /* step 9 */ X_IN(robust, build_kd_tree, Mesh) X_IN(robust, segment_queries, TreeQuery)          \
+               X_IN(robust, classify, PointQuery) X_IN(robust, back_to_front, PointQuery)          \
+               X_IN(robust, overlapping_pairs, SphereSet) X_IN(robust, sweep_frames, SweepCase)    \
+               X_IN(robust, colliding_triangles, BvhQuery)
+// clang-format on
 
 namespace labkit::lab06::query {
-LABKIT_LAB06_QUERIES(LABKIT_QUERY)
-LABKIT_QUERY_TABLE(LABKIT_LAB06_QUERIES)
+LABKIT_QUERIES(LABKIT_LAB06_QUERIES)
 }  // namespace labkit::lab06::query

@@ -6,6 +6,7 @@
 
 #include "particles.h"
 
+#include "common/fields.h"
 #include "common/harness/query.h"
 
 #include "common/inputs/inputs.h"
@@ -19,42 +20,27 @@ struct EmitCase {
   int seed = 1;
   int count = 1;  // particles emitted, twice from the same seed
 };
-template <class V> void fields(EmitCase& c, V&& v) {
-  v("emitter", c.emitter);
-  v("seed", c.seed);
-  v("count", c.count);
-}
+LABKIT_FIELDS(EmitCase, emitter, seed, count)
 
 struct BirthsCase {
   Emitter emitter;  // its rate and owed
   double dt = 0.0;
   int steps = 1;
 };
-template <class V> void fields(BirthsCase& c, V&& v) {
-  v("emitter", c.emitter);
-  v("dt", c.dt);
-  v("steps", c.steps);
-}
+LABKIT_FIELDS(BirthsCase, emitter, dt, steps)
 
 struct AgeCase {
   std::vector<Particle> particles;
   double dt = 0.0;
 };
-template <class V> void fields(AgeCase& c, V&& v) {
-  v("particles", c.particles);
-  v("dt", c.dt);
-}
+LABKIT_FIELDS(AgeCase, particles, dt)
 
 struct MotionCase {
   Particle particle;
   Forces forces;
   double dt = 0.0;
 };
-template <class V> void fields(MotionCase& c, V&& v) {
-  v("particle", c.particle);
-  v("forces", c.forces);
-  v("dt", c.dt);
-}
+LABKIT_FIELDS(MotionCase, particle, forces, dt)
 
 struct LaunchCase {
   Vec3 from = Vec3::Zero();
@@ -62,21 +48,13 @@ struct LaunchCase {
   double speed = 0.0;
   Vec3 gravity = Vec3::Zero();
 };
-template <class V> void fields(LaunchCase& c, V&& v) {
-  v("from", c.from);
-  v("target", c.target);
-  v("speed", c.speed);
-  v("gravity", c.gravity);
-}
+LABKIT_FIELDS(LaunchCase, from, target, speed, gravity)
 
 struct SegmentScene {
   Segment segment;
   Scene scene;
 };
-template <class V> void fields(SegmentScene& c, V&& v) {
-  v("segment", c.segment);
-  v("scene", c.scene);
-}
+LABKIT_FIELDS(SegmentScene, segment, scene)
 
 struct ImpulseCase {
   Vec3 velocity = Vec3::Zero();
@@ -85,13 +63,7 @@ struct ImpulseCase {
   double mass = 1.0;
   Material material;
 };
-template <class V> void fields(ImpulseCase& c, V&& v) {
-  v("velocity", c.velocity);
-  v("object_velocity", c.object_velocity);
-  v("normal", c.normal);
-  v("mass", c.mass);
-  v("material", c.material);
-}
+LABKIT_FIELDS(ImpulseCase, velocity, object_velocity, normal, mass, material)
 
 struct CollideCase {
   Segment step;
@@ -100,24 +72,14 @@ struct CollideCase {
   double dt = 1.0;
   Scene scene;
 };
-template <class V> void fields(CollideCase& c, V&& v) {
-  v("step", c.step);
-  v("velocity", c.velocity);
-  v("mass", c.mass);
-  v("dt", c.dt);
-  v("scene", c.scene);
-}
+LABKIT_FIELDS(CollideCase, step, velocity, mass, dt, scene)
 
 struct SettleCase {
   Vec3 x = Vec3::Zero();
   Scene scene;
   SurfaceHit last;
 };
-template <class V> void fields(SettleCase& c, V&& v) {
-  v("x", c.x);
-  v("scene", c.scene);
-  v("last", c.last);
-}
+LABKIT_FIELDS(SettleCase, x, scene, last)
 
 struct SystemCase {
   Emitter emitter;
@@ -128,50 +90,27 @@ struct SystemCase {
   double dt = 0.0;
   int steps = 1;
 };
-template <class V> void fields(SystemCase& c, V&& v) {
-  v("emitter", c.emitter);
-  v("scene", c.scene);
-  v("forces", c.forces);
-  v("verlet", c.verlet);
-  v("seed", c.seed);
-  v("dt", c.dt);
-  v("steps", c.steps);
-}
+LABKIT_FIELDS(SystemCase, emitter, scene, forces, verlet, seed, dt, steps)
 
 }  // namespace labkit::lab07
 
 // ---- The queries -------------------------------------------------------------------------
-// The name of each question the tests ask (a replay token's prefix) and the input it takes,
-// by the step that asks it first. The tests, the viewer's scene and its presets read this
-// table (common/harness/query.h): a query is added or renamed here and nowhere else.
-#define LABKIT_LAB07_QUERIES(X)                        \
-  /* step 1 */                                         \
-  X(emit, "emit", EmitCase)                            \
-  X(births, "births", BirthsCase)                      \
-  X(age, "age", AgeCase)                               \
-  /* step 2 */                                         \
-  X(force, "force", MotionCase)                        \
-  X(euler_step, "euler_step", MotionCase)              \
-  X(verlet_step, "verlet_step", MotionCase)            \
-  X(integrators, "integrators", MotionCase)            \
-  /* step 3 */                                         \
-  X(aim, "aim", LaunchCase)                            \
-  X(exact_aim, "exact.aim", LaunchCase)                \
-  /* step 4 */                                         \
-  X(hit_plane, "hit_plane", SegmentScene)              \
-  X(hit_triangle, "hit_triangle", SegmentTrianglePair) \
-  X(first_hit, "first_hit", SegmentScene)              \
-  X(exact_first_hit, "exact.first_hit", SegmentScene)  \
-  /* step 5 */                                         \
-  X(impulse, "impulse", ImpulseCase)                   \
-  /* step 6 */                                         \
-  X(collide, "collide", CollideCase)                   \
-  /* step 7 */                                         \
-  X(invariants, "invariants", CollideCase)             \
-  X(settle, "settle", SettleCase)                      \
-  X(system, "system", SystemCase)
+// Each question the tests ask and the input it takes, by the step that asks it first:
+// X(name, Input) is the query "name", X_IN(group, name, Input) the query "group.name"
+// (common/harness/query.h). The tests, the viewer's scene and its presets read this table:
+// a query is added or renamed here and nowhere else.
+// clang-format off
+#define LABKIT_LAB07_QUERIES(X, X_IN)                                                                               \
+  /* step 1 */ X(emit, EmitCase) X(births, BirthsCase) X(age, AgeCase)                                              \
+  /* step 2 */ X(force, MotionCase) X(euler_step, MotionCase) X(verlet_step, MotionCase) X(integrators, MotionCase) \
+  /* step 3 */ X(aim, LaunchCase) X_IN(exact, aim, LaunchCase)                                                      \
+  /* step 4 */ X(hit_plane, SegmentScene) X(hit_triangle, SegmentTrianglePair) X(first_hit, SegmentScene)           \
+               X_IN(exact, first_hit, SegmentScene)                                                                 \
+  /* step 5 */ X(impulse, ImpulseCase)                                                                              \
+  /* step 6 */ X(collide, CollideCase)                                                                              \
+  /* step 7 */ X(invariants, CollideCase) X(settle, SettleCase) X(system, SystemCase)
+// clang-format on
 
 namespace labkit::lab07::query {
-LABKIT_LAB07_QUERIES(LABKIT_QUERY)
-LABKIT_QUERY_TABLE(LABKIT_LAB07_QUERIES)
+LABKIT_QUERIES(LABKIT_LAB07_QUERIES)
 }  // namespace labkit::lab07::query

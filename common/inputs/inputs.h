@@ -3,6 +3,7 @@
 // harness or a judge reads them without reaching into the generators.
 #pragma once
 
+#include "common/fields.h"
 #include "common/geometry.h"
 
 namespace labkit {
@@ -11,18 +12,12 @@ struct SegmentTrianglePair {
   Segment segment;
   Triangle triangle;
 };
-template <class Visit> void fields(SegmentTrianglePair& p, Visit&& visit) {
-  visit("segment", p.segment);
-  visit("triangle", p.triangle);
-}
+LABKIT_FIELDS(SegmentTrianglePair, segment, triangle)
 
 struct SegmentMeshPair {
   Segment segment;
   Mesh mesh;
 };
-template <class Visit> void fields(SegmentMeshPair& p, Visit&& visit) {
-  visit("segment", p.segment);
-  visit("mesh", p.mesh);
-}
+LABKIT_FIELDS(SegmentMeshPair, segment, mesh)
 
 }  // namespace labkit

@@ -8,6 +8,8 @@
 // the field, never a silent default.
 #pragma once
 
+#include "common/fields.h"
+
 #include <nlohmann/json_fwd.hpp>
 
 #include <optional>
@@ -26,15 +28,7 @@ struct Failure {
   std::string replay;    // the replay token: query:numbers
   int shrinks = 0;       // how often RapidCheck shrank it
 };
-template <class V> void fields(Failure& f, V&& v) {
-  v("title", f.title);
-  v("input", f.input);
-  v("expected", f.expected);
-  v("got", f.got);
-  v("why", f.why);
-  v("replay", f.replay);
-  v("shrinks", f.shrinks);
-}
+LABKIT_FIELDS(Failure, title, input, expected, got, why, replay, shrinks)
 
 // One query of one test case: its examples, or its random cases.
 struct Query {
@@ -49,18 +43,7 @@ struct Query {
   std::string error;               // a failure of the harness itself
   std::optional<Failure> failure;  // null in JSON when every case passed
 };
-template <class V> void fields(Query& q, V&& v) {
-  v("test_case", q.test_case);
-  v("query", q.query);
-  v("kind", q.kind);
-  v("cases", q.cases);
-  v("passed", q.passed);
-  v("ambiguous", q.ambiguous);
-  v("failed", q.failed);
-  v("not_implemented", q.not_implemented);
-  v("error", q.error);
-  v("failure", q.failure);
-}
+LABKIT_FIELDS(Query, test_case, query, kind, cases, passed, ambiguous, failed, not_implemented, error, failure)
 
 // One Catch test case.
 struct TestCase {
@@ -71,14 +54,7 @@ struct TestCase {
   std::vector<std::string> failures;  // the first few failed assertions, as Catch words them
   std::string not_implemented;        // set when a stub was reached
 };
-template <class V> void fields(TestCase& t, V&& v) {
-  v("name", t.name);
-  v("tags", t.tags);
-  v("passed", t.passed);
-  v("ended", t.ended);
-  v("failures", t.failures);
-  v("not_implemented", t.not_implemented);
-}
+LABKIT_FIELDS(TestCase, name, tags, passed, ended, failures, not_implemented)
 
 struct Step {
   std::string seed;  // the seed's text, or "hidden"
@@ -87,13 +63,7 @@ struct Step {
   std::vector<TestCase> test_cases;
   std::vector<Query> queries;
 };
-template <class V> void fields(Step& s, V&& v) {
-  v("seed", s.seed);
-  v("cases_per_query", s.cases_per_query);
-  v("finished", s.finished);
-  v("test_cases", s.test_cases);
-  v("queries", s.queries);
-}
+LABKIT_FIELDS(Step, seed, cases_per_query, finished, test_cases, queries)
 
 nlohmann::json to_json(const Step& step);
 // Throws std::runtime_error naming the field when `json` is not a step's report.
