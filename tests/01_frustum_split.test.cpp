@@ -11,6 +11,7 @@ using namespace labkit;
 using namespace labkit::lab01;
 using check::Expect;
 using check::Outcome;
+using check::rejects;
 using judge::Rules;
 
 namespace {
@@ -451,12 +452,6 @@ TEST_CASE(LABKIT_STEP(L01S6) ": random exact degenerate cases", "[lab01][step6][
 namespace {
 
 const double kNaN = std::nan(""), kInf = HUGE_VAL;
-
-template <class Call> void rejects(const std::string& what, const std::string& argument, Call&& call) {
-  INFO(what);
-  CHECK_THROWS_AS(call(), std::invalid_argument);
-  CHECK_THROWS_WITH(call(), labkit::check::contains_text(argument));
-}
 
 }  // namespace
 

@@ -12,6 +12,7 @@ using namespace labkit;
 using namespace labkit::lab03;
 using check::Expect;
 using check::Outcome;
+using check::rejects;
 using judge::Rules;
 
 namespace {
@@ -477,15 +478,6 @@ TEST_CASE(LABKIT_STEP(L03S6) ": random exact degenerate cases", "[lab03][step6][
 TEST_CASE("L03 preconditions: invalid input is rejected, naming the argument", "[lab03][contract]") {
   const double nan = std::nan(""), inf = HUGE_VAL;
   const Box good = cube({0, 0, 0});
-  const auto rejects = [](const std::string& argument, auto&& call) {
-    INFO("the argument " << argument);
-    try {
-      call();
-      FAIL("accepted; the header's preconditions reject it");
-    } catch (const std::invalid_argument& e) {
-      CHECK_THAT(e.what(), labkit::check::contains_text(argument));
-    }
-  };
   std::vector<std::pair<std::string, Box>> bad_boxes;
   for (const double x : {nan, inf, -inf}) {
     Box b = good;

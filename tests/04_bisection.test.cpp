@@ -15,6 +15,7 @@ using namespace labkit;
 using namespace labkit::lab04;
 using check::Expect;
 using check::Outcome;
+using check::rejects;
 using judge::Rules;
 
 namespace {
@@ -140,6 +141,17 @@ TimeOfImpact run_advance(const AdvancedPair& in) {
 double run_closing_speed(const MovingPairCase& in) {
   return closing_speed(in.a.sphere, motion_of(in.a.motion), shape_of(in.b), motion_of(in.b.motion), in.times.t0,
                        in.times.t1);
+}
+
+// Step 3's tunnelling: the closing speed and the sub-steps it asks for, by the code under
+// test, then one sample against n samples.
+Outcome judge_tunnelling(const MovingPairCase& in) {
+  const MovingPair pair = pair_of(in);
+  const SearchTimes& T = in.times;
+  const double speed = run_closing_speed(in);
+  const int n = substeps_for(speed, T.t1 - T.t0, smallest_size_of(in));
+  return judge::tunnelling(in, speed, n, sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
+                           sample_then_bisect(pair, T.t0, T.t1, n < 1 ? 1 : n, T.tolerance));
 }
 
 // Both the exact judge (first: it says which rule broke) and the hand-worked numbers.
@@ -349,16 +361,8 @@ TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
   check::example(query::sample_then_bisect, "25 sub-steps: sample 11 at t = 0.44 overlaps",
                  SampledPair{bullet_and_window(1.0 / 64), 25},
                  both<SampledPair>(run_sampled, judge_sampled, expect_hit(0.43, 0.44, 11, 2)));
-  const auto tunnels = [](const MovingPairCase& in) {
-    const MovingPair pair = pair_of(in);
-    const SearchTimes& T = in.times;
-    const double speed = run_closing_speed(in);
-    const int n = substeps_for(speed, T.t1 - T.t0, smallest_size_of(in));
-    return judge::tunnelling(in, speed, n, sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
-                             sample_then_bisect(pair, T.t0, T.t1, n < 1 ? 1 : n, T.tolerance));
-  };
-  check::example(query::tunnelling, "the bullet and the window", bullet_and_window(1.0 / 64), tunnels);
-  check::example(query::tunnelling, "the bullet and the window, head on", head_on, tunnels);
+  check::example(query::tunnelling, "the bullet and the window", bullet_and_window(1.0 / 64), judge_tunnelling);
+  check::example(query::tunnelling, "the bullet and the window, head on", head_on, judge_tunnelling);
 }
 
 TEST_CASE(LABKIT_STEP(L04S3) ": random cases", "[lab04][step3][oracle]") {
@@ -369,14 +373,7 @@ TEST_CASE(LABKIT_STEP(L04S3) ": random cases", "[lab04][step3][oracle]") {
                       [](const SampledPair& in) { return judge::sample_then_bisect(in, run_sampled(in)); });
   check::random_cases(query::closing_speed, gen::moving_pair(),
                       [](const MovingPairCase& in) { return judge::closing_speed(in, run_closing_speed(in)); });
-  check::random_cases(query::tunnelling, gen::tunnelling_pair(), [](const MovingPairCase& in) {
-    const MovingPair pair = pair_of(in);
-    const SearchTimes& T = in.times;
-    const double speed = run_closing_speed(in);
-    const int n = substeps_for(speed, T.t1 - T.t0, smallest_size_of(in));
-    return judge::tunnelling(in, speed, n, sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
-                             sample_then_bisect(pair, T.t0, T.t1, n < 1 ? 1 : n, T.tolerance));
-  });
+  check::random_cases(query::tunnelling, gen::tunnelling_pair(), judge_tunnelling);
 }
 
 // ---- Step 4 ------------------------------------------------------------------------------------
@@ -524,21 +521,6 @@ TEST_CASE(LABKIT_STEP(L04S5) ": random exact cases", "[lab04][step5][oracle]") {
 // invalid input). Every kind of invalid input must throw std::invalid_argument naming the
 // function and the argument; none may hang (a tolerance of 0 used to halve forever).
 
-namespace {
-
-template <class Call> void rejects(const std::string& what, Call call, const std::string& names) {
-  INFO(what);
-  try {
-    call();
-    FAIL_CHECK("accepted, though the header's preconditions exclude it");
-  } catch (const std::invalid_argument& e) {
-    INFO("message: " << e.what());
-    CHECK(std::string(e.what()).find(names) != std::string::npos);
-  }
-}
-
-}  // namespace
-
 TEST_CASE("L04 preconditions: invalid input is rejected, naming the argument", "[lab04][contract]") {
   constexpr double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
   const MovingPair good = pair_of(ball_and_wall(0, 1, 1.0 / 32));
@@ -559,128 +541,66 @@ TEST_CASE("L04 preconditions: invalid input is rejected, naming the argument", "
            {"bisect", [&](double t0, double t1, double tol) { bisect(good, t0, t1, tol); }},
            {"sample_then_bisect", [&](double t0, double t1, double tol) { sample_then_bisect(good, t0, t1, 4, tol); }},
            {"advance", [&](double t0, double t1, double tol) { advance(good, t0, t1, 12, tol); }}}) {
-    rejects(
-        search + ": tolerance 0 (halving forever)", [&] { run(0, 1, 0); }, search + ": tolerance");
-    rejects(
-        search + ": tolerance -1", [&] { run(0, 1, -1); }, search + ": tolerance");
-    rejects(
-        search + ": tolerance NaN", [&] { run(0, 1, nan); }, search + ": tolerance");
-    rejects(
-        search + ": tolerance infinite", [&] { run(0, 1, inf); }, search + ": tolerance");
-    rejects(
-        search + ": tolerance below the spacing of doubles near t", [&] { run(1e6, 1e6 + 1, 1e-20); },
-        search + ": tolerance");
-    rejects(
-        search + ": t0 NaN", [&] { run(nan, 1, 0.25); }, search + ": t0");
-    rejects(
-        search + ": t1 infinite", [&] { run(0, inf, 0.25); }, search + ": t1");
-    rejects(
-        search + ": t0 > t1", [&] { run(1, 0, 0.25); }, search + ": t0 <= t1");
-    rejects(
-        search + ": t1 - t0 overflows", [&] { run(-1e308, 1e308, 1e300); }, search + ": t1 - t0");
+    rejects(search + ": tolerance 0 (halving forever)", search + ": tolerance", [&] { run(0, 1, 0); });
+    rejects(search + ": tolerance -1", search + ": tolerance", [&] { run(0, 1, -1); });
+    rejects(search + ": tolerance NaN", search + ": tolerance", [&] { run(0, 1, nan); });
+    rejects(search + ": tolerance infinite", search + ": tolerance", [&] { run(0, 1, inf); });
+    rejects(search + ": tolerance below the spacing of doubles near t", search + ": tolerance",
+            [&] { run(1e6, 1e6 + 1, 1e-20); });
+    rejects(search + ": t0 NaN", search + ": t0", [&] { run(nan, 1, 0.25); });
+    rejects(search + ": t1 infinite", search + ": t1", [&] { run(0, inf, 0.25); });
+    rejects(search + ": t0 > t1", search + ": t0 <= t1", [&] { run(1, 0, 0.25); });
+    rejects(search + ": t1 - t0 overflows", search + ": t1 - t0", [&] { run(-1e308, 1e308, 1e300); });
   }
-  rejects(
-      "sample_then_bisect: 0 sub-steps", [&] { sample_then_bisect(good, 0, 1, 0, 0.25); },
-      "sample_then_bisect: substeps");
-  rejects(
-      "sample_then_bisect: -3 sub-steps", [&] { sample_then_bisect(good, 0, 1, -3, 0.25); },
-      "sample_then_bisect: substeps");
-  rejects(
-      "advance: a negative speed bound", [&] { advance(good, 0, 1, -1, 0.25); }, "advance: max_closing_speed");
-  rejects(
-      "advance: a NaN speed bound", [&] { advance(good, 0, 1, nan, 0.25); }, "advance: max_closing_speed");
+  rejects("sample_then_bisect: 0 sub-steps", "sample_then_bisect: substeps",
+          [&] { sample_then_bisect(good, 0, 1, 0, 0.25); });
+  rejects("sample_then_bisect: -3 sub-steps", "sample_then_bisect: substeps",
+          [&] { sample_then_bisect(good, 0, 1, -3, 0.25); });
+  rejects("advance: a negative speed bound", "advance: max_closing_speed", [&] { advance(good, 0, 1, -1, 0.25); });
+  rejects("advance: a NaN speed bound", "advance: max_closing_speed", [&] { advance(good, 0, 1, nan, 0.25); });
 
   // The bodies, in every function that takes one.
-  rejects(
-      "a negative radius",
-      [&] {
-    bisect(with_ball({Vec3::Zero(), -1}), 0, 1, 0.25);
-      },
-      "bisect: pair.a.radius");
-  rejects(
-      "a NaN radius",
-      [&] {
-    overlap_at(with_ball({Vec3::Zero(), nan}), 0);
-      },
-      "overlap_at: pair.a.radius");
-  rejects(
-      "a NaN centre",
-      [&] {
-    distance_at(with_ball({{nan, 0, 0}, 1}), 0);
-      },
-      "distance_at: pair.a.center");
-  rejects(
-      "a negative half extent",
-      [&] {
+  rejects("a negative radius", "bisect: pair.a.radius", [&] { bisect(with_ball({Vec3::Zero(), -1}), 0, 1, 0.25); });
+  rejects("a NaN radius", "overlap_at: pair.a.radius", [&] { overlap_at(with_ball({Vec3::Zero(), nan}), 0); });
+  rejects("a NaN centre", "distance_at: pair.a.center", [&] { distance_at(with_ball({{nan, 0, 0}, 1}), 0); });
+  rejects("a negative half extent", "advance: pair.b.half_extents", [&] {
     advance(with_box({wall.center, wall.axes, {4, -1, 4}}), 0, 1, 12, 0.25);
-      },
-      "advance: pair.b.half_extents");
-  rejects(
-      "a NaN half extent",
-      [&] {
+  });
+  rejects("a NaN half extent", "smallest_size: shape.half_extents", [&] {
     smallest_size(shape_of(Box{wall.center, wall.axes, {nan, 4, 4}}));
-      },
-      "smallest_size: shape.half_extents");
-  rejects(
-      "NaN box axes",
-      [&] {
+  });
+  rejects("NaN box axes", "sample_then_bisect: pair.b.axes", [&] {
     sample_then_bisect(with_box({wall.center, Mat3::Constant(nan), wall.half_extents}), 0, 1, 2, 0.25);
-      },
-      "sample_then_bisect: pair.b.axes");
-  rejects(
-      "overlap: a negative radius",
-      [] {
+  });
+  rejects("overlap: a negative radius", "overlap: a.radius", [] {
     overlap(Sphere{Vec3::Zero(), -1}, Sphere{Vec3::Zero(), 1});
-      },
-      "overlap: a.radius");
-  rejects(
-      "overlap: an infinite centre",
-      [&] {
-    overlap(Sphere{{inf, 0, 0}, 1}, wall);
-      },
-      "overlap: a.center");
-  rejects(
-      "distance: a NaN radius",
-      [] {
+  });
+  rejects("overlap: an infinite centre", "overlap: a.center", [&] { overlap(Sphere{{inf, 0, 0}, 1}, wall); });
+  rejects("distance: a NaN radius", "distance: b.radius", [] {
     distance(Sphere{Vec3::Zero(), 1}, Sphere{Vec3::Zero(), nan});
-      },
-      "distance: b.radius");
-  rejects(
-      "distance: a negative half extent",
-      [] {
+  });
+  rejects("distance: a negative half extent", "distance: b.half_extents", [] {
     distance(Sphere{Vec3::Zero(), 1}, Box{Vec3::Zero(), Mat3::Identity(), {-1, 1, 1}});
-      },
-      "distance: b.half_extents");
-  rejects(
-      "closest_point: a NaN point", [&] { closest_point(wall, Vec3(nan, 0, 0)); }, "closest_point: p");
-  rejects(
-      "overlap_at: a NaN time", [&] { overlap_at(good, nan); }, "overlap_at: t");
+  });
+  rejects("closest_point: a NaN point", "closest_point: p", [&] { closest_point(wall, Vec3(nan, 0, 0)); });
+  rejects("overlap_at: a NaN time", "overlap_at: t", [&] { overlap_at(good, nan); });
 
   // The motions: a NaN velocity poses the body nowhere.
   MotionParameters nan_velocity = moving({-6, 0, 0}, {nan, 0, 0});
   MovingPair lost = good;
   lost.motion_a = motion_of(nan_velocity);
-  rejects(
-      "a motion that returns a NaN pose", [&] { bisect(lost, 0, 1, 0.25); }, "pair.motion_a");
-  rejects(
-      "closing_speed: a NaN velocity",
-      [&] {
+  rejects("a motion that returns a NaN pose", "pair.motion_a", [&] { bisect(lost, 0, 1, 0.25); });
+  rejects("closing_speed: a NaN velocity", "closing_speed: motion_a", [&] {
     closing_speed(good.a, motion_of(nan_velocity), good.b, motion_of(resting_at({4, 0, 0})), 0, 1);
-      },
-      "closing_speed: motion_a");
-  rejects(
-      "closing_speed: t0 > t1", [&] { closing_speed(good.a, StandardMotion{}, good.b, StandardMotion{}, 1, 0); },
-      "closing_speed: t0 <= t1");
+  });
+  rejects("closing_speed: t0 > t1", "closing_speed: t0 <= t1",
+          [&] { closing_speed(good.a, StandardMotion{}, good.b, StandardMotion{}, 1, 0); });
 
   // The sub-step rule's numbers.
-  rejects(
-      "substeps_for: a negative speed", [] { substeps_for(-6, 1, 0.25); }, "substeps_for: closing_speed");
-  rejects(
-      "substeps_for: an infinite speed", [] { substeps_for(inf, 1, 0.25); }, "substeps_for: closing_speed");
-  rejects(
-      "substeps_for: a NaN step", [] { substeps_for(6, nan, 0.25); }, "substeps_for: step");
-  rejects(
-      "substeps_for: a negative size", [] { substeps_for(6, 1, -0.25); }, "substeps_for: smallest_size");
+  rejects("substeps_for: a negative speed", "substeps_for: closing_speed", [] { substeps_for(-6, 1, 0.25); });
+  rejects("substeps_for: an infinite speed", "substeps_for: closing_speed", [] { substeps_for(inf, 1, 0.25); });
+  rejects("substeps_for: a NaN step", "substeps_for: step", [] { substeps_for(6, nan, 0.25); });
+  rejects("substeps_for: a negative size", "substeps_for: smallest_size", [] { substeps_for(6, 1, -0.25); });
 
   // What the header allows, at its edges, is answered.
   CHECK(bisect(good, 0.5, 0.5, 1.0 / 32).overlapping_at_start);  // t0 = t1

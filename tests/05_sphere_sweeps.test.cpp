@@ -11,6 +11,7 @@ using namespace labkit;
 using namespace labkit::lab05;
 using check::Expect;
 using check::Outcome;
+using check::rejects;
 using judge::Rules;
 
 namespace {
@@ -520,18 +521,6 @@ TEST_CASE(LABKIT_STEP(L05S8) ": random exact degenerate cases", "[lab05][step8][
 // Tagged [contract], in no step: the kit runs it with the reference (students are not
 // graded on invalid input). Every kind of invalid input must be rejected with
 // std::invalid_argument whose message names the argument.
-
-namespace {
-template <class Call> void rejects(const std::string& argument, Call&& call) {
-  INFO("expected std::invalid_argument naming " << argument);
-  try {
-    call();
-    FAIL("accepted");
-  } catch (const std::invalid_argument& e) {
-    CHECK_THAT(e.what(), labkit::check::contains_text(argument));
-  }
-}
-}  // namespace
 
 TEST_CASE("L05 preconditions: invalid input is rejected, naming the argument", "[lab05][contract]") {
   const double nan = std::nan(""), inf = INFINITY;

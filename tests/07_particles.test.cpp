@@ -13,6 +13,7 @@ using namespace labkit;
 using namespace labkit::lab07;
 using check::Expect;
 using check::Outcome;
+using check::rejects;
 using judge::Rules;
 
 // What keeps each query's calls finite, in the header's words: a crash or a time-out in
@@ -783,20 +784,6 @@ TEST_CASE(LABKIT_STEP(L07S7) ": invariants, random cases", "[lab07][step7][oracl
 // ---- Preconditions (the header's "Preconditions"): the reference only ------------------
 // Tagged [contract], in no step: students are not graded on invalid input. Each call must
 // throw std::invalid_argument whose message names the argument.
-
-namespace {
-
-template <class Call> void rejects(const std::string& argument, Call&& call) {
-  INFO("invalid " << argument);
-  try {
-    call();
-    FAIL_CHECK("accepted: no std::invalid_argument");
-  } catch (const std::invalid_argument& e) {
-    CHECK_THAT(std::string(e.what()), labkit::check::contains_text(argument));
-  }
-}
-
-}  // namespace
 
 TEST_CASE("L07 preconditions: invalid input is refused, naming the argument", "[lab07][contract]") {
   const double nan = std::nan(""), inf = HUGE_VAL;

@@ -4,7 +4,9 @@
 // includes Catch through this header, which also holds the few names that differ.
 #pragma once
 
+#include <stdexcept>
 #include <string>
+#include <utility>
 
 #if __has_include(<catch2/catch_all.hpp>)
 #define LABKIT_CATCH2_MAJOR 3
@@ -26,6 +28,26 @@ inline auto contains_text(const std::string& part) {
 #else
   return Catch::Matchers::Contains(part);
 #endif
+}
+
+// A precondition's test: call() must throw std::invalid_argument whose message names
+// `argument`, as every lab header's preconditions require of invalid input. `what`, when
+// given, says which invalid input it is. Returns the message ("" when nothing was thrown).
+template <class Call> std::string rejects(const std::string& argument, Call&& call) {
+  INFO("invalid " << argument << ": the header's preconditions reject it with std::invalid_argument naming it");
+  try {
+    call();
+  } catch (const std::invalid_argument& e) {
+    INFO("message: " << e.what());
+    CHECK_THAT(std::string(e.what()), contains_text(argument));
+    return e.what();
+  }
+  FAIL_CHECK("accepted: it answered instead of throwing std::invalid_argument");
+  return "";
+}
+template <class Call> std::string rejects(const std::string& what, const std::string& argument, Call&& call) {
+  INFO(what);
+  return rejects(argument, std::forward<Call>(call));
 }
 
 }  // namespace labkit::check
