@@ -10,6 +10,7 @@
 #include "common/harness/check.h"
 #include "common/inputs/06_spatial_trees.h"
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -70,6 +71,14 @@ long long changed_order(const std::vector<Sphere>& before, const std::vector<Sph
 // split at the median along the longest axis (the handout's examples). Other seeds: each
 // node's box turned by a rotation of its own, leaves of 1 to 4 triangles.
 ObbTree obb_tree(const Mesh& mesh, int seed);
+// The header's dual traversal of two OBB trees (colliding_triangles): the leaf pairs it
+// reaches with overlapping boxes, in its order, and the box tests it makes on the way.
+// The judge bounds an answer's counts by it; the viewer draws the leaf pairs.
+struct ObbWalk {
+  std::vector<std::array<int, 2>> leaf_pairs;
+  long long box_tests = 0;
+};
+ObbWalk header_walk(const ObbTree& a, const ObbTree& b);
 // Step 7: the pairs against the exact brute force over all triangle pairs, and the counts
 // against the header's traversal (box tests, triangle tests) run on the same trees.
 Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got,

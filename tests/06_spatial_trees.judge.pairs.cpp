@@ -232,30 +232,11 @@ namespace {
 
 // The header's traversal, counted: what the answer may cost at most.
 TrianglePairs header_traversal(const ObbTree& a, const ObbTree& b) {
+  const ObbWalk walk = header_walk(a, b);
   TrianglePairs out;
-  if (a.nodes.empty() || b.nodes.empty()) return out;
-  const auto volume = [](const ObbNode& n) {
-    return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2];
-  };
-  std::vector<std::array<int, 2>> todo{{0, 0}};
-  while (!todo.empty()) {
-    const auto [i, j] = todo.back();
-    todo.pop_back();
-    const ObbNode& na = a.nodes[std::size_t(i)];
-    const ObbNode& nb = b.nodes[std::size_t(j)];
-    ++out.box_tests;
-    if (!given_boxes_overlap(na.box, nb.box)) continue;
-    const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
-    if (leaf_a && leaf_b) {
-      out.triangle_tests += (long long)na.count * nb.count;
-      continue;
-    }
-    if (leaf_b || (!leaf_a && volume(na) >= volume(nb))) {
-      todo.push_back({na.right, j}), todo.push_back({na.left, j});
-    } else {
-      todo.push_back({i, nb.right}), todo.push_back({i, nb.left});
-    }
-  }
+  out.box_tests = walk.box_tests;
+  for (const auto& [i, j] : walk.leaf_pairs)
+    out.triangle_tests += (long long)a.nodes[std::size_t(i)].count * b.nodes[std::size_t(j)].count;
   return out;
 }
 
@@ -276,6 +257,34 @@ bool pair_in_doubt(const Triangle& s, const Triangle& t, double tol) {
 }
 
 }  // namespace
+
+ObbWalk header_walk(const ObbTree& a, const ObbTree& b) {
+  ObbWalk walk;
+  if (a.nodes.empty() || b.nodes.empty()) return walk;
+  const auto volume = [](const ObbNode& n) {
+    return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2];
+  };
+  std::vector<std::array<int, 2>> todo{{0, 0}};
+  while (!todo.empty()) {
+    const auto [i, j] = todo.back();
+    todo.pop_back();
+    const ObbNode& na = a.nodes[std::size_t(i)];
+    const ObbNode& nb = b.nodes[std::size_t(j)];
+    ++walk.box_tests;
+    if (!given_boxes_overlap(na.box, nb.box)) continue;
+    const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
+    if (leaf_a && leaf_b) {
+      walk.leaf_pairs.push_back({i, j});
+      continue;
+    }
+    if (leaf_b || (!leaf_a && volume(na) >= volume(nb))) {
+      todo.push_back({na.right, j}), todo.push_back({na.left, j});
+    } else {
+      todo.push_back({i, nb.right}), todo.push_back({i, nb.left});
+    }
+  }
+  return walk;
+}
 
 Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got, Rules rules) {
   // The exact brute force: every pair whose bounding boxes touch, decided exactly.

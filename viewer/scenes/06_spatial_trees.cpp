@@ -154,16 +154,12 @@ void SpatialTreesScene::frame_inputs() {
 
 std::string SpatialTreesScene::token() const {
   switch (mode_) {
-    case Mode::kd:
-      return replay_token(query::first_hit, TreeQuery{mesh_, segment_, tree_seed_});
-    case Mode::bsp:
-      return replay_token(query::classify, PointQuery{mesh_, point_});
+    case Mode::kd: return replay_token(query::first_hit, TreeQuery{mesh_, segment_, tree_seed_});
+    case Mode::bsp: return replay_token(query::classify, PointQuery{mesh_, point_});
     case Mode::bvh:
       return replay_token(query::colliding_triangles, BvhQuery{mesh_, mesh_b_, tree_seed_, tree_seed_b_, true});
-    case Mode::frames:
-      return replay_token(query::sweep_frames, SweepCase{frames_});
-    case Mode::spheres:
-      break;
+    case Mode::frames: return replay_token(query::sweep_frames, SweepCase{frames_});
+    case Mode::spheres: break;
   }
   return replay_token(query::overlapping_pairs, SphereSet{spheres_});
 }
@@ -328,7 +324,7 @@ void SpatialTreesScene::update_bvh() {
   });
   Step s7 = judged("L06S7", "colliding_triangles on the checker's OBB trees", bvh_,
                    [&](const BvhRun& got) { return judge::colliding_triangles(in, tree_a_, tree_b_, got); });
-  leaf_pairs_ = reached_leaf_pairs(tree_a_, tree_b_);
+  leaf_pairs_ = judge::header_walk(tree_a_, tree_b_).leaf_pairs;
   if (bvh_)
     s7.rows = {{"pairs that meet", std::to_string(bvh_->answer.pairs.size()), ""},
                {"box tests", std::to_string(bvh_->answer.box_tests),

@@ -31,7 +31,6 @@ KdTree median_tree(const Mesh& mesh, int depth);
 // The part [t0, t1] of the segment inside the closed box (t0 > t1: it misses the box).
 std::array<double, 2> segment_span(const Aabb& box, const Segment& s);
 bool segment_meets(const Aabb& box, const Segment& s);
-std::vector<std::array<int, 2>> reached_leaf_pairs(const ObbTree& tree_a, const ObbTree& tree_b);
 
 class SpatialTreesScene : public Scene {
  public:

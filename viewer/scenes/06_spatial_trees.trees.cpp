@@ -101,33 +101,4 @@ bool segment_meets(const Aabb& box, const Segment& s) {
   return span[0] <= span[1];
 }
 
-// The leaf pairs the header's traversal of two OBB trees reaches with overlapping boxes.
-std::vector<std::array<int, 2>> reached_leaf_pairs(const ObbTree& tree_a, const ObbTree& tree_b) {
-  std::vector<std::array<int, 2>> leaf_pairs;
-  if (!tree_a.nodes.empty() && !tree_b.nodes.empty()) {
-    std::vector<std::array<int, 2>> todo{{0, 0}};
-    while (!todo.empty()) {
-      const auto [i, j] = todo.back();
-      todo.pop_back();
-      const ObbNode& na = tree_a.nodes[std::size_t(i)];
-      const ObbNode& nb = tree_b.nodes[std::size_t(j)];
-      if (!given_boxes_overlap(na.box, nb.box)) continue;
-      const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
-      if (leaf_a && leaf_b) {
-        leaf_pairs.push_back({i, j});
-        continue;
-      }
-      const auto volume = [](const ObbNode& n) {
-        return n.box.half_extents[0] * n.box.half_extents[1] * n.box.half_extents[2];
-      };
-      if (leaf_b || (!leaf_a && volume(na) >= volume(nb))) {
-        todo.push_back({na.right, j}), todo.push_back({na.left, j});
-      } else {
-        todo.push_back({i, nb.right}), todo.push_back({i, nb.left});
-      }
-    }
-  }
-  return leaf_pairs;
-}
-
 }  // namespace viewer::spatial_trees
