@@ -141,20 +141,11 @@ std::optional<ArchiveMember> tar_member(const std::string& line) {
   ArchiveMember m;
   m.name = *name;
   switch (mode[0]) {
-    case '-':
-      m.kind = Kind::file;
-      break;
-    case 'd':
-      m.kind = Kind::folder;
-      break;
-    case 'l':
-      m.kind = Kind::symlink;
-      break;
-    case 'h':
-      m.kind = Kind::hard_link;
-      break;
-    default:
-      m.kind = Kind::special;
+    case '-': m.kind = Kind::file; break;
+    case 'd': m.kind = Kind::folder; break;
+    case 'l': m.kind = Kind::symlink; break;
+    case 'h': m.kind = Kind::hard_link; break;
+    default: m.kind = Kind::special;
   }
   if (!m.name.empty() && m.name.back() == '/') m.kind = Kind::folder;
   m.size = size.find_first_not_of("0123456789") == std::string::npos ? std::stoull(size.substr(0, 19)) : 0;

@@ -27,12 +27,9 @@ using term::yellow;
 std::string coloured_status(Status s) {
   const std::string word = status_word(s);
   switch (s) {
-    case Status::passed:
-      return green(word);
-    case Status::not_implemented:
-      return yellow(word);
-    default:
-      return red(word);
+    case Status::passed: return green(word);
+    case Status::not_implemented: return yellow(word);
+    default: return red(word);
   }
 }
 

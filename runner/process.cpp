@@ -195,24 +195,15 @@ Run run(const std::vector<std::string>& argv, const Environment& env, const Limi
 
 std::string signal_name(int signal) {
   switch (signal) {
-    case SIGSEGV:
-      return "segmentation fault (SIGSEGV)";
-    case SIGBUS:
-      return "bus error (SIGBUS)";
-    case SIGFPE:
-      return "arithmetic exception (SIGFPE)";
-    case SIGILL:
-      return "illegal instruction (SIGILL)";
-    case SIGABRT:
-      return "aborted (SIGABRT)";
-    case SIGKILL:
-      return "killed (SIGKILL)";
-    case SIGTERM:
-      return "terminated (SIGTERM)";
-    case SIGXCPU:
-      return "CPU time limit (SIGXCPU)";
-    default:
-      return std::string("signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
+    case SIGSEGV: return "segmentation fault (SIGSEGV)";
+    case SIGBUS: return "bus error (SIGBUS)";
+    case SIGFPE: return "arithmetic exception (SIGFPE)";
+    case SIGILL: return "illegal instruction (SIGILL)";
+    case SIGABRT: return "aborted (SIGABRT)";
+    case SIGKILL: return "killed (SIGKILL)";
+    case SIGTERM: return "terminated (SIGTERM)";
+    case SIGXCPU: return "CPU time limit (SIGXCPU)";
+    default: return std::string("signal ") + std::to_string(signal) + " (" + strsignal(signal) + ")";
   }
 }
 

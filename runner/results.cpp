@@ -11,14 +11,10 @@ namespace {
 
 std::string lab_state(const LabGrade& l) {
   switch (l.state) {
-    case LabGrade::State::missing:
-      return "not submitted";
-    case LabGrade::State::not_built:
-      return "does not compile";
-    case LabGrade::State::pending:
-      return "not graded yet";
-    case LabGrade::State::graded:
-      break;
+    case LabGrade::State::missing: return "not submitted";
+    case LabGrade::State::not_built: return "does not compile";
+    case LabGrade::State::pending: return "not graded yet";
+    case LabGrade::State::graded: break;
   }
   return "";
 }
@@ -49,26 +45,14 @@ std::string xml_escape(const std::string& text) {
   std::string out;
   for (unsigned char c : text) {
     switch (c) {
-      case '&':
-        out += "&amp;";
-        break;
-      case '<':
-        out += "&lt;";
-        break;
-      case '>':
-        out += "&gt;";
-        break;
-      case '"':
-        out += "&quot;";
-        break;
-      case '\'':
-        out += "&apos;";
-        break;
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&apos;"; break;
       case '\n':
       case '\t':
-      case '\r':
-        out += char(c);
-        break;
+      case '\r': out += char(c); break;
       default:
         if (c < 0x20)
           out += "?";  // not allowed in XML 1.0, even escaped

@@ -292,15 +292,9 @@ Confined Sandbox::confine(const std::vector<std::string>& argv, const std::strin
   }
   c.limits = limits;
   switch (kind_) {
-    case Kind::bubblewrap:
-      c.argv = bubblewrap(argv, writable, readable, tmp_bytes_);
-      break;
-    case Kind::landlock:
-      c.argv = launcher({}, argv, readable, writable);
-      break;
-    case Kind::none:
-      c.argv = argv;
-      break;
+    case Kind::bubblewrap: c.argv = bubblewrap(argv, writable, readable, tmp_bytes_); break;
+    case Kind::landlock: c.argv = launcher({}, argv, readable, writable); break;
+    case Kind::none: c.argv = argv; break;
   }
   return c;
 }

@@ -17,26 +17,16 @@ namespace variable = labkit::report::variable;
 
 std::string status_word(Status s) {
   switch (s) {
-    case Status::passed:
-      return "passed";
-    case Status::failing:
-      return "failing";
-    case Status::not_implemented:
-      return "not implemented yet";
-    case Status::crashed:
-      return "crashed";
-    case Status::timed_out:
-      return "timed out";
-    case Status::flooded:
-      return "too much output";
-    case Status::out_of_memory:
-      return "out of memory";
-    case Status::exited_early:
-      return "exited early";
-    case Status::no_tests:
-      return "no tests (kit error)";
-    case Status::not_built:
-      return "does not compile";
+    case Status::passed: return "passed";
+    case Status::failing: return "failing";
+    case Status::not_implemented: return "not implemented yet";
+    case Status::crashed: return "crashed";
+    case Status::timed_out: return "timed out";
+    case Status::flooded: return "too much output";
+    case Status::out_of_memory: return "out of memory";
+    case Status::exited_early: return "exited early";
+    case Status::no_tests: return "no tests (kit error)";
+    case Status::not_built: return "does not compile";
   }
   return "?";
 }

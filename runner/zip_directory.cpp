@@ -93,14 +93,10 @@ ArchiveMember::Kind zip_kind(unsigned host, std::uint32_t attributes, const std:
   if (host == 3 && mode != 0) {  // made on Unix: the high half is the file's mode
     switch (mode & 0170000) {
       case 0:
-      case 0100000:
-        return Kind::file;
-      case 0040000:
-        return Kind::folder;
-      case 0120000:
-        return Kind::symlink;
-      default:
-        return Kind::special;
+      case 0100000: return Kind::file;
+      case 0040000: return Kind::folder;
+      case 0120000: return Kind::symlink;
+      default: return Kind::special;
     }
   }
   return attributes & 0x10 ? Kind::folder : Kind::file;  // MS-DOS attributes: 0x10 is a folder

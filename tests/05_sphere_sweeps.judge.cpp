@@ -14,12 +14,9 @@ namespace labkit::lab05 {
 
 std::string describe(SweepStatus s) {
   switch (s) {
-    case SweepStatus::none:
-      return "none";
-    case SweepStatus::overlapping:
-      return "overlapping";
-    case SweepStatus::contact:
-      return "contact";
+    case SweepStatus::none: return "none";
+    case SweepStatus::overlapping: return "overlapping";
+    case SweepStatus::contact: return "contact";
   }
   return "an invalid status";
 }

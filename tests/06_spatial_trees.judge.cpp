@@ -148,14 +148,9 @@ KdTree checker_tree(const Mesh& mesh, int seed) {
         split = std::clamp(t[random.below(3)][axis], lo, hi);
         break;
       }
-      case 2:
-        split = lo + (hi - lo) / 2;
-        break;
-      case 3:
-        split = random.below(2) ? lo : hi;
-        break;  // on a wall of the cell: one side is flat
-      default:
-        split = std::clamp(lo + (hi - lo) * random.uniform(), lo, hi);
+      case 2: split = lo + (hi - lo) / 2; break;
+      case 3: split = random.below(2) ? lo : hi; break;  // on a wall of the cell: one side is flat
+      default: split = std::clamp(lo + (hi - lo) * random.uniform(), lo, hi);
     }
     std::vector<int> below, above;
     for (int i : list) {

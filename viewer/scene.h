@@ -32,32 +32,22 @@ enum class Verdict { agree, disagree, ambiguous, stub, none };
 
 inline Color colour(Verdict v) {
   switch (v) {
-    case Verdict::agree:
-      return palette::agree;
-    case Verdict::disagree:
-      return palette::disagree;
-    case Verdict::ambiguous:
-      return palette::ambiguous;
-    case Verdict::stub:
-      return palette::stub;
-    case Verdict::none:
-      break;
+    case Verdict::agree: return palette::agree;
+    case Verdict::disagree: return palette::disagree;
+    case Verdict::ambiguous: return palette::ambiguous;
+    case Verdict::stub: return palette::stub;
+    case Verdict::none: break;
   }
   return palette::muted;
 }
 
 inline const char* word(Verdict v) {
   switch (v) {
-    case Verdict::agree:
-      return "agrees";
-    case Verdict::disagree:
-      return "disagrees";
-    case Verdict::ambiguous:
-      return "ambiguous: any answer passes";
-    case Verdict::stub:
-      return "not implemented yet";
-    case Verdict::none:
-      break;
+    case Verdict::agree: return "agrees";
+    case Verdict::disagree: return "disagrees";
+    case Verdict::ambiguous: return "ambiguous: any answer passes";
+    case Verdict::stub: return "not implemented yet";
+    case Verdict::none: break;
   }
   return "";
 }

@@ -148,24 +148,12 @@ rc::Gen<TrianglePlane> plane_case(bool exact, Heights kind, bool nudge) {
     const double side = *rc::gen::element(-1.0, 1.0);
     std::array<double, 3> h{};
     switch (kind) {
-      case Heights::generic:
-        h = {*coefficient(exact, 4), *coefficient(exact, 4), *coefficient(exact, 4)};
-        break;
-      case Heights::one_on:
-        h = {0, off(), off()};
-        break;
-      case Heights::two_on:
-        h = {0, 0, off()};
-        break;
-      case Heights::all_on:
-        h = {0, 0, 0};
-        break;
-      case Heights::touch_vertex:
-        h = {0, side * std::abs(off()), side * std::abs(off())};
-        break;
-      case Heights::touch_edge:
-        h = {0, 0, side * std::abs(off())};
-        break;
+      case Heights::generic: h = {*coefficient(exact, 4), *coefficient(exact, 4), *coefficient(exact, 4)}; break;
+      case Heights::one_on: h = {0, off(), off()}; break;
+      case Heights::two_on: h = {0, 0, off()}; break;
+      case Heights::all_on: h = {0, 0, 0}; break;
+      case Heights::touch_vertex: h = {0, side * std::abs(off()), side * std::abs(off())}; break;
+      case Heights::touch_edge: h = {0, 0, side * std::abs(off())}; break;
     }
     if (nudge)
       for (double& x : h)
@@ -268,18 +256,12 @@ struct ExactFrustum {
   // Plane i (left, right, bottom, top, near, far) as a local normal and offset.
   Plane local_plane(int i) const {
     switch (i) {
-      case 0:
-        return {Vec3(qx, 0, px), qx * wx};  // qx (X + wx) + px Z >= 0
-      case 1:
-        return {Vec3(-qx, 0, px), qx * wx};
-      case 2:
-        return {Vec3(0, qy, py), qy * wy};
-      case 3:
-        return {Vec3(0, -qy, py), qy * wy};
-      case 4:
-        return {Vec3(0, 0, 1), -near};
-      default:
-        return {Vec3(0, 0, -1), far};
+      case 0: return {Vec3(qx, 0, px), qx * wx};  // qx (X + wx) + px Z >= 0
+      case 1: return {Vec3(-qx, 0, px), qx * wx};
+      case 2: return {Vec3(0, qy, py), qy * wy};
+      case 3: return {Vec3(0, -qy, py), qy * wy};
+      case 4: return {Vec3(0, 0, 1), -near};
+      default: return {Vec3(0, 0, -1), far};
     }
   }
   Plane plane(int i) const {
@@ -478,8 +460,7 @@ rc::Gen<TriangleFrustum> exact_case() {
         t = {on_line() + e, on_line() - 2 * e, on_line() + e};
         break;
       }
-      default:
-        t = {around(f), around(f), around(f)};
+      default: t = {around(f), around(f), around(f)};
     }
     Frustum planes = f.frustum();
     const int k = *rc::gen::inRange(1, 9);
@@ -511,14 +492,10 @@ Vec3 anchor(const CameraFrustum& cf) {
   const auto& k = cf.corners;
   const int i = *rc::gen::inRange(0, 8), j = *rc::gen::inRange(0, 8), l = *rc::gen::inRange(0, 8);
   switch (*rc::gen::inRange(0, 5)) {
-    case 0:
-      return k[std::size_t(i)];
-    case 1:
-      return cf.center;
-    case 2:
-      return cf.camera.eye;
-    case 3:
-      return (k[std::size_t(i)] + k[std::size_t(i ^ (1 << (j % 3)))]) / 2;  // an edge's middle
+    case 0: return k[std::size_t(i)];
+    case 1: return cf.center;
+    case 2: return cf.camera.eye;
+    case 3: return (k[std::size_t(i)] + k[std::size_t(i ^ (1 << (j % 3)))]) / 2;  // an edge's middle
     default:
       return (k[std::size_t(i)] + k[std::size_t(i ^ (1 << (j % 3)))] + k[std::size_t(i ^ (1 << (l % 3)))] +
               k[std::size_t(i ^ (1 << (j % 3)) ^ (1 << (l % 3)))]) /

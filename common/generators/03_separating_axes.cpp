@@ -72,10 +72,8 @@ rc::Gen<Mat3> quaternion_rotation() {
 Mat3 related_axes(const Mat3& a, bool exact) {
   if (exact) return a * *signed_permutation();
   switch (*rc::gen::inRange(0, 4)) {
-    case 0:
-      return *rotation();
-    case 1:
-      return a * *signed_permutation();
+    case 0: return *rotation();
+    case 1: return a * *signed_permutation();
     case 2: {
       const Vec3 axis = Vec3(*direction(1.0, 4)).normalized();
       const double angle = (*rc::gen::element(-1.0, 1.0)) * std::ldexp(1.0, -*rc::gen::inRange(4, 53));
@@ -236,16 +234,11 @@ BoxPair far_away(BoxPair p) {
 
 BoxPair pair_of(BoxGrid g) {
   switch (*rc::gen::weightedElement<int>({{4, 0}, {3, 1}, {3, 2}, {2, 3}, {1, 4}})) {
-    case 0:
-      return nearby(g);
-    case 1:
-      return face_contact(g);
-    case 2:
-      return edge_contact(g);
-    case 3:
-      return corner_contact(g);
-    default:
-      return nested(g);
+    case 0: return nearby(g);
+    case 1: return face_contact(g);
+    case 2: return edge_contact(g);
+    case 3: return corner_contact(g);
+    default: return nested(g);
   }
 }
 
@@ -280,15 +273,9 @@ TrianglePair through_point(Grid g) {
   const Vec3 d1 = grid_direction(g), d2 = grid_direction(g);
   Triangle t1;
   switch (*rc::gen::weightedElement<int>({{3, 0}, {1, 1}, {1, 2}})) {
-    case 0:
-      t1 = {x + d1, x + d2, x - d1 - d2};
-      break;
-    case 1:
-      t1 = {x, x + d1, x + d2};
-      break;
-    default:
-      t1 = {x + d1, x - (*rc::gen::inRange(1, 17) / 8.0) * d1, x + d2};
-      break;
+    case 0: t1 = {x + d1, x + d2, x - d1 - d2}; break;
+    case 1: t1 = {x, x + d1, x + d2}; break;
+    default: t1 = {x + d1, x - (*rc::gen::inRange(1, 17) / 8.0) * d1, x + d2}; break;
   }
   // On rounded input, three in four are moved off the contact by 1 to 8 times 1e-8 S along
   // T0's normal (10 tol: just outside the band where the check calls them ambiguous),
@@ -547,15 +534,9 @@ rc::Gen<BoxOnAxis> box_on_axis() {
     const Grid g = *grid(false);
     BoxOnAxis in{grid_box(g), Vec3::UnitX()};
     switch (*rc::gen::inRange(0, 4)) {
-      case 0:
-        in.axis = *direction(1.0, 8);
-        break;  // a lattice direction, any length
-      case 1:
-        in.axis = rounded_unit();
-        break;
-      case 2:
-        in.axis = in.box.axes.col(*rc::gen::inRange(0, 3));
-        break;  // its own axis
+      case 0: in.axis = *direction(1.0, 8); break;  // a lattice direction, any length
+      case 1: in.axis = rounded_unit(); break;
+      case 2: in.axis = in.box.axes.col(*rc::gen::inRange(0, 3)); break;  // its own axis
       default:  // perpendicular to one of its axes, to rounding: |A_k . L| is noise
         in.axis = in.box.axes.col(0).cross(in.box.axes.col(*rc::gen::inRange(1, 3)));
     }
@@ -606,20 +587,13 @@ rc::Gen<TrianglePair> triangle_pair() {
       rc::gen::exec([] {
         const Grid g = *grid(false);
         switch (*rc::gen::weightedElement<int>({{6, 0}, {8, 1}, {3, 2}, {4, 3}, {4, 4}, {1, 5}, {8, 6}})) {
-          case 0:
-            return generic_triangles(g);
-          case 1:
-            return through_point(g);
-          case 2:
-            return lifted_coplanar();
-          case 3:
-            return near_coplanar();
-          case 4:
-            return near_touching();
-          case 5:
-            return zero_area(g);
-          default:
-            return needles();
+          case 0: return generic_triangles(g);
+          case 1: return through_point(g);
+          case 2: return lifted_coplanar();
+          case 3: return near_coplanar();
+          case 4: return near_touching();
+          case 5: return zero_area(g);
+          default: return needles();
         }
       }),
       [](const TrianglePair& p) { return in_domain(p.t0) && in_domain(p.t1); });
@@ -689,12 +663,9 @@ rc::Gen<TrianglePair> exact_triangle_pair() {
   return rc::gen::exec([] {
     const Grid g = *grid(true);
     switch (*rc::gen::weightedElement<int>({{4, 0}, {3, 1}, {1, 2}})) {
-      case 0:
-        return through_point(g);
-      case 1:
-        return coplanar(g);
-      default:
-        return zero_area(g);
+      case 0: return through_point(g);
+      case 1: return coplanar(g);
+      default: return zero_area(g);
     }
   });
 }

@@ -98,12 +98,9 @@ rc::Gen<PointSegmentPair> point_segment_families(bool exact) {
     const Grid g = *grid(exact);
     const Segment s = segment(g);
     switch (*rc::gen::inRange(0, 4)) {
-      case 0:
-        return PointSegmentPair{grid_point(g), s};  // anywhere
-      case 1:
-        return PointSegmentPair{along(g, s.a, s.b - s.a), s};  // on its line
-      case 2:
-        return PointSegmentPair{s.a + fraction(g) * (s.b - s.a) + grid_direction(g), s};
+      case 0: return PointSegmentPair{grid_point(g), s};             // anywhere
+      case 1: return PointSegmentPair{along(g, s.a, s.b - s.a), s};  // on its line
+      case 2: return PointSegmentPair{s.a + fraction(g) * (s.b - s.a) + grid_direction(g), s};
       default: {  // a hair off it
         if (exact) return PointSegmentPair{s.b, s};
         const Vec3 x = s.a + fraction(g) * (s.b - s.a);
@@ -119,8 +116,7 @@ rc::Gen<SegmentPair> segment_pair_families(bool exact) {
     const Segment first = segment(g);
     const Vec3 d0 = first.b - first.a;
     switch (*rc::gen::weightedElement<int>({{2, 0}, {2, 1}, {2, 2}, {3, 3}, {2, 4}, {1, 5}, {exact ? 0 : 2, 6}})) {
-      case 0:
-        return SegmentPair{first, segment(g)};
+      case 0: return SegmentPair{first, segment(g)};
       case 6: {  // crossing (or a hair apart) at an angle of 2^-20 to 2^-27 inside both: only
                  // |d0 x d1|^2 keeps the lines' pair; a c - b^2 is then rounding noise (below
                  // about 2^-24, more than the tolerance)
@@ -182,14 +178,10 @@ rc::Gen<PointRectanglePair> point_rectangle_families(bool exact) {
     const Vec3 x = rectangle_point(g, r, *rc::gen::arbitrary<bool>());
     const Vec3 n = normal_of(r);
     switch (*rc::gen::inRange(0, 4)) {
-      case 0:
-        return PointRectanglePair{grid_point(g), r};
-      case 1:
-        return PointRectanglePair{x, r};  // in its plane
-      case 2:
-        return PointRectanglePair{x + grid_length(g) * n, r};
-      default:
-        return PointRectanglePair{exact ? x : Vec3(x + hair(largest({r.center})) * n), r};
+      case 0: return PointRectanglePair{grid_point(g), r};
+      case 1: return PointRectanglePair{x, r};  // in its plane
+      case 2: return PointRectanglePair{x + grid_length(g) * n, r};
+      default: return PointRectanglePair{exact ? x : Vec3(x + hair(largest({r.center})) * n), r};
     }
   });
 }
@@ -202,15 +194,13 @@ rc::Gen<SegmentRectanglePair> segment_rectangle_families(bool exact) {
     const Vec3 x = rectangle_point(g, r, *rc::gen::arbitrary<bool>());
     const Vec3 y = rectangle_point(g, r, *rc::gen::arbitrary<bool>());
     switch (*rc::gen::weightedElement<int>({{2, 0}, {3, 1}, {2, 2}, {2, 3}, {2, 4}, {1, 5}})) {
-      case 0:
-        return SegmentRectanglePair{segment(g), r};
+      case 0: return SegmentRectanglePair{segment(g), r};
       case 1: {  // through the plane at x (inside, on a side, or outside)
         const Vec3 d = grid_direction(g);
         return SegmentRectanglePair{{x + d, x - fraction(g) * d}, r};
       }
-      case 2:
-        return SegmentRectanglePair{{x, y}, r};  // in the plane
-      case 3: {                                  // parallel to the plane, above it
+      case 2: return SegmentRectanglePair{{x, y}, r};  // in the plane
+      case 3: {                                        // parallel to the plane, above it
         const Vec3 lift = grid_length(g) * n;
         return SegmentRectanglePair{{x + lift, y + lift}, r};
       }
@@ -218,8 +208,7 @@ rc::Gen<SegmentRectanglePair> segment_rectangle_families(bool exact) {
         const double h = exact ? 0.0 : hair(largest({r.center, x, y}));
         return SegmentRectanglePair{{x + h * n, y + grid_length(g) * n}, r};
       }
-      default:
-        return SegmentRectanglePair{{x, x}, r};  // zero length
+      default: return SegmentRectanglePair{{x, x}, r};  // zero length
     }
   });
 }
@@ -231,9 +220,8 @@ rc::Gen<RectanglePair> rectangle_pair_families(bool exact) {
     Rectangle second = rectangle(g);
     const Vec3 n = normal_of(first);
     switch (*rc::gen::weightedElement<int>({{2, 0}, {2, 1}, {2, 2}, {2, 3}})) {
-      case 0:
-        break;  // anywhere
-      case 1:   // parallel: the same axes, stacked or side by side in one plane
+      case 0: break;  // anywhere
+      case 1:         // parallel: the same axes, stacked or side by side in one plane
         second.u = first.u;
         second.v = first.v;
         second.center = rectangle_point(g, first, false) + *rc::gen::element(0.0, 0.0, 1.0) * grid_length(g) * n;
@@ -289,19 +277,15 @@ Vec3 velocity_for(const Grid& g, const Plane& plane, const Vec3& center) {
   const double side = plane.value(center) >= 0 ? 1.0 : -1.0;
   const double rate = plane.normal.dot(d);
   switch (*rc::gen::weightedElement<int>({{4, 0}, {1, 1}, {1, 2}, {1, 3}, {1, 4}})) {
-    case 0:
-      return side * rate > 0 ? Vec3(-d) : d;  // toward
-    case 1:
-      return side * rate < 0 ? Vec3(-d) : d;  // away
-    case 2: {                                 // along the plane
+    case 0: return side * rate > 0 ? Vec3(-d) : d;  // toward
+    case 1: return side * rate < 0 ? Vec3(-d) : d;  // away
+    case 2: {                                       // along the plane
       Vec3 along = plane.normal.cross(d);
       if (!g.exact) along /= std::max(1.0, plane.normal.cwiseAbs().maxCoeff());
       return along;
     }
-    case 3:
-      return Vec3::Zero();
-    default:
-      return d;
+    case 3: return Vec3::Zero();
+    default: return d;
   }
 }
 
@@ -322,9 +306,8 @@ rc::Gen<SpherePlaneMotion> sphere_plane_families(bool exact) {
     const int family =
         *rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}});
     switch (family) {
-      case 0:
-        break;   // anywhere
-      case 1: {  // touching at t = 0 exactly (exact lattice), or decisively near it, beside x
+      case 0: break;  // anywhere
+      case 1: {       // touching at t = 0 exactly (exact lattice), or decisively near it, beside x
         Vec3 beside = plane.normal.cross(grid_direction(g));
         if (!exact) beside /= plane.normal.cwiseAbs().maxCoeff();
         center = x + beside + side * r * unit;
@@ -408,8 +391,7 @@ rc::Gen<SphereSphereMotion> sphere_sphere_families(bool exact) {
         m.v1 = m.v0;
         return m;
       }
-      default:
-        return exact ? *soon_spheres(true) : *grazing_spheres();
+      default: return exact ? *soon_spheres(true) : *grazing_spheres();
     }
   });
 }
@@ -621,8 +603,7 @@ rc::Gen<BoxPlaneMotion> box_plane_families(bool exact) {
     const int family =
         *rc::gen::weightedElement<int>({{exact ? 2 : 6, 0}, {2, 1}, {exact ? 2 : 1, 2}, {exact ? 0 : 3, 3}});
     switch (family) {
-      case 0:
-        break;
+      case 0: break;
       case 1:  // resting on the plane at t = 0 exactly (exact lattice), or decisively near it
         box.center = x + side * reach * unit;
         break;

@@ -53,10 +53,8 @@ double radius_total(double d, double size) {
       return d > hair && *rc::gen::arbitrary<bool>() ? d - hair : d + hair;
     }
     // Cores that meet (d = 0) with radii 0 touch exactly: step 7's; here they overlap.
-    case 2:
-      return d > 0 ? d * *rc::gen::element(0.5, 0.875, 1.125, 2.0) : decisive_hair(size);
-    default:
-      return *rc::gen::inRange(1, 9) / 4.0 * std::max(size, 1e-300);
+    case 2: return d > 0 ? d * *rc::gen::element(0.5, 0.875, 1.125, 2.0) : decisive_hair(size);
+    default: return *rc::gen::inRange(1, 9) / 4.0 * std::max(size, 1e-300);
   }
 }
 

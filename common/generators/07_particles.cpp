@@ -50,11 +50,8 @@ std::vector<Plane> plane_set(const Grid& g, const Vec3& anchor) {
   };
   std::vector<Plane> planes;
   switch (kind) {
-    case 0:
-      break;
-    case 1:
-      planes.push_back(through(anchor, normal()));
-      break;
+    case 0: break;
+    case 1: planes.push_back(through(anchor, normal())); break;
     case 2:
     case 3:
       for (int i = 0; i < kind; ++i) {
@@ -126,14 +123,10 @@ Segment through_point(const Grid& g, const Vec3& x, const Vec3& normal) {
   const Vec3 d = *grid_direction(g);
   const int k = *rc::gen::inRange(1, 17);
   switch (*rc::gen::inRange(0, g.exact ? 5 : 7)) {
-    case 0:
-      return {x + d, x - (k / 8.0) * d};
-    case 1:
-      return {x, x + d};
-    case 2:
-      return {x, x - d};
-    case 3:
-      return {x + d, x};
+    case 0: return {x + d, x - (k / 8.0) * d};
+    case 1: return {x, x + d};
+    case 2: return {x, x - d};
+    case 3: return {x + d, x};
     case 4: {
       auto [u, v] = in_plane(normal);
       // A triangle's normal (large): only roughly in its plane, but a is on it. Exact cases
@@ -151,8 +144,7 @@ Segment through_point(const Grid& g, const Vec3& x, const Vec3& normal) {
       const Vec3 b = eighths(x, unit_of(g) * u.normalized(), *rc::gen::inRange(1, 17), Vec3::Zero(), 0);
       return {x + *integer(4) * *tiny(20, 50) * lift, b + *integer(4) * *tiny(20, 50) * lift};
     }
-    default:
-      return {x, x};
+    default: return {x, x};
   }
 }
 

@@ -166,28 +166,20 @@ Mesh soup_mesh(int triangles, std::uint64_t seed) {
 
 const char* name_of(MeshKind kind) {
   switch (kind) {
-    case MeshKind::sphere:
-      return "sphere";
-    case MeshKind::torus:
-      return "torus";
-    case MeshKind::terrain:
-      return "terrain";
-    case MeshKind::soup:
-      return "soup";
+    case MeshKind::sphere: return "sphere";
+    case MeshKind::torus: return "torus";
+    case MeshKind::terrain: return "terrain";
+    case MeshKind::soup: return "soup";
   }
   return "?";
 }
 
 Mesh mesh_of_kind(MeshKind kind, int triangles, std::uint64_t seed) {
   switch (kind) {
-    case MeshKind::sphere:
-      return sphere_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.5);
-    case MeshKind::torus:
-      return torus_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.35, 0.12);
-    case MeshKind::terrain:
-      return terrain_mesh(triangles, seed);
-    case MeshKind::soup:
-      return soup_mesh(triangles, seed);
+    case MeshKind::sphere: return sphere_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.5);
+    case MeshKind::torus: return torus_mesh(triangles, Vec3(0.5, 0.5, 0.5), 0.35, 0.12);
+    case MeshKind::terrain: return terrain_mesh(triangles, seed);
+    case MeshKind::soup: return soup_mesh(triangles, seed);
   }
   return {};
 }
@@ -532,12 +524,9 @@ rc::Gen<Segment> exact_segment_near(const Mesh& m) {
     if (kind == 2) d[(major + 2) % 3] = step * *integer(int(std::abs(d[major]) / step));
     // Both ends, one end or neither on the anchor.
     switch (*rc::gen::inRange(0, 3)) {
-      case 0:
-        return Segment{x - d, x + d};
-      case 1:
-        return Segment{x, x + d};
-      default:
-        return Segment{x - d, x};
+      case 0: return Segment{x - d, x + d};
+      case 1: return Segment{x, x + d};
+      default: return Segment{x - d, x};
     }
   });
 }

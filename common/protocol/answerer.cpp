@@ -71,22 +71,14 @@ class Frames {
 
 std::string signal_words(int s) {
   switch (s) {
-    case SIGSEGV:
-      return "segmentation fault: a read or write through a bad pointer or past an array's end";
-    case SIGFPE:
-      return "floating-point exception: an integer division by zero";
-    case SIGABRT:
-      return "aborted: a failed assert(), or an exception nobody caught";
-    case SIGBUS:
-      return "bus error: a misaligned or unmapped memory access";
-    case SIGILL:
-      return "illegal instruction";
-    case SIGKILL:
-      return "killed (SIGKILL): out of memory, or a limit was reached";
-    case SIGXCPU:
-      return "killed: the CPU-time limit was reached";
-    case SIGXFSZ:
-      return "killed: it wrote a file beyond the size limit";
+    case SIGSEGV: return "segmentation fault: a read or write through a bad pointer or past an array's end";
+    case SIGFPE: return "floating-point exception: an integer division by zero";
+    case SIGABRT: return "aborted: a failed assert(), or an exception nobody caught";
+    case SIGBUS: return "bus error: a misaligned or unmapped memory access";
+    case SIGILL: return "illegal instruction";
+    case SIGKILL: return "killed (SIGKILL): out of memory, or a limit was reached";
+    case SIGXCPU: return "killed: the CPU-time limit was reached";
+    case SIGXFSZ: return "killed: it wrote a file beyond the size limit";
   }
   return std::string("killed by signal ") + std::to_string(s) + " (" + strsignal(s) + ")";
 }

@@ -29,10 +29,8 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
     case Response::Kind::timed_out:
       throw Failed(kNoAnswer, "your code did not finish this call: " + response.detail +
                                   ". Every loop needs a bound that the header's rules guarantee");
-    case Response::Kind::broken:
-      throw Failed("an answer that cannot be read", response.detail);
-    case Response::Kind::answered:
-      break;
+    case Response::Kind::broken: throw Failed("an answer that cannot be read", response.detail);
+    case Response::Kind::answered: break;
   }
   wire::Reader r(response.bytes);
   Status status;
@@ -67,13 +65,11 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
                      "your code ran out of memory during this call: an allocation "
                      "too large for the memory limit, or one that never stops growing?");
       throw std::runtime_error(message);
-    case Status::rejected:
-      throw std::invalid_argument(message);
+    case Status::rejected: throw std::invalid_argument(message);
     case Status::unknown_call:
       throw std::logic_error("kit error: the answerer cannot run " + id + ": " + message +
                              " (is it built from the same kit as the tests?)");
-    default:
-      throw Failed("an answer that cannot be read", "the reply has an unknown status");
+    default: throw Failed("an answer that cannot be read", "the reply has an unknown status");
   }
 }
 

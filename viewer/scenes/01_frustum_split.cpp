@@ -141,15 +141,9 @@ std::string FrustumSplitScene::token() const {
 void FrustumSplitScene::update() {
   steps.clear();
   switch (mode_) {
-    case Mode::plane:
-      update_plane();
-      break;
-    case Mode::frustum:
-      update_frustum();
-      break;
-    case Mode::mesh:
-      update_mesh();
-      break;
+    case Mode::plane: update_plane(); break;
+    case Mode::frustum: update_frustum(); break;
+    case Mode::mesh: update_mesh(); break;
   }
 }
 

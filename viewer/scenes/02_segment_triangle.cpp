@@ -101,16 +101,11 @@ void SegmentTriangleScene::frame_inputs() {
 
 std::string SegmentTriangleScene::token() const {
   switch (mode_) {
-    case Mode::triangle:
-      return replay_token(query::find_segment_triangle, SegmentTrianglePair{segment_, triangle_});
-    case Mode::point:
-      return replay_token(query::barycentric, PointTriangle{x_, triangle_});
-    case Mode::mesh:
-      return replay_token(query::first_hit, SegmentMeshPair{segment_, mesh_});
-    case Mode::moving:
-      break;
-    case Mode::contact:
-      return replay_token(query::first_contact_moving_meshes, meshes_);
+    case Mode::triangle: return replay_token(query::find_segment_triangle, SegmentTrianglePair{segment_, triangle_});
+    case Mode::point: return replay_token(query::barycentric, PointTriangle{x_, triangle_});
+    case Mode::mesh: return replay_token(query::first_hit, SegmentMeshPair{segment_, mesh_});
+    case Mode::moving: break;
+    case Mode::contact: return replay_token(query::first_contact_moving_meshes, meshes_);
   }
   return replay_token(query::first_hit_moving, MovingMesh{segment_, mesh_, m0_, m1_});
 }
@@ -126,21 +121,11 @@ std::string describe_hits(const std::vector<MeshHit>& hits) {
 void SegmentTriangleScene::update() {
   steps.clear();
   switch (mode_) {
-    case Mode::triangle:
-      update_triangle();
-      break;
-    case Mode::point:
-      update_point();
-      break;
-    case Mode::mesh:
-      update_mesh();
-      break;
-    case Mode::moving:
-      update_moving();
-      break;
-    case Mode::contact:
-      update_contact();
-      break;
+    case Mode::triangle: update_triangle(); break;
+    case Mode::point: update_point(); break;
+    case Mode::mesh: update_mesh(); break;
+    case Mode::moving: update_moving(); break;
+    case Mode::contact: update_contact(); break;
   }
 }
 

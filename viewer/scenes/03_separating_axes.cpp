@@ -120,12 +120,9 @@ void SeparatingAxesScene::frame_inputs() {
 
 std::string SeparatingAxesScene::token() const {
   switch (mode_) {
-    case Mode::boxes:
-      return replay_token(query::find_boxes, BoxPair{a_, b_});
-    case Mode::triangles:
-      return replay_token(query::test_triangles, TrianglePair{t0_, t1_});
-    case Mode::moving:
-      break;
+    case Mode::boxes: return replay_token(query::find_boxes, BoxPair{a_, b_});
+    case Mode::triangles: return replay_token(query::test_triangles, TrianglePair{t0_, t1_});
+    case Mode::moving: break;
   }
   return replay_token(query::find_moving_boxes, MovingBoxes{a_, va_, b_, vb_, duration_});
 }

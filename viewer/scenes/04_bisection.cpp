@@ -126,18 +126,12 @@ void BisectionScene::frame_inputs() {
 
 std::string BisectionScene::token() const {
   switch (mode_) {
-    case Mode::bisect:
-      return replay_token(query::bisect, case_);
-    case Mode::sampled:
-      return replay_token(query::sample_then_bisect, SampledPair{case_, substeps_});
-    case Mode::tunnelling:
-      return replay_token(query::tunnelling, case_);
-    case Mode::advance:
-      return replay_token(query::advance, AdvancedPair{case_, speed_factor_});
-    case Mode::point:
-      return replay_token(query::closest_point, point_box_);
-    case Mode::rule:
-      break;
+    case Mode::bisect: return replay_token(query::bisect, case_);
+    case Mode::sampled: return replay_token(query::sample_then_bisect, SampledPair{case_, substeps_});
+    case Mode::tunnelling: return replay_token(query::tunnelling, case_);
+    case Mode::advance: return replay_token(query::advance, AdvancedPair{case_, speed_factor_});
+    case Mode::point: return replay_token(query::closest_point, point_box_);
+    case Mode::rule: break;
   }
   return replay_token(query::substeps_for, rule_);
 }
@@ -266,24 +260,12 @@ void BisectionScene::update() {
   search_ = {};
   tested_.clear(), tested_overlap_.clear();
   switch (mode_) {
-    case Mode::point:
-      update_point();
-      return;
-    case Mode::rule:
-      step_rule(rule_);
-      return;
-    case Mode::bisect:
-      update_bisect();
-      break;
-    case Mode::sampled:
-      update_sampled();
-      break;
-    case Mode::tunnelling:
-      update_tunnelling();
-      break;
-    case Mode::advance:
-      update_advance();
-      break;
+    case Mode::point: update_point(); return;
+    case Mode::rule: step_rule(rule_); return;
+    case Mode::bisect: update_bisect(); break;
+    case Mode::sampled: update_sampled(); break;
+    case Mode::tunnelling: update_tunnelling(); break;
+    case Mode::advance: update_advance(); break;
   }
   for (double t : tested_) tested_overlap_.push_back(exact_overlap(t));
 }

@@ -162,12 +162,10 @@ std::string SphereSweepsScene::token() const {
       return replay_token(query::sweep_sphere_plane, SpherePlaneMotion{s0_, v0_, plane_, duration_});
     case Mode::sphere_sphere:
       return replay_token(query::sweep_sphere_sphere, SphereSphereMotion{s0_, v0_, s1_, v1_, duration_});
-    case Mode::box_plane:
-      return replay_token(query::sweep_box_plane, BoxPlaneMotion{box_, v0_, plane_, duration_});
+    case Mode::box_plane: return replay_token(query::sweep_box_plane, BoxPlaneMotion{box_, v0_, plane_, duration_});
     case Mode::sphere_capsule:
       return replay_token(query::sweep_sphere_capsule, SphereCapsuleMotion{s0_, v0_, capsule_, duration_});
-    case Mode::cores:
-      break;
+    case Mode::cores: break;
   }
   const Sphere sa{a_.p, a_.radius}, sb{b_.p, b_.radius};
   const Capsule ca{a_.s, a_.radius}, cb{b_.s, b_.radius};
@@ -216,20 +214,11 @@ void SphereSweepsScene::update() {
   }
   follow_handles();
   switch (mode_) {
-    case Mode::sphere_plane:
-      update_sphere_plane();
-      break;
-    case Mode::sphere_sphere:
-      update_sphere_sphere();
-      break;
-    case Mode::sphere_capsule:
-      update_sphere_capsule();
-      break;
-    case Mode::box_plane:
-      update_box_plane();
-      break;
-    case Mode::cores:
-      break;
+    case Mode::sphere_plane: update_sphere_plane(); break;
+    case Mode::sphere_sphere: update_sphere_sphere(); break;
+    case Mode::sphere_capsule: update_sphere_capsule(); break;
+    case Mode::box_plane: update_box_plane(); break;
+    case Mode::cores: break;
   }
   verdict_[step_of(mode_)] = steps[0].verdict;
 }

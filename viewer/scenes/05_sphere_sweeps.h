@@ -32,16 +32,11 @@ struct Shape {
 // The handout's step a mode shows.
 inline int step_of(Mode m) {
   switch (m) {
-    case Mode::sphere_plane:
-      return 4;
-    case Mode::sphere_sphere:
-      return 5;
-    case Mode::sphere_capsule:
-      return 6;
-    case Mode::box_plane:
-      return 7;
-    case Mode::cores:
-      break;
+    case Mode::sphere_plane: return 4;
+    case Mode::sphere_sphere: return 5;
+    case Mode::sphere_capsule: return 6;
+    case Mode::box_plane: return 7;
+    case Mode::cores: break;
   }
   return 3;
 }
