@@ -12,6 +12,10 @@ struct NotImplemented : std::logic_error {
   explicit NotImplemented(const std::string& tag) : std::logic_error("not implemented yet (" + tag + ")") {}
 };
 
-[[noreturn]] inline void not_implemented(const char* tag) { throw NotImplemented(tag); }
+// A stub hands its parameters along, unused, so that it compiles without warnings:
+//   not_implemented("L02S1", segment, triangle);
+template <class... Unused> [[noreturn]] void not_implemented(const char* tag, const Unused&...) {
+  throw NotImplemented(tag);
+}
 
 }  // namespace labkit

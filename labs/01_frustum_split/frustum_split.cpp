@@ -8,50 +8,30 @@
 namespace labkit::lab01 {
 
 // L01S1: the plane's value at x, over the length of its normal.
-double signed_distance(const Plane& plane, const Vec3& x) {
-  (void)plane;
-  (void)x;
-  not_implemented("L01S1");
-}
+double signed_distance(const Plane& plane, const Vec3& x) { not_implemented("L01S1", plane, x); }
 
 // L01S1: in, on or out, for each vertex.
 std::array<Side, 3> classify(const Plane& plane, const Triangle& triangle) {
-  (void)plane;
-  (void)triangle;
-  not_implemented("L01S1");
+  not_implemented("L01S1", plane, triangle);
 }
 
 // L01S2: keep the part with value >= 0: the four configurations.
 std::vector<Triangle> split_triangle(const Triangle& triangle, const Plane& plane) {
-  (void)triangle;
-  (void)plane;
-  not_implemented("L01S2");
+  not_implemented("L01S2", triangle, plane);
 }
 
 // L01S3: the six planes from the camera's parameters.
-Frustum frustum_from_camera(const Camera& camera) {
-  (void)camera;
-  not_implemented("L01S3");
-}
+Frustum frustum_from_camera(const Camera& camera) { not_implemented("L01S3", camera); }
 
 // L01S3: the six planes from the rows of a view-projection matrix.
-Frustum frustum_from_matrix(const Mat4& view_projection) {
-  (void)view_projection;
-  not_implemented("L01S3");
-}
+Frustum frustum_from_matrix(const Mat4& view_projection) { not_implemented("L01S3", view_projection); }
 
 // L01S4: one plane after the other.
 std::vector<Triangle> clip_triangle(const Triangle& triangle, const Frustum& frustum) {
-  (void)triangle;
-  (void)frustum;
-  not_implemented("L01S4");
+  not_implemented("L01S4", triangle, frustum);
 }
 
 // L01S5: every triangle, and a colour for every new vertex.
-ClippedMesh clip_mesh(const ColoredMesh& mesh, const Frustum& frustum) {
-  (void)mesh;
-  (void)frustum;
-  not_implemented("L01S5");
-}
+ClippedMesh clip_mesh(const ColoredMesh& mesh, const Frustum& frustum) { not_implemented("L01S5", mesh, frustum); }
 
 }  // namespace labkit::lab01

@@ -8,121 +8,59 @@
 namespace labkit::lab04 {
 
 // L04S1: move the centre by the pose.
-Sphere placed(const Sphere& sphere, const RigidTransform& pose) {
-  (void)sphere;
-  (void)pose;
-  not_implemented("L04S1");
-}
+Sphere placed(const Sphere& sphere, const RigidTransform& pose) { not_implemented("L04S1", sphere, pose); }
 
 // L04S1: move the centre, turn the axes.
-Box placed(const Box& box, const RigidTransform& pose) {
-  (void)box;
-  (void)pose;
-  not_implemented("L04S1");
-}
+Box placed(const Box& box, const RigidTransform& pose) { not_implemented("L04S1", box, pose); }
 
 // L04S1: two spheres.
-bool overlap(const Sphere& a, const Sphere& b) {
-  (void)a;
-  (void)b;
-  not_implemented("L04S1");
-}
+bool overlap(const Sphere& a, const Sphere& b) { not_implemented("L04S1", a, b); }
 
 // L04S1: clamp in the box's own coordinates.
-Vec3 closest_point(const Box& box, const Vec3& p) {
-  (void)box;
-  (void)p;
-  not_implemented("L04S1");
-}
+Vec3 closest_point(const Box& box, const Vec3& p) { not_implemented("L04S1", box, p); }
 
 // L04S1: a sphere and a box.
-bool overlap(const Sphere& a, const Box& b) {
-  (void)a;
-  (void)b;
-  not_implemented("L04S1");
-}
+bool overlap(const Sphere& a, const Box& b) { not_implemented("L04S1", a, b); }
 
 // L04S1: pose both bodies at time t, then test.
-bool overlap_at(const MovingPair& pair, double t) {
-  (void)pair;
-  (void)t;
-  not_implemented("L04S1");
-}
+bool overlap_at(const MovingPair& pair, double t) { not_implemented("L04S1", pair, t); }
 
 // L04S2: the ends, then halve the bracket.
 TimeOfImpact bisect(const MovingPair& pair, double t0, double t1, double tolerance) {
-  (void)pair;
-  (void)t0;
-  (void)t1;
-  (void)tolerance;
-  not_implemented("L04S2");
+  not_implemented("L04S2", pair, t0, t1, tolerance);
 }
 
 // L04S3: the thinnest dimension.
-double smallest_size(const Shape& shape) {
-  (void)shape;
-  not_implemented("L04S3");
-}
+double smallest_size(const Shape& shape) { not_implemented("L04S3", shape); }
 
 // L04S3: how fast the two bodies can close on each other.
 double closing_speed(const Sphere& a, const StandardMotion& motion_a, const Shape& b, const StandardMotion& motion_b,
                      double t0, double t1) {
-  (void)a;
-  (void)motion_a;
-  (void)b;
-  (void)motion_b;
-  (void)t0;
-  (void)t1;
-  not_implemented("L04S3");
+  not_implemented("L04S3", a, motion_a, b, motion_b, t0, t1);
 }
 
 // L04S3: closing speed x (step / n) < smallest size.
 int substeps_for(double closing_speed, double step, double smallest_size) {
-  (void)closing_speed;
-  (void)step;
-  (void)smallest_size;
-  not_implemented("L04S3");
+  not_implemented("L04S3", closing_speed, step, smallest_size);
 }
 
 // L04S3: sample, then bisect the first bracket.
 TimeOfImpact sample_then_bisect(const MovingPair& pair, double t0, double t1, int substeps, double tolerance) {
-  (void)pair;
-  (void)t0;
-  (void)t1;
-  (void)substeps;
-  (void)tolerance;
-  not_implemented("L04S3");
+  not_implemented("L04S3", pair, t0, t1, substeps, tolerance);
 }
 
 // L04S4: two spheres.
-double distance(const Sphere& a, const Sphere& b) {
-  (void)a;
-  (void)b;
-  not_implemented("L04S4");
-}
+double distance(const Sphere& a, const Sphere& b) { not_implemented("L04S4", a, b); }
 
 // L04S4: a sphere and a box.
-double distance(const Sphere& a, const Box& b) {
-  (void)a;
-  (void)b;
-  not_implemented("L04S4");
-}
+double distance(const Sphere& a, const Box& b) { not_implemented("L04S4", a, b); }
 
 // L04S4: pose both bodies at time t, then measure.
-double distance_at(const MovingPair& pair, double t) {
-  (void)pair;
-  (void)t;
-  not_implemented("L04S4");
-}
+double distance_at(const MovingPair& pair, double t) { not_implemented("L04S4", pair, t); }
 
 // L04S4: advance by distance / speed, at least the tolerance.
 TimeOfImpact advance(const MovingPair& pair, double t0, double t1, double max_closing_speed, double tolerance) {
-  (void)pair;
-  (void)t0;
-  (void)t1;
-  (void)max_closing_speed;
-  (void)tolerance;
-  not_implemented("L04S4");
+  not_implemented("L04S4", pair, t0, t1, max_closing_speed, tolerance);
 }
 
 }  // namespace labkit::lab04

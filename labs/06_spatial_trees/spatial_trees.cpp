@@ -11,71 +11,36 @@
 namespace labkit::lab06 {
 
 // L06S1: the k-d tree. Say here which split rule and which leaf size you chose.
-KdTree build_kd_tree(const Mesh& mesh) {
-  (void)mesh;
-  not_implemented("L06S1");
-}
+KdTree build_kd_tree(const Mesh& mesh) { not_implemented("L06S1", mesh); }
 
 // L06S2: the nearest hit, front to back, with an early exit.
-KdHit first_hit(const KdTree& tree, const Segment& segment) {
-  (void)tree;
-  (void)segment;
-  not_implemented("L06S2");
-}
+KdHit first_hit(const KdTree& tree, const Segment& segment) { not_implemented("L06S2", tree, segment); }
 
 // L06S2: any hit, stopping at the first one found.
-KdHit any_hit(const KdTree& tree, const Segment& segment) {
-  (void)tree;
-  (void)segment;
-  not_implemented("L06S2");
-}
+KdHit any_hit(const KdTree& tree, const Segment& segment) { not_implemented("L06S2", tree, segment); }
 
 // L06S2: every hit, each triangle once, sorted by t.
-KdHits all_hits(const KdTree& tree, const Segment& segment) {
-  (void)tree;
-  (void)segment;
-  not_implemented("L06S2");
-}
+KdHits all_hits(const KdTree& tree, const Segment& segment) { not_implemented("L06S2", tree, segment); }
 
 // L06S3: the BSP tree, cut along the mesh's triangles.
-BspTree build_bsp(const Mesh& mesh) {
-  (void)mesh;
-  not_implemented("L06S3");
-}
+BspTree build_bsp(const Mesh& mesh) { not_implemented("L06S3", mesh); }
 
 // L06S3: inside, outside or on the surface.
-Where classify(const BspTree& tree, const Vec3& point) {
-  (void)tree;
-  (void)point;
-  not_implemented("L06S3");
-}
+Where classify(const BspTree& tree, const Vec3& point) { not_implemented("L06S3", tree, point); }
 
 // L06S4: the painter's order.
-std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) {
-  (void)tree;
-  (void)eye;
-  not_implemented("L06S4");
-}
+std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) { not_implemented("L06S4", tree, eye); }
 
 // L06S5: the overlapping pairs, without testing them all.
-SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
-  (void)spheres;
-  not_implemented("L06S5");
-}
+SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) { not_implemented("L06S5", spheres); }
 
 // L06S6: keep the sorted ends between frames, re-sort them by insertion, update the
 // pairs overlapping on x at each swap, test only those. Compare ends with compare_ends.
-SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
-  (void)spheres;
-  not_implemented("L06S6");
-}
+SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) { not_implemented("L06S6", spheres); }
 
 // L06S7: the dual traversal of two OBB trees (lecture 001's TestBVH), counted.
 TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every) {
-  (void)a;
-  (void)b;
-  (void)every;
-  not_implemented("L06S7");
+  not_implemented("L06S7", a, b, every);
 }
 
 }  // namespace labkit::lab06

@@ -9,120 +9,57 @@
 namespace labkit::lab07 {
 
 // L07S1: one new particle from the emitter's ranges.
-Particle emit(const Emitter& emitter, Random& random) {
-  (void)emitter;
-  (void)random;
-  not_implemented("L07S1");
-}
+Particle emit(const Emitter& emitter, Random& random) { not_implemented("L07S1", emitter, random); }
 
 // L07S1: how many are born in this step, and what is owed to the next.
-Births births(const Emitter& emitter, double dt) {
-  (void)emitter;
-  (void)dt;
-  not_implemented("L07S1");
-}
+Births births(const Emitter& emitter, double dt) { not_implemented("L07S1", emitter, dt); }
 
 // L07S1: age by dt; remove the dead.
-std::vector<Particle> age(std::vector<Particle> particles, double dt) {
-  (void)particles;
-  (void)dt;
-  not_implemented("L07S1");
-}
+std::vector<Particle> age(std::vector<Particle> particles, double dt) { not_implemented("L07S1", particles, dt); }
 
 // L07S2: gravity and drag.
-Vec3 force(const Particle& p, const Forces& forces) {
-  (void)p;
-  (void)forces;
-  not_implemented("L07S2");
-}
+Vec3 force(const Particle& p, const Forces& forces) { not_implemented("L07S2", p, forces); }
 
 // L07S2: explicit Euler.
-Particle euler_step(const Particle& p, const Forces& forces, double dt) {
-  (void)p;
-  (void)forces;
-  (void)dt;
-  not_implemented("L07S2");
-}
+Particle euler_step(const Particle& p, const Forces& forces, double dt) { not_implemented("L07S2", p, forces, dt); }
 
 // L07S2: the previous position of a new Verlet particle.
-Particle start_verlet(const Particle& p, const Forces& forces, double dt) {
-  (void)p;
-  (void)forces;
-  (void)dt;
-  not_implemented("L07S2");
-}
+Particle start_verlet(const Particle& p, const Forces& forces, double dt) { not_implemented("L07S2", p, forces, dt); }
 
 // L07S2: position Verlet.
-Particle verlet_step(const Particle& p, const Forces& forces, double dt) {
-  (void)p;
-  (void)forces;
-  (void)dt;
-  not_implemented("L07S2");
-}
+Particle verlet_step(const Particle& p, const Forces& forces, double dt) { not_implemented("L07S2", p, forces, dt); }
 
 // L07S3: both launch angles, or none.
 Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity) {
-  (void)from;
-  (void)target;
-  (void)speed;
-  (void)gravity;
-  not_implemented("L07S3");
+  not_implemented("L07S3", from, target, speed, gravity);
 }
 
 // L07S4: a one-sided plane.
-SurfaceHit hit_plane(const Segment& segment, const Plane& plane) {
-  (void)segment;
-  (void)plane;
-  not_implemented("L07S4");
-}
+SurfaceHit hit_plane(const Segment& segment, const Plane& plane) { not_implemented("L07S4", segment, plane); }
 
 // L07S4: a two-sided triangle (use given::segment_triangle).
 SurfaceHit hit_triangle(const Segment& segment, const Triangle& triangle) {
-  (void)segment;
-  (void)triangle;
-  not_implemented("L07S4");
+  not_implemented("L07S4", segment, triangle);
 }
 
 // L07S4: the nearest hit among all planes and triangles.
-SurfaceHit first_hit(const Segment& segment, const Scene& scene) {
-  (void)segment;
-  (void)scene;
-  not_implemented("L07S4");
-}
+SurfaceHit first_hit(const Segment& segment, const Scene& scene) { not_implemented("L07S4", segment, scene); }
 
 // L07S5: restitution and Coulomb friction.
 Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& normal, double mass,
                 const Material& material) {
-  (void)velocity;
-  (void)object_velocity;
-  (void)normal;
-  (void)mass;
-  (void)material;
-  not_implemented("L07S5");
+  not_implemented("L07S5", velocity, object_velocity, normal, mass, material);
 }
 
 // L07S6: bounce with the remaining time, up to the cap; a moving scene (scene.velocity) in its own frame.
 Collision collide(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene) {
-  (void)step;
-  (void)velocity;
-  (void)mass;
-  (void)dt;
-  (void)scene;
-  not_implemented("L07S6");
+  not_implemented("L07S6", step, velocity, mass, dt, scene);
 }
 
 // L07S7: never behind, exactly.
-Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
-  (void)x;
-  (void)scene;
-  (void)last;
-  not_implemented("L07S7");
-}
+Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) { not_implemented("L07S7", x, scene, last); }
 
 // L07S7: the handling loop.
-void System::step(double dt) {
-  (void)dt;
-  not_implemented("L07S7");
-}
+void System::step(double dt) { not_implemented("L07S7", dt); }
 
 }  // namespace labkit::lab07
