@@ -1,6 +1,10 @@
 // The kit's geometry types: small structs on Eigen, shared by every lab, the oracle,
 // the tests and the viewer. Plain data with a few obvious helpers; no algorithms here.
+// Each lists its fields (LABKIT_FIELDS): the order in which replay tokens, reports and
+// the judge's process protocol carry them.
 #pragma once
+
+#include "common/fields.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -28,6 +32,7 @@ struct Segment {
   Vec3 point(double t) const { return a + t * (b - a); }
   Vec3 direction() const { return b - a; }
 };
+LABKIT_FIELDS(Segment, a, b)
 
 // A triangle with vertices v0, v1, v2. Its front side is the one its normal
 // (v1 - v0) x (v2 - v0) points to: counter-clockwise seen from the front.
@@ -42,6 +47,7 @@ struct Triangle {
   Vec3 normal() const { return (v1 - v0).cross(v2 - v0); }
   double area() const { return 0.5 * normal().norm(); }
 };
+LABKIT_FIELDS(Triangle, v0, v1, v2)
 
 // The plane normal . x + offset = 0. The value normal . x + offset is positive on the
 // side the normal points to; it is the signed distance when the normal has unit length.
@@ -51,6 +57,7 @@ struct Plane {
 
   double value(const Vec3& x) const { return normal.dot(x) + offset; }
 };
+LABKIT_FIELDS(Plane, normal, offset)
 
 // Six planes whose normals point into the frustum: a point is inside when it is on
 // the non-negative side of all six.
@@ -58,6 +65,7 @@ struct Frustum {
   enum Side { left, right, bottom, top, near, far };
   std::array<Plane, 6> planes;
 };
+LABKIT_FIELDS(Frustum, planes)
 
 // An indexed triangle mesh.
 struct Mesh {
@@ -70,6 +78,7 @@ struct Mesh {
     return {vertices[f[0]], vertices[f[1]], vertices[f[2]]};
   }
 };
+LABKIT_FIELDS(Mesh, vertices, triangles)
 
 // ---- Shapes shared by the later labs (03 separating axes, 04 bisection, 05 sphere
 // sweeps, 06 trees, 07 particles). Lab-specific types live in the lab's own header.
@@ -79,12 +88,14 @@ struct Sphere {
   Vec3 center = Vec3::Zero();
   double radius = 0.0;
 };
+LABKIT_FIELDS(Sphere, center, radius)
 
 // A sphere swept along a segment: points within `radius` of `axis`.
 struct Capsule {
   Segment axis;
   double radius = 0.0;
 };
+LABKIT_FIELDS(Capsule, axis, radius)
 
 // The closed rectangle center + s u + t v, |s| <= half_u, |t| <= half_v, with u and v
 // unit length and perpendicular (Eberly's center, axes and extents).
@@ -95,12 +106,14 @@ struct Rectangle {
   double half_u = 0.0;
   double half_v = 0.0;
 };
+LABKIT_FIELDS(Rectangle, center, u, v, half_u, half_v)
 
 // A sphere swept over a rectangle: points within `radius` of it.
 struct Lozenge {
   Rectangle rectangle;
   double radius = 0.0;
 };
+LABKIT_FIELDS(Lozenge, rectangle, radius)
 
 // An oriented box: center + sum_i s_i axes.col(i), |s_i| <= half_extents[i]. The columns
 // of `axes` are meant to be orthonormal; the oracle reads the box as the exact
@@ -116,12 +129,14 @@ struct Box {
     return p;
   }
 };
+LABKIT_FIELDS(Box, center, axes, half_extents)
 
 // An axis-aligned box [min, max].
 struct Aabb {
   Vec3 min = Vec3::Zero();
   Vec3 max = Vec3::Zero();
 };
+LABKIT_FIELDS(Aabb, min, max)
 
 // The largest absolute coordinate among the given points: the length scale S that
 // every tolerance in the kit is relative to.

@@ -646,25 +646,10 @@ void times(Box& x, double k) {
   times(x.center, k);
   times(x.half_extents, k);
 }
-void times(PointSegmentPair& x, double k) {
-  times(x.p, k);
-  times(x.segment, k);
-}
-void times(SegmentPair& x, double k) {
-  times(x.first, k);
-  times(x.second, k);
-}
-void times(PointRectanglePair& x, double k) {
-  times(x.p, k);
-  times(x.rectangle, k);
-}
-void times(SegmentRectanglePair& x, double k) {
-  times(x.segment, k);
-  times(x.rectangle, k);
-}
-void times(RectanglePair& x, double k) {
-  times(x.first, k);
-  times(x.second, k);
+// The distance queries' inputs (steps 1 and 2) are shapes and points, all lengths: each
+// field. A motion's duration is a time, not a length: the motions list their fields below.
+template <class Pair, class = codec::HasFields<Pair>> void times(Pair& x, double k) {
+  fields(x, [k](const char*, auto& field) { times(field, k); });
 }
 void times(SpherePlaneMotion& x, double k) {
   times(x.sphere, k);

@@ -57,38 +57,6 @@ void decode(Reader& r, Vec2& v) {
   v.x() = r.real();
   v.y() = r.real();
 }
-void encode(Writer& w, const Segment& s) {
-  encode(w, s.a);
-  encode(w, s.b);
-}
-void decode(Reader& r, Segment& s) {
-  decode(r, s.a);
-  decode(r, s.b);
-}
-void encode(Writer& w, const Triangle& t) {
-  encode(w, t.v0);
-  encode(w, t.v1);
-  encode(w, t.v2);
-}
-void decode(Reader& r, Triangle& t) {
-  decode(r, t.v0);
-  decode(r, t.v1);
-  decode(r, t.v2);
-}
-void encode(Writer& w, const Plane& p) {
-  encode(w, p.normal);
-  w.real(p.offset);
-}
-void decode(Reader& r, Plane& p) {
-  decode(r, p.normal);
-  p.offset = r.real();
-}
-void encode(Writer& w, const Frustum& f) {
-  for (const Plane& p : f.planes) encode(w, p);
-}
-void decode(Reader& r, Frustum& f) {
-  for (Plane& p : f.planes) decode(r, p);
-}
 
 void encode(Writer& w, const Mesh& m) {
   w.count(m.vertices.size());
@@ -141,22 +109,6 @@ void decode(Reader& r, Mat3& m) {
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j) m(i, j) = r.real();
 }
-void encode(Writer& w, const Sphere& s) {
-  encode(w, s.center);
-  w.real(s.radius);
-}
-void decode(Reader& r, Sphere& s) {
-  decode(r, s.center);
-  s.radius = r.real();
-}
-void encode(Writer& w, const Capsule& c) {
-  encode(w, c.axis);
-  w.real(c.radius);
-}
-void decode(Reader& r, Capsule& c) {
-  decode(r, c.axis);
-  c.radius = r.real();
-}
 void encode(Writer& w, const Rectangle& rect) {
   encode(w, rect.center);
   for (int i = 0; i < 3; ++i) w.unit(rect.u[i]);
@@ -170,32 +122,6 @@ void decode(Reader& r, Rectangle& rect) {
   decode(r, rect.v);
   rect.half_u = r.real();
   rect.half_v = r.real();
-}
-void encode(Writer& w, const Lozenge& l) {
-  encode(w, l.rectangle);
-  w.real(l.radius);
-}
-void decode(Reader& r, Lozenge& l) {
-  decode(r, l.rectangle);
-  l.radius = r.real();
-}
-void encode(Writer& w, const Box& b) {
-  encode(w, b.center);
-  encode(w, b.axes);
-  encode(w, b.half_extents);
-}
-void decode(Reader& r, Box& b) {
-  decode(r, b.center);
-  decode(r, b.axes);
-  decode(r, b.half_extents);
-}
-void encode(Writer& w, const Aabb& b) {
-  encode(w, b.min);
-  encode(w, b.max);
-}
-void decode(Reader& r, Aabb& b) {
-  decode(r, b.min);
-  decode(r, b.max);
 }
 
 }  // namespace codec

@@ -84,7 +84,9 @@ template <class T> void decode(Reader& r, std::vector<T>& xs);
 template <class T, class = HasFields<T>> void encode(Writer& w, const T& x);
 template <class T, class = HasFields<T>> void decode(Reader& r, T& x);
 
-// The geometry types.
+// Numbers, and the geometry types whose numbers are more than their fields in order: a
+// mesh's counts and indices, a rectangle's and a matrix's unit-free entries. The other
+// geometry types list their fields (common/geometry.h) and go field by field.
 inline void encode(Writer& w, double x) { w.real(x); }
 inline void decode(Reader& r, double& x) { x = r.real(); }
 inline void encode(Writer& w, int x) { w.count(std::size_t(x < 0 ? 0 : x)); }
@@ -95,14 +97,6 @@ void encode(Writer& w, const Vec3& v);
 void decode(Reader& r, Vec3& v);
 void encode(Writer& w, const Vec2& v);
 void decode(Reader& r, Vec2& v);
-void encode(Writer& w, const Segment& s);
-void decode(Reader& r, Segment& s);
-void encode(Writer& w, const Triangle& t);
-void decode(Reader& r, Triangle& t);
-void encode(Writer& w, const Plane& p);
-void decode(Reader& r, Plane& p);
-void encode(Writer& w, const Frustum& f);
-void decode(Reader& r, Frustum& f);
 void encode(Writer& w, const Mesh& m);
 void decode(Reader& r, Mesh& m);
 void encode(Writer& w, const RigidTransform& m);
@@ -111,18 +105,8 @@ void encode(Writer& w, const Mat4& m);
 void decode(Reader& r, Mat4& m);
 void encode(Writer& w, const Mat3& m);  // unit-free entries (rotations)
 void decode(Reader& r, Mat3& m);
-void encode(Writer& w, const Sphere& s);
-void decode(Reader& r, Sphere& s);
-void encode(Writer& w, const Capsule& c);
-void decode(Reader& r, Capsule& c);
 void encode(Writer& w, const Rectangle& r);
 void decode(Reader& r, Rectangle& rect);
-void encode(Writer& w, const Lozenge& l);
-void decode(Reader& r, Lozenge& l);
-void encode(Writer& w, const Box& b);
-void decode(Reader& r, Box& b);
-void encode(Writer& w, const Aabb& b);
-void decode(Reader& r, Aabb& b);
 
 template <class T, std::size_t N> void encode(Writer& w, const std::array<T, N>& xs) {
   for (const T& x : xs) encode(w, x);

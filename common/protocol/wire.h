@@ -5,8 +5,8 @@
 //   wire::Writer w;  wire::put(w, segment);  wire::put(w, triangle);
 //   wire::Reader r(w.bytes());  wire::get(r, segment);  ...
 //
-// A lab's own structs join in by listing their fields once (`fields()`, as for reports:
-// see common/harness/codec.h). The reader trusts nothing: every count and size is
+// A struct crosses field by field when it lists its fields (LABKIT_FIELDS, common/fields.h):
+// the geometry types of common/geometry.h and each lab's own. The reader trusts nothing: every count and size is
 // checked against what is left, and a short or malformed message throws wire::Error
 // instead of reading past the end.
 #pragma once
@@ -121,31 +121,6 @@ template <class T> void put(Writer& w, const std::vector<T>& xs);
 template <class T> void get(Reader& r, std::vector<T>& xs);
 template <class T, class = HasFields<T>> void put(Writer& w, const T& x);
 template <class T, class = HasFields<T>> void get(Reader& r, T& x);
-
-// ---- The kit's geometry types (common/geometry.h) -------------------------------------
-
-void put(Writer& w, const Segment& s);
-void get(Reader& r, Segment& s);
-void put(Writer& w, const Triangle& t);
-void get(Reader& r, Triangle& t);
-void put(Writer& w, const Plane& p);
-void get(Reader& r, Plane& p);
-void put(Writer& w, const Frustum& f);
-void get(Reader& r, Frustum& f);
-void put(Writer& w, const Mesh& m);
-void get(Reader& r, Mesh& m);
-void put(Writer& w, const Sphere& s);
-void get(Reader& r, Sphere& s);
-void put(Writer& w, const Capsule& c);
-void get(Reader& r, Capsule& c);
-void put(Writer& w, const Rectangle& rect);
-void get(Reader& r, Rectangle& rect);
-void put(Writer& w, const Lozenge& l);
-void get(Reader& r, Lozenge& l);
-void put(Writer& w, const Box& b);
-void get(Reader& r, Box& b);
-void put(Writer& w, const Aabb& b);
-void get(Reader& r, Aabb& b);
 
 template <class T, std::size_t N> void put(Writer& w, const std::array<T, N>& xs) {
   for (const T& x : xs) put(w, x);
