@@ -5,6 +5,8 @@
 // exact answer), the targets met or missed, size scaling where a kernel was run at
 // several sizes, then the other markdown files given (the student loop's timings, the
 // hand-written notes that explain the misses), in order.
+#include "common/text.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -40,13 +42,6 @@ std::string number(double x, int digits = 3) {
   else
     std::snprintf(buffer, sizeof buffer, "%.*g", digits, x);
   return buffer;
-}
-
-std::string read_file(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 // "group/implementation" or "group/implementation/variant": the variant is a size
@@ -85,8 +80,8 @@ int main(int argc, char** argv) {
   }
   json run, targets;
   try {
-    run = json::parse(read_file(argv[1]));
-    targets = json::parse(read_file(argv[2]));
+    run = json::parse(labkit::read_file(argv[1]));
+    targets = json::parse(labkit::read_file(argv[2]));
   } catch (const json::exception& e) {
     std::cerr << "labkit-bench-report: " << e.what() << "\n";
     return 2;
@@ -215,7 +210,7 @@ int main(int argc, char** argv) {
   }
 
   for (int i = 4; i < argc; ++i) {
-    const std::string more = read_file(argv[i]);
+    const std::string more = labkit::read_file(argv[i]);
     if (!more.empty()) md << "\n" << more;
   }
   std::ofstream out(argv[3]);

@@ -1,4 +1,5 @@
 #include "cgroup.h"
+#include "common/text.h"
 
 #include <fcntl.h>
 #include <sched.h>
@@ -56,13 +57,6 @@ int write_control(const std::string& file, const std::string& text) {
   const int error = n < 0 ? errno : EIO;
   close(fd);
   return n == ssize_t(text.size()) ? 0 : error;
-}
-
-std::string read_text(const std::string& file) {
-  std::ifstream in(file);
-  std::stringstream text;
-  text << in.rdbuf();
-  return text.str();
 }
 
 // `word` among the words of `text` (separated by spaces, commas or new lines).
@@ -141,7 +135,7 @@ Place find_place(const std::string& controller, const std::vector<Mount>& mounts
     p.why_not = "this process's group is not under " + mount->point;
   } else if (mount->read_only) {
     p.why_not = mount->point + " is mounted read-only";
-  } else if (p.version == 2 && !has_word(read_text(folder + "/cgroup.controllers"), controller)) {
+  } else if (p.version == 2 && !has_word(labkit::read_file(folder + "/cgroup.controllers"), controller)) {
     // The group above this one keeps the controller to itself.
     p.why_not = "the " + controller + " controller is missing in " + folder;
   } else {
@@ -154,10 +148,10 @@ Place find_place(const std::string& controller, const std::vector<Mount>& mounts
 // and only while the group itself holds no process. When the grader is alone in its
 // group, it moves into a leaf of its own (labkit-PID-grader) to empty it. "" when done.
 std::string hand_down(const std::string& parent, const std::string& controller) {
-  if (has_word(read_text(parent + "/cgroup.subtree_control"), controller)) return "";
+  if (has_word(labkit::read_file(parent + "/cgroup.subtree_control"), controller)) return "";
   const std::string enable = "+" + controller, self = std::to_string(getpid());
   int error = write_control(parent + "/cgroup.subtree_control", enable);
-  if (error == EBUSY && read_text(parent + "/cgroup.procs") == self + "\n") {
+  if (error == EBUSY && labkit::read_file(parent + "/cgroup.procs") == self + "\n") {
     const std::string leaf = parent + "/labkit-" + self + "-grader";
     if (mkdir(leaf.c_str(), 0755) == 0 || errno == EEXIST) error = write_control(leaf + "/cgroup.procs", self);
     if (error == 0) error = write_control(parent + "/cgroup.subtree_control", enable);
@@ -348,13 +342,13 @@ Envelope own_envelope() {
     for (fs::path folder = folder_of(*mount, group->second); !folder.empty(); folder = folder.parent_path()) {
       const std::string f = folder.string();
       if (std::string(controller) == "cpu") {
-        std::istringstream max(read_text(f + (v1 ? "/cpu.cfs_quota_us" : "/cpu.max")));
-        std::string quota, period = v1 ? read_text(f + "/cpu.cfs_period_us") : "";
+        std::istringstream max(labkit::read_file(f + (v1 ? "/cpu.cfs_quota_us" : "/cpu.max")));
+        std::string quota, period = v1 ? labkit::read_file(f + "/cpu.cfs_period_us") : "";
         max >> quota;
         if (!v1) max >> period;
         if (number(quota) > 0 && number(period) > 0) tighter(quota_cpus, number(quota) / number(period));
       } else {
-        tighter(memory, number(read_text(f + (v1 ? "/memory.limit_in_bytes" : "/memory.max"))));
+        tighter(memory, number(labkit::read_file(f + (v1 ? "/memory.limit_in_bytes" : "/memory.max"))));
       }
       if (f == mount->point || f.size() <= mount->point.size()) break;
     }

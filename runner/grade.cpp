@@ -1,6 +1,7 @@
 #include "grade.h"
 #include "cgroup.h"
 #include "class_report.h"
+#include "common/text.h"
 #include "lab_build.h"
 #include "results.h"
 #include "sandbox.h"
@@ -319,10 +320,8 @@ class Grader {
         continue;
       }
       files[f] = found->second;
-      std::ifstream in(found->second, std::ios::binary);
-      std::ostringstream text;
-      text << in.rdbuf();
-      key += '\0' + f + '\0' + std::to_string(text.str().size()) + '\0' + text.str();
+      const std::string text = labkit::read_file(found->second);
+      key += '\0' + f + '\0' + std::to_string(text.size()) + '\0' + text;
     }
     if (!missing.empty()) {
       std::lock_guard<std::mutex> lock(g.mutex);

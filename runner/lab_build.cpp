@@ -1,4 +1,5 @@
 #include "lab_build.h"
+#include "common/text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -16,13 +17,6 @@ namespace runner {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // A compile command as compile_commands.json writes it: words split by spaces, with
 // double quotes and backslashes as a POSIX shell reads them.
@@ -188,12 +182,12 @@ LabRecipe load_recipe(const Paths& paths, const Lab& lab) {
   const std::string record_path = recipe_record(paths, lab);
   if (!fs::exists(record_path))
     throw std::runtime_error("the kit's build has no " + record_path + " (reconfigure the build)");
-  const nlohmann::json record = nlohmann::json::parse(read_text(record_path));
+  const nlohmann::json record = nlohmann::json::parse(labkit::read_file(record_path));
   recipe.student_library = record.at("student_library").get<std::string>();
   const std::string link_record = record.at("link_record").get<std::string>();
 
   // The link command, as the kit last ran it.
-  const std::string link = read_text(link_record);
+  const std::string link = labkit::read_file(link_record);
   std::vector<std::string> words;
   for (std::size_t at = 0; at < link.size();) {
     const std::size_t end = link.find('\0', at);
@@ -206,7 +200,7 @@ LabRecipe load_recipe(const Paths& paths, const Lab& lab) {
   recipe.link.argv.assign(words.begin() + 1, words.end());
 
   // The compile command of each student file, as the kit compiles the stub.
-  const nlohmann::json database = nlohmann::json::parse(read_text(paths.build + "/compile_commands.json"));
+  const nlohmann::json database = nlohmann::json::parse(labkit::read_file(paths.build + "/compile_commands.json"));
   for (const std::string& file : lab.student_files) {
     if (fs::path(file).extension() != ".cpp") continue;
     const std::string source = (fs::path(paths.source) / file).lexically_normal().string();

@@ -23,13 +23,4 @@ std::string pad(const std::string& s, std::size_t width) {
   return columns >= width ? s : s + std::string(width - columns, ' ');
 }
 
-std::string indent(const std::string& text, const std::string& prefix) {
-  std::string out;
-  for (char c : text) {
-    out += c;
-    if (c == '\n') out += prefix;
-  }
-  return out;
-}
-
 }  // namespace runner::term

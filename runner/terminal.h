@@ -1,6 +1,8 @@
 // Colours when the output is a terminal (and NO_COLOR is unset), plain text otherwise.
 #pragma once
 
+#include "common/text.h"
+
 #include <string>
 
 namespace runner::term {
@@ -14,6 +16,6 @@ std::string dim(const std::string& s);
 // Pads to `width` columns (counting UTF-8 characters, not bytes).
 std::string pad(const std::string& s, std::size_t width);
 // Indents every line after the first by `prefix`.
-std::string indent(const std::string& text, const std::string& prefix);
+using labkit::indent;
 
 }  // namespace runner::term

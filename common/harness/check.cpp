@@ -1,6 +1,7 @@
 #include "common/harness/check.h"
 #include "common/harness/report.h"
 #include "common/splitmix.h"
+#include "common/text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -50,8 +51,7 @@ Settings read_settings() {
   // is wiped from the environment (getenv, and /proc/self/environ, which shows the
   // original bytes in place), before any code under test runs (see read_early below).
   if (const char* v = std::getenv(variable::seed_file); v && *v) {
-    std::ifstream in(v);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text = read_file(v);
     if (!text.empty()) s.seed = parse_seed(text);
     std::remove(v);
   }

@@ -1,4 +1,5 @@
 #include "common/protocol/report.h"
+#include "common/text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -60,16 +61,6 @@ template <class T> void read(const json& j, T& out, const std::string& where) {
   }
 }
 
-// `text` with each line after the first starting with `prefix`.
-std::string indented(const std::string& text, const std::string& prefix) {
-  std::string out;
-  for (char c : text) {
-    out += c;
-    if (c == '\n') out += prefix;
-  }
-  return out;
-}
-
 }  // namespace
 
 json to_json(const Step& step) { return write(step); }
@@ -84,10 +75,10 @@ std::string format(const Failure& f, const std::string& query, const std::string
   const std::string under = indent + std::string(10, ' ');
   std::string text = indent + "query     " + query + (f.title.empty() ? "" : ", " + f.title);
   if (f.shrinks > 0) text += " (shrunk " + std::to_string(f.shrinks) + " times)";
-  text += "\n" + indent + "input     " + indented(f.input, under);
-  text += "\n" + indent + "expected  " + indented(f.expected, under);
-  text += "\n" + indent + "got       " + indented(f.got, under);
-  text += "\n" + indent + "why       " + indented(f.why, under) + "\n";
+  text += "\n" + indent + "input     " + labkit::indent(f.input, under);
+  text += "\n" + indent + "expected  " + labkit::indent(f.expected, under);
+  text += "\n" + indent + "got       " + labkit::indent(f.got, under);
+  text += "\n" + indent + "why       " + labkit::indent(f.why, under) + "\n";
   return text;
 }
 

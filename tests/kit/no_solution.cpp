@@ -5,6 +5,8 @@
 // Bodies shorter than 40 such characters (`{ return {}; }`) are too common to mean much,
 // and text the exact oracle also holds (common/oracle/, in every release by design: a
 // sort by t, say) is not the reference's own.
+#include "common/text.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -17,13 +19,6 @@
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string read(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // Without comments and whitespace (inside string literals too: code quoted in a CMake
 // file or a string must still be found). Literals are kept whole otherwise, so that a
@@ -120,12 +115,12 @@ int main(int argc, char** argv) {
   std::vector<Needle> needles;
   for (const auto& e : fs::recursive_directory_iterator(kit / "solutions"))
     if (e.path().extension() == ".cpp")
-      for (const std::string& body : function_bodies(normalise(read(e.path()))))
+      for (const std::string& body : function_bodies(normalise(labkit::read_file(e.path()))))
         if (body.size() >= 40) needles.push_back({body, fs::relative(e.path(), kit).string()});
   int mutant_strings = 0;
   for (const auto& e : fs::directory_iterator(kit / "tests"))
     if (e.path().string().size() > 14 && e.path().string().rfind(".mutants.cmake") == e.path().string().size() - 14)
-      for (const std::string& text : mutant_texts(read(e.path()))) {
+      for (const std::string& text : mutant_texts(labkit::read_file(e.path()))) {
         const std::string n = normalise(text);
         if (n.size() >= 20) {
           needles.push_back({n, fs::relative(e.path(), kit).string()});
@@ -133,7 +128,8 @@ int main(int argc, char** argv) {
         }
       }
   std::string oracle;
-  for (const auto& e : fs::recursive_directory_iterator(kit / "common" / "oracle")) oracle += normalise(read(e.path()));
+  for (const auto& e : fs::recursive_directory_iterator(kit / "common" / "oracle"))
+    oracle += normalise(labkit::read_file(e.path()));
   needles.erase(std::remove_if(
                     needles.begin(), needles.end(),
                     [&](const Needle& n) {
@@ -151,7 +147,7 @@ int main(int argc, char** argv) {
   for (const auto& e : fs::recursive_directory_iterator(folder)) {
     if (!e.is_regular_file()) continue;
     ++files;
-    const std::string text = normalise(read(e.path()));
+    const std::string text = normalise(labkit::read_file(e.path()));
     for (const Needle& n : needles)
       if (text.find(n.text) != std::string::npos) {
         if (++found <= 10)

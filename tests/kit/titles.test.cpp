@@ -4,6 +4,7 @@
 // change a title in the manifest and this names every line to change with it.
 #define CATCH_CONFIG_MAIN  // Catch2 2: main() is here; Catch2 3: it is Catch2::Catch2WithMain's
 #include "common/harness/catch.h"
+#include "common/text.h"
 
 #include <nlohmann/json.hpp>
 
@@ -25,14 +26,9 @@ std::string source_dir() {
   return dir;
 }
 
-std::string read(const fs::path& path) {
-  std::ifstream in(path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+nlohmann::json manifest() {
+  return nlohmann::json::parse(labkit::read_file(fs::path(source_dir()) / "grading/manifest.json"));
 }
-
-nlohmann::json manifest() { return nlohmann::json::parse(read(fs::path(source_dir()) / "grading/manifest.json")); }
 
 std::string stem_of(const nlohmann::json& lab) {
   return lab["id"].get<std::string>() + "_" + lab["name"].get<std::string>();
@@ -45,7 +41,7 @@ TEST_CASE("each handout's headings give the manifest's lab and step titles", "[k
   for (const auto& lab : all["labs"]) {
     const fs::path handout = fs::path(source_dir()) / "handouts" / (stem_of(lab) + ".md");
     INFO(handout.string());
-    const std::string text = read(handout);
+    const std::string text = labkit::read_file(handout);
     const std::string title = "# Lab " + lab["id"].get<std::string>() + ": " + lab["title"].get<std::string>();
     CHECK(text.substr(0, text.find('\n')) == title);
     for (const auto& step : lab["steps"]) {
@@ -72,7 +68,7 @@ TEST_CASE("the step banners of contracts, stubs and references give the manifest
       const fs::path dir = fs::path(source_dir()) / top / stem_of(lab);
       if (!fs::exists(dir)) continue;  // a student release has no solutions/
       for (const auto& file : fs::directory_iterator(dir)) {
-        const std::string text = read(file.path());
+        const std::string text = labkit::read_file(file.path());
         for (auto it = std::sregex_iterator(text.begin(), text.end(), banner); it != std::sregex_iterator(); ++it) {
           const std::string tag = (*it)[1], title = (*it)[2];
           INFO(file.path().string() << ": " << it->str());

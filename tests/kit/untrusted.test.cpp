@@ -7,6 +7,7 @@
 #include "runner/untrusted.h"
 
 #include "common/harness/catch.h"
+#include "common/text.h"
 
 #include <cstdlib>
 #include <filesystem>
@@ -49,8 +50,7 @@ std::string through_the_shell(const std::string& word) {
   const std::string out = "/tmp/kit-untrusted-shell." + std::to_string(getpid());
   const std::string command = "printf %s " + word + " >" + out;
   if (std::system(command.c_str()) != 0) return "<sh failed>";
-  std::ifstream in(out, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string text = labkit::read_file(out);
   std::filesystem::remove(out);
   return text;
 }
