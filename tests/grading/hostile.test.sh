@@ -343,7 +343,10 @@ grep -q "printed more than" "$out/print_100mb/report.txt" || fail "print_100mb: 
 grep -q "exit()" "$out/exit_0/report.txt" || fail "exit_0: the report does not mention exit()"
 grep -q "defines main()" "$out/own_main/report.txt" || fail "own_main: the report does not say it defines main()"
 grep -q "constructor priority" "$out/early_constructor/report.txt" || fail "early_constructor: the report does not say why"
-grep -q "No such file" "$out/include_reference/report.txt" || fail "include_reference: the reference was visible to the compiler"
+# Bubblewrap leaves the kit's solutions out of the build's view ("No such file"); Landlock,
+# the fallback where bubblewrap cannot make its namespaces, refuses to open them.
+grep -qE "No such file|Permission denied" "$out/include_reference/report.txt" ||
+  fail "include_reference: the reference was visible to the compiler"
 # The class page lists what cost more than a wrong answer, in the kit's own words.
 for row in "segfault:crashed during a call" "compile_error:does not compile" "exit_0:crashed during a call" "print_100mb:too much output"; do
   grep -qF "${row%%:*}</a></td><td>${row#*:}</td>" "$out/class.html" ||
