@@ -223,39 +223,35 @@ void SphereSweepsScene::update() {
   verdict_[step_of(mode_)] = steps[0].verdict;
 }
 
-template <class Motion, class Judge>
-Step sweep_step(const char* tag, const char* title, const Motion& in, const Attempt<Sweep>& got, Judge&& judge,
-                double exact_time, bool exact_overlapping) {
-  Step s = judged(tag, title, got, [&](const Sweep& g) { return judge(in, g); });
-  const std::string exact = exact_overlapping ? "overlapping" : (exact_time < 0 ? "none" : "contact");
-  s.rows = {{"status", got ? describe(got->status) : "", exact}};
-  const bool contact = got && got->status == SweepStatus::contact;
-  if (contact || exact == "contact")
-    s.rows.push_back({"time", contact ? num(got->time) : "", exact == "contact" ? num(exact_time) : ""});
-  if (contact) s.rows.push_back({"point", num(got->point), ""});
+// One sweep's step: the answer, the exact first contact and overlap at t = 0 (kept for the
+// picture), and the rows that set them side by side.
+template <class Motion, class Exact, class Run>
+Step SphereSweepsScene::sweep_step(const char* tag, const char* title, const Motion& in, const Exact& exact, Run run,
+                                   Judge<Motion> judge_it) {
+  sweep_ = attempt(run);
+  exact_time_ = oracle::first_contact(exact, in.duration), exact_overlapping_ = oracle::gap_sign(exact, 0.0, 0.0) <= 0;
+  Step s = judged(tag, title, sweep_, [&](const Sweep& got) { return judge_it(in, got, judge::Rules::random); });
+  const std::string status = exact_overlapping_ ? "overlapping" : (exact_time_ < 0 ? "none" : "contact");
+  s.rows = {{"status", sweep_ ? describe(sweep_->status) : "", status}};
+  const bool contact = sweep_ && sweep_->status == SweepStatus::contact;
+  if (contact || status == "contact")
+    s.rows.push_back({"time", contact ? num(sweep_->time) : "", status == "contact" ? num(exact_time_) : ""});
+  if (contact) s.rows.push_back({"point", num(sweep_->point), ""});
   return s;
 }
 
 void SphereSweepsScene::update_sphere_plane() {
-  const SpherePlaneMotion in{s0_, v0_, plane_, duration_};
-  const oracle::SpherePlaneSweep m{s0_, v0_, plane_};
-  sweep_ = attempt([&] { return sweep_sphere_plane(s0_, v0_, plane_, duration_); });
-  exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
   steps.push_back(sweep_step(
-      "L05S4", "sweep_sphere_plane", in, sweep_,
-      [](const SpherePlaneMotion& i, const Sweep& g) { return judge::sweep_sphere_plane(i, g); }, exact_time_,
-      exact_overlapping_));
+      "L05S4", "sweep_sphere_plane", SpherePlaneMotion{s0_, v0_, plane_, duration_},
+      oracle::SpherePlaneSweep{s0_, v0_, plane_}, [&] { return sweep_sphere_plane(s0_, v0_, plane_, duration_); },
+      judge::sweep_sphere_plane));
 }
 
 void SphereSweepsScene::update_sphere_sphere() {
-  const SphereSphereMotion in{s0_, v0_, s1_, v1_, duration_};
-  const oracle::SphereSphereSweep m{s0_, s1_, v0_, v1_};
-  sweep_ = attempt([&] { return sweep_sphere_sphere(s0_, v0_, s1_, v1_, duration_); });
-  exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
   Step s = sweep_step(
-      "L05S5", "sweep_sphere_sphere", in, sweep_,
-      [](const SphereSphereMotion& i, const Sweep& g) { return judge::sweep_sphere_sphere(i, g); }, exact_time_,
-      exact_overlapping_);
+      "L05S5", "sweep_sphere_sphere", SphereSphereMotion{s0_, v0_, s1_, v1_, duration_},
+      oracle::SphereSphereSweep{s0_, s1_, v0_, v1_}, [&] { return sweep_sphere_sphere(s0_, v0_, s1_, v1_, duration_); },
+      judge::sweep_sphere_sphere);
   // The quadratic's coefficients (rounded), for the handout's special cases.
   const Vec3 A = s0_.center - s1_.center, B = v0_ - v1_;
   const double R = s0_.radius + s1_.radius;
@@ -264,27 +260,19 @@ void SphereSweepsScene::update_sphere_sphere() {
 }
 
 void SphereSweepsScene::update_sphere_capsule() {
-  const SphereCapsuleMotion in{s0_, v0_, capsule_, duration_};
-  const oracle::SphereCapsuleSweep m{s0_, v0_, capsule_};
-  sweep_ = attempt([&] { return sweep_sphere_capsule(s0_, v0_, capsule_, duration_); });
-  exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
   Step s = sweep_step(
-      "L05S6", "sweep_sphere_capsule", in, sweep_,
-      [](const SphereCapsuleMotion& i, const Sweep& g) { return judge::sweep_sphere_capsule(i, g); }, exact_time_,
-      exact_overlapping_);
+      "L05S6", "sweep_sphere_capsule", SphereCapsuleMotion{s0_, v0_, capsule_, duration_},
+      oracle::SphereCapsuleSweep{s0_, v0_, capsule_},
+      [&] { return sweep_sphere_capsule(s0_, v0_, capsule_, duration_); }, judge::sweep_sphere_capsule);
   s.rows.push_back({"grown radius R = r + rc", "", num(s0_.radius + capsule_.radius)});
   steps.push_back(s);
 }
 
 void SphereSweepsScene::update_box_plane() {
-  const BoxPlaneMotion in{box_, v0_, plane_, duration_};
-  const oracle::BoxPlaneSweep m{box_, v0_, plane_};
-  sweep_ = attempt([&] { return sweep_box_plane(box_, v0_, plane_, duration_); });
-  exact_time_ = oracle::first_contact(m, duration_), exact_overlapping_ = oracle::gap_sign(m, 0.0, 0.0) <= 0;
   Step s = sweep_step(
-      "L05S7", "sweep_box_plane", in, sweep_,
-      [](const BoxPlaneMotion& i, const Sweep& g) { return judge::sweep_box_plane(i, g); }, exact_time_,
-      exact_overlapping_);
+      "L05S7", "sweep_box_plane", BoxPlaneMotion{box_, v0_, plane_, duration_},
+      oracle::BoxPlaneSweep{box_, v0_, plane_}, [&] { return sweep_box_plane(box_, v0_, plane_, duration_); },
+      judge::sweep_box_plane);
   const Plane plane = drawable(plane_);
   const double n = plane.normal.norm();
   double reach = 0;

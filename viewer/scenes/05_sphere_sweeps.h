@@ -61,6 +61,10 @@ class SphereSweepsScene : public Scene {
   void update_sphere_sphere();
   void update_sphere_capsule();
   void update_box_plane();
+  template <class Motion> using Judge = check::Outcome (*)(const Motion&, const Sweep&, judge::Rules);
+  template <class Motion, class Exact, class Run>
+  Step sweep_step(const char* tag, const char* title, const Motion& in, const Exact& exact, Run run,
+                  Judge<Motion> judge_it);
   void follow_handles();
   void draw_cores(Frame& f) const;
   void draw_sweep(Frame& f) const;
