@@ -77,34 +77,21 @@ LABKIT_FIELDS(BoxPlaneMotion, box, velocity, plane, duration)
 
 namespace labkit::lab05 {
 
-// Step 3's inputs: two sphere-swept volumes.
-struct SpherePair {
-  Sphere a, b;
+// Step 3's inputs: two sphere-swept volumes, a of one kind and b of another.
+template <class A, class B> struct VolumePair {
+  A a;
+  B b;
 };
-struct SphereCapsule {
-  Sphere a;
-  Capsule b;
-};
-struct SphereLozenge {
-  Sphere a;
-  Lozenge b;
-};
-struct CapsulePair {
-  Capsule a, b;
-};
-struct CapsuleLozenge {
-  Capsule a;
-  Lozenge b;
-};
-struct LozengePair {
-  Lozenge a, b;
-};
-LABKIT_FIELDS(SpherePair, a, b)
-LABKIT_FIELDS(SphereCapsule, a, b)
-LABKIT_FIELDS(SphereLozenge, a, b)
-LABKIT_FIELDS(CapsulePair, a, b)
-LABKIT_FIELDS(CapsuleLozenge, a, b)
-LABKIT_FIELDS(LozengePair, a, b)
+template <class A, class B, class Visit> void fields(VolumePair<A, B>& x, Visit&& visit) {
+  visit("a", x.a);
+  visit("b", x.b);
+}
+using SpherePair = VolumePair<Sphere, Sphere>;
+using SphereCapsule = VolumePair<Sphere, Capsule>;
+using SphereLozenge = VolumePair<Sphere, Lozenge>;
+using CapsulePair = VolumePair<Capsule, Capsule>;
+using CapsuleLozenge = VolumePair<Capsule, Lozenge>;
+using LozengePair = VolumePair<Lozenge, Lozenge>;
 
 }  // namespace labkit::lab05
 
