@@ -1,7 +1,8 @@
 // Catch2 2 or 3, whichever the system has: Debian 12 and Ubuntu 22.04 ship Catch2 2 (one
 // header; its implementation is compiled in catch_implementation.cpp), Ubuntu 24.04
 // ships Catch2 3 (headers per part and a compiled library). Every file of the kit
-// includes Catch through this header, which also holds the few names that differ.
+// includes Catch through this header, which also holds the few names that differ and the
+// one precondition test every lab's tests share (rejects).
 #pragma once
 
 #include <stdexcept>
