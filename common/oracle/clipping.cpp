@@ -13,10 +13,10 @@ using namespace kernel;
 namespace {
 
 FT value(const Plane& plane, const Epeck::Point_3& x) {
-  return FT(plane.normal.x()) * x.x() + FT(plane.normal.y()) * x.y() + FT(plane.normal.z()) * x.z() + FT(plane.offset);
+  return ft(plane.normal.x()) * x.x() + ft(plane.normal.y()) * x.y() + ft(plane.normal.z()) * x.z() + ft(plane.offset);
 }
 
-FT squared_norm(const Vec3& v) { return FT(v.x()) * FT(v.x()) + FT(v.y()) * FT(v.y()) + FT(v.z()) * FT(v.z()); }
+FT squared_norm(const Vec3& v) { return ft(v.x()) * ft(v.x()) + ft(v.y()) * ft(v.y()) + ft(v.z()) * ft(v.z()); }
 
 // Sutherland-Hodgman against one closed half-space: keep what has value >= 0, and add
 // the crossing point on every edge whose ends have strictly opposite signs.
@@ -272,7 +272,7 @@ bool inside_all(const Vec3& x, const std::vector<Plane>& planes, double toleranc
     if (plane.value(x) - rounding_bound(plane, x) >= -0.99 * tolerance * plane.normal.norm()) continue;
     const FT v = value(plane, p);
     if (v >= 0) continue;
-    if (v * v > FT(tolerance) * FT(tolerance) * squared_norm(plane.normal)) return false;
+    if (v * v > ft(tolerance) * ft(tolerance) * squared_norm(plane.normal)) return false;
   }
   return true;
 }
@@ -281,9 +281,9 @@ std::array<Plane, 6> frustum_planes(const Mat4& m) {
   std::array<Plane, 6> planes;
   for (int i = 0; i < 6; ++i) {
     const int row = i / 2;
-    const FT sign = i % 2 == 0 ? FT(1) : FT(-1);
+    const FT sign = i % 2 == 0 ? ft(1) : ft(-1);
     FT c[4];
-    for (int j = 0; j < 4; ++j) c[j] = FT(m(3, j)) + sign * FT(m(row, j));
+    for (int j = 0; j < 4; ++j) c[j] = ft(m(3, j)) + sign * ft(m(row, j));
     const FT n2 = c[0] * c[0] + c[1] * c[1] + c[2] * c[2];
     if (CGAL::is_zero(n2)) {
       planes[std::size_t(i)] = Plane{Vec3::Zero(), 0.0};

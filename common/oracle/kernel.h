@@ -3,9 +3,12 @@
 #pragma once
 
 #include "common/geometry.h"
+#include "common/oracle/not_finite.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <cmath>
 
 namespace oracle::kernel {
 
@@ -15,8 +18,21 @@ using Epick = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 using FT = Epeck::FT;
 
-inline Epick::Point_3 fast(const labkit::Vec3& v) { return {v.x(), v.y(), v.z()}; }
-inline Epeck::Point_3 exact(const labkit::Vec3& v) { return {v.x(), v.y(), v.z()}; }
+// Every double enters the exact world through these: a NaN or an infinity throws
+// NotFinite (not_finite.h) instead of making GMP abort the judge's process.
+inline double finite(double x) {
+  if (!std::isfinite(x)) throw NotFinite();
+  return x;
+}
+inline FT ft(double x) { return FT(finite(x)); }
+inline const FT& ft(const FT& x) { return x; }
+inline const labkit::Vec3& finite(const labkit::Vec3& v) {
+  if (!v.allFinite()) throw NotFinite();
+  return v;
+}
+
+inline Epick::Point_3 fast(const labkit::Vec3& v) { return {finite(v.x()), finite(v.y()), finite(v.z())}; }
+inline Epeck::Point_3 exact(const labkit::Vec3& v) { return {finite(v.x()), finite(v.y()), finite(v.z())}; }
 inline Epeck::Triangle_3 exact(const labkit::Triangle& t) { return {exact(t.v0), exact(t.v1), exact(t.v2)}; }
 inline Epeck::Segment_3 exact(const labkit::Segment& s) { return {exact(s.a), exact(s.b)}; }
 

@@ -171,7 +171,7 @@ bool touch_during_frame_fast(const Mesh& a, const Vec3& va, const Mesh& b, const
 bool within_translated(const Vec3& p, const Mesh& mesh, const Vec3& offset, double tolerance) {
   const P x = exact(p);
   const V o = exact(offset) - CGAL::ORIGIN;
-  const FT tol2 = FT(tolerance) * FT(tolerance);
+  const FT tol2 = ft(tolerance) * ft(tolerance);
   for (std::size_t k = 0; k < mesh.size(); ++k) {
     const Epeck::Triangle_3 tri(exact(mesh.triangle(k).v0) + o, exact(mesh.triangle(k).v1) + o,
                                 exact(mesh.triangle(k).v2) + o);

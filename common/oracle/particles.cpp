@@ -15,7 +15,7 @@ namespace {
 struct V3 {
   FT x, y, z;
 };
-V3 exact_vector(const Vec3& v) { return {FT(v.x()), FT(v.y()), FT(v.z())}; }
+V3 exact_vector(const Vec3& v) { return {ft(v.x()), ft(v.y()), ft(v.z())}; }
 V3 operator+(const V3& a, const V3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 V3 operator-(const V3& a, const V3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
 V3 operator*(const FT& k, const V3& a) { return {k * a.x, k * a.y, k * a.z}; }
@@ -24,9 +24,9 @@ V3 cross(const V3& a, const V3& b) { return {a.y * b.z - a.z * b.y, a.z * b.x - 
 Vec3 rounded(const V3& a) { return {kernel::rounded(a.x), kernel::rounded(a.y), kernel::rounded(a.z)}; }
 
 // A length: the exact square, rounded, rooted in double (relative error about 1e-16).
-FT length(const V3& a) { return FT(std::sqrt(kernel::rounded(dot(a, a)))); }
+FT length(const V3& a) { return ft(std::sqrt(kernel::rounded(dot(a, a)))); }
 
-FT value(const Plane& p, const Vec3& x) { return dot(exact_vector(p.normal), exact_vector(x)) + FT(p.offset); }
+FT value(const Plane& p, const Vec3& x) { return dot(exact_vector(p.normal), exact_vector(x)) + ft(p.offset); }
 
 }  // namespace
 
@@ -82,51 +82,51 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
   if (!CGAL::is_negative(v_close)) return r;
   r.closing = true;
   const FT m(mass);
-  const FT j = -(FT(1) + FT(e)) * m * v_close;
+  const FT j = -(ft(1) + ft(e)) * m * v_close;
   const V3 normal_impulse = j * n;
   const V3 tangential = relative - v_close * n;
   V3 friction{0, 0, 0};
   if (!CGAL::is_zero(dot(tangential, tangential))) {
     const FT slide = length(tangential);
-    const FT f = CGAL::min(FT(mu) * j, m * slide);
+    const FT f = CGAL::min(ft(mu) * j, m * slide);
     friction = (-f / slide) * tangential;
   }
   r.normal_impulse = rounded(normal_impulse);
   r.friction = rounded(friction);
-  r.velocity = rounded(v + (FT(1) / m) * (normal_impulse + friction));
+  r.velocity = rounded(v + (ft(1) / m) * (normal_impulse + friction));
   return r;
 }
 
 namespace {
 
 V3 acceleration(const V3& velocity, const FT& mass, const Forces& f) {
-  const V3 drag = (FT(f.drag) + FT(f.air_drag) * length(velocity)) * velocity;
-  return exact_vector(f.gravity) - (FT(1) / mass) * drag;
+  const V3 drag = (ft(f.drag) + ft(f.air_drag) * length(velocity)) * velocity;
+  return exact_vector(f.gravity) - (ft(1) / mass) * drag;
 }
 
 }  // namespace
 
 Vec3 force(const Vec3& velocity, double mass, const Forces& f) {
-  return rounded(FT(mass) * acceleration(exact_vector(velocity), FT(mass), f));
+  return rounded(ft(mass) * acceleration(exact_vector(velocity), ft(mass), f));
 }
 
 State euler_step(const State& s, double mass, const Forces& f, double dt) {
   const V3 p = exact_vector(s.position), v = exact_vector(s.velocity);
   const FT h(dt);
-  return {rounded(p + h * v), rounded(v + h * acceleration(v, FT(mass), f)), s.previous};
+  return {rounded(p + h * v), rounded(v + h * acceleration(v, ft(mass), f)), s.previous};
 }
 
 State verlet_step(const State& s, double mass, const Forces& f, double dt) {
   const V3 p = exact_vector(s.position), previous = exact_vector(s.previous);
   const FT h(dt);
-  const V3 next = FT(2) * p - previous + (h * h) * acceleration(exact_vector(s.velocity), FT(mass), f);
-  return {rounded(next), rounded((FT(1) / h) * (next - p)), s.position};
+  const V3 next = ft(2) * p - previous + (h * h) * acceleration(exact_vector(s.velocity), ft(mass), f);
+  return {rounded(next), rounded((ft(1) / h) * (next - p)), s.position};
 }
 
 State start_verlet(const State& s, double mass, const Forces& f, double dt) {
   const V3 p = exact_vector(s.position), v = exact_vector(s.velocity);
   const FT h(dt);
-  const V3 previous = p - h * v + (h * h / FT(2)) * acceleration(v, FT(mass), f);
+  const V3 previous = p - h * v + (h * h / ft(2)) * acceleration(v, ft(mass), f);
   return {s.position, s.velocity, rounded(previous)};
 }
 
@@ -134,9 +134,9 @@ namespace {
 
 FT discriminant(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity) {
   const V3 d = exact_vector(target) - exact_vector(from), g = exact_vector(gravity);
-  const FT v2 = FT(speed) * FT(speed);
+  const FT v2 = ft(speed) * ft(speed);
   const V3 c = cross(d, g);
-  return v2 * v2 + FT(2) * v2 * dot(d, g) - dot(c, c);
+  return v2 * v2 + ft(2) * v2 * dot(d, g) - dot(c, c);
 }
 
 }  // namespace
@@ -152,7 +152,7 @@ double launch_discriminant(const Vec3& from, const Vec3& target, double speed, c
 double launch_radicand(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity) {
   const V3 d = exact_vector(target) - exact_vector(from), g = exact_vector(gravity);
   const V3 c = cross(d, g);
-  const FT gx2 = dot(c, c), g2 = dot(g, g), v2 = FT(speed) * FT(speed);
+  const FT gx2 = dot(c, c), g2 = dot(g, g), v2 = ft(speed) * ft(speed);
   if (gx2 == 0 || g2 == 0 || v2 == 0) return 0.0;
   return kernel::rounded(gx2 * discriminant(from, target, speed, gravity) / (g2 * v2 * v2));
 }
@@ -165,19 +165,19 @@ bool launch_vertical(const Vec3& from, const Vec3& target, const Vec3& gravity) 
 bool trajectory_reaches(const Vec3& from, const Vec3& velocity, double t, const Vec3& gravity, const Vec3& target,
                         double tolerance) {
   const FT h(t);
-  const V3 p = exact_vector(from) + h * exact_vector(velocity) + (h * h / FT(2)) * exact_vector(gravity);
+  const V3 p = exact_vector(from) + h * exact_vector(velocity) + (h * h / ft(2)) * exact_vector(gravity);
   const V3 miss = p - exact_vector(target);
-  return dot(miss, miss) <= FT(tolerance) * FT(tolerance);
+  return dot(miss, miss) <= ft(tolerance) * ft(tolerance);
 }
 
 bool squared_speed_at_most(const Vec3& v, const Vec3& reference, double factor) {
   const V3 a = exact_vector(v), b = exact_vector(reference);
-  return dot(a, a) <= FT(factor) * dot(b, b);
+  return dot(a, a) <= ft(factor) * dot(b, b);
 }
 
 bool squared_speed_at_least(const Vec3& v, const Vec3& reference, double factor) {
   const V3 a = exact_vector(v), b = exact_vector(reference);
-  return dot(a, a) >= FT(factor) * dot(b, b);
+  return dot(a, a) >= ft(factor) * dot(b, b);
 }
 
 }  // namespace oracle

@@ -8,11 +8,11 @@ using namespace kernel;
 namespace {
 
 FT value(const Plane& plane, const Vec3& x) {
-  return FT(plane.normal.x()) * FT(x.x()) + FT(plane.normal.y()) * FT(x.y()) + FT(plane.normal.z()) * FT(x.z()) +
-         FT(plane.offset);
+  return ft(plane.normal.x()) * ft(x.x()) + ft(plane.normal.y()) * ft(x.y()) + ft(plane.normal.z()) * ft(x.z()) +
+         ft(plane.offset);
 }
 
-FT squared(double x) { return FT(x) * FT(x); }
+FT squared(double x) { return ft(x) * ft(x); }
 
 // The closed set of a zero-area triangle is its longest edge.
 Epeck::Segment_3 longest_edge(const Epeck::Triangle_3& t) {

@@ -67,8 +67,8 @@ SegmentHit rounded_hit(const ExactHit& h, int triangle) {
 
 Epeck::Aff_transformation_3 exact_transform(const RigidTransform& m) {
   const auto& a = m.matrix();
-  return {FT(a(0, 0)), FT(a(0, 1)), FT(a(0, 2)), FT(a(0, 3)), FT(a(1, 0)), FT(a(1, 1)), FT(a(1, 2)),
-          FT(a(1, 3)), FT(a(2, 0)), FT(a(2, 1)), FT(a(2, 2)), FT(a(2, 3)), FT(1)};
+  return {ft(a(0, 0)), ft(a(0, 1)), ft(a(0, 2)), ft(a(0, 3)), ft(a(1, 0)), ft(a(1, 1)), ft(a(1, 2)),
+          ft(a(1, 3)), ft(a(2, 0)), ft(a(2, 1)), ft(a(2, 2)), ft(a(2, 3)), ft(1)};
 }
 
 bool by_t_then_index(const SegmentHit& x, const SegmentHit& y) {
@@ -140,26 +140,26 @@ Vec3 unit_normal(const Triangle& t) {
 
 namespace {
 bool within_exact(const Epeck::Point_3& p, const Vec3& x, double tolerance) {
-  return CGAL::squared_distance(p, exact(x)) <= FT(tolerance) * FT(tolerance);
+  return CGAL::squared_distance(p, exact(x)) <= ft(tolerance) * ft(tolerance);
 }
 }  // namespace
 
 bool weights_reproduce(const Triangle& t, const Vec3& w, const Vec3& x, double tolerance) {
   const Epeck::Point_3 origin = CGAL::ORIGIN;
-  const Epeck::Point_3 p = origin + (exact(t.v0) - origin) * FT(w[0]) + (exact(t.v1) - origin) * FT(w[1]) +
-                           (exact(t.v2) - origin) * FT(w[2]);
+  const Epeck::Point_3 p = origin + (exact(t.v0) - origin) * ft(w[0]) + (exact(t.v1) - origin) * ft(w[1]) +
+                           (exact(t.v2) - origin) * ft(w[2]);
   return within_exact(p, x, tolerance);
 }
 
 bool alpha_beta_reproduce(const Triangle& t, double alpha, double beta, const Vec3& x, double tolerance) {
   const Epeck::Point_3 v0 = exact(t.v0);
-  const Epeck::Point_3 p = v0 + (exact(t.v1) - v0) * FT(alpha) + (exact(t.v2) - v0) * FT(beta);
+  const Epeck::Point_3 p = v0 + (exact(t.v1) - v0) * ft(alpha) + (exact(t.v2) - v0) * ft(beta);
   return within_exact(p, x, tolerance);
 }
 
 bool parameter_reproduces(const Segment& s, double t, const Vec3& x, double tolerance) {
   const Epeck::Point_3 a = exact(s.a);
-  return within_exact(a + (exact(s.b) - a) * FT(t), x, tolerance);
+  return within_exact(a + (exact(s.b) - a) * ft(t), x, tolerance);
 }
 
 namespace {
@@ -270,14 +270,14 @@ std::string check_moving_hit(const Segment& s, const Mesh& mesh, const RigidTran
   const Epeck::Point_3 a_delta = pose.transform(exact_transform(m0).inverse().transform(exact(s.a)));
   const Epeck::Segment_3 path(a_delta, exact(s.b));
   const Epeck::Point_3 p = exact(point);
-  const FT tol2 = FT(tolerance) * FT(tolerance);
+  const FT tol2 = ft(tolerance) * ft(tolerance);
   const auto distance2 = [](const Epeck::Point_3& q, const Epeck::Segment_3& seg) {
     return seg.is_degenerate() ? CGAL::squared_distance(q, seg.source()) : CGAL::squared_distance(q, seg);
   };
   if (!posed.is_degenerate() && CGAL::squared_distance(p, posed) > tol2)
     return "the point is not on that triangle (with the mesh at m1)";
   if (distance2(p, path) > tol2) return "the point is not on the path a' -> b, a' = m1 m0^-1 a";
-  if (CGAL::squared_distance(a_delta + (path.target() - a_delta) * FT(t), p) > tol2)
+  if (CGAL::squared_distance(a_delta + (path.target() - a_delta) * ft(t), p) > tol2)
     return "a' + t (b - a') does not reproduce the point";
   return "";
 }

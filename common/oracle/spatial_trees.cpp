@@ -160,7 +160,7 @@ bool balls_meet(const Sphere& a, const Sphere& b) {
   if (d2 > s2 + margin) return false;
   if (d2 < s2 - margin) return true;
   const Epeck::Point_3 ca = exact(a.center), cb = exact(b.center);
-  const FT r = FT(a.radius) + FT(b.radius);
+  const FT r = ft(a.radius) + ft(b.radius);
   return CGAL::squared_distance(ca, cb) <= r * r;
 }
 

@@ -38,12 +38,21 @@ using Vector = Epeck::Vector_3;
 using Interval = CGAL::Interval_nt<false>;
 using IK = CGAL::Simple_cartesian<Interval>;  // interval arithmetic: certified bounds, or an exception
 
-Vector exact_vector(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+Vector exact_vector(const Vec3& v) {
+  finite(v);
+  return {v.x(), v.y(), v.z()};
+}
 
 FT squared(const FT& x) { return x * x; }
 
-template <class K> typename K::Point_3 point_of(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
-template <class K> typename K::Vector_3 vector_of(const Vec3& v) { return {v.x(), v.y(), v.z()}; }
+template <class K> typename K::Point_3 point_of(const Vec3& v) {
+  finite(v);
+  return {v.x(), v.y(), v.z()};
+}
+template <class K> typename K::Vector_3 vector_of(const Vec3& v) {
+  finite(v);
+  return {v.x(), v.y(), v.z()};
+}
 template <class K> typename K::Segment_3 segment_of(const Segment& s) { return {point_of<K>(s.a), point_of<K>(s.b)}; }
 
 template <class K> typename K::FT distance2(const typename K::Point_3& p, const typename K::Segment_3& s) {
@@ -134,7 +143,7 @@ class Minimum {
     auto e = std::make_shared<SquaredDistance::Exact>();
     e->bounded = true;
     if (zero_) {
-      e->compute = [] { return FT(0); };
+      e->compute = [] { return ft(0); };
       return SquaredDistance(std::move(e));
     }
     double best = std::numeric_limits<double>::infinity();
@@ -315,7 +324,7 @@ int sign_minus_root(const FT& x, const FT& e, const FT& nn) {
   return sign_of_compare(e * e * nn, x * x);
 }
 
-FT sum(double a, double b, double c = 0.0) { return FT(a) + FT(b) + FT(c); }
+FT sum(double a, double b, double c = 0.0) { return ft(a) + ft(b) + ft(c); }
 
 // ---- Sweeps ---------------------------------------------------------------------------
 
@@ -325,11 +334,11 @@ struct Relative {  // A + t B, R
 };
 Relative relative(const SphereSphereSweep& in) {
   return {exact(in.s0.center) - exact(in.s1.center), exact_vector(in.v0) - exact_vector(in.v1),
-          FT(in.s0.radius) + FT(in.s1.radius)};
+          ft(in.s0.radius) + ft(in.s1.radius)};
 }
 
 FT plane_value(const Plane& plane, const Point& x) {
-  return exact_vector(plane.normal) * (x - CGAL::ORIGIN) + FT(plane.offset);
+  return exact_vector(plane.normal) * (x - CGAL::ORIGIN) + ft(plane.offset);
 }
 FT normal2(const Plane& plane) { return exact_vector(plane.normal).squared_length(); }
 
@@ -340,7 +349,7 @@ struct Linear {
   // The smallest |f| over [0, t_end].
   FT smallest_abs(const FT& t_end) const {
     const FT f1 = at(t_end);
-    if (sign_of(CGAL::sign(f0)) * sign_of(CGAL::sign(f1)) <= 0) return FT(0);
+    if (sign_of(CGAL::sign(f0)) * sign_of(CGAL::sign(f1)) <= 0) return ft(0);
     return CGAL::min(CGAL::abs(f0), CGAL::abs(f1));
   }
 };
@@ -352,7 +361,7 @@ Linear linear(const Plane& plane, const Vec3& center, const Vec3& velocity) {
 FT projected_radius(const Box& box, const Plane& plane) {
   const Vector n = exact_vector(plane.normal);
   FT rho = 0;
-  for (int i = 0; i < 3; ++i) rho += FT(box.half_extents[i]) * CGAL::abs(n * exact_vector(box.axes.col(i)));
+  for (int i = 0; i < 3; ++i) rho += ft(box.half_extents[i]) * CGAL::abs(n * exact_vector(box.axes.col(i)));
   return rho;
 }
 
@@ -363,17 +372,17 @@ double first_root(double a, double b, double c) {
   return q > 0 ? c / q : 0.0;
 }
 
-bool exact_double(const FT& x, double d) { return std::isfinite(d) && x == FT(d); }
+bool exact_double(const FT& x, double d) { return std::isfinite(d) && x == ft(d); }
 
 // Are x . y's products and partial sums exact in double, so that any order of summing
 // gives the exact value?
 bool dot_exact(const Vec3& x, const Vec3& y) {
   const double p[3] = {x[0] * y[0], x[1] * y[1], x[2] * y[2]};
   for (int i = 0; i < 3; ++i)
-    if (!exact_double(FT(x[i]) * FT(y[i]), p[i])) return false;
-  return exact_double(FT(p[0]) + FT(p[1]), p[0] + p[1]) && exact_double(FT(p[0]) + FT(p[2]), p[0] + p[2]) &&
-         exact_double(FT(p[1]) + FT(p[2]), p[1] + p[2]) &&
-         exact_double(FT(p[0]) + FT(p[1]) + FT(p[2]), p[0] + p[1] + p[2]);
+    if (!exact_double(ft(x[i]) * ft(y[i]), p[i])) return false;
+  return exact_double(ft(p[0]) + ft(p[1]), p[0] + p[1]) && exact_double(ft(p[0]) + ft(p[2]), p[0] + p[2]) &&
+         exact_double(ft(p[1]) + ft(p[2]), p[1] + p[2]) &&
+         exact_double(ft(p[0]) + ft(p[1]) + ft(p[2]), p[0] + p[1] + p[2]);
 }
 
 }  // namespace
@@ -443,15 +452,15 @@ SquaredDistance squared_distance(const Rectangle& r0, const Rectangle& r1) {
 }
 
 bool rectangle_point_reproduces(const Rectangle& r, double s, double t, const Vec3& x, double tolerance) {
-  const Point p = exact(r.center) + exact_vector(r.u) * FT(s) + exact_vector(r.v) * FT(t);
-  return CGAL::squared_distance(p, exact(x)) <= squared(FT(tolerance));
+  const Point p = exact(r.center) + exact_vector(r.u) * ft(s) + exact_vector(r.v) * ft(t);
+  return CGAL::squared_distance(p, exact(x)) <= squared(ft(tolerance));
 }
 
 // ---- Sweeps -------------------------------------------------------------------------------
 
 int gap_sign(const SphereSphereSweep& in, double t, double extra) {
   const Relative m = relative(in);
-  return distance_sign((m.A + m.B * FT(t)).squared_length(), m.R + FT(extra));
+  return distance_sign((m.A + m.B * ft(t)).squared_length(), m.R + ft(extra));
 }
 
 int min_gap_sign(const SphereSphereSweep& in, double t_end, double extra) {
@@ -459,28 +468,28 @@ int min_gap_sign(const SphereSphereSweep& in, double t_end, double extra) {
   const Relative m = relative(in);
   const FT a = m.B.squared_length(), b = m.A * m.B;
   FT t = 0;
-  if (CGAL::is_positive(a)) t = CGAL::min(CGAL::max(-b / a, FT(0)), FT(t_end));
-  return distance_sign((m.A + m.B * t).squared_length(), m.R + FT(extra));
+  if (CGAL::is_positive(a)) t = CGAL::min(CGAL::max(-b / a, ft(0)), ft(t_end));
+  return distance_sign((m.A + m.B * t).squared_length(), m.R + ft(extra));
 }
 
 int gap_sign(const SpherePlaneSweep& in, double t, double extra) {
-  const FT f = linear(in.plane, in.sphere.center, in.velocity).at(FT(t));
-  return distance_sign(f * f / normal2(in.plane), FT(in.sphere.radius) + FT(extra));
+  const FT f = linear(in.plane, in.sphere.center, in.velocity).at(ft(t));
+  return distance_sign(f * f / normal2(in.plane), ft(in.sphere.radius) + ft(extra));
 }
 
 int min_gap_sign(const SpherePlaneSweep& in, double t_end, double extra) {
-  const FT f = linear(in.plane, in.sphere.center, in.velocity).smallest_abs(FT(t_end));
-  return distance_sign(f * f / normal2(in.plane), FT(in.sphere.radius) + FT(extra));
+  const FT f = linear(in.plane, in.sphere.center, in.velocity).smallest_abs(ft(t_end));
+  return distance_sign(f * f / normal2(in.plane), ft(in.sphere.radius) + ft(extra));
 }
 
 int gap_sign(const BoxPlaneSweep& in, double t, double extra) {
-  const FT f = linear(in.plane, in.box.center, in.velocity).at(FT(t));
-  return sign_minus_root(CGAL::abs(f) - projected_radius(in.box, in.plane), FT(extra), normal2(in.plane));
+  const FT f = linear(in.plane, in.box.center, in.velocity).at(ft(t));
+  return sign_minus_root(CGAL::abs(f) - projected_radius(in.box, in.plane), ft(extra), normal2(in.plane));
 }
 
 int min_gap_sign(const BoxPlaneSweep& in, double t_end, double extra) {
-  const FT f = linear(in.plane, in.box.center, in.velocity).smallest_abs(FT(t_end));
-  return sign_minus_root(f - projected_radius(in.box, in.plane), FT(extra), normal2(in.plane));
+  const FT f = linear(in.plane, in.box.center, in.velocity).smallest_abs(ft(t_end));
+  return sign_minus_root(f - projected_radius(in.box, in.plane), ft(extra), normal2(in.plane));
 }
 
 double first_contact(const SphereSphereSweep& in, double t_end) {
@@ -513,16 +522,16 @@ double first_contact(const BoxPlaneSweep& in, double t_end) {
 Point centre_at(const SphereCapsuleSweep& in, const FT& t) {
   return exact(in.sphere.center) + exact_vector(in.velocity) * t;
 }
-FT grown_radius(const SphereCapsuleSweep& in) { return FT(in.sphere.radius) + FT(in.capsule.radius); }
+FT grown_radius(const SphereCapsuleSweep& in) { return ft(in.sphere.radius) + ft(in.capsule.radius); }
 
 int gap_sign(const SphereCapsuleSweep& in, double t, double extra) {
-  return distance_sign(distance2<Epeck>(centre_at(in, FT(t)), exact(in.capsule.axis)), grown_radius(in) + FT(extra));
+  return distance_sign(distance2<Epeck>(centre_at(in, ft(t)), exact(in.capsule.axis)), grown_radius(in) + ft(extra));
 }
 
 int min_gap_sign(const SphereCapsuleSweep& in, double t_end, double extra) {
   // The smallest distance over [0, t_end] is that of the path's segment to the axis.
-  const Epeck::Segment_3 path(centre_at(in, FT(0)), centre_at(in, FT(t_end)));
-  return distance_sign(distance2<Epeck>(path, exact(in.capsule.axis)), grown_radius(in) + FT(extra));
+  const Epeck::Segment_3 path(centre_at(in, ft(0)), centre_at(in, ft(t_end)));
+  return distance_sign(distance2<Epeck>(path, exact(in.capsule.axis)), grown_radius(in) + ft(extra));
 }
 
 double first_contact(const SphereCapsuleSweep& in, double t_end) {
@@ -563,37 +572,37 @@ double first_contact(const SphereCapsuleSweep& in, double t_end) {
 }
 
 bool within_capsule(const Capsule& capsule, const Vec3& x, double tolerance) {
-  return distance_sign(distance2<Epeck>(exact(x), exact(capsule.axis)), FT(capsule.radius) + FT(tolerance)) <= 0;
+  return distance_sign(distance2<Epeck>(exact(x), exact(capsule.axis)), ft(capsule.radius) + ft(tolerance)) <= 0;
 }
 
 bool sphere_sweep_exact_and_steep(const SphereSphereSweep& in) {
   const Vec3 A = in.s0.center - in.s1.center, B = in.v0 - in.v1;
   const double R = in.s0.radius + in.s1.radius;
   for (int i = 0; i < 3; ++i) {
-    if (!exact_double(FT(in.s0.center[i]) - FT(in.s1.center[i]), A[i])) return false;
-    if (!exact_double(FT(in.v0[i]) - FT(in.v1[i]), B[i])) return false;
+    if (!exact_double(ft(in.s0.center[i]) - ft(in.s1.center[i]), A[i])) return false;
+    if (!exact_double(ft(in.v0[i]) - ft(in.v1[i]), B[i])) return false;
   }
-  if (!exact_double(FT(in.s0.radius) + FT(in.s1.radius), R) || !exact_double(FT(R) * FT(R), R * R)) return false;
+  if (!exact_double(ft(in.s0.radius) + ft(in.s1.radius), R) || !exact_double(ft(R) * ft(R), R * R)) return false;
   if (!dot_exact(A, A) || !dot_exact(A, B) || !dot_exact(B, B)) return false;
-  if (!exact_double(FT(A.dot(A)) - FT(R * R), A.dot(A) - R * R)) return false;
-  const FT a = FT(B.dot(B)), b = FT(A.dot(B)), c = FT(A.dot(A)) - FT(R * R);
+  if (!exact_double(ft(A.dot(A)) - ft(R * R), A.dot(A) - R * R)) return false;
+  const FT a = ft(B.dot(B)), b = ft(A.dot(B)), c = ft(A.dot(A)) - ft(R * R);
   return CGAL::is_positive(c) && CGAL::is_negative(b) && CGAL::is_positive(a) && 3 * b * b >= 4 * a * c;
 }
 
 bool within_moving_sphere(const Sphere& s, const Vec3& v, double t, const Vec3& x, double tolerance) {
-  const Point c = exact(s.center) + exact_vector(v) * FT(t);
-  return distance_sign(CGAL::squared_distance(c, exact(x)), FT(s.radius) + FT(tolerance)) <= 0;
+  const Point c = exact(s.center) + exact_vector(v) * ft(t);
+  return distance_sign(CGAL::squared_distance(c, exact(x)), ft(s.radius) + ft(tolerance)) <= 0;
 }
 
 bool within_plane(const Plane& plane, const Vec3& x, double tolerance) {
-  return squared(plane_value(plane, exact(x))) <= squared(FT(tolerance)) * normal2(plane);
+  return squared(plane_value(plane, exact(x))) <= squared(ft(tolerance)) * normal2(plane);
 }
 
 bool within_moving_box(const Box& box, const Vec3& v, double t, const Vec3& x, double tolerance) {
-  const Vector d = exact(x) - (exact(box.center) + exact_vector(v) * FT(t));
+  const Vector d = exact(x) - (exact(box.center) + exact_vector(v) * ft(t));
   for (int i = 0; i < 3; ++i) {
     const Vector axis = exact_vector(box.axes.col(i));
-    if (CGAL::abs(d * axis) > (FT(box.half_extents[i]) + FT(tolerance)) * axis.squared_length()) return false;
+    if (CGAL::abs(d * axis) > (ft(box.half_extents[i]) + ft(tolerance)) * axis.squared_length()) return false;
   }
   return true;
 }

@@ -6,11 +6,13 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <sys/prctl.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <algorithm>
 #include <cerrno>
 #include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <unordered_set>
@@ -21,7 +23,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-constexpr std::uint64_t kLargestAnswer = std::uint64_t(1) << 30;  // bytes
+// An answer may hold this many bytes for each byte of its request, and this many at least
+// (the largest legitimate answers, a lab 06 tree and its leaves, hold a few times their mesh).
+constexpr std::size_t kAnswerPerRequestByte = 64;
+constexpr std::size_t kSmallestLimit = std::size_t(4) << 20;
+constexpr std::size_t kGreetingLimit = 64;
 constexpr const char* kHello = "labkit-answerer 1";
 // Start-ups in a row that die before answering anything: then the program is broken
 // as a whole (a crash in a static initialiser, say), and no call is tried again.
@@ -52,12 +58,16 @@ class Frames {
     at_ = 0;
     buffer_.append(data, n);
   }
-  // True and the frame's payload when one is complete; throws on an impossible length.
-  bool next(std::string& payload) {
+  // True and the frame's payload when one is complete. A frame longer than `largest`
+  // throws as soon as its length is read, before its bytes are waited for or kept.
+  bool next(std::string& payload, std::size_t largest) {
     if (buffer_.size() - at_ < sizeof(std::uint64_t)) return false;
     std::uint64_t n;
     std::memcpy(&n, buffer_.data() + at_, sizeof n);
-    if (n > kLargestAnswer) throw std::runtime_error("an answer of " + std::to_string(n) + " bytes");
+    if (n > largest)
+      throw std::runtime_error("its answer declares " + std::to_string(n) +
+                               " bytes, more than any answer to this call can hold (at most " +
+                               std::to_string(largest) + ")");
     if (buffer_.size() - at_ - sizeof n < n) return false;
     payload.assign(buffer_, at_ + sizeof n, n);
     at_ += sizeof n + n;
@@ -86,6 +96,8 @@ std::string signal_words(int s) {
 // The batch, shared by every call of the process.
 struct Batch {
   bool deferring = false;
+  int default_answers = 0;  // DefaultAnswers scopes open
+  int examples = 0;         // RecordingExample scopes open
   std::vector<std::string> pending;
   std::unordered_map<std::string, Response> answers;
 };
@@ -147,6 +159,10 @@ bool Answerer::start() {
     // leaves the copies open across exec.
     const int in = fcntl(requests[0], F_DUPFD_CLOEXEC, 10), out = fcntl(answers[1], F_DUPFD_CLOEXEC, 10);
     if (in < 0 || out < 0 || dup2(in, 3) != 3 || dup2(out, 4) != 4) _exit(127);
+    // Nothing else the judge's process holds, or inherited from whoever started it,
+    // reaches the code under test: its standard streams and the two pipes only.
+    if (syscall(SYS_close_range, 5u, ~0u, 0u) != 0)
+      for (int fd = 5; fd < 65536; ++fd) close(fd);
     execvpe(args[0], args.data(), environment);
     const std::string why =
         std::string("labkit: cannot run the code under test (") + argv_[0] + "): " + strerror(errno) + "\n";
@@ -294,7 +310,8 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
         if (n > 0) frames.add(buffer, std::size_t(n));
         std::string payload;
         try {
-          while (received < requests.size() && frames.next(payload)) {
+          while (received < requests.size() &&
+                 frames.next(payload, greeted_ ? largest_answer(requests[received].size()) : kGreetingLimit)) {
             if (!greeted_) {
               if (payload != kHello) throw std::runtime_error("it did not greet as an answerer does");
               greeted_ = true;
@@ -306,8 +323,8 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
           }
         } catch (const std::runtime_error& e) {
           kind = Response::Kind::broken;
-          problem = std::string("its process wrote something that is not an answer (") + e.what() +
-                    "): does the code write to file descriptor 4?";
+          problem = std::string("its process wrote something that is not an answer: ") + e.what() +
+                    " (does the code write to file descriptor 4?)";
         }
       }
     }
@@ -352,6 +369,34 @@ void Answerer::flush() {
   const std::vector<Response> responses = exchange(pending);
   for (std::size_t i = 0; i < pending.size(); ++i) batch.answers[pending[i]] = responses[i];
   pending.clear();
+}
+
+std::size_t largest_answer(std::size_t request_bytes) {
+  return std::max(kSmallestLimit, kAnswerPerRequestByte * request_bytes);
+}
+
+DefaultAnswers::DefaultAnswers() { ++batch.default_answers; }
+DefaultAnswers::~DefaultAnswers() { --batch.default_answers; }
+bool answering_by_default() { return batch.default_answers > 0; }
+
+RecordingExample::RecordingExample() { ++batch.examples; }
+RecordingExample::~RecordingExample() { --batch.examples; }
+
+std::string request_hash(const std::string& request) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : request) h = (h ^ c) * 1099511628211ull;
+  char text[17];
+  std::snprintf(text, sizeof text, "%016llx", static_cast<unsigned long long>(h));
+  return text;
+}
+
+void note_request(const std::string& request) {
+  static const char* path = std::getenv("LABKIT_RECORD_EXAMPLES");
+  if (batch.examples == 0 || !path || !*path) return;
+  if (FILE* f = std::fopen(path, "a")) {
+    std::fprintf(f, "%s\n", request_hash(request).c_str());
+    std::fclose(f);
+  }
 }
 
 void begin_batch() {

@@ -55,6 +55,22 @@ struct Failed : std::runtime_error {
 // Failed::got of a call that timed out.
 constexpr const char* kNoAnswer = "no answer";
 
+// What the code under test threw (Status::threw): its own exception, never the kit's, so
+// that a verdict blames the student only for what came from the student's process.
+struct Threw : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+// What it rejected (Status::rejected): a std::invalid_argument, as the header's
+// preconditions ask, so that a test of a precondition catches it as one.
+struct Rejected : std::invalid_argument {
+  using std::invalid_argument::invalid_argument;
+};
+
+// The largest answer the judge reads for a request of `request_bytes`: every legitimate
+// answer of every lab is far smaller (a tree over a mesh, a list of hits), so a larger
+// frame is that call's failure, refused before anything is allocated for it.
+std::size_t largest_answer(std::size_t request_bytes);
+
 // Thrown while batching when a call's answer is not known yet. Not a std::exception, so
 // that no judge's own catch of std::exception swallows it.
 struct Deferred {};
@@ -101,6 +117,32 @@ bool flush();           // sends them (false: there were none) and keeps the ans
 void stop_deferring();  // calls not known yet are asked one by one again
 void end_batch();       // forgets the answers
 void new_query();       // a new query: the time-out budget starts afresh
+
+// Graded runs score a case only where an answer that does nothing would fail it
+// (README, "Scoring"): the judge runs each case again inside this scope, where every call
+// answers its result type's default (no hit, false, zeros) without reaching the answerer.
+class DefaultAnswers {
+ public:
+  DefaultAnswers();
+  ~DefaultAnswers();
+  DefaultAnswers(const DefaultAnswers&) = delete;
+  DefaultAnswers& operator=(const DefaultAnswers&) = delete;
+};
+bool answering_by_default();
+
+// The kit's test of its own scoring (runner/fake.cpp) needs the requests of the worked
+// examples: with LABKIT_RECORD_EXAMPLES set, the calls made inside this scope append a
+// hash of each request to that file. A graded run never sets it.
+class RecordingExample {
+ public:
+  RecordingExample();
+  ~RecordingExample();
+  RecordingExample(const RecordingExample&) = delete;
+  RecordingExample& operator=(const RecordingExample&) = delete;
+};
+void note_request(const std::string& request);
+// The hash the recording writes (16 hex digits), shared with the fake answerer.
+std::string request_hash(const std::string& request);
 
 // How many time-outs a query tolerates before its remaining calls are not run.
 constexpr int kTimeoutsPerQuery = 2;

@@ -64,8 +64,8 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
         throw Failed("an exception: std::bad_alloc",
                      "your code ran out of memory during this call: an allocation "
                      "too large for the memory limit, or one that never stops growing?");
-      throw std::runtime_error(message);
-    case Status::rejected: throw std::invalid_argument(message);
+      throw Threw(message);
+    case Status::rejected: throw Rejected(message);
     case Status::unknown_call:
       throw std::logic_error("kit error: the answerer cannot run " + id + ": " + message +
                              " (is it built from the same kit as the tests?)");

@@ -33,6 +33,14 @@ struct AnyField {
   template <class F> void operator()(const char*, F&) const {}
 };
 template <class T> using HasFields = decltype(fields(std::declval<T&>(), AnyField{}));
+template <class T, class = void> struct HasFieldList : std::false_type {};
+template <class T> struct HasFieldList<T, std::void_t<HasFields<T>>> : std::true_type {};
+template <class T> struct IsVector : std::false_type {};
+template <class T, class A> struct IsVector<std::vector<T, A>> : std::true_type {};
+template <class T> struct IsArray : std::false_type {};
+template <class T, std::size_t N> struct IsArray<std::array<T, N>> : std::true_type {};
+template <class T> struct IsMatrix : std::false_type {};
+template <int R, int C, int O> struct IsMatrix<Eigen::Matrix<double, R, C, O, R, C>> : std::true_type {};
 
 class Writer {
  public:
@@ -64,6 +72,7 @@ class Reader {
     return std::size_t(n);
   }
   std::size_t left() const { return std::size_t(end_ - at_); }
+  std::string rest() const { return std::string(at_, end_); }  // what is still to read
   bool done() const { return at_ == end_; }
 
  private:
