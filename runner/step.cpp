@@ -4,10 +4,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <memory>
 
 namespace runner {
@@ -26,6 +28,7 @@ std::string status_word(Status s) {
     case Status::out_of_memory: return "out of memory";
     case Status::exited_early: return "exited early";
     case Status::no_tests: return "no tests (kit error)";
+    case Status::kit_error: return "not graded (kit error)";
     case Status::not_built: return "does not compile";
   }
   return "?";
@@ -33,7 +36,7 @@ std::string status_word(Status s) {
 
 bool abnormal(Status s) {
   return s == Status::crashed || s == Status::timed_out || s == Status::flooded || s == Status::out_of_memory ||
-         s == Status::exited_early;
+         s == Status::exited_early || s == Status::kit_error;
 }
 
 namespace {
@@ -46,6 +49,7 @@ void read_report(const fs::path& path, StepResult& r) try {
   if (!file.error.empty()) return;
   const labkit::report::Step step = labkit::report::step_from_json(nlohmann::json::parse(file.text));
   r.finished = step.finished;
+  r.cases_per_query = step.cases_per_query;
   r.test_cases = step.test_cases;
   r.queries = step.queries;
 } catch (const std::exception&) {
@@ -80,6 +84,10 @@ Status decide(const StepResult& r) {
   // The session never returned: exit() in the code under test (even exit(0)), or a death
   // the harness never saw. Its counts stop where it stopped, so they are not a verdict.
   if (!r.finished) return Status::exited_early;
+  // The kit's own judge failed on some case: the step cannot be graded, and says whose
+  // failure it was (check.h's kit_error).
+  for (const QueryResult& q : r.queries)
+    if (q.error.rfind("kit error", 0) == 0) return Status::kit_error;
   bool failing = false, stub = false;
   for (const QueryResult& q : r.queries) {
     if (!q.not_implemented.empty()) stub = true;
@@ -95,16 +103,52 @@ Status decide(const StepResult& r) {
   return Status::passed;
 }
 
+// Partial credit (README, "Scoring"). A query's examples and random cases are pooled,
+// each case counting once. Cases split by what an answer that does nothing gets on them:
+// trivial (it passes them too) and decisive (it fails them). A query earns
+//   decisive pass rate + trivial pass rate - 1 - 2 standard errors of that sum, at least 0
+// (without the trivial terms when it has no trivial case): a constant answer earns 0, and
+// so does one drawn at random, which passes either kind at the same rate (the standard
+// errors take away what luck adds). The step earns the mean over its queries, each
+// weighed by its cases, so that a handful of worked examples weighs a handful of cases. A
+// query with no decisive case tells nothing and is left out; a stub query earns 0 and
+// weighs a query's worth of random cases.
+double query_credit(int decisive, int decisive_passed, int trivial, int trivial_passed) {
+  const double d = double(decisive_passed) / decisive;
+  double credit = d, variance = d * (1 - d) / decisive;
+  if (trivial > 0) {
+    const double t = double(trivial_passed) / trivial;
+    credit += t - 1;
+    variance += t * (1 - t) / trivial;
+  }
+  return std::max(0.0, credit - 2 * std::sqrt(variance));
+}
+
 double fraction_passed(const StepResult& r) {
   if (r.status == Status::passed) return 1.0;
   if (r.status != Status::failing && r.status != Status::not_implemented) return 0.0;
-  double sum = 0;
-  int parts = 0;
+  struct Pool {
+    int decisive = 0, decisive_passed = 0, trivial = 0, trivial_passed = 0;
+    bool nothing = false;  // a stub or an error: the query earns 0
+  };
+  std::map<std::string, Pool> pools;
   for (const QueryResult& q : r.queries) {
-    ++parts;
-    if (q.cases > 0 && q.not_implemented.empty() && q.error.empty()) sum += double(q.passed + q.ambiguous) / q.cases;
+    Pool& p = pools[q.query];
+    if (!q.not_implemented.empty() || !q.error.empty()) p.nothing = true;
+    p.decisive += q.decisive, p.decisive_passed += q.decisive_passed;
+    p.trivial += q.trivial, p.trivial_passed += q.trivial_passed;
   }
-  return parts > 0 ? sum / parts : 0.0;
+  double earned = 0, weight = 0;
+  for (const auto& [query, p] : pools) {
+    if (p.nothing) {
+      weight += std::max(1, r.cases_per_query);
+    } else if (p.decisive > 0) {
+      const double cases = p.decisive + p.trivial;
+      earned += cases * query_credit(p.decisive, p.decisive_passed, p.trivial, p.trivial_passed);
+      weight += cases;
+    }
+  }
+  return weight > 0 ? earned / weight : 0.0;
 }
 
 }  // namespace
@@ -189,6 +233,7 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
   if (options.hide_seed) env.push_back({variable::hide_seed, "1"});
   if (options.count_all) env.push_back({variable::count_all, "1"});
   if (options.describe_only) env.push_back({variable::describe, "1"});
+  if (!options.record_examples.empty()) env.push_back({"LABKIT_RECORD_EXAMPLES", options.record_examples});
   const std::string filter = "[lab" + lab.id + "][step" + std::to_string(step.number) + "]";
   r.run = run({programs.judge, filter}, env, options.limits, scratch);
   read_report(report, r);
@@ -215,6 +260,9 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
         (options.limits.memory_bytes ? ", the limit is " + std::to_string(options.limits.memory_bytes >> 20) + " MB"
                                      : std::string()) +
         ")";
+  if (r.status == Status::kit_error)
+    for (const QueryResult& q : r.queries)
+      if (q.error.rfind("kit error", 0) == 0 && r.detail.empty()) r.detail = q.query + ": " + q.error;
   if (r.status == Status::timed_out)
     r.detail = "the step did not finish within " + std::to_string(int(options.limits.seconds)) +
                " s: the code under test is too slow for its cases (each call has a time limit too)";

@@ -27,6 +27,7 @@ enum class Status {
   out_of_memory,
   exited_early,  // exit() or _exit() inside a test: the session never finished
   no_tests,      // the binary has no test for this step: a kit bug, never the student's
+  kit_error,     // the kit's own judge failed (report.h's "kit error: ..."): never the student's
   not_built,     // the lab did not compile
 };
 
@@ -47,9 +48,9 @@ struct StepResult {
   Run run;
   bool finished = false;  // the harness's report says the test session returned
   int examples = 0, random_cases = 0, ambiguous = 0;
-  // For partial credit: the mean, over the step's queries (its examples of a query, its
-  // random cases of a query), of the fraction of cases passed; ambiguous cases pass.
-  // 1 when the step passes, 0 when it did not run to its end.
+  int cases_per_query = 0;  // the run's random cases per query (report.h)
+  // For partial credit (step.cpp, fraction_passed): the share of the step's points its
+  // cases earn; 1 when the step passes, 0 when it did not run to its end.
   double fraction_passed = 0;
 };
 
@@ -69,6 +70,7 @@ struct StepOptions {
   bool debugger = false;             // the answerer runs under gdb, which prints where it crashed
   const Sandbox* sandbox = nullptr;  // graded runs: the answerer runs confined to a scratch folder of its own
   std::string scratch_parent = "/tmp";  // where each step's scratch folder is made
+  std::string record_examples;          // the kit's scoring test: where the judge hashes the examples' requests
 };
 
 // The two programs of a step (see Lab::judge_binary).

@@ -13,6 +13,7 @@
 #include <deque>
 #include <fstream>
 #include <map>
+#include <random>
 
 namespace labkit::check {
 
@@ -114,7 +115,10 @@ __attribute__((constructor(101))) static void read_early() { settings(); }
 namespace detail {
 
 QueryReport& entry(const std::string& query, const std::string& kind) {
-  const std::string test = current_test_name();
+  return entry(current_test_name(), query, kind);
+}
+
+QueryReport& entry(const std::string& test, const std::string& query, const std::string& kind) {
   for (QueryReport& q : queries())
     if (q.test_case == test && q.query == query && q.kind == kind) return q;
   queries().push_back({});
@@ -123,6 +127,86 @@ QueryReport& entry(const std::string& query, const std::string& kind) {
   q.query = query;
   q.kind = kind;
   return q;
+}
+
+Outcome kit_error(QueryReport& report, const std::string& what) {
+  const std::string text = "kit error: the kit's own judge failed here, not your code (please report it): " + what;
+  if (report.error.empty()) report.error = text;
+  return fail("an answer", "(not judged)", text);
+}
+
+void judge_items(const std::vector<Item>& items, std::size_t begin, std::size_t end, std::vector<Outcome>& outcomes) {
+  constexpr int kRounds = 32;
+  std::vector<std::size_t> todo;
+  for (std::size_t i = begin; i < end; ++i) todo.push_back(i);
+  // Each case's replay token, made once: a crash of the judge's process names its case.
+  std::vector<std::string> tokens(end - begin);
+  remote::begin_batch();
+  for (int round = 0; !todo.empty(); ++round) {
+    if (round == kRounds) remote::stop_deferring();  // the rest, one call at a time
+    std::vector<std::size_t> deferred;
+    for (std::size_t i : todo) {
+      std::string& token = tokens[i - begin];
+      if (token.empty()) token = items[i].token();
+      set_inflight(token);
+      try {
+        outcomes[i] = items[i].judge();
+      } catch (const remote::Deferred&) {
+        deferred.push_back(i);
+      }
+      clear_inflight();
+    }
+    todo = std::move(deferred);
+    if (!todo.empty()) remote::flush();
+  }
+  remote::end_batch();
+}
+
+namespace {
+std::map<std::string, std::vector<PendingExample>>& pending_examples() {
+  static std::map<std::string, std::vector<PendingExample>> all;
+  return all;
+}
+}  // namespace
+
+void defer_example(const std::string& query, PendingExample example) {
+  pending_examples()[query].push_back(std::move(example));
+}
+
+std::vector<PendingExample> take_examples(const std::string& query) {
+  std::vector<PendingExample> taken;
+  const auto it = pending_examples().find(query);
+  if (it == pending_examples().end()) return taken;
+  taken = std::move(it->second);
+  pending_examples().erase(it);
+  return taken;
+}
+
+void record_example(const std::string& query, const PendingExample& example, const Outcome& o, const Outcome& nothing) {
+  QueryReport& report = entry(example.test_case, query, "examples");
+  tally(report, o);
+  tally_against_default(report, o, nothing);
+  if (o.verdict == Outcome::Verdict::fail && !report.failure) report.failure = example.failure(o);
+}
+
+// The examples whose query had no random cases in this run, judged together, shuffled.
+void judge_remaining_examples() {
+  std::vector<std::pair<std::string, PendingExample>> all;
+  for (auto& [query, examples] : pending_examples())
+    for (PendingExample& e : examples) all.emplace_back(query, std::move(e));
+  pending_examples().clear();
+  if (all.empty()) return;
+  std::shuffle(all.begin(), all.end(), std::mt19937_64(seed_for("examples")));
+  std::vector<Item> items;
+  for (const auto& [query, e] : all) items.push_back(e.item);
+  std::vector<Outcome> outcomes(items.size());
+  try {
+    judge_items(items, 0, items.size(), outcomes);
+    for (std::size_t i = 0; i < all.size(); ++i)
+      record_example(all[i].first, all[i].second, outcomes[i], items[i].judge_default());
+  } catch (const std::exception& e) {
+    kit_error(entry(all.front().second.test_case, all.front().first, "examples"), e.what());
+  }
 }
 
 std::uint64_t seed_for(const std::string& query) { return splitmix(settings().seed ^ fnv1a(query)); }
@@ -204,6 +288,7 @@ void test_case_ended(bool passed) {
 }
 
 void session_finished() {
+  detail::judge_remaining_examples();
   run_finished = true;
   detail::save_report();
 }

@@ -18,6 +18,7 @@
 #include "common/harness/query.h"
 #include "common/harness/titles.h"
 #include "common/not_implemented.h"
+#include "common/oracle/not_finite.h"
 #include "common/protocol/answerer.h"
 #include "common/protocol/report.h"
 
@@ -31,6 +32,7 @@
 #include <cstring>
 #include <exception>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <random>
 #include <string>
@@ -156,6 +158,10 @@ using Failure = labkit::report::Failure;
 using QueryReport = labkit::report::Query;
 
 QueryReport& entry(const std::string& query, const std::string& kind);
+QueryReport& entry(const std::string& test_case, const std::string& query, const std::string& kind);
+// A failure of the kit itself (never the student's): the query's report says so, and the
+// step is not graded (runner/step.cpp).
+Outcome kit_error(QueryReport& report, const std::string& what);
 void save_report();
 void report_to_catch(const QueryReport& report, bool announce_not_implemented);
 std::string current_lab();
@@ -178,9 +184,10 @@ inline std::string with_rule(const std::string& query, const std::string& what) 
   return r.empty() ? what : "the rule: " + r + ". " + what;
 }
 
-// Runs the judge, turning stubs, stray exceptions and calls that got no answer (a crash
-// or a time-out in the answerer's process) into outcomes. A deferred call (a batch is
-// being gathered) goes through to random_cases.
+// Runs the judge, turning stubs, what the code under test threw and calls that got no
+// answer (a crash or a time-out in the answerer's process) into outcomes. A deferred call
+// (a batch is being gathered) goes through to random_cases. Anything else thrown is the
+// kit's own failure, never the student's: the query's report says so (kit_error).
 template <class Input, class Judge> Outcome run_judge(Judge& judge, const Input& input, QueryReport& report) {
   try {
     return judge(input);
@@ -191,17 +198,30 @@ template <class Input, class Judge> Outcome run_judge(Judge& judge, const Input&
   } catch (const NotImplemented& e) {
     report.not_implemented = e.what();
     return fail("an answer", "a stub", e.what());
-  } catch (const std::invalid_argument& e) {
+  } catch (const remote::Rejected& e) {
     return fail(
         "an answer", std::string("std::invalid_argument: ") + e.what(),
         with_rule(report.query, "your code rejected a valid input: this input meets every precondition of the header"));
-  } catch (const std::exception& e) {
+  } catch (const remote::Threw& e) {
     return fail("an answer", std::string("an exception: ") + e.what(),
                 with_rule(report.query, "your code threw an exception on a valid input"));
-  } catch (...) {
-    return fail("an answer", "an exception of unknown type",
-                "the code under test threw something not derived from std::exception");
+  } catch (const oracle::NotFinite&) {  // the inputs are finite: it came from the answer
+    return fail("an answer", "an answer that cannot be checked",
+                "every number computed from your answer must be finite, and one is not (NaN or an infinity): is "
+                "some value huge, or divided by zero?");
+  } catch (const std::exception& e) {
+    return kit_error(report, e.what());
   }
+}
+
+// Graded runs: what a file that does nothing would get on this case (remote::DefaultAnswers).
+template <class Input, class Judge>
+Outcome default_outcome(Judge& judge, const Input& input, const std::string& query) {
+  remote::DefaultAnswers nothing;
+  QueryReport scratch;
+  scratch.query = query;
+  const Outcome o = run_judge(judge, input, scratch);
+  return scratch.error.empty() ? o : fail("", "", "");  // a judge that cannot take the default: decisive
 }
 
 template <class Input>
@@ -216,38 +236,49 @@ inline void tally(QueryReport& report, const Outcome& o) {
   if (o.verdict == Outcome::Verdict::fail) ++report.failed;
 }
 
-// Judges inputs[begin, end) into outcomes[begin, end), gathering the code under test's
+// Graded runs: files the case as trivial (the default answer passes it too) or decisive.
+// An ambiguous case tells nothing either way and is left out.
+inline void tally_against_default(QueryReport& report, const Outcome& got, const Outcome& nothing) {
+  if (got.verdict == Outcome::Verdict::ambiguous || nothing.verdict == Outcome::Verdict::ambiguous) return;
+  const bool passed = got.verdict == Outcome::Verdict::pass;
+  if (nothing.verdict == Outcome::Verdict::pass) {
+    ++report.trivial;
+    report.trivial_passed += passed;
+  } else {
+    ++report.decisive;
+    report.decisive_passed += passed;
+  }
+}
+
+// One case to judge in a batch: its judge on its input, what the default answer gets,
+// and its replay token (made only when needed).
+struct Item {
+  std::function<Outcome()> judge;
+  std::function<Outcome()> judge_default;
+  std::function<std::string()> token;
+};
+
+// Judges items[begin, end) into outcomes[begin, end), gathering the code under test's
 // calls into batches (common/protocol/answerer.h): each round runs the judges, those
 // whose call is not answered yet defer, and one flush answers them all at once. A judge
 // that makes several dependent calls takes a round per call.
-template <class Input, class Judge>
-void judge_batch(const std::vector<Input>& inputs, std::size_t begin, std::size_t end, Judge& judge,
-                 QueryReport& report, std::vector<Outcome>& outcomes) {
-  constexpr int kRounds = 32;
-  std::vector<std::size_t> todo;
-  for (std::size_t i = begin; i < end; ++i) todo.push_back(i);
-  // Each case's replay token, made once: a crash of the judge's process names its case.
-  std::vector<std::string> tokens(end - begin);
-  remote::begin_batch();
-  for (int round = 0; !todo.empty(); ++round) {
-    if (round == kRounds) remote::stop_deferring();  // the rest, one call at a time
-    std::vector<std::size_t> deferred;
-    for (std::size_t i : todo) {
-      std::string& token = tokens[i - begin];
-      if (token.empty()) token = replay_token(report.query, inputs[i]);
-      set_inflight(token);
-      try {
-        outcomes[i] = run_judge(judge, inputs[i], report);
-      } catch (const remote::Deferred&) {
-        deferred.push_back(i);
-      }
-      clear_inflight();
-    }
-    todo = std::move(deferred);
-    if (!todo.empty()) remote::flush();
-  }
-  remote::end_batch();
-}
+void judge_items(const std::vector<Item>& items, std::size_t begin, std::size_t end, std::vector<Outcome>& outcomes);
+
+// Graded runs: a worked example waits for its query's random cases, and is judged in
+// their batches at a shuffled place, so that the code under test cannot tell the one
+// from the other by how or when it is asked. Examples whose query has no random cases in
+// the step are judged together when the session ends.
+struct PendingExample {
+  std::string test_case;  // its report entry's
+  std::string title;
+  std::shared_ptr<void> input;  // keeps the input the item's functions read
+  Item item;
+  std::function<Failure(const Outcome&)> failure;
+};
+void defer_example(const std::string& query, PendingExample example);
+std::vector<PendingExample> take_examples(const std::string& query);
+// Tallies an example judged in a batch into its own report entry.
+void record_example(const std::string& query, const PendingExample& example, const Outcome& o, const Outcome& nothing);
 
 template <class Input, class Judge> void replay_one(const std::string& query, Judge& judge, QueryReport& report) {
   const ParsedToken token = parse_token(settings().replay);
@@ -311,30 +342,119 @@ bool flips_under_perturbation(const Input& input, ExactAnswer&& exact, int sampl
   return false;
 }
 
+namespace detail {
+
+template <class Input, class Judge>
+std::vector<Item> items_of(const std::vector<Input>& inputs, Judge& judge, QueryReport& report) {
+  std::vector<Item> items;
+  items.reserve(inputs.size());
+  for (const Input& input : inputs)
+    items.push_back({[&judge, &input, &report] { return run_judge(judge, input, report); },
+                     [&judge, &input, &report] { return default_outcome(judge, input, report.query); },
+                     [&input, &report] { return replay_token(report.query, input); }});
+  return items;
+}
+
+// Graded runs: every case judged, the query's worked examples shuffled in among them (see
+// PendingExample), each case filed as trivial or decisive. `outcomes` gets the random cases'.
+template <class Input, class Judge>
+void judge_graded(const std::vector<Input>& inputs, Judge& judge, QueryReport& report, std::vector<Outcome>& outcomes) {
+  std::vector<Item> items = items_of(inputs, judge, report);
+  std::vector<PendingExample> examples = take_examples(report.query);
+  for (const PendingExample& e : examples) items.push_back(e.item);
+  std::vector<std::size_t> order(items.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::shuffle(order.begin(), order.end(), std::mt19937_64(seed_for(report.query) ^ 0x9e3779b97f4a7c15ull));
+  std::vector<Item> shuffled;
+  shuffled.reserve(order.size());
+  for (std::size_t i : order) shuffled.push_back(items[i]);
+  std::vector<Outcome> judged(shuffled.size());
+  constexpr std::size_t kChunk = 1024;
+  for (std::size_t begin = 0; begin < shuffled.size(); begin += kChunk)
+    judge_items(shuffled, begin, std::min(shuffled.size(), begin + kChunk), judged);
+  for (std::size_t k = 0; k < order.size(); ++k) {
+    const Outcome nothing = shuffled[k].judge_default();
+    if (order[k] < inputs.size()) {
+      outcomes[order[k]] = judged[k];
+    } else {
+      record_example(report.query, examples[order[k] - inputs.size()], judged[k], nothing);
+      continue;
+    }
+    tally_against_default(report, judged[k], nothing);
+  }
+  for (const Outcome& o : outcomes) tally(report, o);
+}
+
+template <class Input, class Judge>
+void example_now(const std::string& query, const std::string& title, const Input& input, Judge& judge) {
+  QueryReport& report = entry(query, "examples");
+  const bool stub_seen_before = !report.not_implemented.empty();
+  set_inflight(replay_token(query, input));
+  const Outcome o = [&] {
+    remote::RecordingExample recording;
+    return run_judge(judge, input, report);
+  }();
+  clear_inflight();
+  tally(report, o);
+  const bool first_failure = o.verdict == Outcome::Verdict::fail && !report.failure;
+  if (first_failure) report.failure = failure_of("example \"" + title + "\"", query, input, o);
+  save_report();
+  if (first_failure || (!report.not_implemented.empty() && !stub_seen_before))
+    report_to_catch(report, !stub_seen_before);
+  else
+    SUCCEED();
+}
+
+template <class Input, class Judge>
+void example_later(const std::string& query, const std::string& title, const Input& input, Judge&& judge) {
+  QueryReport& report = entry(query, "examples");  // std::deque: its address stays
+  auto kept = std::make_shared<Input>(input);
+  auto kept_judge = std::make_shared<std::decay_t<Judge>>(std::forward<Judge>(judge));
+  QueryReport* r = &report;
+  PendingExample e;
+  e.test_case = report.test_case;
+  e.title = title;
+  e.input = kept;
+  e.item.judge = [kept, kept_judge, r] { return run_judge(*kept_judge, *kept, *r); };
+  e.item.judge_default = [kept, kept_judge, query] { return default_outcome(*kept_judge, *kept, query); };
+  e.item.token = [kept, query] { return replay_token(query, *kept); };
+  e.failure = [kept, query, title](const Outcome& o) {
+    return failure_of("example \"" + title + "\"", query, *kept, o);
+  };
+  defer_example(query, std::move(e));
+  save_report();
+  SUCCEED();
+}
+
+template <class Input, class Judge>
+void random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>& gen, Judge& judge, QueryReport& report);
+
+}  // namespace detail
+
 template <class Input, class Judge>
 void example(const Query<Input>& q, const std::string& title, const typename Query<Input>::InputType& input,
              Judge&& judge) {
   // A replay runs the one case it names; the examples stay quiet.
   if (!settings().replay.empty()) return;
-  const std::string query = q.name;
-  detail::QueryReport& report = detail::entry(query, "examples");
-  const bool stub_seen_before = !report.not_implemented.empty();
-  detail::set_inflight(replay_token(query, input));
-  const Outcome o = detail::run_judge(judge, input, report);
-  detail::clear_inflight();
-  detail::tally(report, o);
-  const bool first_failure = o.verdict == Outcome::Verdict::fail && !report.failure;
-  if (first_failure) report.failure = detail::failure_of("example \"" + title + "\"", query, input, o);
-  detail::save_report();
-  if (first_failure || (!report.not_implemented.empty() && !stub_seen_before))
-    detail::report_to_catch(report, !stub_seen_before);
-  else
-    SUCCEED();
+  if (settings().count_all) return detail::example_later(q.name, title, input, std::forward<Judge>(judge));
+  detail::example_now(q.name, title, input, judge);
 }
 
 template <class Input, class Judge> void random_cases(const Query<Input>& q, const rc::Gen<Input>& gen, Judge&& judge) {
+  detail::QueryReport& report = detail::entry(q.name, "random");
+  try {
+    detail::random_cases_unguarded(q, gen, judge, report);
+  } catch (const std::exception& e) {  // the harness's own failure: a kit error, not the student's
+    detail::kit_error(report, e.what());
+    detail::save_report();
+    detail::report_to_catch(report, true);
+  }
+}
+
+template <class Input, class Judge>
+void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>& gen, Judge& judge,
+                                    QueryReport& report) {
   const std::string query = q.name;
-  detail::QueryReport& report = detail::entry(query, "random");
   const Settings& s = settings();
   if (!s.replay.empty()) {
     if (parse_token(s.replay).query != query) return;
@@ -391,12 +511,19 @@ template <class Input, class Judge> void random_cases(const Query<Input>& q, con
   constexpr std::size_t kChunk = 1024;
   std::vector<Outcome> outcomes(inputs.size());
   int first_failing_case = 0;  // 1-based; 0: none
-  for (std::size_t begin = 0; begin < inputs.size() && (first_failing_case == 0 || s.count_all); begin += kChunk) {
-    const std::size_t end = std::min(inputs.size(), begin + kChunk);
-    detail::judge_batch(inputs, begin, end, judge, report, outcomes);
-    for (std::size_t i = begin; i < end && (first_failing_case == 0 || s.count_all); ++i) {
-      detail::tally(report, outcomes[i]);
-      if (outcomes[i].verdict == Outcome::Verdict::fail && first_failing_case == 0) first_failing_case = int(i) + 1;
+  if (s.count_all) {
+    detail::judge_graded(inputs, judge, report, outcomes);
+    for (std::size_t i = 0; i < outcomes.size() && first_failing_case == 0; ++i)
+      if (outcomes[i].verdict == Outcome::Verdict::fail) first_failing_case = int(i) + 1;
+  } else {
+    const std::vector<detail::Item> items = detail::items_of(inputs, judge, report);
+    for (std::size_t begin = 0; begin < inputs.size() && first_failing_case == 0; begin += kChunk) {
+      const std::size_t end = std::min(inputs.size(), begin + kChunk);
+      detail::judge_items(items, begin, end, outcomes);
+      for (std::size_t i = begin; i < end && first_failing_case == 0; ++i) {
+        detail::tally(report, outcomes[i]);
+        if (outcomes[i].verdict == Outcome::Verdict::fail) first_failing_case = int(i) + 1;
+      }
     }
   }
   detail::save_report();

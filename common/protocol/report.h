@@ -39,11 +39,19 @@ struct Query {
   int passed = 0;
   int ambiguous = 0;
   int failed = 0;
+  // Graded runs (LABKIT_COUNT_ALL): each unambiguous case judged again as if the code
+  // answered every call with its default (no hit, false, zeros). `trivial` cases are
+  // those that answer would pass, `decisive` the others; partial credit is earned on
+  // both at once, so that neither a constant nor a chance answer earns anything
+  // (runner/step.cpp, README "Scoring").
+  int trivial = 0, trivial_passed = 0;
+  int decisive = 0, decisive_passed = 0;
   std::string not_implemented;     // the stub's message, when a stub was hit
-  std::string error;               // a failure of the harness itself
+  std::string error;               // a failure of the harness itself ("kit error: ...")
   std::optional<Failure> failure;  // null in JSON when every case passed
 };
-LABKIT_FIELDS(Query, test_case, query, kind, cases, passed, ambiguous, failed, not_implemented, error, failure)
+LABKIT_FIELDS(Query, test_case, query, kind, cases, passed, ambiguous, failed, trivial, trivial_passed, decisive,
+              decisive_passed, not_implemented, error, failure)
 
 // One Catch test case.
 struct TestCase {
