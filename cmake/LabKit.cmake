@@ -133,6 +133,20 @@ function(labkit_add_lab number name)
       ENVIRONMENT "LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>")
   endif()
 
+  # The kit's test of its scoring and of its judges (runner/fake.h): answerers that do
+  # no geometry must earn nothing, and no judge may fail on their answers.
+  if(TARGET ${lab}_reference)
+    add_executable(answer_${stem}_fake "${PROJECT_SOURCE_DIR}/tests/kit/fake_answerer.cpp")
+    target_compile_definitions(answer_${stem}_fake PRIVATE ${wire_definitions})
+    target_include_directories(answer_${stem}_fake PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
+    target_link_libraries(answer_${stem}_fake PRIVATE labkit_protocol ${lab}_reference)
+    labkit_kit_code(answer_${stem}_fake)
+    foreach(answers nothing random examples garbage)
+      add_test(NAME kit.fake.${lab}.${answers} COMMAND labkit-runner fake ${number} --answers ${answers})
+      set_tests_properties(kit.fake.${lab}.${answers} PROPERTIES LABELS "kit;fake;${lab}")
+    endforeach()
+  endif()
+
   # The classic mistakes, each of which the tests must catch.
   if(TARGET ${lab}_reference AND EXISTS "${PROJECT_SOURCE_DIR}/tests/${stem}.mutants.cmake")
     include("${PROJECT_SOURCE_DIR}/tests/${stem}.mutants.cmake")

@@ -1,6 +1,7 @@
 // labkit-runner: the commands behind ./labkit. Run it through ./labkit, which installs
 // what is missing, configures and builds first.
 #include "check.h"
+#include "fake.h"
 #include "grade.h"
 #include "mutant.h"
 #include "report.h"
@@ -91,6 +92,15 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   mutant_command->add_option("--says", mutant.says, "A word its first failure's why must contain");
 
+  // The kit's own test of its scoring and judges (ctest kit.fake.labNN.MODE); not for students.
+  runner::FakeOptions fake;
+  CLI::App* fake_command =
+      app.add_subcommand("fake", "Grade a lab with answers that do no geometry: they must earn nothing");
+  fake_command->group("");  // hidden from --help
+  fake_command->add_option("lab", fake.lab, "The lab, e.g. 02")->required();
+  fake_command->add_option("--answers", fake.answers, "nothing, random, garbage or examples")->required();
+  fake_command->add_option("--cases", fake.cases, "Random cases per query")->check(CLI::PositiveNumber);
+
   CLI11_PARSE(app, argc, argv);
   // A seed given on the command line is wiped from it: /proc/PID/cmdline is world-readable.
   for (int i = 1; i < argc; ++i) {
@@ -112,6 +122,7 @@ int main(int argc, char** argv) {
       return runner::grade(paths, grade);
     }
     if (mutant_command->parsed()) return runner::mutant(paths, mutant);
+    if (fake_command->parsed()) return runner::fake(paths, fake);
     if (report_command->parsed()) {
       const runner::Manifest manifest = runner::load_manifest(paths.source + "/grading/manifest.json");
       return runner::report(reports.empty() ? paths.build + "/reports" : reports, &manifest, max_ambiguous / 100);

@@ -182,7 +182,7 @@ Outcome exact_advance(const AdvancedPair& in, const TimeOfImpact& got) { return 
 
 TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   const RigidTransform pose = quarter_turn_then({5, 0, 0});
-  check::example(query::placed, "a quarter turn, then 5 along x", Sphere{{1, 0, 0}, 2}, [&](const Sphere& in) {
+  check::example(query::placed, "a quarter turn, then 5 along x", Sphere{{1, 0, 0}, 2}, [=](const Sphere& in) {
     const Sphere s = placed(in, pose);
     const Box b = placed(Box{in.center, Mat3::Identity(), {2, 1, 1}}, pose);
     Expect e;
@@ -464,7 +464,7 @@ TEST_CASE(LABKIT_STEP(L04S5) ": touching, grazing, zero sizes", "[lab04][step5]"
                  overlapping(false));
   check::example(o, "spheres (3, 4, 0) apart, radii 2 and 3: touching",
                  still(ball(2, resting_at(Vec3::Zero())), ball(3, resting_at({3, 4, 0}))),
-                 [&](const MovingPairCase& in) {
+                 [=](const MovingPairCase& in) {
     const Outcome touch = overlapping(true)(in);
     if (touch.verdict == Outcome::Verdict::fail) return touch;
     Expect e;
