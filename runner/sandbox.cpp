@@ -8,6 +8,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
 #include <bitset>
 #include <cerrno>
 #include <csignal>
@@ -291,9 +292,11 @@ Confined Sandbox::confine(const std::vector<std::string>& argv, const std::strin
     if (!writable.empty()) chown_all(writable, uid);
   }
   c.limits = limits;
+  Limits inner;
+  inner.descriptors = limits.descriptors;  // a protocol's pipes, when the run has them
   switch (kind_) {
     case Kind::bubblewrap: c.argv = bubblewrap(argv, writable, readable, tmp_bytes_); break;
-    case Kind::landlock: c.argv = launcher({}, argv, readable, writable); break;
+    case Kind::landlock: c.argv = launcher(inner, argv, readable, writable); break;
     case Kind::none: c.argv = argv; break;
   }
   return c;
@@ -311,6 +314,7 @@ std::vector<std::string> launcher(const Limits& limits, const std::vector<std::s
   add("--cpu", limits.cpu_seconds);
   if (limits.uid >= 0)
     out.insert(out.end(), {"--uid", std::to_string(limits.uid), "--gid", std::to_string(limits.gid)});
+  if (limits.descriptors > 3) add("--descriptors", limits.descriptors);
   for (const std::string& group : limits.groups) out.insert(out.end(), {"--cgroup", group});
   for (const std::string& path : readable) out.insert(out.end(), {"--read", path});
   if (!writable.empty()) out.insert(out.end(), {"--write", writable});
@@ -342,6 +346,8 @@ int confine_main(int argc, char** argv) {
       limits.gid = int(number);
     else if (name == "--cgroup")
       limits.groups.push_back(value);
+    else if (name == "--descriptors")
+      limits.descriptors = int(number);
     else if (name == "--read")
       readable.push_back(value), restrict_files = true;
     else if (name == "--write")
@@ -354,9 +360,13 @@ int confine_main(int argc, char** argv) {
   if (at + 1 >= argc || std::string(argv[at]) != "--") {
     std::fprintf(stderr,
                  "usage: labkit-runner confine [--memory B] [--file-size B] [--processes N] [--cpu S] "
-                 "[--uid U --gid G] [--cgroup FOLDER]... [--read PATH]... [--write PATH] -- PROGRAM [ARGS]\n");
+                 "[--uid U --gid G] [--cgroup FOLDER]... [--descriptors N] [--read PATH]... "
+                 "[--write PATH] -- PROGRAM [ARGS]\n");
     return 126;
   }
+  // PROGRAM gets descriptors 0 .. N-1 (its standard streams and, for an answerer, its
+  // protocol's pipes) and nothing else the judge's process or its parents left open.
+  close_descriptors_from(std::max(3, limits.descriptors));
   if (!apply_limits(limits)) return 126;
   if (restrict_files) {
     if (!writable.empty()) {

@@ -19,6 +19,9 @@
 // for (--sandbox none), or for the Gradescope package (no reference in it), only the
 // limits and the uid below protect the machine.
 //
+// Every mode: a confined run starts with its standard streams (and an answerer with its
+// protocol's pipes) and no other descriptor, whatever the grader inherited.
+//
 // Either way, when the grader runs as root, each confined run also runs under an
 // unprivileged uid of its own (one per concurrent run, 61000 and up, leased machine-wide
 // so that two graders never share one), which owns its scratch folder and nothing else,
@@ -86,11 +89,12 @@ class Sandbox {
   std::string groups_;  // what the step groups hold, for description()
 };
 
-// `labkit-runner confine [LIMITS] [--cgroup FOLDER]... [--read PATH]... [--write PATH] --
-// PROGRAM [ARGS]`: takes the limits, joins the control groups (runner/cgroup.h) while it
-// is still root, takes the uid, then Landlock's restriction when paths are given, then
-// runs PROGRAM: everything PROGRAM starts stays in the groups. The judge's process starts
-// a graded answerer through it: the runner decides the confinement, the judge only starts
+// `labkit-runner confine [LIMITS] [--cgroup FOLDER]... [--descriptors N] [--read PATH]...
+// [--write PATH] -- PROGRAM [ARGS]`: closes every descriptor but 0 .. N-1 (3 by
+// default), takes the limits, joins the control groups (runner/cgroup.h) while it is
+// still root, takes the uid, then Landlock's restriction when paths are given, then runs
+// PROGRAM: everything PROGRAM starts stays in the groups. The judge's process starts a
+// graded answerer through it: the runner decides the confinement, the judge only starts
 // the command line it is given.
 std::vector<std::string> launcher(const Limits& limits, const std::vector<std::string>& argv,
                                   const std::vector<std::string>& readable = {}, const std::string& writable = "");
