@@ -1,5 +1,6 @@
 #include "process.h"
 #include "cgroup.h"
+#include "no_network.h"
 
 #include <fcntl.h>
 #include <grp.h>
@@ -115,6 +116,13 @@ bool apply_limits(const Limits& limits) {
     if (setgroups(0, nullptr) != 0 || setresgid(gid, gid, gid) != 0 ||
         setresuid(uid_t(limits.uid), uid_t(limits.uid), uid_t(limits.uid)) != 0) {
       dprintf(2, "labkit: cannot switch to uid %d: %s\n", limits.uid, strerror(errno));
+      return false;
+    }
+  }
+  if (limits.no_network) {
+    const std::string why = no_network::restrict_self();
+    if (!why.empty()) {
+      dprintf(2, "labkit: cannot shut the network: %s\n", why.c_str());
       return false;
     }
   }

@@ -218,6 +218,34 @@ nothing_written() {
   [ -s "$work/inherited.txt" ] && { fail "$1: the graded code wrote into a descriptor the grader inherited"; : >"$work/inherited.txt"; }
   return 0
 }
+# UDP, which Landlock cannot refuse: a datagram to a port this suite listens on, at
+# 127.0.0.1 and at this machine's outside address, and one to an address outside it. The
+# suite checks that nothing arrived; the code gets an error, and the grade is the same.
+udp_port=$((20000 + RANDOM % 20000))
+outside="$(hostname -I 2>/dev/null | awk '{ print $1 }')"
+inject udp_out segment_plane '  { static bool tried = false; if (!tried) { tried = true;
+    for (const char* to : {"127.0.0.1", "OUTSIDE", "192.0.2.77"}) {
+      int s = socket(AF_INET, SOCK_DGRAM, 0); if (s < 0) continue;
+      sockaddr_in a{}; a.sin_family = AF_INET; a.sin_port = htons(PORT); inet_pton(AF_INET, to, &a.sin_addr);
+      sendto(s, "escaped", 7, 0, reinterpret_cast<sockaddr*>(&a), sizeof a); close(s); } } }'
+sed -i "s|OUTSIDE|${outside:-127.0.0.1}|; s|htons(PORT)|htons($udp_port)|" "$subs/udp_out/$lab02"
+{ printf '#include <arpa/inet.h>\n#include <netinet/in.h>\n#include <sys/socket.h>\n'; cat "$subs/udp_out/$lab02"; } >"$work/udp.cpp" &&
+  mv "$work/udp.cpp" "$subs/udp_out/$lab02"
+listener=""
+if command -v python3 >/dev/null; then
+  python3 -c 'import socket, sys
+s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM); s.bind(("0.0.0.0", int(sys.argv[1])))
+with open(sys.argv[2], "ab", buffering=0) as f:
+    while True: f.write(s.recvfrom(65536)[0] + b"\n")' "$udp_port" "$work/udp-received.txt" &
+  listener=$!
+  trap 'kill "$listener" 2>/dev/null; rm -rf "$work"' EXIT
+else
+  echo "no python3: the UDP datagrams are sent but not listened for"
+fi
+nothing_received() {
+  [ -s "$work/udp-received.txt" ] && { fail "$1: a UDP datagram reached this machine: $(head -c 200 "$work/udp-received.txt")"; : >"$work/udp-received.txt"; }
+  return 0
+}
 
 # ---- a machine that can confine nothing ---------------------------------------------
 # Neither bubblewrap nor Landlock: grading a kit that holds solutions/ is refused (the
@@ -334,6 +362,8 @@ expect oracle_by_name graded
 expect preinit_seed graded
 expect inherited_fds graded
 nothing_written "sandbox $(grep -o 'sandbox: [A-Za-z]*' "$out/reference/report.txt" | head -n 1)"
+expect udp_out graded
+nothing_received "sandbox $(grep -o 'sandbox: [A-Za-z]*' "$out/reference/report.txt" | head -n 1)"
 expect labs graded
 expect bad_members graded
 expect bad_members_tar graded
@@ -436,7 +466,7 @@ for mode in bubblewrap landlock; do
   fi
   mkdir -p "$work/mode-$mode"
   for name in escape steal_seed forge_report weak_rename kit_programs include_reference preinit_seed oracle_by_name \
-    inherited_fds; do
+    inherited_fds udp_out; do
     cp -R "$subs/$name" "$work/mode-$mode/"
   done
   "$runner" grade "$work/mode-$mode" --out "$work/out-$mode" --seed "$secret" --cases 50 --labs 02 --sandbox "$mode" \
@@ -449,6 +479,8 @@ for mode in bubblewrap landlock; do
   expect include_reference "does not compile"
   expect inherited_fds graded
   nothing_written "--sandbox $mode"
+  expect udp_out graded
+  nothing_received "--sandbox $mode"
   for name in forge_report weak_rename kit_programs; do
     awk -F'\t' -v n="$name ($mode)" 'NR > 1 && $5 != "0" { print "FAIL: " n ": lab 02 step " $2 " scores " $5; bad = 1 }
       END { exit bad }' "$out/$name/steps.tsv" || failures=$((failures + 1))
@@ -463,9 +495,11 @@ if [ "$(id -u)" = 0 ]; then
     >"$work/unsandboxed.log" 2>&1 || fail "grading with --sandbox none exits $?"
   grep -q "sandbox: none (turned off" "$work/unsandboxed/report.txt" || fail "--sandbox none: the report does not say so"
 fi
-# With no sandbox at all, the grader's own promises still hold: no inherited descriptor.
+# With no sandbox at all, the grader's own promises still hold: no inherited
+# descriptor, no network (the seccomp filter, where the kernel has one: the report says
+# so).
 mkdir -p "$work/mode-none"
-for name in inherited_fds; do cp -R "$subs/$name" "$work/mode-none/"; done
+for name in inherited_fds udp_out; do cp -R "$subs/$name" "$work/mode-none/"; done
 "$runner" grade "$work/mode-none" --out "$work/out-none" --seed "$secret" --cases 50 --labs 02 --sandbox none --jobs 2 \
   7<"$kit/README.md" 8>>"$work/inherited.txt" >"$work/mode-none.log" 2>&1 ||
   { cat "$work/mode-none.log"; fail "grading with --sandbox none exits $?"; }
@@ -473,8 +507,10 @@ cp -R "$out/reference" "$work/out-none/"
 main_out="$out" && out="$work/out-none"
 expect inherited_fds graded
 nothing_written "--sandbox none"
+expect udp_out graded
+if grep -q "and no network" "$out/udp_out/report.txt"; then nothing_received "--sandbox none"; else : >"$work/udp-received.txt"; fi
 out="$main_out"
-echo "--sandbox none: no inherited descriptor reached the graded code"
+echo "--sandbox none: the descriptors and the network held"
 
 # The outputs: every results.json matches Gradescope's schema; none holds the seed.
 "$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json >"$work/schema.log" ||
@@ -514,14 +550,15 @@ declare -A fault=(
   [forge_report]="stub + static init writing a passing report" [weak_rename]="stub + weak rename() swapping reports"
   [oracle_by_name]="the oracle by mangled name, /proc/self/exe" [preinit_seed]=".preinit_array reading the seed"
   [kit_programs]="stub + exec of the reference's program"
-  [inherited_fds]="reading and writing descriptors 5 to 20")
+  [inherited_fds]="reading and writing descriptors 5 to 20" [udp_out]="UDP datagrams out")
 {
   echo
   printf '%-46s | %-40s | %-9s | %-10s | %s\n' "fault (in lab 02)" "what the grader reported for lab 02" "lab 02" "other labs" "seconds"
   for name in reference empty stubs compile_error segfault endless_loop allocate_50gb print_100mb exit_0 escape extra_files \
     steal_seed early_constructor symlink include_reference own_main partial all_or_nothing latin1_crash latin1_compile \
     fifo_report symlink_report queries_5 finished_yes crafted_token crafted_inflight labs bad_members bad_members_tar bomb \
-    forge_report weak_rename oracle_by_name preinit_seed kit_programs inherited_fds; do
+    forge_report weak_rename oracle_by_name preinit_seed kit_programs inherited_fds \
+    udp_out; do
     [ -f "$out/$name/steps.tsv" ] || continue
     seconds=$(grep -oE '\(([0-9.]+) s\)$' "$out/$name/report.txt" | tail -n 1 | tr -d '() s')
     awk -F'\t' -v f="${fault[$name]}" -v t="$seconds" 'FNR == 1 { next }
