@@ -205,6 +205,19 @@ stub_with kit_programs "namespace { struct Borrow { Borrow() {
     char* argv[] = {const_cast<char*>(program), nullptr};
     execv(program, argv); } } } borrow; }"
 
+# The kit's own sources and the libraries the oracle is built on: a lab file may include
+# only its lab's header, the geometry types, Eigen and the standard library. The oracle's
+# .cpp under another namespace name, with GMP off so that CGAL falls back on header-only
+# arithmetic, and thin wrappers, once scored 87 of 100 with no geometry of its own.
+reference "$subs/include_oracle"
+{ printf '#define CGAL_DISABLE_GMP 1\n#define CGAL_NO_GMP 1\n#define oracle borrowed\n#include "common/oracle/segment_triangle.cpp"\n#undef oracle\n'
+  cat "$kit/solutions/02_segment_triangle/segment_triangle.cpp"; } >"$subs/include_oracle/$lab02"
+reference "$subs/include_cgal"
+{ printf '#include <CGAL/Simple_cartesian.h>\n'; cat "$kit/solutions/02_segment_triangle/segment_triangle.cpp"; } \
+  >"$subs/include_cgal/$lab02"
+reference "$subs/include_numbers"
+{ printf '#include <vector>\n#include <gmp.h>\n#include <mpfr.h>\n#include <boost/multiprecision/cpp_int.hpp>\n'
+  cat "$kit/solutions/02_segment_triangle/segment_triangle.cpp"; } >"$subs/include_numbers/$lab02"
 # Descriptors the grader inherited (the suite grades with two open: 7 reads a file, 8
 # writes one): the code under test tries every descriptor from 5 to 20 (3 and 4 are its
 # protocol's pipes). If any is open, segment_plane aborts (and this suite fails); what it
@@ -245,6 +258,16 @@ fi
 nothing_received() {
   [ -s "$work/udp-received.txt" ] && { fail "$1: a UDP datagram reached this machine: $(head -c 200 "$work/udp-received.txt")"; : >"$work/udp-received.txt"; }
   return 0
+}
+# expect_refused NAME HEADER...: lab 02 does not compile, and its feedback states the
+# include rule and names each header.
+expect_refused() {
+  local name="$1" report="$out/$1/report.txt"
+  shift
+  expect "$name" "does not compile"
+  grep -q "may include only its lab's header, the geometry types, Eigen and the standard library" "$report" ||
+    fail "$name: the feedback does not state the include rule"
+  for header in "$@"; do grep -qF -- "$header" "$report" || fail "$name: the feedback does not name $header"; done
 }
 
 # ---- a machine that can confine nothing ---------------------------------------------
@@ -360,6 +383,9 @@ awk -F'\t' 'NR > 1 && $1 == "02" && $4 != "failing" { print "FAIL: forge_report:
   END { exit bad }' "$out/forge_report/steps.tsv" || failures=$((failures + 1))
 expect oracle_by_name graded
 expect preinit_seed graded
+expect_refused include_oracle '"common/oracle/segment_triangle.cpp" (line 4)'
+expect_refused include_cgal '<CGAL/Simple_cartesian.h> (line 1)'
+expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)'
 expect inherited_fds graded
 nothing_written "sandbox $(grep -o 'sandbox: [A-Za-z]*' "$out/reference/report.txt" | head -n 1)"
 expect udp_out graded
@@ -466,7 +492,7 @@ for mode in bubblewrap landlock; do
   fi
   mkdir -p "$work/mode-$mode"
   for name in escape steal_seed forge_report weak_rename kit_programs include_reference preinit_seed oracle_by_name \
-    inherited_fds udp_out; do
+    include_oracle include_cgal include_numbers inherited_fds udp_out; do
     cp -R "$subs/$name" "$work/mode-$mode/"
   done
   "$runner" grade "$work/mode-$mode" --out "$work/out-$mode" --seed "$secret" --cases 50 --labs 02 --sandbox "$mode" \
@@ -477,6 +503,9 @@ for mode in bubblewrap landlock; do
   main_out="$out" && out="$work/out-$mode"
   for name in escape steal_seed oracle_by_name preinit_seed; do expect "$name" graded; done
   expect include_reference "does not compile"
+  expect_refused include_oracle '"common/oracle/segment_triangle.cpp" (line 4)'
+  expect_refused include_cgal '<CGAL/Simple_cartesian.h> (line 1)'
+  expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)'
   expect inherited_fds graded
   nothing_written "--sandbox $mode"
   expect udp_out graded
@@ -495,22 +524,25 @@ if [ "$(id -u)" = 0 ]; then
     >"$work/unsandboxed.log" 2>&1 || fail "grading with --sandbox none exits $?"
   grep -q "sandbox: none (turned off" "$work/unsandboxed/report.txt" || fail "--sandbox none: the report does not say so"
 fi
-# With no sandbox at all, the grader's own promises still hold: no inherited
-# descriptor, no network (the seccomp filter, where the kernel has one: the report says
-# so).
+# With no sandbox at all, the grader's own promises still hold: the include rule, no
+# inherited descriptor, no network (the seccomp filter, where the kernel has one: the
+# report says so).
 mkdir -p "$work/mode-none"
-for name in inherited_fds udp_out; do cp -R "$subs/$name" "$work/mode-none/"; done
+for name in include_oracle include_cgal include_numbers inherited_fds udp_out; do cp -R "$subs/$name" "$work/mode-none/"; done
 "$runner" grade "$work/mode-none" --out "$work/out-none" --seed "$secret" --cases 50 --labs 02 --sandbox none --jobs 2 \
   7<"$kit/README.md" 8>>"$work/inherited.txt" >"$work/mode-none.log" 2>&1 ||
   { cat "$work/mode-none.log"; fail "grading with --sandbox none exits $?"; }
 cp -R "$out/reference" "$work/out-none/"
 main_out="$out" && out="$work/out-none"
+expect_refused include_oracle '"common/oracle/segment_triangle.cpp" (line 4)'
+expect_refused include_cgal '<CGAL/Simple_cartesian.h> (line 1)'
+expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)'
 expect inherited_fds graded
 nothing_written "--sandbox none"
 expect udp_out graded
 if grep -q "and no network" "$out/udp_out/report.txt"; then nothing_received "--sandbox none"; else : >"$work/udp-received.txt"; fi
 out="$main_out"
-echo "--sandbox none: the descriptors and the network held"
+echo "--sandbox none: the include rule, the descriptors and the network held"
 
 # The outputs: every results.json matches Gradescope's schema; none holds the seed.
 "$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json >"$work/schema.log" ||
@@ -549,7 +581,8 @@ declare -A fault=(
   [bad_members_tar]="tar: absolute, ../, symlinks, 5 MB" [bomb]="zip bomb declaring 10 bytes"
   [forge_report]="stub + static init writing a passing report" [weak_rename]="stub + weak rename() swapping reports"
   [oracle_by_name]="the oracle by mangled name, /proc/self/exe" [preinit_seed]=".preinit_array reading the seed"
-  [kit_programs]="stub + exec of the reference's program"
+  [kit_programs]="stub + exec of the reference's program" [include_oracle]="#include of the oracle's .cpp, renamed"
+  [include_cgal]="#include <CGAL/...>" [include_numbers]="#include <gmp.h>, <mpfr.h>, Boost.Multiprecision"
   [inherited_fds]="reading and writing descriptors 5 to 20" [udp_out]="UDP datagrams out")
 {
   echo
@@ -557,8 +590,8 @@ declare -A fault=(
   for name in reference empty stubs compile_error segfault endless_loop allocate_50gb print_100mb exit_0 escape extra_files \
     steal_seed early_constructor symlink include_reference own_main partial all_or_nothing latin1_crash latin1_compile \
     fifo_report symlink_report queries_5 finished_yes crafted_token crafted_inflight labs bad_members bad_members_tar bomb \
-    forge_report weak_rename oracle_by_name preinit_seed kit_programs inherited_fds \
-    udp_out; do
+    forge_report weak_rename oracle_by_name preinit_seed kit_programs include_oracle include_cgal include_numbers \
+    inherited_fds udp_out; do
     [ -f "$out/$name/steps.tsv" ] || continue
     seconds=$(grep -oE '\(([0-9.]+) s\)$' "$out/$name/report.txt" | tail -n 1 | tr -d '() s')
     awk -F'\t' -v f="${fault[$name]}" -v t="$seconds" 'FNR == 1 { next }
