@@ -346,7 +346,11 @@ int compile_main(int argc, char** argv) {
   std::fputs(rest.c_str(), stderr);
   const std::string problem = source.empty() ? "" : audit(rule, headers, rest, source);
   if (!problem.empty()) {
-    std::fprintf(stderr, "%s: error: %s\n", source.c_str(), problem.c_str());
+    // FILE:LINE: error: as a compiler says it, so that an editor jumps to the include.
+    std::smatch line;
+    static const std::regex first_line(R"(\(line ([0-9]+)\))");
+    const std::string at = std::regex_search(problem, line, first_line) ? ":" + line[1].str() : "";
+    std::fprintf(stderr, "%s%s: error: %s\n", source.c_str(), at.c_str(), problem.c_str());
     if (!object.empty()) std::remove(object.c_str());
     return 1;
   }
