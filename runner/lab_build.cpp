@@ -1,10 +1,12 @@
 #include "lab_build.h"
 #include "common/text.h"
+#include "includes.h"
 
 #include <nlohmann/json.hpp>
 
 #include <sys/stat.h>
 #include <unistd.h>
+#include <cctype>
 #include <chrono>
 #include <filesystem>
 #include <regex>
@@ -255,9 +257,14 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
   const std::vector<std::string> noise = {src.string() + "/", paths.source + "/", paths.build + "/"};
 
   std::vector<std::string> objects;
+  const std::string lab_folder = paths.source + "/labs/" + lab.stem();
   for (const auto& [manifest_path, command] : recipe.compile) {
     const std::string source = (fs::path(paths.source) / manifest_path).lexically_normal().string();
     const std::string object = (out / (fs::path(manifest_path).stem().string() + ".o")).string();
+    // What the file may include (runner/includes.h): the compile sees only that of the
+    // kit's tree, and the headers it read are audited against it.
+    includes::Rule rule = includes::rule_for(paths.source, lab_folder, command.argv);
+    rule.folders.push_back((src / manifest_path).parent_path().string());  // the submission's own files
     std::vector<std::string> argv, readable = {src.string()};
     for (std::size_t i = 0; i < command.argv.size(); ++i) {
       std::string word = command.argv[i];
@@ -279,19 +286,32 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
       if (word.rfind("-I", 0) == 0) path = word.substr(2);
       if (path.empty() || path[0] != '/' || !fs::exists(path)) continue;
       if (fs::equivalent(path, paths.source)) {
-        readable.insert(readable.end(), {paths.source + "/common", paths.source + "/labs"});
+        const std::vector<std::string> allowed = includes::kit_paths(rule, lab_folder);
+        readable.insert(readable.end(), allowed.begin(), allowed.end());
       } else if (fs::is_directory(path)) {
         if (path.rfind(paths.source + "/", 0) == 0 || path.rfind(paths.build + "/", 0) == 0) readable.push_back(path);
       } else if (path.rfind(paths.build + "/", 0) == 0) {
         readable.push_back(fs::path(path).parent_path().string());
       }
     }
-    const Confined c = sandbox.confine(argv, out.string(), readable, build_limits());
+    argv.push_back("-H");  // the headers it reads, for the audit
+    Limits limits = build_limits();
+    limits.kept_bytes = limits.flood_bytes = std::size_t(64) << 20;  // every header it read, or no build
+    const Confined c = sandbox.confine(argv, out.string(), readable, limits);
     const Run r = run(c.argv, {}, c.limits, out.string());
+    std::string output;
+    const std::vector<includes::Header> headers = includes::split_output(r.output, &output);
+    std::string refused = includes::audit(rule, headers, output, (src / manifest_path).string());
+    if (!refused.empty()) {
+      refused[0] = char(std::toupper(static_cast<unsigned char>(refused[0])));
+      b.errors = strip(refused, noise) + ".\n";
+      if (!r.ok()) b.errors += "\n" + strip(first_errors(output, paths.source), noise);
+      return b;
+    }
     if (!r.ok()) {
-      b.errors = r.timed_out ? "the compiler did not finish within 300 s\n"
-                             : strip(first_errors(r.output, paths.source), noise);
-      if (b.errors.empty()) b.errors = strip(r.output.substr(0, 2000), noise);
+      b.errors =
+          r.timed_out ? "the compiler did not finish within 300 s\n" : strip(first_errors(output, paths.source), noise);
+      if (b.errors.empty()) b.errors = strip(output.substr(0, 2000), noise);
       return b;
     }
     const std::string problems = audit(symbols_of(object), lab, recipe.kit_symbols) + audit_sections(object);

@@ -3,6 +3,7 @@
 #include "check.h"
 #include "fake.h"
 #include "grade.h"
+#include "includes.h"
 #include "mutant.h"
 #include "report.h"
 #include "sandbox.h"
@@ -18,6 +19,9 @@ int main(int argc, char** argv) {
   // The judge's process starts a graded answerer through this (runner/step.h): first, and
   // without the rest of the command line's machinery.
   if (argc > 1 && std::string(argv[1]) == "confine") return runner::confine_main(argc, argv);
+  // The compiler launcher of every lab's student library (cmake/LabKit.cmake): the
+  // include audit of runner/includes.h, as ./labkit grade applies it.
+  if (argc > 1 && std::string(argv[1]) == "lab-compile") return runner::includes::compile_main(argc, argv);
   CLI::App app{"The collision-detection lab kit"};
   app.require_subcommand(1);
   runner::Paths paths{LABKIT_SOURCE_DIR, LABKIT_BINARY_DIR};

@@ -1,12 +1,15 @@
 #include "process.h"
 #include "cgroup.h"
+#include "no_network.h"
 
 #include <fcntl.h>
 #include <grp.h>
 #include <poll.h>
 #include <sys/resource.h>
+#include <sys/syscall.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <csignal>
@@ -52,6 +55,9 @@ class Capture {
   close(output);
   const int null = open("/dev/null", O_RDONLY);
   if (null >= 0) dup2(null, 0);
+  // Only its standard streams: nothing the grader inherited (an instructor's script or a
+  // CI runner may leave descriptors open) or opened reaches a compile, a link or a judge.
+  close_descriptors_from(std::max(3, limits.descriptors));
   for (const auto& [name, value] : env) setenv(name.c_str(), value.c_str(), 1);
   if (!directory.empty() && chdir(directory.c_str()) != 0) {
     dprintf(2, "labkit: cannot enter %s: %s\n", directory.c_str(), strerror(errno));
@@ -67,6 +73,17 @@ class Capture {
 }
 
 }  // namespace
+
+void close_descriptors_from(int first) {
+#ifdef SYS_close_range
+  if (syscall(SYS_close_range, unsigned(first), ~0u, 0) == 0) return;
+#endif
+  rlimit open_files{};
+  const long last = getrlimit(RLIMIT_NOFILE, &open_files) == 0 && open_files.rlim_cur != RLIM_INFINITY
+                        ? long(std::min<rlim_t>(open_files.rlim_cur, rlim_t(1) << 20))
+                        : 1L << 20;
+  for (long fd = first; fd < last; ++fd) close(int(fd));
+}
 
 bool apply_limits(const Limits& limits) {
   rlimit no_core{0, 0};
@@ -99,6 +116,13 @@ bool apply_limits(const Limits& limits) {
     if (setgroups(0, nullptr) != 0 || setresgid(gid, gid, gid) != 0 ||
         setresuid(uid_t(limits.uid), uid_t(limits.uid), uid_t(limits.uid)) != 0) {
       dprintf(2, "labkit: cannot switch to uid %d: %s\n", limits.uid, strerror(errno));
+      return false;
+    }
+  }
+  if (limits.no_network) {
+    const std::string why = no_network::restrict_self();
+    if (!why.empty()) {
+      dprintf(2, "labkit: cannot shut the network: %s\n", why.c_str());
       return false;
     }
   }

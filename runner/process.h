@@ -21,6 +21,13 @@ struct Limits {
   long cpu_seconds = 0;                 // CPU time (RLIMIT_CPU); 0: no limit
   int uid = -1, gid = -1;               // run under this uid and gid (needs root); -1: as we are
   std::vector<std::string> groups;      // join these control groups first (runner/cgroup.h; needs root)
+  // The child keeps descriptors 0 .. descriptors-1 (its standard streams, and a protocol's
+  // pipes placed right above them) and nothing else: every descriptor this process
+  // inherited or opened is closed before the program starts.
+  int descriptors = 3;
+  // No network: every socket but a Unix one refused (runner/no_network.h), for a run
+  // that has no network namespace of its own.
+  bool no_network = false;
 };
 
 struct Run {
@@ -45,9 +52,13 @@ Run run(const std::vector<std::string>& argv, const Environment& extra_environme
         const std::string& directory = "", const Observer& observe = {});
 
 // Applies the limits to this process (no core files; its control groups, while it may
-// still join them; then the uid last). False, with the reason on stderr, when a group
-// cannot be joined or the uid cannot be taken.
+// still join them; then the uid; then the network filter last). False, with the reason
+// on stderr, when a group cannot be joined, the uid taken or the network shut.
 bool apply_limits(const Limits& limits);
+
+// Closes every descriptor from `first` up, open or not. Safe between fork and exec (no
+// allocation): close_range where the kernel has it (Linux 5.9), else one close() each.
+void close_descriptors_from(int first);
 
 // "segmentation fault", "aborted", ...
 std::string signal_name(int signal);

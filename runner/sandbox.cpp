@@ -1,6 +1,7 @@
 #include "sandbox.h"
 #include "cgroup.h"
 #include "landlock.h"
+#include "no_network.h"
 
 #include <fcntl.h>
 #include <sys/file.h>
@@ -8,6 +9,7 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
 #include <bitset>
 #include <cerrno>
 #include <csignal>
@@ -205,6 +207,16 @@ std::string Sandbox::probe(const std::vector<std::string>& needed) const {
   return trimmed(r.output.empty() ? "the probe did not run" : r.output);
 }
 
+// With no sandbox, no namespace takes the network away: the seccomp filter does, where
+// the kernel lets it (else the description says the network is open, and why).
+void Sandbox::shut_network(const std::vector<std::string>& needed) {
+  no_network_ = true;
+  if (const std::string why = probe(needed); !why.empty()) {
+    no_network_ = false;
+    network_ = "; the network is open (" + why + ")";
+  }
+}
+
 // Makes one group as a graded step does: whether steps get one here, and what it holds.
 void Sandbox::probe_step_groups() {
   const StepGroup probe({std::size_t(64) << 20});
@@ -234,6 +246,7 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
                              closed + ") or move the kit, then grade again");
   if (mode == "none") {
     s.why_ = "turned off (--sandbox none)";
+    s.shut_network(needed);
     return s;
   }
   if (mode == "auto" || mode == "bubblewrap") {
@@ -246,10 +259,12 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
       throw std::runtime_error(why + " (install bubblewrap, or use --sandbox landlock or none)");
   }
   s.kind_ = Kind::landlock;
+  s.no_network_ = true;  // no namespace of its own: the seccomp filter (runner/no_network.h)
   if (mode == "landlock") s.why_ = "not asked for: --sandbox landlock";
   const std::string why = landlock::version() == 0 ? "this kernel has no Landlock" : s.probe(needed);
   if (why.empty()) return s;
   s.kind_ = Kind::none;
+  s.no_network_ = false;
   s.why_ += std::string(s.why_.empty() ? "" : "; ") + "Landlock: " + why;
   if (mode == "landlock") throw std::runtime_error("Landlock cannot confine the graded code here: " + why);
   if (fs::exists(fs::path(kit) / "solutions"))
@@ -257,6 +272,7 @@ Sandbox Sandbox::make(const std::string& mode, const std::vector<std::string>& n
                              "), and this kit holds solutions/: the graded code could read the reference. Grade with "
                              "the Gradescope package, which holds no reference (./labkit package gradescope; unzip it; "
                              "setup.sh, then run_autograder), or pass --sandbox none if you trust every submission");
+  s.shut_network(needed);
   return s;
 }
 
@@ -269,8 +285,11 @@ std::string Sandbox::description() const {
            also;
   if (kind_ == Kind::landlock)
     return "Landlock (bubblewrap " + why_ +
-           "): reads only the system and its own files, writes only its own scratch folder, no TCP" + also;
-  return "none (" + why_ + "): time, memory, output and file-size limits only" + also;
+           "): reads only the system and its own files, writes only its own scratch folder, no network (no "
+           "socket but a Unix one)" +
+           also;
+  return "none (" + why_ + "): time, memory, output and file-size limits only" +
+         (no_network_ ? ", and no network (no socket but a Unix one)" : network_) + also;
 }
 
 void Sandbox::interpret(Run& run) const {
@@ -290,10 +309,15 @@ Confined Sandbox::confine(const std::vector<std::string>& argv, const std::strin
     limits.processes = kProcesses;
     if (!writable.empty()) chown_all(writable, uid);
   }
+  // bubblewrap's own network namespace has nothing in it (and bubblewrap needs a netlink
+  // socket to set it up); elsewhere the seccomp filter refuses sockets.
+  limits.no_network = no_network_;
   c.limits = limits;
+  Limits inner;
+  inner.descriptors = limits.descriptors;  // a protocol's pipes, when the run has them
   switch (kind_) {
     case Kind::bubblewrap: c.argv = bubblewrap(argv, writable, readable, tmp_bytes_); break;
-    case Kind::landlock: c.argv = launcher({}, argv, readable, writable); break;
+    case Kind::landlock: c.argv = launcher(inner, argv, readable, writable); break;
     case Kind::none: c.argv = argv; break;
   }
   return c;
@@ -311,6 +335,8 @@ std::vector<std::string> launcher(const Limits& limits, const std::vector<std::s
   add("--cpu", limits.cpu_seconds);
   if (limits.uid >= 0)
     out.insert(out.end(), {"--uid", std::to_string(limits.uid), "--gid", std::to_string(limits.gid)});
+  if (limits.descriptors > 3) add("--descriptors", limits.descriptors);
+  if (limits.no_network) out.insert(out.end(), {"--network", "none"});
   for (const std::string& group : limits.groups) out.insert(out.end(), {"--cgroup", group});
   for (const std::string& path : readable) out.insert(out.end(), {"--read", path});
   if (!writable.empty()) out.insert(out.end(), {"--write", writable});
@@ -342,6 +368,10 @@ int confine_main(int argc, char** argv) {
       limits.gid = int(number);
     else if (name == "--cgroup")
       limits.groups.push_back(value);
+    else if (name == "--descriptors")
+      limits.descriptors = int(number);
+    else if (name == "--network" && value == "none")
+      limits.no_network = true;
     else if (name == "--read")
       readable.push_back(value), restrict_files = true;
     else if (name == "--write")
@@ -354,9 +384,13 @@ int confine_main(int argc, char** argv) {
   if (at + 1 >= argc || std::string(argv[at]) != "--") {
     std::fprintf(stderr,
                  "usage: labkit-runner confine [--memory B] [--file-size B] [--processes N] [--cpu S] "
-                 "[--uid U --gid G] [--cgroup FOLDER]... [--read PATH]... [--write PATH] -- PROGRAM [ARGS]\n");
+                 "[--uid U --gid G] [--cgroup FOLDER]... [--descriptors N] [--network none] [--read PATH]... "
+                 "[--write PATH] -- PROGRAM [ARGS]\n");
     return 126;
   }
+  // PROGRAM gets descriptors 0 .. N-1 (its standard streams and, for an answerer, its
+  // protocol's pipes) and nothing else the judge's process or its parents left open.
+  close_descriptors_from(std::max(3, limits.descriptors));
   if (!apply_limits(limits)) return 126;
   if (restrict_files) {
     if (!writable.empty()) {

@@ -11,13 +11,18 @@
 //
 // landlock: where bubblewrap cannot run (a container that forbids namespaces), the run
 // takes away its own access to the file system (runner/landlock.h): it reads the system
-// and the paths it is given, writes its own folder, and nothing else; no TCP, no signals
-// outside itself where the kernel can refuse them. The same files as under bubblewrap.
+// and the paths it is given, writes its own folder, and nothing else; no signals outside
+// itself where the kernel can refuse them. The same files as under bubblewrap. With no
+// network namespace, a seccomp filter (runner/no_network.h) refuses every socket but a
+// Unix one: no TCP, no UDP, nothing else.
 //
 // none: no file confinement. `auto` never falls back to it for a kit that holds
 // solutions/ (the graded code could read the reference): it stops and says why. Asked
 // for (--sandbox none), or for the Gradescope package (no reference in it), only the
-// limits and the uid below protect the machine.
+// limits, the uid below and the seccomp filter that refuses sockets protect the machine.
+//
+// Every mode: a confined run starts with its standard streams (and an answerer with its
+// protocol's pipes) and no other descriptor, whatever the grader inherited.
 //
 // Either way, when the grader runs as root, each confined run also runs under an
 // unprivileged uid of its own (one per concurrent run, 61000 and up, leased machine-wide
@@ -78,20 +83,24 @@ class Sandbox {
  private:
   std::string probe(const std::vector<std::string>& needed) const;
   void probe_step_groups();
+  void shut_network(const std::vector<std::string>& needed);
   Kind kind_ = Kind::none;
   bool drop_uid_ = false;
   std::size_t tmp_bytes_ = 0;  // the size of bubblewrap's /tmp; 0: its tmpfs cannot be sized
   std::string why_;            // why bubblewrap is not used
   bool step_groups_ = false;
-  std::string groups_;  // what the step groups hold, for description()
+  std::string groups_;       // what the step groups hold, for description()
+  bool no_network_ = false;  // the seccomp filter on every run (runner/no_network.h)
+  std::string network_;      // why not, for --sandbox none where it cannot be installed
 };
 
-// `labkit-runner confine [LIMITS] [--cgroup FOLDER]... [--read PATH]... [--write PATH] --
-// PROGRAM [ARGS]`: takes the limits, joins the control groups (runner/cgroup.h) while it
-// is still root, takes the uid, then Landlock's restriction when paths are given, then
-// runs PROGRAM: everything PROGRAM starts stays in the groups. The judge's process starts
-// a graded answerer through it: the runner decides the confinement, the judge only starts
-// the command line it is given.
+// `labkit-runner confine [LIMITS] [--cgroup FOLDER]... [--descriptors N] [--network none]
+// [--read PATH]... [--write PATH] -- PROGRAM [ARGS]`: closes every descriptor but 0 .. N-1
+// (3 by default), takes the limits, joins the control groups (runner/cgroup.h) while it
+// is still root, takes the uid, shuts the network (runner/no_network.h) when asked, then
+// Landlock's restriction when paths are given, then runs PROGRAM: everything PROGRAM
+// starts stays in the groups. The judge's process starts a graded answerer through it:
+// the runner decides the confinement, the judge only starts the command line it is given.
 std::vector<std::string> launcher(const Limits& limits, const std::vector<std::string>& argv,
                                   const std::vector<std::string>& readable = {}, const std::string& writable = "");
 int confine_main(int argc, char** argv);

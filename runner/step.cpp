@@ -175,6 +175,9 @@ std::string answerer_command(const Programs& programs, const StepOptions& option
   limits.memory_bytes = options.limits.memory_bytes;  // per process too: a second line of defence
   limits.file_bytes = options.limits.file_bytes;
   limits.cpu_seconds = long(options.limits.seconds) + 1;
+  // Its standard streams and the protocol's two pipes, descriptors 3 and 4
+  // (common/protocol/answerer.h); every other descriptor is closed before it starts.
+  limits.descriptors = 5;
   const Confined confined = options.sandbox->confine({programs.answerer}, scratch,
                                                      {fs::path(programs.answerer).parent_path().string()}, limits);
   *lease = confined.lease;

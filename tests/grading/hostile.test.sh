@@ -205,6 +205,71 @@ stub_with kit_programs "namespace { struct Borrow { Borrow() {
     char* argv[] = {const_cast<char*>(program), nullptr};
     execv(program, argv); } } } borrow; }"
 
+# The kit's own sources and the libraries the oracle is built on: a lab file may include
+# only its lab's header, the geometry types, Eigen and the standard library. The oracle's
+# .cpp under another namespace name, with GMP off so that CGAL falls back on header-only
+# arithmetic, and thin wrappers, once scored 87 of 100 with no geometry of its own.
+reference "$subs/include_oracle"
+{ printf '#define CGAL_DISABLE_GMP 1\n#define CGAL_NO_GMP 1\n#define oracle borrowed\n#include "common/oracle/segment_triangle.cpp"\n#undef oracle\n'
+  cat "$kit/solutions/02_segment_triangle/segment_triangle.cpp"; } >"$subs/include_oracle/$lab02"
+reference "$subs/include_cgal"
+{ printf '#include <CGAL/Simple_cartesian.h>\n'; cat "$kit/solutions/02_segment_triangle/segment_triangle.cpp"; } \
+  >"$subs/include_cgal/$lab02"
+reference "$subs/include_numbers"
+{ printf '#include <vector>\n#include <gmp.h>\n#include <mpfr.h>\n#include <boost/multiprecision/cpp_int.hpp>\n'
+  cat "$kit/solutions/02_segment_triangle/segment_triangle.cpp"; } >"$subs/include_numbers/$lab02"
+# Descriptors the grader inherited (the suite grades with two open: 7 reads a file, 8
+# writes one): the code under test tries every descriptor from 5 to 20 (3 and 4 are its
+# protocol's pipes). If any is open, segment_plane aborts (and this suite fails); what it
+# writes would land in $work/inherited.txt, which must stay empty.
+inject inherited_fds segment_plane '  { static bool tried = false, open = false; if (!tried) { tried = true;
+    for (int fd = 5; fd <= 20; ++fd) { char b[64]; if (read(fd, b, sizeof b) > 0) open = true;
+      if (write(fd, "leaked\\n", 7) > 0) open = true; } }
+    if (open) std::abort(); }'
+: >"$work/inherited.txt"
+nothing_written() {
+  [ -s "$work/inherited.txt" ] && { fail "$1: the graded code wrote into a descriptor the grader inherited"; : >"$work/inherited.txt"; }
+  return 0
+}
+# UDP, which Landlock cannot refuse: a datagram to a port this suite listens on, at
+# 127.0.0.1 and at this machine's outside address, and one to an address outside it. The
+# suite checks that nothing arrived; the code gets an error, and the grade is the same.
+udp_port=$((20000 + RANDOM % 20000))
+outside="$(hostname -I 2>/dev/null | awk '{ print $1 }')"
+inject udp_out segment_plane '  { static bool tried = false; if (!tried) { tried = true;
+    for (const char* to : {"127.0.0.1", "OUTSIDE", "192.0.2.77"}) {
+      int s = socket(AF_INET, SOCK_DGRAM, 0); if (s < 0) continue;
+      sockaddr_in a{}; a.sin_family = AF_INET; a.sin_port = htons(PORT); inet_pton(AF_INET, to, &a.sin_addr);
+      sendto(s, "escaped", 7, 0, reinterpret_cast<sockaddr*>(&a), sizeof a); close(s); } } }'
+sed -i "s|OUTSIDE|${outside:-127.0.0.1}|; s|htons(PORT)|htons($udp_port)|" "$subs/udp_out/$lab02"
+{ printf '#include <arpa/inet.h>\n#include <netinet/in.h>\n#include <sys/socket.h>\n'; cat "$subs/udp_out/$lab02"; } >"$work/udp.cpp" &&
+  mv "$work/udp.cpp" "$subs/udp_out/$lab02"
+listener=""
+if command -v python3 >/dev/null; then
+  python3 -c 'import socket, sys
+s = socket.socket(socket.AF_INET, socket.SOCK_DGRAM); s.bind(("0.0.0.0", int(sys.argv[1])))
+with open(sys.argv[2], "ab", buffering=0) as f:
+    while True: f.write(s.recvfrom(65536)[0] + b"\n")' "$udp_port" "$work/udp-received.txt" &
+  listener=$!
+  trap 'kill "$listener" 2>/dev/null; rm -rf "$work"' EXIT
+else
+  echo "no python3: the UDP datagrams are sent but not listened for"
+fi
+nothing_received() {
+  [ -s "$work/udp-received.txt" ] && { fail "$1: a UDP datagram reached this machine: $(head -c 200 "$work/udp-received.txt")"; : >"$work/udp-received.txt"; }
+  return 0
+}
+# expect_refused NAME HEADER...: lab 02 does not compile, and its feedback states the
+# include rule and names each header.
+expect_refused() {
+  local name="$1" report="$out/$1/report.txt"
+  shift
+  expect "$name" "does not compile"
+  grep -q "may include only its lab's header, the geometry types, Eigen and the standard library" "$report" ||
+    fail "$name: the feedback does not state the include rule"
+  for header in "$@"; do grep -qF -- "$header" "$report" || fail "$name: the feedback does not name $header"; done
+}
+
 # ---- a machine that can confine nothing ---------------------------------------------
 # Neither bubblewrap nor Landlock: grading a kit that holds solutions/ is refused (the
 # graded code could read the reference), with what to do instead. That refusal is the
@@ -220,7 +285,9 @@ fi
 # so that a loaded machine never turns a slow step into a time-out.
 mkdir -p "$work/loop" && mv "$subs/endless_loop" "$work/loop/"
 started=$(date +%s)
-"$runner" grade "$subs" --out "$out" --seed "$secret" --cases 300 --timeout 120 --jobs 2 >"$work/grade.log" 2>&1
+# Two descriptors left open, as an instructor's script or a CI runner might leave them.
+"$runner" grade "$subs" --out "$out" --seed "$secret" --cases 300 --timeout 120 --jobs 2 >"$work/grade.log" 2>&1 \
+  7<"$kit/README.md" 8>>"$work/inherited.txt"
 code=$?
 "$runner" grade "$work/loop/endless_loop" --out "$out/endless_loop" --seed "$secret" --cases 100 --timeout 8 --jobs 2 \
   >>"$work/grade.log" 2>&1 || code=$?
@@ -316,6 +383,13 @@ awk -F'\t' 'NR > 1 && $1 == "02" && $4 != "failing" { print "FAIL: forge_report:
   END { exit bad }' "$out/forge_report/steps.tsv" || failures=$((failures + 1))
 expect oracle_by_name graded
 expect preinit_seed graded
+expect_refused include_oracle '"common/oracle/segment_triangle.cpp" (line 4)'
+expect_refused include_cgal '<CGAL/Simple_cartesian.h> (line 1)'
+expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)'
+expect inherited_fds graded
+nothing_written "sandbox $(grep -o 'sandbox: [A-Za-z]*' "$out/reference/report.txt" | head -n 1)"
+expect udp_out graded
+nothing_received "sandbox $(grep -o 'sandbox: [A-Za-z]*' "$out/reference/report.txt" | head -n 1)"
 expect labs graded
 expect bad_members graded
 expect bad_members_tar graded
@@ -417,16 +491,25 @@ for mode in bubblewrap landlock; do
     continue
   fi
   mkdir -p "$work/mode-$mode"
-  for name in escape steal_seed forge_report weak_rename kit_programs include_reference preinit_seed oracle_by_name; do
+  for name in escape steal_seed forge_report weak_rename kit_programs include_reference preinit_seed oracle_by_name \
+    include_oracle include_cgal include_numbers inherited_fds udp_out; do
     cp -R "$subs/$name" "$work/mode-$mode/"
   done
   "$runner" grade "$work/mode-$mode" --out "$work/out-$mode" --seed "$secret" --cases 50 --labs 02 --sandbox "$mode" \
-    --jobs 2 >"$work/mode-$mode.log" 2>&1 || { cat "$work/mode-$mode.log"; fail "grading with --sandbox $mode exits $?"; }
+    --jobs 2 7<"$kit/README.md" 8>>"$work/inherited.txt" >"$work/mode-$mode.log" 2>&1 ||
+    { cat "$work/mode-$mode.log"; fail "grading with --sandbox $mode exits $?"; }
   grep -qi "sandbox: $mode" "$work/out-$mode/escape/report.txt" || fail "--sandbox $mode: the report does not say so"
   cp -R "$out/reference" "$work/out-$mode/"
   main_out="$out" && out="$work/out-$mode"
   for name in escape steal_seed oracle_by_name preinit_seed; do expect "$name" graded; done
   expect include_reference "does not compile"
+  expect_refused include_oracle '"common/oracle/segment_triangle.cpp" (line 4)'
+  expect_refused include_cgal '<CGAL/Simple_cartesian.h> (line 1)'
+  expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)'
+  expect inherited_fds graded
+  nothing_written "--sandbox $mode"
+  expect udp_out graded
+  nothing_received "--sandbox $mode"
   for name in forge_report weak_rename kit_programs; do
     awk -F'\t' -v n="$name ($mode)" 'NR > 1 && $5 != "0" { print "FAIL: " n ": lab 02 step " $2 " scores " $5; bad = 1 }
       END { exit bad }' "$out/$name/steps.tsv" || failures=$((failures + 1))
@@ -441,6 +524,25 @@ if [ "$(id -u)" = 0 ]; then
     >"$work/unsandboxed.log" 2>&1 || fail "grading with --sandbox none exits $?"
   grep -q "sandbox: none (turned off" "$work/unsandboxed/report.txt" || fail "--sandbox none: the report does not say so"
 fi
+# With no sandbox at all, the grader's own promises still hold: the include rule, no
+# inherited descriptor, no network (the seccomp filter, where the kernel has one: the
+# report says so).
+mkdir -p "$work/mode-none"
+for name in include_oracle include_cgal include_numbers inherited_fds udp_out; do cp -R "$subs/$name" "$work/mode-none/"; done
+"$runner" grade "$work/mode-none" --out "$work/out-none" --seed "$secret" --cases 50 --labs 02 --sandbox none --jobs 2 \
+  7<"$kit/README.md" 8>>"$work/inherited.txt" >"$work/mode-none.log" 2>&1 ||
+  { cat "$work/mode-none.log"; fail "grading with --sandbox none exits $?"; }
+cp -R "$out/reference" "$work/out-none/"
+main_out="$out" && out="$work/out-none"
+expect_refused include_oracle '"common/oracle/segment_triangle.cpp" (line 4)'
+expect_refused include_cgal '<CGAL/Simple_cartesian.h> (line 1)'
+expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)'
+expect inherited_fds graded
+nothing_written "--sandbox none"
+expect udp_out graded
+if grep -q "and no network" "$out/udp_out/report.txt"; then nothing_received "--sandbox none"; else : >"$work/udp-received.txt"; fi
+out="$main_out"
+echo "--sandbox none: the include rule, the descriptors and the network held"
 
 # The outputs: every results.json matches Gradescope's schema; none holds the seed.
 "$schema_check" "$kit/grading/gradescope-results.schema.json" "$out"/*/results.json >"$work/schema.log" ||
@@ -479,14 +581,17 @@ declare -A fault=(
   [bad_members_tar]="tar: absolute, ../, symlinks, 5 MB" [bomb]="zip bomb declaring 10 bytes"
   [forge_report]="stub + static init writing a passing report" [weak_rename]="stub + weak rename() swapping reports"
   [oracle_by_name]="the oracle by mangled name, /proc/self/exe" [preinit_seed]=".preinit_array reading the seed"
-  [kit_programs]="stub + exec of the reference's program")
+  [kit_programs]="stub + exec of the reference's program" [include_oracle]="#include of the oracle's .cpp, renamed"
+  [include_cgal]="#include <CGAL/...>" [include_numbers]="#include <gmp.h>, <mpfr.h>, Boost.Multiprecision"
+  [inherited_fds]="reading and writing descriptors 5 to 20" [udp_out]="UDP datagrams out")
 {
   echo
   printf '%-46s | %-40s | %-9s | %-10s | %s\n' "fault (in lab 02)" "what the grader reported for lab 02" "lab 02" "other labs" "seconds"
   for name in reference empty stubs compile_error segfault endless_loop allocate_50gb print_100mb exit_0 escape extra_files \
     steal_seed early_constructor symlink include_reference own_main partial all_or_nothing latin1_crash latin1_compile \
     fifo_report symlink_report queries_5 finished_yes crafted_token crafted_inflight labs bad_members bad_members_tar bomb \
-    forge_report weak_rename oracle_by_name preinit_seed kit_programs; do
+    forge_report weak_rename oracle_by_name preinit_seed kit_programs include_oracle include_cgal include_numbers \
+    inherited_fds udp_out; do
     [ -f "$out/$name/steps.tsv" ] || continue
     seconds=$(grep -oE '\(([0-9.]+) s\)$' "$out/$name/report.txt" | tail -n 1 | tr -d '() s')
     awk -F'\t' -v f="${fault[$name]}" -v t="$seconds" 'FNR == 1 { next }
