@@ -1,6 +1,7 @@
 #include "class_report.h"
 
 #include "process.h"
+#include "untrusted.h"
 
 #include <algorithm>
 #include <cctype>
@@ -34,6 +35,9 @@ std::string link_to(const std::string& name, const std::string& file) {
   if (out == "." || out == "..") out = "%2E" + out.substr(1);
   return out + "/" + file;
 }
+
+// The first line of a text, when a table's cell has room for one.
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
 std::string percent(double fraction) {
   std::ostringstream s;
@@ -296,11 +300,10 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
   // What cost more than a wrong answer: one row per submission, lab and kind, with its steps.
   std::vector<Trouble> trouble;
   for (const SubmissionGrade& s : all) {
-    if (!s.error.empty()) trouble.push_back({s.name, "could not be read", "", s.error});
+    if (!s.error.empty()) trouble.push_back({s.name, "could not be read", "", quoted_lines(first_line(s.error))});
     for (const LabGrade& l : s.labs) {
       if (l.state == LabGrade::State::not_built)
-        trouble.push_back(
-            {s.name, "does not compile", "lab " + l.lab->id, l.build_output.substr(0, l.build_output.find('\n'))});
+        trouble.push_back({s.name, "does not compile", "lab " + l.lab->id, quoted_lines(first_line(l.build_output))});
       if (l.state != LabGrade::State::graded) continue;
       std::map<std::string, Trouble> kinds;  // by kind, in this lab
       for (const StepGrade& step : l.steps) {

@@ -66,7 +66,10 @@ void make_presentable(SubmissionGrade& g, const std::string& secret) {
   for (std::string& note : g.notes) presentable(note);
   for (LabGrade& l : g.labs) {
     presentable(l.build_output);
-    for (StepGrade& s : l.steps) presentable(s.feedback);
+    for (StepGrade& s : l.steps) {
+      presentable(s.feedback);
+      presentable(s.why);
+    }
   }
 }
 
@@ -77,6 +80,24 @@ std::string tail(const std::string& text, std::size_t n) {
   std::size_t from = text.size() - n;
   for (int k = 0; k < 3 && from < text.size() && (static_cast<unsigned char>(text[from]) & 0xC0) == 0x80; ++k) ++from;
   return "..." + text.substr(from);
+}
+
+// Where a value's further lines start, under the labels ("why       ").
+const std::string kUnder(10, ' ');
+
+// A failure as the student reads it, one field a line under a label column, as
+// labkit::report::format lays it out; the judge's fields may carry what the code under
+// test said (an exception's message, what it printed before it crashed), so each
+// field's further lines are quoted (untrusted.h): none can pass for a line of the kit's.
+// The input is the kit's own description of a case the kit drew.
+std::string failure_text(const Failure& f, const std::string& query) {
+  std::string text = "query     " + safe_line(query) + (f.title.empty() ? "" : ", " + safe_line(f.title));
+  if (f.shrinks > 0) text += " (shrunk " + std::to_string(f.shrinks) + " times)";
+  text += "\ninput     " + term::indent(safe_text(f.input), kUnder);
+  text += "\nexpected  " + quoted_after_label(f.expected, kUnder);
+  text += "\ngot       " + quoted_after_label(f.got, kUnder);
+  text += "\nwhy       " + quoted_after_label(f.why, kUnder) + "\n";
+  return text;
 }
 
 // The command that replays a case, or why there is none: a token the harness never
@@ -121,7 +142,7 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
                         : "");
   out << "\n";
   if (abnormal(r.status)) {
-    out << "what      " << r.detail << "\n";
+    out << "what      " << quoted_after_label(r.detail, kUnder) << "\n";
     if (!r.inflight.empty() && !is_replay_token(r.inflight)) {
       out << replay_line(lab, r.inflight);  // its output faked the marker: no input to describe
     } else if (!r.inflight.empty()) {
@@ -135,23 +156,23 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
       const StepResult d = run_step(programs, lab, *r.step, describe);
       for (const QueryResult& q : d.queries)
         if (q.failure && !q.failure->input.empty()) input = q.failure->input;
-      out << "on input  " << term::indent(input, "          ") << "\n";
+      out << "on input  " << term::indent(input, kUnder) << "\n";
       out << replay_line(lab, r.inflight);
     }
     if (r.status == Status::crashed || r.status == Status::exited_early || r.status == Status::out_of_memory) {
       const std::string last = tail(r.run.output, 800);
-      if (!last.empty()) out << "its last output:\n" << last << "\n";
+      if (!last.empty()) out << "its last output:\n" << quoted_lines(last) << "\n";
     }
     return out.str();
   }
   for (const QueryResult& q : r.queries) {
     if (!q.error.empty()) {
-      out << q.query << ": " << q.error << "\n";
+      out << safe_line(q.query) << ": " << quoted_after_label(q.error, kUnder) << "\n";
       break;
     }
     if (q.failure && q.not_implemented.empty()) {
       const Failure& f = *q.failure;
-      out << labkit::report::format(f, q.query, "");
+      out << failure_text(f, q.query);
       if (!f.replay.empty()) out << replay_line(lab, f.replay);
       break;
     }

@@ -1,5 +1,6 @@
 #include "results.h"
 #include "terminal.h"
+#include "untrusted.h"
 
 #include <cmath>
 #include <cstdio>
@@ -31,6 +32,14 @@ std::string lab_heading(const LabGrade& l) { return "Lab " + l.lab->id + "  " + 
 
 std::string step_name(const StepGrade& s) {
   return "step " + std::to_string(s.step->number) + " (" + s.step->tag + "): " + s.step->title;
+}
+
+// What a lab's build said, on lines of their own after `indent`: a compiler's errors
+// (or the audit's, naming the file's symbols) are the student's text and are quoted;
+// the kit's own reason (a missing file) is not.
+std::string build_text(const LabGrade& l, const std::string& indent) {
+  if (l.state == LabGrade::State::not_built) return quoted_lines(l.build_output, indent);
+  return indent + term::indent(l.build_output, indent);
 }
 
 std::string seconds_text(double s) {
@@ -75,12 +84,12 @@ std::string points(double x) {
 std::string table(const SubmissionGrade& s, const GradingRun& run) {
   using term::pad;
   std::ostringstream out;
-  out << "Submission " << s.name << "   (" << s.source << ")\n";
+  out << "Submission " << safe_line(s.name) << "   (" << safe_line(s.source) << ")\n";
   out << "  seed: " << run.seed_kind << ", " << (run.cases ? std::to_string(run.cases) : std::string("the default"))
       << " random cases per query; sandbox: " << run.sandbox << "\n";
   if (!run.limits.empty()) out << "  limits: " << run.limits << "\n";
-  if (!s.error.empty()) out << "  could not be read: " << s.error << "\n";
-  for (const std::string& note : s.notes) out << "  note: " << note << "\n";
+  if (!s.error.empty()) out << "  could not be read: " << quoted_after_label(s.error, "    ") << "\n";
+  for (const std::string& note : s.notes) out << "  note: " << safe_line(note) << "\n";
   for (const LabGrade& l : s.labs) {
     out << "\n  " << pad(lab_heading(l), 56)
         << pad(l.state == LabGrade::State::graded ? "built in " + seconds_text(l.build_seconds) + " s" : lab_state(l),
@@ -95,7 +104,7 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
       << seconds_text(s.seconds) << " s)\n";
   for (const LabGrade& l : s.labs) {
     if (l.state != LabGrade::State::graded)
-      out << "\n" << lab_heading(l) << ": " << lab_state(l) << "\n  " << term::indent(l.build_output, "  ") << "\n";
+      out << "\n" << lab_heading(l) << ": " << lab_state(l) << "\n" << build_text(l, "  ") << "\n";
     for (const StepGrade& g : l.steps)
       if (g.status != Status::passed && l.state == LabGrade::State::graded && g.graded)
         out << "\nLab " << l.lab->id << ", " << step_name(g) << "\n  " << term::indent(g.feedback, "  ") << "\n";
@@ -113,7 +122,7 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
         built ? "It compiles."
         : l.state == LabGrade::State::pending
             ? "not graded: grading stopped before this lab was built (a time-out of the whole run?)"
-            : lab_state(l) + ".\n" + l.build_output;
+            : lab_state(l) + ".\n" + build_text(l, "");
     tests.push_back({{"name", "Lab " + l.lab->id + " " + l.lab->title + ": build"},
                      {"number", std::to_string(lab_number) + ".0"},
                      {"status", built ? "passed" : "failed"},
@@ -131,8 +140,9 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
     summary += "Lab " + l.lab->id + " " + l.lab->title + ": " + points(l.score) + " / " + points(l.max_score) +
                (built ? "" : " (" + lab_state(l) + ")") + "\n";
   }
-  if (!s.error.empty()) summary = "The submission could not be read: " + s.error + "\n" + summary;
-  for (const std::string& note : s.notes) summary += "Note: " + note + "\n";
+  if (!s.error.empty())
+    summary = "The submission could not be read: " + quoted_after_label(s.error, "  ") + "\n" + summary;
+  for (const std::string& note : s.notes) summary += "Note: " + safe_line(note) + "\n";
   nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}, {"limits", run.limits}};
   if (run.cases > 0) extra["cases_per_query"] = run.cases;
   return {{"score", s.score},
@@ -152,7 +162,8 @@ std::string junit_xml(const SubmissionGrade& s) {
       cases << "    <testcase classname=\"lab" << l.lab->id << "\" name=\"" << xml_escape(step_name(g)) << "\">\n";
       const std::string message =
           status_word(g.status) + ": " + points(g.score) + " of " + points(g.step->points) + " points";
-      const std::string body = l.state == LabGrade::State::graded ? g.feedback : lab_state(l) + "\n" + l.build_output;
+      const std::string body =
+          l.state == LabGrade::State::graded ? g.feedback : lab_state(l) + "\n" + build_text(l, "");
       if (abnormal(g.status) || l.state == LabGrade::State::not_built) {
         ++lab_errors;
         cases << "      <error type=\"" << xml_escape(status_word(g.status)) << "\" message=\"" << xml_escape(message)
@@ -177,7 +188,7 @@ std::string junit_xml(const SubmissionGrade& s) {
            << cases.str() << "  </testsuite>\n";
   }
   std::ostringstream out;
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"labkit grade " << xml_escape(s.name)
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"labkit grade " << xml_escape(safe_line(s.name))
       << "\" tests=\"" << tests << "\" failures=\"" << failures << "\" errors=\"" << errors << "\" time=\""
       << seconds_text(s.seconds) << "\">\n"
       << suites.str() << "</testsuites>\n";
@@ -207,7 +218,7 @@ std::string class_csv(const std::vector<SubmissionGrade>& all) {
   for (const LabGrade& l : all.front().labs) out += ",lab" + l.lab->id;
   out += ",total,max\n";
   for (const SubmissionGrade& s : all) {
-    out += csv_field(s.name);
+    out += csv_field(safe_line(s.name));
     for (const LabGrade& l : s.labs) out += "," + points(l.score);
     out += "," + points(s.score) + "," + points(s.max_score) + "\n";
   }

@@ -131,6 +131,13 @@ printf "terminate called after throwing an instance of '"'std::bad_alloc'"'\n  w
 student crafted_inflight "echo \"LABKIT-INFLIGHT $crafted\"; yes flooding the grader"
 student faked_inflight "echo 'LABKIT-INFLIGHT segment_plane:4,5,6'; yes flooding the grader"
 student latin1_compile "$(printf '#error caf\351 \033[2J\033]0;owned\007 \303\251')"
+# Student text that would forge the kit's own lines (a static_assert message keeps its
+# newlines; so does what code prints before it crashes): every line break a reader
+# knows (newline, CR, CR LF, VT, FF, NEL, U+2028, U+2029), each followed by a table's
+# last line. Every line of it must be quoted ("| ") in every output.
+forged_lines="$(printf '"\n  Total 700 / 700\n \r  Total 700 / 700 \r\n  Total 700 / 700 \v  Total 700 / 700 \f  Total 700 / 700 \302\205  Total 700 / 700 \342\200\250  Total 700 / 700 \342\200\251  Total 700 / 700"')"
+student forged_compile "#error static_assert failed: $forged_lines"
+student forged_output "printf '%s\\n' '$forged_lines'; kill -SEGV \$\$"
 student fifo_report "$(tamper 'rm -f "$report"; mkfifo "$report"')"
 student symlink_report "$(tamper 'rm -f "$report"; ln -s /etc/passwd "$report"')"
 student forged_report "$(tamper "printf '%s' '${forged//\'/\'\\\'\'}' >\"\$report\"")"
@@ -199,6 +206,35 @@ says latin1_crash $'r\u00e9sultat \ufffd \\x1b[2J\\x1b]0;owned\\x07'
 says latin1_crash '\x1b[31mred'
 says latin1_compile $'#error caf\ufffd \\x1b[2J'
 says bad_members_tar $'graded caf\ufffd/labs/02_segment_triangle/segment_triangle.cpp as'
+# 1b. Student text never starts a line of its own: each line holding the forged total,
+# as any reader splits lines (Python's splitlines: CR, VT, FF, NEL, U+2028 ...), starts
+# with the quote, in the terminal, report.txt, results.json (its strings), junit.xml and
+# the class page.
+status forged_compile "does not compile"
+status forged_output failing
+python3 - "$out" "$work/grade.log" <<'PY' || fail "forged kit lines: see above"
+import json, os, sys
+out, log = sys.argv[1], sys.argv[2]
+files = [log] + [os.path.join(d, f) for d, _, fs in os.walk(out) for f in fs]
+problems, seen = [], 0
+def lines_of(text):
+    yield from text.splitlines()
+def strings(value):
+    if isinstance(value, str): return [value]
+    items = value.values() if isinstance(value, dict) else value if isinstance(value, list) else []
+    return [s for v in items for s in strings(v)]
+for path in files:
+    text = open(path, "rb").read().decode("utf-8", "replace")
+    texts = list(strings(json.loads(text))) if path.endswith(".json") else [text]
+    for t in texts:
+        for line in lines_of(t):
+            if "Total 700 / 700" in line:
+                seen += 1
+                if not line.lstrip(" ").startswith("|"): problems.append(f"{path}: an unquoted line {line!r}")
+if seen < 8: problems.append(f"the forged lines were shown {seen} times: expected in the report, results.json, the terminal")
+print("\n".join(problems[:20]) or "forged lines: all quoted")
+sys.exit(1 if problems else 0)
+PY
 # 2. Replay commands. A crash costs the call it happened on, in the judge's words, and
 # its replay command is the judge's token, quoted, never the marker printed before it;
 # a flood's printed markers name nothing.
@@ -277,7 +313,7 @@ for name, what in [("crafted_inflight", "too much output"), ("faked_inflight", "
     if not row_with(name, what): problems.append(f"the trouble list has no '{what}' row for {name}")
 if not any(r.startswith("2 | ") and "the answer is #, not #: the point is off its plane by # (tolerance #)" in r for r in page.rows):
     problems.append("the two wrong answers are not one concept of 2 submissions")
-if any("your code crashed" in r and not r.startswith("crash") and not r.startswith("latin1_crash") for r in page.rows):
+if any("your code crashed" in r and not r.startswith(("crash", "latin1_crash", "forged_output")) for r in page.rows):
     problems.append("a crash is listed among the concepts, not with the crashes")
 count = len([d for d in os.listdir(out) if os.path.isdir(os.path.join(out, d))])
 if f"<p>{count} submissions; mean" not in text: problems.append("the totals do not count every submission")

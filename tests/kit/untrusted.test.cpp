@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -92,6 +93,46 @@ TEST_CASE("terminal controls are shown, not obeyed", "[kit][untrusted]") {
 TEST_CASE("safe_text is idempotent", "[kit][untrusted]") {
   for (const std::string s : {"caf\xE9\x1b[31m\r\n\xC2\x9B\xE2\x80\xAE", "\\x1b already shown", "\xF0\x9F\x99"})
     CHECK(safe_text(safe_text(s)) == safe_text(s));
+}
+
+// Every way a reader may start a line: newline, CR, CR LF, VT, FF, the C0 separators,
+// NEL, U+2028 and U+2029 (Python's str.splitlines, which the grading tests read with).
+std::vector<std::string> reader_lines(const std::string& text) {
+  static const std::vector<std::string> breaks = {"\r\n", "\n",   "\r",       "\v",           "\f",          "\x1c",
+                                                  "\x1d", "\x1e", "\xC2\x85", "\xE2\x80\xA8", "\xE2\x80\xA9"};
+  std::vector<std::string> lines;
+  std::string line;
+  for (std::size_t i = 0; i < text.size();) {
+    bool broke = false;
+    for (const std::string& b : breaks)
+      if (text.compare(i, b.size(), b) == 0) {
+        lines.push_back(line);
+        line.clear();
+        i += b.size();
+        broke = true;
+        break;
+      }
+    if (!broke) line += text[i++];
+  }
+  lines.push_back(line);
+  return lines;
+}
+
+TEST_CASE("quoted student text: every line a reader sees starts with the quote", "[kit][untrusted]") {
+  const std::string forged = "  Total 700 / 700";
+  for (const std::string separator :
+       {"\n", "\r", "\r\n", "\v", "\f", "\x1e", "\xC2\x85", "\xE2\x80\xA8", "\xE2\x80\xA9", "\n\n"}) {
+    const std::string text = "error: static assertion failed: x" + separator + forged + separator;
+    const std::string block = runner::quoted_lines(text, "  ");
+    for (const std::string& line : reader_lines(block)) CHECK(line.rfind("  |", 0) == 0);
+    const std::string labelled = "why       " + runner::quoted_after_label(text, "          ");
+    const std::vector<std::string> lines = reader_lines(labelled);
+    CHECK(lines.front().rfind("why       error: static assertion failed", 0) == 0);
+    for (std::size_t k = 1; k < lines.size(); ++k) CHECK(lines[k].rfind("          |", 0) == 0);
+  }
+  CHECK(runner::quoted_lines("one\n\ntwo\n") == "| one\n|\n| two");
+  CHECK(runner::quoted_lines("") == "|");
+  CHECK(runner::quoted_after_label("one line", "  ") == "one line");
 }
 
 TEST_CASE("a quoted word is one word, literally, for sh", "[kit][untrusted]") {
