@@ -5,6 +5,7 @@
 #include "lab_build.h"
 #include "results.h"
 #include "sandbox.h"
+#include "seed.h"
 #include "submission.h"
 #include "terminal.h"
 #include "untrusted.h"
@@ -56,10 +57,14 @@ std::string redact(std::string text, const std::string& secret) {
 }
 
 // Everything a student controls in a grade, as it may be written and shown: never the
-// secret (even if the code under test found it), and safe text (untrusted.h). The one
-// place this happens: every result file and the terminal get a grade through it.
-void make_presentable(SubmissionGrade& g, const std::string& secret) {
-  const auto presentable = [&](std::string& text) { text = safe_text(redact(text, secret)); };
+// secret or a seed drawn from it (even if the code under test found them), and safe
+// text (untrusted.h). The one place this happens: every result file and the terminal
+// get a grade through it.
+void make_presentable(SubmissionGrade& g, const std::vector<std::string>& secrets) {
+  const auto presentable = [&](std::string& text) {
+    for (const std::string& secret : secrets) text = redact(text, secret);
+    text = safe_text(text);
+  };
   presentable(g.name);
   presentable(g.source);
   presentable(g.error);
@@ -108,9 +113,11 @@ std::string replay_line(const Lab& lab, const std::string& token) {
          (command.empty() ? "none (the case it reported is not a replay token the kit writes)" : command) + "\n";
 }
 
-StepOptions graded_step_options(const std::string& folder, const Context& c) {
+// A graded step's options; `seed` is the submission's own for the lab (seed.h), "" for
+// the public cases.
+StepOptions graded_step_options(const std::string& folder, const Context& c, const std::string& seed) {
   StepOptions options;
-  options.seed = c.options.seed;
+  options.seed = seed;
   options.cases = c.options.cases;
   options.hide_seed = true;
   options.count_all = true;
@@ -128,7 +135,8 @@ StepOptions graded_step_options(const std::string& folder, const Context& c) {
 
 // What the student reads about one step: the verdict, the counts, the first failure and
 // how to replay it with the public kit.
-std::string feedback(const StepResult& r, const Lab& lab, const Programs& programs, const Context& c) {
+std::string feedback(const StepResult& r, const Lab& lab, const Programs& programs, const Context& c,
+                     const std::string& seed) {
   std::ostringstream out;
   int cases = 0, passed = 0;
   for (const QueryResult& q : r.queries) {
@@ -147,7 +155,7 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
       out << replay_line(lab, r.inflight);  // its output faked the marker: no input to describe
     } else if (!r.inflight.empty()) {
       // Describing runs no code under test; it keeps the graded limits all the same.
-      StepOptions describe = graded_step_options(fs::path(programs.answerer).parent_path().string(), c);
+      StepOptions describe = graded_step_options(fs::path(programs.answerer).parent_path().string(), c, seed);
       describe.replay = r.inflight;
       describe.describe_only = true;
       describe.count_all = false;
@@ -233,6 +241,7 @@ struct Graded {
   Submission sub;
   SubmissionGrade grade;
   std::vector<std::string> folders;  // per lab: where its steps run
+  std::vector<std::string> seeds;    // per lab: its cases' seed, from the secret and its files (seed.h)
   std::mutex mutex;                  // grade, open
   std::mutex writing;                // its results.json, written as its tasks end
   int open = 0;                      // its tasks queued or running
@@ -300,6 +309,7 @@ class Grader {
       fs::create_directories(g.work);
       fs::permissions(g.work, fs::perms(0711));
       g.sub = read_submission(g.path, c_.labs, g.work, c_.sandbox);
+      g.seeds.assign(c_.labs.size(), "");
       for (const Lab* lab : c_.labs) {
         g.folders.push_back(g.work + "/lab" + lab->id);
         fs::create_directories(g.folders.back());
@@ -332,7 +342,7 @@ class Grader {
   void build(std::size_t i, std::size_t l) {
     Graded& g = *all_[i];
     const Lab& lab = *c_.labs[l];
-    std::map<std::string, std::string> files;
+    std::map<std::string, std::string> files, contents;
     std::string missing, key = lab.id;
     for (const std::string& f : lab.student_files) {
       const auto found = g.sub.files.find(f);
@@ -341,7 +351,7 @@ class Grader {
         continue;
       }
       files[f] = found->second;
-      const std::string text = labkit::read_file(found->second);
+      const std::string text = contents[f] = labkit::read_file(found->second);
       key += '\0' + f + '\0' + std::to_string(text.size()) + '\0' + text;
     }
     if (!missing.empty()) {
@@ -349,6 +359,12 @@ class Grader {
       const std::string why = "The submission has no " + missing + ".";
       close_lab(g.grade.labs[l], LabGrade::State::missing, why, "not graded: " + why);
       return;
+    }
+    // Its own cases: another file (a resubmission) draws others, the same files the same.
+    if (!c_.options.seed.empty()) {
+      const std::string seed = submission_seed(c_.options.seed, lab.id, contents);
+      std::lock_guard<std::mutex> lock(g.mutex);
+      g.seeds[l] = seed;
     }
     std::shared_ptr<BuildCache::Entry> entry;
     std::string folder;
@@ -415,7 +431,7 @@ class Grader {
     const Programs programs{c_.paths.build + "/" + lab.judge_binary(), binary};
     StepResult r;
     try {
-      r = run_step(programs, lab, step, graded_step_options(g.folders[l], c_));
+      r = run_step(programs, lab, step, graded_step_options(g.folders[l], c_, g.seeds[l]));
     } catch (const std::exception& e) {
       r.step = &step;
       r.status = Status::crashed;
@@ -429,7 +445,7 @@ class Grader {
     s.score = step_score(step, r);
     s.ambiguous = r.ambiguous;
     for (const QueryResult& q : r.queries) s.cases += q.cases;
-    s.feedback = feedback(r, lab, programs, c_);
+    s.feedback = feedback(r, lab, programs, c_, g.seeds[l]);
     s.why = first_why(r);
     std::lock_guard<std::mutex> lock(g.mutex);
     g.grade.labs[l].steps[k] = s;
@@ -455,6 +471,15 @@ class Grader {
   WorkQueue queue_;
   BuildCache cache_;
 };
+
+// What no output may show of a submission: the secret and the seeds drawn from it.
+std::vector<std::string> secrets_of(Graded& g, const std::string& secret) {
+  std::vector<std::string> all = {secret};
+  std::lock_guard<std::mutex> lock(g.mutex);
+  for (const std::string& seed : g.seeds)
+    if (!seed.empty()) all.push_back(seed);
+  return all;
+}
 
 // The class's own files in OUT, beside a folder per submission.
 const std::vector<std::string> kClassFiles = class_files();
@@ -556,6 +581,11 @@ int grade(const Paths& paths, const GradeOptions& options) {
   for (const std::string& line : found.classes) std::cerr << "labkit grade: " << line << "\n";
   for (const Lab* lab : c.labs) c.recipes[lab] = load_recipe(paths, *lab);
   c.run.seed_kind = options.seed.empty() ? "public" : "secret";
+  if (!options.seed.empty()) {
+    c.run.regrade = "./labkit grade <this submission> --seed <your secret>";
+    if (options.cases != kGradingCases) c.run.regrade += " --cases " + std::to_string(options.cases);
+    if (options.timeout != 60) c.run.regrade += " --timeout " + points(options.timeout);
+  }
   c.run.cases = options.cases;
   c.run.sandbox = c.sandbox.description();
   fit_envelope(c, own_envelope());
@@ -590,7 +620,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
   std::atomic<bool> trouble{false};  // the grader's own: results it could not write
   const auto start = std::chrono::steady_clock::now();
   Grader grader(c, all, [&](Graded& g) {
-    make_presentable(g.grade, options.seed);
+    make_presentable(g.grade, secrets_of(g, options.seed));
     std::string unwritten;
     try {
       write_results(g.grade, folder_of(g), c);
@@ -606,7 +636,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
   grader.progress = [&](Graded& g) {
     std::lock_guard<std::mutex> lock(g.writing);
     SubmissionGrade now = Grader::so_far(g);
-    make_presentable(now, options.seed);
+    make_presentable(now, secrets_of(g, options.seed));
     try {
       write_file(folder_of(g) / "results.json", gradescope_results(now, c.run).dump(2) + "\n");
     } catch (const std::exception&) {  // said once, when the final write fails too

@@ -42,6 +42,12 @@ std::string build_text(const LabGrade& l, const std::string& indent) {
   return indent + term::indent(l.build_output, indent);
 }
 
+// Where the cases come from, never the seed itself.
+std::string seed_text(const GradingRun& run) {
+  if (run.seed_kind == "secret") return "secret, its own cases for each submission (from the secret and its files)";
+  return run.seed_kind;
+}
+
 std::string seconds_text(double s) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3f", s);
@@ -85,8 +91,10 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
   using term::pad;
   std::ostringstream out;
   out << "Submission " << safe_line(s.name) << "   (" << safe_line(s.source) << ")\n";
-  out << "  seed: " << run.seed_kind << ", " << (run.cases ? std::to_string(run.cases) : std::string("the default"))
+  out << "  seed: " << seed_text(run) << ", " << (run.cases ? std::to_string(run.cases) : std::string("the default"))
       << " random cases per query; sandbox: " << run.sandbox << "\n";
+  if (!run.regrade.empty())
+    out << "  regrade: " << run.regrade << "   (the same files and secret draw the same cases)\n";
   if (!run.limits.empty()) out << "  limits: " << run.limits << "\n";
   if (!s.error.empty()) out << "  could not be read: " << quoted_after_label(s.error, "    ") << "\n";
   for (const std::string& note : s.notes) out << "  note: " << safe_line(note) << "\n";
@@ -143,6 +151,8 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
   if (!s.error.empty())
     summary = "The submission could not be read: " + quoted_after_label(s.error, "  ") + "\n" + summary;
   for (const std::string& note : s.notes) summary += "Note: " + safe_line(note) + "\n";
+  if (!run.regrade.empty())
+    summary += "Cases: this submission's own, drawn from the secret seed and its files; regrade: " + run.regrade + "\n";
   nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}, {"limits", run.limits}};
   if (run.cases > 0) extra["cases_per_query"] = run.cases;
   return {{"score", s.score},

@@ -64,6 +64,12 @@ def query(name, passed, failure=None):
 def failure(title, input, got, why, replay):
     return {"title": title, "input": input, "expected": "yes", "got": got, "why": why, "replay": replay, "shrinks": 0}
 
+# The seed the grader gave this step, read (and deleted) as the harness does; logged
+# beside this judge with the first line the answerer printed, for the seed checks.
+seed = ""
+if os.environ.get("LABKIT_SEED_FILE"):
+    seed = open(os.environ["LABKIT_SEED_FILE"]).read()
+    os.remove(os.environ["LABKIT_SEED_FILE"])
 if os.environ.get("LABKIT_DESCRIBE"):
     write([query("q", 0, failure("described", "the described input", "", "", os.environ.get("LABKIT_REPLAY", "")))])
     sys.exit(0)
@@ -81,6 +87,9 @@ for chunk in iter(lambda: answerer.stdout.read1(65536), b""):
     tail = (tail + chunk)[-600:]
 ended = answerer.wait()
 printed = tail.decode("utf-8", "replace")
+if printed.startswith("ID "):
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "seeds.log"), "a") as log:
+        log.write(seed + "\t" + printed.split("\n")[0][3:] + "\n")
 if ended == 0 and "WRONG " in printed:  # a wrong answer, with the number the code printed
     x = printed.split("WRONG ")[1].split()[0]
     write([query("segment_plane", 0, failure("random case", "in", x,
@@ -138,6 +147,10 @@ student latin1_compile "$(printf '#error caf\351 \033[2J\033]0;owned\007 \303\25
 forged_lines="$(printf '"\n  Total 700 / 700\n \r  Total 700 / 700 \r\n  Total 700 / 700 \v  Total 700 / 700 \f  Total 700 / 700 \302\205  Total 700 / 700 \342\200\250  Total 700 / 700 \342\200\251  Total 700 / 700"')"
 student forged_compile "#error static_assert failed: $forged_lines"
 student forged_output "printf '%s\\n' '$forged_lines'; kill -SEGV \$\$"
+# Their own cases: two submissions under one secret draw different seeds (each
+# prints who it is, and the stand-in judge logs the seed it was given).
+student seed_a 'echo "ID seed_a"'
+student seed_b 'echo "ID seed_b"'
 student fifo_report "$(tamper 'rm -f "$report"; mkfifo "$report"')"
 student symlink_report "$(tamper 'rm -f "$report"; ln -s /etc/passwd "$report"')"
 student forged_report "$(tamper "printf '%s' '${forged//\'/\'\\\'\'}' >\"\$report\"")"
@@ -403,6 +416,34 @@ done
 python3 -c 'import sys, xml.etree.ElementTree as T
 for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml "$broken_out"/junit.xml || fail "a junit.xml is not well-formed XML"
 if grep -rqF "$secret" "$out" "$work/grade.log" "$broken_out" "$work/broken.log"; then fail "the secret seed appears in the results"; fi
+
+# ---- each submission its own cases, never shown ----------------------------------------
+# seeds_of NAME: the distinct seeds the judge was given for NAME's steps.
+seeds_of() { awk -F'\t' -v n="$1" '$2 == n { print $1 }' "$build/seeds.log" | sort -u; }
+seed_a=$(seeds_of seed_a)
+seed_b=$(seeds_of seed_b)
+[ -n "$seed_a" ] && [ "$(wc -l <<<"$seed_a")" = 1 ] || fail "seed_a: its steps were given the seeds '$seed_a', expected one"
+[ -n "$seed_b" ] && [ "$seed_a" != "$seed_b" ] || fail "two submissions under one secret drew the same seed ($seed_a)"
+# The same files again (a regrade, alone this time) draw the same seed; a changed file
+# (a resubmission that special-cases a shown input) draws another.
+cp -r "$subs/seed_a" "$work/seed_a_again"
+grade "$build" "$work/seed_a_again" --out "$work/seed_again" >"$work/seed_again.log" 2>&1 || fail "the regrade of seed_a failed"
+[ "$(seeds_of seed_a)" = "$seed_a" ] || fail "the same submission drew another seed on a regrade: $(seeds_of seed_a | paste -sd ' ')"
+mkdir -p "$work/seed_a_changed/$(dirname $lab02)" && printf 'echo "ID seed_a_changed"\n' >"$work/seed_a_changed/$lab02"
+grade "$build" "$work/seed_a_changed" --out "$work/seed_changed" >"$work/seed_changed.log" 2>&1 || fail "the resubmission failed"
+seed_c=$(seeds_of seed_a_changed)
+[ -n "$seed_c" ] && [ "$seed_c" != "$seed_a" ] || fail "a changed file drew the same seed ($seed_c)"
+# No output holds the secret or a seed drawn from it; the report says how to regrade.
+mapfile -t drawn < <(printf '%s\n' "$seed_a" "$seed_b" "$seed_c" "$secret")
+for seed in "${drawn[@]}"; do
+  [ -n "$seed" ] || continue
+  if grep -rqF -- "$seed" "$out" "$work/grade.log" "$work/seed_again" "$work/seed_again.log" "$work/seed_changed" \
+    "$work/seed_changed.log"; then fail "an output shows the secret or a seed drawn from it ($seed)"; fi
+done
+grep -qF "regrade: ./labkit grade <this submission> --seed <your secret>" "$work/seed_again/report.txt" ||
+  fail "report.txt does not say how to regrade"
+grep -qF "regrade: ./labkit grade <this submission> --seed <your secret>" "$work/seed_again/results.json" ||
+  fail "results.json does not say how to regrade"
 
 # ---- 4. names that cannot be told apart: nothing is graded --------------------------
 # refused NAME WHAT...: grading the class folder NAME exits 2 at once, writes nothing,
