@@ -15,6 +15,7 @@ std::string lab_state(const LabGrade& l) {
     case LabGrade::State::missing: return "not submitted";
     case LabGrade::State::not_built: return "does not compile";
     case LabGrade::State::pending: return "not graded yet";
+    case LabGrade::State::out_of_time: return "not graded: no time";
     case LabGrade::State::graded: break;
   }
   return "";
@@ -96,6 +97,9 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
   if (!run.regrade.empty())
     out << "  regrade: " << run.regrade << "   (the same files and secret draw the same cases)\n";
   if (!run.limits.empty()) out << "  limits: " << run.limits << "\n";
+  if (s.budget > 0)
+    out << "  time budget: " << points(s.budget_used) << " s of " << points(s.budget) << " s used"
+        << (s.budget_note.empty() ? "" : "; " + s.budget_note) << "\n";
   if (!s.error.empty()) out << "  could not be read: " << quoted_after_label(s.error, "    ") << "\n";
   for (const std::string& note : s.notes) out << "  note: " << safe_line(note) << "\n";
   for (const LabGrade& l : s.labs) {
@@ -151,6 +155,7 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
   if (!s.error.empty())
     summary = "The submission could not be read: " + quoted_after_label(s.error, "  ") + "\n" + summary;
   for (const std::string& note : s.notes) summary += "Note: " + safe_line(note) + "\n";
+  if (!s.budget_note.empty()) summary += "Time: " + s.budget_note + "\n";
   if (!run.regrade.empty())
     summary += "Cases: this submission's own, drawn from the secret seed and its files; regrade: " + run.regrade + "\n";
   nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}, {"limits", run.limits}};

@@ -28,6 +28,7 @@ enum class Status {
   exited_early,  // exit() or _exit() inside a test: the session never finished
   no_tests,      // the binary has no test for this step: a kit bug, never the student's
   not_built,     // the lab did not compile
+  out_of_time,   // graded runs: the submission's time budget ran out before or during the step
 };
 
 std::string status_word(Status s);

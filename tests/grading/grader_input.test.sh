@@ -445,6 +445,40 @@ grep -qF "regrade: ./labkit grade <this submission> --seed <your secret>" "$work
 grep -qF "regrade: ./labkit grade <this submission> --seed <your secret>" "$work/seed_again/results.json" ||
   fail "results.json does not say how to regrade"
 
+# ---- a submission's time budget: its compiles and steps together ----------------------
+# Every step of this one sleeps 3 s in the code under test, well inside its own limit
+# (20 s): with a budget of 8 s and one worker, the first steps run, the rest are not
+# graded and say why, the report names what used the time, and the grader's own wall
+# clock stays near the budget, not near 8 steps x 3 s.
+mkdir -p "$work/sleeper/$(dirname $lab02)" && echo 'sleep 3' >"$work/sleeper/$lab02"
+started=$(date +%s.%N)
+LABKIT_BUILD_DIR="$build" timeout 300 "$runner" grade "$work/sleeper" --out "$work/sleeper_out" --seed "$secret" \
+  --labs 02 --jobs 1 --timeout 20 --budget 8 --sandbox "$sandbox" >"$work/sleeper.log" 2>&1 || fail "grading the sleeper failed"
+took=$(echo "$(date +%s.%N) - $started" | bc)
+python3 - "$work/sleeper_out" "$took" <<'PY' || { cat "$work/sleeper.log"; fail "the time budget: see above"; }
+import json, re, sys
+out, took = sys.argv[1], float(sys.argv[2])
+rows = [line.split("\t") for line in open(f"{out}/steps.tsv").read().splitlines()[1:]]
+states = [r[3] for r in rows]
+report = open(f"{out}/report.txt").read()
+results = json.load(open(f"{out}/results.json"))
+problems = []
+if states[0] != "passed": problems.append(f"step 1 is '{states[0]}': the budget had room for it")
+if "not graded: no time" not in states: problems.append(f"no step ran out of time: {states}")
+first = states.index("not graded: no time") if "not graded: no time" in states else len(states)
+if any(s != "not graded: no time" for s in states[first:]): problems.append(f"a step ran after the budget ran out: {states}")
+used = re.search(r"time budget: ([0-9.]+) s of 8 s used; the submission's time budget ran out", report)
+if not used: problems.append("report.txt does not say the budget ran out")
+elif float(used.group(1)) > 8.5: problems.append(f"its processes took {used.group(1)} s of an 8 s budget")  # a stopped process ends a moment after its limit
+if not re.search(r"what used it, the slowest first: lab 02 [0-9.]+ s \(step [0-9] 3\.[0-9]* s", report):
+    problems.append("report.txt does not name the slowest steps and their seconds")
+if "not graded: the submission's time budget ran out" not in report: problems.append("no step says it was not graded")
+if "Time: the submission's time budget ran out" not in results["output"]: problems.append("results.json does not say so")
+if took > 8 + 10: problems.append(f"grading took {took:.1f} s for an 8 s budget")
+print("\n".join(problems) or f"time budget: fine ({states.count('passed')} steps in {took:.1f} s)")
+sys.exit(1 if problems else 0)
+PY
+
 # ---- 4. names that cannot be told apart: nothing is graded --------------------------
 # refused NAME WHAT...: grading the class folder NAME exits 2 at once, writes nothing,
 # and its message names each WHAT.
