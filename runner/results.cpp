@@ -223,8 +223,12 @@ std::string steps_tsv(const SubmissionGrade& s) {
 
 std::string class_csv(const std::vector<SubmissionGrade>& all) {
   if (all.empty()) return "submission,total,max\n";
-  const auto csv_field = [](const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  // RFC 4180, and never a formula: a spreadsheet evaluates a cell that starts with = + -
+  // @, a tab or a CR ("-2-2" is -4, "=HYPERLINK(...)" a link), so such a cell starts with
+  // an apostrophe, which spreadsheets show as text and do not display.
+  const auto csv_field = [](std::string text) {
+    if (!text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos) text = "'" + text;
+    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
     std::string quoted = "\"";
     for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
     return quoted + "\"";

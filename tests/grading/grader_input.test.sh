@@ -154,6 +154,9 @@ student seed_b 'echo "ID seed_b"'
 student fifo_report "$(tamper 'rm -f "$report"; mkfifo "$report"')"
 student symlink_report "$(tamper 'rm -f "$report"; ln -s /etc/passwd "$report"')"
 student forged_report "$(tamper "printf '%s' '${forged//\'/\'\\\'\'}' >\"\$report\"")"
+# Names a spreadsheet would take for formulas ("-2-2" is -4), and one with a comma and a
+# quote: class.csv shows each as text, one cell.
+for name in -2-2 '=1+1' '+1' '@SUM(A1)' 'doe, "jo"'; do student "$name" ': nothing to add'; done
 # A student's folder that is merely named labs: its file at its top, uploaded alone.
 mkdir -p "$subs/labs" && echo ': the student called labs' >"$subs/labs/segment_triangle.cpp"
 
@@ -273,6 +276,19 @@ says bad_members_tar "labs/05_sphere_sweeps/sphere_sweeps.cpp is not a regular f
 [ -e /tmp/escaped ] && { fail "a member with .. was unpacked"; rm -f /tmp/escaped; }
 # 4. Each student their own folder: the one called labs too.
 [ "$(wc -l <"$out/class.csv")" = "$(($(ls "$subs" | wc -l) + 1))" ] || fail "class.csv: one row per submission"
+# No cell of class.csv is a formula: a name that starts like one starts with an apostrophe.
+python3 - "$out/class.csv" <<'PY' || fail "class.csv: see above"
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1], newline="", encoding="utf-8")))
+names = [r[0] for r in rows[1:]]
+problems = [f"a formula cell: {c!r}" for r in rows for c in r if c[:1] in ("=", "+", "-", "@", "\t", "\r")]
+# Names are folder names with every byte but letters, digits, '.', '_' and '-' made '_'
+# (submission_name): '-' is the one formula start left.
+if "'-2-2" not in names: problems.append(f"-2-2 is not shown as text ('-2-2): {names}")
+if any(len(r) != len(rows[0]) for r in rows): problems.append("a row has another number of cells than the header")
+print("\n".join(problems) or "class.csv: fine")
+sys.exit(1 if problems else 0)
+PY
 
 # ---- the class page: where the class stands, in a browser from the folder -------------
 # It parses as HTML with each section; every link stays in the results folder and finds
