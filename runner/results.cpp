@@ -2,6 +2,7 @@
 #include "terminal.h"
 #include "untrusted.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -49,6 +50,31 @@ std::string seed_text(const GradingRun& run) {
   return run.seed_kind;
 }
 
+// Titles longer than this are cut in the table.
+constexpr std::size_t kLongestTitle = 72;
+
+// Columns of text on a terminal: one per character (UTF-8 continuation bytes add none).
+std::size_t columns(const std::string& text) {
+  std::size_t n = 0;
+  for (const unsigned char c : text) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
+// A cell of the table, `width` columns: the text and at least two spaces, or the text cut
+// with "…" to leave them, so that no cell ever touches the next.
+std::string cell(const std::string& text, std::size_t width) {
+  if (columns(text) + 2 <= width) return term::pad(text, width);
+  if (width < 3) return text + "  ";
+  std::string cut;
+  std::size_t n = 0;
+  for (const char c : text) {
+    const bool starts = (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    if (starts && n++ == width - 3) break;
+    cut += c;
+  }
+  return term::pad(cut + "\xE2\x80\xA6", width);  // U+2026 HORIZONTAL ELLIPSIS
+}
+
 std::string seconds_text(double s) {
   char buffer[32];
   std::snprintf(buffer, sizeof buffer, "%.3f", s);
@@ -89,7 +115,6 @@ std::string points(double x) {
 }
 
 std::string table(const SubmissionGrade& s, const GradingRun& run) {
-  using term::pad;
   std::ostringstream out;
   out << "Submission " << safe_line(s.name) << "   (" << safe_line(s.source) << ")\n";
   out << "  seed: " << seed_text(run) << ", " << (run.cases ? std::to_string(run.cases) : std::string("the default"))
@@ -102,18 +127,39 @@ std::string table(const SubmissionGrade& s, const GradingRun& run) {
         << (s.budget_note.empty() ? "" : "; " + s.budget_note) << "\n";
   if (!s.error.empty()) out << "  could not be read: " << quoted_after_label(s.error, "    ") << "\n";
   for (const std::string& note : s.notes) out << "  note: " << safe_line(note) << "\n";
+  // The columns: each as wide as its widest cell and two spaces, titles cut with "…" past
+  // kLongestTitle, so that no cell ever runs into the next.
+  const auto build_cell = [](const LabGrade& l) {
+    return l.state == LabGrade::State::graded ? "built in " + seconds_text(l.build_seconds) + " s" : lab_state(l);
+  };
+  const auto points_cell = [](double score, double max) { return points(score) + " / " + points(max); };
+  std::size_t title = 0, heading = 0, state = 0, score = points_cell(s.score, s.max_score).size();
   for (const LabGrade& l : s.labs) {
-    out << "\n  " << pad(lab_heading(l), 56)
-        << pad(l.state == LabGrade::State::graded ? "built in " + seconds_text(l.build_seconds) + " s" : lab_state(l),
-               20)
-        << points(l.score) << " / " << points(l.max_score) << "\n";
-    for (const StepGrade& g : l.steps)
-      out << "    " << pad(std::to_string(g.step->number), 3) << pad(g.step->tag, 7) << pad(g.step->title, 44)
-          << pad(step_state(l, g), 20) << pad(points(g.score) + " / " + points(g.step->points), 10)
-          << (l.state == LabGrade::State::graded && g.graded ? seconds_text(g.seconds) + " s" : "") << "\n";
+    heading = std::max(heading, std::min(kLongestTitle, columns(lab_heading(l))));
+    state = std::max(state, columns(build_cell(l)));
+    score = std::max(score, points_cell(l.score, l.max_score).size());
+    for (const StepGrade& g : l.steps) {
+      title = std::max(title, std::min(kLongestTitle, columns(g.step->title)));
+      state = std::max(state, columns(step_state(l, g)));
+      score = std::max(score, points_cell(g.score, g.step->points).size());
+    }
   }
-  out << "\n  " << pad("Total", 76) << points(s.score) << " / " << points(s.max_score) << "   ("
-      << seconds_text(s.seconds) << " s)\n";
+  // A step's line is indented 2 more than its lab's, and starts with its number and tag.
+  const std::size_t left = std::max(heading + 2, 2 + 4 + 8 + title + 2);
+  state += 2;
+  score += 2;
+  for (const LabGrade& l : s.labs) {
+    out << "\n  " << cell(lab_heading(l), left) << cell(build_cell(l), state) << points_cell(l.score, l.max_score)
+        << "\n";
+    for (const StepGrade& g : l.steps) {
+      const bool ran = l.state == LabGrade::State::graded && g.graded && g.seconds > 0;
+      out << "    " << cell(std::to_string(g.step->number), 4) << cell(g.step->tag, 8) << cell(g.step->title, left - 14)
+          << cell(step_state(l, g), state) << (ran ? cell(points_cell(g.score, g.step->points), score) : "")
+          << (ran ? seconds_text(g.seconds) + " s" : points_cell(g.score, g.step->points)) << "\n";
+    }
+  }
+  out << "\n  " << cell("Total", left + state) << points_cell(s.score, s.max_score) << "   (" << seconds_text(s.seconds)
+      << " s)\n";
   for (const LabGrade& l : s.labs) {
     if (l.state != LabGrade::State::graded)
       out << "\n" << lab_heading(l) << ": " << lab_state(l) << "\n" << build_text(l, "  ") << "\n";

@@ -495,6 +495,52 @@ print("\n".join(problems) or f"time budget: fine ({states.count('passed')} steps
 sys.exit(1 if problems else 0)
 PY
 
+# ---- report.txt's columns never touch ------------------------------------------------
+# Lab 03's title is long, and a partial score ("11.86 / 15") is as wide as its column
+# once was: every row of the table still splits, on two spaces or more, into its cells.
+columns_build="$work/columns_build"
+stand_in_kit "$columns_build"
+cat >"$columns_build/test_02_segment_triangle" <<'EOF2'
+#!/usr/bin/env python3
+import json, os
+failure = {"title": "random case 7 of 1000", "input": "in", "expected": "yes", "got": "no", "why": "w", "replay": "q:1",
+           "shrinks": 0}
+query = {"test_case": "t", "query": "q", "kind": "random", "cases": 1000, "passed": 791, "ambiguous": 0, "failed": 209,
+         "not_implemented": "", "error": "", "failure": failure}
+with open(os.environ["LABKIT_REPORT"], "w") as f:
+    json.dump({"seed": "hidden", "cases_per_query": 1000, "finished": True, "queries": [query],
+               "test_cases": [{"name": "t", "tags": [], "passed": False, "ended": True, "failures": [],
+                               "not_implemented": ""}]}, f)
+EOF2
+chmod 755 "$columns_build/test_02_segment_triangle"
+cp "$columns_build/test_02_segment_triangle" "$columns_build/test_03_separating_axes"
+mkdir -p "$work/columns/labs/03_separating_axes" "$work/columns/$(dirname $lab02)"
+echo ': x' >"$work/columns/$lab02" && echo ': x' >"$work/columns/labs/03_separating_axes/separating_axes.cpp"
+LABKIT_BUILD_DIR="$columns_build" timeout 300 "$runner" grade "$work/columns" --out "$work/columns_out" --seed "$secret" \
+  --labs 02 03 --jobs 2 --timeout 20 --sandbox "$sandbox" >"$work/columns.log" 2>&1 || fail "grading the columns failed"
+python3 - "$work/columns_out/report.txt" <<'PY' || fail "report.txt's columns: see above"
+import re, sys
+problems, rows = [], 0
+for line in open(sys.argv[1], encoding="utf-8").read().split("\n"):
+    cells = re.split(r" {2,}", line.strip())
+    if re.match(r"  Lab \d\d  ", line):
+        rows += 1
+        if len(cells) != 4 or not re.fullmatch(r"\d+(\.\d+)? / \d+", cells[3]): problems.append(f"lab row {cells}")
+    elif re.match(r"    \d+ +L\d\dS\d", line):
+        rows += 1
+        if len(cells) != 6 or not re.fullmatch(r"\d+(\.\d+)? / \d+", cells[4]) or not re.fullmatch(r"\d+\.\d{3} s", cells[5]):
+            problems.append(f"step row {cells}")
+    elif line.startswith("  Total"):
+        rows += 1
+        if len(cells) != 3 or not re.fullmatch(r"\d+(\.\d+)? / \d+", cells[1]): problems.append(f"total row {cells}")
+text = open(sys.argv[1], encoding="utf-8").read()
+if "Lab 03  Separating axes: oriented boxes, triangle pairs, moving boxes  " not in text: problems.append("lab 03's title is cut")
+if "11.86 / 15  " not in text: problems.append("no partial score of 11.86 / 15")
+if rows < 17: problems.append(f"{rows} table rows, expected 2 labs, 14 steps and the total")
+print("\n".join(problems) or "report columns: fine")
+sys.exit(1 if problems else 0)
+PY
+
 # ---- 4. names that cannot be told apart: nothing is graded --------------------------
 # refused NAME WHAT...: grading the class folder NAME exits 2 at once, writes nothing,
 # and its message names each WHAT.
