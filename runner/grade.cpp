@@ -584,15 +584,15 @@ class Grader {
     s.score = step_score(step, r);
     s.ambiguous = r.ambiguous;
     for (const QueryResult& q : r.queries) s.cases += q.cases;
-    s.feedback = feedback(r, lab, programs, c_, g.seeds[l], g.budget);
-    s.why = first_why(r);
     if (r.status == Status::timed_out && limit < c_.options.timeout) {  // the budget's limit, not the step's
       g.budget.ran_out();
       s.status = Status::out_of_time;
       s.feedback = "not graded: the submission's time budget ran out during this step (it had " + points(limit) +
                    " s left of its own " + points(c_.options.timeout) +
                    " s; the report's time budget line says what used it)";
-      s.why.clear();
+    } else {
+      s.feedback = feedback(r, lab, programs, c_, g.seeds[l], g.budget);
+      s.why = first_why(r);
     }
     std::lock_guard<std::mutex> lock(g.mutex);
     g.grade.labs[l].steps[k] = s;
@@ -780,7 +780,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
       trouble = true;
     }
     std::lock_guard<std::mutex> lock(print);
-    if (!unwritten.empty()) std::cerr << "labkit grade: " << safe_text(unwritten) << "\n";
+    if (!unwritten.empty()) std::cerr << "labkit grade: " << safe_line(unwritten) << "\n";
     std::cout << (single ? "" : "\n") << table(g.grade, c.run) << std::flush;
   });
   // results.json as each step ends: a time-out of the whole run keeps every finished step.
