@@ -30,14 +30,15 @@ owned="$work/owned"  # what a crafted replay command would create if it were eve
 # ending well answers every call right.
 #
 # stand_in_kit BUILD: how the kit in BUILD compiles a lab's file (a copy; a first line
-# "#error ..." fails, with the file as the errors) and links it into an answerer (the
-# answerer's head with the file appended, at the path the runner asks with -o).
+# "#error ..." fails, with the file as the errors; a first line "#slow" takes 3 s) and
+# links it into an answerer (the answerer's head with the file appended, at the path the
+# runner asks with -o).
 stand_in_kit() {
   local build="$1"
   mkdir -p "$build"
   echo '#!/bin/sh' >"$build/answerer.sh"
   stand_in_build "$kit" "$build" "$build/answerer.sh" \
-    'if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; cp $0 $2' \
+    'if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; if head -n 1 $0 | grep -q ^#slow; then sleep 3; fi; cp $0 $2' \
     'cat $1 $4 >$3 && chmod 755 $3'
 }
 build="$work/build"
@@ -462,11 +463,11 @@ grep -qF "regrade: ./labkit grade <this submission> --seed <your secret>" "$work
   fail "results.json does not say how to regrade"
 
 # ---- a submission's time budget: its compiles and steps together ----------------------
-# Every step of this one sleeps 3 s in the code under test, well inside its own limit
-# (20 s): with a budget of 8 s and one worker, the first steps run, the rest are not
-# graded and say why, the report names what used the time, and the grader's own wall
-# clock stays near the budget, not near 8 steps x 3 s.
-mkdir -p "$work/sleeper/$(dirname $lab02)" && echo 'sleep 3' >"$work/sleeper/$lab02"
+# This one compiles in 3 s, and every step of it sleeps 3 s in the code under test, well
+# inside its own limit (20 s): with a budget of 8 s and one worker, the compile counts,
+# the first step runs, the rest are not graded and say why, the report names what used
+# the time, and the grader's own wall clock stays near the budget, not near 3 + 8 x 3 s.
+mkdir -p "$work/sleeper/$(dirname $lab02)" && printf '#slow\nsleep 3\n' >"$work/sleeper/$lab02"
 started=$(date +%s.%N)
 LABKIT_BUILD_DIR="$build" timeout 300 "$runner" grade "$work/sleeper" --out "$work/sleeper_out" --seed "$secret" \
   --labs 02 --jobs 1 --timeout 20 --budget 8 --sandbox "$sandbox" >"$work/sleeper.log" 2>&1 || fail "grading the sleeper failed"
@@ -486,8 +487,8 @@ if any(s != "not graded: no time" for s in states[first:]): problems.append(f"a 
 used = re.search(r"time budget: ([0-9.]+) s of 8 s used; the submission's time budget ran out", report)
 if not used: problems.append("report.txt does not say the budget ran out")
 elif float(used.group(1)) > 8.5: problems.append(f"its processes took {used.group(1)} s of an 8 s budget")  # a stopped process ends a moment after its limit
-if not re.search(r"what used it, the slowest first: lab 02 [0-9.]+ s \(step [0-9] 3\.[0-9]* s", report):
-    problems.append("report.txt does not name the slowest steps and their seconds")
+if not re.search(r"what used it, the slowest first: lab 02 [0-9.]+ s \((step [0-9]|build) 3\.[0-9]* s, (step [0-9]|build) 3\.", report):
+    problems.append("report.txt does not name the slowest steps and the compile, with their seconds")
 if "not graded: the submission's time budget ran out" not in report: problems.append("no step says it was not graded")
 if "Time: the submission's time budget ran out" not in results["output"]: problems.append("results.json does not say so")
 if took > 8 + 10: problems.append(f"grading took {took:.1f} s for an 8 s budget")
