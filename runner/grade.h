@@ -3,7 +3,8 @@
 // Each submission's labs are built on their own from the student's files alone (a
 // compile error costs that lab), each step runs in its own confined process under
 // limits (a crash, a time-out, running out of memory, a flood of output or an early
-// exit() costs that step), on cases drawn from a secret seed. Points come from
+// exit() costs that step), on cases of its own drawn from a secret seed and its files
+// (seed.h), within a time budget for all its compiles and steps. Points come from
 // grading/manifest.json; a step marked "partial" earns its points in proportion to the
 // cases it passes (ambiguous cases count as passed).
 //
