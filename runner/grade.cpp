@@ -736,6 +736,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
     c.run.regrade = "./labkit grade <this submission> --seed <your secret>";
     if (options.cases != kGradingCases) c.run.regrade += " --cases " + std::to_string(options.cases);
     if (options.timeout != 60) c.run.regrade += " --timeout " + points(options.timeout);
+    if (options.budget != kGradingBudget) c.run.regrade += " --budget " + points(options.budget);
   }
   c.run.cases = options.cases;
   c.run.sandbox = c.sandbox.description();
