@@ -2,8 +2,10 @@
 # What students and Gradescope get, and nothing more (run through ./labkit):
 #
 #   release OUT_DIR                            the students' repository
-#   package gradescope [--out FILE] [--seed S] the autograder zip: the release, plus
+#   package gradescope [--out FILE] [--seed S] [--budget SECONDS]
+#                                              the autograder zip: the release, plus
 #                                              setup.sh, run_autograder and secret_seed
+#                                              (and grading_budget, with --budget)
 #
 # The release is a list of what to take, not of what to leave out, so that a file added
 # to the kit later never reaches students by default. It never holds solutions/, the
@@ -64,14 +66,18 @@ case "$command" in
     make_release "$1"
     ;;
   package)
-    [ "${1:-}" = gradescope ] || { say "usage: ./labkit package gradescope [--out FILE] [--seed S]"; exit 2; }
+    [ "${1:-}" = gradescope ] || { say "usage: ./labkit package gradescope [--out FILE] [--seed S] [--budget SECONDS]"; exit 2; }
     shift
     zip_file="${LABKIT_BUILD_DIR:-$ROOT/build}/gradescope-autograder.zip"
     seed="${LABKIT_GRADING_SEED:-}"
+    budget=""
     while [ $# -gt 0 ]; do
       case "$1" in
         --out) zip_file="$2"; shift 2 ;;
         --seed) seed="$2"; shift 2 ;;
+        --budget)
+          [[ "${2:-}" =~ ^[0-9]+([.][0-9]+)?$ ]] || { say "--budget takes seconds, e.g. --budget 480"; exit 2; }
+          budget="$2"; shift 2 ;;
         *) say "unknown option '$1'"; exit 2 ;;
       esac
     done
@@ -85,6 +91,8 @@ case "$command" in
     make_release "$staging/source" 2>/dev/null
     cp -p "$ROOT"/grading/gradescope/setup.sh "$ROOT"/grading/gradescope/run_autograder "$staging/source/"
     (umask 077 && printf '%s' "$seed" >"$staging/source/secret_seed")
+    # A submission's time budget (./labkit grade --budget); without it, the grader's default.
+    [ -z "$budget" ] || printf '%s\n' "$budget" >"$staging/source/grading_budget"
     mkdir -p "$(dirname "$zip_file")"
     zip_file="$(cd "$(dirname "$zip_file")" && pwd)/$(basename "$zip_file")"
     rm -f "$zip_file"
@@ -93,7 +101,7 @@ case "$command" in
     say "its secret seed is $seed_note; it is in the zip only, never commit it"
     ;;
   *)
-    say "usage: release.sh release OUT_DIR | package gradescope [--out FILE] [--seed S]"
+    say "usage: release.sh release OUT_DIR | package gradescope [--out FILE] [--seed S] [--budget SECONDS]"
     exit 2
     ;;
 esac

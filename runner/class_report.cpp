@@ -1,6 +1,7 @@
 #include "class_report.h"
 
 #include "process.h"
+#include "untrusted.h"
 
 #include <algorithm>
 #include <cctype>
@@ -34,6 +35,9 @@ std::string link_to(const std::string& name, const std::string& file) {
   if (out == "." || out == "..") out = "%2E" + out.substr(1);
   return out + "/" + file;
 }
+
+// The first line of a text, when a table's cell has room for one.
+std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
 
 std::string percent(double fraction) {
   std::ostringstream s;
@@ -296,20 +300,23 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
   // What cost more than a wrong answer: one row per submission, lab and kind, with its steps.
   std::vector<Trouble> trouble;
   for (const SubmissionGrade& s : all) {
-    if (!s.error.empty()) trouble.push_back({s.name, "could not be read", "", s.error});
+    if (!s.error.empty()) trouble.push_back({s.name, "could not be read", "", quoted_lines(first_line(s.error))});
     for (const LabGrade& l : s.labs) {
       if (l.state == LabGrade::State::not_built)
-        trouble.push_back(
-            {s.name, "does not compile", "lab " + l.lab->id, l.build_output.substr(0, l.build_output.find('\n'))});
+        trouble.push_back({s.name, "does not compile", "lab " + l.lab->id, quoted_lines(first_line(l.build_output))});
       if (l.state != LabGrade::State::graded) continue;
       std::map<std::string, Trouble> kinds;  // by kind, in this lab
       for (const StepGrade& step : l.steps) {
-        std::string kind = abnormal(step.status) ? status_word(step.status) : call_trouble(step);
+        const bool no_time = step.status == Status::out_of_time;
+        std::string kind = abnormal(step.status) ? status_word(step.status)
+                           : no_time             ? "its time budget ran out"
+                                                 : call_trouble(step);
         if (kind.empty()) continue;
         auto [it, fresh] = kinds.try_emplace(kind, Trouble{s.name, kind, "lab " + l.lab->id + " step", ""});
         it->second.where += (fresh ? " " : ", ") + std::to_string(step.step->number);
         if (fresh)
           it->second.what = abnormal(step.status) ? what_happened(step)
+                            : no_time             ? s.budget_note
                                                   : step.why.substr(0, std::min<std::size_t>(160, step.why.find('\n')));
       }
       for (auto& [kind, t] : kinds) {
@@ -342,10 +349,17 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
       const bool short_of = l.state != LabGrade::State::graded;
       body << "<td"
            << (short_of ? " class=\"bad\" title=\"" +
-                              html(l.state == LabGrade::State::missing ? "not submitted" : "does not compile") + "\""
+                              html(l.state == LabGrade::State::missing       ? "not submitted"
+                                   : l.state == LabGrade::State::out_of_time ? "its time budget ran out"
+                                                                             : "does not compile") +
+                              "\""
                         : "")
            << ">" << points(l.score)
-           << (short_of ? (l.state == LabGrade::State::missing ? " (missing)" : " (not compiled)") : "") << "</td>";
+           << (!short_of                                 ? ""
+               : l.state == LabGrade::State::missing     ? " (missing)"
+               : l.state == LabGrade::State::out_of_time ? " (no time)"
+                                                         : " (not compiled)")
+           << "</td>";
     }
     body << "<td><b>" << points(s.score) << "</b> / " << points(s.max_score) << "</td><td>" << points(s.seconds)
          << " s</td></tr>\n";

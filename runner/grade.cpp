@@ -5,6 +5,7 @@
 #include "lab_build.h"
 #include "results.h"
 #include "sandbox.h"
+#include "seed.h"
 #include "submission.h"
 #include "terminal.h"
 #include "untrusted.h"
@@ -56,17 +57,24 @@ std::string redact(std::string text, const std::string& secret) {
 }
 
 // Everything a student controls in a grade, as it may be written and shown: never the
-// secret (even if the code under test found it), and safe text (untrusted.h). The one
-// place this happens: every result file and the terminal get a grade through it.
-void make_presentable(SubmissionGrade& g, const std::string& secret) {
-  const auto presentable = [&](std::string& text) { text = safe_text(redact(text, secret)); };
+// secret or a seed drawn from it (even if the code under test found them), and safe
+// text (untrusted.h). The one place this happens: every result file and the terminal
+// get a grade through it.
+void make_presentable(SubmissionGrade& g, const std::vector<std::string>& secrets) {
+  const auto presentable = [&](std::string& text) {
+    for (const std::string& secret : secrets) text = redact(text, secret);
+    text = safe_text(text);
+  };
   presentable(g.name);
   presentable(g.source);
   presentable(g.error);
   for (std::string& note : g.notes) presentable(note);
   for (LabGrade& l : g.labs) {
     presentable(l.build_output);
-    for (StepGrade& s : l.steps) presentable(s.feedback);
+    for (StepGrade& s : l.steps) {
+      presentable(s.feedback);
+      presentable(s.why);
+    }
   }
 }
 
@@ -79,6 +87,24 @@ std::string tail(const std::string& text, std::size_t n) {
   return "..." + text.substr(from);
 }
 
+// Where a value's further lines start, under the labels ("why       ").
+const std::string kUnder(10, ' ');
+
+// A failure as the student reads it, one field a line under a label column, as
+// labkit::report::format lays it out; the judge's fields may carry what the code under
+// test said (an exception's message, what it printed before it crashed), so each
+// field's further lines are quoted (untrusted.h): none can pass for a line of the kit's.
+// The input is the kit's own description of a case the kit drew.
+std::string failure_text(const Failure& f, const std::string& query) {
+  std::string text = "query     " + safe_line(query) + (f.title.empty() ? "" : ", " + safe_line(f.title));
+  if (f.shrinks > 0) text += " (shrunk " + std::to_string(f.shrinks) + " times)";
+  text += "\ninput     " + term::indent(safe_text(f.input), kUnder);
+  text += "\nexpected  " + quoted_after_label(f.expected, kUnder);
+  text += "\ngot       " + quoted_after_label(f.got, kUnder);
+  text += "\nwhy       " + quoted_after_label(f.why, kUnder) + "\n";
+  return text;
+}
+
 // The command that replays a case, or why there is none: a token the harness never
 // writes (the code under test printed or wrote it) never becomes a command.
 std::string replay_line(const Lab& lab, const std::string& token) {
@@ -87,9 +113,11 @@ std::string replay_line(const Lab& lab, const std::string& token) {
          (command.empty() ? "none (the case it reported is not a replay token the kit writes)" : command) + "\n";
 }
 
-StepOptions graded_step_options(const std::string& folder, const Context& c) {
+// A graded step's options; `seed` is the submission's own for the lab (seed.h), "" for
+// the public cases.
+StepOptions graded_step_options(const std::string& folder, const Context& c, const std::string& seed) {
   StepOptions options;
-  options.seed = c.options.seed;
+  options.seed = seed;
   options.cases = c.options.cases;
   options.hide_seed = true;
   options.count_all = true;
@@ -105,9 +133,95 @@ StepOptions graded_step_options(const std::string& folder, const Context& c) {
   return options;
 }
 
+// A submission's time budget: the wall clock of the processes the grader runs for it
+// (compiles, links, steps and the descriptions of their failing cases), measured by the
+// grader alone. A process may run for the least of its own limit and what is left, less
+// what the submission's other processes running meanwhile may still take, so that
+// together they never pass the budget.
+class Budget {
+ public:
+  // The shortest time worth starting a process for.
+  static constexpr double kLeast = 1;
+
+  void set(double seconds) { total_ = seconds; }
+
+  // Up to `wanted` seconds for one process: what it may run for, or 0 when less than
+  // kLeast is left (the budget ran out).
+  double take(double wanted) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    const double left = total_ - used_ - held_;
+    if (left < kLeast) {
+      ran_out_ = true;
+      return 0;
+    }
+    const double given = std::min(wanted, left);
+    held_ += given;
+    return given;
+  }
+
+  // A process given `taken` seconds ended after `seconds`, spent on `what` ("lab 02
+  // step 3"); `taken` 0 for time charged without a process of its own (a build shared
+  // with another submission).
+  void spend(double taken, double seconds, const std::string& what) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    held_ -= taken;
+    used_ += seconds;
+    if (seconds > 0) spent_.push_back({what, seconds});
+  }
+
+  void ran_out() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ran_out_ = true;
+  }
+
+  double total() const { return total_; }
+  double used() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return used_;
+  }
+
+  // When it ran out: what used it, the slowest labs first, each with its slowest parts.
+  std::string note() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (!ran_out_) return "";
+    std::map<std::string, std::vector<std::pair<double, std::string>>> labs;  // "lab 02" -> (seconds, part)
+    for (const auto& [what, seconds] : spent_) {
+      const std::size_t space = what.find(' ', 4);
+      labs[what.substr(0, space)].push_back({seconds, space == std::string::npos ? what : what.substr(space + 1)});
+    }
+    std::vector<std::pair<double, std::string>> ranked;
+    for (auto& [lab, parts] : labs) {
+      std::sort(parts.rbegin(), parts.rend());
+      double sum = 0;
+      for (const auto& part : parts) sum += part.first;
+      std::string text = lab + " " + points(sum) + " s (";
+      for (std::size_t k = 0; k < parts.size() && k < 3; ++k)
+        text += (k ? ", " : "") + parts[k].second + " " + points(parts[k].first) + " s";
+      ranked.push_back({sum, text + (parts.size() > 3 ? ", ...)" : ")")});
+    }
+    std::sort(ranked.rbegin(), ranked.rend());
+    std::string text = "the submission's time budget ran out: its compiles and steps may take " + points(total_) +
+                       " s of wall time together (--budget), and they took " + points(used_) +
+                       " s; what used it, the slowest first: ";
+    for (std::size_t k = 0; k < ranked.size() && k < 4; ++k) text += (k ? "; " : "") + ranked[k].second;
+    return text;
+  }
+
+ private:
+  std::mutex mutex_;
+  double total_ = kGradingBudget, used_ = 0, held_ = 0;
+  std::vector<std::pair<std::string, double>> spent_;
+  bool ran_out_ = false;
+};
+
+// What a step or lab the budget never reached says.
+const char* const kNoTime =
+    "not graded: the submission's time budget ran out before it (the report's time budget line says what used it)";
+
 // What the student reads about one step: the verdict, the counts, the first failure and
 // how to replay it with the public kit.
-std::string feedback(const StepResult& r, const Lab& lab, const Programs& programs, const Context& c) {
+std::string feedback(const StepResult& r, const Lab& lab, const Programs& programs, const Context& c,
+                     const std::string& seed, Budget& budget) {
   std::ostringstream out;
   int cases = 0, passed = 0;
   for (const QueryResult& q : r.queries) {
@@ -121,37 +235,41 @@ std::string feedback(const StepResult& r, const Lab& lab, const Programs& progra
                         : "");
   out << "\n";
   if (abnormal(r.status)) {
-    out << "what      " << r.detail << "\n";
+    out << "what      " << quoted_after_label(r.detail, kUnder) << "\n";
     if (!r.inflight.empty() && !is_replay_token(r.inflight)) {
       out << replay_line(lab, r.inflight);  // its output faked the marker: no input to describe
     } else if (!r.inflight.empty()) {
-      // Describing runs no code under test; it keeps the graded limits all the same.
-      StepOptions describe = graded_step_options(fs::path(programs.answerer).parent_path().string(), c);
-      describe.replay = r.inflight;
-      describe.describe_only = true;
-      describe.count_all = false;
-      describe.limits.seconds = 30;
+      // Describing runs no code under test; it keeps the graded limits all the same, and
+      // takes its time from the submission's budget (none left: the token alone).
       std::string input = r.inflight;
-      const StepResult d = run_step(programs, lab, *r.step, describe);
-      for (const QueryResult& q : d.queries)
-        if (q.failure && !q.failure->input.empty()) input = q.failure->input;
-      out << "on input  " << term::indent(input, "          ") << "\n";
+      if (const double seconds = budget.take(30); seconds > 0) {
+        StepOptions describe = graded_step_options(fs::path(programs.answerer).parent_path().string(), c, seed);
+        describe.replay = r.inflight;
+        describe.describe_only = true;
+        describe.count_all = false;
+        describe.limits.seconds = seconds;
+        const StepResult d = run_step(programs, lab, *r.step, describe);
+        budget.spend(seconds, d.run.seconds, "lab " + lab.id + " step " + std::to_string(r.step->number));
+        for (const QueryResult& q : d.queries)
+          if (q.failure && !q.failure->input.empty()) input = q.failure->input;
+      }
+      out << "on input  " << term::indent(input, kUnder) << "\n";
       out << replay_line(lab, r.inflight);
     }
     if (r.status == Status::crashed || r.status == Status::exited_early || r.status == Status::out_of_memory) {
       const std::string last = tail(r.run.output, 800);
-      if (!last.empty()) out << "its last output:\n" << last << "\n";
+      if (!last.empty()) out << "its last output:\n" << quoted_lines(last) << "\n";
     }
     return out.str();
   }
   for (const QueryResult& q : r.queries) {
     if (!q.error.empty()) {
-      out << q.query << ": " << q.error << "\n";
+      out << safe_line(q.query) << ": " << quoted_after_label(q.error, kUnder) << "\n";
       break;
     }
     if (q.failure && q.not_implemented.empty()) {
       const Failure& f = *q.failure;
-      out << labkit::report::format(f, q.query, "");
+      out << failure_text(f, q.query);
       if (!f.replay.empty()) out << replay_line(lab, f.replay);
       break;
     }
@@ -199,6 +317,7 @@ struct BuildCache {
     bool done = false;
     LabBuild build;
     double seconds = 0;
+    double limit = 0;  // what its compiles and link were given: less than kBuildSeconds when a budget was short
     std::vector<std::function<void(const Entry&)>> waiting;  // builds of the same files, meanwhile
   };
   std::mutex mutex;
@@ -212,6 +331,8 @@ struct Graded {
   Submission sub;
   SubmissionGrade grade;
   std::vector<std::string> folders;  // per lab: where its steps run
+  std::vector<std::string> seeds;    // per lab: its cases' seed, from the secret and its files (seed.h)
+  Budget budget;                     // its processes' wall clock
   std::mutex mutex;                  // grade, open
   std::mutex writing;                // its results.json, written as its tasks end
   int open = 0;                      // its tasks queued or running
@@ -279,6 +400,8 @@ class Grader {
       fs::create_directories(g.work);
       fs::permissions(g.work, fs::perms(0711));
       g.sub = read_submission(g.path, c_.labs, g.work, c_.sandbox);
+      g.seeds.assign(c_.labs.size(), "");
+      g.budget.set(c_.options.budget);
       for (const Lab* lab : c_.labs) {
         g.folders.push_back(g.work + "/lab" + lab->id);
         fs::create_directories(g.folders.back());
@@ -311,7 +434,7 @@ class Grader {
   void build(std::size_t i, std::size_t l) {
     Graded& g = *all_[i];
     const Lab& lab = *c_.labs[l];
-    std::map<std::string, std::string> files;
+    std::map<std::string, std::string> files, contents;
     std::string missing, key = lab.id;
     for (const std::string& f : lab.student_files) {
       const auto found = g.sub.files.find(f);
@@ -320,7 +443,7 @@ class Grader {
         continue;
       }
       files[f] = found->second;
-      const std::string text = labkit::read_file(found->second);
+      const std::string text = contents[f] = labkit::read_file(found->second);
       key += '\0' + f + '\0' + std::to_string(text.size()) + '\0' + text;
     }
     if (!missing.empty()) {
@@ -328,6 +451,22 @@ class Grader {
       const std::string why = "The submission has no " + missing + ".";
       close_lab(g.grade.labs[l], LabGrade::State::missing, why, "not graded: " + why);
       return;
+    }
+    // A build's time comes out of the budget: what is left, at most kBuildSeconds; a build
+    // shared with another submission costs what it took, as if this one had run it.
+    const double limit = g.budget.take(kBuildSeconds);
+    if (limit <= 0) {
+      std::lock_guard<std::mutex> lock(g.mutex);
+      close_lab(g.grade.labs[l], LabGrade::State::out_of_time, kNoTime, kNoTime);
+      for (StepGrade& s : g.grade.labs[l].steps) s.status = Status::out_of_time;
+      return;
+    }
+    const std::string what = "lab " + lab.id + " build";
+    // Its own cases: another file (a resubmission) draws others, the same files the same.
+    if (!c_.options.seed.empty()) {
+      const std::string seed = submission_seed(c_.options.seed, lab.id, contents);
+      std::lock_guard<std::mutex> lock(g.mutex);
+      g.seeds[l] = seed;
     }
     std::shared_ptr<BuildCache::Entry> entry;
     std::string folder;
@@ -339,7 +478,13 @@ class Grader {
           std::lock_guard<std::mutex> held(g.mutex);
           ++g.open;
         }
-        found->waiting.push_back([this, i, l](const BuildCache::Entry& e) { task(i, [&] { built(i, l, e); }); });
+        g.budget.spend(limit, 0, what);
+        found->waiting.push_back([this, i, l, what](const BuildCache::Entry& e) {
+          task(i, [&] {
+            all_[i]->budget.spend(0, e.seconds, what);
+            built(i, l, e);
+          });
+        });
         return;
       }
       if (!found) {
@@ -353,19 +498,26 @@ class Grader {
       try {
         fs::create_directories(folder);
         fs::permissions(folder, fs::perms(0711));
-        entry->build = build_lab(c_.paths, lab, c_.recipes.at(&lab), files, folder, c_.sandbox);
+        entry->build = build_lab(c_.paths, lab, c_.recipes.at(&lab), files, folder, c_.sandbox, limit);
       } catch (const std::exception& e) {
         entry->build = LabBuild{};
         entry->build.errors = std::string("the grader could not build it: ") + e.what();
       }
       entry->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      entry->limit = limit;
+      g.budget.spend(limit, entry->seconds, what);
       std::vector<std::function<void(const BuildCache::Entry&)>> waiting;
       {
         std::lock_guard<std::mutex> lock(cache_.mutex);
         entry->done = true;
         waiting.swap(entry->waiting);
+        // Cut short by this submission's budget, not by its files: the next submission
+        // with the same files builds them again.
+        if (entry->build.timed_out && limit < kBuildSeconds) cache_.entries.erase(key);
       }
       for (auto& then : waiting) then(*entry);
+    } else {
+      g.budget.spend(limit, entry->seconds, what);
     }
     built(i, l, *entry);
   }
@@ -376,6 +528,14 @@ class Grader {
       std::lock_guard<std::mutex> lock(g.mutex);
       LabGrade& lab = g.grade.labs[l];
       lab.build_seconds = e.seconds;
+      if (!e.build.ok && e.build.timed_out && e.limit < kBuildSeconds) {
+        const std::string why = "not graded: the submission's time budget ran out while this lab was built (it had " +
+                                points(e.limit) + " s left)";
+        close_lab(lab, LabGrade::State::out_of_time, why, why);
+        for (StepGrade& s : lab.steps) s.status = Status::out_of_time;
+        g.budget.ran_out();
+        return;
+      }
       if (!e.build.ok) {
         close_lab(lab, LabGrade::State::not_built, e.build.errors,
                   "does not compile: every step of this lab scores 0 until it does.");
@@ -392,14 +552,30 @@ class Grader {
     const Lab& lab = *c_.labs[l];
     const Step& step = lab.steps[k];
     const Programs programs{c_.paths.build + "/" + lab.judge_binary(), binary};
+    const std::string what = "lab " + lab.id + " step " + std::to_string(step.number);
+    // Its limit: its own, or what is left of the submission's budget when that is less.
+    const double limit = g.budget.take(c_.options.timeout);
+    if (limit <= 0) {
+      StepGrade s;
+      s.step = &step;
+      s.graded = true;
+      s.status = Status::out_of_time;
+      s.feedback = kNoTime;
+      std::lock_guard<std::mutex> lock(g.mutex);
+      g.grade.labs[l].steps[k] = s;
+      return;
+    }
     StepResult r;
     try {
-      r = run_step(programs, lab, step, graded_step_options(g.folders[l], c_));
+      StepOptions options = graded_step_options(g.folders[l], c_, g.seeds[l]);
+      options.limits.seconds = limit;
+      r = run_step(programs, lab, step, options);
     } catch (const std::exception& e) {
       r.step = &step;
       r.status = Status::crashed;
       r.detail = std::string("the grader could not run it: ") + e.what();
     }
+    g.budget.spend(limit, r.run.seconds, what);
     StepGrade s;
     s.step = &step;
     s.graded = true;
@@ -408,8 +584,16 @@ class Grader {
     s.score = step_score(step, r);
     s.ambiguous = r.ambiguous;
     for (const QueryResult& q : r.queries) s.cases += q.cases;
-    s.feedback = feedback(r, lab, programs, c_);
-    s.why = first_why(r);
+    if (r.status == Status::timed_out && limit < c_.options.timeout) {  // the budget's limit, not the step's
+      g.budget.ran_out();
+      s.status = Status::out_of_time;
+      s.feedback = "not graded: the submission's time budget ran out during this step (it had " + points(limit) +
+                   " s left of its own " + points(c_.options.timeout) +
+                   " s; the report's time budget line says what used it)";
+    } else {
+      s.feedback = feedback(r, lab, programs, c_, g.seeds[l], g.budget);
+      s.why = first_why(r);
+    }
     std::lock_guard<std::mutex> lock(g.mutex);
     g.grade.labs[l].steps[k] = s;
   }
@@ -423,6 +607,9 @@ class Grader {
       s.score += l.score;
     }
     s.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - g.start).count();
+    s.budget = g.budget.total();
+    s.budget_used = g.budget.used();
+    s.budget_note = g.budget.note();
     std::error_code ignored;
     for (const std::string& folder : g.folders) fs::remove_all(folder, ignored);
     finished_(g);
@@ -434,6 +621,15 @@ class Grader {
   WorkQueue queue_;
   BuildCache cache_;
 };
+
+// What no output may show of a submission: the secret and the seeds drawn from it.
+std::vector<std::string> secrets_of(Graded& g, const std::string& secret) {
+  std::vector<std::string> all = {secret};
+  std::lock_guard<std::mutex> lock(g.mutex);
+  for (const std::string& seed : g.seeds)
+    if (!seed.empty()) all.push_back(seed);
+  return all;
+}
 
 // The class's own files in OUT, beside a folder per submission.
 const std::vector<std::string> kClassFiles = class_files();
@@ -482,8 +678,9 @@ void fit_envelope(Context& c, const Envelope& envelope) {
     c.step_memory_mb = std::max<std::size_t>(64, std::min(c.step_memory_mb, usable / std::size_t(c.jobs)));
   }
   std::ostringstream limits;
-  limits << points(c.options.timeout) << " s and " << c.step_memory_mb << " MB per step; " << c.jobs
-         << (c.jobs == 1 ? " worker" : " workers") << " in " << envelope.description;
+  limits << points(c.options.timeout) << " s and " << c.step_memory_mb << " MB per step; " << points(c.options.budget)
+         << " s for a submission's compiles and steps together; " << c.jobs << (c.jobs == 1 ? " worker" : " workers")
+         << " in " << envelope.description;
   c.run.limits = limits.str();
   if (c.step_memory_mb < c.options.memory_mb)
     std::cerr << "labkit grade: each step may use " << c.step_memory_mb << " MB, not " << c.options.memory_mb
@@ -535,6 +732,12 @@ int grade(const Paths& paths, const GradeOptions& options) {
   for (const std::string& line : found.classes) std::cerr << "labkit grade: " << line << "\n";
   for (const Lab* lab : c.labs) c.recipes[lab] = load_recipe(paths, *lab);
   c.run.seed_kind = options.seed.empty() ? "public" : "secret";
+  if (!options.seed.empty()) {
+    c.run.regrade = "./labkit grade <this submission> --seed <your secret>";
+    if (options.cases != kGradingCases) c.run.regrade += " --cases " + std::to_string(options.cases);
+    if (options.timeout != 60) c.run.regrade += " --timeout " + points(options.timeout);
+    if (options.budget != kGradingBudget) c.run.regrade += " --budget " + points(options.budget);
+  }
   c.run.cases = options.cases;
   c.run.sandbox = c.sandbox.description();
   fit_envelope(c, own_envelope());
@@ -569,7 +772,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
   std::atomic<bool> trouble{false};  // the grader's own: results it could not write
   const auto start = std::chrono::steady_clock::now();
   Grader grader(c, all, [&](Graded& g) {
-    make_presentable(g.grade, options.seed);
+    make_presentable(g.grade, secrets_of(g, options.seed));
     std::string unwritten;
     try {
       write_results(g.grade, folder_of(g), c);
@@ -578,14 +781,14 @@ int grade(const Paths& paths, const GradeOptions& options) {
       trouble = true;
     }
     std::lock_guard<std::mutex> lock(print);
-    if (!unwritten.empty()) std::cerr << "labkit grade: " << safe_text(unwritten) << "\n";
+    if (!unwritten.empty()) std::cerr << "labkit grade: " << safe_line(unwritten) << "\n";
     std::cout << (single ? "" : "\n") << table(g.grade, c.run) << std::flush;
   });
   // results.json as each step ends: a time-out of the whole run keeps every finished step.
   grader.progress = [&](Graded& g) {
     std::lock_guard<std::mutex> lock(g.writing);
     SubmissionGrade now = Grader::so_far(g);
-    make_presentable(now, options.seed);
+    make_presentable(now, secrets_of(g, options.seed));
     try {
       write_file(folder_of(g) / "results.json", gradescope_results(now, c.run).dump(2) + "\n");
     } catch (const std::exception&) {  // said once, when the final write fails too

@@ -6,6 +6,7 @@
 
 #include <sys/stat.h>
 #include <unistd.h>
+#include <algorithm>
 #include <cctype>
 #include <chrono>
 #include <filesystem>
@@ -162,9 +163,9 @@ void reclaim(const fs::path& folder) {
     if (!it->is_symlink(ignored)) own(it->path());
 }
 
-Limits build_limits() {
+Limits build_limits(double seconds) {
   Limits limits;
-  limits.seconds = 300;
+  limits.seconds = seconds;
   limits.memory_bytes = std::size_t(4) << 30;
   limits.file_bytes = std::size_t(512) << 20;
   limits.kept_bytes = 64 * 1024;
@@ -242,8 +243,13 @@ const std::set<std::string>& runtime_symbols() {
 }
 
 LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
-                   const std::map<std::string, std::string>& files, const std::string& folder, const Sandbox& sandbox) {
+                   const std::map<std::string, std::string>& files, const std::string& folder, const Sandbox& sandbox,
+                   double seconds) {
   const auto start = std::chrono::steady_clock::now();
+  // The commands share `seconds`: each gets what the ones before it left.
+  const auto left = [&] {
+    return std::max(1.0, seconds - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  };
   LabBuild b;
   const fs::path src = fs::path(folder) / "src", out = fs::path(folder) / "build";
   fs::create_directories(out);
@@ -295,7 +301,7 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
       }
     }
     argv.push_back("-H");  // the headers it reads, for the audit
-    Limits limits = build_limits();
+    Limits limits = build_limits(left());
     limits.kept_bytes = limits.flood_bytes = std::size_t(64) << 20;  // every header it read, or no build
     const Confined c = sandbox.confine(argv, out.string(), readable, limits);
     const Run r = run(c.argv, {}, c.limits, out.string());
@@ -309,8 +315,9 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
       return b;
     }
     if (!r.ok()) {
-      b.errors =
-          r.timed_out ? "the compiler did not finish within 300 s\n" : strip(first_errors(output, paths.source), noise);
+      b.timed_out = r.timed_out;
+      b.errors = r.timed_out ? "the compiler did not finish within " + std::to_string(int(seconds)) + " s\n"
+                             : strip(first_errors(output, paths.source), noise);
       if (b.errors.empty()) b.errors = strip(output.substr(0, 2000), noise);
       return b;
     }
@@ -343,9 +350,10 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
     argv.push_back(file ? path : word);
     if (file) readable.push_back(path);
   }
-  const Confined c = sandbox.confine(argv, out.string(), readable, build_limits());
+  const Confined c = sandbox.confine(argv, out.string(), readable, build_limits(left()));
   const Run r = run(c.argv, {}, c.limits, out.string());
   if (!r.ok()) {
+    b.timed_out = r.timed_out;
     b.errors = strip(r.output.substr(0, 3000), noise);
     return b;
   }

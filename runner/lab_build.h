@@ -39,15 +39,18 @@ std::string recipe_record(const Paths& paths, const Lab& lab);
 
 struct LabBuild {
   bool ok = false;
-  std::string binary;  // the answer program, when ok
-  std::string errors;  // the first compiler, linker or audit errors, when not
+  std::string binary;      // the answer program, when ok
+  std::string errors;      // the first compiler, linker or audit errors, when not
+  bool timed_out = false;  // a compile or the link ran out of its `seconds`
   double seconds = 0;
 };
 
 // Compiles `files` (manifest path -> file) and links them into `folder`'s answer program,
-// each command confined by `sandbox`.
+// each command confined by `sandbox` and given at most `seconds` (the grader gives less
+// when a submission's time budget has less left).
 LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
-                   const std::map<std::string, std::string>& files, const std::string& folder, const Sandbox& sandbox);
+                   const std::map<std::string, std::string>& files, const std::string& folder, const Sandbox& sandbox,
+                   double seconds = 300);
 
 // The defined symbols of a system's C and C++ runtime: a student file may not replace them.
 const std::set<std::string>& runtime_symbols();

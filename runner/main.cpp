@@ -68,6 +68,13 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   grade_command
       ->add_option(
+          "--budget", grade.budget,
+          "Seconds of wall time for all of a submission's compiles and steps together (default " +
+              std::to_string(int(runner::kGradingBudget)) +
+              ": seven labs within Gradescope's 10 minutes at half a CPU); each step gets at most what is left")
+      ->check(CLI::PositiveNumber);
+  grade_command
+      ->add_option(
           "--memory", grade.memory_mb,
           "Megabytes of memory per step (default 2048; less when the grader's control group has less for its workers)")
       ->check(CLI::Range(64, 1 << 20));

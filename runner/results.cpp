@@ -1,6 +1,8 @@
 #include "results.h"
 #include "terminal.h"
+#include "untrusted.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -14,6 +16,7 @@ std::string lab_state(const LabGrade& l) {
     case LabGrade::State::missing: return "not submitted";
     case LabGrade::State::not_built: return "does not compile";
     case LabGrade::State::pending: return "not graded yet";
+    case LabGrade::State::out_of_time: return "not graded: no time";
     case LabGrade::State::graded: break;
   }
   return "";
@@ -31,6 +34,45 @@ std::string lab_heading(const LabGrade& l) { return "Lab " + l.lab->id + "  " + 
 
 std::string step_name(const StepGrade& s) {
   return "step " + std::to_string(s.step->number) + " (" + s.step->tag + "): " + s.step->title;
+}
+
+// What a lab's build said, on lines of their own after `indent`: a compiler's errors
+// (or the audit's, naming the file's symbols) are the student's text and are quoted;
+// the kit's own reason (a missing file) is not.
+std::string build_text(const LabGrade& l, const std::string& indent) {
+  if (l.state == LabGrade::State::not_built) return quoted_lines(l.build_output, indent);
+  return indent + term::indent(l.build_output, indent);
+}
+
+// Where the cases come from, never the seed itself.
+std::string seed_text(const GradingRun& run) {
+  if (run.seed_kind == "secret") return "secret, its own cases for each submission (from the secret and its files)";
+  return run.seed_kind;
+}
+
+// Titles longer than this are cut in the table.
+constexpr std::size_t kLongestTitle = 72;
+
+// Columns of text on a terminal: one per character (UTF-8 continuation bytes add none).
+std::size_t columns(const std::string& text) {
+  std::size_t n = 0;
+  for (const unsigned char c : text) n += (c & 0xC0) != 0x80;
+  return n;
+}
+
+// A cell of the table, `width` columns: the text and at least two spaces, or the text cut
+// with "…" to leave them, so that no cell ever touches the next.
+std::string cell(const std::string& text, std::size_t width) {
+  if (columns(text) + 2 <= width) return term::pad(text, width);
+  if (width < 3) return text + "  ";
+  std::string cut;
+  std::size_t n = 0;
+  for (const char c : text) {
+    const bool starts = (static_cast<unsigned char>(c) & 0xC0) != 0x80;
+    if (starts && n++ == width - 3) break;
+    cut += c;
+  }
+  return term::pad(cut + "\xE2\x80\xA6", width);  // U+2026 HORIZONTAL ELLIPSIS
 }
 
 std::string seconds_text(double s) {
@@ -73,29 +115,54 @@ std::string points(double x) {
 }
 
 std::string table(const SubmissionGrade& s, const GradingRun& run) {
-  using term::pad;
   std::ostringstream out;
-  out << "Submission " << s.name << "   (" << s.source << ")\n";
-  out << "  seed: " << run.seed_kind << ", " << (run.cases ? std::to_string(run.cases) : std::string("the default"))
+  out << "Submission " << safe_line(s.name) << "   (" << safe_line(s.source) << ")\n";
+  out << "  seed: " << seed_text(run) << ", " << (run.cases ? std::to_string(run.cases) : std::string("the default"))
       << " random cases per query; sandbox: " << run.sandbox << "\n";
+  if (!run.regrade.empty())
+    out << "  regrade: " << run.regrade << "   (the same files and secret draw the same cases)\n";
   if (!run.limits.empty()) out << "  limits: " << run.limits << "\n";
-  if (!s.error.empty()) out << "  could not be read: " << s.error << "\n";
-  for (const std::string& note : s.notes) out << "  note: " << note << "\n";
+  if (s.budget > 0)
+    out << "  time budget: " << points(s.budget_used) << " s of " << points(s.budget) << " s used"
+        << (s.budget_note.empty() ? "" : "; " + s.budget_note) << "\n";
+  if (!s.error.empty()) out << "  could not be read: " << quoted_after_label(s.error, "    ") << "\n";
+  for (const std::string& note : s.notes) out << "  note: " << safe_line(note) << "\n";
+  // The columns: each as wide as its widest cell and two spaces, titles cut with "…" past
+  // kLongestTitle, so that no cell ever runs into the next.
+  const auto build_cell = [](const LabGrade& l) {
+    return l.state == LabGrade::State::graded ? "built in " + seconds_text(l.build_seconds) + " s" : lab_state(l);
+  };
+  const auto points_cell = [](double score, double max) { return points(score) + " / " + points(max); };
+  std::size_t title = 0, heading = 0, state = 0, score = points_cell(s.score, s.max_score).size();
   for (const LabGrade& l : s.labs) {
-    out << "\n  " << pad(lab_heading(l), 56)
-        << pad(l.state == LabGrade::State::graded ? "built in " + seconds_text(l.build_seconds) + " s" : lab_state(l),
-               20)
-        << points(l.score) << " / " << points(l.max_score) << "\n";
-    for (const StepGrade& g : l.steps)
-      out << "    " << pad(std::to_string(g.step->number), 3) << pad(g.step->tag, 7) << pad(g.step->title, 44)
-          << pad(step_state(l, g), 20) << pad(points(g.score) + " / " + points(g.step->points), 10)
-          << (l.state == LabGrade::State::graded && g.graded ? seconds_text(g.seconds) + " s" : "") << "\n";
+    heading = std::max(heading, std::min(kLongestTitle, columns(lab_heading(l))));
+    state = std::max(state, columns(build_cell(l)));
+    score = std::max(score, points_cell(l.score, l.max_score).size());
+    for (const StepGrade& g : l.steps) {
+      title = std::max(title, std::min(kLongestTitle, columns(g.step->title)));
+      state = std::max(state, columns(step_state(l, g)));
+      score = std::max(score, points_cell(g.score, g.step->points).size());
+    }
   }
-  out << "\n  " << pad("Total", 76) << points(s.score) << " / " << points(s.max_score) << "   ("
-      << seconds_text(s.seconds) << " s)\n";
+  // A step's line is indented 2 more than its lab's, and starts with its number and tag.
+  const std::size_t left = std::max(heading + 2, 2 + 4 + 8 + title + 2);
+  state += 2;
+  score += 2;
+  for (const LabGrade& l : s.labs) {
+    out << "\n  " << cell(lab_heading(l), left) << cell(build_cell(l), state) << points_cell(l.score, l.max_score)
+        << "\n";
+    for (const StepGrade& g : l.steps) {
+      const bool ran = l.state == LabGrade::State::graded && g.graded && g.seconds > 0;
+      out << "    " << cell(std::to_string(g.step->number), 4) << cell(g.step->tag, 8) << cell(g.step->title, left - 14)
+          << cell(step_state(l, g), state) << (ran ? cell(points_cell(g.score, g.step->points), score) : "")
+          << (ran ? seconds_text(g.seconds) + " s" : points_cell(g.score, g.step->points)) << "\n";
+    }
+  }
+  out << "\n  " << cell("Total", left + state) << points_cell(s.score, s.max_score) << "   (" << seconds_text(s.seconds)
+      << " s)\n";
   for (const LabGrade& l : s.labs) {
     if (l.state != LabGrade::State::graded)
-      out << "\n" << lab_heading(l) << ": " << lab_state(l) << "\n  " << term::indent(l.build_output, "  ") << "\n";
+      out << "\n" << lab_heading(l) << ": " << lab_state(l) << "\n" << build_text(l, "  ") << "\n";
     for (const StepGrade& g : l.steps)
       if (g.status != Status::passed && l.state == LabGrade::State::graded && g.graded)
         out << "\nLab " << l.lab->id << ", " << step_name(g) << "\n  " << term::indent(g.feedback, "  ") << "\n";
@@ -113,7 +180,7 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
         built ? "It compiles."
         : l.state == LabGrade::State::pending
             ? "not graded: grading stopped before this lab was built (a time-out of the whole run?)"
-            : lab_state(l) + ".\n" + l.build_output;
+            : lab_state(l) + ".\n" + build_text(l, "");
     tests.push_back({{"name", "Lab " + l.lab->id + " " + l.lab->title + ": build"},
                      {"number", std::to_string(lab_number) + ".0"},
                      {"status", built ? "passed" : "failed"},
@@ -131,8 +198,12 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
     summary += "Lab " + l.lab->id + " " + l.lab->title + ": " + points(l.score) + " / " + points(l.max_score) +
                (built ? "" : " (" + lab_state(l) + ")") + "\n";
   }
-  if (!s.error.empty()) summary = "The submission could not be read: " + s.error + "\n" + summary;
-  for (const std::string& note : s.notes) summary += "Note: " + note + "\n";
+  if (!s.error.empty())
+    summary = "The submission could not be read: " + quoted_after_label(s.error, "  ") + "\n" + summary;
+  for (const std::string& note : s.notes) summary += "Note: " + safe_line(note) + "\n";
+  if (!s.budget_note.empty()) summary += "Time: " + s.budget_note + "\n";
+  if (!run.regrade.empty())
+    summary += "Cases: this submission's own, drawn from the secret seed and its files; regrade: " + run.regrade + "\n";
   nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}, {"limits", run.limits}};
   if (run.cases > 0) extra["cases_per_query"] = run.cases;
   return {{"score", s.score},
@@ -152,7 +223,8 @@ std::string junit_xml(const SubmissionGrade& s) {
       cases << "    <testcase classname=\"lab" << l.lab->id << "\" name=\"" << xml_escape(step_name(g)) << "\">\n";
       const std::string message =
           status_word(g.status) + ": " + points(g.score) + " of " + points(g.step->points) + " points";
-      const std::string body = l.state == LabGrade::State::graded ? g.feedback : lab_state(l) + "\n" + l.build_output;
+      const std::string body =
+          l.state == LabGrade::State::graded ? g.feedback : lab_state(l) + "\n" + build_text(l, "");
       if (abnormal(g.status) || l.state == LabGrade::State::not_built) {
         ++lab_errors;
         cases << "      <error type=\"" << xml_escape(status_word(g.status)) << "\" message=\"" << xml_escape(message)
@@ -177,7 +249,7 @@ std::string junit_xml(const SubmissionGrade& s) {
            << cases.str() << "  </testsuite>\n";
   }
   std::ostringstream out;
-  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"labkit grade " << xml_escape(s.name)
+  out << "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"labkit grade " << xml_escape(safe_line(s.name))
       << "\" tests=\"" << tests << "\" failures=\"" << failures << "\" errors=\"" << errors << "\" time=\""
       << seconds_text(s.seconds) << "\">\n"
       << suites.str() << "</testsuites>\n";
@@ -197,8 +269,12 @@ std::string steps_tsv(const SubmissionGrade& s) {
 
 std::string class_csv(const std::vector<SubmissionGrade>& all) {
   if (all.empty()) return "submission,total,max\n";
-  const auto csv_field = [](const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+  // RFC 4180, and never a formula: a spreadsheet evaluates a cell that starts with = + -
+  // @, a tab or a CR ("-2-2" is -4, "=HYPERLINK(...)" a link), so such a cell starts with
+  // an apostrophe, which spreadsheets show as text and do not display.
+  const auto csv_field = [](std::string text) {
+    if (!text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos) text = "'" + text;
+    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
     std::string quoted = "\"";
     for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
     return quoted + "\"";
@@ -207,7 +283,7 @@ std::string class_csv(const std::vector<SubmissionGrade>& all) {
   for (const LabGrade& l : all.front().labs) out += ",lab" + l.lab->id;
   out += ",total,max\n";
   for (const SubmissionGrade& s : all) {
-    out += csv_field(s.name);
+    out += csv_field(safe_line(s.name));
     for (const LabGrade& l : s.labs) out += "," + points(l.score);
     out += "," + points(s.score) + "," + points(s.max_score) + "\n";
   }

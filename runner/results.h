@@ -13,9 +13,12 @@ namespace runner {
 
 struct GradingRun {
   std::string seed_kind;  // "secret" or "public": the seed itself is never written
-  int cases = 0;          // random cases per query (0: the harness's default)
-  std::string sandbox;    // Sandbox::description()
-  std::string limits;     // each step's time and memory, the workers and the envelope
+  // With a secret: the command that grades a submission again on the same cases (each
+  // submission's own, seed.h), with the secret left for the instructor to fill in.
+  std::string regrade;
+  int cases = 0;        // random cases per query (0: the harness's default)
+  std::string sandbox;  // Sandbox::description()
+  std::string limits;   // each step's time and memory, the workers and the envelope
 };
 
 // The readable table: a line per lab and per step, then each step's feedback.

@@ -30,6 +30,7 @@ std::string status_word(Status s) {
     case Status::no_tests: return "no tests (kit error)";
     case Status::kit_error: return "not graded (kit error)";
     case Status::not_built: return "does not compile";
+    case Status::out_of_time: return "not graded: no time";
   }
   return "?";
 }

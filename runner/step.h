@@ -29,6 +29,7 @@ enum class Status {
   no_tests,      // the binary has no test for this step: a kit bug, never the student's
   kit_error,     // the kit's own judge failed (report.h's "kit error: ..."): never the student's
   not_built,     // the lab did not compile
+  out_of_time,   // graded runs: the submission's time budget ran out before or during the step
 };
 
 std::string status_word(Status s);

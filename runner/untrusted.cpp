@@ -59,14 +59,16 @@ Decoded decode(std::string_view bytes, std::size_t at) {
 }
 
 // Characters a terminal or a reader acts on instead of showing: C0 controls but newline
-// and tab (ESC starts escape sequences, CR overwrites a line), DEL, C1 controls (0x9B is
-// a one-byte CSI), bidi marks, embeddings, overrides and isolates (they reorder what is
+// and tab (ESC starts escape sequences, CR overwrites a line, VT and FF start one), DEL,
+// C1 controls (0x9B is a one-byte CSI, 0x85 is NEL), U+2028 and U+2029 (line breaks to
+// browsers and some editors), bidi marks, embeddings, overrides and isolates (they reorder what is
 // shown), and U+FFFE and U+FFFF, which XML refuses.
 bool shown_as_text(char32_t c) {
   if (c < 0x20) return c != '\n' && c != '\t';
   if (c >= 0x7F && c <= 0x9F) return true;
   if (c == 0x061C || c == 0x200E || c == 0x200F) return true;
   if ((c >= 0x202A && c <= 0x202E) || (c >= 0x2066 && c <= 0x2069)) return true;
+  if (c == 0x2028 || c == 0x2029) return true;  // line and paragraph separators: a new line to some readers
   return c == 0xFFFE || c == 0xFFFF;
 }
 
@@ -172,6 +174,31 @@ std::string safe_text(std::string_view bytes) {
     at += d.length;
   }
   return out;
+}
+
+std::string quoted_lines(std::string_view text, const std::string& indent) {
+  const std::string safe = safe_text(text);
+  std::string_view rest = safe;
+  if (!rest.empty() && rest.back() == '\n') rest.remove_suffix(1);
+  std::string out;
+  for (;;) {
+    const std::size_t end = rest.find('\n');
+    const std::string_view line = rest.substr(0, end);
+    out += indent;
+    out += line.empty() ? kQuote.substr(0, 1) : kQuote;
+    out += line;
+    if (end == std::string_view::npos) break;
+    out += '\n';
+    rest.remove_prefix(end + 1);
+  }
+  return out;
+}
+
+std::string quoted_after_label(std::string_view text, const std::string& indent) {
+  const std::string safe = safe_text(text);
+  const std::size_t end = safe.find('\n');
+  if (end == std::string::npos) return safe;
+  return safe.substr(0, end) + "\n" + quoted_lines(std::string_view(safe).substr(end + 1), indent);
 }
 
 std::string shell_quote(std::string_view text) {

@@ -4,7 +4,8 @@
 // (which may be FIFOs, links or far too large).
 //
 // The rule: text a student controls goes through safe_text() before it reaches
-// results.json, junit.xml, report.txt, steps.tsv, class.csv or a terminal; a command
+// results.json, junit.xml, report.txt, steps.tsv, class.csv or a terminal, and text of
+// several lines goes there through quoted_lines() (every line marked "| "); a command
 // built from it goes through shell_quote(); a file from a submission or a scratch folder
 // is opened only by read_untrusted_file() or copy_untrusted_file().
 #pragma once
@@ -24,6 +25,20 @@ std::string safe_text(std::string_view bytes);
 // safe_text for text that must stay on one line (a file or test name in a note): a
 // newline or tab in it is shown as "\x0a" or "\x09" too, so it cannot forge a line.
 std::string safe_line(std::string_view bytes);
+
+// Text a student controls (compiler errors, what its code printed, exception messages)
+// as a block of lines that cannot pass for the kit's own: safe_text, after which a
+// newline is the only line break left (CR, VT, FF, NEL, U+2028 and U+2029 are shown as
+// text), then every line starts with `indent` and kQuote. No final newline. The one
+// quoting function: every output (terminal, report.txt, results.json, junit.xml, the
+// class page) puts multi-line student text on its own lines only through it.
+inline constexpr std::string_view kQuote = "| ";
+std::string quoted_lines(std::string_view text, const std::string& indent = "");
+
+// A value after a label of the kit's ("got       " + value): its first line stays on
+// the label's line (nothing can start a line there), and every further line is
+// quoted_lines(), under `indent`.
+std::string quoted_after_label(std::string_view text, const std::string& indent);
 
 // One word for a POSIX shell that stands for `text` exactly: 'it'\''s'.
 std::string shell_quote(std::string_view text);

@@ -30,14 +30,15 @@ owned="$work/owned"  # what a crafted replay command would create if it were eve
 # ending well answers every call right.
 #
 # stand_in_kit BUILD: how the kit in BUILD compiles a lab's file (a copy; a first line
-# "#error ..." fails, with the file as the errors) and links it into an answerer (the
-# answerer's head with the file appended, at the path the runner asks with -o).
+# "#error ..." fails, with the file as the errors; a first line "#slow" takes 3 s) and
+# links it into an answerer (the answerer's head with the file appended, at the path the
+# runner asks with -o).
 stand_in_kit() {
   local build="$1"
   mkdir -p "$build"
   echo '#!/bin/sh' >"$build/answerer.sh"
   stand_in_build "$kit" "$build" "$build/answerer.sh" \
-    'if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; cp $0 $2' \
+    'if head -n 1 $0 | grep -q ^#error; then printf \"error: \" >&2; cat $0 >&2; exit 1; fi; if head -n 1 $0 | grep -q ^#slow; then sleep 3; fi; cp $0 $2' \
     'cat $1 $4 >$3 && chmod 755 $3'
 }
 build="$work/build"
@@ -64,6 +65,12 @@ def query(name, passed, failure=None):
 def failure(title, input, got, why, replay):
     return {"title": title, "input": input, "expected": "yes", "got": got, "why": why, "replay": replay, "shrinks": 0}
 
+# The seed the grader gave this step, read (and deleted) as the harness does; logged
+# beside this judge with the first line the answerer printed, for the seed checks.
+seed = ""
+if os.environ.get("LABKIT_SEED_FILE"):
+    seed = open(os.environ["LABKIT_SEED_FILE"]).read()
+    os.remove(os.environ["LABKIT_SEED_FILE"])
 if os.environ.get("LABKIT_DESCRIBE"):
     write([query("q", 0, failure("described", "the described input", "", "", os.environ.get("LABKIT_REPLAY", "")))])
     sys.exit(0)
@@ -81,6 +88,9 @@ for chunk in iter(lambda: answerer.stdout.read1(65536), b""):
     tail = (tail + chunk)[-600:]
 ended = answerer.wait()
 printed = tail.decode("utf-8", "replace")
+if printed.startswith("ID "):
+    with open(os.path.join(os.path.dirname(os.path.abspath(__file__)), "seeds.log"), "a") as log:
+        log.write(seed + "\t" + printed.split("\n")[0][3:] + "\n")
 if ended == 0 and "WRONG " in printed:  # a wrong answer, with the number the code printed
     x = printed.split("WRONG ")[1].split()[0]
     write([query("segment_plane", 0, failure("random case", "in", x,
@@ -131,9 +141,23 @@ printf "terminate called after throwing an instance of '"'std::bad_alloc'"'\n  w
 student crafted_inflight "echo \"LABKIT-INFLIGHT $crafted\"; yes flooding the grader"
 student faked_inflight "echo 'LABKIT-INFLIGHT segment_plane:4,5,6'; yes flooding the grader"
 student latin1_compile "$(printf '#error caf\351 \033[2J\033]0;owned\007 \303\251')"
+# Student text that would forge the kit's own lines (a static_assert message keeps its
+# newlines; so does what code prints before it crashes): every line break a reader
+# knows (newline, CR, CR LF, VT, FF, NEL, U+2028, U+2029), each followed by a table's
+# last line. Every line of it must be quoted ("| ") in every output.
+forged_lines="$(printf '"\n  Total 700 / 700\n \r  Total 700 / 700 \r\n  Total 700 / 700 \v  Total 700 / 700 \f  Total 700 / 700 \302\205  Total 700 / 700 \342\200\250  Total 700 / 700 \342\200\251  Total 700 / 700"')"
+student forged_compile "#error static_assert failed: $forged_lines"
+student forged_output "printf '%s\\n' '$forged_lines'; kill -SEGV \$\$"
+# Their own cases: two submissions under one secret draw different seeds (each
+# prints who it is, and the stand-in judge logs the seed it was given).
+student seed_a 'echo "ID seed_a"'
+student seed_b 'echo "ID seed_b"'
 student fifo_report "$(tamper 'rm -f "$report"; mkfifo "$report"')"
 student symlink_report "$(tamper 'rm -f "$report"; ln -s /etc/passwd "$report"')"
 student forged_report "$(tamper "printf '%s' '${forged//\'/\'\\\'\'}' >\"\$report\"")"
+# Names a spreadsheet would take for formulas ("-2-2" is -4), and one with a comma and a
+# quote: class.csv shows each as text, one cell.
+for name in -2-2 '=1+1' '+1' '@SUM(A1)' 'doe, "jo"'; do student "$name" ': nothing to add'; done
 # A student's folder that is merely named labs: its file at its top, uploaded alone.
 mkdir -p "$subs/labs" && echo ': the student called labs' >"$subs/labs/segment_triangle.cpp"
 
@@ -199,6 +223,35 @@ says latin1_crash $'r\u00e9sultat \ufffd \\x1b[2J\\x1b]0;owned\\x07'
 says latin1_crash '\x1b[31mred'
 says latin1_compile $'#error caf\ufffd \\x1b[2J'
 says bad_members_tar $'graded caf\ufffd/labs/02_segment_triangle/segment_triangle.cpp as'
+# 1b. Student text never starts a line of its own: each line holding the forged total,
+# as any reader splits lines (Python's splitlines: CR, VT, FF, NEL, U+2028 ...), starts
+# with the quote, in the terminal, report.txt, results.json (its strings), junit.xml and
+# the class page.
+status forged_compile "does not compile"
+status forged_output failing
+python3 - "$out" "$work/grade.log" <<'PY' || fail "forged kit lines: see above"
+import json, os, sys
+out, log = sys.argv[1], sys.argv[2]
+files = [log] + [os.path.join(d, f) for d, _, fs in os.walk(out) for f in fs]
+problems, seen = [], 0
+def lines_of(text):
+    yield from text.splitlines()
+def strings(value):
+    if isinstance(value, str): return [value]
+    items = value.values() if isinstance(value, dict) else value if isinstance(value, list) else []
+    return [s for v in items for s in strings(v)]
+for path in files:
+    text = open(path, "rb").read().decode("utf-8", "replace")
+    texts = list(strings(json.loads(text))) if path.endswith(".json") else [text]
+    for t in texts:
+        for line in lines_of(t):
+            if "Total 700 / 700" in line:
+                seen += 1
+                if not line.lstrip(" ").startswith("|"): problems.append(f"{path}: an unquoted line {line!r}")
+if seen < 8: problems.append(f"the forged lines were shown {seen} times: expected in the report, results.json, the terminal")
+print("\n".join(problems[:20]) or "forged lines: all quoted")
+sys.exit(1 if problems else 0)
+PY
 # 2. Replay commands. A crash costs the call it happened on, in the judge's words, and
 # its replay command is the judge's token, quoted, never the marker printed before it;
 # a flood's printed markers name nothing.
@@ -224,6 +277,19 @@ says bad_members_tar "labs/05_sphere_sweeps/sphere_sweeps.cpp is not a regular f
 [ -e /tmp/escaped ] && { fail "a member with .. was unpacked"; rm -f /tmp/escaped; }
 # 4. Each student their own folder: the one called labs too.
 [ "$(wc -l <"$out/class.csv")" = "$(($(ls "$subs" | wc -l) + 1))" ] || fail "class.csv: one row per submission"
+# No cell of class.csv is a formula: a name that starts like one starts with an apostrophe.
+python3 - "$out/class.csv" <<'PY' || fail "class.csv: see above"
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1], newline="", encoding="utf-8")))
+names = [r[0] for r in rows[1:]]
+problems = [f"a formula cell: {c!r}" for r in rows for c in r if c[:1] in ("=", "+", "-", "@", "\t", "\r")]
+# Names are folder names with every byte but letters, digits, '.', '_' and '-' made '_'
+# (submission_name): '-' is the one formula start left.
+if "'-2-2" not in names: problems.append(f"-2-2 is not shown as text ('-2-2): {names}")
+if any(len(r) != len(rows[0]) for r in rows): problems.append("a row has another number of cells than the header")
+print("\n".join(problems) or "class.csv: fine")
+sys.exit(1 if problems else 0)
+PY
 
 # ---- the class page: where the class stands, in a browser from the folder -------------
 # It parses as HTML with each section; every link stays in the results folder and finds
@@ -277,7 +343,7 @@ for name, what in [("crafted_inflight", "too much output"), ("faked_inflight", "
     if not row_with(name, what): problems.append(f"the trouble list has no '{what}' row for {name}")
 if not any(r.startswith("2 | ") and "the answer is #, not #: the point is off its plane by # (tolerance #)" in r for r in page.rows):
     problems.append("the two wrong answers are not one concept of 2 submissions")
-if any("your code crashed" in r and not r.startswith("crash") and not r.startswith("latin1_crash") for r in page.rows):
+if any("your code crashed" in r and not r.startswith(("crash", "latin1_crash", "forged_output")) for r in page.rows):
     problems.append("a crash is listed among the concepts, not with the crashes")
 count = len([d for d in os.listdir(out) if os.path.isdir(os.path.join(out, d))])
 if f"<p>{count} submissions; mean" not in text: problems.append("the totals do not count every submission")
@@ -367,6 +433,114 @@ done
 python3 -c 'import sys, xml.etree.ElementTree as T
 for f in sys.argv[1:]: T.parse(f)' "$out"/*/junit.xml "$broken_out"/junit.xml || fail "a junit.xml is not well-formed XML"
 if grep -rqF "$secret" "$out" "$work/grade.log" "$broken_out" "$work/broken.log"; then fail "the secret seed appears in the results"; fi
+
+# ---- each submission its own cases, never shown ----------------------------------------
+# seeds_of NAME: the distinct seeds the judge was given for NAME's steps.
+seeds_of() { awk -F'\t' -v n="$1" '$2 == n { print $1 }' "$build/seeds.log" | sort -u; }
+seed_a=$(seeds_of seed_a)
+seed_b=$(seeds_of seed_b)
+[ -n "$seed_a" ] && [ "$(wc -l <<<"$seed_a")" = 1 ] || fail "seed_a: its steps were given the seeds '$seed_a', expected one"
+[ -n "$seed_b" ] && [ "$seed_a" != "$seed_b" ] || fail "two submissions under one secret drew the same seed ($seed_a)"
+# The same files again (a regrade, alone this time) draw the same seed; a changed file
+# (a resubmission that special-cases a shown input) draws another.
+cp -r "$subs/seed_a" "$work/seed_a_again"
+grade "$build" "$work/seed_a_again" --out "$work/seed_again" >"$work/seed_again.log" 2>&1 || fail "the regrade of seed_a failed"
+[ "$(seeds_of seed_a)" = "$seed_a" ] || fail "the same submission drew another seed on a regrade: $(seeds_of seed_a | paste -sd ' ')"
+mkdir -p "$work/seed_a_changed/$(dirname $lab02)" && printf 'echo "ID seed_a_changed"\n' >"$work/seed_a_changed/$lab02"
+grade "$build" "$work/seed_a_changed" --out "$work/seed_changed" >"$work/seed_changed.log" 2>&1 || fail "the resubmission failed"
+seed_c=$(seeds_of seed_a_changed)
+[ -n "$seed_c" ] && [ "$seed_c" != "$seed_a" ] || fail "a changed file drew the same seed ($seed_c)"
+# No output holds the secret or a seed drawn from it; the report says how to regrade.
+mapfile -t drawn < <(printf '%s\n' "$seed_a" "$seed_b" "$seed_c" "$secret")
+for seed in "${drawn[@]}"; do
+  [ -n "$seed" ] || continue
+  if grep -rqF -- "$seed" "$out" "$work/grade.log" "$work/seed_again" "$work/seed_again.log" "$work/seed_changed" \
+    "$work/seed_changed.log"; then fail "an output shows the secret or a seed drawn from it ($seed)"; fi
+done
+grep -qF "regrade: ./labkit grade <this submission> --seed <your secret>" "$work/seed_again/report.txt" ||
+  fail "report.txt does not say how to regrade"
+grep -qF "regrade: ./labkit grade <this submission> --seed <your secret>" "$work/seed_again/results.json" ||
+  fail "results.json does not say how to regrade"
+
+# ---- a submission's time budget: its compiles and steps together ----------------------
+# This one compiles in 3 s, and every step of it sleeps 3 s in the code under test, well
+# inside its own limit (20 s): with a budget of 8 s and one worker, the compile counts,
+# the first step runs, the rest are not graded and say why, the report names what used
+# the time, and the grader's own wall clock stays near the budget, not near 3 + 8 x 3 s.
+mkdir -p "$work/sleeper/$(dirname $lab02)" && printf '#slow\nsleep 3\n' >"$work/sleeper/$lab02"
+started=$(date +%s.%N)
+LABKIT_BUILD_DIR="$build" timeout 300 "$runner" grade "$work/sleeper" --out "$work/sleeper_out" --seed "$secret" \
+  --labs 02 --jobs 1 --timeout 20 --budget 8 --sandbox "$sandbox" >"$work/sleeper.log" 2>&1 || fail "grading the sleeper failed"
+took=$(echo "$(date +%s.%N) - $started" | bc)
+python3 - "$work/sleeper_out" "$took" <<'PY' || { cat "$work/sleeper.log"; fail "the time budget: see above"; }
+import json, re, sys
+out, took = sys.argv[1], float(sys.argv[2])
+rows = [line.split("\t") for line in open(f"{out}/steps.tsv").read().splitlines()[1:]]
+states = [r[3] for r in rows]
+report = open(f"{out}/report.txt").read()
+results = json.load(open(f"{out}/results.json"))
+problems = []
+if states[0] != "passed": problems.append(f"step 1 is '{states[0]}': the budget had room for it")
+if "not graded: no time" not in states: problems.append(f"no step ran out of time: {states}")
+first = states.index("not graded: no time") if "not graded: no time" in states else len(states)
+if any(s != "not graded: no time" for s in states[first:]): problems.append(f"a step ran after the budget ran out: {states}")
+used = re.search(r"time budget: ([0-9.]+) s of 8 s used; the submission's time budget ran out", report)
+if not used: problems.append("report.txt does not say the budget ran out")
+elif float(used.group(1)) > 8.5: problems.append(f"its processes took {used.group(1)} s of an 8 s budget")  # a stopped process ends a moment after its limit
+if not re.search(r"what used it, the slowest first: lab 02 [0-9.]+ s \((step [0-9]|build) 3\.[0-9]* s, (step [0-9]|build) 3\.", report):
+    problems.append("report.txt does not name the slowest steps and the compile, with their seconds")
+if "not graded: the submission's time budget ran out" not in report: problems.append("no step says it was not graded")
+if "Time: the submission's time budget ran out" not in results["output"]: problems.append("results.json does not say so")
+if took > 8 + 10: problems.append(f"grading took {took:.1f} s for an 8 s budget")
+print("\n".join(problems) or f"time budget: fine ({states.count('passed')} steps in {took:.1f} s)")
+sys.exit(1 if problems else 0)
+PY
+
+# ---- report.txt's columns never touch ------------------------------------------------
+# Lab 03's title is long, and a partial score ("11.86 / 15") is as wide as its column
+# once was: every row of the table still splits, on two spaces or more, into its cells.
+columns_build="$work/columns_build"
+stand_in_kit "$columns_build"
+cat >"$columns_build/test_02_segment_triangle" <<'EOF2'
+#!/usr/bin/env python3
+import json, os
+failure = {"title": "random case 7 of 1000", "input": "in", "expected": "yes", "got": "no", "why": "w", "replay": "q:1",
+           "shrinks": 0}
+query = {"test_case": "t", "query": "q", "kind": "random", "cases": 1000, "passed": 791, "ambiguous": 0, "failed": 209,
+         "not_implemented": "", "error": "", "failure": failure}
+with open(os.environ["LABKIT_REPORT"], "w") as f:
+    json.dump({"seed": "hidden", "cases_per_query": 1000, "finished": True, "queries": [query],
+               "test_cases": [{"name": "t", "tags": [], "passed": False, "ended": True, "failures": [],
+                               "not_implemented": ""}]}, f)
+EOF2
+chmod 755 "$columns_build/test_02_segment_triangle"
+cp "$columns_build/test_02_segment_triangle" "$columns_build/test_03_separating_axes"
+mkdir -p "$work/columns/labs/03_separating_axes" "$work/columns/$(dirname $lab02)"
+echo ': x' >"$work/columns/$lab02" && echo ': x' >"$work/columns/labs/03_separating_axes/separating_axes.cpp"
+LABKIT_BUILD_DIR="$columns_build" timeout 300 "$runner" grade "$work/columns" --out "$work/columns_out" --seed "$secret" \
+  --labs 02 03 --jobs 2 --timeout 20 --sandbox "$sandbox" >"$work/columns.log" 2>&1 || fail "grading the columns failed"
+python3 - "$work/columns_out/report.txt" <<'PY' || fail "report.txt's columns: see above"
+import re, sys
+problems, rows = [], 0
+for line in open(sys.argv[1], encoding="utf-8").read().split("\n"):
+    cells = re.split(r" {2,}", line.strip())
+    if re.match(r"  Lab \d\d  ", line):
+        rows += 1
+        if len(cells) != 4 or not re.fullmatch(r"\d+(\.\d+)? / \d+", cells[3]): problems.append(f"lab row {cells}")
+    elif re.match(r"    \d+ +L\d\dS\d", line):
+        rows += 1
+        if len(cells) != 6 or not re.fullmatch(r"\d+(\.\d+)? / \d+", cells[4]) or not re.fullmatch(r"\d+\.\d{3} s", cells[5]):
+            problems.append(f"step row {cells}")
+    elif line.startswith("  Total"):
+        rows += 1
+        if len(cells) != 3 or not re.fullmatch(r"\d+(\.\d+)? / \d+", cells[1]): problems.append(f"total row {cells}")
+text = open(sys.argv[1], encoding="utf-8").read()
+if "Lab 03  Separating axes: oriented boxes, triangle pairs, moving boxes  " not in text: problems.append("lab 03's title is cut")
+if "11.86 / 15  " not in text: problems.append("no partial score of 11.86 / 15")
+if rows < 17: problems.append(f"{rows} table rows, expected 2 labs, 14 steps and the total")
+print("\n".join(problems) or "report columns: fine")
+sys.exit(1 if problems else 0)
+PY
 
 # ---- 4. names that cannot be told apart: nothing is graded --------------------------
 # refused NAME WHAT...: grading the class folder NAME exits 2 at once, writes nothing,

@@ -77,14 +77,15 @@ inject escape test_segment_triangle '  { static bool tried = false; if (!tried) 
 sed -i "s|KIT/|$kit/|g" "$subs/escape/$lab02"
 # Stealing the secret seed before the tests start: the environment, the seed file, this
 # process's and the sandbox's and the grader's command lines and environments. If it
-# finds the seed, segment_plane aborts (and this suite fails).
+# finds the secret, or can open the seed file at all (it holds this submission's own
+# seed, drawn from the secret: runner/seed.h), segment_plane aborts (and this suite fails).
 inject steal_seed segment_plane '  if (stolen) std::abort();'
 { printf '#include <cstdio>\n#include <cstdlib>\n#include <cstring>\n#include <string>\n#include <unistd.h>\nnamespace {\nbool seed_stolen() {\n'
   printf '  const char* marker = "hostile suite secret";\n'
   printf '  auto holds = [&](const char* path) { std::FILE* f = std::fopen(path, "rb"); if (!f) return false; std::string text; char b[4096]; std::size_t n;\n'
   printf '    while ((n = std::fread(b, 1, sizeof b, f)) > 0) text.append(b, n); std::fclose(f); return text.find(marker) != std::string::npos; };\n'
   printf '  if (const char* v = std::getenv("LABKIT_SEED")) if (std::strstr(v, marker)) return true;\n'
-  printf '  if (const char* v = std::getenv("LABKIT_SEED_FILE")) if (holds(v)) return true;\n'
+  printf '  if (const char* v = std::getenv("LABKIT_SEED_FILE")) if (std::FILE* f = std::fopen(v, "rb")) { std::fclose(f); return true; }\n'
   printf '  for (const char* p : {"/proc/self/environ", "/proc/self/cmdline", "/proc/1/environ", "/proc/1/cmdline"}) if (holds(p)) return true;\n'
   printf '  for (int pid : {int(getppid()), 2, 3}) for (const char* what : {"cmdline", "environ"}) {\n'
   printf '    char path[64]; std::snprintf(path, sizeof path, "/proc/%%d/%%s", pid, what); if (holds(path)) return true; }\n'
@@ -185,16 +186,18 @@ inject oracle_by_name segment_plane '  if (oracle_reachable()) std::abort();'
   printf '  return found;\n}\n}  // namespace\n'
   cat "$subs/oracle_by_name/$lab02"; } >"$work/oracle.cpp" && mv "$work/oracle.cpp" "$subs/oracle_by_name/$lab02"
 # A .preinit_array function (runs before any initialiser; the audit refused only numbered
-# .init_array sections) that looks for the seed file and the seed and prints what it
-# finds, hex-encoded (redaction matched only the plain text).
+# .init_array sections) that looks for the seed file and the secret and prints what it
+# finds, hex-encoded (redaction matched only the plain text); opening the seed file at
+# all counts as finding the seed (it holds the submission's own, runner/seed.h).
 inject preinit_seed segment_plane '  if (seed_found) std::abort();'
 { printf '#include <cstdio>\n#include <cstdlib>\n#include <fstream>\n#include <iterator>\n#include <string>\nnamespace {\nbool seed_found = false;\n'
   printf 'void look(int, char**, char** env) {\n  std::string seen;\n'
   printf '  for (char** e = env; e && *e; ++e) seen += std::string(*e) + "\\n";\n'
-  printf '  if (const char* p = std::getenv("LABKIT_SEED_FILE")) { std::ifstream f(p); seen += std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>()); }\n'
+  printf '  bool opened = false;\n'
+  printf '  if (const char* p = std::getenv("LABKIT_SEED_FILE")) { std::ifstream f(p); opened = bool(f); seen += std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>()); }\n'
   printf '  for (const char* p : {"/proc/self/environ", "/proc/1/environ"}) { std::ifstream f(p); seen += std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>()); }\n'
   printf '  for (unsigned char c : seen) std::printf("%%02x", c);\n  std::printf("\\n");\n'
-  printf '  seed_found = seen.find("hostile suite secret") != std::string::npos;\n}\n'
+  printf '  seed_found = opened || seen.find("hostile suite secret") != std::string::npos;\n}\n'
   printf '__attribute__((section(".preinit_array"), used)) void (*early_look)(int, char**, char**) = look;\n}  // namespace\n'
   cat "$subs/preinit_seed/$lab02"; } >"$work/preinit.cpp" && mv "$work/preinit.cpp" "$subs/preinit_seed/$lab02"
 # The kit's own programs: the reference's answer program (exec it, and lab 02 would be the

@@ -5,14 +5,18 @@
 // runner/untrusted.cpp alone.
 #define CATCH_CONFIG_MAIN  // Catch2 2: main() is here; Catch2 3: it is Catch2::Catch2WithMain's
 #include "runner/untrusted.h"
+#include "runner/seed.h"
 
 #include "common/harness/catch.h"
 #include "common/text.h"
 
+#include <array>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <string>
+#include <vector>
 
 #include <sys/stat.h>
 #include <unistd.h>
@@ -94,6 +98,46 @@ TEST_CASE("safe_text is idempotent", "[kit][untrusted]") {
     CHECK(safe_text(safe_text(s)) == safe_text(s));
 }
 
+// Every way a reader may start a line: newline, CR, CR LF, VT, FF, the C0 separators,
+// NEL, U+2028 and U+2029 (Python's str.splitlines, which the grading tests read with).
+std::vector<std::string> reader_lines(const std::string& text) {
+  static const std::vector<std::string> breaks = {"\r\n", "\n",   "\r",       "\v",           "\f",          "\x1c",
+                                                  "\x1d", "\x1e", "\xC2\x85", "\xE2\x80\xA8", "\xE2\x80\xA9"};
+  std::vector<std::string> lines;
+  std::string line;
+  for (std::size_t i = 0; i < text.size();) {
+    bool broke = false;
+    for (const std::string& b : breaks)
+      if (text.compare(i, b.size(), b) == 0) {
+        lines.push_back(line);
+        line.clear();
+        i += b.size();
+        broke = true;
+        break;
+      }
+    if (!broke) line += text[i++];
+  }
+  lines.push_back(line);
+  return lines;
+}
+
+TEST_CASE("quoted student text: every line a reader sees starts with the quote", "[kit][untrusted]") {
+  const std::string forged = "  Total 700 / 700";
+  for (const std::string separator :
+       {"\n", "\r", "\r\n", "\v", "\f", "\x1e", "\xC2\x85", "\xE2\x80\xA8", "\xE2\x80\xA9", "\n\n"}) {
+    const std::string text = "error: static assertion failed: x" + separator + forged + separator;
+    const std::string block = runner::quoted_lines(text, "  ");
+    for (const std::string& line : reader_lines(block)) CHECK(line.rfind("  |", 0) == 0);
+    const std::string labelled = "why       " + runner::quoted_after_label(text, "          ");
+    const std::vector<std::string> lines = reader_lines(labelled);
+    CHECK(lines.front().rfind("why       error: static assertion failed", 0) == 0);
+    for (std::size_t k = 1; k < lines.size(); ++k) CHECK(lines[k].rfind("          |", 0) == 0);
+  }
+  CHECK(runner::quoted_lines("one\n\ntwo\n") == "| one\n|\n| two");
+  CHECK(runner::quoted_lines("") == "|");
+  CHECK(runner::quoted_after_label("one line", "  ") == "one line");
+}
+
 TEST_CASE("a quoted word is one word, literally, for sh", "[kit][untrusted]") {
   for (const std::string s : {"q:1,2", "it's", "'; touch /tmp/x; '", "$(id) `id` $HOME \\ \" *", "a\nb", "''''", ""})
     CHECK(through_the_shell(shell_quote(s)) == s);
@@ -135,4 +179,39 @@ TEST_CASE("files left behind: only a regular file of a sane size is read", "[kit
   CHECK(runner::copy_untrusted_file((dir / "fifo").string(), (dir / "copy2").string(), 100) ==
         "is a FIFO, not a regular file");
   fs::remove_all(dir);
+}
+
+namespace {
+std::string hex(const std::array<std::uint8_t, 32>& digest) {
+  static const char* const digits = "0123456789abcdef";
+  std::string out;
+  for (const std::uint8_t b : digest) out += std::string{digits[b >> 4], digits[b & 15]};
+  return out;
+}
+}  // namespace
+
+TEST_CASE("SHA-256: the standard's test vectors", "[kit][seed]") {
+  CHECK(hex(runner::sha256("")) == "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  CHECK(hex(runner::sha256("abc")) == "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  CHECK(hex(runner::sha256("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq")) ==
+        "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  CHECK(hex(runner::sha256(std::string(1000000, 'a'))) ==
+        "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+TEST_CASE("a submission's seed: its own files, the secret and the lab, nothing else", "[kit][seed]") {
+  const std::map<std::string, std::string> a = {{"labs/02_x/x.cpp", "int f() { return 1; }"}};
+  const std::map<std::string, std::string> b = {{"labs/02_x/x.cpp", "int f() { return 2; }"}};
+  const std::string seed = runner::submission_seed("secret phrase", "02", a);
+  CHECK(seed == runner::submission_seed("secret phrase", "02", a));  // a regrade draws the same cases
+  CHECK(seed != runner::submission_seed("secret phrase", "02", b));  // a changed file draws new ones
+  CHECK(seed != runner::submission_seed("secret phrase", "03", a));
+  CHECK(seed != runner::submission_seed("secret phrasf", "02", a));
+  // Parts cannot run together: the secret "ab" and lab "c" are not the secret "a" and lab "bc".
+  CHECK(runner::submission_seed("ab", "c", a) != runner::submission_seed("a", "bc", a));
+  // Decimal, at most 19 digits: the harness reads it as the number (parse_seed).
+  CHECK(!seed.empty());
+  CHECK(seed.size() <= 19);
+  CHECK(seed.find_first_not_of("0123456789") == std::string::npos);
+  CHECK(seed.find("secret") == std::string::npos);
 }
