@@ -18,7 +18,7 @@ namespace runner {
 struct FakeOptions {
   std::string lab;      // "02"
   std::string answers;  // nothing, random, garbage or examples
-  int cases = 300;      // random cases per query
+  int cases = 1000;     // random cases per query
 };
 
 // 0 when the lab's bounds hold; else 1, with the steps that broke them.

@@ -60,7 +60,8 @@ def write(queries):
 
 def query(name, passed, failure=None):
     return {"test_case": "t", "query": name, "kind": "random", "cases": 1, "passed": passed, "ambiguous": 0,
-            "failed": 1 - passed, "not_implemented": "", "error": "", "failure": failure}
+            "failed": 1 - passed, "trivial": 0, "trivial_passed": 0, "decisive": 1, "decisive_passed": passed,
+            "not_implemented": "", "error": "", "failure": failure}
 
 def failure(title, input, got, why, replay):
     return {"title": title, "input": input, "expected": "yes", "got": got, "why": why, "replay": replay, "shrinks": 0}
@@ -123,7 +124,7 @@ student() { mkdir -p "$subs/$1/$(dirname $lab02)" && printf '%s\n' "$2" >"$subs/
 # disk) and the grader's under /tmp. Then they end well.
 tamper() { printf 'for report in "${LABKIT_REPORT:-}" ../report.json ../*/report.json /tmp/labkit-grade.*/*/lab02/*/report.json; do %s; done 2>/dev/null; :' "$1"; }
 crafted="segment_plane:1' ; touch $owned ; '"
-forged='{"seed": "hidden", "cases_per_query": 1, "finished": true, "test_cases": [{"name": "t", "tags": [], "passed": false, "ended": true, "failures": [], "not_implemented": ""}], "queries": [{"test_case": "t", "query": "segment_plane", "kind": "random", "cases": 1, "passed": 0, "ambiguous": 0, "failed": 1, "not_implemented": "", "error": "", "failure": {"title": "t", "input": "i", "expected": "e", "got": "g", "why": "w", "replay": "'"$crafted"'", "shrinks": 0}}]}'
+forged='{"seed": "hidden", "cases_per_query": 1, "finished": true, "test_cases": [{"name": "t", "tags": [], "passed": false, "ended": true, "failures": [], "not_implemented": ""}], "queries": [{"test_case": "t", "query": "segment_plane", "kind": "random", "cases": 1, "passed": 0, "ambiguous": 0, "failed": 1, "trivial": 0, "trivial_passed": 0, "decisive": 1, "decisive_passed": 0, "not_implemented": "", "error": "", "failure": {"title": "t", "input": "i", "expected": "e", "got": "g", "why": "w", "replay": "'"$crafted"'", "shrinks": 0}}]}'
 
 student passing ': nothing to add'
 # Two wrong answers breaking one rule on other numbers: one concept on the class page.
@@ -497,7 +498,7 @@ sys.exit(1 if problems else 0)
 PY
 
 # ---- report.txt's columns never touch ------------------------------------------------
-# Lab 03's title is long, and a partial score ("11.86 / 15") is as wide as its column
+# Lab 03's title is long, and a partial score ("11.47 / 15") is as wide as its column
 # once was: every row of the table still splits, on two spaces or more, into its cells.
 columns_build="$work/columns_build"
 stand_in_kit "$columns_build"
@@ -507,6 +508,7 @@ import json, os
 failure = {"title": "random case 7 of 1000", "input": "in", "expected": "yes", "got": "no", "why": "w", "replay": "q:1",
            "shrinks": 0}
 query = {"test_case": "t", "query": "q", "kind": "random", "cases": 1000, "passed": 791, "ambiguous": 0, "failed": 209,
+         "trivial": 0, "trivial_passed": 0, "decisive": 1000, "decisive_passed": 791,
          "not_implemented": "", "error": "", "failure": failure}
 with open(os.environ["LABKIT_REPORT"], "w") as f:
     json.dump({"seed": "hidden", "cases_per_query": 1000, "finished": True, "queries": [query],
@@ -536,7 +538,7 @@ for line in open(sys.argv[1], encoding="utf-8").read().split("\n"):
         if len(cells) != 3 or not re.fullmatch(r"\d+(\.\d+)? / \d+", cells[1]): problems.append(f"total row {cells}")
 text = open(sys.argv[1], encoding="utf-8").read()
 if "Lab 03  Separating axes: oriented boxes, triangle pairs, moving boxes  " not in text: problems.append("lab 03's title is cut")
-if "11.86 / 15  " not in text: problems.append("no partial score of 11.86 / 15")
+if "11.47 / 15  " not in text: problems.append("no partial score of 11.47 / 15")
 if rows < 17: problems.append(f"{rows} table rows, expected 2 labs, 14 steps and the total")
 print("\n".join(problems) or "report columns: fine")
 sys.exit(1 if problems else 0)
