@@ -12,8 +12,12 @@
 
 #include "common/harness/report.h"
 #include "common/not_implemented.h"
+#include "common/oracle/not_finite.h"
+#include "common/protocol/answerer.h"
 
 namespace {
+
+constexpr const char* kYourCode = "your code ";
 
 // Feeds report.h with what Catch knows: test cases, and failed assertions in words.
 #if LABKIT_CATCH2_MAJOR == 3
@@ -43,6 +47,14 @@ class ReportListener : public ListenerBase {
   AssertionEnded assertionEnded(const Catch::AssertionStats& stats) override {
     const Catch::AssertionResult& result = stats.assertionResult;
     if (result.isOk()) return AssertionEnded(true);
+    // An exception that ended the test case and came from neither the code under test
+    // (the translators below mark those) nor a stub is the kit's own failure: the step
+    // is not graded, and says whose failure it was.
+    if (result.getResultType() == Catch::ResultWas::ThrewException) {
+      const std::string what(result.getMessage());
+      if (what.rfind(kYourCode, 0) != 0 && what.find("not implemented yet (") == std::string::npos)
+        labkit::check::report::kit_error("an exception ended the test case early: " + what);
+    }
     std::string message;
     for (const Catch::MessageInfo& info : stats.infoMessages) message += info.message + "\n";
     if (result.hasExpression())
@@ -66,6 +78,17 @@ CATCH_REGISTER_LISTENER(ReportListener)
 // A stub reached outside the harness (a test calling student code directly) still reads
 // "not implemented yet", which is how the runner recognises it.
 CATCH_TRANSLATE_EXCEPTION(const labkit::NotImplemented& e) { return e.what(); }
+// What the code under test did, reached outside the harness: marked as its own.
+CATCH_TRANSLATE_EXCEPTION(const labkit::remote::Failed& e) { return kYourCode + std::string(e.what()); }
+CATCH_TRANSLATE_EXCEPTION(const labkit::remote::Threw& e) {
+  return kYourCode + std::string("threw an exception: ") + e.what();
+}
+CATCH_TRANSLATE_EXCEPTION(const labkit::remote::Rejected& e) {
+  return kYourCode + std::string("rejected a valid input: ") + e.what();
+}
+CATCH_TRANSLATE_EXCEPTION(const oracle::NotFinite& e) {
+  return kYourCode + std::string("answered a number that is not finite: ") + e.what();
+}
 
 int main(int argc, char* argv[]) {
   // The LABKIT_* settings were read (and a graded run's seed wiped from the environment)

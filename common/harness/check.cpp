@@ -287,6 +287,12 @@ void test_case_ended(bool passed) {
   detail::save_report();
 }
 
+void kit_error(const std::string& what) {
+  detail::QueryReport& entry = detail::entry("(the test case)", "examples");
+  detail::kit_error(entry, what);
+  detail::save_report();
+}
+
 void session_finished() {
   detail::judge_remaining_examples();
   run_finished = true;

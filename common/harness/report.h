@@ -16,6 +16,9 @@ using TestCase = labkit::report::TestCase;
 void test_case_started(const std::string& name, const std::vector<std::string>& tags);
 void assertion_failed(const std::string& message);
 void test_case_ended(bool passed);
+// An exception of the kit's own ended a test case early: its remaining queries never ran,
+// so the report carries a kit error (check.h's kit_error) and the step is not graded.
+void kit_error(const std::string& what);
 // The whole session returned. A report without it comes from a process that ended early
 // (exit() in the code under test, a crash), whatever its exit status.
 void session_finished();

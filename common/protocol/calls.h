@@ -17,7 +17,6 @@
 #include "common/protocol/answerer.h"
 #include "common/protocol/wire.h"
 
-#include <cmath>
 #include <functional>
 #include <map>
 #include <string>
@@ -71,53 +70,9 @@ namespace detail {
 wire::Reader open_reply(const std::string& id, const Response& response);
 }  // namespace detail
 
-// Every number of an answer is finite: no contract answers NaN or an infinity, and the
-// exact oracle cannot take one. Where the first one is not ("point.x"), or "".
-template <class T> std::string non_finite(const T& x, const std::string& path);
-template <class T> std::string non_finite_in(const std::vector<T>& xs, const std::string& path) {
-  for (std::size_t i = 0; i < xs.size(); ++i)
-    if (std::string at = non_finite(xs[i], path + "[" + std::to_string(i) + "]"); !at.empty()) return at;
-  return {};
-}
-template <class T> std::string non_finite(const T& x, const std::string& path) {
-  if constexpr (std::is_floating_point_v<T>) {
-    return std::isfinite(x) ? std::string() : path.empty() ? "the answer" : path;
-  } else if constexpr (wire::IsVector<T>::value) {
-    return non_finite_in(x, path);
-  } else if constexpr (wire::IsArray<T>::value) {
-    return non_finite_in(std::vector<typename T::value_type>(x.begin(), x.end()), path);
-  } else if constexpr (wire::IsMatrix<T>::value) {
-    for (int i = 0; i < x.size(); ++i)
-      if (!std::isfinite(x.data()[i])) return path.empty() ? "the answer" : path;
-    return {};
-  } else if constexpr (std::is_same_v<T, RigidTransform>) {
-    return non_finite(x.matrix(), path);
-  } else if constexpr (wire::HasFieldList<T>::value) {
-    std::string at;
-    fields(const_cast<T&>(x), [&](const char* name, const auto& field) {
-      if (at.empty()) at = non_finite(field, path.empty() ? std::string(name) : path + "." + name);
-    });
-    return at;
-  } else {
-    return {};
-  }
-}
-// Throws the case's failure when the answer holds a number that is not finite.
-template <class T> void require_finite(const char* id, const T& answer, const std::string& path) {
-  const std::string at = non_finite(answer, path);
-  if (!at.empty())
-    throw Failed("a number that is not finite (NaN or an infinity) in " + at,
-                 std::string("every number of an answer is finite: no rule of the header gives NaN or an "
-                             "infinity, and yours has one in ") +
-                     at + " (the answer to " + id + ")");
-}
-
 // A non-const reference argument comes back with the answer; the others only go.
 template <class P, class A> void get_out(wire::Reader& r, A& a) {
   if constexpr (is_out<P>) wire::get(r, a);
-}
-template <class P, class A> void check_out(const char* id, const A& a) {
-  if constexpr (is_out<P>) require_finite(id, a, "the argument it changes");
 }
 template <class P, class A> void put_out(wire::Writer& w, const A& a) {
   if constexpr (is_out<P>) wire::put(w, a);
@@ -139,14 +94,11 @@ template <class R, class... P> R call(const char* id, P... args) {
     if constexpr (std::is_void_v<R>) {
       (get_out<P>(r, args), ...);
       if (!r.done()) throw wire::Error("extra bytes after the answer");
-      (check_out<P>(id, args), ...);
     } else {
       R result{};
       wire::get(r, result);
       (get_out<P>(r, args), ...);
       if (!r.done()) throw wire::Error("extra bytes after the answer");
-      require_finite(id, result, "");
-      (check_out<P>(id, args), ...);
       return result;
     }
   } catch (const wire::Error& e) {
