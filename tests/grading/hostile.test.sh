@@ -63,6 +63,12 @@ inject endless_loop point_in_triangle_edges '  for (volatile unsigned spin = 0;;
 inject allocate_50gb all_hits '  { std::vector<char> huge(std::size_t(50) << 30); huge[12345] = 1; }'
 inject print_100mb segment_plane '  { static bool once = false; if (!once) { once = true; for (int i = 0; i < 1600000; ++i) std::puts("flooding the grader with sixty-four bytes of output per line........"); } }'
 inject exit_0 any_hit '  std::exit(0);'
+# An answer frame declaring 1 GiB, on every 500th call of a process: refused when its
+# length is read, it costs the call it answered; it once ran the judge out of memory.
+inject giant_frame any_hit '  { static int calls = 0; if (++calls % 500 == 0) {
+    unsigned long long n = 1ull << 30; if (write(4, &n, sizeof n) < 0) {} for (;;) pause(); } }'
+# Every function its default answer (no hit, false, zeros): a file that does nothing.
+reference "$subs/defaults" && sed -E 's/not_implemented\([^;]*\);/return {};/' "$kit/$lab02" >"$subs/defaults/$lab02"
 # Writing outside its folder: the kit's tree, /tmp, the grader's folders, the home
 # folder (the suite then checks that none of those files exists); reading the reference
 # or the kit's git history (the step aborts if it can, and this suite fails); signalling
@@ -364,6 +370,10 @@ expect endless_loop graded 2=failing 8="failing*"
 expect allocate_50gb graded 5="failing*" 8="failing*"
 expect print_100mb graded 1="too much output"
 expect exit_0 graded 5="failing*"
+expect giant_frame graded 5="failing*"
+expect defaults graded 1=failing 2=failing 3=failing 4=failing 5=failing 6=failing 7=failing 8=failing
+grep -q "more than any answer to this call can hold" "$out/giant_frame/report.txt" ||
+  fail "giant_frame: the report does not say the answer was larger than any answer to its call"
 expect all_or_nothing graded 1=failing
 expect latin1_crash graded 1=failing
 expect latin1_compile "does not compile"
@@ -572,6 +582,7 @@ declare -A fault=(
   [reference]="none: the reference itself" [empty]="empty submission" [stubs]="the stubs, unchanged"
   [compile_error]="compile error in lab 02" [segfault]="segfault (null write)" [endless_loop]="endless loop"
   [allocate_50gb]="allocating 50 GB" [print_100mb]="printing 100 MB" [exit_0]="exit(0) in a call"
+  [giant_frame]="an answer frame declaring 1 GiB" [defaults]="every function its default answer"
   [escape]="writing outside its folder, kill(-1)" [extra_files]="extra files replacing a test, headers, CMake, manifest"
   [steal_seed]="reading the secret seed" [early_constructor]="constructor before the harness"
   [symlink]="lab file is a symlink to the reference" [include_reference]="#include of the reference"
@@ -594,7 +605,7 @@ declare -A fault=(
     steal_seed early_constructor symlink include_reference own_main partial all_or_nothing latin1_crash latin1_compile \
     fifo_report symlink_report queries_5 finished_yes crafted_token crafted_inflight labs bad_members bad_members_tar bomb \
     forge_report weak_rename oracle_by_name preinit_seed kit_programs include_oracle include_cgal include_numbers \
-    inherited_fds udp_out; do
+    inherited_fds udp_out giant_frame defaults; do
     [ -f "$out/$name/steps.tsv" ] || continue
     seconds=$(grep -oE '\(([0-9.]+) s\)$' "$out/$name/report.txt" | tail -n 1 | tr -d '() s')
     awk -F'\t' -v f="${fault[$name]}" -v t="$seconds" 'FNR == 1 { next }

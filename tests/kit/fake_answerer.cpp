@@ -16,6 +16,7 @@
 #include "common/protocol/calls.h"
 #include "common/text.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <limits>
@@ -64,9 +65,16 @@ template <class T> T integer() {
   return T(draw(8));
 }
 
+// Lists are short, and in garbage mode now and then long; an answer holds at most
+// kElements elements in all (lists of lists would otherwise multiply their lengths).
+constexpr std::size_t kElements = 3000;
+std::size_t elements_left = kElements;
+
 std::size_t length() {
-  if (fake.mode == Mode::garbage && draw(8) == 0) return 5000 + draw(20000);
-  return draw(6);
+  std::size_t n = fake.mode == Mode::garbage && draw(8) == 0 ? 500 + draw(2500) : draw(6);
+  n = std::min(n, elements_left);
+  elements_left -= n;
+  return n;
 }
 
 template <class T> void fill(T& x);
@@ -114,6 +122,7 @@ void answer(R (*function)(P...), const std::string& id, wire::Reader& in, wire::
   if (!in.done()) throw wire::Error("extra bytes after the arguments");
   if constexpr (!std::is_void_v<R>) {
     R result{};
+    elements_left = kElements;
     if (fake.mode == Mode::random || fake.mode == Mode::garbage) fill(result);
     wire::put(out, result);
   }
