@@ -129,6 +129,10 @@ QueryReport& entry(const std::string& test, const std::string& query, const std:
   return q;
 }
 
+int judging = 0;
+Judging::Judging() { ++judging; }
+Judging::~Judging() { --judging; }
+
 Outcome kit_error(QueryReport& report, const std::string& what) {
   const std::string text = "kit error: the kit's own judge failed here, not your code (please report it): " + what;
   if (report.error.empty()) report.error = text;
@@ -314,6 +318,18 @@ extern "C" void on_fatal_signal(int signal) {
   std::raise(signal);
 }
 
+// GMP meets a NaN or an infinity by raising SIGFPE and then aborting (its
+// __gmp_invalid_operation). kernel.h's checks stop the numbers they see first; any other
+// way a non-finite number reaches exact arithmetic (an implicit conversion in CGAL's lazy
+// numbers) ends here. Raised by a call (si_code <= 0), it is synchronous, inside a judge
+// (detail::Judging), so it is thrown back to run_judge as oracle::NotFinite: that case
+// fails, and the judge's process lives. A fault of the processor (an integer division by
+// zero) is the kit's own crash, reported as ever.
+void on_floating_point_signal(int signal, siginfo_t* info, void*) {
+  if (info->si_code <= 0 && detail::judging > 0) throw oracle::NotFinite();
+  on_fatal_signal(signal);
+}
+
 void install_signal_handlers() {
   if (const char* path = std::getenv(variable::inflight); path && *path) {
     const int fd = open(path, O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0600);
@@ -325,13 +341,19 @@ void install_signal_handlers() {
   stack.ss_sp = alternate_stack;
   stack.ss_size = sizeof alternate_stack;
   sigaltstack(&stack, nullptr);
-  for (int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTERM, SIGXCPU}) {
+  for (int s : {SIGSEGV, SIGBUS, SIGILL, SIGABRT, SIGTERM, SIGXCPU}) {
     struct sigaction action {};
     action.sa_handler = on_fatal_signal;
     action.sa_flags = SA_ONSTACK;
     sigemptyset(&action.sa_mask);
     sigaction(s, &action, nullptr);
   }
+  // On the thread's own stack, and not blocked while it runs: it may leave by throwing.
+  struct sigaction action {};
+  action.sa_sigaction = on_floating_point_signal;
+  action.sa_flags = SA_SIGINFO | SA_NODEFER;
+  sigemptyset(&action.sa_mask);
+  sigaction(SIGFPE, &action, nullptr);
 }
 
 }  // namespace report

@@ -159,6 +159,12 @@ using QueryReport = labkit::report::Query;
 
 QueryReport& entry(const std::string& query, const std::string& kind);
 QueryReport& entry(const std::string& test_case, const std::string& query, const std::string& kind);
+// While a judge runs (check.cpp's SIGFPE handler turns GMP's NaN abort into NotFinite there).
+extern int judging;
+struct Judging {
+  Judging();
+  ~Judging();
+};
 // A failure of the kit itself (never the student's): the query's report says so, and the
 // step is not graded (runner/step.cpp).
 Outcome kit_error(QueryReport& report, const std::string& what);
@@ -190,6 +196,7 @@ inline std::string with_rule(const std::string& query, const std::string& what) 
 // kit's own failure, never the student's: the query's report says so (kit_error).
 template <class Input, class Judge> Outcome run_judge(Judge& judge, const Input& input, QueryReport& report) {
   try {
+    const Judging judging;
     return judge(input);
   } catch (const remote::Deferred&) {
     throw;

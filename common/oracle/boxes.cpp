@@ -1,4 +1,5 @@
 #include "common/oracle/boxes.h"
+#include "common/oracle/not_finite.h"
 
 #include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
@@ -22,7 +23,7 @@ using Exact = CGAL::Mpzf;
 
 template <class NT> using V3 = std::array<NT, 3>;
 
-template <class NT> V3<NT> vec(const Vec3& v) { return {NT(v.x()), NT(v.y()), NT(v.z())}; }
+template <class NT> V3<NT> vec(const Vec3& v) { return {number<NT>(v.x()), number<NT>(v.y()), number<NT>(v.z())}; }
 template <class NT> NT dot(const V3<NT>& u, const V3<NT>& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; }
 template <class NT> V3<NT> cross(const V3<NT>& u, const V3<NT>& v) {
   return {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
@@ -45,7 +46,7 @@ template <class NT> struct ExactBox {
       for (int d = 0; d < 3; ++d) {
         NT x = c[d];
         for (int k = 0; k < 3; ++k) {
-          const NT step = NT(box.half_extents[k]) * axes[k][d];
+          const NT step = number<NT>(box.half_extents[k]) * axes[k][d];
           x = (i >> k) & 1 ? x + step : x - step;
         }
         corners[i][d] = x;
@@ -193,15 +194,16 @@ bool meet(const Box& box_a, const Vec3& va, const Box& box_b, const Vec3& vb, do
           Fraction<NT>* first = nullptr, Fraction<NT>* last = nullptr) {
   const ExactBox<NT> a(box_a), b(box_b);
   const AxisSet axes(box_a, box_b);
-  const V3<NT> relative = {NT(vb.x()) - NT(va.x()), NT(vb.y()) - NT(va.y()), NT(vb.z()) - NT(va.z())};
-  Fraction<NT> lower{NT(from), NT(1)}, upper{NT(to), NT(1)};
+  const V3<NT> relative = {number<NT>(vb.x()) - number<NT>(va.x()), number<NT>(vb.y()) - number<NT>(va.y()),
+                           number<NT>(vb.z()) - number<NT>(va.z())};
+  Fraction<NT> lower{number<NT>(from), number<NT>(1)}, upper{number<NT>(to), number<NT>(1)};
   if (upper.num < lower.num) return false;
   for (int k = 0; k < axes.size; ++k) {
     const V3<NT> axis = axes.exact<NT>(k);
     NT lo_a, hi_a, lo_b, hi_b;
     a.project(axis, lo_a, hi_a);
     b.project(axis, lo_b, hi_b);
-    const NT extra = NT(slack) * NT(axes.rounded(k).norm());
+    const NT extra = number<NT>(slack) * number<NT>(axes.rounded(k).norm());
     const NT speed = dot(relative, axis);  // d/dt of B's projection minus A's
     const NT alphas[2] = {hi_a - lo_b + extra, hi_b - lo_a + extra};
     const NT betas[2] = {-speed, speed};

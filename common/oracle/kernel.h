@@ -20,12 +20,9 @@ using FT = Epeck::FT;
 
 // Every double enters the exact world through these: a NaN or an infinity throws
 // NotFinite (not_finite.h) instead of making GMP abort the judge's process.
-inline double finite(double x) {
-  if (!std::isfinite(x)) throw NotFinite();
-  return x;
-}
 inline FT ft(double x) { return FT(finite(x)); }
 inline const FT& ft(const FT& x) { return x; }
+using oracle::finite;
 inline const labkit::Vec3& finite(const labkit::Vec3& v) {
   if (!v.allFinite()) throw NotFinite();
   return v;

@@ -5,6 +5,7 @@
 // harness fails that case, saying so (common/harness/check.h).
 #pragma once
 
+#include <cmath>
 #include <stdexcept>
 
 namespace oracle {
@@ -12,5 +13,13 @@ namespace oracle {
 struct NotFinite : std::domain_error {
   NotFinite() : std::domain_error("a number that is not finite (NaN or an infinity) reached the exact oracle") {}
 };
+
+// x, when it is finite; else it throws NotFinite.
+inline double finite(double x) {
+  if (!std::isfinite(x)) throw NotFinite();
+  return x;
+}
+// The number type NT (a rational, an interval) of a double, checked first.
+template <class NT> NT number(double x) { return NT(finite(x)); }
 
 }  // namespace oracle

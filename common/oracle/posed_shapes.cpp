@@ -1,4 +1,5 @@
 #include "common/oracle/posed_shapes.h"
+#include "common/oracle/not_finite.h"
 
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
@@ -34,8 +35,9 @@ template <class NT> V<NT> apply(const RigidTransform& pose, const labkit::Vec3& 
   const auto& m = pose.matrix();
   V<NT> r;
   for (int i = 0; i < 3; ++i) {
-    r[i] = NT(m(i, 0)) * NT(x[0]) + NT(m(i, 1)) * NT(x[1]) + NT(m(i, 2)) * NT(x[2]);
-    if (translate) r[i] += NT(m(i, 3));
+    r[i] = number<NT>(m(i, 0)) * number<NT>(x[0]) + number<NT>(m(i, 1)) * number<NT>(x[1]) +
+           number<NT>(m(i, 2)) * number<NT>(x[2]);
+    if (translate) r[i] += number<NT>(m(i, 3));
   }
   return r;
 }
@@ -53,7 +55,7 @@ Relative<NT> relative(const Sphere& a, const RigidTransform& pose_a, const Box& 
   r.w = apply<NT>(pose_a, a.center, true) - apply<NT>(pose_b, b.center, true);
   for (int k = 0; k < 3; ++k) {
     const V<NT> axis = apply<NT>(pose_b, b.axes.col(k), false);
-    r.u[k] = NT(b.half_extents[k]) * axis;
+    r.u[k] = number<NT>(b.half_extents[k]) * axis;
   }
   return r;
 }
@@ -87,7 +89,7 @@ template <class NT, class Skip, class Visit> void candidates(const Relative<NT>&
     if (CGAL::is_zero(gram)) continue;      // a flat face: its edges stand in for it
     const V<NT> n = cross(ui, uj);
     for (int sk : signs) {
-      const V<NT> v = w - NT(sk) * u[k];
+      const V<NT> v = w - number<NT>(sk) * u[k];
       const NT height = dot(v, n);
       const NT value = height * height / gram;
       if (skip(value)) continue;
@@ -103,7 +105,7 @@ template <class NT, class Skip, class Visit> void candidates(const Relative<NT>&
     if (CGAL::is_zero(length2)) continue;  // a zero-length edge: its ends stand in for it
     for (int si : signs)
       for (int sj : signs) {
-        const V<NT> v = w - NT(si) * u[(k + 1) % 3] - NT(sj) * u[(k + 2) % 3];
+        const V<NT> v = w - number<NT>(si) * u[(k + 1) % 3] - number<NT>(sj) * u[(k + 2) % 3];
         const NT along = dot(v, u[k]);
         const NT value = dot(v, v) - along * along / length2;
         if (skip(value)) continue;
@@ -114,7 +116,7 @@ template <class NT, class Skip, class Visit> void candidates(const Relative<NT>&
   // Vertices.
   for (int i = 0; i < 8; ++i) {
     V<NT> v = w;
-    for (int k = 0; k < 3; ++k) v = v - NT((i >> k) & 1 ? 1 : -1) * u[k];
+    for (int k = 0; k < 3; ++k) v = v - number<NT>((i >> k) & 1 ? 1 : -1) * u[k];
     if (visit(dot(v, v))) return;
   }
 }
@@ -162,7 +164,7 @@ double rounded(const Rational& x) { return CGAL::to_double(x); }
 bool spheres_overlap(const Sphere& a, const RigidTransform& pose_a, const Sphere& b, const RigidTransform& pose_b) {
   return filtered([&](auto zero) {
     using NT = decltype(zero);
-    const NT reach = NT(a.radius) + NT(b.radius);
+    const NT reach = number<NT>(a.radius) + number<NT>(b.radius);
     return bool(centres_squared<NT>(a, pose_a, b, pose_b) <= reach * reach);
   });
 }
