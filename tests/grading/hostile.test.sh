@@ -63,9 +63,9 @@ inject endless_loop point_in_triangle_edges '  for (volatile unsigned spin = 0;;
 inject allocate_50gb all_hits '  { std::vector<char> huge(std::size_t(50) << 30); huge[12345] = 1; }'
 inject print_100mb segment_plane '  { static bool once = false; if (!once) { once = true; for (int i = 0; i < 1600000; ++i) std::puts("flooding the grader with sixty-four bytes of output per line........"); } }'
 inject exit_0 any_hit '  std::exit(0);'
-# An answer frame declaring 1 GiB, on every 500th call of a process: refused when its
+# An answer frame declaring 1 GiB, on every 100th call of a process: refused when its
 # length is read, it costs the call it answered; it once ran the judge out of memory.
-inject giant_frame any_hit '  { static int calls = 0; if (++calls % 500 == 0) {
+inject giant_frame any_hit '  { static int calls = 0; if (++calls % 100 == 0) {
     unsigned long long n = 1ull << 30; if (write(4, &n, sizeof n) < 0) {} for (;;) pause(); } }'
 # Every function its default answer (no hit, false, zeros): a file that does nothing.
 reference "$subs/defaults" && sed -E 's/not_implemented\([^;]*\);/return {};/' "$kit/$lab02" >"$subs/defaults/$lab02"
