@@ -7,6 +7,7 @@
 #include "bisection.h"
 
 #include "common/fields.h"
+#include "common/given/served.h"
 #include "common/protocol/calls.h"
 
 #include <memory>
@@ -20,8 +21,9 @@ LABKIT_FIELDS(Shape, kind, sphere, box)
 LABKIT_FIELDS(MovingPair, a, motion_a, b, motion_b)
 
 // A motion that writes down every time it is asked for a pose (step 2's example shows
-// the lecture's midpoints with it). In the answerer, the times are recorded there and
-// come back with the answer, into `asked`.
+// the lecture's midpoints with it). Sent to the answerer it is opaque, a number: each
+// pose the code asks for is served by the judge's process (common/given/served.h), which
+// writes the time down there and sends it back with the answer, into `asked`.
 struct RecordingMotion {
   StandardMotion standard;
   std::shared_ptr<std::vector<double>> asked = std::make_shared<std::vector<double>>();
@@ -31,13 +33,44 @@ struct RecordingMotion {
   }
 };
 
+// In the judge's process: the recording motions sent so far, by number.
+inline std::vector<StandardMotion>& recording_motions() {
+  static std::vector<StandardMotion> motions;
+  return motions;
+}
+inline int recording_handle(const StandardMotion& m) {
+  std::vector<StandardMotion>& all = recording_motions();
+  const auto same = [&](const StandardMotion& o) {
+    wire::Writer a, b;
+    wire::put(a, m), wire::put(b, o);
+    return a.bytes() == b.bytes();
+  };
+  for (std::size_t k = 0; k < all.size(); ++k)
+    if (same(all[k])) return int(k);
+  all.push_back(m);
+  return int(all.size()) - 1;
+}
+
+// The judge serves a recording motion's poses, and writes their times down.
+inline void serve_given() {
+  given::serve("recorded_pose", [](wire::Reader& in, wire::Writer& out, given::Served& served) {
+    int handle = -1;
+    double t = 0;
+    wire::get(in, handle), wire::get(in, t);
+    if (handle < 0 || handle >= int(recording_motions().size())) throw wire::Error("no such recording motion");
+    served.samples.push_back(t);
+    wire::put(out, recording_motions()[std::size_t(handle)](t));
+  });
+}
+#define LABKIT_LAB_SERVED ::labkit::lab04::serve_given
+
 }  // namespace labkit::lab04
 
 template <> struct labkit::wire::Codec<labkit::lab04::Motion> {
   static void put(Writer& w, const lab04::Motion& m) {
     if (const auto* recording = m.target<lab04::RecordingMotion>()) {
       wire::put(w, true);
-      wire::put(w, recording->standard);
+      wire::put(w, lab04::recording_handle(recording->standard));
       remote::sample_into(recording->asked.get());
       return;
     }
@@ -48,16 +81,16 @@ template <> struct labkit::wire::Codec<labkit::lab04::Motion> {
   }
   static void get(Reader& r, lab04::Motion& m) {
     bool recording = false;
-    lab04::StandardMotion standard;
     wire::get(r, recording);
+    if (recording) {
+      int handle = -1;
+      wire::get(r, handle);
+      m = [handle](double t) { return given::ask<RigidTransform>("recorded_pose", handle, t); };
+      return;
+    }
+    lab04::StandardMotion standard;
     wire::get(r, standard);
-    if (recording)
-      m = [standard](double t) {
-        remote::record_sample(t);
-        return standard(t);
-      };
-    else
-      m = standard;
+    m = standard;
   }
 };
 

@@ -56,8 +56,9 @@ Outcome classify(const PointQuery& in, Where got, Rules rules = Rules::random);
 Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vector<int>& got,
                       Rules rules = Rules::random);
 
-// Step 5.
-Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rules = Rules::random);
+// Step 5. `calls`: how many times given_balls_meet ran during the query (the judge
+// served them, remote::last_served()).
+Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, long long calls, Rules rules = Rules::random);
 
 // Step 6: every frame's pairs (as overlapping_pairs), its tests (only pairs overlapping on
 // x), and, from the second frame on, its swaps and compare_ends calls within the header's

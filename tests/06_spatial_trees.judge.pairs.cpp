@@ -25,7 +25,7 @@ std::string describe_pairs(const std::vector<std::array<int, 2>>& pairs) {
 
 }  // namespace
 
-Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rules) {
+Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, long long calls, Rules rules) {
   const std::vector<Sphere>& spheres = in.spheres;
   const int n = int(spheres.size());
   const std::vector<std::array<int, 2>> exact = oracle::meeting_pairs(spheres);
@@ -37,11 +37,13 @@ Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, Rules rul
     if (k > 0 && !(got.pairs[k - 1] < p))
       return fail(expected, answer, "the pairs are not sorted, or a pair is reported twice");
   }
-  const long long all = (long long)n * (n - 1) / 2;
-  if (got.tests < (long long)got.pairs.size() || got.tests > all)
-    return fail(expected, answer + ", tests = " + str(got.tests),
-                "tests must count the pairs you tested: at least the " + str(got.pairs.size()) +
-                    " you report, at most all " + str(all));
+  if (got.tests != calls)
+    return fail("tests = " + str(calls) + " (your calls of given_balls_meet, as the kit counted them)",
+                "tests = " + str(got.tests),
+                "tests counts the pairs you tested, each with one call of given_balls_meet");
+  if (calls < (long long)got.pairs.size())
+    return fail(expected + ", each tested", answer + " after " + str(calls) + " calls of given_balls_meet",
+                "a pair is reported only after given_balls_meet said its balls meet: test every pair you report");
   // Within 6 tol of touching, a perturbation may part them or make them meet: moving the
   // centres by tol changes their distance by up to 2 sqrt(3) tol, the radii by 2 tol.
   const double tol = tolerance_of(in);
@@ -128,7 +130,7 @@ Outcome sweep_frames(const SweepCase& in, const SweepRuns& got, Rules rules) {
     const std::vector<Sphere>& spheres = in.frames[k];
     const SweepFrame& f = got[k].frame;
     const std::string frame = "frame " + str(int(k) + 1) + " of " + str(in.frames.size()) + ": ";
-    Outcome right = overlapping_pairs(SphereSet{spheres}, SpherePairs{f.pairs, f.tests}, rules);
+    Outcome right = overlapping_pairs(SphereSet{spheres}, SpherePairs{f.pairs, f.tests}, got[k].ball_tests, rules);
     if (right.verdict == Outcome::Verdict::fail) {
       right.why =
           frame + right.why +
@@ -146,9 +148,16 @@ Outcome sweep_frames(const SweepCase& in, const SweepRuns& got, Rules rules) {
           frame +
               "test only the pairs whose intervals overlap on x; a pair leaves the set when a high end passes its "
               "low end (a swap), and must not be tested after");
+    const long long ends = 2 * (long long)spheres.size();
+    // Even a list already in order takes n_ends - 1 comparisons to see that it is.
+    if (ends > 1 && got[k].comparisons < ends - 1)
+      return fail("compare_ends calls >= " + str(ends - 1), "compare_ends calls = " + str(got[k].comparisons),
+                  frame +
+                      "compare the ends' values only with compare_ends: the check counts its calls, and keeping "
+                      "a list of " +
+                      str(ends) + " ends sorted takes at least " + str(ends - 1) + " of them each frame");
     if (k == 0) continue;
     const long long changed = changed_order(in.frames[k - 1], spheres);
-    const long long ends = 2 * (long long)spheres.size();
     if (f.swaps > changed)
       return fail("swaps <= " + str(changed) + " (pairs of ends whose order changed)", "swaps = " + str(f.swaps),
                   frame +

@@ -40,10 +40,11 @@ labkit_mutant(06 spatial_trees NAME near_subtree_first STEP 4 SAYS "far subtree"
   FIND "const int near = eye_in_front ? n.front : n.back, far = eye_in_front ? n.back : n.front;"
   REPLACE "const int near = eye_in_front ? n.back : n.front, far = eye_in_front ? n.front : n.back;")
 
-# Step 5: balls that only touch are taken as apart (< where the rule says <=).
-labkit_mutant(06 spatial_trees NAME touching_balls_apart STEP 5 SAYS "touching counts"
-  FIND "return (a.center - b.center).squaredNorm() <= reach * reach;  // closed balls"
-  REPLACE "return (a.center - b.center).squaredNorm() < reach * reach;  // closed balls")
+# Step 5: `tests` counts the pairs found, not the pairs tested: the kit counts the calls
+# of given_balls_meet itself, and the two disagree.
+labkit_mutant(06 spatial_trees NAME tests_count_pairs_found STEP 5 SAYS "given_balls_meet"
+  FIND "          if (given_balls_meet(sorted[m], sorted[other])) out.pairs.push_back({i, j});"
+  REPLACE "          if (given_balls_meet(sorted[m], sorted[other])) out.pairs.push_back({i, j}); else --out.tests;")
 
 # Step 5: the grid's cells one radius wide instead of one diameter: two balls that meet
 # can sit two cells apart, outside each other's block, and their pair is lost.
@@ -103,3 +104,22 @@ labkit_mutant(06 spatial_trees NAME grid_of_one_cell STEP 8 SAYS "adjacent cells
 labkit_mutant(06 spatial_trees NAME clip_wall_strict STEP 9 SAYS "every leaf the segment meets"
   FIND "if (a[i] < box.min[i] || a[i] > box.max[i]) return {1.0, 0.0};  // beside the slab"
   REPLACE "if (a[i] <= box.min[i] || a[i] >= box.max[i]) return {1.0, 0.0};  // beside the slab")
+
+# Counts the check keeps itself (README, "Given functions are counted by the checker"):
+# each of these would once have scored by writing a count the verdict read.
+# Step 2: a brute force over every triangle after the walk, left out of `tests`.
+labkit_mutant(06 spatial_trees NAME uncounted_brute_force STEP 2 SAYS "must count every call of given::segment_triangle"
+  FIND "  best.tests = tests;"
+  REPLACE "  for (const Triangle& t : tree.triangles) given::segment_triangle(segment, t);  // not in tests
+  best.tests = tests;")
+
+# Step 5: the balls tested with a formula of its own, not the counted given_balls_meet.
+labkit_mutant(06 spatial_trees NAME balls_tested_privately STEP 5 SAYS "given_balls_meet"
+  FIND "          if (given_balls_meet(sorted[m], sorted[other])) out.pairs.push_back({i, j});"
+  REPLACE "          const double reach = sorted[m].radius + sorted[other].radius;
+          if ((sorted[m].center - sorted[other].center).squaredNorm() <= reach * reach) out.pairs.push_back({i, j});")
+
+# Step 6: the ends compared without compare_ends, so that no comparison is counted.
+labkit_mutant(06 spatial_trees NAME ends_compared_privately STEP 6 SAYS "only with compare_ends"
+  FIND "  const int c = compare_ends(a, b);"
+  REPLACE "  const int c = (a.value > b.value) - (a.value < b.value);")

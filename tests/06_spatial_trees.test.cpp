@@ -5,6 +5,7 @@
 
 #include "common/given/segment_triangle.h"
 #include "common/oracle/oracle.h"
+#include "common/protocol/calls.h"
 #include "common/splitmix.h"
 
 #include <algorithm>
@@ -34,6 +35,9 @@ const bool kRules = [] {
               "each split puts every triangle in front, behind, or in the node's list: "
               "a subtree has fewer triangles than its parent");
   check::rule(query::back_to_front, "each node is visited once: one subtree, the node's triangles, the other subtree");
+  check::rule(query::efficiency_segments,
+              "a query tests only the triangles listed in the leaves its segment meets, a few dozen here: "
+              "one that tests all 10,000 triangles of the mesh cannot answer 250 segments within a call's time limit");
   return true;
 }();
 
@@ -51,6 +55,37 @@ Mesh mesh_of(const std::vector<Triangle>& triangles) {
 
 // Fails with the first problem of a or b (a first).
 Outcome both(const Outcome& a, const Outcome& b) { return a.verdict == Outcome::Verdict::fail ? a : b; }
+
+// Every call below crosses to the answerer, the student's process; the given functions
+// the code called meanwhile were served, and counted, here (common/given/served.h).
+// served(name) reads the count of the last call, so read it right after that call.
+long long served(const char* name) { return remote::last_served().count(name); }
+
+// Step 5: the pairs, judged with the given_balls_meet calls the judge counted.
+Outcome judge_pairs(const SphereSet& in, Rules rules = Rules::random) {
+  const SpherePairs got = overlapping_pairs(in.spheres);
+  return judge::overlapping_pairs(in, got, served("given_balls_meet"), rules);
+}
+
+// Step 6: one SweepAndPrune fed every frame in the answerer; each frame's answer with the
+// calls the judge counted while the code answered it (a part each, given::part).
+SweepRuns sweep_counted(const Frames& frames) {
+  const SweepFrames got = run_sweep(frames);
+  const given::Served& calls = remote::last_served();
+  SweepRuns runs;
+  for (std::size_t k = 0; k < got.size(); ++k)
+    runs.push_back({got[k], calls.count(k, "compare_ends"), calls.count(k, "given_balls_meet")});
+  return runs;
+}
+
+// Step 7: the dual traversal, with the given tests' calls the judge counted.
+BvhRun bvh_counted(const ObbTree& a, const ObbTree& b, bool every) {
+  BvhRun run;
+  run.answer = colliding_triangles(a, b, every);
+  run.box_calls = served("given_boxes_overlap");
+  run.triangle_calls = served("given_triangles_meet");
+  return run;
+}
 
 // ---- The k-d tree of the handout's step 2 --------------------------------------------------------
 //
@@ -70,10 +105,8 @@ KdTree handout_tree() {
 // Runs a query on a tree, counting the given test's calls, and judges it.
 template <class Query, class Judge>
 Outcome run_query(const TreeQuery& in, const KdTree& tree, Query&& query, Judge&& judge, Rules rules) {
-  const std::uint64_t before = given::segment_triangle_calls();
   const auto got = query(tree, in.segment);
-  const std::uint64_t calls = given::segment_triangle_calls() - before;
-  return judge(in, tree, got, calls, rules);
+  return judge(in, tree, got, std::uint64_t(served("segment_triangle")), rules);
 }
 
 Outcome judge_first(const TreeQuery& in, const KdTree& tree, Rules rules = Rules::random) {
@@ -383,9 +416,10 @@ namespace {
 auto expect_pairs(std::vector<std::array<int, 2>> pairs) {
   return [pairs](const SphereSet& in) {
     const SpherePairs got = overlapping_pairs(in.spheres);
+    const Outcome right = judge::overlapping_pairs(in, got, served("given_balls_meet"), Rules::exact);
     Expect e;
     e.equal("pairs", got.pairs, pairs);
-    return both(judge::overlapping_pairs(in, got, Rules::exact), e.outcome());
+    return both(right, e.outcome());
   };
 }
 
@@ -408,7 +442,7 @@ TEST_CASE(LABKIT_STEP(L06S5) ": worked examples", "[lab06][step5]") {
 
 TEST_CASE(LABKIT_STEP(L06S5) ": random cases", "[lab06][step5][oracle]") {
   check::random_cases(query::overlapping_pairs, gen::sphere_set_case(),
-                      [](const SphereSet& in) { return judge::overlapping_pairs(in, overlapping_pairs(in.spheres)); });
+                      [](const SphereSet& in) { return judge_pairs(in); });
 }
 
 // ---- Step 6 --------------------------------------------------------------------------------------
@@ -423,7 +457,7 @@ struct FrameCounts {
 
 auto expect_frames(std::vector<FrameCounts> expected, Rules rules = Rules::exact) {
   return [expected, rules](const SweepCase& in) {
-    const SweepRuns got = run_sweep(in.frames);
+    const SweepRuns got = sweep_counted(in.frames);
     const Outcome right = judge::sweep_frames(in, got, rules);
     if (right.verdict == Outcome::Verdict::fail || expected.empty()) return right;
     Expect e;
@@ -461,7 +495,7 @@ TEST_CASE(LABKIT_STEP(L06S6) ": worked examples", "[lab06][step6]") {
 
 TEST_CASE(LABKIT_STEP(L06S6) ": random cases", "[lab06][step6][oracle]") {
   check::random_cases(query::sweep_frames, gen::sweep_case(),
-                      [](const SweepCase& in) { return judge::sweep_frames(in, run_sweep(in.frames)); });
+                      [](const SweepCase& in) { return judge::sweep_frames(in, sweep_counted(in.frames)); });
 }
 
 // ---- Step 7 --------------------------------------------------------------------------------------
@@ -470,13 +504,13 @@ namespace {
 
 Outcome judge_bvh(const BvhQuery& in, Rules rules = Rules::random) {
   const ObbTree a = judge::obb_tree(in.a, in.tree_a), b = judge::obb_tree(in.b, in.tree_b);
-  return judge::colliding_triangles(in, a, b, run_bvh(a, b, in.every), rules);
+  return judge::colliding_triangles(in, a, b, bvh_counted(a, b, in.every), rules);
 }
 
 auto expect_bvh(std::vector<std::array<int, 2>> pairs, int box_tests, int triangle_tests) {
   return [=](const BvhQuery& in) {
     const ObbTree a = judge::obb_tree(in.a, in.tree_a), b = judge::obb_tree(in.b, in.tree_b);
-    const BvhRun got = run_bvh(a, b, in.every);
+    const BvhRun got = bvh_counted(a, b, in.every);
     const Outcome right = judge::colliding_triangles(in, a, b, got, Rules::exact);
     if (right.verdict == Outcome::Verdict::fail) return right;
     Expect e;
@@ -562,6 +596,9 @@ std::vector<Segment> efficiency_segments(const Mesh& mesh, int count, bool short
   return out;
 }
 
+// Segments per call of run_segments: a few thousand given calls, far within a call's limit.
+constexpr std::size_t kSegmentsPerCall = 250;
+
 // Tests per query over a batch of segments.
 struct Tally {
   long long total = 0;
@@ -589,18 +626,41 @@ Outcome run_efficiency(const EfficiencyCase& in) {
   Tally short_first, short_any, long_first, long_all;
   for (bool short_ones : {true, false}) {
     const auto segments = efficiency_segments(mesh, in.segments, short_ones, std::uint64_t(in.seed) * 7 + short_ones);
-    const SegmentRuns runs = run_segments(tree, segments, !short_ones);
-    if (runs.size() != segments.size())
-      return check::fail(std::to_string(segments.size()) + " answers", std::to_string(runs.size()) + " answers",
-                         "run_segments answers each segment once, in order");
+    // In chunks, so that no call runs into the time limit of one call; each query of a
+    // chunk is a part of it, with the calls the judge counted while it ran.
+    const std::size_t parts = short_ones ? 2 : 3;
+    SegmentRuns runs;
+    std::vector<std::array<long long, 3>> calls;
+    for (std::size_t at = 0; at < segments.size(); at += kSegmentsPerCall) {
+      const Segments chunk(segments.begin() + long(at),
+                           segments.begin() + long(std::min(segments.size(), at + kSegmentsPerCall)));
+      const SegmentRuns got = run_segments(tree, chunk, !short_ones);
+      const given::Served& counted = remote::last_served();
+      if (got.size() != chunk.size())
+        return check::fail(std::to_string(chunk.size()) + " answers", std::to_string(got.size()) + " answers",
+                           "run_segments answers each segment once, in order");
+      for (std::size_t k = 0; k < chunk.size(); ++k) {
+        runs.push_back(got[k]);
+        calls.push_back({});
+        for (std::size_t p = 0; p < parts; ++p) calls.back()[p] = counted.count(k * parts + p, "segment_triangle");
+      }
+    }
     for (std::size_t k = 0; k < segments.size(); ++k) {
       const Segment& s = segments[k];
       const KdHit expected = brute_first(s);
       const KdHit& first = runs[k].first;
       const KdHit& any = runs[k].any;
-      if (first.tests != runs[k].first_calls || any.tests != runs[k].any_calls)
-        return check::fail("tests = the calls of given::segment_triangle", "a different count",
-                           "count every call in `tests`");
+      const bool all_counted = short_ones || runs[k].all_tests == calls[k][2];
+      if (first.tests != calls[k][0] || any.tests != calls[k][1] || !all_counted)
+        return check::fail("tests = " + std::to_string(calls[k][0]) + ", " + std::to_string(calls[k][1]) +
+                               (short_ones ? "" : ", " + std::to_string(calls[k][2])) + " (first_hit, any_hit" +
+                               (short_ones ? "" : ", all_hits") +
+                               ": your calls of given::segment_triangle, as the kit counted them)",
+                           "tests = " + std::to_string(first.tests) + ", " + std::to_string(any.tests) +
+                               (short_ones ? "" : ", " + std::to_string(runs[k].all_tests)),
+                           "tests counts the triangles a query tested, each with one call of given::segment_triangle: "
+                           "count every call, and only those, for a=" +
+                               fmt(s.a) + " b=" + fmt(s.b));
       if (first.hit != expected.hit || (expected.hit && first.t != expected.t))
         return check::fail(expected.hit ? "a hit at t = " + fmt(expected.t) : "no hit",
                            first.hit ? "a hit at t = " + fmt(first.t) : "no hit",
@@ -655,7 +715,7 @@ TEST_CASE(LABKIT_STEP(L06S8) ": tests counted on 10,000 triangles", "[lab06][ste
                  [](const SpreadSpheres& in) {
     const SphereSet set{gen::spread_spheres(in.count, 100, 0.25, 1, std::uint64_t(in.seed))};
     const SpherePairs got = overlapping_pairs(set.spheres);
-    const Outcome right = judge::overlapping_pairs(set, got);
+    const Outcome right = judge::overlapping_pairs(set, got, served("given_balls_meet"));
     if (right.verdict == Outcome::Verdict::fail) return right;
     Expect e;
     e.that("tests", got.tests <= kSphereTests, std::to_string(got.tests), "at most " + std::to_string(kSphereTests),
@@ -765,11 +825,11 @@ TEST_CASE(LABKIT_STEP(L06S9) ": random exact degenerate cases", "[lab06][step9][
     const BspTree tree = build_bsp(in.mesh);
     return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
   });
-  check::random_cases(query::robust_overlapping_pairs, gen::exact_sphere_set_case(), [](const SphereSet& in) {
-    return judge::overlapping_pairs(in, overlapping_pairs(in.spheres), Rules::exact);
+  check::random_cases(query::robust_overlapping_pairs, gen::exact_sphere_set_case(),
+                      [](const SphereSet& in) { return judge_pairs(in, Rules::exact); });
+  check::random_cases(query::robust_sweep_frames, gen::exact_sweep_case(), [](const SweepCase& in) {
+    return judge::sweep_frames(in, sweep_counted(in.frames), Rules::exact);
   });
-  check::random_cases(query::robust_sweep_frames, gen::exact_sweep_case(),
-                      [](const SweepCase& in) { return judge::sweep_frames(in, run_sweep(in.frames), Rules::exact); });
 }
 
 // ---- The header's preconditions (not a graded step) ---------------------------------------------
@@ -817,7 +877,7 @@ TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[
   CHECK(overlapping_pairs({{{0, 0, 0}, 0}, {{0, 0, 0}, 0}}).pairs.size() == 1);
   // Step 7's trees are not checked (that would cost what they save); trees without nodes
   // (meshes without triangles) have no pair and cost no test.
-  const BvhRun none = run_bvh(ObbTree{}, judge::obb_tree(lean_and_stand(), 0), true);
+  const BvhRun none = bvh_counted(ObbTree{}, judge::obb_tree(lean_and_stand(), 0), true);
   CHECK(none.answer.pairs.empty());
   CHECK(none.box_calls == 0);
 }

@@ -8,6 +8,7 @@
 
 #include "common/fields.h"
 #include "common/given/segment_triangle.h"
+#include "common/given/served.h"
 
 #include <vector>
 
@@ -30,80 +31,75 @@ using Indices = std::vector<int>;
 using Spheres = std::vector<Sphere>;
 
 // Step 8 asks thousands of queries of one tree of 10,000 triangles. They run in the
-// answerer in one call, so that the tree crosses once; each query's calls of
-// given::segment_triangle are counted there, around it.
+// answerer in one call, so that the tree crosses once. Each query is a part of the call
+// (given::part): the judge's process counts the given::segment_triangle calls it served
+// per part (remote::last_served()), 2 parts per segment, 3 with all_hits.
 struct SegmentRun {
   KdHit first;
-  int first_calls = 0;
   KdHit any;
-  int any_calls = 0;
   int all_tests = -1;  // all_hits(tree, s).tests, when asked for
 };
-LABKIT_FIELDS(SegmentRun, first, first_calls, any, any_calls, all_tests)
+LABKIT_FIELDS(SegmentRun, first, any, all_tests)
 using SegmentRuns = std::vector<SegmentRun>;
 using Segments = std::vector<Segment>;
 
 SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bool with_all);
 
 // Step 6: one SweepAndPrune fed the frames in turn, in the answerer (the object keeps its
-// state there); the calls of compare_ends are counted around each update.
-struct SweepRun {
-  SweepFrame frame;
-  long long comparisons = 0;
-};
-LABKIT_FIELDS(SweepRun, frame, comparisons)
-using SweepRuns = std::vector<SweepRun>;
+// state there), each frame a part: the judge counts compare_ends and given_balls_meet per
+// frame. The tests pair each frame's answer with its counts (SweepRun).
+using SweepFrames = std::vector<SweepFrame>;
 using Frames = std::vector<std::vector<Sphere>>;
 
-SweepRuns run_sweep(const Frames& frames);
+SweepFrames run_sweep(const Frames& frames);
 
-// Step 7: the dual traversal, with the given tests' calls counted around it.
+// A frame's answer and what the judge counted while the code answered it.
+struct SweepRun {
+  SweepFrame frame;
+  long long comparisons = 0;  // compare_ends calls
+  long long ball_tests = 0;   // given_balls_meet calls
+};
+using SweepRuns = std::vector<SweepRun>;
+
+// Step 7: the dual traversal's answer and the given tests' calls the judge counted.
 struct BvhRun {
   TrianglePairs answer;
   long long box_calls = 0;
   long long triangle_calls = 0;
 };
-LABKIT_FIELDS(BvhRun, answer, box_calls, triangle_calls)
 
-BvhRun run_bvh(const ObbTree& a, const ObbTree& b, bool every);
+// The judge serves and counts the lab's given tests (common/given/spatial_trees.cpp).
+void serve_given();
+#define LABKIT_LAB_SERVED ::labkit::lab06::serve_given
 
 #ifdef LABKIT_IN_ANSWERER
 inline SegmentRuns run_segments(const KdTree& tree, const Segments& segments, bool with_all) {
   SegmentRuns runs;
+  int part = 0;
   for (const Segment& s : segments) {
     SegmentRun r;
-    const std::uint64_t c0 = given::segment_triangle_calls();
+    given::part(part++);
     r.first = first_hit(tree, s);
-    const std::uint64_t c1 = given::segment_triangle_calls();
+    given::part(part++);
     r.any = any_hit(tree, s);
-    r.first_calls = int(c1 - c0);
-    r.any_calls = int(given::segment_triangle_calls() - c1);
-    if (with_all) r.all_tests = all_hits(tree, s).tests;
+    if (with_all) {
+      given::part(part++);
+      r.all_tests = all_hits(tree, s).tests;
+    }
     runs.push_back(r);
   }
   return runs;
 }
 
-inline SweepRuns run_sweep(const Frames& frames) {
+inline SweepFrames run_sweep(const Frames& frames) {
   SweepAndPrune sweep;
-  SweepRuns runs;
+  SweepFrames out;
+  int part = 0;
   for (const std::vector<Sphere>& spheres : frames) {
-    SweepRun r;
-    const long long before = compare_ends_calls();
-    r.frame = sweep.update(spheres);
-    r.comparisons = compare_ends_calls() - before;
-    runs.push_back(r);
+    given::part(part++);
+    out.push_back(sweep.update(spheres));
   }
-  return runs;
-}
-
-inline BvhRun run_bvh(const ObbTree& a, const ObbTree& b, bool every) {
-  BvhRun r;
-  const long long boxes = given_box_tests(), triangles = given_triangle_tests();
-  r.answer = colliding_triangles(a, b, every);
-  r.box_calls = given_box_tests() - boxes;
-  r.triangle_calls = given_triangle_tests() - triangles;
-  return r;
+  return out;
 }
 #endif
 
@@ -120,6 +116,6 @@ inline BvhRun run_bvh(const ObbTree& a, const ObbTree& b, bool every) {
   CALL(Indices, back_to_front, (const BspTree&, const Vec3&))              \
   CALL(SpherePairs, overlapping_pairs, (const Spheres&))                   \
   CALL(SegmentRuns, run_segments, (const KdTree&, const Segments&, bool)) \
-  CALL(SweepRuns, run_sweep, (const Frames&))                              \
-  CALL(BvhRun, run_bvh, (const ObbTree&, const ObbTree&, bool))
+  CALL(SweepFrames, run_sweep, (const Frames&))                            \
+  CALL(TrianglePairs, colliding_triangles, (const ObbTree&, const ObbTree&, bool))
 // clang-format on

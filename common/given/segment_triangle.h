@@ -10,6 +10,7 @@
 // a zero-length segment and a zero-area triangle do not hit.
 #pragma once
 
+#include "common/fields.h"
 #include "common/geometry.h"
 
 #include <cstdint>
@@ -25,12 +26,11 @@ struct SegmentHit {
 
 SegmentHit segment_triangle(const Segment& segment, const Triangle& triangle);
 
-// How many times segment_triangle has run on this thread. The labs measure a search
-// structure's efficiency by counting primitive tests, never by timing: a check reads
-// this before and after a query.
+LABKIT_FIELDS(SegmentHit, hit, t, point, barycentric)
+
+// How many times segment_triangle has run in this process, on this thread: what the
+// viewer shows next to a query. The checker never reads it: in a graded or checked run
+// the test is served by the judge's process, which counts the calls itself (served.h).
 std::uint64_t segment_triangle_calls();
-// Adds calls made elsewhere: the judge's process adds those the answerer's process made
-// for it (common/protocol/calls.h), so that counting around a call reads the same.
-void count_segment_triangle_calls(std::uint64_t n);
 
 }  // namespace labkit::given

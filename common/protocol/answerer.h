@@ -13,6 +13,13 @@
 // an 8-byte length and the bytes (common/protocol/wire.h). What the answerer prints goes
 // on to the judge's stderr, and its last lines come with a crash's report.
 //
+// Given functions: while it answers a call, the code under test may call a given
+// function the verdict counts (lab 06's given::segment_triangle, say). That call comes
+// to the judge as a frame on 4 with status `counted` (the judge counts it in the call's
+// Response::served) or `given` (the judge also computes it and sends the result on 3,
+// ahead of any request not yet begun; the answerer keeps the requests that arrive
+// meanwhile). common/given/served.h has the picture.
+//
 // Batches: the harness asks for thousands of random cases at a time. Between
 // begin_batch() and end_batch(), a call whose answer is not known yet is recorded and
 // throws Deferred; flush() sends every recorded call at once (the answers stream back
@@ -20,6 +27,8 @@
 // the deferred judges again. A crash or a time-out costs the one call it happened on:
 // that call's answer says so, the answerer is started again, and the rest go on.
 #pragma once
+
+#include "common/given/served.h"
 
 #include <sys/types.h>
 #include <chrono>
@@ -35,15 +44,26 @@ namespace labkit::remote {
 struct Response {
   enum class Kind { answered, crashed, timed_out, broken };
   Kind kind = Kind::answered;
-  std::string bytes;   // answered: the answerer's reply (a status byte, then its data)
-  std::string detail;  // otherwise: what happened, in words
-  std::string output;  // crashed: the last of what it printed
+  std::string bytes;     // answered: the answerer's reply (a status byte, then its data)
+  std::string detail;    // otherwise: what happened, in words
+  std::string output;    // crashed: the last of what it printed
+  given::Served served;  // the given functions the judge served during the call
 };
 
 // What the answerer replies, in the first byte of an answered call.
 // rejected: the code threw std::invalid_argument, a precondition of the header it checks
 // (the judge's side throws it again, with its message, so a test can ask for exactly that).
-enum class Status : unsigned char { answered = 0, not_implemented = 1, threw = 2, unknown_call = 3, rejected = 4 };
+// given and counted: not an answer but a given function's call, served or counted
+// before the answer comes (common/given/served.h).
+enum class Status : unsigned char {
+  answered = 0,
+  not_implemented = 1,
+  threw = 2,
+  unknown_call = 3,
+  rejected = 4,
+  given = given::kServedFrame,
+  counted = given::kCountedFrame
+};
 
 // The call could not be answered: it crashed, timed out, or sent something unreadable.
 // `got` and `why` are ready for a failure report.

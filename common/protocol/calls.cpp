@@ -1,9 +1,7 @@
 #include "common/protocol/calls.h"
 
-#include "common/given/segment_triangle.h"
+#include "common/given/served.h"
 
-#include <unistd.h>
-#include <cerrno>
 #include <cstdint>
 #include <cstring>
 #include <typeinfo>
@@ -11,12 +9,13 @@
 namespace labkit::remote {
 
 namespace {
-std::vector<double> samples;          // the answerer's, for the current call
-std::vector<double>* sink = nullptr;  // the judge's, for the next answer
+std::vector<double>* sink = nullptr;  // for the next answer's samples
+given::Served last;                   // what the last call made the judge serve
 }  // namespace
 
-void record_sample(double x) { samples.push_back(x); }
 void sample_into(std::vector<double>* into) { sink = into; }
+const given::Served& last_served() { return last; }
+void detail::set_last_served(const given::Served* served) { last = served ? *served : given::Served{}; }
 
 namespace detail {
 
@@ -32,17 +31,17 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
     case Response::Kind::broken: throw Failed("an answer that cannot be read", response.detail);
     case Response::Kind::answered: break;
   }
+  if (!response.served.problem.empty())
+    throw Failed("a given call the kit cannot accept",
+                 "during this call your code's process sent the kit a given function's call it cannot accept (" +
+                     response.served.problem + "): call the given functions only as the header declares them");
   wire::Reader r(response.bytes);
   Status status;
   std::string message;
   try {
     wire::get(r, status);
     if (status == Status::answered) {
-      std::uint64_t given_calls = 0;
-      std::vector<double> recorded;
-      wire::get(r, given_calls);
-      wire::get(r, recorded);
-      given::count_segment_triangle_calls(given_calls);
+      const std::vector<double>& recorded = response.served.samples;
       if (sink) sink->insert(sink->end(), recorded.begin(), recorded.end());
       sink = nullptr;
       return r;
@@ -77,32 +76,6 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
 
 namespace {
 
-bool read_all(int fd, void* data, std::size_t n) {
-  auto* at = static_cast<char*>(data);
-  while (n > 0) {
-    const ssize_t got = read(fd, at, n);
-    if (got < 0 && errno == EINTR) continue;
-    if (got <= 0) return false;
-    at += got, n -= std::size_t(got);
-  }
-  return true;
-}
-
-bool write_all(int fd, const std::string& payload) {
-  const std::uint64_t n = payload.size();
-  std::string bytes(reinterpret_cast<const char*>(&n), sizeof n);
-  bytes += payload;
-  const char* at = bytes.data();
-  std::size_t left = bytes.size();
-  while (left > 0) {
-    const ssize_t put = write(fd, at, left);
-    if (put < 0 && errno == EINTR) continue;
-    if (put <= 0) return false;
-    at += put, left -= std::size_t(put);
-  }
-  return true;
-}
-
 std::string failure(Status status, const std::string& message) {
   wire::Writer w;
   wire::put(w, status);
@@ -122,15 +95,9 @@ std::string answer(const Table& table, const std::string& request) {
   const auto it = table.find(id);
   if (it == table.end()) return failure(Status::unknown_call, "no such call");
   try {
-    const std::uint64_t before = given::segment_triangle_calls();
-    samples.clear();
-    wire::Writer data;
-    it->second(in, data);
     wire::Writer out;
     wire::put(out, Status::answered);
-    wire::put(out, given::segment_triangle_calls() - before);
-    wire::put(out, samples);
-    out.raw(data.bytes().data(), data.bytes().size());
+    it->second(in, out);
     return out.take();
   } catch (const wire::Error& e) {
     return failure(Status::unknown_call, std::string("its arguments cannot be read: ") + e.what());
@@ -147,17 +114,13 @@ std::string answer(const Table& table, const std::string& request) {
 
 }  // namespace
 
-int serve(const Table& table) {
-  constexpr int requests = 3, answers = 4;
-  if (!write_all(answers, "labkit-answerer 1")) return 2;
-  for (;;) {
-    std::uint64_t n = 0;
-    if (!read_all(requests, &n, sizeof n)) return 0;  // the judge is done
-    if (n > (std::uint64_t(1) << 32)) return 2;
-    std::string request(n, '\0');
-    if (!read_all(requests, request.data(), n)) return 0;
-    if (!write_all(answers, answer(table, request))) return 0;
-  }
+int serve(const Table& table, bool given_served) {
+  if (given_served) given::serve_from_judge();
+  if (!given::write_frame("labkit-answerer 1")) return 2;
+  std::string request;
+  while (given::read_frame(request))  // until the judge is done
+    if (!given::write_frame(answer(table, request))) return 0;
+  return 0;
 }
 
 }  // namespace labkit::remote

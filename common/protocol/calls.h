@@ -52,15 +52,10 @@ template <class P>
 constexpr bool is_out = std::is_lvalue_reference_v<P> && !std::is_const_v<std::remove_reference_t<P>>;
 
 // ---- What a call did besides answering -------------------------------------------------
-// An answer carries how often the call used given::segment_triangle (lab 06 counts them:
-// the judge's process adds them to its own count, so that counting around a call reads
-// the same as in one process) and the samples it recorded: the values the code passed to
-// a recording argument (lab 04's RecordingMotion: the times it asked for a pose).
-
-// In the answerer: records one sample for the current call.
-void record_sample(double x);
-// In the judge's process: the next answer's samples are appended to `sink` (then it is
-// forgotten). Set while the recording argument is sent.
+// The given functions the code under test called during the call are served and counted
+// in the judge's process (common/given/served.h): call_served() returns them with the
+// answer. Lab 04's RecordingMotion asks for its poses that way too; the times it was
+// asked for go into `sink` (set while the recording argument is sent).
 void sample_into(std::vector<double>* sink);
 
 // ---- The judge's side: send the call, return the answer ------------------------------
@@ -78,7 +73,14 @@ template <class P, class A> void put_out(wire::Writer& w, const A& a) {
   if constexpr (is_out<P>) wire::put(w, a);
 }
 
+// The given calls the last call made, as the judge served them (none for a default answer).
+const given::Served& last_served();
+namespace detail {
+void set_last_served(const given::Served* served);
+}  // namespace detail
+
 template <class R, class... P> R call(const char* id, P... args) {
+  detail::set_last_served(nullptr);
   if (answering_by_default()) {  // what a file that does nothing answers (DefaultAnswers)
     if constexpr (std::is_void_v<R>)
       return;
@@ -89,7 +91,9 @@ template <class R, class... P> R call(const char* id, P... args) {
   wire::put(w, std::string(id));
   (wire::put(w, args), ...);
   note_request(w.bytes());
-  wire::Reader r = detail::open_reply(id, Answerer::instance().ask(w.bytes()));
+  const Response& response = Answerer::instance().ask(w.bytes());
+  wire::Reader r = detail::open_reply(id, response);
+  detail::set_last_served(&response.served);
   try {
     if constexpr (std::is_void_v<R>) {
       (get_out<P>(r, args), ...);
@@ -131,8 +135,9 @@ template <class R, class... P> Handler handler(R (*function)(P...)) {
       [function](wire::Reader& in, wire::Writer& out) { run_call(function, in, out, std::index_sequence_for<P...>{}); };
 }
 
-// The answerer's main loop: greets, then answers calls until its input ends.
-int serve(const Table& table);
+// The answerer's main loop: greets, then answers calls until its input ends. With
+// given_served, the lab's given functions are asked of the judge (served.h).
+int serve(const Table& table, bool given_served);
 
 }  // namespace labkit::remote
 

@@ -13,5 +13,9 @@ int main() {
   using namespace labkit::LABKIT_LAB_NAMESPACE;
   remote::Table table;
   LABKIT_LAB_CALLS(LABKIT_TABLE_CALL, LABKIT_TABLE_METHOD)
-  return remote::serve(table);
+#ifdef LABKIT_LAB_SERVED  // the wire header's: this lab's given functions are counted
+  return remote::serve(table, true);
+#else
+  return remote::serve(table, false);
+#endif
 }

@@ -9,3 +9,9 @@
 namespace labkit::LABKIT_LAB_NAMESPACE {
 LABKIT_LAB_CALLS(LABKIT_DEFINE_CALL, LABKIT_DEFINE_METHOD)
 }  // namespace labkit::LABKIT_LAB_NAMESPACE
+
+#ifdef LABKIT_LAB_SERVED  // the wire header's: the judge serves this lab's given functions
+namespace {
+[[maybe_unused]] const bool given_served = (LABKIT_LAB_SERVED(), true);
+}  // namespace
+#endif

@@ -31,7 +31,7 @@ Where classify(const BspTree& tree, const Vec3& point) { not_implemented("L06S3"
 // L06S4: the painter's order.
 std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) { not_implemented("L06S4", tree, eye); }
 
-// L06S5: the overlapping pairs, without testing them all.
+// L06S5: the overlapping pairs, without testing them all (a pair: given_balls_meet).
 SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) { not_implemented("L06S5", spheres); }
 
 // L06S6: keep the sorted ends between frames, re-sort them by insertion, update the

@@ -45,7 +45,11 @@
 //  - The k-d tree's completeness rule (step 1) is exact: no tolerance at all.
 //  - BSP pieces lie within tol of their triangle and of their node's cell; their areas
 //    add up to their triangle's within 1e-9 S L (L its longest edge) per piece.
-//  - Test counts are exact: the checker counts the calls of given::segment_triangle.
+//  - Test counts are exact: the checker counts the calls of the given functions
+//    (given::segment_triangle, given_balls_meet, compare_ends, given_boxes_overlap,
+//    given_triangles_meet). In a check or a grade they run in the checker's process,
+//    which counts what it served (common/given/served.h): count them in your answers,
+//    and the two must agree.
 // Step 9's input is on integers (|x| <= 1024 times a power of two; segments whose
 // b - a has a power of two as its largest |component|, where the given test is exact):
 // there nothing is ambiguous, and every rule below holds exactly.
@@ -244,10 +248,16 @@ std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye);
 // pairs: sort and sweep (the lecture's plane sweep), or a uniform grid. Nothing is kept
 // from one call to the next. Preconditions: every centre finite, every radius finite and
 // >= 0 (a NaN would break the sort, and pairs between finite balls would be lost).
+//
+// Test a pair only with given_balls_meet below (steps 5 and 6): the checker counts its
+// calls, as step 2 counts given::segment_triangle, and `tests` must equal them.
+
+// Given: |c_a - c_b| <= r_a + r_b, in doubles (squared, so no root). Counted.
+bool given_balls_meet(const Sphere& a, const Sphere& b);
 
 struct SpherePairs {
   std::vector<std::array<int, 2>> pairs;  // every {i, j}, i < j, whose balls meet, once, sorted
-  long long tests = 0;                    // how many pairs you tested with |c_i - c_j| <= r_i + r_j
+  long long tests = 0;                    // your calls of given_balls_meet
 };
 
 SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres);
@@ -264,17 +274,18 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres);
 // in doubles exactly so. The list is sorted by value; at equal values a low end comes
 // before a high end (touching counts: [0, 1] and [1, 2] overlap). Then two intervals
 // overlap on x exactly when each one's low end comes before the other's high end.
-// Compare two ends' values only with compare_ends below: it counts its calls, and the
-// checker reads the count, as step 2 counts given::segment_triangle.
+// Compare two ends' values only with compare_ends below, and test pairs only with
+// given_balls_meet: the checker counts the calls of both, as step 2 counts
+// given::segment_triangle.
 //
 // Counts. The first update sorts from scratch (any sort). Every later update, with
 // changed = the number of pairs of ends whose order of values (<, = or >) is not the
 // same as in the previous frame, must make
 //   swaps <= changed   and   compare_ends calls <= 2 n_ends + changed   (n_ends = 2 n)
 // as insertion sort does on the kept list: a re-sort from scratch makes about
-// n_ends log2(n_ends) comparisons however little the spheres moved. `tests` is how many
-// pairs you tested with |c_i - c_j| <= r_i + r_j this frame: at most the number of
-// pairs whose intervals overlap on x.
+// n_ends log2(n_ends) comparisons however little the spheres moved. `tests` is your
+// calls of given_balls_meet this frame: at most the number of pairs whose intervals
+// overlap on x.
 //
 // Preconditions: every centre finite, every radius finite and >= 0; every update after
 // the first has as many spheres as the first (sphere i is the same body in every frame).
@@ -285,19 +296,12 @@ struct Endpoint {
   bool high = false;   // false: the low end
 };
 
-// Given: the sign of a.value - b.value (-1, 0 or 1), counting its calls.
-inline long long& compare_ends_calls() {
-  static long long calls = 0;
-  return calls;
-}
-inline int compare_ends(const Endpoint& a, const Endpoint& b) {
-  ++compare_ends_calls();
-  return (a.value > b.value) - (a.value < b.value);
-}
+// Given: the sign of a.value - b.value (-1, 0 or 1). Counted.
+int compare_ends(const Endpoint& a, const Endpoint& b);
 
 struct SweepFrame {
   std::vector<std::array<int, 2>> pairs;  // every {i, j}, i < j, whose balls meet this frame, once, sorted
-  long long tests = 0;                    // pairs tested with |c_i - c_j| <= r_i + r_j this frame
+  long long tests = 0;                    // calls of given_balls_meet this frame
   long long swaps = 0;                    // adjacent swaps of ends this frame
 };
 
@@ -332,7 +336,7 @@ class SweepAndPrune {
 // hair apart overlapping, never the reverse); given_triangles_meet decides a pair by this
 // lab's hit rule: some edge of one hits the other as given::segment_triangle says, so
 // touching counts and coplanar triangles never meet (a segment in a triangle's plane never
-// hits). Both count their calls, and the checker reads the counts.
+// hits). The checker counts the calls of both.
 //
 // Preconditions: the trees are valid (every node's box holds its subtree's triangles,
 // children indices in range; not checked: that would cost what the tree saves).
@@ -351,47 +355,12 @@ struct ObbTree {
   std::vector<Triangle> triangles;  // triangles[i] = mesh.triangle(i)
 };
 
-inline long long& given_box_tests() {
-  static long long calls = 0;
-  return calls;
-}
-inline long long& given_triangle_tests() {
-  static long long calls = 0;
-  return calls;
-}
 // Lab 03's separating-axis test: the boxes' three axes each, and the nine cross products
 // (those too short to mean a direction are skipped: that only says "overlap" more often).
-// Apart only when a gap shows beyond a relative margin of 1e-12: conservative.
-inline bool given_boxes_overlap(const Box& a, const Box& b) {
-  ++given_box_tests();
-  const Vec3 d = b.center - a.center;
-  const auto apart_along = [&](const Vec3& u) {
-    const double length = u.norm();
-    if (!(length > 1e-9)) return false;
-    double ra = 0, rb = 0;
-    for (int k = 0; k < 3; ++k)
-      ra += a.half_extents[k] * std::abs(a.axes.col(k).dot(u)),
-          rb += b.half_extents[k] * std::abs(b.axes.col(k).dot(u));
-    const double gap = std::abs(d.dot(u)) - ra - rb;
-    return gap > 1e-12 * (std::abs(d.dot(u)) + ra + rb +
-                          length * (a.center.cwiseAbs().maxCoeff() + b.center.cwiseAbs().maxCoeff()));
-  };
-  for (int k = 0; k < 3; ++k)
-    if (apart_along(a.axes.col(k)) || apart_along(b.axes.col(k))) return false;
-  for (int i = 0; i < 3; ++i)
-    for (int j = 0; j < 3; ++j)
-      if (apart_along(a.axes.col(i).cross(b.axes.col(j)))) return false;
-  return true;
-}
-// Some edge of one triangle hits the other (given::segment_triangle's rule).
-inline bool given_triangles_meet(const Triangle& s, const Triangle& t) {
-  ++given_triangle_tests();
-  for (int k = 0; k < 3; ++k)
-    if (given::segment_triangle({s[k], s[(k + 1) % 3]}, t).hit ||
-        given::segment_triangle({t[k], t[(k + 1) % 3]}, s).hit)
-      return true;
-  return false;
-}
+// Apart only when a gap shows beyond a relative margin of 1e-12: conservative. Counted.
+bool given_boxes_overlap(const Box& a, const Box& b);
+// Some edge of one triangle hits the other (given::segment_triangle's rule). Counted.
+bool given_triangles_meet(const Triangle& s, const Triangle& t);
 
 struct TrianglePairs {
   std::vector<std::array<int, 2>> pairs;  // every {i, j} (i in a's mesh, j in b's) that meets, once, sorted

@@ -710,11 +710,6 @@ void require_spheres(const char* query, const std::vector<Sphere>& spheres) {
   }
 }
 
-bool balls_meet(const Sphere& a, const Sphere& b) {
-  const double reach = a.radius + b.radius;
-  return (a.center - b.center).squaredNorm() <= reach * reach;  // closed balls: touching counts
-}
-
 }  // namespace
 
 SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
@@ -776,7 +771,7 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
           const int i = entries[m].sphere, j = entries[other].sphere;
           if (i >= j) continue;  // each pair once: from its smaller index
           ++out.tests;
-          if (balls_meet(sorted[m], sorted[other])) out.pairs.push_back({i, j});
+          if (given_balls_meet(sorted[m], sorted[other])) out.pairs.push_back({i, j});
         }
     }
     run = run_end;
@@ -873,7 +868,7 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
   }
   const auto test = [&](const std::array<int, 2>& p) {
     ++out.tests;
-    if (balls_meet(spheres[std::size_t(p[0])], spheres[std::size_t(p[1])])) out.pairs.push_back(p);
+    if (given_balls_meet(spheres[std::size_t(p[0])], spheres[std::size_t(p[1])])) out.pairs.push_back(p);
   };
   // The set is kept sorted, so one pass merged with the sorted list of pairs that
   // stopped overlapping on x drops them, and gives the others (only those) the full test.

@@ -163,5 +163,9 @@ int main(int argc, char* argv[]) {
   }
   labkit::remote::Table table;
   LABKIT_LAB_CALLS(LABKIT_FAKE_CALL, LABKIT_FAKE_METHOD)
-  return labkit::remote::serve(table);
+#ifdef LABKIT_LAB_SERVED
+  return labkit::remote::serve(table, true);
+#else
+  return labkit::remote::serve(table, false);
+#endif
 }

@@ -16,6 +16,7 @@
 
 #include "common/generators/meshes.h"
 #include "common/given/segment_triangle.h"
+#include "common/given/served.h"
 #include "common/oracle/oracle.h"
 
 #include <algorithm>
@@ -265,11 +266,14 @@ void SpatialTreesScene::update_bsp() {
 }
 
 void SpatialTreesScene::update_spheres() {
+  // The viewer runs the code in its own process: the given tests count here.
+  const std::uint64_t before = given::local_calls("given_balls_meet");
   pairs_ = attempt([&] { return overlapping_pairs(spheres_); });
+  const long long calls = (long long)(given::local_calls("given_balls_meet") - before);
   exact_pairs_ = oracle::meeting_pairs(spheres_);
   const SphereSet in{spheres_};
   Step s5 = judged("L06S5", "overlapping_pairs", pairs_,
-                   [&](const SpherePairs& got) { return judge::overlapping_pairs(in, got); });
+                   [&](const SpherePairs& got) { return judge::overlapping_pairs(in, got, calls); });
   const long long n = (long long)spheres_.size();
   s5.rows = {
       {"pairs", pairs_ ? std::to_string(pairs_->pairs.size()) : "", std::to_string(exact_pairs_.size())},
@@ -285,10 +289,12 @@ void SpatialTreesScene::update_frames() {
     SweepAndPrune sweep;
     SweepRuns runs;
     for (const std::vector<Sphere>& spheres : frames_) {
-      const long long before = compare_ends_calls();
+      const std::uint64_t compared = given::local_calls("compare_ends"),
+                          tested = given::local_calls("given_balls_meet");
       SweepRun r;
       r.frame = sweep.update(spheres);
-      r.comparisons = compare_ends_calls() - before;
+      r.comparisons = (long long)(given::local_calls("compare_ends") - compared);
+      r.ball_tests = (long long)(given::local_calls("given_balls_meet") - tested);
       runs.push_back(r);
     }
     return runs;
@@ -317,9 +323,11 @@ void SpatialTreesScene::update_bvh() {
   const BvhQuery in{mesh_, mesh_b_, tree_seed_, tree_seed_b_, true};
   bvh_ = attempt([&] {
     BvhRun r;
-    const long long boxes = given_box_tests(), triangles = given_triangle_tests();
+    const std::uint64_t boxes = given::local_calls("given_boxes_overlap");
+    const std::uint64_t triangles = given::local_calls("given_triangles_meet");
     r.answer = colliding_triangles(tree_a_, tree_b_, true);
-    r.box_calls = given_box_tests() - boxes, r.triangle_calls = given_triangle_tests() - triangles;
+    r.box_calls = (long long)(given::local_calls("given_boxes_overlap") - boxes);
+    r.triangle_calls = (long long)(given::local_calls("given_triangles_meet") - triangles);
     return r;
   });
   Step s7 = judged("L06S7", "colliding_triangles on the checker's OBB trees", bvh_,

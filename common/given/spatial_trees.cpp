@@ -1,0 +1,68 @@
+// Lab 06's given tests (declared in its header): plain code, whose every call in the
+// answerer is also counted by the judge's process (served.h).
+#include "labs/06_spatial_trees/spatial_trees.h"
+
+#include "common/given/served.h"
+
+namespace labkit::lab06 {
+
+int compare_ends(const Endpoint& a, const Endpoint& b) {
+  if (given::served())
+    given::count("compare_ends");
+  else
+    given::count_local("compare_ends");
+  return (a.value > b.value) - (a.value < b.value);
+}
+
+bool given_balls_meet(const Sphere& a, const Sphere& b) {
+  if (given::served())
+    given::count("given_balls_meet");
+  else
+    given::count_local("given_balls_meet");
+  const double reach = a.radius + b.radius;
+  return (a.center - b.center).squaredNorm() <= reach * reach;  // closed balls: touching counts
+}
+
+bool given_boxes_overlap(const Box& a, const Box& b) {
+  if (given::served())
+    given::count("given_boxes_overlap");
+  else
+    given::count_local("given_boxes_overlap");
+  const Vec3 d = b.center - a.center;
+  const auto apart_along = [&](const Vec3& u) {
+    const double length = u.norm();
+    if (!(length > 1e-9)) return false;
+    double ra = 0, rb = 0;
+    for (int k = 0; k < 3; ++k)
+      ra += a.half_extents[k] * std::abs(a.axes.col(k).dot(u)),
+          rb += b.half_extents[k] * std::abs(b.axes.col(k).dot(u));
+    const double gap = std::abs(d.dot(u)) - ra - rb;
+    return gap > 1e-12 * (std::abs(d.dot(u)) + ra + rb +
+                          length * (a.center.cwiseAbs().maxCoeff() + b.center.cwiseAbs().maxCoeff()));
+  };
+  for (int k = 0; k < 3; ++k)
+    if (apart_along(a.axes.col(k)) || apart_along(b.axes.col(k))) return false;
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j)
+      if (apart_along(a.axes.col(i).cross(b.axes.col(j)))) return false;
+  return true;
+}
+
+bool given_triangles_meet(const Triangle& s, const Triangle& t) {
+  if (given::served())
+    given::count("given_triangles_meet");
+  else
+    given::count_local("given_triangles_meet");
+  for (int k = 0; k < 3; ++k)
+    if (given::segment_triangle({s[k], s[(k + 1) % 3]}, t).hit ||
+        given::segment_triangle({t[k], t[(k + 1) % 3]}, s).hit)
+      return true;
+  return false;
+}
+
+void serve_given() {
+  for (const char* name : {"compare_ends", "given_balls_meet", "given_boxes_overlap", "given_triangles_meet"})
+    given::countable(name);
+}
+
+}  // namespace labkit::lab06
