@@ -172,12 +172,13 @@ Rule rule_for(const std::string& kit, const std::string& lab_folder, const std::
   const std::string lab = normal(lab_folder);
   rule.folders.push_back(lab);
 
-  // The kit headers: the lab's, the geometry types, the given tools and what they include.
+  // The kit headers: the lab's, the geometry types and what they include (the given
+  // tools only where the lab's header includes them: lab 02 must not borrow lab 06's
+  // ready segment-triangle test).
   std::vector<std::string> pending;
   std::error_code e;
-  for (const std::string& folder : {lab, rule.kit + "/common/given"})
-    for (const auto& entry : fs::directory_iterator(folder, e))
-      if (entry.path().extension() == ".h") pending.push_back(normal(entry.path().string()));
+  for (const auto& entry : fs::directory_iterator(lab, e))
+    if (entry.path().extension() == ".h") pending.push_back(normal(entry.path().string()));
   for (const char* header : {"common/geometry.h", "common/not_implemented.h"})
     if (exists(rule.kit + "/" + header)) pending.push_back(rule.kit + "/" + header);
   while (!pending.empty()) {

@@ -102,10 +102,12 @@ std::vector<Symbol> symbols_of(const std::string& object) {
   return symbols;
 }
 
-// What a student file may not define or use: the kit's judging machinery.
-std::string audit(const std::vector<Symbol>& symbols, const Lab& lab, const std::set<std::string>& kit) {
+// What a student file may not define or use: the kit's judging machinery, and the given
+// tools where its lab's header does not offer them (`given`: it does).
+std::string audit(const std::vector<Symbol>& symbols, const Lab& lab, const std::set<std::string>& kit, bool given) {
   static const std::regex judging(
-      R"((^|[^A-Za-z0-9_:])(labkit::check|labkit::gen|labkit::lab[0-9]+::judge|oracle|Catch|rc)::)");
+      R"((^|[^A-Za-z0-9_:])(labkit::check|labkit::gen|labkit::lab[0-9]+::judge|labkit::remote|oracle|Catch|rc)::)");
+  static const std::regex given_tools(R"((^|[^A-Za-z0-9_:])labkit::given::)");
   std::string problems;
   int count = 0;
   const auto problem = [&](const std::string& text) {
@@ -118,6 +120,9 @@ std::string audit(const std::vector<Symbol>& symbols, const Lab& lab, const std:
       problem("defines " + s.readable + "(): the kit's tests have their own");
     else if (std::regex_search(s.readable, judging))
       problem((defined ? "defines " : "uses ") + s.readable + ", which belongs to the kit's tests, judge or oracle");
+    else if (!given && std::regex_search(s.readable, given_tools))
+      problem((defined ? "defines " : "uses ") + s.readable +
+              ", a given tool of other labs: this lab's header does not offer it, so write your own");
     else if (strong && kit.count(s.name))
       problem("defines " + s.readable + ", which the kit already defines (it would replace the kit's)");
     else if (strong && runtime_symbols().count(s.name))
@@ -321,7 +326,9 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
       if (b.errors.empty()) b.errors = strip(output.substr(0, 2000), noise);
       return b;
     }
-    const std::string problems = audit(symbols_of(object), lab, recipe.kit_symbols) + audit_sections(object);
+    const bool given = std::any_of(rule.kit_files.begin(), rule.kit_files.end(),
+                                   [](const std::string& f) { return f.find("/common/given/") != std::string::npos; });
+    const std::string problems = audit(symbols_of(object), lab, recipe.kit_symbols, given) + audit_sections(object);
     if (!problems.empty()) {
       b.errors = problems;
       return b;

@@ -83,6 +83,7 @@
 #pragma once
 
 #include "common/geometry.h"
+#include "common/given/segment_triangle.h"
 #include "common/splitmix.h"
 
 #include <array>
