@@ -19,6 +19,9 @@ namespace {
 constexpr std::uint64_t kReplyMark = std::numeric_limits<std::uint64_t>::max();
 constexpr int kRequests = 3, kAnswers = 4;
 constexpr std::size_t kLongestName = 64;
+// Parts in one call: the kit's wrappers make at most 750 (lab 06's run_segments); a flood
+// of part frames must not grow the judge's ledger without end.
+constexpr std::size_t kMostParts = std::size_t(1) << 14;
 
 bool serving = false;
 std::deque<std::string> queued;  // requests that came while a served call waited
@@ -92,6 +95,9 @@ std::map<std::string, std::uint64_t>& local() {
 void start_part(wire::Reader& in, Served& served) {
   int index = -1;
   wire::get(in, index);
+  if (served.parts.size() >= kMostParts)
+    throw wire::Error("more than " + std::to_string(kMostParts) +
+                      " parts in one call, more than any of the kit's makes");
   if (index != int(served.parts.size()))
     throw wire::Error("the kit's wrapper started part " + std::to_string(index) + " where part " +
                       std::to_string(served.parts.size()) + " was due (does the code call given::part?)");

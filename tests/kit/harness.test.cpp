@@ -2,6 +2,7 @@
 // the ambiguity test on cases whose answer is known.
 #include "common/generators/generators.h"
 #include "common/given/segment_triangle.h"
+#include "common/given/served.h"
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
 #include "common/protocol/report.h"
@@ -140,4 +141,51 @@ TEST_CASE("a step's report reads back what was written, and a bad one names the 
   bad["test_cases"][0]["passed"] = "yes";
   CHECK_THROWS_WITH(report::step_from_json(bad),
                     "the report's \"test_cases\"[0]'s \"passed\" has the wrong type (string)");
+}
+
+// The judge's side of the given calls (common/given/served.h): what it counts, and what it
+// refuses from a process that writes frames of its own.
+namespace {
+std::string counted_frame(const std::string& name) {
+  wire::Writer w;
+  wire::put(w, name);
+  return w.take();
+}
+std::string part_frame(int index) {
+  wire::Writer w;
+  wire::put(w, std::string("part"));
+  wire::put(w, index);
+  return w.take();
+}
+}  // namespace
+
+TEST_CASE("the judge counts given calls per answer and per part, and refuses forged frames", "[kit]") {
+  std::string reply;
+  given::Served served;
+  CHECK_FALSE(given::take_frame(given::kCountedFrame, counted_frame("segment_triangle"), served, reply));
+  CHECK_FALSE(given::take_frame(given::kCountedFrame, part_frame(0), served, reply));
+  given::take_frame(given::kCountedFrame, counted_frame("segment_triangle"), served, reply);
+  given::take_frame(given::kCountedFrame, part_frame(1), served, reply);
+  given::take_frame(given::kCountedFrame, counted_frame("segment_triangle"), served, reply);
+  given::take_frame(given::kCountedFrame, counted_frame("segment_triangle"), served, reply);
+  CHECK(served.count("segment_triangle") == 4);
+  CHECK(served.count(0, "segment_triangle") == 1);
+  CHECK(served.count(1, "segment_triangle") == 2);
+  CHECK(served.problem.empty());
+
+  given::Served forged;  // a name nobody counts, then a part out of order
+  given::take_frame(given::kCountedFrame, counted_frame("my_own_test"), forged, reply);
+  CHECK(forged.problem.find("my_own_test") != std::string::npos);
+  given::Served skipped;
+  given::take_frame(given::kCountedFrame, part_frame(3), skipped, reply);
+  CHECK(skipped.problem.find("part 3 where part 0") != std::string::npos);
+
+  given::Served flood;  // parts without end: the ledger stops growing
+  for (int k = 0; k < 50000; ++k) given::take_frame(given::kCountedFrame, part_frame(k), flood, reply);
+  CHECK(flood.parts.size() < 50000 / 2);
+  CHECK(flood.problem.find("parts in one call") != std::string::npos);
+
+  given::Served unread;  // a served call the judge does not serve: refused, an empty reply
+  CHECK(given::take_frame(given::kServedFrame, counted_frame("no_such_pose"), unread, reply));
+  CHECK_FALSE(unread.problem.empty());
 }
