@@ -19,8 +19,9 @@ bool given_balls_meet(const Sphere& a, const Sphere& b) {
     given::count("given_balls_meet");
   else
     given::count_local("given_balls_meet");
-  const double reach = a.radius + b.radius;
-  return (a.center - b.center).squaredNorm() <= reach * reach;  // closed balls: touching counts
+  const Vec3 gap = b.center - a.center;
+  const double sum = a.radius + b.radius;
+  return gap.dot(gap) <= sum * sum;  // closed balls: touching counts
 }
 
 bool given_boxes_overlap(const Box& a, const Box& b) {
