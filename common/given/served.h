@@ -94,6 +94,15 @@ template <class R, class... A> R ask(const char* name, const A&... args) {
 std::uint64_t local_calls(const std::string& name);
 void count_local(const std::string& name);
 
+// What a counted given function does first: in the answerer, a counted frame to the
+// judge; anywhere else, a local count for the viewer.
+inline void note_call(const char* name) {
+  if (served())
+    count(name);
+  else
+    count_local(name);
+}
+
 // ---- In the judge's process -------------------------------------------------------------
 
 // The lab's counted functions, by name: any other name in a counted frame is refused.

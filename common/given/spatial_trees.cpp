@@ -7,28 +7,19 @@
 namespace labkit::lab06 {
 
 int compare_ends(const Endpoint& a, const Endpoint& b) {
-  if (given::served())
-    given::count("compare_ends");
-  else
-    given::count_local("compare_ends");
+  given::note_call("compare_ends");
   return (a.value > b.value) - (a.value < b.value);
 }
 
 bool given_balls_meet(const Sphere& a, const Sphere& b) {
-  if (given::served())
-    given::count("given_balls_meet");
-  else
-    given::count_local("given_balls_meet");
+  given::note_call("given_balls_meet");
   const Vec3 gap = b.center - a.center;
   const double sum = a.radius + b.radius;
   return gap.dot(gap) <= sum * sum;  // closed balls: touching counts
 }
 
 bool given_boxes_overlap(const Box& a, const Box& b) {
-  if (given::served())
-    given::count("given_boxes_overlap");
-  else
-    given::count_local("given_boxes_overlap");
+  given::note_call("given_boxes_overlap");
   const Vec3 d = b.center - a.center;
   const auto apart_along = [&](const Vec3& u) {
     const double length = u.norm();
@@ -50,10 +41,7 @@ bool given_boxes_overlap(const Box& a, const Box& b) {
 }
 
 bool given_triangles_meet(const Triangle& s, const Triangle& t) {
-  if (given::served())
-    given::count("given_triangles_meet");
-  else
-    given::count_local("given_triangles_meet");
+  given::note_call("given_triangles_meet");
   for (int k = 0; k < 3; ++k)
     if (given::segment_triangle({s[k], s[(k + 1) % 3]}, t).hit ||
         given::segment_triangle({t[k], t[(k + 1) % 3]}, s).hit)
