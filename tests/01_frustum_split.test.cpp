@@ -80,8 +80,8 @@ auto expect_polygon(std::vector<Vec3> corners, double area, Run run, Judge judge
   };
 }
 
-std::vector<Triangle> run_split(const TrianglePlane& in) { return split_triangle(in.triangle, in.plane); }
-std::vector<Triangle> run_clip(const TriangleFrustum& in) { return clip_triangle(in.triangle, in.frustum); }
+std::vector<Triangle> run_split(const TrianglePlane& in) { return answerer::split_triangle(in.triangle, in.plane); }
+std::vector<Triangle> run_clip(const TriangleFrustum& in) { return answerer::clip_triangle(in.triangle, in.frustum); }
 Outcome judge_split(const TrianglePlane& in, const std::vector<Triangle>& got) {
   return judge::split_triangle(in, got, Rules::exact);
 }
@@ -204,7 +204,8 @@ TEST_CASE(LABKIT_STEP(L01S1) ": worked examples", "[lab01][step1]") {
   const Plane z1{{0, 0, 2}, -2};
   const auto distance = [](const Vec3& x, double expected) {
     return [=](const TrianglePlane& in) {
-      const double got = signed_distance(in.plane, x), value = in.plane.value(x), length = in.plane.normal.norm();
+      const double got = answerer::signed_distance(in.plane, x), value = in.plane.value(x),
+                   length = in.plane.normal.norm();
       Expect e;
       e.that("signed_distance", std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected),
              "the signed distance is (n . x + offset) / |n| = " + fmt(value) + " / " + fmt(length) + " = " +
@@ -221,7 +222,7 @@ TEST_CASE(LABKIT_STEP(L01S1) ": worked examples", "[lab01][step1]") {
   check::example(query::signed_distance, "a tilted plane: (1, 2, 2) . x - 3 at (1, 1, 1) is 2, over |n| = 3",
                  TrianglePlane{{}, Plane{{1, 2, 2}, -3}}, distance({1, 1, 1}, 2.0 / 3.0));
   const auto sides = [](const TrianglePlane& in) {
-    return judge::classify(in, classify(in.plane, in.triangle), Rules::exact);
+    return judge::classify(in, answerer::classify(in.plane, in.triangle), Rules::exact);
   };
   check::example(query::classify, "out, in, on", on_z1, sides);
   check::example(query::classify, "2^-40 above the plane is in",
@@ -231,11 +232,12 @@ TEST_CASE(LABKIT_STEP(L01S1) ": worked examples", "[lab01][step1]") {
 TEST_CASE(LABKIT_STEP(L01S1) ": random cases", "[lab01][step1][oracle]") {
   check::random_cases(query::signed_distance, decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
     std::array<double, 3> got{};
-    for (int i = 0; i < 3; ++i) got[std::size_t(i)] = signed_distance(in.plane, in.triangle[i]);
+    for (int i = 0; i < 3; ++i) got[std::size_t(i)] = answerer::signed_distance(in.plane, in.triangle[i]);
     return judge::signed_distance(in, got);
   });
-  check::random_cases(query::classify, decisive(gen::triangle_plane()),
-                      [](const TrianglePlane& in) { return judge::classify(in, classify(in.plane, in.triangle)); });
+  check::random_cases(query::classify, decisive(gen::triangle_plane()), [](const TrianglePlane& in) {
+    return judge::classify(in, answerer::classify(in.plane, in.triangle));
+  });
 }
 
 // ---- Step 2 ------------------------------------------------------------------------
@@ -279,7 +281,7 @@ TEST_CASE(LABKIT_STEP(L01S2) ": random cases", "[lab01][step2][oracle]") {
 TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
   check::example(query::frustum_from_camera, "at the origin, looking down -z, 90 degrees, near 1, far 3",
                  square_camera(), [](const Camera& in) {
-                   const Frustum got = frustum_from_camera(in);
+                   const Frustum got = answerer::frustum_from_camera(in);
                    return expect_planes(got, square_frustum_planes(), judge::frustum_from_camera(in, got));
                  });
   Camera wide = square_camera();
@@ -287,7 +289,7 @@ TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
   wide.aspect = 2;
   check::example(query::frustum_from_camera, "eye (0, 0, 5), twice as wide as high", wide, [](const Camera& in) {
     const double a = 1 / std::sqrt(5.0), h = kHalfRoot2;
-    const Frustum got = frustum_from_camera(in);
+    const Frustum got = answerer::frustum_from_camera(in);
     return expect_planes(
         got,
         {Plane{{a, 0, -2 * a}, 2 * std::sqrt(5.0)}, Plane{{-a, 0, -2 * a}, 2 * std::sqrt(5.0)},
@@ -300,12 +302,12 @@ TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
       0, 0, -2, -3,           //
       0, 0, -1, 0;
   check::example(query::frustum_from_matrix, "the square camera's perspective matrix", perspective, [](const Mat4& in) {
-    const Frustum got = frustum_from_matrix(in);
+    const Frustum got = answerer::frustum_from_matrix(in);
     return expect_planes(got, square_frustum_planes(), judge::frustum_from_matrix(in, got));
   });
   check::example(query::frustum_from_matrix, "the same matrix times 2: the same planes", Mat4(2 * perspective),
                  [](const Mat4& in) {
-    const Frustum got = frustum_from_matrix(in);
+    const Frustum got = answerer::frustum_from_matrix(in);
     return expect_planes(got, square_frustum_planes(), judge::frustum_from_matrix(in, got));
   });
   Mat4 ortho;
@@ -314,7 +316,7 @@ TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
       0, 0, -0.5, -1.5,   //
       0, 0, 0, 1;
   check::example(query::frustum_from_matrix, "glOrtho(-2, 2, -1, 1, 1, 5): a box", ortho, [](const Mat4& in) {
-    const Frustum got = frustum_from_matrix(in);
+    const Frustum got = answerer::frustum_from_matrix(in);
     return expect_planes(got,
                          {Plane{{1, 0, 0}, 2}, Plane{{-1, 0, 0}, 2}, Plane{{0, 1, 0}, 1}, Plane{{0, -1, 0}, 1},
                           Plane{{0, 0, -1}, -1}, Plane{{0, 0, 1}, 5}},
@@ -323,10 +325,11 @@ TEST_CASE(LABKIT_STEP(L01S3) ": worked examples", "[lab01][step3]") {
 }
 
 TEST_CASE(LABKIT_STEP(L01S3) ": random cases", "[lab01][step3][oracle]") {
-  check::random_cases(query::frustum_from_camera, gen::lab_camera(),
-                      [](const Camera& in) { return judge::frustum_from_camera(in, frustum_from_camera(in)); });
+  check::random_cases(query::frustum_from_camera, gen::lab_camera(), [](const Camera& in) {
+    return judge::frustum_from_camera(in, answerer::frustum_from_camera(in));
+  });
   check::random_cases(query::frustum_from_matrix, gen::view_projection_matrix(),
-                      [](const Mat4& in) { return judge::frustum_from_matrix(in, frustum_from_matrix(in)); });
+                      [](const Mat4& in) { return judge::frustum_from_matrix(in, answerer::frustum_from_matrix(in)); });
 }
 
 // ---- Step 4 ------------------------------------------------------------------------
@@ -368,7 +371,7 @@ TEST_CASE(LABKIT_STEP(L01S5) ": worked examples", "[lab01][step5]") {
   in.frustum = integer_pyramid();
   check::example(query::clip_mesh, "a rectangle cut a quarter of the way across by the left plane", in,
                  [](const MeshFrustum& in) {
-    const ClippedMesh got = clip_mesh(colored(in), in.frustum);
+    const ClippedMesh got = answerer::clip_mesh(colored(in), in.frustum);
     // The contract's rules first (sizes, pieces, colours), with their reasons.
     const Outcome judged = judge::clip_mesh(in, got, Rules::exact);
     if (judged.verdict == Outcome::Verdict::fail) return judged;
@@ -392,8 +395,9 @@ TEST_CASE(LABKIT_STEP(L01S5) ": worked examples", "[lab01][step5]") {
 }
 
 TEST_CASE(LABKIT_STEP(L01S5) ": random cases", "[lab01][step5][oracle]") {
-  check::random_cases(query::clip_mesh, decisive(gen::mesh_frustum()),
-                      [](const MeshFrustum& in) { return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum)); });
+  check::random_cases(query::clip_mesh, decisive(gen::mesh_frustum()), [](const MeshFrustum& in) {
+    return judge::clip_mesh(in, answerer::clip_mesh(colored(in), in.frustum));
+  });
 }
 
 // ---- Step 6: robustness --------------------------------------------------------------
@@ -433,14 +437,14 @@ TEST_CASE(LABKIT_STEP(L01S6) ": vertices, edges and triangles on frustum planes"
 
 TEST_CASE(LABKIT_STEP(L01S6) ": random exact degenerate cases", "[lab01][step6][oracle]") {
   check::random_cases(query::robust_classify, gen::exact_triangle_plane(), [](const TrianglePlane& in) {
-    return judge::classify(in, classify(in.plane, in.triangle), Rules::exact);
+    return judge::classify(in, answerer::classify(in.plane, in.triangle), Rules::exact);
   });
   check::random_cases(query::robust_split_triangle, gen::exact_triangle_plane(),
                       [](const TrianglePlane& in) { return judge::split_triangle(in, run_split(in), Rules::exact); });
   check::random_cases(query::robust_clip_triangle, gen::exact_triangle_frustum(),
                       [](const TriangleFrustum& in) { return judge::clip_triangle(in, run_clip(in), Rules::exact); });
   check::random_cases(query::robust_clip_mesh, gen::exact_mesh_frustum(), [](const MeshFrustum& in) {
-    return judge::clip_mesh(in, clip_mesh(colored(in), in.frustum), Rules::exact);
+    return judge::clip_mesh(in, answerer::clip_mesh(colored(in), in.frustum), Rules::exact);
   });
 }
 
@@ -458,18 +462,18 @@ const double kNaN = std::nan(""), kInf = HUGE_VAL;
 TEST_CASE("L01 preconditions: invalid input is named, not answered", "[lab01][contract]") {
   const Triangle t{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
   const Plane zero{{0, 0, 0}, 1}, nan_normal{{kNaN, 0, 1}, 0}, inf_offset{{0, 0, 1}, kInf};
-  rejects("a zero normal", "plane.normal", [&] { return signed_distance(zero, {0, 0, 0}); });
-  rejects("a NaN normal", "plane.normal", [&] { return signed_distance(nan_normal, {0, 0, 0}); });
-  rejects("an infinite offset", "plane.offset", [&] { return signed_distance(inf_offset, {0, 0, 0}); });
-  rejects("a NaN point", "x", [&] { return signed_distance(kFloor, {kNaN, 0, 0}); });
-  rejects("classify, a zero normal", "plane.normal", [&] { return classify(zero, t); });
+  rejects("a zero normal", "plane.normal", [&] { return answerer::signed_distance(zero, {0, 0, 0}); });
+  rejects("a NaN normal", "plane.normal", [&] { return answerer::signed_distance(nan_normal, {0, 0, 0}); });
+  rejects("an infinite offset", "plane.offset", [&] { return answerer::signed_distance(inf_offset, {0, 0, 0}); });
+  rejects("a NaN point", "x", [&] { return answerer::signed_distance(kFloor, {kNaN, 0, 0}); });
+  rejects("classify, a zero normal", "plane.normal", [&] { return answerer::classify(zero, t); });
   rejects("classify, an infinite vertex", "triangle.v1", [&] {
-    return classify(kFloor, Triangle{{0, 0, 0}, {kInf, 0, 0}, {0, 1, 0}});
+    return answerer::classify(kFloor, Triangle{{0, 0, 0}, {kInf, 0, 0}, {0, 1, 0}});
   });
   rejects("split, a NaN vertex", "triangle.v2", [&] {
-    return split_triangle(Triangle{{0, 0, 0}, {1, 0, 0}, {0, kNaN, 0}}, kFloor);
+    return answerer::split_triangle(Triangle{{0, 0, 0}, {1, 0, 0}, {0, kNaN, 0}}, kFloor);
   });
-  rejects("split, a zero normal", "plane.normal", [&] { return split_triangle(t, zero); });
+  rejects("split, a zero normal", "plane.normal", [&] { return answerer::split_triangle(t, zero); });
 
   const auto camera_with = [](auto&& change) {
     Camera c = square_camera();
@@ -495,24 +499,24 @@ TEST_CASE("L01 preconditions: invalid input is named, not answered", "[lab01][co
       {"camera.far", camera_with([](Camera& c) { c.far = kInf; })},
   };
   for (const auto& [argument, camera] : cameras)
-    rejects("frustum_from_camera: " + argument, argument, [&] { return frustum_from_camera(camera); });
+    rejects("frustum_from_camera: " + argument, argument, [&] { return answerer::frustum_from_camera(camera); });
 
   Mat4 m = Mat4::Identity();
   m(1, 2) = kNaN;
-  rejects("a NaN matrix entry", "view_projection", [&] { return frustum_from_matrix(m); });
+  rejects("a NaN matrix entry", "view_projection", [&] { return answerer::frustum_from_matrix(m); });
   Mat4 flat = Mat4::Identity();
   flat.row(3) = flat.row(0);  // r3 - r0 = 0: no right plane
-  rejects("a row combination with a zero normal", "right r3 - r0", [&] { return frustum_from_matrix(flat); });
+  rejects("a row combination with a zero normal", "right r3 - r0", [&] { return answerer::frustum_from_matrix(flat); });
 
   Frustum f = integer_pyramid();
   rejects("clip, a NaN vertex", "triangle.v0", [&] {
-    return clip_triangle(Triangle{{kNaN, 0, 0}, {1, 0, 0}, {0, 1, 0}}, f);
+    return answerer::clip_triangle(Triangle{{kNaN, 0, 0}, {1, 0, 0}, {0, 1, 0}}, f);
   });
   f.planes[4].normal = Vec3::Zero();
-  rejects("clip, a zero normal", "frustum.planes[4] (near)", [&] { return clip_triangle(t, f); });
+  rejects("clip, a zero normal", "frustum.planes[4] (near)", [&] { return answerer::clip_triangle(t, f); });
   f = integer_pyramid();
   f.planes[5].offset = kNaN;
-  rejects("clip, a NaN offset", "frustum.planes[5] (far).offset", [&] { return clip_triangle(t, f); });
+  rejects("clip, a NaN offset", "frustum.planes[5] (far).offset", [&] { return answerer::clip_triangle(t, f); });
 
   ColoredMesh mesh;
   mesh.mesh.vertices = {{0, 0, -2}, {1, 0, -2}, {0, 1, -2}};
@@ -520,19 +524,20 @@ TEST_CASE("L01 preconditions: invalid input is named, not answered", "[lab01][co
   mesh.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   ColoredMesh bad = mesh;
   bad.colors.pop_back();
-  rejects("a vertex without a colour", "mesh.colors", [&] { return clip_mesh(bad, integer_pyramid()); });
+  rejects("a vertex without a colour", "mesh.colors", [&] { return answerer::clip_mesh(bad, integer_pyramid()); });
   bad = mesh;
   bad.mesh.triangles[0][2] = 3;
-  rejects("an index out of range", "mesh.mesh.triangles[0]", [&] { return clip_mesh(bad, integer_pyramid()); });
+  rejects("an index out of range", "mesh.mesh.triangles[0]",
+          [&] { return answerer::clip_mesh(bad, integer_pyramid()); });
   bad = mesh;
   bad.mesh.vertices[1].y() = kInf;
-  rejects("an infinite vertex", "mesh.mesh.vertices[1]", [&] { return clip_mesh(bad, integer_pyramid()); });
+  rejects("an infinite vertex", "mesh.mesh.vertices[1]", [&] { return answerer::clip_mesh(bad, integer_pyramid()); });
   bad = mesh;
   bad.colors[2].x() = kNaN;
-  rejects("a NaN colour", "mesh.colors[2]", [&] { return clip_mesh(bad, integer_pyramid()); });
+  rejects("a NaN colour", "mesh.colors[2]", [&] { return answerer::clip_mesh(bad, integer_pyramid()); });
   Frustum g = integer_pyramid();
   g.planes[0].normal = Vec3::Zero();
-  rejects("clip_mesh, a zero normal", "frustum.planes[0] (left)", [&] { return clip_mesh(mesh, g); });
+  rejects("clip_mesh, a zero normal", "frustum.planes[0] (left)", [&] { return answerer::clip_mesh(mesh, g); });
 }
 
 namespace {

@@ -6,6 +6,7 @@
 #include "frustum_split.h"
 
 #include "common/fields.h"
+#include "common/protocol/calls.h"
 
 #include <array>
 #include <vector>
@@ -31,3 +32,6 @@ using Triangles = std::vector<Triangle>;
   CALL(Triangles, clip_triangle, (const Triangle&, const Frustum&))                \
   CALL(ClippedMesh, clip_mesh, (const ColoredMesh&, const Frustum&))
 // clang-format on
+
+// The judge's process calls the code under test only as answerer::name(...) (calls.h).
+LABKIT_ANSWERER_CALLS(lab01, LABKIT_LAB01_CALLS)

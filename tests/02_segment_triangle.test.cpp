@@ -46,13 +46,13 @@ Mesh floor_and_shelf() {
 
 // Judges that run the code under test, by query name.
 Outcome run_segment_plane(const SegmentTrianglePair& in) {
-  return judge::segment_plane(in, segment_plane(in.segment, in.triangle));
+  return judge::segment_plane(in, answerer::segment_plane(in.segment, in.triangle));
 }
 Outcome run_find(const SegmentTrianglePair& in) {
-  return judge::find_segment_triangle(in, find_segment_triangle(in.segment, in.triangle));
+  return judge::find_segment_triangle(in, answerer::find_segment_triangle(in.segment, in.triangle));
 }
 Outcome run_test(const SegmentTrianglePair& in) {
-  return judge::test_segment_triangle(in, test_segment_triangle(in.segment, in.triangle));
+  return judge::test_segment_triangle(in, answerer::test_segment_triangle(in.segment, in.triangle));
 }
 
 // The examples' checks, each naming the rule of the header it checks.
@@ -82,7 +82,7 @@ void expect_normal(Expect& e, const Vec3& got, const Vec3& expected) {
 TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   check::example(query::segment_plane, "a above, b below: crosses at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
-    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
+    const PlaneCrossing got = answerer::segment_plane(in.segment, in.triangle);
     Expect e;
     expect_distance(e, "d_a", got.d_a, 3, 16);
     expect_distance(e, "d_b", got.d_b, -1, 16);
@@ -93,7 +93,7 @@ TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   });
   check::example(query::segment_plane, "both ends above: no crossing", pair({1, 1, 2}, {3, 3, 5}),
                  [](const SegmentTrianglePair& in) {
-    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
+    const PlaneCrossing got = answerer::segment_plane(in.segment, in.triangle);
     Expect e;
     expect_distance(e, "d_a", got.d_a, 2, 16);
     expect_distance(e, "d_b", got.d_b, 5, 16);
@@ -102,7 +102,7 @@ TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   });
   check::example(query::segment_plane, "a on the plane: crosses at t = 0", pair({1, 1, 0}, {2, 2, 2}),
                  [](const SegmentTrianglePair& in) {
-    const PlaneCrossing got = segment_plane(in.segment, in.triangle);
+    const PlaneCrossing got = answerer::segment_plane(in.segment, in.triangle);
     Expect e;
     e.equal("crosses", got.crosses, true);
     expect_t(e, got.t, 0);
@@ -111,7 +111,7 @@ TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   });
   check::example(query::segment_plane, "the normal follows the winding",
                  pair({1, 1, 3}, {1, 1, -1}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}), [](const SegmentTrianglePair& in) {
-                   const PlaneCrossing got = segment_plane(in.segment, in.triangle);
+                   const PlaneCrossing got = answerer::segment_plane(in.segment, in.triangle);
                    Expect e;
                    expect_distance(e, "d_a", got.d_a, -3, 16);
                    expect_distance(e, "d_b", got.d_b, 1, 16);
@@ -130,7 +130,7 @@ TEST_CASE(LABKIT_STEP(L02S2) ": worked examples", "[lab02][step2]") {
   // Each expected answer is the exact one; the judge says which rule a wrong one breaks.
   const auto expect = [](bool inside) {
     return [inside](const PointTriangle& in) {
-      const bool got = point_in_triangle_edges(in.x, in.triangle);
+      const bool got = answerer::point_in_triangle_edges(in.x, in.triangle);
       return got == inside ? Outcome{} : judge::point_in_triangle(in, got, Rules::exact);
     };
   };
@@ -148,7 +148,7 @@ TEST_CASE(LABKIT_STEP(L02S2) ": worked examples", "[lab02][step2]") {
 
 TEST_CASE(LABKIT_STEP(L02S2) ": random cases", "[lab02][step2][oracle]") {
   check::random_cases(query::point_in_triangle_edges, gen::point_triangle(), [](const PointTriangle& in) {
-    return judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle));
+    return judge::point_in_triangle(in, answerer::point_in_triangle_edges(in.x, in.triangle));
   });
 }
 
@@ -157,7 +157,7 @@ TEST_CASE(LABKIT_STEP(L02S2) ": random cases", "[lab02][step2][oracle]") {
 TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[lab02][step3]") {
   const auto expect = [](int axis, double alpha, double beta) {
     return [=](const PointTriangle& in) {
-      const Barycentric got = barycentric(in.x, in.triangle);
+      const Barycentric got = answerer::barycentric(in.x, in.triangle);
       Expect e;
       e.equal("dropped_axis", got.dropped_axis, axis);
       const auto weight = [&e](const std::string& name, double mine, double exact) {
@@ -180,12 +180,12 @@ TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[la
   check::example(query::barycentric, "zero area: no axis", PointTriangle{{1, 1, 1}, kFlat},
                  [](const PointTriangle& in) {
     Expect e;
-    e.equal("dropped_axis", barycentric(in.x, in.triangle).dropped_axis, -1);
+    e.equal("dropped_axis", answerer::barycentric(in.x, in.triangle).dropped_axis, -1);
     return e.outcome();
   });
   const auto inside = [](bool expected) {
     return [expected](const PointTriangle& in) {
-      const bool got = point_in_triangle_barycentric(in.x, in.triangle);
+      const bool got = answerer::point_in_triangle_barycentric(in.x, in.triangle);
       return got == expected ? Outcome{} : judge::point_in_triangle(in, got, Rules::exact);
     };
   };
@@ -198,10 +198,11 @@ TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[la
 }
 
 TEST_CASE(LABKIT_STEP(L02S3) ": random cases", "[lab02][step3][oracle]") {
-  check::random_cases(query::barycentric, gen::point_triangle(),
-                      [](const PointTriangle& in) { return judge::barycentric(in, barycentric(in.x, in.triangle)); });
+  check::random_cases(query::barycentric, gen::point_triangle(), [](const PointTriangle& in) {
+    return judge::barycentric(in, answerer::barycentric(in.x, in.triangle));
+  });
   check::random_cases(query::point_in_triangle_barycentric, gen::point_triangle(), [](const PointTriangle& in) {
-    return judge::point_in_triangle(in, point_in_triangle_barycentric(in.x, in.triangle));
+    return judge::point_in_triangle(in, answerer::point_in_triangle_barycentric(in.x, in.triangle));
   });
 }
 
@@ -210,7 +211,7 @@ TEST_CASE(LABKIT_STEP(L02S3) ": random cases", "[lab02][step3][oracle]") {
 TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
   check::example(query::find_segment_triangle, "through the inside at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
-    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
+    const SegmentTriangleHit got = answerer::find_segment_triangle(in.segment, in.triangle);
     Expect e;
     e.equal("hit", got.hit, true);
     e.near("t", got.t, 0.75, 1e-12);
@@ -221,7 +222,7 @@ TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
   });
   check::example(query::find_segment_triangle, "from below: same normal, t = 1/4", pair({1, 1, -1}, {1, 1, 3}),
                  [](const SegmentTrianglePair& in) {
-    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
+    const SegmentTriangleHit got = answerer::find_segment_triangle(in.segment, in.triangle);
     Expect e;
     e.equal("hit", got.hit, true);
     expect_t(e, got.t, 0.25);
@@ -230,8 +231,8 @@ TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
   });
   const auto miss = [](const SegmentTrianglePair& in) {
     Expect e;
-    e.equal("hit", find_segment_triangle(in.segment, in.triangle).hit, false);
-    e.equal("test", test_segment_triangle(in.segment, in.triangle), false);
+    e.equal("hit", answerer::find_segment_triangle(in.segment, in.triangle).hit, false);
+    e.equal("test", answerer::test_segment_triangle(in.segment, in.triangle), false);
     return e.outcome();
   };
   check::example(query::find_segment_triangle, "crosses the plane beside the triangle", pair({3, 3, 1}, {3, 3, -1}),
@@ -242,9 +243,10 @@ TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
   // a coplanar hit is ambiguous in this step's random cases.
   check::example(query::find_segment_triangle, "in the plane, beside the triangle: a miss", pair({5, 1, 0}, {5, 3, 0}),
                  [](const SegmentTrianglePair& in) {
-    const Outcome o = judge::find_segment_triangle(in, find_segment_triangle(in.segment, in.triangle), Rules::exact);
+    const Outcome o =
+        judge::find_segment_triangle(in, answerer::find_segment_triangle(in.segment, in.triangle), Rules::exact);
     if (o.verdict == Outcome::Verdict::fail) return o;
-    return judge::test_segment_triangle(in, test_segment_triangle(in.segment, in.triangle), Rules::exact);
+    return judge::test_segment_triangle(in, answerer::test_segment_triangle(in.segment, in.triangle), Rules::exact);
   });
   // The floor triangle shrunk by 2^-22 (legs of 9.5e-7): its normal is 9.1e-13 long, below
   // the 1e-12 of Eigen's fuzzy isZero(), and still not zero.
@@ -253,7 +255,7 @@ TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
       query::find_segment_triangle, "a triangle a millionth the size",
       pair(Vec3(1, 1, 3) * tiny, Vec3(1, 1, -1) * tiny, {{0, 0, 0}, Vec3(4 * tiny, 0, 0), Vec3(0, 4 * tiny, 0)}),
       [tiny](const SegmentTrianglePair& in) {
-    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
+    const SegmentTriangleHit got = answerer::find_segment_triangle(in.segment, in.triangle);
     Expect e;
     e.that("hit", got.hit, describe(got.hit), "true",
            "the triangle's area |n| / 2 = " + fmt(in.triangle.area()) +
@@ -266,7 +268,7 @@ TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
   check::example(query::test_segment_triangle, "through the inside", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
     Expect e;
-    e.equal("test", test_segment_triangle(in.segment, in.triangle), true);
+    e.equal("test", answerer::test_segment_triangle(in.segment, in.triangle), true);
     return e.outcome();
   });
 }
@@ -292,7 +294,7 @@ TEST_CASE(LABKIT_STEP(L02S5) ": worked examples", "[lab02][step5]") {
   const Mesh mesh = floor_and_shelf();
   check::example(query::first_hit, "the shelf before the floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
-    const MeshHit got = first_hit(in.segment, in.mesh);
+    const MeshHit got = answerer::first_hit(in.segment, in.mesh);
     Expect e;
     e.equal("hit", got.hit, true);
     e.that("triangle", got.triangle == 3, std::to_string(got.triangle), "3",
@@ -304,12 +306,12 @@ TEST_CASE(LABKIT_STEP(L02S5) ": worked examples", "[lab02][step5]") {
   });
   // So nearly along the floor (a slope of 2^-20) that the volumes cannot give the
   // weights: they must be measured on the point (handout, step 3's barycentric).
-  check::example(query::first_hit, "nearly along the floor",
-                 SegmentMeshPair{{{0.5, 1, 0x1p-20}, {2.5, 1.5, -0x1p-20}}, mesh},
-                 [](const SegmentMeshPair& in) { return judge::first_hit(in, first_hit(in.segment, in.mesh)); });
+  check::example(
+      query::first_hit, "nearly along the floor", SegmentMeshPair{{{0.5, 1, 0x1p-20}, {2.5, 1.5, -0x1p-20}}, mesh},
+      [](const SegmentMeshPair& in) { return judge::first_hit(in, answerer::first_hit(in.segment, in.mesh)); });
   check::example(query::all_hits, "shelf, then floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
-    const std::vector<MeshHit> got = all_hits(in.segment, in.mesh);
+    const std::vector<MeshHit> got = answerer::all_hits(in.segment, in.mesh);
     Expect e;
     e.equal("count", int(got.size()), 2);
     if (got.size() == 2) {
@@ -324,25 +326,28 @@ TEST_CASE(LABKIT_STEP(L02S5) ": worked examples", "[lab02][step5]") {
   // The floor's two triangles share the diagonal (0,0)-(4,4): both are met, at one t.
   check::example(query::all_hits, "through the shared diagonal: both triangles, at the same t",
                  SegmentMeshPair{{{1, 1, 1}, {3, 3, -1}}, mesh}, [](const SegmentMeshPair& in) {
-                   return judge::all_hits(in, all_hits(in.segment, in.mesh), Rules::exact);
+                   return judge::all_hits(in, answerer::all_hits(in.segment, in.mesh), Rules::exact);
                  });
   check::example(query::any_hit, "beside the squares", SegmentMeshPair{{{5, 5, 5}, {5, 5, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
     Expect e;
-    e.equal("any_hit", any_hit(in.segment, in.mesh), false);
-    e.equal("first_hit.hit", first_hit(in.segment, in.mesh).hit, false);
-    e.equal("all_hits.size()", int(all_hits(in.segment, in.mesh).size()), 0);
+    e.equal("any_hit", answerer::any_hit(in.segment, in.mesh), false);
+    e.equal("first_hit.hit", answerer::first_hit(in.segment, in.mesh).hit, false);
+    e.equal("all_hits.size()", int(answerer::all_hits(in.segment, in.mesh).size()), 0);
     return e.outcome();
   });
 }
 
 TEST_CASE(LABKIT_STEP(L02S5) ": random cases", "[lab02][step5][oracle]") {
-  check::random_cases(query::any_hit, gen::decisive_segment_mesh(),
-                      [](const SegmentMeshPair& in) { return judge::any_hit(in, any_hit(in.segment, in.mesh)); });
-  check::random_cases(query::first_hit, gen::decisive_segment_mesh(),
-                      [](const SegmentMeshPair& in) { return judge::first_hit(in, first_hit(in.segment, in.mesh)); });
-  check::random_cases(query::all_hits, gen::decisive_segment_mesh(),
-                      [](const SegmentMeshPair& in) { return judge::all_hits(in, all_hits(in.segment, in.mesh)); });
+  check::random_cases(query::any_hit, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
+    return judge::any_hit(in, answerer::any_hit(in.segment, in.mesh));
+  });
+  check::random_cases(query::first_hit, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
+    return judge::first_hit(in, answerer::first_hit(in.segment, in.mesh));
+  });
+  check::random_cases(query::all_hits, gen::decisive_segment_mesh(), [](const SegmentMeshPair& in) {
+    return judge::all_hits(in, answerer::all_hits(in.segment, in.mesh));
+  });
 }
 
 // ---- Step 6 ------------------------------------------------------------------------
@@ -355,7 +360,7 @@ TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
   check::example(query::first_hit_moving, "a resting particle, a rising floor",
                  MovingMesh{{{1, 1, 1}, {1, 1, 1}}, floor, RigidTransform::Identity(), up},
                  [](const MovingMesh& in) {
-    const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
+    const MeshHit got = answerer::first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
     Expect e;
     e.that("hit", got.hit, describe(got.hit), "true",
            "in the floor's own frame the particle goes from m0^-1 a = (1, 1, 1) to m1^-1 b = (1, 1, -1), "
@@ -373,7 +378,7 @@ TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
   check::example(query::first_hit_moving, "a sliding floor: the point is on the mesh at its end pose",
                  MovingMesh{{{2, 2, 1}, {3, 2, -1}}, floor, RigidTransform::Identity(), aside},
                  [](const MovingMesh& in) {
-    const MeshHit got = first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
+    const MeshHit got = answerer::first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
     Expect e;
     e.equal("hit", got.hit, true);
     e.near("t", got.t, 0.5, 1e-12);
@@ -385,14 +390,14 @@ TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
                  MovingMesh{{{1, 1, 3}, {1, 1, 2.5}}, floor, RigidTransform::Identity(), up}, [](const MovingMesh& in) {
                    // In the floor's frame the particle goes from z = 3 to z = 0.5: no hit.
                    Expect e;
-                   e.equal("hit", first_hit_moving(in.segment, in.mesh, in.m0, in.m1).hit, false);
+                   e.equal("hit", answerer::first_hit_moving(in.segment, in.mesh, in.m0, in.m1).hit, false);
                    return e.outcome();
                  });
 }
 
 TEST_CASE(LABKIT_STEP(L02S6) ": random cases", "[lab02][step6][oracle]") {
   check::random_cases(query::first_hit_moving, gen::moving_mesh(), [](const MovingMesh& in) {
-    return judge::first_hit_moving(in, first_hit_moving(in.segment, in.mesh, in.m0, in.m1));
+    return judge::first_hit_moving(in, answerer::first_hit_moving(in.segment, in.mesh, in.m0, in.m1));
   });
 }
 
@@ -429,7 +434,7 @@ Mesh upright_b() {
 }
 
 MeshContact run_contact(const MovingMeshes& in) {
-  return first_contact_moving_meshes(in.a, in.velocity_a, in.b, in.velocity_b);
+  return answerer::first_contact_moving_meshes(in.a, in.velocity_a, in.b, in.velocity_b);
 }
 
 // An example's check: the expected contact, then the judge's rules (exact input).
@@ -479,15 +484,16 @@ namespace {
 const Triangle kSmall{{0, 0, 0}, {3, 0, 0}, {0, 3, 0}};
 
 Outcome exact_find(const SegmentTrianglePair& in) {
-  const Outcome o = judge::find_segment_triangle(in, find_segment_triangle(in.segment, in.triangle), Rules::exact);
+  const Outcome o =
+      judge::find_segment_triangle(in, answerer::find_segment_triangle(in.segment, in.triangle), Rules::exact);
   if (o.verdict == Outcome::Verdict::fail) return o;
-  return judge::test_segment_triangle(in, test_segment_triangle(in.segment, in.triangle), Rules::exact);
+  return judge::test_segment_triangle(in, answerer::test_segment_triangle(in.segment, in.triangle), Rules::exact);
 }
 
 // A hit with the given t, and the find query's other checks.
 auto expect_hit(double t) {
   return [t](const SegmentTrianglePair& in) {
-    const SegmentTriangleHit got = find_segment_triangle(in.segment, in.triangle);
+    const SegmentTriangleHit got = answerer::find_segment_triangle(in.segment, in.triangle);
     Expect e;
     const bool coplanar = oracle::segment_triangle(in.segment, in.triangle).coplanar;
     e.that("hit", got.hit, describe(got.hit), "true",
@@ -505,8 +511,8 @@ auto expect_hit(double t) {
 
 Outcome expect_miss(const SegmentTrianglePair& in) {
   Expect e;
-  e.equal("hit", find_segment_triangle(in.segment, in.triangle).hit, false);
-  e.equal("test", test_segment_triangle(in.segment, in.triangle), false);
+  e.equal("hit", answerer::find_segment_triangle(in.segment, in.triangle).hit, false);
+  e.equal("test", answerer::test_segment_triangle(in.segment, in.triangle), false);
   return e.outcome();
 }
 
@@ -534,8 +540,8 @@ TEST_CASE(LABKIT_STEP(L02S8) ": touching, edges, vertices, coplanar, zero size",
   constexpr auto edges = query::robust_point_in_triangle;
   const auto on_boundary = [](const PointTriangle& in) {
     Expect e;
-    e.equal("point_in_triangle_edges", point_in_triangle_edges(in.x, in.triangle), true);
-    e.equal("point_in_triangle_barycentric", point_in_triangle_barycentric(in.x, in.triangle), true);
+    e.equal("point_in_triangle_edges", answerer::point_in_triangle_edges(in.x, in.triangle), true);
+    e.equal("point_in_triangle_barycentric", answerer::point_in_triangle_barycentric(in.x, in.triangle), true);
     return e.outcome();
   };
   check::example(edges, "on the long edge, a third of the way", PointTriangle{{1, 2, 0}, kSmall}, on_boundary);
@@ -549,20 +555,20 @@ TEST_CASE(LABKIT_STEP(L02S8) ": shared edges and vertices in a mesh", "[lab02][s
   constexpr auto q = query::robust_all_hits;
   check::example(q, "through the shared diagonal: both triangles", SegmentMeshPair{{{2, 2, 1}, {2, 2, -1}}, floor},
                  [](const SegmentMeshPair& in) {
-    const std::vector<MeshHit> got = all_hits(in.segment, in.mesh);
+    const std::vector<MeshHit> got = answerer::all_hits(in.segment, in.mesh);
     Expect e;
     e.equal("count", int(got.size()), 2);
     if (got.size() == 2) {
       e.equal("order by index on a tie", got[0].triangle, 0);
       e.near("t", got[1].t, 0.5, 1e-12);
     }
-    e.equal("first_hit.hit", first_hit(in.segment, in.mesh).hit, true);
+    e.equal("first_hit.hit", answerer::first_hit(in.segment, in.mesh).hit, true);
     return e.outcome();
   });
   check::example(q, "through the shared corner (4, 4, 0): both triangles",
                  SegmentMeshPair{{{4, 4, 3}, {4, 4, -3}}, floor}, [](const SegmentMeshPair& in) {
                    Expect e;
-                   e.equal("count", int(all_hits(in.segment, in.mesh).size()), 2);
+                   e.equal("count", int(answerer::all_hits(in.segment, in.mesh).size()), 2);
                    return e.outcome();
                  });
 }
@@ -594,14 +600,14 @@ TEST_CASE(LABKIT_STEP(L02S8) ": moving meshes touching exactly", "[lab02][step8]
 TEST_CASE(LABKIT_STEP(L02S8) ": random exact degenerate cases", "[lab02][step8][oracle]") {
   check::random_cases(query::robust_find_segment_triangle, gen::exact_segment_triangle(), exact_find);
   check::random_cases(query::robust_point_in_triangle, gen::exact_point_triangle(), [](const PointTriangle& in) {
-    const Outcome o = judge::point_in_triangle(in, point_in_triangle_edges(in.x, in.triangle), Rules::exact);
+    const Outcome o = judge::point_in_triangle(in, answerer::point_in_triangle_edges(in.x, in.triangle), Rules::exact);
     if (o.verdict == Outcome::Verdict::fail) return o;
-    return judge::point_in_triangle(in, point_in_triangle_barycentric(in.x, in.triangle), Rules::exact);
+    return judge::point_in_triangle(in, answerer::point_in_triangle_barycentric(in.x, in.triangle), Rules::exact);
   });
   check::random_cases(query::robust_all_hits, gen::exact_segment_mesh(), [](const SegmentMeshPair& in) {
-    const Outcome o = judge::all_hits(in, all_hits(in.segment, in.mesh), Rules::exact);
+    const Outcome o = judge::all_hits(in, answerer::all_hits(in.segment, in.mesh), Rules::exact);
     if (o.verdict == Outcome::Verdict::fail) return o;
-    return judge::first_hit(in, first_hit(in.segment, in.mesh), Rules::exact);
+    return judge::first_hit(in, answerer::first_hit(in.segment, in.mesh), Rules::exact);
   });
 }
 
@@ -621,62 +627,66 @@ TEST_CASE("L02 preconditions: invalid input throws std::invalid_argument naming 
       Triangle t = kFloor;
       t[i] = p;
       const std::string v = "triangle.v" + std::to_string(i);
-      rejects(v, [&] { segment_plane(good, t); });
-      rejects(v, [&] { point_in_triangle_edges({1, 1, 0}, t); });
-      rejects(v, [&] { barycentric({1, 1, 0}, t); });
-      rejects(v, [&] { point_in_triangle_barycentric({1, 1, 0}, t); });
-      rejects(v, [&] { test_segment_triangle(good, t); });
-      rejects(v, [&] { find_segment_triangle(good, t); });
+      rejects(v, [&] { answerer::segment_plane(good, t); });
+      rejects(v, [&] { answerer::point_in_triangle_edges({1, 1, 0}, t); });
+      rejects(v, [&] { answerer::barycentric({1, 1, 0}, t); });
+      rejects(v, [&] { answerer::point_in_triangle_barycentric({1, 1, 0}, t); });
+      rejects(v, [&] { answerer::test_segment_triangle(good, t); });
+      rejects(v, [&] { answerer::find_segment_triangle(good, t); });
     }
     for (const auto& [name, s] :
          {std::pair{std::string("segment.a"), bad_a}, std::pair{std::string("segment.b"), bad_b}}) {
-      rejects(name, [&] { segment_plane(s, kFloor); });
-      rejects(name, [&] { test_segment_triangle(s, kFloor); });
-      rejects(name, [&] { find_segment_triangle(s, kFloor); });
-      rejects(name, [&] { first_hit(s, floor); });
-      rejects(name, [&] { any_hit(s, floor); });
-      rejects(name, [&] { all_hits(s, floor); });
-      rejects(name, [&] { first_hit_moving(s, floor, RigidTransform::Identity(), RigidTransform::Identity()); });
+      rejects(name, [&] { answerer::segment_plane(s, kFloor); });
+      rejects(name, [&] { answerer::test_segment_triangle(s, kFloor); });
+      rejects(name, [&] { answerer::find_segment_triangle(s, kFloor); });
+      rejects(name, [&] { answerer::first_hit(s, floor); });
+      rejects(name, [&] { answerer::any_hit(s, floor); });
+      rejects(name, [&] { answerer::all_hits(s, floor); });
+      rejects(name,
+              [&] { answerer::first_hit_moving(s, floor, RigidTransform::Identity(), RigidTransform::Identity()); });
     }
-    rejects("x", [&] { point_in_triangle_edges(p, kFloor); });
-    rejects("x", [&] { barycentric(p, kFloor); });
-    rejects("x", [&] { point_in_triangle_barycentric(p, kFloor); });
+    rejects("x", [&] { answerer::point_in_triangle_edges(p, kFloor); });
+    rejects("x", [&] { answerer::barycentric(p, kFloor); });
+    rejects("x", [&] { answerer::point_in_triangle_barycentric(p, kFloor); });
     Mesh bad_vertex = floor;
     bad_vertex.vertices[2] = p;
-    rejects("mesh.vertices[2]", [&] { first_hit(good, bad_vertex); });
-    rejects("mesh.vertices[2]", [&] { any_hit(good, bad_vertex); });
-    rejects("mesh.vertices[2]", [&] { all_hits(good, bad_vertex); });
+    rejects("mesh.vertices[2]", [&] { answerer::first_hit(good, bad_vertex); });
+    rejects("mesh.vertices[2]", [&] { answerer::any_hit(good, bad_vertex); });
+    rejects("mesh.vertices[2]", [&] { answerer::all_hits(good, bad_vertex); });
     RigidTransform pose = RigidTransform::Identity();
     pose.translation() = p;
-    rejects("m0", [&] { first_hit_moving(good, floor, pose, RigidTransform::Identity()); });
-    rejects("m1", [&] { first_hit_moving(good, floor, RigidTransform::Identity(), pose); });
+    rejects("m0", [&] { answerer::first_hit_moving(good, floor, pose, RigidTransform::Identity()); });
+    rejects("m1", [&] { answerer::first_hit_moving(good, floor, RigidTransform::Identity(), pose); });
   }
   const Segment good{{1, 1, 3}, {1, 1, -1}};
   for (int index : {-1, 4}) {
     Mesh bad_index = floor;
     bad_index.triangles[1][2] = index;
-    rejects("mesh.triangles[1]", [&] { first_hit(good, bad_index); });
-    rejects("mesh.triangles[1]", [&] { any_hit(good, bad_index); });
-    rejects("mesh.triangles[1]", [&] { all_hits(good, bad_index); });
+    rejects("mesh.triangles[1]", [&] { answerer::first_hit(good, bad_index); });
+    rejects("mesh.triangles[1]", [&] { answerer::any_hit(good, bad_index); });
+    rejects("mesh.triangles[1]", [&] { answerer::all_hits(good, bad_index); });
   }
   for (double bad : {nan, inf}) {
     const Vec3 p(bad, 0, 0);
     Mesh bad_vertex = floor;
     bad_vertex.vertices[1] = p;
-    rejects("velocity_a", [&] { first_contact_moving_meshes(floor, p, floor, Vec3::Zero()); });
-    rejects("velocity_b", [&] { first_contact_moving_meshes(floor, Vec3::Zero(), floor, p); });
-    rejects("mesh.vertices[1]", [&] { first_contact_moving_meshes(bad_vertex, Vec3::Zero(), floor, Vec3::Zero()); });
-    rejects("mesh.vertices[1]", [&] { first_contact_moving_meshes(floor, Vec3::Zero(), bad_vertex, Vec3::Zero()); });
+    rejects("velocity_a", [&] { answerer::first_contact_moving_meshes(floor, p, floor, Vec3::Zero()); });
+    rejects("velocity_b", [&] { answerer::first_contact_moving_meshes(floor, Vec3::Zero(), floor, p); });
+    rejects("mesh.vertices[1]",
+            [&] { answerer::first_contact_moving_meshes(bad_vertex, Vec3::Zero(), floor, Vec3::Zero()); });
+    rejects("mesh.vertices[1]",
+            [&] { answerer::first_contact_moving_meshes(floor, Vec3::Zero(), bad_vertex, Vec3::Zero()); });
   }
   {
     Mesh bad_index = floor;
     bad_index.triangles[0][1] = 7;
-    rejects("mesh.triangles[0]", [&] { first_contact_moving_meshes(bad_index, Vec3::Zero(), floor, Vec3::Zero()); });
+    rejects("mesh.triangles[0]",
+            [&] { answerer::first_contact_moving_meshes(bad_index, Vec3::Zero(), floor, Vec3::Zero()); });
   }
   RigidTransform stretched = RigidTransform::Identity();
   stretched.linear() *= 2;
-  rejects("m1", [&] { first_hit_moving(good, floor, RigidTransform::Identity(), stretched); });
+  rejects("m1", [&] { answerer::first_hit_moving(good, floor, RigidTransform::Identity(), stretched); });
   // Not invalid: the documented results of zero length and zero area.
-  CHECK_FALSE(test_segment_triangle({{1, 1, 1}, {1, 1, 1}}, kFloor));
-  CHECK_FALSE(test_segment_triangle(good, kFlat));
+  CHECK_FALSE(answerer::test_segment_triangle({{1, 1, 1}, {1, 1, 1}}, kFloor));
+  CHECK_FALSE(answerer::test_segment_triangle(good, kFlat));
 }

@@ -6,6 +6,7 @@
 #include "segment_triangle.h"
 
 #include "common/fields.h"
+#include "common/protocol/calls.h"
 
 namespace labkit::lab02 {
 
@@ -34,3 +35,6 @@ using MeshHits = std::vector<MeshHit>;
   CALL(MeshHit, first_hit_moving, (const Segment&, const Mesh&, const RigidTransform&, const RigidTransform&)) \
   CALL(MeshContact, first_contact_moving_meshes, (const Mesh&, const Vec3&, const Mesh&, const Vec3&))
 // clang-format on
+
+// The judge's process calls the code under test only as answerer::name(...) (calls.h).
+LABKIT_ANSWERER_CALLS(lab02, LABKIT_LAB02_CALLS)

@@ -69,15 +69,17 @@ template <class Judge> Outcome with_reason(Outcome own, Judge&& judge) {
 
 std::array<Vec3, 15> all_axes(const BoxPair& in) {
   std::array<Vec3, 15> axes;
-  for (int k = 0; k < 15; ++k) axes[std::size_t(k)] = box_axis(in.a, in.b, k);
+  for (int k = 0; k < 15; ++k) axes[std::size_t(k)] = answerer::box_axis(in.a, in.b, k);
   return axes;
 }
 
 Outcome run_moving_find(const MovingBoxes& in, Rules rules = Rules::random) {
-  return judge::find_moving_boxes(in, find_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration), rules);
+  return judge::find_moving_boxes(
+      in, answerer::find_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration), rules);
 }
 Outcome run_moving_test(const MovingBoxes& in, Rules rules = Rules::random) {
-  return judge::test_moving_boxes(in, test_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration), rules);
+  return judge::test_moving_boxes(
+      in, answerer::test_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration), rules);
 }
 
 }  // namespace
@@ -88,7 +90,7 @@ TEST_CASE(LABKIT_STEP(L03S1) ": worked examples", "[lab03][step1]") {
   const Box b = box({1, 2, 0}, {5, 2.5, 1}, three_four_five());
   const auto expect = [](double center, double radius) {
     return [=](const BoxOnAxis& in) {
-      const Projection got = project_box(in.box, in.axis);
+      const Projection got = answerer::project_box(in.box, in.axis);
       Expect e;
       e.near("center", got.center, center, 1e-12);
       e.near("radius", got.radius, radius, 1e-12);
@@ -105,7 +107,7 @@ TEST_CASE(LABKIT_STEP(L03S1) ": worked examples", "[lab03][step1]") {
   const Box a = cube({0, 0, 0});
   const auto separated = [](bool expected) {
     return [expected](const BoxPairOnAxis& in) {
-      const bool got = separated_on_axis(in.a, in.b, in.axis);
+      const bool got = answerer::separated_on_axis(in.a, in.b, in.axis);
       return with_reason(expect_bool("separated_on_axis", got, expected),
                          [&] { return judge::separated_on_axis(in, got, Rules::exact); });
     };
@@ -121,10 +123,11 @@ TEST_CASE(LABKIT_STEP(L03S1) ": worked examples", "[lab03][step1]") {
 }
 
 TEST_CASE(LABKIT_STEP(L03S1) ": random cases", "[lab03][step1][oracle]") {
-  check::random_cases(query::project_box, gen::box_on_axis(),
-                      [](const BoxOnAxis& in) { return judge::project_box(in, project_box(in.box, in.axis)); });
+  check::random_cases(query::project_box, gen::box_on_axis(), [](const BoxOnAxis& in) {
+    return judge::project_box(in, answerer::project_box(in.box, in.axis));
+  });
   check::random_cases(query::separated_on_axis, gen::box_pair_on_axis(), [](const BoxPairOnAxis& in) {
-    return judge::separated_on_axis(in, separated_on_axis(in.a, in.b, in.axis));
+    return judge::separated_on_axis(in, answerer::separated_on_axis(in.a, in.b, in.axis));
   });
 }
 
@@ -132,18 +135,19 @@ TEST_CASE(LABKIT_STEP(L03S1) ": random cases", "[lab03][step1][oracle]") {
 
 TEST_CASE(LABKIT_STEP(L03S2) ": worked examples", "[lab03][step2]") {
   check::example(query::box_axis, "the numbering",
-                 BoxPair{cube({0, 0, 0}), box({0, 0, 0}, {1, 1, 1}, three_four_five())}, [](const BoxPair& in) {
-                   Expect e;
-                   e.near("axis 0 = A_0", box_axis(in.a, in.b, 0), Vec3(1, 0, 0), 1e-15);
-                   e.near("axis 4 = B_1", box_axis(in.a, in.b, 4), Vec3(-0.8, 0.6, 0), 1e-15);
-                   e.near("axis 7 = A_0 x B_1", box_axis(in.a, in.b, 7), Vec3(0, 0, 0.6), 1e-15);
-                   e.near("axis 12 = A_2 x B_0", box_axis(in.a, in.b, 12), Vec3(-0.8, 0.6, 0), 1e-15);
-                   e.near("axis 14 = A_2 x B_2 (parallel: zero)", box_axis(in.a, in.b, 14), Vec3(0, 0, 0), 1e-15);
-                   return with_reason(e.outcome(), [&] { return judge::box_axes(in, all_axes(in)); });
-                 });
+                 BoxPair{cube({0, 0, 0}), box({0, 0, 0}, {1, 1, 1}, three_four_five())},
+                 [](const BoxPair& in) {
+    Expect e;
+    e.near("axis 0 = A_0", answerer::box_axis(in.a, in.b, 0), Vec3(1, 0, 0), 1e-15);
+    e.near("axis 4 = B_1", answerer::box_axis(in.a, in.b, 4), Vec3(-0.8, 0.6, 0), 1e-15);
+    e.near("axis 7 = A_0 x B_1", answerer::box_axis(in.a, in.b, 7), Vec3(0, 0, 0.6), 1e-15);
+    e.near("axis 12 = A_2 x B_0", answerer::box_axis(in.a, in.b, 12), Vec3(-0.8, 0.6, 0), 1e-15);
+    e.near("axis 14 = A_2 x B_2 (parallel: zero)", answerer::box_axis(in.a, in.b, 14), Vec3(0, 0, 0), 1e-15);
+    return with_reason(e.outcome(), [&] { return judge::box_axes(in, all_axes(in)); });
+  });
   const auto expect = [](bool intersecting) {
     return [intersecting](const BoxPair& in) {
-      const bool got = test_boxes(in.a, in.b);
+      const bool got = answerer::test_boxes(in.a, in.b);
       return with_reason(expect_bool("test_boxes", got, intersecting),
                          [&] { return judge::test_boxes(in, got, Rules::exact); });
     };
@@ -178,7 +182,7 @@ TEST_CASE(LABKIT_STEP(L03S2) ": random cases", "[lab03][step2][oracle]") {
   check::random_cases(query::box_axis, gen::box_pair(),
                       [](const BoxPair& in) { return judge::box_axes(in, all_axes(in)); });
   check::random_cases(query::test_boxes, gen::box_pair(),
-                      [](const BoxPair& in) { return judge::test_boxes(in, test_boxes(in.a, in.b)); });
+                      [](const BoxPair& in) { return judge::test_boxes(in, answerer::test_boxes(in.a, in.b)); });
 }
 
 // ---- Step 3 ------------------------------------------------------------------------
@@ -186,7 +190,7 @@ TEST_CASE(LABKIT_STEP(L03S2) ": random cases", "[lab03][step2][oracle]") {
 TEST_CASE(LABKIT_STEP(L03S3) ": worked examples", "[lab03][step3]") {
   const auto expect = [](bool intersecting, int index, int other_index, Vec3 axis, double depth) {
     return [=](const BoxPair& in) {
-      const BoxContact got = find_boxes(in.a, in.b);
+      const BoxContact got = answerer::find_boxes(in.a, in.b);
       Expect e;
       e.equal("intersecting", got.intersecting, intersecting);
       e.that("axis_index", got.axis_index == index || got.axis_index == other_index, describe(got.axis_index),
@@ -215,7 +219,7 @@ TEST_CASE(LABKIT_STEP(L03S3) ": worked examples", "[lab03][step3]") {
 
 TEST_CASE(LABKIT_STEP(L03S3) ": random cases", "[lab03][step3][oracle]") {
   check::random_cases(query::find_boxes, gen::box_pair(),
-                      [](const BoxPair& in) { return judge::find_boxes(in, find_boxes(in.a, in.b)); });
+                      [](const BoxPair& in) { return judge::find_boxes(in, answerer::find_boxes(in.a, in.b)); });
 }
 
 // ---- Step 4 ------------------------------------------------------------------------
@@ -224,7 +228,7 @@ TEST_CASE(LABKIT_STEP(L03S3) ": random cases", "[lab03][step3][oracle]") {
 TEST_CASE(LABKIT_STEP(L03S4) ": the lecture's interval method, worked examples", "[lab03][step4]") {
   const auto expect = [](int axis, double low0, double high0, double low1, double high1, bool overlap) {
     return [=](const TrianglePair& in) {
-      const LineIntervals got = triangles_by_intervals(in.t0, in.t1);
+      const LineIntervals got = answerer::triangles_by_intervals(in.t0, in.t1);
       Expect e;
       e.equal("crossing", got.crossing, true);
       e.equal("axis", got.axis, axis);
@@ -251,14 +255,14 @@ TEST_CASE(LABKIT_STEP(L03S4) ": the lecture's interval method, worked examples",
 
 TEST_CASE(LABKIT_STEP(L03S4) ": the lecture's interval method, random cases", "[lab03][step4][oracle]") {
   check::random_cases(query::triangles_by_intervals, gen::crossing_triangle_pair(), [](const TrianglePair& in) {
-    return judge::triangles_by_intervals(in, triangles_by_intervals(in.t0, in.t1));
+    return judge::triangles_by_intervals(in, answerer::triangles_by_intervals(in.t0, in.t1));
   });
 }
 
 TEST_CASE(LABKIT_STEP(L03S4) ": worked examples", "[lab03][step4]") {
   const auto expect = [](bool intersecting) {
     return [intersecting](const TrianglePair& in) {
-      const bool got = test_triangles(in.t0, in.t1);
+      const bool got = answerer::test_triangles(in.t0, in.t1);
       return with_reason(expect_bool("test_triangles", got, intersecting),
                          [&] { return judge::test_triangles(in, got, Rules::exact); });
     };
@@ -302,8 +306,9 @@ TEST_CASE(LABKIT_STEP(L03S4) ": worked examples", "[lab03][step4]") {
 }
 
 TEST_CASE(LABKIT_STEP(L03S4) ": random cases", "[lab03][step4][oracle]") {
-  check::random_cases(query::test_triangles, gen::triangle_pair(),
-                      [](const TrianglePair& in) { return judge::test_triangles(in, test_triangles(in.t0, in.t1)); });
+  check::random_cases(query::test_triangles, gen::triangle_pair(), [](const TrianglePair& in) {
+    return judge::test_triangles(in, answerer::test_triangles(in.t0, in.t1));
+  });
 }
 
 // ---- Step 5 ------------------------------------------------------------------------
@@ -311,8 +316,8 @@ TEST_CASE(LABKIT_STEP(L03S4) ": random cases", "[lab03][step4][oracle]") {
 TEST_CASE(LABKIT_STEP(L03S5) ": worked examples", "[lab03][step5]") {
   const auto expect = [](bool contact, double first, double last) {
     return [=](const MovingBoxes& in) {
-      const ContactInterval got = find_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
-      const bool tested = test_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
+      const ContactInterval got = answerer::find_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
+      const bool tested = answerer::test_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
       Expect e;
       e.equal("test_moving_boxes", tested, contact);
       e.equal("contact", got.contact, contact);
@@ -355,13 +360,13 @@ TEST_CASE(LABKIT_STEP(L03S5) ": random cases", "[lab03][step5][oracle]") {
 namespace {
 
 Outcome exact_boxes(const BoxPair& in) {
-  const Outcome o = judge::test_boxes(in, test_boxes(in.a, in.b), Rules::exact);
+  const Outcome o = judge::test_boxes(in, answerer::test_boxes(in.a, in.b), Rules::exact);
   if (o.verdict == Outcome::Verdict::fail) return o;
-  return judge::find_boxes(in, find_boxes(in.a, in.b), Rules::exact);
+  return judge::find_boxes(in, answerer::find_boxes(in.a, in.b), Rules::exact);
 }
 
 Outcome exact_triangles(const TrianglePair& in) {
-  return judge::test_triangles(in, test_triangles(in.t0, in.t1), Rules::exact);
+  return judge::test_triangles(in, answerer::test_triangles(in.t0, in.t1), Rules::exact);
 }
 
 Outcome exact_moving(const MovingBoxes& in) {
@@ -386,9 +391,9 @@ TEST_CASE(LABKIT_STEP(L03S6) ": touching and parallel boxes", "[lab03][step6]") 
   const Box a = cube({0, 0, 0}, 2);
   const auto touching = [](int index, Vec3 axis) {
     return [=](const BoxPair& in) {
-      const BoxContact got = find_boxes(in.a, in.b);
+      const BoxContact got = answerer::find_boxes(in.a, in.b);
       Expect e;
-      e.equal("test_boxes", test_boxes(in.a, in.b), true);
+      e.equal("test_boxes", answerer::test_boxes(in.a, in.b), true);
       e.equal("intersecting", got.intersecting, true);
       e.near("depth", got.depth, 0.0, 0.0);
       if (index >= 0) e.near("axis", got.axis, axis, 0.0);
@@ -407,7 +412,7 @@ TEST_CASE(LABKIT_STEP(L03S6) ": touching and parallel boxes", "[lab03][step6]") 
   check::example(q, "a segment along A's edge", BoxPair{a, box({2, 2, 0}, {0, 0, 5})}, touching(-1, Vec3::Zero()));
   check::example(q, "a point on A's face", BoxPair{a, box({2, 1, 1}, {0, 0, 0})}, touching(0, {1, 0, 0}));
   check::example(q, "a gap of 1", BoxPair{a, cube({4, 0, 0})}, [](const BoxPair& in) {
-    const Outcome o = expect_bool("test_boxes", test_boxes(in.a, in.b), false);
+    const Outcome o = expect_bool("test_boxes", answerer::test_boxes(in.a, in.b), false);
     return o.verdict == Outcome::Verdict::fail ? with_reason(o, [&] { return exact_boxes(in); }) : exact_boxes(in);
   });
 }
@@ -417,7 +422,7 @@ TEST_CASE(LABKIT_STEP(L03S6) ": touching and coplanar triangles", "[lab03][step6
   const auto expect = [](bool intersecting) {
     return both<TrianglePair>(
         [intersecting](const TrianglePair& in) {
-      return expect_bool("test_triangles", test_triangles(in.t0, in.t1), intersecting);
+      return expect_bool("test_triangles", answerer::test_triangles(in.t0, in.t1), intersecting);
         },
         exact_triangles);
   };
@@ -441,7 +446,7 @@ TEST_CASE(LABKIT_STEP(L03S6) ": moving boxes that touch at an instant, slide, or
   const auto expect = [](bool contact, double first, double last) {
     return both<MovingBoxes>(
         [=](const MovingBoxes& in) {
-      const ContactInterval got = find_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
+      const ContactInterval got = answerer::find_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
       Expect e;
       e.equal("contact", got.contact, contact);
       if (contact && got.contact) {
@@ -501,37 +506,37 @@ TEST_CASE("L03 preconditions: invalid input is rejected, naming the argument", "
   bad_boxes.push_back({"axes", zero_axes});
 
   for (const auto& [field, bad] : bad_boxes) {
-    rejects("box." + field, [&] { project_box(bad, {1, 0, 0}); });
-    rejects("a." + field, [&] { separated_on_axis(bad, good, {1, 0, 0}); });
-    rejects("b." + field, [&] { separated_on_axis(good, bad, {1, 0, 0}); });
-    rejects("b." + field, [&] { box_axis(good, bad, 0); });
-    rejects("a." + field, [&] { test_boxes(bad, good); });
-    rejects("b." + field, [&] { find_boxes(good, bad); });
-    rejects("a." + field, [&] { test_moving_boxes(bad, {0, 0, 0}, good, {0, 0, 0}, 1); });
-    rejects("b." + field, [&] { find_moving_boxes(good, {0, 0, 0}, bad, {0, 0, 0}, 1); });
+    rejects("box." + field, [&] { answerer::project_box(bad, {1, 0, 0}); });
+    rejects("a." + field, [&] { answerer::separated_on_axis(bad, good, {1, 0, 0}); });
+    rejects("b." + field, [&] { answerer::separated_on_axis(good, bad, {1, 0, 0}); });
+    rejects("b." + field, [&] { answerer::box_axis(good, bad, 0); });
+    rejects("a." + field, [&] { answerer::test_boxes(bad, good); });
+    rejects("b." + field, [&] { answerer::find_boxes(good, bad); });
+    rejects("a." + field, [&] { answerer::test_moving_boxes(bad, {0, 0, 0}, good, {0, 0, 0}, 1); });
+    rejects("b." + field, [&] { answerer::find_moving_boxes(good, {0, 0, 0}, bad, {0, 0, 0}, 1); });
   }
   for (const double x : {nan, inf}) {
-    rejects("axis", [&] { project_box(good, {x, 0, 0}); });
-    rejects("axis", [&] { separated_on_axis(good, good, {0, x, 0}); });
+    rejects("axis", [&] { answerer::project_box(good, {x, 0, 0}); });
+    rejects("axis", [&] { answerer::separated_on_axis(good, good, {0, x, 0}); });
     Triangle t = kFloor;
     t.v1.z() = x;
-    rejects("t0.v1", [&] { test_triangles(t, kFloor); });
-    rejects("t1.v1", [&] { test_triangles(kFloor, t); });
-    rejects("t0.v1", [&] { triangles_by_intervals(t, kFloor); });
-    rejects("t1.v1", [&] { triangles_by_intervals(kFloor, t); });
-    rejects("velocity_a", [&] { test_moving_boxes(good, {x, 0, 0}, good, {0, 0, 0}, 1); });
-    rejects("velocity_b", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, x}, 1); });
-    rejects("duration", [&] { test_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, x); });
-    rejects("duration", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, x); });
+    rejects("t0.v1", [&] { answerer::test_triangles(t, kFloor); });
+    rejects("t1.v1", [&] { answerer::test_triangles(kFloor, t); });
+    rejects("t0.v1", [&] { answerer::triangles_by_intervals(t, kFloor); });
+    rejects("t1.v1", [&] { answerer::triangles_by_intervals(kFloor, t); });
+    rejects("velocity_a", [&] { answerer::test_moving_boxes(good, {x, 0, 0}, good, {0, 0, 0}, 1); });
+    rejects("velocity_b", [&] { answerer::find_moving_boxes(good, {0, 0, 0}, good, {0, 0, x}, 1); });
+    rejects("duration", [&] { answerer::test_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, x); });
+    rejects("duration", [&] { answerer::find_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, x); });
   }
-  rejects("duration", [&] { find_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, -1); });
-  rejects("duration", [&] { test_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, -1); });
-  rejects("index", [&] { box_axis(good, good, 15); });
-  rejects("index", [&] { box_axis(good, good, -1); });
+  rejects("duration", [&] { answerer::find_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, -1); });
+  rejects("duration", [&] { answerer::test_moving_boxes(good, {0, 0, 0}, good, {0, 0, 0}, -1); });
+  rejects("index", [&] { answerer::box_axis(good, good, 15); });
+  rejects("index", [&] { answerer::box_axis(good, good, -1); });
   // The documented results that are not rejections: zero half extents, a zero axis, a
   // zero-area triangle, a zero duration.
-  CHECK_FALSE(separated_on_axis(good, cube({9, 0, 0}), {0, 0, 0}));
-  CHECK(test_boxes(good, box({1, 1, 1}, {0, 0, 0})));
-  CHECK_FALSE(test_triangles(kFloor, {{1, 1, -1}, {1, 1, 1}, {1, 1, 0}}));
-  CHECK(find_moving_boxes(good, {5, 0, 0}, cube({2, 0, 0}), {0, 0, 0}, 0).contact);
+  CHECK_FALSE(answerer::separated_on_axis(good, cube({9, 0, 0}), {0, 0, 0}));
+  CHECK(answerer::test_boxes(good, box({1, 1, 1}, {0, 0, 0})));
+  CHECK_FALSE(answerer::test_triangles(kFloor, {{1, 1, -1}, {1, 1, 1}, {1, 1, 0}}));
+  CHECK(answerer::find_moving_boxes(good, {5, 0, 0}, cube({2, 0, 0}), {0, 0, 0}, 0).contact);
 }

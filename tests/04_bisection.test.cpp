@@ -120,27 +120,27 @@ std::string halving_bound(const SearchTimes& T) {
 
 // The searches on a case, by query name.
 TimeOfImpact run_bisect(const MovingPairCase& in) {
-  return bounded([&] { return bisect(pair_of(in), in.times.t0, in.times.t1, in.times.tolerance); },
+  return bounded([&] { return answerer::bisect(pair_of(in), in.times.t0, in.times.t1, in.times.tolerance); },
                  halving_bound(in.times));
 }
 TimeOfImpact run_sampled(const SampledPair& in) {
   const SearchTimes& T = in.pair.times;
-  return bounded([&] { return sample_then_bisect(pair_of(in.pair), T.t0, T.t1, in.substeps, T.tolerance); },
+  return bounded([&] { return answerer::sample_then_bisect(pair_of(in.pair), T.t0, T.t1, in.substeps, T.tolerance); },
                  "Point sampling tests n = " + std::to_string(in.substeps) + " samples, then bisects one sub-step. " +
                      halving_bound(T));
 }
 TimeOfImpact run_advance(const AdvancedPair& in) {
   const SearchTimes& T = in.pair.times;
-  return bounded([&] { return advance(pair_of(in.pair), T.t0, T.t1, judge::closing_speed_of(in), T.tolerance); },
-                 "Conservative advancement moves at least one tolerance per step (next = t + max(d / v, tolerance)): "
-                 "at most (t1 - t0) / tolerance + 1 = " +
-                     fmt(std::ceil((T.t1 - T.t0) / T.tolerance) + 1) + " steps here, then one bisection. " +
-                     halving_bound(T));
+  return bounded(
+      [&] { return answerer::advance(pair_of(in.pair), T.t0, T.t1, judge::closing_speed_of(in), T.tolerance); },
+      "Conservative advancement moves at least one tolerance per step (next = t + max(d / v, tolerance)): "
+      "at most (t1 - t0) / tolerance + 1 = " +
+          fmt(std::ceil((T.t1 - T.t0) / T.tolerance) + 1) + " steps here, then one bisection. " + halving_bound(T));
 }
 // The pair's closing speed, by the code under test.
 double run_closing_speed(const MovingPairCase& in) {
-  return closing_speed(in.a.sphere, motion_of(in.a.motion), shape_of(in.b), motion_of(in.b.motion), in.times.t0,
-                       in.times.t1);
+  return answerer::closing_speed(in.a.sphere, motion_of(in.a.motion), shape_of(in.b), motion_of(in.b.motion),
+                                 in.times.t0, in.times.t1);
 }
 
 // Step 3's tunnelling: the closing speed and the sub-steps it asks for, by the code under
@@ -149,9 +149,9 @@ Outcome judge_tunnelling(const MovingPairCase& in) {
   const MovingPair pair = pair_of(in);
   const SearchTimes& T = in.times;
   const double speed = run_closing_speed(in);
-  const int n = substeps_for(speed, T.t1 - T.t0, smallest_size_of(in));
-  return judge::tunnelling(in, speed, n, sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
-                           sample_then_bisect(pair, T.t0, T.t1, n < 1 ? 1 : n, T.tolerance));
+  const int n = answerer::substeps_for(speed, T.t1 - T.t0, smallest_size_of(in));
+  return judge::tunnelling(in, speed, n, answerer::sample_then_bisect(pair, T.t0, T.t1, 1, T.tolerance),
+                           answerer::sample_then_bisect(pair, T.t0, T.t1, n < 1 ? 1 : n, T.tolerance));
 }
 
 // Both the exact judge (first: it says which rule broke) and the hand-worked numbers.
@@ -183,8 +183,8 @@ Outcome exact_advance(const AdvancedPair& in, const TimeOfImpact& got) { return 
 TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   const RigidTransform pose = quarter_turn_then({5, 0, 0});
   check::example(query::placed, "a quarter turn, then 5 along x", Sphere{{1, 0, 0}, 2}, [=](const Sphere& in) {
-    const Sphere s = placed(in, pose);
-    const Box b = placed(Box{in.center, Mat3::Identity(), {2, 1, 1}}, pose);
+    const Sphere s = answerer::placed(in, pose);
+    const Box b = answerer::placed(Box{in.center, Mat3::Identity(), {2, 1, 1}}, pose);
     Expect e;
     e.near("sphere centre", s.center, Vec3(5, 1, 0), 1e-12);
     e.near("sphere radius", s.radius, 2, 0);
@@ -202,7 +202,7 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   const std::string closed = "sets are closed, touching counts: overlap <=> |c_a - c_b|^2 <= (r_a + r_b)^2";
   const auto spheres = [closed](bool expected) {
     return [=](const Sphere& b) {
-      const bool got = overlap(Sphere{Vec3::Zero(), 1}, b);
+      const bool got = answerer::overlap(Sphere{Vec3::Zero(), 1}, b);
       Expect e;
       e.that("overlap", got == expected, yes_no(got), yes_no(expected), closed);
       return e.outcome();
@@ -217,7 +217,7 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   const auto nearest = [](const Vec3& expected) {
     return [expected](const PointBox& in) {
       Expect e;
-      e.near("closest point", closest_point(in.box, in.point), expected, 1e-12);
+      e.near("closest point", answerer::closest_point(in.box, in.point), expected, 1e-12);
       return e.outcome();
     };
   };
@@ -230,7 +230,7 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
 
   const auto sphere_box = [wall](bool expected) {
     return [wall, expected](const Sphere& a) {
-      const bool got = overlap(a, wall);
+      const bool got = answerer::overlap(a, wall);
       Expect e;
       e.that("overlap", got == expected, yes_no(got), yes_no(expected),
              "sets are closed, touching counts: overlap <=> |c - closest_point(box, c)|^2 <= r^2, the closest point "
@@ -247,7 +247,7 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   const auto at = [](bool at_t0, bool at_t1) {
     return [=](const MovingPairCase& in) {
       const MovingPair pair = pair_of(in);
-      const bool got_t0 = overlap_at(pair, in.times.t0), got_t1 = overlap_at(pair, in.times.t1);
+      const bool got_t0 = answerer::overlap_at(pair, in.times.t0), got_t1 = answerer::overlap_at(pair, in.times.t1);
       const Outcome o = judge::overlap_at(in, got_t0, got_t1);
       if (o.verdict == Outcome::Verdict::fail) return o;
       Expect e;
@@ -267,11 +267,12 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
 }
 
 TEST_CASE(LABKIT_STEP(L04S1) ": random cases", "[lab04][step1][oracle]") {
-  check::random_cases(query::closest_point, gen::point_box(),
-                      [](const PointBox& in) { return judge::closest_point(in, closest_point(in.box, in.point)); });
+  check::random_cases(query::closest_point, gen::point_box(), [](const PointBox& in) {
+    return judge::closest_point(in, answerer::closest_point(in.box, in.point));
+  });
   check::random_cases(query::overlap_at, gen::moving_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
-    return judge::overlap_at(in, overlap_at(pair, in.times.t0), overlap_at(pair, in.times.t1));
+    return judge::overlap_at(in, answerer::overlap_at(pair, in.times.t0), answerer::overlap_at(pair, in.times.t1));
   });
 }
 
@@ -288,7 +289,7 @@ TEST_CASE(LABKIT_STEP(L04S2) ": worked examples", "[lab04][step2]") {
     MovingPair pair = pair_of(in);
     const RecordingMotion recording{motion_of(in.a.motion)};
     pair.motion_a = recording;
-    const TimeOfImpact got = bisect(pair, in.times.t0, in.times.t1, in.times.tolerance);
+    const TimeOfImpact got = answerer::bisect(pair, in.times.t0, in.times.t1, in.times.tolerance);
     std::vector<double> midpoints;
     for (double t : *recording.asked)
       if (t != in.times.t0 && t != in.times.t1 && std::find(midpoints.begin(), midpoints.end(), t) == midpoints.end())
@@ -320,13 +321,13 @@ TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
   check::example(query::smallest_size, "a sphere's diameter, a box's thinnest extent", bullet_and_window(1.0 / 64),
                  [](const MovingPairCase& in) {
     Expect e;
-    e.near("bullet", smallest_size(shape_of(in.a)), 0.25, 0);
-    e.near("window", smallest_size(shape_of(in.b)), 0.5, 0);
+    e.near("bullet", answerer::smallest_size(shape_of(in.a)), 0.25, 0);
+    e.near("window", answerer::smallest_size(shape_of(in.b)), 0.5, 0);
     return e.outcome();
   });
   const auto rule = [](int expected) {
     return [expected](const SubstepRule& in) {
-      const int got = substeps_for(in.max_speed, in.step, in.smallest_size);
+      const int got = answerer::substeps_for(in.max_speed, in.step, in.smallest_size);
       const Outcome o = judge::substeps_for(in, got, Rules::exact);
       if (o.verdict == Outcome::Verdict::fail) return o;
       Expect e;
@@ -367,7 +368,7 @@ TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
 
 TEST_CASE(LABKIT_STEP(L04S3) ": random cases", "[lab04][step3][oracle]") {
   check::random_cases(query::substeps_for, gen::substep_rule(), [](const SubstepRule& in) {
-    return judge::substeps_for(in, substeps_for(in.max_speed, in.step, in.smallest_size));
+    return judge::substeps_for(in, answerer::substeps_for(in.max_speed, in.step, in.smallest_size));
   });
   check::random_cases(query::sample_then_bisect, gen::sampled_pair(),
                       [](const SampledPair& in) { return judge::sample_then_bisect(in, run_sampled(in)); });
@@ -389,13 +390,15 @@ TEST_CASE(LABKIT_STEP(L04S4) ": worked examples", "[lab04][step4]") {
     return e.outcome();
   };
   const auto spheres = [surfaces](double expected) {
-    return [=](const Sphere& b) { return surfaces(distance(Sphere{Vec3::Zero(), 1}, b), expected, 1 + b.radius); };
+    return [=](const Sphere& b) {
+      return surfaces(answerer::distance(Sphere{Vec3::Zero(), 1}, b), expected, 1 + b.radius);
+    };
   };
   check::example(query::distance_spheres, "5 apart, radii 1 and 3: 1", Sphere{{3, 4, 0}, 3}, spheres(1));
   check::example(query::distance_spheres, "overlapping: 0", Sphere{{3, 4, 0}, 5}, spheres(0));
   const Box wall{{4, 0, 0}, Mat3::Identity(), {4, 4, 4}};
   const auto sphere_box = [wall, surfaces](double expected) {
-    return [=](const Sphere& a) { return surfaces(distance(a, wall), expected, a.radius); };
+    return [=](const Sphere& a) { return surfaces(answerer::distance(a, wall), expected, a.radius); };
   };
   check::example(query::distance_sphere_box, "sqrt(10) - 3", Sphere{{-3, 2, 5}, 3}, sphere_box(std::sqrt(10.0) - 3));
   check::example(query::distance_sphere_box, "overlapping: 0", Sphere{{-3, 2, 5}, 4}, sphere_box(0));
@@ -403,8 +406,8 @@ TEST_CASE(LABKIT_STEP(L04S4) ": worked examples", "[lab04][step4]") {
                  [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
     Expect e;
-    e.near("distance_at(0)", distance_at(pair, 0), 5, 1e-12);
-    e.near("distance_at(0.3125)", distance_at(pair, 0.3125), 1.25, 1e-12);
+    e.near("distance_at(0)", answerer::distance_at(pair, 0), 5, 1e-12);
+    e.near("distance_at(0.3125)", answerer::distance_at(pair, 0.3125), 1.25, 1e-12);
     return e.outcome();
   });
 
@@ -424,7 +427,7 @@ TEST_CASE(LABKIT_STEP(L04S4) ": worked examples", "[lab04][step4]") {
 TEST_CASE(LABKIT_STEP(L04S4) ": random cases", "[lab04][step4][oracle]") {
   check::random_cases(query::distance_at, gen::moving_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
-    return judge::distance_at(in, distance_at(pair, in.times.t0), distance_at(pair, in.times.t1));
+    return judge::distance_at(in, answerer::distance_at(pair, in.times.t0), answerer::distance_at(pair, in.times.t1));
   });
   check::random_cases(query::advance, gen::advanced_pair(),
                       [](const AdvancedPair& in) { return judge::advance(in, run_advance(in)); });
@@ -438,7 +441,7 @@ TEST_CASE(LABKIT_STEP(L04S5) ": touching, grazing, zero sizes", "[lab04][step5]"
   const auto still = [](const MovingBody& a, const MovingBody& b) { return scene(a, b, 0, 0, 1); };
   const auto overlapping = [](bool expected) {
     return [expected](const MovingPairCase& in) {
-      const bool got = overlap_at(pair_of(in), 0);
+      const bool got = answerer::overlap_at(pair_of(in), 0);
       Expect e;
       e.equal("overlap_at(0)", got, expected);
       const Outcome o = e.outcome();
@@ -468,7 +471,7 @@ TEST_CASE(LABKIT_STEP(L04S5) ": touching, grazing, zero sizes", "[lab04][step5]"
     const Outcome touch = overlapping(true)(in);
     if (touch.verdict == Outcome::Verdict::fail) return touch;
     Expect e;
-    e.near("distance_at(0)", distance_at(pair_of(in), 0), 0, 0);
+    e.near("distance_at(0)", answerer::distance_at(pair_of(in), 0), 0, 0);
     return e.outcome();
   });
 
@@ -498,14 +501,15 @@ TEST_CASE(LABKIT_STEP(L04S5) ": touching, grazing, zero sizes", "[lab04][step5]"
 
 TEST_CASE(LABKIT_STEP(L04S5) ": random exact cases", "[lab04][step5][oracle]") {
   check::random_cases(query::robust_closest_point, gen::exact_point_box(), [](const PointBox& in) {
-    return judge::closest_point(in, closest_point(in.box, in.point), Rules::exact);
+    return judge::closest_point(in, answerer::closest_point(in.box, in.point), Rules::exact);
   });
   check::random_cases(query::robust_substeps_for, gen::exact_substep_rule(), [](const SubstepRule& in) {
-    return judge::substeps_for(in, substeps_for(in.max_speed, in.step, in.smallest_size), Rules::exact);
+    return judge::substeps_for(in, answerer::substeps_for(in.max_speed, in.step, in.smallest_size), Rules::exact);
   });
   check::random_cases(query::robust_overlap_at, gen::exact_moving_pair(), [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
-    return judge::overlap_at(in, overlap_at(pair, in.times.t0), overlap_at(pair, in.times.t1), Rules::exact);
+    return judge::overlap_at(in, answerer::overlap_at(pair, in.times.t0), answerer::overlap_at(pair, in.times.t1),
+                             Rules::exact);
   });
   check::random_cases(query::robust_bisect, gen::exact_moving_pair(),
                       [](const MovingPairCase& in) { return judge::bisect(in, run_bisect(in), Rules::exact); });
@@ -538,9 +542,10 @@ TEST_CASE("L04 preconditions: invalid input is rejected, naming the argument", "
 
   // The searches' times and tolerance.
   for (const auto& [search, run] : std::vector<std::pair<std::string, std::function<void(double, double, double)>>>{
-           {"bisect", [&](double t0, double t1, double tol) { bisect(good, t0, t1, tol); }},
-           {"sample_then_bisect", [&](double t0, double t1, double tol) { sample_then_bisect(good, t0, t1, 4, tol); }},
-           {"advance", [&](double t0, double t1, double tol) { advance(good, t0, t1, 12, tol); }}}) {
+           {"bisect", [&](double t0, double t1, double tol) { answerer::bisect(good, t0, t1, tol); }},
+           {"sample_then_bisect",
+            [&](double t0, double t1, double tol) { answerer::sample_then_bisect(good, t0, t1, 4, tol); }},
+           {"advance", [&](double t0, double t1, double tol) { answerer::advance(good, t0, t1, 12, tol); }}}) {
     rejects(search + ": tolerance 0 (halving forever)", search + ": tolerance", [&] { run(0, 1, 0); });
     rejects(search + ": tolerance -1", search + ": tolerance", [&] { run(0, 1, -1); });
     rejects(search + ": tolerance NaN", search + ": tolerance", [&] { run(0, 1, nan); });
@@ -553,59 +558,66 @@ TEST_CASE("L04 preconditions: invalid input is rejected, naming the argument", "
     rejects(search + ": t1 - t0 overflows", search + ": t1 - t0", [&] { run(-1e308, 1e308, 1e300); });
   }
   rejects("sample_then_bisect: 0 sub-steps", "sample_then_bisect: substeps",
-          [&] { sample_then_bisect(good, 0, 1, 0, 0.25); });
+          [&] { answerer::sample_then_bisect(good, 0, 1, 0, 0.25); });
   rejects("sample_then_bisect: -3 sub-steps", "sample_then_bisect: substeps",
-          [&] { sample_then_bisect(good, 0, 1, -3, 0.25); });
-  rejects("advance: a negative speed bound", "advance: max_closing_speed", [&] { advance(good, 0, 1, -1, 0.25); });
-  rejects("advance: a NaN speed bound", "advance: max_closing_speed", [&] { advance(good, 0, 1, nan, 0.25); });
+          [&] { answerer::sample_then_bisect(good, 0, 1, -3, 0.25); });
+  rejects("advance: a negative speed bound", "advance: max_closing_speed",
+          [&] { answerer::advance(good, 0, 1, -1, 0.25); });
+  rejects("advance: a NaN speed bound", "advance: max_closing_speed",
+          [&] { answerer::advance(good, 0, 1, nan, 0.25); });
 
   // The bodies, in every function that takes one.
-  rejects("a negative radius", "bisect: pair.a.radius", [&] { bisect(with_ball({Vec3::Zero(), -1}), 0, 1, 0.25); });
-  rejects("a NaN radius", "overlap_at: pair.a.radius", [&] { overlap_at(with_ball({Vec3::Zero(), nan}), 0); });
-  rejects("a NaN centre", "distance_at: pair.a.center", [&] { distance_at(with_ball({{nan, 0, 0}, 1}), 0); });
+  rejects("a negative radius", "bisect: pair.a.radius", [&] {
+    answerer::bisect(with_ball({Vec3::Zero(), -1}), 0, 1, 0.25);
+  });
+  rejects("a NaN radius", "overlap_at: pair.a.radius", [&] {
+    answerer::overlap_at(with_ball({Vec3::Zero(), nan}), 0);
+  });
+  rejects("a NaN centre", "distance_at: pair.a.center", [&] { answerer::distance_at(with_ball({{nan, 0, 0}, 1}), 0); });
   rejects("a negative half extent", "advance: pair.b.half_extents", [&] {
-    advance(with_box({wall.center, wall.axes, {4, -1, 4}}), 0, 1, 12, 0.25);
+    answerer::advance(with_box({wall.center, wall.axes, {4, -1, 4}}), 0, 1, 12, 0.25);
   });
   rejects("a NaN half extent", "smallest_size: shape.half_extents", [&] {
-    smallest_size(shape_of(Box{wall.center, wall.axes, {nan, 4, 4}}));
+    answerer::smallest_size(shape_of(Box{wall.center, wall.axes, {nan, 4, 4}}));
   });
   rejects("NaN box axes", "sample_then_bisect: pair.b.axes", [&] {
-    sample_then_bisect(with_box({wall.center, Mat3::Constant(nan), wall.half_extents}), 0, 1, 2, 0.25);
+    answerer::sample_then_bisect(with_box({wall.center, Mat3::Constant(nan), wall.half_extents}), 0, 1, 2, 0.25);
   });
   rejects("overlap: a negative radius", "overlap: a.radius", [] {
-    overlap(Sphere{Vec3::Zero(), -1}, Sphere{Vec3::Zero(), 1});
+    answerer::overlap(Sphere{Vec3::Zero(), -1}, Sphere{Vec3::Zero(), 1});
   });
-  rejects("overlap: an infinite centre", "overlap: a.center", [&] { overlap(Sphere{{inf, 0, 0}, 1}, wall); });
+  rejects("overlap: an infinite centre", "overlap: a.center", [&] { answerer::overlap(Sphere{{inf, 0, 0}, 1}, wall); });
   rejects("distance: a NaN radius", "distance: b.radius", [] {
-    distance(Sphere{Vec3::Zero(), 1}, Sphere{Vec3::Zero(), nan});
+    answerer::distance(Sphere{Vec3::Zero(), 1}, Sphere{Vec3::Zero(), nan});
   });
   rejects("distance: a negative half extent", "distance: b.half_extents", [] {
-    distance(Sphere{Vec3::Zero(), 1}, Box{Vec3::Zero(), Mat3::Identity(), {-1, 1, 1}});
+    answerer::distance(Sphere{Vec3::Zero(), 1}, Box{Vec3::Zero(), Mat3::Identity(), {-1, 1, 1}});
   });
-  rejects("closest_point: a NaN point", "closest_point: p", [&] { closest_point(wall, Vec3(nan, 0, 0)); });
-  rejects("overlap_at: a NaN time", "overlap_at: t", [&] { overlap_at(good, nan); });
+  rejects("closest_point: a NaN point", "closest_point: p", [&] { answerer::closest_point(wall, Vec3(nan, 0, 0)); });
+  rejects("overlap_at: a NaN time", "overlap_at: t", [&] { answerer::overlap_at(good, nan); });
 
   // The motions: a NaN velocity poses the body nowhere.
   MotionParameters nan_velocity = moving({-6, 0, 0}, {nan, 0, 0});
   MovingPair lost = good;
   lost.motion_a = motion_of(nan_velocity);
-  rejects("a motion that returns a NaN pose", "pair.motion_a", [&] { bisect(lost, 0, 1, 0.25); });
+  rejects("a motion that returns a NaN pose", "pair.motion_a", [&] { answerer::bisect(lost, 0, 1, 0.25); });
   rejects("closing_speed: a NaN velocity", "closing_speed: motion_a", [&] {
-    closing_speed(good.a, motion_of(nan_velocity), good.b, motion_of(resting_at({4, 0, 0})), 0, 1);
+    answerer::closing_speed(good.a, motion_of(nan_velocity), good.b, motion_of(resting_at({4, 0, 0})), 0, 1);
   });
   rejects("closing_speed: t0 > t1", "closing_speed: t0 <= t1",
-          [&] { closing_speed(good.a, StandardMotion{}, good.b, StandardMotion{}, 1, 0); });
+          [&] { answerer::closing_speed(good.a, StandardMotion{}, good.b, StandardMotion{}, 1, 0); });
 
   // The sub-step rule's numbers.
-  rejects("substeps_for: a negative speed", "substeps_for: closing_speed", [] { substeps_for(-6, 1, 0.25); });
-  rejects("substeps_for: an infinite speed", "substeps_for: closing_speed", [] { substeps_for(inf, 1, 0.25); });
-  rejects("substeps_for: a NaN step", "substeps_for: step", [] { substeps_for(6, nan, 0.25); });
-  rejects("substeps_for: a negative size", "substeps_for: smallest_size", [] { substeps_for(6, 1, -0.25); });
+  rejects("substeps_for: a negative speed", "substeps_for: closing_speed", [] { answerer::substeps_for(-6, 1, 0.25); });
+  rejects("substeps_for: an infinite speed", "substeps_for: closing_speed",
+          [] { answerer::substeps_for(inf, 1, 0.25); });
+  rejects("substeps_for: a NaN step", "substeps_for: step", [] { answerer::substeps_for(6, nan, 0.25); });
+  rejects("substeps_for: a negative size", "substeps_for: smallest_size", [] { answerer::substeps_for(6, 1, -0.25); });
 
   // What the header allows, at its edges, is answered.
-  CHECK(bisect(good, 0.5, 0.5, 1.0 / 32).overlapping_at_start);  // t0 = t1
-  CHECK(bisect(good, 0, 0.25, 0.25).hit == false);
-  CHECK_NOTHROW(bisect(good, 1e6, 1e6 + 1, std::ldexp(1e6 + 1, -50)));  // the finest tolerance allowed
-  CHECK(substeps_for(6, 1, 0) == 0);                                    // a size of 0: the documented 0
-  CHECK(advance(good, 0, 0.25, 0, 1.0 / 32).steps == 1);                // a bound of 0 jumps to t1
+  CHECK(answerer::bisect(good, 0.5, 0.5, 1.0 / 32).overlapping_at_start);  // t0 = t1
+  CHECK(answerer::bisect(good, 0, 0.25, 0.25).hit == false);
+  CHECK_NOTHROW(answerer::bisect(good, 1e6, 1e6 + 1, std::ldexp(1e6 + 1, -50)));  // the finest tolerance allowed
+  CHECK(answerer::substeps_for(6, 1, 0) == 0);                                    // a size of 0: the documented 0
+  CHECK(answerer::advance(good, 0, 0.25, 0, 1.0 / 32).steps == 1);                // a bound of 0 jumps to t1
 }

@@ -113,3 +113,6 @@ template <> struct labkit::wire::Codec<labkit::lab04::Motion> {
   CALL(double, distance_at, (const MovingPair&, double))                                            \
   CALL(TimeOfImpact, advance, (const MovingPair&, double, double, double, double))
 // clang-format on
+
+// The judge's process calls the code under test only as answerer::name(...) (calls.h).
+LABKIT_ANSWERER_CALLS(lab04, LABKIT_LAB04_CALLS)

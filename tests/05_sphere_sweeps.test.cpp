@@ -33,30 +33,34 @@ Outcome both(const Expect& e, const Outcome& rules) {
 }
 
 Outcome run_point_segment(const PointSegmentPair& in) {
-  return judge::point_segment(in, point_segment(in.p, in.segment));
+  return judge::point_segment(in, answerer::point_segment(in.p, in.segment));
 }
 Outcome run_segment_segment(const SegmentPair& in) {
-  return judge::segment_segment(in, segment_segment(in.first, in.second));
+  return judge::segment_segment(in, answerer::segment_segment(in.first, in.second));
 }
 Outcome run_point_rectangle(const PointRectanglePair& in) {
-  return judge::point_rectangle(in, point_rectangle(in.p, in.rectangle));
+  return judge::point_rectangle(in, answerer::point_rectangle(in.p, in.rectangle));
 }
 Outcome run_segment_rectangle(const SegmentRectanglePair& in) {
-  return judge::segment_rectangle(in, segment_rectangle(in.segment, in.rectangle));
+  return judge::segment_rectangle(in, answerer::segment_rectangle(in.segment, in.rectangle));
 }
 Outcome run_rectangle_rectangle(const RectanglePair& in) {
-  return judge::rectangle_rectangle(in, rectangle_rectangle(in.first, in.second));
+  return judge::rectangle_rectangle(in, answerer::rectangle_rectangle(in.first, in.second));
 }
 
-Sweep run(const SpherePlaneMotion& in) { return sweep_sphere_plane(in.sphere, in.velocity, in.plane, in.duration); }
-Sweep run(const SphereSphereMotion& in) { return sweep_sphere_sphere(in.s0, in.v0, in.s1, in.v1, in.duration); }
+Sweep run(const SpherePlaneMotion& in) {
+  return answerer::sweep_sphere_plane(in.sphere, in.velocity, in.plane, in.duration);
+}
+Sweep run(const SphereSphereMotion& in) {
+  return answerer::sweep_sphere_sphere(in.s0, in.v0, in.s1, in.v1, in.duration);
+}
 Sweep run(const SphereCapsuleMotion& in) {
-  return sweep_sphere_capsule(in.sphere, in.velocity, in.capsule, in.duration);
+  return answerer::sweep_sphere_capsule(in.sphere, in.velocity, in.capsule, in.duration);
 }
 Outcome run_sweep(const SphereCapsuleMotion& in, Rules rules = Rules::random) {
   return judge::sweep_sphere_capsule(in, run(in), rules);
 }
-Sweep run(const BoxPlaneMotion& in) { return sweep_box_plane(in.box, in.velocity, in.plane, in.duration); }
+Sweep run(const BoxPlaneMotion& in) { return answerer::sweep_box_plane(in.box, in.velocity, in.plane, in.duration); }
 Outcome run_sweep(const SpherePlaneMotion& in, Rules rules = Rules::random) {
   return judge::sweep_sphere_plane(in, run(in), rules);
 }
@@ -90,12 +94,12 @@ auto expect_sweep(SweepStatus status, double time, const Vec3& point, double tim
   return expect_sweep<Motion>(status, time, std::optional<Vec3>(point), time_tolerance);
 }
 
-bool test(const SpherePair& p) { return test_sphere_sphere(p.a, p.b); }
-bool test(const SphereCapsule& p) { return test_sphere_capsule(p.a, p.b); }
-bool test(const SphereLozenge& p) { return test_sphere_lozenge(p.a, p.b); }
-bool test(const CapsulePair& p) { return test_capsule_capsule(p.a, p.b); }
-bool test(const CapsuleLozenge& p) { return test_capsule_lozenge(p.a, p.b); }
-bool test(const LozengePair& p) { return test_lozenge_lozenge(p.a, p.b); }
+bool test(const SpherePair& p) { return answerer::test_sphere_sphere(p.a, p.b); }
+bool test(const SphereCapsule& p) { return answerer::test_sphere_capsule(p.a, p.b); }
+bool test(const SphereLozenge& p) { return answerer::test_sphere_lozenge(p.a, p.b); }
+bool test(const CapsulePair& p) { return answerer::test_capsule_capsule(p.a, p.b); }
+bool test(const CapsuleLozenge& p) { return answerer::test_capsule_lozenge(p.a, p.b); }
+bool test(const LozengePair& p) { return answerer::test_lozenge_lozenge(p.a, p.b); }
 
 template <class Pair> auto expect_test(bool meet) {
   return [meet](const Pair& in) {
@@ -123,7 +127,7 @@ constexpr const char* kFlatLozengeToken =
 TEST_CASE(LABKIT_STEP(L05S1) ": worked examples", "[lab05][step1]") {
   const auto point = [](double t, Vec3 closest, double d2) {
     return [=](const PointSegmentPair& in) {
-      const PointSegmentDistance got = point_segment(in.p, in.segment);
+      const PointSegmentDistance got = answerer::point_segment(in.p, in.segment);
       Expect e;
       e.near("t", got.t, t, kExample);
       e.near("closest", got.closest, closest, kExample);
@@ -142,7 +146,7 @@ TEST_CASE(LABKIT_STEP(L05S1) ": worked examples", "[lab05][step1]") {
 
   const auto pair = [](double s, double t, double d2) {
     return [=](const SegmentPair& in) {
-      const SegmentSegmentDistance got = segment_segment(in.first, in.second);
+      const SegmentSegmentDistance got = answerer::segment_segment(in.first, in.second);
       Expect e;
       e.near("squared_distance", got.squared_distance, d2, kExample);
       e.near("s", got.s, s, kExample);
@@ -161,11 +165,12 @@ TEST_CASE(LABKIT_STEP(L05S1) ": worked examples", "[lab05][step1]") {
   // Parallel and overlapping: every x in [2, 4] gives a closest pair; the judge checks
   // the distance and that the pair is a closest one, not which one.
   check::example(query::segment_segment, "parallel, overlapping: any closest pair",
-                 SegmentPair{kAxis, {{2, 3, 0}, {6, 3, 0}}}, [](const SegmentPair& in) {
-                   Expect e;
-                   e.near("squared_distance", segment_segment(in.first, in.second).squared_distance, 9, kExample);
-                   return both(e, run_segment_segment(in));
-                 });
+                 SegmentPair{kAxis, {{2, 3, 0}, {6, 3, 0}}},
+                 [](const SegmentPair& in) {
+    Expect e;
+    e.near("squared_distance", answerer::segment_segment(in.first, in.second).squared_distance, 9, kExample);
+    return both(e, run_segment_segment(in));
+  });
   check::example(query::segment_segment, "both zero length",
                  SegmentPair{{{1, 2, 3}, {1, 2, 3}}, {{1, 2, 5}, {1, 2, 5}}}, pair(0, 0, 4));
 }
@@ -180,7 +185,7 @@ TEST_CASE(LABKIT_STEP(L05S1) ": random cases", "[lab05][step1][oracle]") {
 TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
   const auto point = [](double s, double t, double d2) {
     return [=](const PointRectanglePair& in) {
-      const PointRectangleDistance got = point_rectangle(in.p, in.rectangle);
+      const PointRectangleDistance got = answerer::point_rectangle(in.p, in.rectangle);
       Expect e;
       e.near("s", got.s, s, kExample);
       e.near("t", got.t, t, kExample);
@@ -199,13 +204,13 @@ TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
   const auto segment = [](double d2) {
     return [=](const SegmentRectanglePair& in) {
       Expect e;
-      e.near("squared_distance", segment_rectangle(in.segment, in.rectangle).squared_distance, d2, kExample);
+      e.near("squared_distance", answerer::segment_rectangle(in.segment, in.rectangle).squared_distance, d2, kExample);
       return both(e, run_segment_rectangle(in));
     };
   };
   check::example(query::segment_rectangle, "piercing it: distance 0 at r = 1/4",
                  SegmentRectanglePair{{{1, 0, -1}, {1, 0, 3}}, kFloor}, [](const SegmentRectanglePair& in) {
-                   const SegmentRectangleDistance got = segment_rectangle(in.segment, in.rectangle);
+                   const SegmentRectangleDistance got = answerer::segment_rectangle(in.segment, in.rectangle);
                    Expect e;
                    e.near("squared_distance", got.squared_distance, 0, kExample);
                    e.near("r", got.r, 0.25, kExample);
@@ -222,7 +227,7 @@ TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
   const auto rectangles = [](double d2) {
     return [=](const RectanglePair& in) {
       Expect e;
-      e.near("squared_distance", rectangle_rectangle(in.first, in.second).squared_distance, d2, kExample);
+      e.near("squared_distance", answerer::rectangle_rectangle(in.first, in.second).squared_distance, d2, kExample);
       return both(e, run_rectangle_rectangle(in));
     };
   };
@@ -455,7 +460,7 @@ TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
   check::example(q, "collinear and overlapping: distance 0", SegmentPair{kAxis, {{2, 0, 0}, {7, 0, 0}}},
                  [](const SegmentPair& in) {
     Expect e;
-    e.near("squared_distance", segment_segment(in.first, in.second).squared_distance, 0, kExample);
+    e.near("squared_distance", answerer::segment_segment(in.first, in.second).squared_distance, 0, kExample);
     return both(e, run_segment_segment(in));
   });
   check::example(query::robust_test_capsule_capsule, "crossing at 1/3 and 2/3, exactly touching",
@@ -529,74 +534,74 @@ TEST_CASE("L05 preconditions: invalid input is rejected, naming the argument", "
   const Rectangle floor = kFloor;
   Rectangle r = floor;
 
-  rejects("p", [&] { point_segment(bad, kAxis); });
-  rejects("segment.b", [&] { point_segment({0, 0, 0}, {{0, 0, 0}, far}); });
-  rejects("first.a", [&] { segment_segment({bad, {1, 0, 0}}, kAxis); });
-  rejects("second.b", [&] { segment_segment(kAxis, {{0, 0, 0}, far}); });
-  rejects("p", [&] { point_rectangle(far, floor); });
+  rejects("p", [&] { answerer::point_segment(bad, kAxis); });
+  rejects("segment.b", [&] { answerer::point_segment({0, 0, 0}, {{0, 0, 0}, far}); });
+  rejects("first.a", [&] { answerer::segment_segment({bad, {1, 0, 0}}, kAxis); });
+  rejects("second.b", [&] { answerer::segment_segment(kAxis, {{0, 0, 0}, far}); });
+  rejects("p", [&] { answerer::point_rectangle(far, floor); });
   r.half_u = -1;
-  rejects("rectangle.half_u", [&] { point_rectangle({0, 0, 0}, r); });
+  rejects("rectangle.half_u", [&] { answerer::point_rectangle({0, 0, 0}, r); });
   r = floor;
   r.half_v = nan;
-  rejects("rectangle.half_v", [&] { segment_rectangle(kAxis, r); });
+  rejects("rectangle.half_v", [&] { answerer::segment_rectangle(kAxis, r); });
   r = floor;
   r.u = {2, 0, 0};
-  rejects("rectangle.u", [&] { segment_rectangle(kAxis, r); });
+  rejects("rectangle.u", [&] { answerer::segment_rectangle(kAxis, r); });
   r = floor;
   r.v = {1, 0, 0};
-  rejects("second.u and second.v", [&] { rectangle_rectangle(floor, r); });
+  rejects("second.u and second.v", [&] { answerer::rectangle_rectangle(floor, r); });
   r = floor;
   r.center = bad;
-  rejects("first.center", [&] { rectangle_rectangle(r, floor); });
+  rejects("first.center", [&] { answerer::rectangle_rectangle(r, floor); });
 
-  rejects("a.radius", [&] { test_sphere_sphere({{0, 0, 0}, -1}, unit); });
-  rejects("b.center", [&] { test_sphere_sphere(unit, {bad, 1}); });
-  rejects("b.radius", [&] { test_sphere_capsule(unit, {kAxis, -0.5}); });
-  rejects("b.axis.a", [&] { test_sphere_capsule(unit, {{bad, {0, 0, 0}}, 1}); });
-  rejects("b.radius", [&] { test_sphere_lozenge(unit, {floor, nan}); });
-  rejects("a.radius", [&] { test_capsule_capsule({kAxis, inf}, {kAxis, 1}); });
+  rejects("a.radius", [&] { answerer::test_sphere_sphere({{0, 0, 0}, -1}, unit); });
+  rejects("b.center", [&] { answerer::test_sphere_sphere(unit, {bad, 1}); });
+  rejects("b.radius", [&] { answerer::test_sphere_capsule(unit, {kAxis, -0.5}); });
+  rejects("b.axis.a", [&] { answerer::test_sphere_capsule(unit, {{bad, {0, 0, 0}}, 1}); });
+  rejects("b.radius", [&] { answerer::test_sphere_lozenge(unit, {floor, nan}); });
+  rejects("a.radius", [&] { answerer::test_capsule_capsule({kAxis, inf}, {kAxis, 1}); });
   rejects("b.rectangle.half_u", [&] {
-    test_capsule_lozenge({kAxis, 1}, {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, -2, 1}, 1});
+    answerer::test_capsule_lozenge({kAxis, 1}, {{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, -2, 1}, 1});
   });
-  rejects("a.radius", [&] { test_lozenge_lozenge({floor, -1}, {floor, 1}); });
+  rejects("a.radius", [&] { answerer::test_lozenge_lozenge({floor, -1}, {floor, 1}); });
 
   const Plane ground{{0, 0, 1}, 0};
-  rejects("plane.normal", [&] { sweep_sphere_plane(unit, {0, 0, -1}, {{0, 0, 0}, 1}, 1); });
-  rejects("plane.offset", [&] { sweep_sphere_plane(unit, {0, 0, -1}, {{0, 0, 1}, nan}, 1); });
-  rejects("sphere.radius", [&] { sweep_sphere_plane({{0, 0, 5}, -1}, {0, 0, -1}, ground, 1); });
-  rejects("velocity", [&] { sweep_sphere_plane(unit, bad, ground, 1); });
-  rejects("duration", [&] { sweep_sphere_plane(unit, {0, 0, -1}, ground, -1); });
-  rejects("duration", [&] { sweep_sphere_plane(unit, {0, 0, -1}, ground, nan); });
-  rejects("s0.radius", [&] { sweep_sphere_sphere({{0, 0, 0}, -1}, {1, 0, 0}, unit, {0, 0, 0}, 1); });
-  rejects("s1.center", [&] { sweep_sphere_sphere(unit, {1, 0, 0}, {far, 1}, {0, 0, 0}, 1); });
-  rejects("v1", [&] { sweep_sphere_sphere(unit, {1, 0, 0}, {{5, 0, 0}, 1}, bad, 1); });
-  rejects("duration", [&] { sweep_sphere_sphere(unit, {1, 0, 0}, {{5, 0, 0}, 1}, {0, 0, 0}, inf); });
-  rejects("sphere.radius", [&] { sweep_sphere_capsule({{0, 0, 5}, -1}, {0, 0, -1}, {kAxis, 1}, 1); });
-  rejects("velocity", [&] { sweep_sphere_capsule(unit, far, {kAxis, 1}, 1); });
-  rejects("capsule.axis.b", [&] { sweep_sphere_capsule(unit, {0, 0, -1}, {{{0, 0, 0}, bad}, 1}, 1); });
-  rejects("capsule.radius", [&] { sweep_sphere_capsule(unit, {0, 0, -1}, {kAxis, nan}, 1); });
-  rejects("duration", [&] { sweep_sphere_capsule(unit, {0, 0, -1}, {kAxis, 1}, -1); });
+  rejects("plane.normal", [&] { answerer::sweep_sphere_plane(unit, {0, 0, -1}, {{0, 0, 0}, 1}, 1); });
+  rejects("plane.offset", [&] { answerer::sweep_sphere_plane(unit, {0, 0, -1}, {{0, 0, 1}, nan}, 1); });
+  rejects("sphere.radius", [&] { answerer::sweep_sphere_plane({{0, 0, 5}, -1}, {0, 0, -1}, ground, 1); });
+  rejects("velocity", [&] { answerer::sweep_sphere_plane(unit, bad, ground, 1); });
+  rejects("duration", [&] { answerer::sweep_sphere_plane(unit, {0, 0, -1}, ground, -1); });
+  rejects("duration", [&] { answerer::sweep_sphere_plane(unit, {0, 0, -1}, ground, nan); });
+  rejects("s0.radius", [&] { answerer::sweep_sphere_sphere({{0, 0, 0}, -1}, {1, 0, 0}, unit, {0, 0, 0}, 1); });
+  rejects("s1.center", [&] { answerer::sweep_sphere_sphere(unit, {1, 0, 0}, {far, 1}, {0, 0, 0}, 1); });
+  rejects("v1", [&] { answerer::sweep_sphere_sphere(unit, {1, 0, 0}, {{5, 0, 0}, 1}, bad, 1); });
+  rejects("duration", [&] { answerer::sweep_sphere_sphere(unit, {1, 0, 0}, {{5, 0, 0}, 1}, {0, 0, 0}, inf); });
+  rejects("sphere.radius", [&] { answerer::sweep_sphere_capsule({{0, 0, 5}, -1}, {0, 0, -1}, {kAxis, 1}, 1); });
+  rejects("velocity", [&] { answerer::sweep_sphere_capsule(unit, far, {kAxis, 1}, 1); });
+  rejects("capsule.axis.b", [&] { answerer::sweep_sphere_capsule(unit, {0, 0, -1}, {{{0, 0, 0}, bad}, 1}, 1); });
+  rejects("capsule.radius", [&] { answerer::sweep_sphere_capsule(unit, {0, 0, -1}, {kAxis, nan}, 1); });
+  rejects("duration", [&] { answerer::sweep_sphere_capsule(unit, {0, 0, -1}, {kAxis, 1}, -1); });
   const Box box{{0, 0, 5}, Mat3::Identity(), {1, 2, 3}};
   Box b = box;
   b.half_extents = {1, -2, 3};
-  rejects("box.half_extents[1]", [&] { sweep_box_plane(b, {0, 0, -1}, ground, 4); });
+  rejects("box.half_extents[1]", [&] { answerer::sweep_box_plane(b, {0, 0, -1}, ground, 4); });
   b = box;
   b.axes(0, 2) = 1;  // column 2 is (1, 0, 1): not unit
-  rejects("box.axes.col(2)", [&] { sweep_box_plane(b, {0, 0, -1}, ground, 4); });
-  rejects("plane.normal", [&] { sweep_box_plane(box, {0, 0, -1}, {{0, 0, 0}, 0}, 4); });
-  rejects("plane.normal", [&] { sweep_box_plane(box, {0, 0, -1}, {{0, nan, 1}, 0}, 4); });
-  rejects("box.center", [&] { sweep_box_plane({bad, Mat3::Identity(), {1, 1, 1}}, {0, 0, -1}, ground, 4); });
-  rejects("duration", [&] { sweep_box_plane(box, {0, 0, -1}, ground, -2); });
+  rejects("box.axes.col(2)", [&] { answerer::sweep_box_plane(b, {0, 0, -1}, ground, 4); });
+  rejects("plane.normal", [&] { answerer::sweep_box_plane(box, {0, 0, -1}, {{0, 0, 0}, 0}, 4); });
+  rejects("plane.normal", [&] { answerer::sweep_box_plane(box, {0, 0, -1}, {{0, nan, 1}, 0}, 4); });
+  rejects("box.center", [&] { answerer::sweep_box_plane({bad, Mat3::Identity(), {1, 1, 1}}, {0, 0, -1}, ground, 4); });
+  rejects("duration", [&] { answerer::sweep_box_plane(box, {0, 0, -1}, ground, -2); });
 
   // The domain's ends, valid input: a normal of any length names the same plane.
   for (const double k : {1e-300, 1e-200, 1e-162, 1e150, 1e200, 1e300}) {
     const Plane shelf{Vec3(0, 0, 2) * k, -2 * k};
-    const Sweep s = sweep_sphere_plane({{0, 0, 5}, 1}, {0, 0, -2}, shelf, 4);
+    const Sweep s = answerer::sweep_sphere_plane({{0, 0, 5}, 1}, {0, 0, -2}, shelf, 4);
     CHECK(s.status == SweepStatus::contact);
     CHECK(s.time == Approx(1.5));
-    const Sweep o = sweep_sphere_plane({{0, 0, 2}, 1}, {0, 0, 1}, shelf, 4);
+    const Sweep o = answerer::sweep_sphere_plane({{0, 0, 2}, 1}, {0, 0, 1}, shelf, 4);
     CHECK(o.status == SweepStatus::overlapping);
-    const Sweep f = sweep_box_plane(box, {0, 0, -1}, {Vec3(0, 0, 3) * k, 0}, 4);
+    const Sweep f = answerer::sweep_box_plane(box, {0, 0, -1}, {Vec3(0, 0, 3) * k, 0}, 4);
     CHECK(f.status == SweepStatus::contact);
     CHECK(f.time == Approx(2));
   }

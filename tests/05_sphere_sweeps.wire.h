@@ -6,6 +6,7 @@
 #include "sphere_sweeps.h"
 
 #include "common/fields.h"
+#include "common/protocol/calls.h"
 
 namespace labkit::lab05 {
 
@@ -36,3 +37,6 @@ LABKIT_FIELDS(Sweep, status, time, point)
   CALL(Sweep, sweep_sphere_capsule, (const Sphere&, const Vec3&, const Capsule&, double))              \
   CALL(Sweep, sweep_box_plane, (const Box&, const Vec3&, const Plane&, double))
 // clang-format on
+
+// The judge's process calls the code under test only as answerer::name(...) (calls.h).
+LABKIT_ANSWERER_CALLS(lab05, LABKIT_LAB05_CALLS)

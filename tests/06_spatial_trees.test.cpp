@@ -63,14 +63,14 @@ long long served(const char* name) { return remote::last_served().count(name); }
 
 // Step 5: the pairs, judged with the given_balls_meet calls the judge counted.
 Outcome judge_pairs(const SphereSet& in, Rules rules = Rules::random) {
-  const SpherePairs got = overlapping_pairs(in.spheres);
+  const SpherePairs got = answerer::overlapping_pairs(in.spheres);
   return judge::overlapping_pairs(in, got, served("given_balls_meet"), rules);
 }
 
 // Step 6: one SweepAndPrune fed every frame in the answerer; each frame's answer with the
 // calls the judge counted while the code answered it (a part each, given::part).
 SweepRuns sweep_counted(const Frames& frames) {
-  const SweepFrames got = run_sweep(frames);
+  const SweepFrames got = answerer::run_sweep(frames);
   const given::Served& calls = remote::last_served();
   SweepRuns runs;
   for (std::size_t k = 0; k < got.size(); ++k)
@@ -81,7 +81,7 @@ SweepRuns sweep_counted(const Frames& frames) {
 // Step 7: the dual traversal, with the given tests' calls the judge counted.
 BvhRun bvh_counted(const ObbTree& a, const ObbTree& b, bool every) {
   BvhRun run;
-  run.answer = colliding_triangles(a, b, every);
+  run.answer = answerer::colliding_triangles(a, b, every);
   run.box_calls = served("given_boxes_overlap");
   run.triangle_calls = served("given_triangles_meet");
   return run;
@@ -110,13 +110,13 @@ Outcome run_query(const TreeQuery& in, const KdTree& tree, Query&& query, Judge&
 }
 
 Outcome judge_first(const TreeQuery& in, const KdTree& tree, Rules rules = Rules::random) {
-  return run_query(in, tree, first_hit, judge::first_hit, rules);
+  return run_query(in, tree, answerer::first_hit, judge::first_hit, rules);
 }
 Outcome judge_any(const TreeQuery& in, const KdTree& tree, Rules rules = Rules::random) {
-  return run_query(in, tree, any_hit, judge::any_hit, rules);
+  return run_query(in, tree, answerer::any_hit, judge::any_hit, rules);
 }
 Outcome judge_all(const TreeQuery& in, const KdTree& tree, Rules rules = Rules::random) {
-  return run_query(in, tree, all_hits, judge::all_hits, rules);
+  return run_query(in, tree, answerer::all_hits, judge::all_hits, rules);
 }
 
 // The three queries on the checker's tree of a random case.
@@ -130,7 +130,7 @@ Outcome all_three(const TreeQuery& in, Rules rules) {
 // ---- Step 1 --------------------------------------------------------------------------------------
 
 TEST_CASE(LABKIT_STEP(L06S1) ": worked examples", "[lab06][step1]") {
-  const auto valid = [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); };
+  const auto valid = [](const Mesh& m) { return judge::kd_tree(m, answerer::build_kd_tree(m)); };
   check::example(query::build_kd_tree, "the two triangles of step 2", lean_and_stand(), valid);
   // The picture in the header: triangle 7 touches y = 2, the others lie well inside
   // their leaves.
@@ -146,7 +146,7 @@ TEST_CASE(LABKIT_STEP(L06S1) ": worked examples", "[lab06][step1]") {
                  mesh_of(std::vector<Triangle>(20, Triangle{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}})), valid);
   check::example(query::build_kd_tree, "a sphere of 200 triangles", gen::sphere_mesh(200), valid);
   check::example(query::build_kd_tree, "no triangles: one empty leaf", Mesh{}, [](const Mesh& m) {
-    const KdTree tree = build_kd_tree(m);
+    const KdTree tree = answerer::build_kd_tree(m);
     Expect e;
     e.equal("nodes", int(tree.nodes.size()), 1);
     if (tree.nodes.size() == 1) {
@@ -165,10 +165,10 @@ TEST_CASE(LABKIT_STEP(L06S1) ": worked examples", "[lab06][step1]") {
 
 TEST_CASE(LABKIT_STEP(L06S1) ": random cases", "[lab06][step1][oracle]") {
   check::random_cases(query::build_kd_tree, gen::any_mesh(),
-                      [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+                      [](const Mesh& m) { return judge::kd_tree(m, answerer::build_kd_tree(m)); });
   // Lattice meshes with faces in the planes the splits use: triangles touch split planes.
   check::random_cases(query::build_kd_tree_lattice, gen::exact_mesh(),
-                      [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+                      [](const Mesh& m) { return judge::kd_tree(m, answerer::build_kd_tree(m)); });
 }
 
 // ---- Step 2 --------------------------------------------------------------------------------------
@@ -178,7 +178,7 @@ TEST_CASE(LABKIT_STEP(L06S2) ": worked examples", "[lab06][step2]") {
   const Mesh mesh = lean_and_stand();
   const auto expect_hit = [tree](int triangle, double t, int max_tests) {
     return [tree, triangle, t, max_tests](const TreeQuery& in) {
-      const KdHit got = first_hit(tree, in.segment);
+      const KdHit got = answerer::first_hit(tree, in.segment);
       Expect e;
       e.equal("hit", got.hit, true);
       e.equal("triangle", got.triangle, triangle);
@@ -199,7 +199,7 @@ TEST_CASE(LABKIT_STEP(L06S2) ": worked examples", "[lab06][step2]") {
                  TreeQuery{mesh, {{4, 1, 4}, {4, 1, 0}}, 0}, expect_hit(0, 0.5, 1));
   check::example(query::all_hits, "B then A, A once though listed twice", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
                  [tree](const TreeQuery& in) {
-    const KdHits got = all_hits(tree, in.segment);
+    const KdHits got = answerer::all_hits(tree, in.segment);
     Expect e;
     e.equal("count", int(got.hits.size()), 2);
     if (got.hits.size() == 2) {
@@ -212,7 +212,7 @@ TEST_CASE(LABKIT_STEP(L06S2) ": worked examples", "[lab06][step2]") {
   });
   check::example(query::any_hit, "A, in the first leaf: one test", TreeQuery{mesh, {{0, 1, 1}, {8, 1, 1}}, 0},
                  [tree](const TreeQuery& in) {
-    const KdHit got = any_hit(tree, in.segment);
+    const KdHit got = answerer::any_hit(tree, in.segment);
     Expect e;
     e.equal("hit", got.hit, true);
     e.equal("triangle", got.triangle, 0);
@@ -222,8 +222,8 @@ TEST_CASE(LABKIT_STEP(L06S2) ": worked examples", "[lab06][step2]") {
   check::example(query::first_hit, "above the bounds: no leaf, no test", TreeQuery{mesh, {{0, 1, 5}, {8, 1, 5}}, 0},
                  [tree](const TreeQuery& in) {
     Expect e;
-    const KdHit first = first_hit(tree, in.segment), any = any_hit(tree, in.segment);
-    const KdHits all = all_hits(tree, in.segment);
+    const KdHit first = answerer::first_hit(tree, in.segment), any = answerer::any_hit(tree, in.segment);
+    const KdHits all = answerer::all_hits(tree, in.segment);
     e.equal("first_hit.hit", first.hit, false);
     e.equal("first_hit.tests", first.tests, 0);
     e.equal("any_hit.tests", any.tests, 0);
@@ -233,7 +233,7 @@ TEST_CASE(LABKIT_STEP(L06S2) ": worked examples", "[lab06][step2]") {
   // The header's walk: t_split <= 0 means the segment moves away from the plane (or
   // starts on it): the near child only, whose leaf lists A alone.
   const auto near_only = [tree](const TreeQuery& in) {
-    const KdHit got = first_hit(tree, in.segment);
+    const KdHit got = answerer::first_hit(tree, in.segment);
     Expect e;
     e.that("tests", got.tests == 1, std::to_string(got.tests), "1 (A, in the leaf below)",
            "t_split <= 0: the segment moves away from the plane x = 4 (or starts on it), so the walk visits the near "
@@ -285,10 +285,10 @@ Mesh floor_and_wall() { return mesh_of({{{0, 0, 0}, {8, 0, 0}, {0, 8, 0}}, {{2, 
 
 auto expect_where(Where where) {
   return [where](const PointQuery& in) {
-    const BspTree tree = build_bsp(in.mesh);
+    const BspTree tree = answerer::build_bsp(in.mesh);
     const Outcome valid = judge::bsp_tree(in.mesh, tree);
     if (valid.verdict == Outcome::Verdict::fail) return valid;
-    const Where got = classify(tree, in.point);
+    const Where got = answerer::classify(tree, in.point);
     if (got != where) return judge::classify(in, got, Rules::exact);
     Expect e;
     e.equal("where", got, where);  // the handout's answer, which the oracle agrees with
@@ -299,16 +299,16 @@ auto expect_where(Where where) {
 }  // namespace
 
 TEST_CASE(LABKIT_STEP(L06S3) ": worked examples", "[lab06][step3]") {
-  const auto valid = [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); };
+  const auto valid = [](const Mesh& m) { return judge::bsp_tree(m, answerer::build_bsp(m)); };
   check::example(query::build_bsp, "a tetrahedron: a chain, no cut", tetrahedron(), [](const Mesh& m) {
-    const BspTree tree = build_bsp(m);
+    const BspTree tree = answerer::build_bsp(m);
     Expect e;
     e.equal("pieces", int(tree.pieces.size()), 4);
     e.equal("nodes", int(tree.nodes.size()), 4);
     return both(judge::bsp_tree(m, tree), e.outcome());
   });
   check::example(query::build_bsp, "a floor and a wall: one of them is cut", floor_and_wall(), [](const Mesh& m) {
-    const BspTree tree = build_bsp(m);
+    const BspTree tree = answerer::build_bsp(m);
     Expect e;
     e.that("pieces", tree.pieces.size() == 3 || tree.pieces.size() == 4, std::to_string(tree.pieces.size()),
            "3 (the wall cut in two) or 4 (the floor cut in three)", "exactly one triangle is cut by the other's plane");
@@ -318,7 +318,7 @@ TEST_CASE(LABKIT_STEP(L06S3) ": worked examples", "[lab06][step3]") {
                  valid);
   check::example(query::build_bsp, "a zero-area triangle is left out", mesh_of({{{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}}),
                  [](const Mesh& m) {
-    const BspTree tree = build_bsp(m);
+    const BspTree tree = answerer::build_bsp(m);
     Expect e;
     e.equal("nodes", int(tree.nodes.size()), 0);
     e.equal("pieces", int(tree.pieces.size()), 0);
@@ -339,9 +339,10 @@ TEST_CASE(LABKIT_STEP(L06S3) ": worked examples", "[lab06][step3]") {
 
 TEST_CASE(LABKIT_STEP(L06S3) ": random cases", "[lab06][step3][oracle]") {
   check::random_cases(query::build_bsp, gen::bsp_mesh(),
-                      [](const Mesh& m) { return judge::bsp_tree(m, build_bsp(m)); });
-  check::random_cases(query::classify, gen::point_query(),
-                      [](const PointQuery& in) { return judge::classify(in, classify(build_bsp(in.mesh), in.point)); });
+                      [](const Mesh& m) { return judge::bsp_tree(m, answerer::build_bsp(m)); });
+  check::random_cases(query::classify, gen::point_query(), [](const PointQuery& in) {
+    return judge::classify(in, answerer::classify(answerer::build_bsp(in.mesh), in.point));
+  });
 }
 
 // ---- Step 4 --------------------------------------------------------------------------------------
@@ -364,8 +365,8 @@ Mesh pinwheel() {
 }
 
 Outcome judge_order(const PointQuery& in, Rules rules = Rules::random) {
-  const BspTree tree = build_bsp(in.mesh);
-  return judge::back_to_front(in, tree, back_to_front(tree, in.point), rules);
+  const BspTree tree = answerer::build_bsp(in.mesh);
+  return judge::back_to_front(in, tree, answerer::back_to_front(tree, in.point), rules);
 }
 
 }  // namespace
@@ -373,8 +374,8 @@ Outcome judge_order(const PointQuery& in, Rules rules = Rules::random) {
 TEST_CASE(LABKIT_STEP(L06S4) ": worked examples", "[lab06][step4]") {
   const auto sources = [](std::vector<int> expected) {
     return [expected](const PointQuery& in) {
-      const BspTree tree = build_bsp(in.mesh);
-      const std::vector<int> order = back_to_front(tree, in.point);
+      const BspTree tree = answerer::build_bsp(in.mesh);
+      const std::vector<int> order = answerer::back_to_front(tree, in.point);
       std::vector<int> got;
       for (int k : order)
         if (k >= 0 && std::size_t(k) < tree.pieces.size()) got.push_back(tree.pieces[std::size_t(k)].source);
@@ -389,23 +390,23 @@ TEST_CASE(LABKIT_STEP(L06S4) ": worked examples", "[lab06][step4]") {
                  sources({2, 1, 0}));
   check::example(query::back_to_front, "level with the middle one", PointQuery{stack_of_three(), {1, 1, 1}},
                  [](const PointQuery& in) {
-    const BspTree tree = build_bsp(in.mesh);
-    return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
+    const BspTree tree = answerer::build_bsp(in.mesh);
+    return judge::back_to_front(in, tree, answerer::back_to_front(tree, in.point), Rules::exact);
   });
   check::example(query::back_to_front, "a pinwheel: cut, then ordered", PointQuery{pinwheel(), {2, 3, 20}},
                  [](const PointQuery& in) {
-    const BspTree tree = build_bsp(in.mesh);
+    const BspTree tree = answerer::build_bsp(in.mesh);
     Expect e;
     e.that("pieces", tree.pieces.size() > 3, std::to_string(tree.pieces.size()), "more than 3",
            "three triangles that overlap in a cycle cannot be ordered whole");
-    return both(judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact), e.outcome());
+    return both(judge::back_to_front(in, tree, answerer::back_to_front(tree, in.point), Rules::exact), e.outcome());
   });
 }
 
 TEST_CASE(LABKIT_STEP(L06S4) ": random cases", "[lab06][step4][oracle]") {
   check::random_cases(query::back_to_front, gen::eye_query(), [](const PointQuery& in) {
-    const BspTree tree = build_bsp(in.mesh);
-    return judge::back_to_front(in, tree, back_to_front(tree, in.point));
+    const BspTree tree = answerer::build_bsp(in.mesh);
+    return judge::back_to_front(in, tree, answerer::back_to_front(tree, in.point));
   });
 }
 
@@ -415,7 +416,7 @@ namespace {
 
 auto expect_pairs(std::vector<std::array<int, 2>> pairs) {
   return [pairs](const SphereSet& in) {
-    const SpherePairs got = overlapping_pairs(in.spheres);
+    const SpherePairs got = answerer::overlapping_pairs(in.spheres);
     const Outcome right = judge::overlapping_pairs(in, got, served("given_balls_meet"), Rules::exact);
     Expect e;
     e.equal("pairs", got.pairs, pairs);
@@ -617,7 +618,7 @@ struct Tally {
 Outcome run_efficiency(const EfficiencyCase& in) {
   const auto kind = gen::MeshKind(in.kind);
   const Mesh mesh = gen::mesh_of_kind(kind, in.triangles, std::uint64_t(in.seed));
-  const KdTree tree = build_kd_tree(mesh);
+  const KdTree tree = answerer::build_kd_tree(mesh);
   const Outcome valid = judge::kd_tree(mesh, tree);
   if (valid.verdict == Outcome::Verdict::fail) return valid;
   const std::vector<Aabb> boxes = judge::triangle_boxes(tree.triangles);
@@ -634,7 +635,7 @@ Outcome run_efficiency(const EfficiencyCase& in) {
     for (std::size_t at = 0; at < segments.size(); at += kSegmentsPerCall) {
       const Segments chunk(segments.begin() + long(at),
                            segments.begin() + long(std::min(segments.size(), at + kSegmentsPerCall)));
-      const SegmentRuns got = run_segments(tree, chunk, !short_ones);
+      const SegmentRuns got = answerer::run_segments(tree, chunk, !short_ones);
       const given::Served& counted = remote::last_served();
       if (got.size() != chunk.size())
         return check::fail(std::to_string(chunk.size()) + " answers", std::to_string(got.size()) + " answers",
@@ -714,7 +715,7 @@ TEST_CASE(LABKIT_STEP(L06S8) ": tests counted on 10,000 triangles", "[lab06][ste
   check::example(query::efficiency_spheres, "2,000 spheres spread over a cube", SpreadSpheres{2000, seed},
                  [](const SpreadSpheres& in) {
     const SphereSet set{gen::spread_spheres(in.count, 100, 0.25, 1, std::uint64_t(in.seed))};
-    const SpherePairs got = overlapping_pairs(set.spheres);
+    const SpherePairs got = answerer::overlapping_pairs(set.spheres);
     const Outcome right = judge::overlapping_pairs(set, got, served("given_balls_meet"));
     if (right.verdict == Outcome::Verdict::fail) return right;
     Expect e;
@@ -779,7 +780,7 @@ TEST_CASE(LABKIT_STEP(L06S9) ": k-d trees on exact input", "[lab06][step9]") {
   check::example(q, "through the corner (2, 0, 2) of three cells", TreeQuery{mesh, {{0, -2, 0}, {4, 2, 4}}, 0},
                  exact_all);
   check::example(query::robust_build_kd_tree, "two cubes: splits along their faces", mesh,
-                 [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+                 [](const Mesh& m) { return judge::kd_tree(m, answerer::build_kd_tree(m)); });
 }
 
 TEST_CASE(LABKIT_STEP(L06S9) ": BSP trees and spheres on exact input", "[lab06][step9]") {
@@ -817,13 +818,13 @@ TEST_CASE(LABKIT_STEP(L06S9) ": random exact degenerate cases", "[lab06][step9][
   check::random_cases(query::robust_segment_queries, gen::exact_tree_query(),
                       [](const TreeQuery& in) { return all_three(in, Rules::exact); });
   check::random_cases(query::robust_build_kd_tree, gen::exact_mesh(),
-                      [](const Mesh& m) { return judge::kd_tree(m, build_kd_tree(m)); });
+                      [](const Mesh& m) { return judge::kd_tree(m, answerer::build_kd_tree(m)); });
   check::random_cases(query::robust_classify, gen::exact_point_query(), [](const PointQuery& in) {
-    return judge::classify(in, classify(build_bsp(in.mesh), in.point), Rules::exact);
+    return judge::classify(in, answerer::classify(answerer::build_bsp(in.mesh), in.point), Rules::exact);
   });
   check::random_cases(query::robust_back_to_front, gen::exact_eye_query(), [](const PointQuery& in) {
-    const BspTree tree = build_bsp(in.mesh);
-    return judge::back_to_front(in, tree, back_to_front(tree, in.point), Rules::exact);
+    const BspTree tree = answerer::build_bsp(in.mesh);
+    return judge::back_to_front(in, tree, answerer::back_to_front(tree, in.point), Rules::exact);
   });
   check::random_cases(query::robust_overlapping_pairs, gen::exact_sphere_set_case(),
                       [](const SphereSet& in) { return judge_pairs(in, Rules::exact); });
@@ -847,34 +848,36 @@ TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[
   const Vec3 finite(0, 1, 1);
   for (double bad : {nan, inf, -inf}) {
     const Vec3 v(bad, 1, 1);
-    refused("segment.a", [&] { first_hit(tree, {v, finite}); });
-    refused("segment.b", [&] { first_hit(tree, {finite, v}); });
-    refused("segment.a", [&] { any_hit(tree, {v, finite}); });
-    refused("segment.b", [&] { all_hits(tree, {finite, v}); });
+    refused("segment.a", [&] { answerer::first_hit(tree, {v, finite}); });
+    refused("segment.b", [&] { answerer::first_hit(tree, {finite, v}); });
+    refused("segment.a", [&] { answerer::any_hit(tree, {v, finite}); });
+    refused("segment.b", [&] { answerer::all_hits(tree, {finite, v}); });
     Mesh broken = lean_and_stand();
     broken.vertices[4] = v;
-    refused("mesh.vertices[4]", [&] { build_kd_tree(broken); });
-    refused("mesh.vertices[4]", [&] { build_bsp(broken); });
-    const BspTree bsp = build_bsp(lean_and_stand());
-    refused("point", [&] { classify(bsp, v); });
-    refused("eye", [&] { back_to_front(bsp, v); });
-    refused("spheres[1].center", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {v, 1}, {{1, 0, 0}, 1}}); });
-    refused("spheres[0].radius", [&] { overlapping_pairs({{{0, 0, 0}, bad}, {{1, 0, 0}, 1}}); });
-    refused("spheres[1].center", [&] { run_sweep({{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {v, 1}}}); });
-    refused("spheres[0].radius", [&] { run_sweep({{{{0, 0, 0}, bad}}}); });
+    refused("mesh.vertices[4]", [&] { answerer::build_kd_tree(broken); });
+    refused("mesh.vertices[4]", [&] { answerer::build_bsp(broken); });
+    const BspTree bsp = answerer::build_bsp(lean_and_stand());
+    refused("point", [&] { answerer::classify(bsp, v); });
+    refused("eye", [&] { answerer::back_to_front(bsp, v); });
+    refused("spheres[1].center", [&] { answerer::overlapping_pairs({{{0, 0, 0}, 1}, {v, 1}, {{1, 0, 0}, 1}}); });
+    refused("spheres[0].radius", [&] { answerer::overlapping_pairs({{{0, 0, 0}, bad}, {{1, 0, 0}, 1}}); });
+    refused("spheres[1].center", [&] {
+      answerer::run_sweep({{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {v, 1}}});
+    });
+    refused("spheres[0].radius", [&] { answerer::run_sweep({{{{0, 0, 0}, bad}}}); });
   }
-  refused("spheres[0].radius", [&] { run_sweep({{{{0, 0, 0}, -1}}}); });
-  refused("spheres", [&] { run_sweep({{{{0, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}}); });
-  refused("spheres[1].radius", [&] { overlapping_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, -1}}); });
+  refused("spheres[0].radius", [&] { answerer::run_sweep({{{{0, 0, 0}, -1}}}); });
+  refused("spheres", [&] { answerer::run_sweep({{{{0, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}}); });
+  refused("spheres[1].radius", [&] { answerer::overlapping_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, -1}}); });
   Mesh out_of_range = lean_and_stand();
   out_of_range.triangles[1][2] = 6;
-  refused("mesh.triangles[1]", [&] { build_kd_tree(out_of_range); });
+  refused("mesh.triangles[1]", [&] { answerer::build_kd_tree(out_of_range); });
   out_of_range.triangles[1][2] = -1;
-  refused("mesh.triangles[1]", [&] { build_bsp(out_of_range); });
+  refused("mesh.triangles[1]", [&] { answerer::build_bsp(out_of_range); });
   // Valid, with a documented answer: a zero-length segment never hits; a point sphere
   // (radius 0) is a ball like any other.
-  CHECK_FALSE(first_hit(tree, {finite, finite}).hit);
-  CHECK(overlapping_pairs({{{0, 0, 0}, 0}, {{0, 0, 0}, 0}}).pairs.size() == 1);
+  CHECK_FALSE(answerer::first_hit(tree, {finite, finite}).hit);
+  CHECK(answerer::overlapping_pairs({{{0, 0, 0}, 0}, {{0, 0, 0}, 0}}).pairs.size() == 1);
   // Step 7's trees are not checked (that would cost what they save); trees without nodes
   // (meshes without triangles) have no pair and cost no test.
   const BvhRun none = bvh_counted(ObbTree{}, judge::obb_tree(lean_and_stand(), 0), true);
@@ -894,16 +897,16 @@ TEST_CASE("L06 figures: primitive tests per query", "[.][lab06-figures]") {
   for (int size : {10000, 100000, 1000000})
     for (int kind = 0; kind < 4; ++kind) {
       const Mesh mesh = gen::mesh_of_kind(gen::MeshKind(kind), size, 1);
-      const KdTree tree = build_kd_tree(mesh);
+      const KdTree tree = answerer::build_kd_tree(mesh);
       Tally tallies[4];
       for (bool short_ones : {true, false})
         for (const Segment& s : efficiency_segments(mesh, segments, short_ones, 7 + short_ones)) {
           if (short_ones) {
-            tallies[0].add(first_hit(tree, s).tests);
-            tallies[1].add(any_hit(tree, s).tests);
+            tallies[0].add(answerer::first_hit(tree, s).tests);
+            tallies[1].add(answerer::any_hit(tree, s).tests);
           } else {
-            tallies[2].add(first_hit(tree, s).tests);
-            tallies[3].add(all_hits(tree, s).tests);
+            tallies[2].add(answerer::first_hit(tree, s).tests);
+            tallies[3].add(answerer::all_hits(tree, s).tests);
           }
         }
       const auto cell = [](const Tally& t) {

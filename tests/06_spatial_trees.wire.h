@@ -9,6 +9,7 @@
 #include "common/fields.h"
 #include "common/given/segment_triangle.h"
 #include "common/given/served.h"
+#include "common/protocol/calls.h"
 
 #include <vector>
 
@@ -119,3 +120,6 @@ inline SweepFrames run_sweep(const Frames& frames) {
   CALL(SweepFrames, run_sweep, (const Frames&))                            \
   CALL(TrianglePairs, colliding_triangles, (const ObbTree&, const ObbTree&, bool))
 // clang-format on
+
+// The judge's process calls the code under test only as answerer::name(...) (calls.h).
+LABKIT_ANSWERER_CALLS(lab06, LABKIT_LAB06_CALLS)

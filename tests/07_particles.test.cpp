@@ -51,8 +51,8 @@ Outcome teach(const std::string& rule, const Outcome& o) {
 Outcome run_emit(const EmitCase& in) {
   std::vector<Particle> first, second;
   Random r1(std::uint64_t(in.seed)), r2(std::uint64_t(in.seed));
-  for (int i = 0; i < in.count; ++i) first.push_back(emit(in.emitter, r1));
-  for (int i = 0; i < in.count; ++i) second.push_back(emit(in.emitter, r2));
+  for (int i = 0; i < in.count; ++i) first.push_back(answerer::emit(in.emitter, r1));
+  for (int i = 0; i < in.count; ++i) second.push_back(answerer::emit(in.emitter, r2));
   return judge::emit(in, first, second);
 }
 
@@ -60,44 +60,50 @@ std::vector<Births> run_births_steps(const BirthsCase& in) {
   std::vector<Births> got;
   Emitter e = in.emitter;
   for (int k = 0; k < in.steps; ++k) {
-    got.push_back(births(e, in.dt));
+    got.push_back(answerer::births(e, in.dt));
     e.owed = got.back().owed;
   }
   return got;
 }
 
 Outcome run_births(const BirthsCase& in) { return judge::births(in, run_births_steps(in)); }
-Outcome run_age(const AgeCase& in) { return judge::age(in, age(in.particles, in.dt)); }
+Outcome run_age(const AgeCase& in) { return judge::age(in, answerer::age(in.particles, in.dt)); }
 
 Outcome run_motion(const MotionCase& in) {
-  return first_failure({judge::force(in, force(in.particle, in.forces)),
-                        judge::euler_step(in, euler_step(in.particle, in.forces, in.dt)),
-                        judge::start_verlet(in, start_verlet(in.particle, in.forces, in.dt)),
-                        judge::verlet_step(in, verlet_step(in.particle, in.forces, in.dt))});
+  return first_failure({judge::force(in, answerer::force(in.particle, in.forces)),
+                        judge::euler_step(in, answerer::euler_step(in.particle, in.forces, in.dt)),
+                        judge::start_verlet(in, answerer::start_verlet(in.particle, in.forces, in.dt)),
+                        judge::verlet_step(in, answerer::verlet_step(in.particle, in.forces, in.dt))});
 }
 
-Outcome run_aim(const LaunchCase& in) { return judge::aim(in, aim(in.from, in.target, in.speed, in.gravity)); }
+Outcome run_aim(const LaunchCase& in) {
+  return judge::aim(in, answerer::aim(in.from, in.target, in.speed, in.gravity));
+}
 Outcome run_exact_aim(const LaunchCase& in) {
-  return judge::aim(in, aim(in.from, in.target, in.speed, in.gravity), Rules::exact);
+  return judge::aim(in, answerer::aim(in.from, in.target, in.speed, in.gravity), Rules::exact);
 }
 
-Outcome run_first_hit(const SegmentScene& in) { return judge::first_hit(in, first_hit(in.segment, in.scene)); }
+Outcome run_first_hit(const SegmentScene& in) {
+  return judge::first_hit(in, answerer::first_hit(in.segment, in.scene));
+}
 Outcome run_exact_first_hit(const SegmentScene& in) {
-  return judge::first_hit(in, first_hit(in.segment, in.scene), Rules::exact);
+  return judge::first_hit(in, answerer::first_hit(in.segment, in.scene), Rules::exact);
 }
 
 Outcome run_impulse(const ImpulseCase& in) {
-  return judge::impulse(in, impulse(in.velocity, in.object_velocity, in.normal, in.mass, in.material));
+  return judge::impulse(in, answerer::impulse(in.velocity, in.object_velocity, in.normal, in.mass, in.material));
 }
 
-Collision run_collide_only(const CollideCase& in) { return collide(in.step, in.velocity, in.mass, in.dt, in.scene); }
+Collision run_collide_only(const CollideCase& in) {
+  return answerer::collide(in.step, in.velocity, in.mass, in.dt, in.scene);
+}
 Outcome run_collide(const CollideCase& in) { return judge::collide(in, run_collide_only(in)); }
 Outcome run_invariants(const CollideCase& in) { return judge::invariants(in, run_collide_only(in)); }
 
 Outcome run_system(const SystemCase& in) {
   System system = system_of(in);
   for (int k = 0; k < in.steps; ++k) {
-    system.step(in.dt);
+    answerer::step(system, in.dt);
     const Outcome o = judge::system_step(in, system, k);
     if (o.verdict == Outcome::Verdict::fail) return o;
   }
@@ -183,7 +189,7 @@ TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
   }
   check::example(query::age, "ages 0, 1/4, 1/2 (lifetimes 1/2, 1/2, 1), dt 1/4: the second dies", ages,
                  [](const AgeCase& in) {
-    const std::vector<Particle> got = age(in.particles, in.dt);
+    const std::vector<Particle> got = answerer::age(in.particles, in.dt);
     Expect e;
     e.equal("survivors", int(got.size()), 2);
     if (got.size() == 2) {
@@ -205,7 +211,7 @@ TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
   still.count = 3;
   check::example(query::emit, "no spread: at (1, 2, 3), velocity (0, 0, 5)", still, [](const EmitCase& in) {
     Random random(1);
-    const Particle p = emit(in.emitter, random);
+    const Particle p = answerer::emit(in.emitter, random);
     Expect e;
     e.near("position", p.position, Vec3(1, 2, 3), 1e-12);
     e.near("velocity", p.velocity, Vec3(0, 0, 5), 1e-12);
@@ -244,7 +250,7 @@ TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
     double cos_sum = 0, speed_sum = 0, life_sum = 0;
     Vec3 side = Vec3::Zero(), where = Vec3::Zero();
     for (int i = 0; i < in.count; ++i) {
-      const Particle p = emit(in.emitter, random);
+      const Particle p = answerer::emit(in.emitter, random);
       const Vec3 d = p.velocity.normalized();
       cos_sum += d.z();
       side += Vec3(d.x(), d.y(), 0);
@@ -296,8 +302,8 @@ MotionCase thrown() {
 
 TEST_CASE(LABKIT_STEP(L07S2) ": worked examples", "[lab07][step2]") {
   check::example(query::euler_step, "two Euler steps of a thrown particle", thrown(), [](const MotionCase& in) {
-    const Particle one = euler_step(in.particle, in.forces, in.dt);
-    const Particle two = euler_step(one, in.forces, in.dt);
+    const Particle one = answerer::euler_step(in.particle, in.forces, in.dt);
+    const Particle two = answerer::euler_step(one, in.forces, in.dt);
     Expect e;
     e.near("position after 1", one.position, Vec3(1, 0, 10), 1e-12);
     e.near("velocity after 1", one.velocity, Vec3(2, 0, -5), 1e-12);
@@ -309,9 +315,9 @@ TEST_CASE(LABKIT_STEP(L07S2) ": worked examples", "[lab07][step2]") {
         e.outcome());
   });
   check::example(query::verlet_step, "two Verlet steps land on the exact parabola", thrown(), [](const MotionCase& in) {
-    const Particle start = start_verlet(in.particle, in.forces, in.dt);
-    const Particle one = verlet_step(start, in.forces, in.dt);
-    const Particle two = verlet_step(one, in.forces, in.dt);
+    const Particle start = answerer::start_verlet(in.particle, in.forces, in.dt);
+    const Particle one = answerer::verlet_step(start, in.forces, in.dt);
+    const Particle two = answerer::verlet_step(one, in.forces, in.dt);
     Expect e;
     e.near("previous at the start", start.previous, Vec3(-1, 0, 8.75), 1e-12);
     e.near("position after 1", one.position, Vec3(1, 0, 8.75), 1e-12);
@@ -331,12 +337,12 @@ TEST_CASE(LABKIT_STEP(L07S2) ": worked examples", "[lab07][step2]") {
   dragged.dt = 0.5;
   check::example(query::force, "gravity and both drags: (-2 - 4, 0, -20)", dragged, [](const MotionCase& in) {
     Expect e;
-    e.near("force", force(in.particle, in.forces), Vec3(-6, 0, -20), 1e-12);
+    e.near("force", answerer::force(in.particle, in.forces), Vec3(-6, 0, -20), 1e-12);
     return teach("F = m g - k1 v - k2 |v| v: gravity is an acceleration, both drags oppose the velocity", e.outcome());
   });
   check::example(query::euler_step, "with drag: the velocity loses 6 / 2 * 1/2 along x", dragged,
                  [](const MotionCase& in) {
-    const Particle one = euler_step(in.particle, in.forces, in.dt);
+    const Particle one = answerer::euler_step(in.particle, in.forces, in.dt);
     Expect e;
     e.near("position", one.position, Vec3(2, 0, 0), 1e-12);
     e.near("velocity", one.velocity, Vec3(2.5, 0, -5), 1e-12);
@@ -357,7 +363,7 @@ LaunchCase lecture_shot(Vec3 target) { return {Vec3::Zero(), target, 25, Vec3(0,
 
 auto expect_angles(int count, double radicand, double low, double high, double low_time, double high_time) {
   return [=](const LaunchCase& in) {
-    const Aim got = aim(in.from, in.target, in.speed, in.gravity);
+    const Aim got = answerer::aim(in.from, in.target, in.speed, in.gravity);
     Expect e;
     e.equal("count", got.count, count);
     e.near("radicand", got.radicand, radicand, 1e-9 * std::abs(radicand) + 1e-12);
@@ -392,7 +398,7 @@ TEST_CASE(LABKIT_STEP(L07S3) ": worked examples", "[lab07][step3]") {
       expect_angles(2, 969.30709504, 0.3393874833716999, 1.2314088434231967, 1.6967868333822653, 4.8061098626660765));
   check::example(query::aim, "the lecture's example, in degrees to 0.001: 19.445 and 70.555", lecture_shot({40, 0, 0}),
                  [](const LaunchCase& in) {
-    const Aim got = aim(in.from, in.target, in.speed, in.gravity);
+    const Aim got = answerer::aim(in.from, in.target, in.speed, in.gravity);
     Expect e;
     e.near("low, degrees to 0.001", std::round(got.low.angle / kDegree * 1000) / 1000, 19.445, 1e-9);
     e.near("high, degrees to 0.001", std::round(got.high.angle / kDegree * 1000) / 1000, 70.555, 1e-9);
@@ -423,7 +429,7 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   // The judge first: its failure says the header's rule for this case.
   const auto plane_hit = [](double t, Vec3 point) {
     return [=](const SegmentScene& in) {
-      const SurfaceHit got = hit_plane(in.segment, in.scene.planes[0]);
+      const SurfaceHit got = answerer::hit_plane(in.segment, in.scene.planes[0]);
       const Outcome judged = judge::hit_plane(in, got, Rules::exact);
       if (judged.verdict == Outcome::Verdict::fail) return judged;
       Expect e;
@@ -434,7 +440,7 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
     };
   };
   const auto plane_miss = [](const SegmentScene& in) {
-    return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]), Rules::exact);
+    return judge::hit_plane(in, answerer::hit_plane(in.segment, in.scene.planes[0]), Rules::exact);
   };
   check::example(query::hit_plane, "falling through the floor at t = 3/4", on_floor({1, 1, 3}, {1, 1, -1}),
                  plane_hit(0.75, {1, 1, 0}));
@@ -453,7 +459,7 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   resting.scene.planes = {Plane{{-1, 2, 1}, -82944.00000051658}};
   check::example(query::hit_plane, "resting on a plane within value(a)'s rounding bound, moving behind: t = 0", resting,
                  [](const SegmentScene& in) {
-    const SurfaceHit got = hit_plane(in.segment, in.scene.planes[0]);
+    const SurfaceHit got = answerer::hit_plane(in.segment, in.scene.planes[0]);
     Expect e;
     e.equal("hit", got.hit, true);
     const Outcome o = teach(
@@ -465,7 +471,7 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
 
   const auto triangle_hit = [](double t, Vec3 normal) {
     return [=](const SegmentTrianglePair& in) {
-      const SurfaceHit got = hit_triangle(in.segment, in.triangle);
+      const SurfaceHit got = answerer::hit_triangle(in.segment, in.triangle);
       Expect e;
       e.equal("hit", got.hit, true);
       e.near("t", got.t, t, 1e-12);
@@ -483,7 +489,7 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
                  SegmentTrianglePair{{{1, 1, 0}, {1, 1, -1}}, kFloorTriangle},
                  [](const SegmentTrianglePair& in) {
     Expect e;
-    e.equal("hit", hit_triangle(in.segment, in.triangle).hit, false);
+    e.equal("hit", answerer::hit_triangle(in.segment, in.triangle).hit, false);
     return teach("a step starting exactly on a triangle's plane is leaving the sheet: no hit", e.outcome());
   });
 
@@ -493,7 +499,7 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   gen::add_square(floor_and_shelf.scene.mesh, 4, 2);
   check::example(query::first_hit, "the shelf (t = 1/2) before the floor (t = 5/6)", floor_and_shelf,
                  [](const SegmentScene& in) {
-    const SurfaceHit got = first_hit(in.segment, in.scene);
+    const SurfaceHit got = answerer::first_hit(in.segment, in.scene);
     Expect e;
     e.equal("hit", got.hit, true);
     e.equal("plane", got.plane, -1);
@@ -510,7 +516,7 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   gen::add_square(tie.scene.mesh, 4, 0);
   check::example(query::first_hit, "a triangle lying on the floor: the tie goes to the plane", tie,
                  [](const SegmentScene& in) {
-    const SurfaceHit got = first_hit(in.segment, in.scene);
+    const SurfaceHit got = answerer::first_hit(in.segment, in.scene);
     Expect e;
     e.equal("hit", got.hit, true);
     e.equal("plane", got.plane, 0);
@@ -533,10 +539,10 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
 
 TEST_CASE(LABKIT_STEP(L07S4) ": random cases", "[lab07][step4][oracle]") {
   check::random_cases(query::hit_plane, gen::plane_case(), [](const SegmentScene& in) {
-    return judge::hit_plane(in, hit_plane(in.segment, in.scene.planes[0]));
+    return judge::hit_plane(in, answerer::hit_plane(in.segment, in.scene.planes[0]));
   });
   check::random_cases(query::hit_triangle, gen::sheet_case(), [](const SegmentTrianglePair& in) {
-    return judge::hit_triangle(in, hit_triangle(in.segment, in.triangle));
+    return judge::hit_triangle(in, answerer::hit_triangle(in.segment, in.triangle));
   });
   check::random_cases(query::first_hit, gen::segment_scene(), run_first_hit);
   check::random_cases(query::exact_first_hit, gen::exact_segment_scene(), run_exact_first_hit);
@@ -548,7 +554,7 @@ namespace {
 
 auto expect_impulse(std::string rule, bool closing, Vec3 normal_impulse, Vec3 friction, Vec3 velocity) {
   return [=](const ImpulseCase& in) {
-    const Impulse got = impulse(in.velocity, in.object_velocity, in.normal, in.mass, in.material);
+    const Impulse got = answerer::impulse(in.velocity, in.object_velocity, in.normal, in.mass, in.material);
     Expect e;
     e.equal("closing", got.closing, closing);
     e.near("normal_impulse", got.normal_impulse, normal_impulse, 1e-12);
@@ -670,7 +676,9 @@ TEST_CASE(LABKIT_STEP(L07S6) ": random cases", "[lab07][step6][oracle]") {
 // ---- Step 7 ----------------------------------------------------------------------------
 
 TEST_CASE(LABKIT_STEP(L07S7) ": worked examples", "[lab07][step7]") {
-  const auto settled = [](const SettleCase& in) { return judge::settle(in, settle(in.x, in.scene, in.last)); };
+  const auto settled = [](const SettleCase& in) {
+    return judge::settle(in, answerer::settle(in.x, in.scene, in.last));
+  };
   SettleCase on{};
   on.x = Vec3(1, 1, 0);
   on.scene = floor_scene(0, 0);
@@ -731,7 +739,7 @@ TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][st
   check::example(query::system, "a fountain after 10 steps: the last 3 born are alive", fountain,
                  [](const SystemCase& in) {
     System system = system_of(in);
-    for (int k = 0; k < in.steps; ++k) system.step(in.dt);
+    for (int k = 0; k < in.steps; ++k) answerer::step(system, in.dt);
     Expect e;
     e.equal("particles", int(system.particles.size()), 3);
     e.near("time", system.time, 1.0, 1e-12);
@@ -754,8 +762,8 @@ TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][st
     p.position = Vec3(0, 0, 1);
     p.velocity = Vec3(0, 0, -4);
     p.lifetime = 10;
-    system.particles = {start_verlet(p, system.forces, in.dt)};
-    system.step(in.dt);  // from z = 1 toward z = -1: hits at t = 1/2, back up to z = 1
+    system.particles = {answerer::start_verlet(p, system.forces, in.dt)};
+    answerer::step(system, in.dt);  // from z = 1 toward z = -1: hits at t = 1/2, back up to z = 1
     Expect e;
     e.equal("particles", int(system.particles.size()), 1);
     if (system.particles.size() == 1) {
@@ -765,7 +773,7 @@ TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][st
       e.near("previous", q.previous, Vec3(0, 0, -1), 1e-12);
       e.equal("bounces", q.bounces, 1);
     }
-    system.step(in.dt);
+    answerer::step(system, in.dt);
     if (system.particles.size() == 1) e.near("position after 2", system.particles[0].position, Vec3(0, 0, 3), 1e-12);
     return teach(
         "Verlet keeps its velocity in position - previous: after a bounce, previous = position - velocity dt, or "
@@ -775,8 +783,9 @@ TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][st
 }
 
 TEST_CASE(LABKIT_STEP(L07S7) ": invariants, random cases", "[lab07][step7][oracle]") {
-  check::random_cases(query::settle, gen::settle_case(),
-                      [](const SettleCase& in) { return judge::settle(in, settle(in.x, in.scene, in.last)); });
+  check::random_cases(query::settle, gen::settle_case(), [](const SettleCase& in) {
+    return judge::settle(in, answerer::settle(in.x, in.scene, in.last));
+  });
   check::random_cases(query::invariants, gen::collide_case(false), run_invariants);
   check::random_cases(query::system, gen::system_case(), run_system);
 }
@@ -794,109 +803,112 @@ TEST_CASE("L07 preconditions: invalid input is refused, naming the argument", "[
     change(e);
     return e;
   };
-  rejects("emitter.position", [&] { emit(emitter_with([&](Emitter& e) { e.position = bad; }), random); });
+  rejects("emitter.position", [&] { answerer::emit(emitter_with([&](Emitter& e) { e.position = bad; }), random); });
   rejects("emitter.half_extents",
-          [&] { emit(emitter_with([](Emitter& e) { e.half_extents = Vec3(-1, 0, 0); }), random); });
-  rejects("emitter.direction", [&] { emit(emitter_with([](Emitter& e) { e.direction = Vec3::Zero(); }), random); });
-  rejects("emitter.cone", [&] { emit(emitter_with([](Emitter& e) { e.cone = 4; }), random); });
-  rejects("emitter.speed", [&] { emit(emitter_with([](Emitter& e) { e.speed_spread = 2; }), random); });
-  rejects("emitter.lifetime", [&] { emit(emitter_with([&](Emitter& e) { e.lifetime = nan; }), random); });
-  rejects("emitter.mass", [&] { emit(emitter_with([](Emitter& e) { e.mass = 0; }), random); });
-  rejects("emitter.mass", [&] { emit(emitter_with([&](Emitter& e) { e.mass = nan; }), random); });
-  rejects("emitter.rate", [&] { births(emitter_with([](Emitter& e) { e.rate = -1; }), 0.1); });
-  rejects("emitter.owed", [&] { births(emitter_with([](Emitter& e) { e.owed = 1; }), 0.1); });
-  rejects("dt", [&] { births(Emitter{}, nan); });
-  rejects("dt", [&] { age({Particle{}}, -1); });
+          [&] { answerer::emit(emitter_with([](Emitter& e) { e.half_extents = Vec3(-1, 0, 0); }), random); });
+  rejects("emitter.direction",
+          [&] { answerer::emit(emitter_with([](Emitter& e) { e.direction = Vec3::Zero(); }), random); });
+  rejects("emitter.cone", [&] { answerer::emit(emitter_with([](Emitter& e) { e.cone = 4; }), random); });
+  rejects("emitter.speed", [&] { answerer::emit(emitter_with([](Emitter& e) { e.speed_spread = 2; }), random); });
+  rejects("emitter.lifetime", [&] { answerer::emit(emitter_with([&](Emitter& e) { e.lifetime = nan; }), random); });
+  rejects("emitter.mass", [&] { answerer::emit(emitter_with([](Emitter& e) { e.mass = 0; }), random); });
+  rejects("emitter.mass", [&] { answerer::emit(emitter_with([&](Emitter& e) { e.mass = nan; }), random); });
+  rejects("emitter.rate", [&] { answerer::births(emitter_with([](Emitter& e) { e.rate = -1; }), 0.1); });
+  rejects("emitter.owed", [&] { answerer::births(emitter_with([](Emitter& e) { e.owed = 1; }), 0.1); });
+  rejects("dt", [&] { answerer::births(Emitter{}, nan); });
+  rejects("dt", [&] { answerer::age({Particle{}}, -1); });
   Particle nan_age;
   nan_age.age = nan;
-  rejects("particles[0].age", [&] { age({nan_age}, 0.1); });
+  rejects("particles[0].age", [&] { answerer::age({nan_age}, 0.1); });
 
   // The issue's: a NaN or zero mass gave a NaN position.
   for (const double mass : {0.0, -1.0, nan}) {
     Particle p;
     p.mass = mass;
-    rejects("p.mass", [&] { force(p, Forces{}); });
-    rejects("p.mass", [&] { euler_step(p, Forces{}, 0.1); });
-    rejects("p.mass", [&] { verlet_step(p, Forces{}, 0.1); });
+    rejects("p.mass", [&] { answerer::force(p, Forces{}); });
+    rejects("p.mass", [&] { answerer::euler_step(p, Forces{}, 0.1); });
+    rejects("p.mass", [&] { answerer::verlet_step(p, Forces{}, 0.1); });
   }
   Particle lost;
   lost.position = Vec3(inf, 0, 0);
-  rejects("p.position", [&] { euler_step(lost, Forces{}, 0.1); });
-  rejects("forces.gravity", [&] { euler_step(Particle{}, Forces{bad, 0, 0}, 0.1); });
-  rejects("forces.drag", [&] { euler_step(Particle{}, Forces{Vec3::Zero(), -1, 0}, 0.1); });
-  rejects("forces.air_drag", [&] { euler_step(Particle{}, Forces{Vec3::Zero(), 0, nan}, 0.1); });
-  rejects("dt", [&] { start_verlet(Particle{}, Forces{}, 0); });
-  rejects("dt", [&] { verlet_step(Particle{}, Forces{}, nan); });
+  rejects("p.position", [&] { answerer::euler_step(lost, Forces{}, 0.1); });
+  rejects("forces.gravity", [&] { answerer::euler_step(Particle{}, Forces{bad, 0, 0}, 0.1); });
+  rejects("forces.drag", [&] { answerer::euler_step(Particle{}, Forces{Vec3::Zero(), -1, 0}, 0.1); });
+  rejects("forces.air_drag", [&] { answerer::euler_step(Particle{}, Forces{Vec3::Zero(), 0, nan}, 0.1); });
+  rejects("dt", [&] { answerer::start_verlet(Particle{}, Forces{}, 0); });
+  rejects("dt", [&] { answerer::verlet_step(Particle{}, Forces{}, nan); });
 
-  rejects("from", [&] { aim(bad, Vec3(1, 0, 0), 1, Vec3(0, 0, -1)); });
-  rejects("target", [&] { aim(Vec3::Zero(), bad, 1, Vec3(0, 0, -1)); });
-  rejects("speed", [&] { aim(Vec3::Zero(), Vec3(1, 0, 0), -1, Vec3(0, 0, -1)); });
-  rejects("speed", [&] { aim(Vec3::Zero(), Vec3(1, 0, 0), nan, Vec3(0, 0, -1)); });
-  rejects("gravity", [&] { aim(Vec3::Zero(), Vec3(1, 0, 0), 1, bad); });
+  rejects("from", [&] { answerer::aim(bad, Vec3(1, 0, 0), 1, Vec3(0, 0, -1)); });
+  rejects("target", [&] { answerer::aim(Vec3::Zero(), bad, 1, Vec3(0, 0, -1)); });
+  rejects("speed", [&] { answerer::aim(Vec3::Zero(), Vec3(1, 0, 0), -1, Vec3(0, 0, -1)); });
+  rejects("speed", [&] { answerer::aim(Vec3::Zero(), Vec3(1, 0, 0), nan, Vec3(0, 0, -1)); });
+  rejects("gravity", [&] { answerer::aim(Vec3::Zero(), Vec3(1, 0, 0), 1, bad); });
 
   const Segment down{{0, 0, 1}, {0, 0, -1}};
-  rejects("segment.a", [&] { hit_plane({bad, Vec3::Zero()}, kFloor); });
-  rejects("segment.b", [&] { hit_plane({Vec3::Zero(), Vec3(0, 0, inf)}, kFloor); });
-  rejects("plane.normal", [&] { hit_plane(down, Plane{bad, 0}); });
-  rejects("plane.offset", [&] { hit_plane(down, Plane{Vec3::UnitZ(), nan}); });
-  rejects("segment.a", [&] { hit_triangle({bad, Vec3::Zero()}, kFloorTriangle); });
-  rejects("triangle.v1", [&] { hit_triangle(down, Triangle{Vec3::Zero(), bad, Vec3::UnitY()}); });
+  rejects("segment.a", [&] { answerer::hit_plane({bad, Vec3::Zero()}, kFloor); });
+  rejects("segment.b", [&] { answerer::hit_plane({Vec3::Zero(), Vec3(0, 0, inf)}, kFloor); });
+  rejects("plane.normal", [&] { answerer::hit_plane(down, Plane{bad, 0}); });
+  rejects("plane.offset", [&] { answerer::hit_plane(down, Plane{Vec3::UnitZ(), nan}); });
+  rejects("segment.a", [&] { answerer::hit_triangle({bad, Vec3::Zero()}, kFloorTriangle); });
+  rejects("triangle.v1", [&] { answerer::hit_triangle(down, Triangle{Vec3::Zero(), bad, Vec3::UnitY()}); });
   Scene scene = floor_scene(0.5, 0);
   scene.planes.push_back(Plane{Vec3::UnitX(), nan});
-  rejects("scene.planes[1].offset", [&] { first_hit(down, scene); });
+  rejects("scene.planes[1].offset", [&] { answerer::first_hit(down, scene); });
   scene = floor_scene(0.5, 0);
   gen::add_square(scene.mesh, 4, 0);
   scene.mesh.vertices[2] = bad;
-  rejects("scene.mesh.vertices[2]", [&] { first_hit(down, scene); });
+  rejects("scene.mesh.vertices[2]", [&] { answerer::first_hit(down, scene); });
   scene = floor_scene(0.5, 0);
   gen::add_square(scene.mesh, 4, 0);
   scene.mesh.triangles[1][2] = 4;
-  rejects("scene.mesh.triangles[1]", [&] { first_hit(down, scene); });
-  rejects("segment.a", [&] { first_hit({bad, Vec3::Zero()}, floor_scene(0.5, 0)); });
+  rejects("scene.mesh.triangles[1]", [&] { answerer::first_hit(down, scene); });
+  rejects("segment.a", [&] { answerer::first_hit({bad, Vec3::Zero()}, floor_scene(0.5, 0)); });
 
   const Vec3 up(0, 0, 1), v(3, 0, -4);
-  rejects("velocity", [&] { impulse(bad, Vec3::Zero(), up, 1, {0.5, 0}); });
-  rejects("object_velocity", [&] { impulse(v, bad, up, 1, {0.5, 0}); });
-  rejects("normal", [&] { impulse(v, Vec3::Zero(), Vec3(0, 0, 2), 1, {0.5, 0}); });
-  rejects("normal", [&] { impulse(v, Vec3::Zero(), Vec3::Zero(), 1, {0.5, 0}); });
-  rejects("mass", [&] { impulse(v, Vec3::Zero(), up, 0, {0.5, 0}); });
-  rejects("mass", [&] { impulse(v, Vec3::Zero(), up, nan, {0.5, 0}); });
-  rejects("material.restitution", [&] { impulse(v, Vec3::Zero(), up, 1, {-0.5, 0}); });
-  rejects("material.friction", [&] { impulse(v, Vec3::Zero(), up, 1, {0.5, nan}); });
+  rejects("velocity", [&] { answerer::impulse(bad, Vec3::Zero(), up, 1, {0.5, 0}); });
+  rejects("object_velocity", [&] { answerer::impulse(v, bad, up, 1, {0.5, 0}); });
+  rejects("normal", [&] { answerer::impulse(v, Vec3::Zero(), Vec3(0, 0, 2), 1, {0.5, 0}); });
+  rejects("normal", [&] { answerer::impulse(v, Vec3::Zero(), Vec3::Zero(), 1, {0.5, 0}); });
+  rejects("mass", [&] { answerer::impulse(v, Vec3::Zero(), up, 0, {0.5, 0}); });
+  rejects("mass", [&] { answerer::impulse(v, Vec3::Zero(), up, nan, {0.5, 0}); });
+  rejects("material.restitution", [&] { answerer::impulse(v, Vec3::Zero(), up, 1, {-0.5, 0}); });
+  rejects("material.friction", [&] { answerer::impulse(v, Vec3::Zero(), up, 1, {0.5, nan}); });
 
-  rejects("step.a", [&] { collide({bad, Vec3::Zero()}, v, 1, 1, floor_scene(1, 0)); });
-  rejects("velocity", [&] { collide(down, bad, 1, 1, floor_scene(1, 0)); });
-  rejects("mass", [&] { collide(down, v, 0, 1, floor_scene(1, 0)); });
-  rejects("mass", [&] { collide(down, v, nan, 1, floor_scene(1, 0)); });
-  rejects("dt", [&] { collide(down, v, 1, 0, floor_scene(1, 0)); });
+  rejects("step.a", [&] { answerer::collide({bad, Vec3::Zero()}, v, 1, 1, floor_scene(1, 0)); });
+  rejects("velocity", [&] { answerer::collide(down, bad, 1, 1, floor_scene(1, 0)); });
+  rejects("mass", [&] { answerer::collide(down, v, 0, 1, floor_scene(1, 0)); });
+  rejects("mass", [&] { answerer::collide(down, v, nan, 1, floor_scene(1, 0)); });
+  rejects("dt", [&] { answerer::collide(down, v, 1, 0, floor_scene(1, 0)); });
   scene = floor_scene(1, 0);
   scene.velocity = bad;
-  rejects("scene.velocity", [&] { collide(down, v, 1, 1, scene); });
-  rejects("scene.bounce_cap", [&] { collide(down, v, 1, 1, floor_scene(1, 0, kMaxBounceCap + 1)); });
-  rejects("scene.bounce_cap", [&] { collide(down, v, 1, 1, floor_scene(1, 0, -1)); });
-  rejects("material.restitution", [&] { collide(down, v, 1, 1, floor_scene(nan, 0)); });
+  rejects("scene.velocity", [&] { answerer::collide(down, v, 1, 1, scene); });
+  rejects("scene.bounce_cap", [&] { answerer::collide(down, v, 1, 1, floor_scene(1, 0, kMaxBounceCap + 1)); });
+  rejects("scene.bounce_cap", [&] { answerer::collide(down, v, 1, 1, floor_scene(1, 0, -1)); });
+  rejects("material.restitution", [&] { answerer::collide(down, v, 1, 1, floor_scene(nan, 0)); });
 
   const SurfaceHit floor_hit{true, 0, -1, 0.5, Vec3::Zero(), up};
-  rejects("x", [&] { settle(bad, floor_scene(0, 0), floor_hit); });
-  rejects("last", [&] { settle(Vec3::Zero(), floor_scene(0, 0), SurfaceHit{true, 3, -1, 0.5, Vec3::Zero(), up}); });
+  rejects("x", [&] { answerer::settle(bad, floor_scene(0, 0), floor_hit); });
+  rejects("last", [&] {
+    answerer::settle(Vec3::Zero(), floor_scene(0, 0), SurfaceHit{true, 3, -1, 0.5, Vec3::Zero(), up});
+  });
   rejects("last.normal", [&] {
-    settle(Vec3::Zero(), floor_scene(0, 0), SurfaceHit{true, 0, -1, 0.5, Vec3::Zero(), bad});
+    answerer::settle(Vec3::Zero(), floor_scene(0, 0), SurfaceHit{true, 0, -1, 0.5, Vec3::Zero(), bad});
   });
 
   System system;
-  rejects("dt", [&] { system.step(0); });
+  rejects("dt", [&] { answerer::step(system, 0); });
   system.particles = {Particle{}};
   system.particles[0].mass = 0;
-  rejects("particles[0].mass", [&] { system.step(0.1); });
+  rejects("particles[0].mass", [&] { answerer::step(system, 0.1); });
   system.particles[0].mass = 1;
   system.emitter.mass = nan;
-  rejects("emitter.mass", [&] { system.step(0.1); });
+  rejects("emitter.mass", [&] { answerer::step(system, 0.1); });
   system.emitter.mass = 1;
   system.scene.planes = {Plane{bad, 0}};
-  rejects("scene.planes[0].normal", [&] { system.step(0.1); });
+  rejects("scene.planes[0].normal", [&] { answerer::step(system, 0.1); });
 
   // Documented results, not errors: zero speed or gravity (count 0), a zero normal (no hit).
-  CHECK(aim(Vec3::Zero(), Vec3(1, 0, 0), 0, Vec3(0, 0, -1)).count == 0);
-  CHECK(aim(Vec3::Zero(), Vec3(1, 0, 0), 1, Vec3::Zero()).count == 0);
-  CHECK(!hit_plane(down, Plane{Vec3::Zero(), 0}).hit);
+  CHECK(answerer::aim(Vec3::Zero(), Vec3(1, 0, 0), 0, Vec3(0, 0, -1)).count == 0);
+  CHECK(answerer::aim(Vec3::Zero(), Vec3(1, 0, 0), 1, Vec3::Zero()).count == 0);
+  CHECK(!answerer::hit_plane(down, Plane{Vec3::Zero(), 0}).hit);
 }

@@ -7,6 +7,7 @@
 #include "particles.h"
 
 #include "common/fields.h"
+#include "common/protocol/calls.h"
 #include "common/protocol/wire.h"
 
 #include <vector>
@@ -71,3 +72,6 @@ template <> struct labkit::wire::Codec<labkit::lab07::MeshQuery> {
   CALL(Vec3, settle, (const Vec3&, const Scene&, const SurfaceHit&))                                    \
   METHOD(System, step, (double))
 // clang-format on
+
+// The judge's process calls the code under test only as answerer::name(...) (calls.h).
+LABKIT_ANSWERER_CALLS(lab07, LABKIT_LAB07_CALLS)

@@ -1,5 +1,6 @@
 #include "common/harness/check.h"
 #include "common/harness/report.h"
+#include "common/protocol/fiber.h"
 #include "common/splitmix.h"
 #include "common/text.h"
 
@@ -140,28 +141,40 @@ Outcome kit_error(QueryReport& report, const std::string& what) {
 }
 
 void judge_items(const std::vector<Item>& items, std::size_t begin, std::size_t end, std::vector<Outcome>& outcomes) {
-  constexpr int kRounds = 32;
-  std::vector<std::size_t> todo;
-  for (std::size_t i = begin; i < end; ++i) todo.push_back(i);
-  // Each case's replay token, made once: a crash of the judge's process names its case.
-  std::vector<std::string> tokens(end - begin);
+  // Fibers alive at once: each holds a stack (fiber.h) until its judge returns.
+  constexpr std::size_t kAlive = 64;
   remote::begin_batch();
-  for (int round = 0; !todo.empty(); ++round) {
-    if (round == kRounds) remote::stop_deferring();  // the rest, one call at a time
-    std::vector<std::size_t> deferred;
-    for (std::size_t i : todo) {
-      std::string& token = tokens[i - begin];
-      if (token.empty()) token = items[i].token();
-      set_inflight(token);
-      try {
-        outcomes[i] = items[i].judge();
-      } catch (const remote::Deferred&) {
-        deferred.push_back(i);
-      }
+  for (std::size_t first = begin; first < end; first += kAlive) {
+    struct Case {
+      std::size_t index;
+      std::string token;  // its replay token: a crash of the judge's process names its case
+      std::unique_ptr<remote::Fiber> fiber;
+    };
+    std::vector<Case> waiting;
+    const auto run = [&](Case& c) {
+      set_inflight(c.token);
+      const bool done = c.fiber->resume();
       clear_inflight();
+      return done;
+    };
+    for (std::size_t i = first; i < std::min(end, first + kAlive); ++i) {
+      Case c{i, items[i].token(),
+             std::make_unique<remote::Fiber>([&items, &outcomes, i] { outcomes[i] = items[i].judge(); })};
+      if (!run(c)) waiting.push_back(std::move(c));
     }
-    todo = std::move(deferred);
-    if (!todo.empty()) remote::flush();
+    while (!waiting.empty()) {
+      try {
+        remote::flush();
+      } catch (...) {
+        remote::end_batch();  // each waiting call now ends with a kit error, its judge's frames unwound
+        for (Case& c : waiting) run(c);
+        throw;
+      }
+      std::vector<Case> still;
+      for (Case& c : waiting)
+        if (!run(c)) still.push_back(std::move(c));
+      waiting = std::move(still);
+    }
   }
   remote::end_batch();
 }

@@ -191,15 +191,13 @@ inline std::string with_rule(const std::string& query, const std::string& what) 
 }
 
 // Runs the judge, turning stubs, what the code under test threw and calls that got no
-// answer (a crash or a time-out in the answerer's process) into outcomes. A deferred call
-// (a batch is being gathered) goes through to random_cases. Anything else thrown is the
-// kit's own failure, never the student's: the query's report says so (kit_error).
+// answer (a crash or a time-out in the answerer's process) into outcomes. Anything else
+// thrown is the kit's own failure, never the student's: the query's report says so
+// (kit_error).
 template <class Input, class Judge> Outcome run_judge(Judge& judge, const Input& input, QueryReport& report) {
   try {
     const Judging judging;
     return judge(input);
-  } catch (const remote::Deferred&) {
-    throw;
   } catch (const remote::Failed& e) {
     return fail("an answer", e.got, with_rule(report.query, e.what()));
   } catch (const NotImplemented& e) {
@@ -266,9 +264,10 @@ struct Item {
 };
 
 // Judges items[begin, end) into outcomes[begin, end), gathering the code under test's
-// calls into batches (common/protocol/answerer.h): each round runs the judges, those
-// whose call is not answered yet defer, and one flush answers them all at once. A judge
-// that makes several dependent calls takes a round per call.
+// calls into batches (common/protocol/answerer.h): each case's judge runs as a fiber
+// (common/protocol/fiber.h) that waits at its call; one flush answers every waiting call
+// at once, and each fiber goes on from where it waited. A judge that makes several
+// dependent calls waits once per call; none runs twice.
 void judge_items(const std::vector<Item>& items, std::size_t begin, std::size_t end, std::vector<Outcome>& outcomes);
 
 // Graded runs: a worked example waits for its query's random cases, and is judged in

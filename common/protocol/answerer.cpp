@@ -1,4 +1,5 @@
 #include "common/protocol/answerer.h"
+#include "common/protocol/fiber.h"
 #include "common/protocol/report.h"
 
 #include <nlohmann/json.hpp>
@@ -104,7 +105,7 @@ std::string signal_words(int s) {
 
 // The batch, shared by every call of the process.
 struct Batch {
-  bool deferring = false;
+  bool gathering = false;   // between begin_batch() and end_batch()
   int default_answers = 0;  // DefaultAnswers scopes open
   int examples = 0;         // RecordingExample scopes open
   std::vector<std::string> pending;
@@ -394,10 +395,16 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
 }
 
 const Response& Answerer::ask(const std::string& request) {
-  if (const auto it = batch.answers.find(request); it != batch.answers.end()) return it->second;
-  if (batch.deferring) {
-    batch.pending.push_back(request);
-    throw Deferred{};
+  if (batch.gathering && Fiber::inside()) {
+    auto it = batch.answers.find(request);
+    if (it == batch.answers.end()) {
+      batch.pending.push_back(request);
+      Fiber::wait();  // until flush() has the answer
+      it = batch.answers.find(request);
+      if (it == batch.answers.end())
+        throw std::runtime_error("kit error: the batch that held this call ended without its answer");
+    }
+    return it->second;
   }
   last_ = std::move(exchange({request}).front());
   return last_;
@@ -446,7 +453,7 @@ void note_request(const std::string& request) {
 }
 
 void begin_batch() {
-  batch.deferring = true;
+  batch.gathering = true;
   batch.pending.clear();
 }
 
@@ -456,13 +463,9 @@ bool flush() {
   return true;
 }
 
-void stop_deferring() {
-  batch.deferring = false;
-  batch.pending.clear();
-}
-
 void end_batch() {
-  stop_deferring();
+  batch.gathering = false;
+  batch.pending.clear();
   batch.answers.clear();
 }
 

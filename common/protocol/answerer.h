@@ -4,10 +4,10 @@
 // else: whatever the student's file does (declares names, reads its own binary, scans
 // memory, crashes, loops), it can only answer, never judge.
 //
-//   judge's process                              answerer (student's code)
-//   lab02::segment_plane(s, t)  --- request --->  serve(): decode, call the real
-//     (common/protocol/lab_calls.cpp)             segment_plane, encode the answer
-//   answer, or remote::Failed  <--- response ---  (common/protocol/lab_answerer.cpp)
+//   judge's process                                answerer (student's code)
+//   answerer::segment_plane(s, t)  --- request --->  serve(): decode, call the real
+//     (common/protocol/lab_calls.cpp)                segment_plane, encode the answer
+//   answer, or remote::Failed     <--- response ---  (common/protocol/lab_answerer.cpp)
 //
 // Requests travel on the answerer's file descriptor 3 and answers on 4, each framed as
 // an 8-byte length and the bytes (common/protocol/wire.h). What the answerer prints goes
@@ -20,12 +20,13 @@
 // ahead of any request not yet begun; the answerer keeps the requests that arrive
 // meanwhile). common/given/served.h has the picture.
 //
-// Batches: the harness asks for thousands of random cases at a time. Between
-// begin_batch() and end_batch(), a call whose answer is not known yet is recorded and
-// throws Deferred; flush() sends every recorded call at once (the answers stream back
-// in order, with no round trip per call) and keeps the answers, and the harness runs
-// the deferred judges again. A crash or a time-out costs the one call it happened on:
-// that call's answer says so, the answerer is started again, and the rest go on.
+// Batches: the harness asks for thousands of random cases at a time, each case's judge
+// running as a fiber of its own (fiber.h). Between begin_batch() and end_batch(), a call
+// from a fiber whose answer is not known yet is recorded and the fiber waits; flush()
+// sends every recorded call at once (the answers stream back in order, with no round
+// trip per call) and keeps the answers, and the harness resumes the waiting fibers, each
+// inside its call. A crash or a time-out costs the one call it happened on: that call's
+// answer says so, the answerer is started again, and the rest go on.
 #pragma once
 
 #include "common/given/served.h"
@@ -91,19 +92,15 @@ struct Rejected : std::invalid_argument {
 // frame is that call's failure, refused before anything is allocated for it.
 std::size_t largest_answer(std::size_t request_bytes);
 
-// Thrown while batching when a call's answer is not known yet. Not a std::exception, so
-// that no judge's own catch of std::exception swallows it.
-struct Deferred {};
-
 class Answerer {
  public:
   // The one answerer of this process, run as LABKIT_ANSWERER says: a program's path, or
   // a JSON array of a command line (the grader's confinement around the program).
   static Answerer& instance();
 
-  // The answer to one call: known from a batch, or asked now (or, while deferring,
-  // recorded for the next flush: then it throws Deferred).
-  // The reference stays valid until the batch ends or the next call.
+  // The answer to one call: asked now, or, from a fiber in a batch, recorded for the next
+  // flush while the fiber waits (fiber.h). The reference stays valid until the batch ends
+  // or the next call.
   const Response& ask(const std::string& request);
   // Sends the recorded calls at once and keeps their answers.
   void flush();
@@ -132,11 +129,10 @@ class Answerer {
 };
 
 // Batches, for the harness; they cost nothing in a process that never calls the answerer.
-void begin_batch();     // calls whose answer is not known yet are recorded, and defer
-bool flush();           // sends them (false: there were none) and keeps the answers
-void stop_deferring();  // calls not known yet are asked one by one again
-void end_batch();       // forgets the answers
-void new_query();       // a new query: the time-out budget starts afresh
+void begin_batch();  // a fiber's call whose answer is not known yet is recorded, and waits
+bool flush();        // sends them (false: there were none) and keeps the answers
+void end_batch();    // forgets the answers
+void new_query();    // a new query: the time-out budget starts afresh
 
 // Graded runs score a case only where an answer that does nothing would fail it
 // (README, "Scoring"): the judge runs each case again inside this scope, where every call

@@ -5,15 +5,17 @@
 #include <cstdint>
 #include <cstring>
 #include <typeinfo>
+#include <utility>
 
 namespace labkit::remote {
 
 namespace {
-std::vector<double>* sink = nullptr;  // for the next answer's samples
+std::vector<double>* sink = nullptr;  // named by the argument being encoded
 given::Served last;                   // what the last call made the judge serve
 }  // namespace
 
 void sample_into(std::vector<double>* into) { sink = into; }
+std::vector<double>* take_sample_sink() { return std::exchange(sink, nullptr); }
 const given::Served& last_served() { return last; }
 void detail::set_last_served(const given::Served* served) { last = served ? *served : given::Served{}; }
 
@@ -40,12 +42,7 @@ wire::Reader open_reply(const std::string& id, const Response& response) {
   std::string message;
   try {
     wire::get(r, status);
-    if (status == Status::answered) {
-      const std::vector<double>& recorded = response.served.samples;
-      if (sink) sink->insert(sink->end(), recorded.begin(), recorded.end());
-      sink = nullptr;
-      return r;
-    }
+    if (status == Status::answered) return r;
     wire::get(r, message);
   } catch (const wire::Error& e) {
     throw Failed("an answer that cannot be read",

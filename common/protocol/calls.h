@@ -6,7 +6,8 @@
 //     CALL(PlaneCrossing, segment_plane, (const Segment&, const Triangle&)) ...
 //
 // From that one list, common/protocol/lab_calls.cpp defines each function for the
-// judge's process (it sends the call and returns the answer) and
+// judge's process as labkit::lab02::answerer::segment_plane (it sends the call and
+// returns the answer; see LABKIT_ANSWERER_CALLS below) and
 // common/protocol/lab_answerer.cpp builds the answerer's table (it receives the call
 // and runs the student's function). A non-const reference argument (lab 07's Random&)
 // travels both ways: its new value comes back with the answer. METHOD(Class, name,
@@ -53,10 +54,12 @@ constexpr bool is_out = std::is_lvalue_reference_v<P> && !std::is_const_v<std::r
 
 // ---- What a call did besides answering -------------------------------------------------
 // The given functions the code under test called during the call are served and counted
-// in the judge's process (common/given/served.h): call_served() returns them with the
+// in the judge's process (common/given/served.h): last_served() returns them after the
 // answer. Lab 04's RecordingMotion asks for its poses that way too; the times it was
-// asked for go into `sink` (set while the recording argument is sent).
+// asked for go into `sink`, which its argument's encoding names (take_sample_sink()
+// hands it to the call being sent).
 void sample_into(std::vector<double>* sink);
+std::vector<double>* take_sample_sink();
 
 // ---- The judge's side: send the call, return the answer ------------------------------
 
@@ -89,11 +92,14 @@ template <class R, class... P> R call(const char* id, P... args) {
   }
   wire::Writer w;
   wire::put(w, std::string(id));
+  take_sample_sink();  // none left over from a call whose encoding failed
   (wire::put(w, args), ...);
+  std::vector<double>* samples = take_sample_sink();  // this call's own: other cases' calls wait beside it
   note_request(w.bytes());
   const Response& response = Answerer::instance().ask(w.bytes());
   wire::Reader r = detail::open_reply(id, response);
   detail::set_last_served(&response.served);
+  if (samples) samples->insert(samples->end(), response.served.samples.begin(), response.served.samples.end());
   try {
     if constexpr (std::is_void_v<R>) {
       (get_out<P>(r, args), ...);
@@ -141,18 +147,31 @@ int serve(const Table& table, bool given_served);
 
 }  // namespace labkit::remote
 
-// ---- The two expansions of a lab's list -----------------------------------------------
+// ---- The expansions of a lab's list ----------------------------------------------------
 
 #define LABKIT_CALL_ID(R, name, params) #name #params
 
-// In the judge's process: the function, defined as a call to the answerer.
+// In the judge's process, the functions it calls across the boundary, in the lab's
+// namespace `answerer`: a test reads `answerer::segment_plane(s, t)`, a call that goes
+// to the answerer's process and returns its answer. A member function is called with
+// its object first: answerer::step(system, dt) runs system.step(dt) there and brings the
+// system back. The test program does not define the lab's own functions at all, so a
+// call that does not say `answerer::` fails to link.
+#define LABKIT_DECLARE_CALL(R, name, params) R name(LABKIT_UNPAREN params);
+#define LABKIT_DECLARE_METHOD(Class, name, params) void name(Class&, LABKIT_UNPAREN params);
+#define LABKIT_ANSWERER_CALLS(lab, CALLS)           \
+  namespace labkit::lab::answerer {                 \
+  CALLS(LABKIT_DECLARE_CALL, LABKIT_DECLARE_METHOD) \
+  }
+
+// Their definitions (common/protocol/lab_calls.cpp): each sends its call and returns the answer.
 #define LABKIT_DEFINE_CALL(R, name, params)                                                                       \
   R name(LABKIT_NAMED params) {                                                                                   \
     return ::labkit::remote::call<R, LABKIT_UNPAREN params>(LABKIT_CALL_ID(R, name, params), LABKIT_ARGS params); \
   }
-#define LABKIT_DEFINE_METHOD(Class, name, params)                                                                      \
-  void Class::name(LABKIT_NAMED params) {                                                                              \
-    ::labkit::remote::call<void, Class&, LABKIT_UNPAREN params>(#Class "::" #name #params, *this, LABKIT_ARGS params); \
+#define LABKIT_DEFINE_METHOD(Class, name, params)                                                                     \
+  void name(Class& self, LABKIT_NAMED params) {                                                                       \
+    ::labkit::remote::call<void, Class&, LABKIT_UNPAREN params>(#Class "::" #name #params, self, LABKIT_ARGS params); \
   }
 
 // In the answerer: the table entry that runs the student's function.

@@ -1,16 +1,22 @@
-// The harness's own guarantees: exact replay tokens, clear errors on bad tokens, and
-// the ambiguity test on cases whose answer is known.
+// The harness's own guarantees: exact replay tokens, clear errors on bad tokens, the
+// ambiguity test on cases whose answer is known, the given calls' ledger and the fibers
+// that batch the judges' calls.
 #include "common/generators/generators.h"
 #include "common/given/segment_triangle.h"
 #include "common/given/served.h"
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
+#include "common/protocol/fiber.h"
 #include "common/protocol/report.h"
 
 #include "common/harness/catch.h"
 
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -188,4 +194,63 @@ TEST_CASE("the judge counts given calls per answer and per part, and refuses for
   given::Served unread;  // a served call the judge does not serve: refused, an empty reply
   CHECK(given::take_frame(given::kServedFrame, counted_frame("no_such_pose"), unread, reply));
   CHECK_FALSE(unread.problem.empty());
+}
+
+TEST_CASE("a judge's fiber waits at its call and goes on from there, once", "[kit]") {
+  using remote::Fiber;
+  CHECK_FALSE(Fiber::inside());
+  std::vector<std::string> log;
+  Fiber a([&] {
+    log.push_back("a before its call");  // a side effect before the call happens once
+    Fiber::wait();
+    log.push_back("a after its call");
+  });
+  Fiber b([&] {
+    CHECK(Fiber::inside());
+    log.push_back("b before");
+    Fiber::wait();
+    Fiber::wait();  // a second, dependent call
+    log.push_back("b after");
+  });
+  CHECK_FALSE(a.resume());
+  CHECK_FALSE(b.resume());
+  CHECK(a.resume());
+  CHECK_FALSE(b.resume());
+  CHECK(b.resume());
+  CHECK(a.resume());  // done stays done
+  CHECK(log == std::vector<std::string>{"a before its call", "b before", "a after its call", "b after"});
+
+  Fiber thrower([] {
+    Fiber::wait();
+    throw std::runtime_error("from the judge");
+  });
+  CHECK_FALSE(thrower.resume());
+  CHECK_THROWS_WITH(thrower.resume(), "from the judge");
+}
+
+TEST_CASE("fibers that wait inside catch blocks each keep their own exception", "[kit]") {
+  using remote::Fiber;
+  std::vector<std::string> seen;
+  const auto judge = [&seen](std::string name) {
+    return [&seen, name] {
+      try {
+        throw std::runtime_error(name);
+      } catch (const std::exception&) {
+        Fiber::wait();  // a call made from a catch block (a judge's second try)
+        try {
+          throw;  // the exception this fiber is handling, not the other's
+        } catch (const std::exception& again) {
+          seen.push_back(again.what());
+        }
+      }
+      seen.push_back(std::uncaught_exceptions() == 0 ? "clean" : "left over");
+    };
+  };
+  Fiber one(judge("one")), two(judge("two"));
+  CHECK_FALSE(one.resume());
+  CHECK_FALSE(two.resume());
+  CHECK(one.resume());
+  CHECK(two.resume());
+  CHECK(seen == std::vector<std::string>{"one", "clean", "two", "clean"});
+  CHECK_FALSE(std::current_exception());
 }
