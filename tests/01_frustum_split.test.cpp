@@ -18,7 +18,7 @@ namespace {
 
 const double kHalfRoot2 = std::sqrt(0.5);
 
-// The handout's plane z = 0, its normal pointing up: "in" is z >= 0.
+// The handout's plane z = 0, its normal pointing up: the kept side is z >= 0.
 const Plane kFloor{{0, 0, 1}, 0};
 
 // The handout's camera: at the origin, looking down -z, 90 degrees, square, near 1, far 3.

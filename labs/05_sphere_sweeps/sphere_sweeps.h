@@ -51,8 +51,10 @@
 //    rectangle).
 //  - Yes/no answers (tests, and a sweep's status) must equal the exact answer, except on
 //    ambiguous input: input whose answer could change if every length moved by tol and
-//    every direction by 1e-9 (a distance within 20 tol of r0 + r1, say). There either
-//    answer passes, and the case is counted apart.
+//    every direction by 1e-9. The checker bounds that change: a test is ambiguous when
+//    its distance is within 20 tol of r0 + r1, a sweep when its gap at t = 0 or its
+//    smallest gap over [0, T] is within 24 tol of zero (the motion and the duration move
+//    the shapes too). There either answer passes, and the case is counted apart.
 //  - A reported time of first contact t is certified exactly, never compared with another
 //    rounded root: at t the gap (distance minus r0 + r1, or for a box its gap to the
 //    plane) is at most tol, and at no time in [0, t] is it below -tol. So a time is as

@@ -18,8 +18,9 @@
 // degenerate input.
 //
 // The primitive is given. Whether a segment hits a triangle is decided by the watertight
-// test labkit::given::segment_triangle (common/given/segment_triangle.h), here and in
-// the reference: you write the trees, their traversal and the broad phase, not the
+// test labkit::given::segment_triangle (common/given/segment_triangle.h), here and in the
+// reference ("watertight": a segment through an edge or a vertex that triangles share hits
+// at least one of them). You write the trees, their traversal and the broad phase, not the
 // primitive. Its rules are this lab's rules for a hit: the triangle is closed (edges and
 // vertices count), but a segment lying in the triangle's plane, a zero-length segment
 // and a zero-area triangle never hit. Mind the difference with lab 02's contract, where

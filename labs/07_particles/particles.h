@@ -35,8 +35,9 @@
 // is decided with value(a)'s rounding bound (step 7's plane bound): a computed value(a)
 // within its bound of 0 counts as 0, because a particle resting on a plane (a bounce's
 // settled point) can compute n . a + c a hair below zero; it must still hit the plane it
-// moves behind. Only b's side is exact. A segment hits a triangle when a is strictly off the triangle's plane and
-// the segment meets the closed triangle (edges and vertices count; use the given watertight
+// moves behind. b's side is the sign of its computed value(b), with no bound. A segment
+// hits a triangle when a is strictly off the triangle's plane and the segment meets the
+// closed triangle (edges and vertices count; use the given watertight
 // labkit::given::segment_triangle); a particle starting on the triangle's plane is leaving
 // it and never hits it. A plane with a zero normal and a zero-area triangle are never hit.
 // The first hit is the one with the smallest t; on a tie, planes before triangles, then the
@@ -334,7 +335,8 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
 // value >= error is certainly not behind, value > error certainly in front; anything
 // else is in doubt. Then push: by the worst deficit (how far behind, if behind) plus a
 // skin that doubles each round, starting at 4 times the largest error (as a distance:
-// divided by |n|) plus 2^-50 |x|_inf (a few ulps: less would not move x at all), along
+// divided by |n|) plus 2^-50 |x|_inf (a few units in the last place of x's largest
+// coordinate: less would not move x at all), along
 // a direction d that moves away from
 // every surface found in doubt so far in this call (unit normals n_i, the facing normal
 // for the last surface), scaled so that n_i . d >= 1 for all, until nothing is in doubt.

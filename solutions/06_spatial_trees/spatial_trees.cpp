@@ -68,7 +68,7 @@ void require_segment(const char* query, const Segment& s) {
 // (besides the depth limit), so a cell becomes a leaf exactly when splitting it no longer
 // pays. The costs are in units of one segment-triangle test. A step down the tree costs
 // less than a test in instructions, but on a large mesh each step reads a node that is
-// rarely in the cache, about as slow as a test: hence 1, not the textbook 0.3. A split
+// rarely in the cache, slower than a test: hence 3, not the textbook 0.3. A split
 // that leaves one side empty cuts away empty space, which lets a query skip it at once,
 // and gets a bonus.
 constexpr double kTraversalCost = 3.0;

@@ -95,5 +95,24 @@ for page in "$root"/handouts/*.md "$root"/handouts/hints/*.md; do
   done < <(grep -o '](\([^)#]*\)' "$page" | sed 's/^](//' | grep -v -e '^http' -e '^$' | sort -u)
 done
 
+echo "--- 7. numbers a handout quotes from the code: the header, the handout and the code agree"
+# The value a judge or the reference uses, then each text that must quote it.
+pin() {  # pin NAME VALUE FILE PATTERN...: each FILE holds PATTERN with VALUE in place of @
+  local name=$1 value=$2; shift 2
+  [ -n "$value" ] || { fail "$name: its value is not found in the code"; return; }
+  while [ $# -gt 0 ]; do
+    grep -qF -- "${2//@/$value}" "$root/$1" || fail "$1 does not say '${2//@/$value}' ($name is $value in the code)"
+    shift 2
+  done
+}
+constant() { sed -n "s/.*constexpr double $2 = \([0-9]*\)\.0;.*/\1/p" "$root/$1" | head -1; }
+pin "lab 05's ambiguity band for tests" "$(constant tests/05_sphere_sweeps.judge.cpp kTestDoubt)" \
+  labs/05_sphere_sweeps/sphere_sweeps.h "within @ tol of r0 + r1" handouts/05_sphere_sweeps.md "\`@ tol\` (tests)"
+pin "lab 05's ambiguity band for sweeps" "$(constant tests/05_sphere_sweeps.judge.sweeps.cpp kSweepDoubt)" \
+  labs/05_sphere_sweeps/sphere_sweeps.h "within @ tol of zero" handouts/05_sphere_sweeps.md "\`@ tol\` (sweeps)"
+pin "lab 06's traversal cost" "$(constant solutions/06_spatial_trees/spatial_trees.cpp kTraversalCost)" \
+  handouts/06_spatial_trees.md "\`C_trav = @\`" handouts/hints/06_spatial_trees.md "\`C_trav = @\`" \
+  solutions/06_spatial_trees/spatial_trees.cpp "hence @,"
+
 [ $failures -eq 0 ] && echo "all runner checks passed"
 exit $((failures > 0))
