@@ -609,6 +609,13 @@ TEST_CASE(LABKIT_STEP(L02S8) ": random exact degenerate cases", "[lab02][step8][
     if (o.verdict == Outcome::Verdict::fail) return o;
     return judge::first_hit(in, answerer::first_hit(in.segment, in.mesh), Rules::exact);
   });
+  // The thinnest needles, crossed steeply near their long edge: many yes/no answers are in
+  // doubt there, but t, the point and the weights are checked all the same.
+  check::random_cases(query::needle_find_segment_triangle, gen::needle_crossed_steeply(),
+                      [](const SegmentTrianglePair& in) {
+    const Outcome o = run_find(in);
+    return o.verdict == Outcome::Verdict::fail ? o : run_test(in);
+  });
 }
 
 // ---- Preconditions: the reference rejects invalid input (not graded) -------------------

@@ -175,6 +175,44 @@ rc::Gen<Triangle> any_triangle(double s) {
   return rc::gen::weightedOneOf<Triangle>({{3, triangle(s)}, {1, needle(s)}});
 }
 
+// A needle crossed by a short, steep segment near its long edge: 64 to 2048 tol inside
+// or outside it (nearer is within the checker's band of doubt), or anywhere across its
+// height. Where along the segment the crossing is, and weights that rebuild it within
+// tol, need the needle's plane to full precision: rounded in plain doubles its normal is
+// off by the aspect ratio times 1e-16, and the crossing a few tol off the plane.
+rc::Gen<SegmentTrianglePair> needle_crossed_steeply() {
+  return rc::gen::exec([] {
+    const double s = *wide_scale();
+    // The thinnest: aspect ratios 2^24 and up. A crossing inside the very thinnest is
+    // within the checker's band of doubt (either yes/no passes), but its t and weights
+    // are still checked.
+    const Triangle t = *rc::gen::suchThat(
+        needle(s), [](const Triangle& n) { return std::pow(size_of(n), 2) >= std::ldexp(n.normal().norm(), 24); });
+    int i = 0;  // the long edge runs from t[i] to t[i + 1]
+    for (int k = 1; k < 3; ++k)
+      if ((t[(k + 1) % 3] - t[k]).squaredNorm() > (t[(i + 1) % 3] - t[i]).squaredNorm()) i = k;
+    const Vec3 from = t[i], edge = t[(i + 1) % 3] - from, n = t.normal();
+    const Vec3 across = n.cross(edge).normalized();  // into the triangle
+    const double height = n.norm() / edge.norm();
+    const double tol = 1e-9 * scale_of({t.v0, t.v1, t.v2});
+    const double shift = *rc::gen::element(0, 1) ? sign() * std::ldexp(1.0, *rc::gen::inRange(6, 12)) * tol
+                                                 : std::ldexp(*rc::gen::inRange(1, 1024), -10) * height;
+    const Vec3 x = from + std::ldexp(*rc::gen::inRange(16, 1009), -10) * edge + shift * across;
+    // Steep: along the normal, tilted by at most a quarter; as short as the needle is
+    // thin (4 to 4096 tol), or longer, up to S.
+    const Vec3 tilt = *point(1.0) / 64.0;
+    const int length = *rc::gen::element(0, 1) ? *rc::gen::inRange(2, 13) : *rc::gen::inRange(13, 31);
+    const Vec3 d =
+        (n.normalized() + tilt - tilt.dot(n) / n.squaredNorm() * n).normalized() * (std::ldexp(1.0, length) * tol);
+    const double before = std::ldexp(*rc::gen::inRange(1, 16), -4);  // the share of d before x
+    // Centred on the long edge, so that tol (1e-9 of the largest coordinate) is as small
+    // beside the needle as it gets: there its plane's rounding matters most.
+    SegmentTrianglePair c{{x + before * d, x - (1 - before) * d}, t};
+    translate(c, -(from + 0.5 * edge));
+    return c;
+  });
+}
+
 rc::Gen<SegmentTrianglePair> decisive_segment_triangle() {
   const rc::Gen<SegmentTrianglePair> families = rc::gen::weightedOneOf<SegmentTrianglePair>({
       {3, family(0)},

@@ -13,6 +13,8 @@
 //    robustness step (gen::exact_segment_triangle), with a small share kept here for the
 //    points and parameters that are checked even when the yes/no is ambiguous:
 //    coplanar segments, among them nearly collinear with an edge.
+//  - The thinnest needles crossed steeply near their long edge (needle_crossed_steeply):
+//    only a normal taken to full precision puts the crossing on the plane within tol.
 //  - Meshes: soups with needles, terrains, octahedra, and double-sided faces (the same
 //    triangle twice, wound both ways): a segment through one crosses two triangles at
 //    the same t, decisively.
@@ -30,6 +32,9 @@ rc::Gen<Triangle> needle(double s);
 rc::Gen<Triangle> any_triangle(double s);
 
 rc::Gen<SegmentTrianglePair> decisive_segment_triangle();
+// The thinnest needles (aspect ratio 2^24 and up) crossed by short, steep segments near
+// their long edge: the robustness step's, for many of their yes/no answers are in doubt.
+rc::Gen<SegmentTrianglePair> needle_crossed_steeply();
 rc::Gen<SegmentMeshPair> decisive_segment_mesh();
 
 }  // namespace labkit::gen

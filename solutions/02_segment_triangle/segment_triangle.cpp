@@ -92,31 +92,45 @@ Scale scale_of(std::initializer_list<Vec3> points) {
 }
 Scale scale_of(const Segment& s, const Triangle& t) { return scale_of({s.a, s.b, t.v0, t.v1, t.v2}); }
 
-// ---- The normal, where a needle keeps it accurate --------------------------------------
+// ---- The normal, to full precision even for a needle ------------------------------------
 
-// The cross product of two edges is rounded by about 1e-16 |e1| |e2|, while its length
-// is |e1| |e2| sin(angle). At the tip of a needle (a tiny angle between two long edges)
-// the rounding is as large as the normal times the aspect ratio: 1e-8 of its direction
-// for an aspect of 1e8, enough to move a distance measured a few units away by more than
-// tol. At the vertex opposite the longest edge the angle is the largest (at least 60
-// degrees unless all three edges are nearly collinear), so we take the cross product of
-// the two shorter edges there. Same winding: (v_{c+1} - v_c) x (v_{c+2} - v_c) is
-// (v1 - v0) x (v2 - v0) in exact arithmetic, whichever corner c.
-struct Corner {
-  Vec3 v;       // the vertex v_c
-  Vec3 e1, e2;  // v_{c+1} - v_c, v_{c+2} - v_c
-  Vec3 n;       // e1 x e2
+// A needle's normal is the cross product of two long, nearly parallel edges. Each of its
+// components is the difference of two products up to the aspect ratio times larger than
+// itself, so plain doubles lose that factor of its digits: 1e-8 of its direction for an
+// aspect ratio of 1e8, and a point S away then lands a few tol off the plane, on the
+// wrong side of it or with weights that miss it (no choice of corner avoids it: at the
+// middle vertex of a sliver the angle is nearly 180 degrees, as bad as the tip's). So
+// nothing is rounded until the end: each edge is kept exactly, as its rounded difference
+// plus what rounding dropped (TwoSum), and the products of the rounded parts exactly, as
+// the product plus its error from one fma (TwoProduct). Only terms 1e-16 smaller than
+// the result are rounded, whatever the triangle's shape: the normal's direction is good
+// to a few units of 1e-16. (A zero-area triangle still gives exactly zero.)
+struct Exact {
+  double hi = 0.0, lo = 0.0;  // hi + lo, exactly
 };
-Corner robust_corner(const Triangle& t) {
-  int c = 0;
-  double longest = -1;
-  for (int i = 0; i < 3; ++i) {
-    const double opposite = (t[(i + 2) % 3] - t[(i + 1) % 3]).squaredNorm();
-    if (opposite > longest) longest = opposite, c = i;
-  }
-  Corner r{t[c], t[(c + 1) % 3] - t[c], t[(c + 2) % 3] - t[c], Vec3::Zero()};
-  r.n = r.e1.cross(r.e2);
-  return r;
+
+// a - b exactly (Knuth's TwoSum; hi is the rounded difference).
+Exact difference(double a, double b) {
+  const double hi = a - b;
+  const double b_part = a - hi;  // the part of b that hi holds
+  const double a_part = hi + b_part;
+  return {hi, (a - a_part) + (b_part - b)};
+}
+
+// x0 y1 - x1 y0, rounded once (up to terms 1e-16 of the result smaller).
+double minor(const Exact& x0, const Exact& y1, const Exact& x1, const Exact& y0) {
+  const double p = x0.hi * y1.hi, q = x1.hi * y0.hi;
+  const double p_error = std::fma(x0.hi, y1.hi, -p), q_error = std::fma(x1.hi, y0.hi, -q);
+  const double small = (x0.hi * y1.lo + x0.lo * y1.hi) - (x1.hi * y0.lo + x1.lo * y0.hi);
+  // p - q is exact when they nearly cancel (Sterbenz), and otherwise rounds only once.
+  return (p - q) + ((p_error - q_error) + small);
+}
+
+// (v1 - v0) x (v2 - v0), to full precision.
+Vec3 accurate_normal(const Triangle& t) {
+  Exact e1[3], e2[3];
+  for (int k = 0; k < 3; ++k) e1[k] = difference(t.v1[k], t.v0[k]), e2[k] = difference(t.v2[k], t.v0[k]);
+  return {minor(e1[1], e2[2], e1[2], e2[1]), minor(e1[2], e2[0], e1[0], e2[2]), minor(e1[0], e2[1], e1[1], e2[0])};
 }
 
 // The axis of the normal's largest |component| (ties: the lower index). Dropping it
@@ -216,18 +230,16 @@ Decision decide_coplanar(const Segment& s, const Triangle& tri, const Vec3& n) {
 
 // Both ends on the plane, to within the rounding error of d_a and d_b: then the volumes
 // below are all zero up to that same rounding, and their signs are pure noise; the 2D
-// test decides instead. d = (p - v_c) . n with n = e1 x e2 is rounded by a few units of
-// 1e-16 |p - v_c| |e1| |e2| (the products, and the rounding of n itself); the bound is
-// 16 units (compared squared, to spare the roots). It is relative to the edges, not to
-// the area, but e1 and e2 are the two shorter edges (robust_corner), so for a needle it
-// is still a slab about 1e-15 of the distances thick, not 1e-15 times the aspect ratio:
-// a short steep segment through a needle is never taken for one lying in its plane. On
+// test decides instead. d = (p - v0) . n, with n accurate (accurate_normal), is rounded
+// by a few units of 1e-16 |p - v0| |n|; the bound is 16 units (compared squared, to spare
+// the roots): a slab 1e-15 of the distances thick, whatever the triangle's shape, so a
+// short steep segment through a needle is never taken for one lying in its plane. On
 // integer input (|x| <= 1024) it is far below 1, so such input is treated as coplanar
 // only when it is.
-bool in_plane(double d_a, double d_b, const Vec3& a_to_v, const Vec3& b_to_v, const Corner& c) {
+bool in_plane(double d_a, double d_b, const Vec3& a_to_v, const Vec3& b_to_v, const Vec3& n) {
   constexpr double unit = 16 * std::numeric_limits<double>::epsilon();
-  const double edges = unit * unit * c.e1.squaredNorm() * c.e2.squaredNorm();
-  return d_a * d_a <= edges * a_to_v.squaredNorm() && d_b * d_b <= edges * b_to_v.squaredNorm();
+  const double slab = unit * unit * n.squaredNorm();
+  return d_a * d_a <= slab * a_to_v.squaredNorm() && d_b * d_b <= slab * b_to_v.squaredNorm();
 }
 
 //   Derivation (lecture 000, "segment vs. triangle"): with n = (v1 - v0) x (v2 - v0),
@@ -254,29 +266,32 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
   const Scale scale = scale_of(input, input_tri);
   const Segment s = scale.in(input);
   const Triangle tri = scale.in(input_tri);
-  const Corner c = robust_corner(tri);
-  const Vec3& n = c.n;
+  const Vec3 n = accurate_normal(tri);
   // The vertices as seen from a, and where the segment goes.
   const Vec3 p0 = tri.v0 - s.a, p1 = tri.v1 - s.a, p2 = tri.v2 - s.a;
   const Vec3 direction = s.b - s.a;
-  const Vec3 a_to_v = s.a - c.v, b_to_v = s.b - c.v;
-  const double d_a = a_to_v.dot(n);                             // (a - v_c) . n
-  const double d_b = b_to_v.dot(n);                             // (b - v_c) . n
+  const Vec3 a_to_v = s.a - tri.v0, b_to_v = s.b - tri.v0;
+  const double d_a = a_to_v.dot(n);                             // (a - v0) . n
+  const double d_b = b_to_v.dot(n);                             // (b - v0) . n
   if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side
   if (n == Vec3::Zero()) return {};                             // zero area: no plane, never hit
   if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);
 
   // A segment in the plane up to rounding: its volumes below are noise, in 2D.
-  if (in_plane(d_a, d_b, a_to_v, b_to_v, c)) return decide_coplanar(s, tri, n);
-  // The volumes are rounded by a few units of 1e-16 |b - a| |p|^2 (p the longest v_i - a)
-  // and sum to d_b - d_a. A segment so nearly parallel to the plane that this sum is
+  if (in_plane(d_a, d_b, a_to_v, b_to_v, n)) return decide_coplanar(s, tri, n);
+  // The volumes sum to d_b - d_a, which is (b - a) . n: taken so, it is rounded relative
+  // to itself, not to the two distances (much longer for a short segment far from v0).
+  const double sum = direction.dot(n);
+  // The volumes are rounded by a few units of 1e-16 |b - a| |p|^2 (p the longest v_i - a).
+  // A segment so nearly parallel to the plane that this sum is
   // within that rounding has volumes whose signs are noise, even when one end is clearly
   // off the plane and the other within rounding of it. Its crossing is then fixed only
   // loosely anyway (the header's tolerance of t): build it, and test it in 2D. On
   // integer input (|x| <= 1024) the bound is below 1 and the volumes always decide.
   const double reach = std::max({p0.squaredNorm(), p1.squaredNorm(), p2.squaredNorm()});
   constexpr double unit = 16 * std::numeric_limits<double>::epsilon();
-  if (std::abs(d_b - d_a) <= unit * direction.norm() * reach) {
+  if (std::abs(sum) <= unit * direction.norm() * reach) {
+    if (d_a == d_b) return {};  // parallel to the plane and off it: no crossing
     const int axis = largest_axis(n);
     const Vec2 p[3] = {drop(tri.v0, axis), drop(tri.v1, axis), drop(tri.v2, axis)};
     const double t = d_a / (d_a - d_b);
@@ -290,14 +305,13 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
   if (side * v0 > 0) return {};  // x is outside edge v0 -> v1
   const double v2 = -m.dot(p2);
   if (side * v2 > 0) return {};  // outside edge v2 -> v0
-  const double v1 = (d_b - d_a) - v0 - v2;
+  const double v1 = sum - v0 - v2;
   if (side * v1 > 0) return {};  // outside edge v1 -> v2
   // The volumes are the crossing's barycentric weights, up to their sum: V_1 belongs to
   // the edge facing v0, and so weighs v0; V_2 weighs v1, V_0 weighs v2. Each V_i is
   // rounded by about 1e-16 |b - a| |p|^2 (p the longest v_i - a), so the weights are
   // good to 1e-11 while the sum is at least 1e-5 |b - a| |p|^2; a segment closer to
   // parallel than that leaves the weights to be measured on the point.
-  const double sum = d_b - d_a;
   const bool steep = sum * sum >= 1e-10 * direction.squaredNorm() * reach * reach;
   return {true, d_a / (d_a - d_b), n, steep ? Vec3(Vec3(v1, v2, v0) / sum) : Vec3(Vec3::Zero())};
 }
@@ -382,12 +396,13 @@ PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
   require("segment_plane", triangle);
   const Scale scale = scale_of(segment, triangle);
   const Segment s = scale.in(segment);
-  const Corner corner = robust_corner(scale.in(triangle));
-  const double length = corner.n.norm();
+  const Triangle tri = scale.in(triangle);
+  const Vec3 n = accurate_normal(tri);
+  const double length = n.norm();
   if (length == 0) return {};  // a zero-area triangle has no plane
-  const Vec3 unit = corner.n / length;
+  const Vec3 unit = n / length;
   PlaneCrossing c;
-  const double d_a = (s.a - corner.v).dot(unit), d_b = (s.b - corner.v).dot(unit);
+  const double d_a = (s.a - tri.v0).dot(unit), d_b = (s.b - tri.v0).dot(unit);
   c.d_a = scale.out(d_a);
   c.d_b = scale.out(d_b);
   // Both ends strictly on one side: no crossing. Both on the plane: no single point.
@@ -406,7 +421,7 @@ bool point_in_triangle_edges(const Vec3& point, const Triangle& input) {
   const Scale scale = scale_of({point, input.v0, input.v1, input.v2});
   const Vec3 x = scale.in(point);
   const Triangle triangle = scale.in(input);
-  const Vec3 n = robust_corner(triangle).n;
+  const Vec3 n = accurate_normal(triangle);
   if (n == Vec3::Zero()) return false;
   for (int i = 0; i < 3; ++i) {
     const Vec3& from = triangle[i];
@@ -423,7 +438,7 @@ Barycentric barycentric(const Vec3& point, const Triangle& input) {
   const Scale scale = scale_of({point, input.v0, input.v1, input.v2});
   const Vec3 x = scale.in(point);
   const Triangle triangle = scale.in(input);
-  const Vec3 n = robust_corner(triangle).n;
+  const Vec3 n = accurate_normal(triangle);
   if (n == Vec3::Zero()) return {};
   Barycentric b;
   b.dropped_axis = largest_axis(n);
@@ -448,7 +463,7 @@ bool point_in_triangle_barycentric(const Vec3& point, const Triangle& input) {
   const Scale scale = scale_of({point, input.v0, input.v1, input.v2});
   const Vec3 x = scale.in(point);
   const Triangle triangle = scale.in(input);
-  const Vec3 n = robust_corner(triangle).n;
+  const Vec3 n = accurate_normal(triangle);
   if (n == Vec3::Zero()) return false;
   const int axis = largest_axis(n);
   const Vec2 e1 = drop(triangle.v1 - triangle.v0, axis);
