@@ -79,7 +79,9 @@ struct ObbWalk {
   std::vector<std::array<int, 2>> leaf_pairs;
   long long box_tests = 0;
 };
-ObbWalk header_walk(const ObbTree& a, const ObbTree& b);
+// The header's traversal; with a_at_tie false, the one that descends b's node at equal
+// volumes (a likely mistake the judge names when it sees its count).
+ObbWalk header_walk(const ObbTree& a, const ObbTree& b, bool a_at_tie = true);
 // Step 7: the pairs against the exact brute force over all triangle pairs, and the counts
 // against the header's traversal (box tests, triangle tests) run on the same trees.
 Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got,

@@ -24,6 +24,12 @@ labkit_mutant(06 spatial_trees NAME start_on_plane_wrong_side STEP 2 SAYS "near 
   FIND "(s.a[axis] == n.split && d[axis] <= 0)"
   REPLACE "false")
 
+# Step 2: a segment lying in a split plane (d[axis] = 0, a on the plane) sent to the
+# child above: the header sends it below. Step 9's exact walk catches it too.
+labkit_mutant(06 spatial_trees NAME in_split_plane_goes_above STEP 2 SAYS "below"
+  FIND "(s.a[axis] == n.split && d[axis] <= 0)"
+  REPLACE "(s.a[axis] == n.split && d[axis] < 0)")
+
 # Step 2: the walk read without its t_split <= 0 rule: a segment moving away from the
 # plane is sent into the far cell behind a, which it never meets.
 labkit_mutant(06 spatial_trees NAME far_child_behind_a STEP 2 SAYS "t_split" "far child"
@@ -83,6 +89,10 @@ labkit_mutant(06 spatial_trees NAME bvh_descends_smaller STEP 7 SAYS "larger box
   REPLACE "const bool descend_a = leaf_b || (!leaf_a && volume(na) <= volume(nb));")
 
 # Step 7: the traversal stops at the first pair found even when every pair is asked for.
+labkit_mutant(06 spatial_trees NAME bvh_descends_b_at_tie STEP 7 SAYS "equal volumes"
+  FIND "const bool descend_a = leaf_b || (!leaf_a && volume(na) >= volume(nb));"
+  REPLACE "const bool descend_a = leaf_b || (!leaf_a && volume(na) > volume(nb));")
+
 labkit_mutant(06 spatial_trees NAME bvh_stops_at_first_pair STEP 7 SAYS "every pair"
   FIND "if (!every) return out;"
   REPLACE "return out;")

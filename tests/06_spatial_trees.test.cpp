@@ -522,6 +522,13 @@ auto expect_bvh(std::vector<std::array<int, 2>> pairs, int box_tests, int triang
   };
 }
 
+// Two meshes whose roots' boxes have equal volumes (4 x 1 x 6, and the same largest
+// coordinate, so the same padding): a's root descends first. a's second leaf is apart
+// from b's root, and both of b's leaves overlap a's root, so descending b first would
+// take 7 box tests instead of 5.
+Mesh tie_a() { return mesh_of({{{-2, 0, -3}, {1.5, 0, 3}, {0, 1, 0}}, {{1.5, 0, 0}, {2, 0, 0}, {1.75, 1, 0}}}); }
+Mesh tie_b() { return mesh_of({{{-3, 0, -3}, {-1, 0, 3}, {-2, 1, 0}}, {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}}}); }
+
 // a: two triangles 10 apart along x; b: one triangle piercing a's second one.
 Mesh two_apart() { return mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, {{10, 0, 0}, {12, 0, 0}, {10, 2, 0}}}); }
 Mesh piercing() { return mesh_of({{{10.5, 0.5, -1}, {10.5, 0.5, 1}, {11.5, 3, 0}}}); }
@@ -542,6 +549,20 @@ TEST_CASE(LABKIT_STEP(L06S7) ": OBB trees, worked examples", "[lab06][step7]") {
                  BvhQuery{mesh_of({{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}}),
                           mesh_of({{{0.5, 0.5, 0}, {3, 0.5, 0}, {0.5, 3, 0}}}), 0, 0, true},
                  expect_bvh({}, 1, 1));
+  check::example(query::colliding_triangles, "equal volumes: a's root descends first, 5 box tests (b's first: 7)",
+                 BvhQuery{tie_a(), tie_b(), 0, 0, true},
+                 [](const BvhQuery& in) {
+    const ObbTree a = judge::obb_tree(in.a, in.tree_a), b = judge::obb_tree(in.b, in.tree_b);
+    const BvhRun got = bvh_counted(a, b, in.every);
+    const Outcome right = judge::colliding_triangles(in, a, b, got, Rules::exact);
+    if (right.verdict == Outcome::Verdict::fail) return right;
+    Expect e;
+    e.that("box_tests", got.answer.box_tests <= 5, std::to_string(got.answer.box_tests), "at most 5",
+           "at equal volumes the header descends a's node: a's second leaf is then apart from b's root at once; "
+           "descending b's root first tests a's root against both of b's leaves, and each of those against both of "
+           "a's");
+    return e.outcome();
+  });
   check::example(query::colliding_triangles, "two spheres of 80 triangles overlapping, every pair",
                  BvhQuery{gen::sphere_mesh(80, {0, 0, 0}, 1), gen::sphere_mesh(80, {1.2, 0.3, 0.1}, 0.8), 3, 5, true},
                  [](const BvhQuery& in) { return judge_bvh(in, Rules::random); });

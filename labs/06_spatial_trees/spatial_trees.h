@@ -126,8 +126,9 @@ KdTree build_kd_tree(const Mesh& mesh);
 // of the segment is a + t (b - a)):
 //
 //         a *-------------|------------* b       t_split = (split - a[axis]) / (b - a)[axis]
-//           t0   near     |     far    t1       near: the child on a's side of the plane
-//                       split                   (the side b - a leaves, when a is on it)
+//           t0   near     |     far    t1       near: the child on a's side of the plane;
+//                       split                   when a is on it, the side b - a goes to,
+//                                               and below when the segment lies in it
 //
 // visit the children by where the segment meets the plane:
 //  - parallel to it ((b - a)[axis] = 0): the near child only, on [t0, t1]; compute no
@@ -137,10 +138,11 @@ KdTree build_kd_tree(const Mesh& mesh);
 //  - t_split < t0 (it crossed before entering this cell): the far child only;
 //  - otherwise: the near child on [t0, t_split], then the far child on [t_split, t1].
 //
-// Tests. A query may call given::segment_triangle only on triangles listed in leaves
-// whose closed cell the segment meets, once per listing; first_hit and any_hit only in
-// leaves the segment enters no later than the hit they return (at t0 <= its t), or in all
-// of them when they return none. `tests` is how many calls the query made; the checker
+// Tests. A query may call given::segment_triangle only on triangles listed in the leaves
+// this walk visits, once per listing (not every leaf whose closed cell the segment
+// touches: from a split plane, or lying in one, it visits the near child only); first_hit
+// and any_hit only in leaves the segment enters no later than the hit they return (at
+// t0 <= its t), or in all of them when they return none. `tests` is how many calls the query made; the checker
 // counts the calls too, and the two must agree.
 //
 // Preconditions: the segment's ends are finite (a zero-length segment is valid and hits
