@@ -13,6 +13,7 @@
 
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <iostream>
 
 int main(int argc, char** argv) {
@@ -38,16 +39,23 @@ int main(int argc, char** argv) {
   check_command->add_option("--jobs", check.jobs, "Steps run at once (default: one per core)")
       ->check(CLI::PositiveNumber);
   check_command->add_option("--timeout", check.timeout, "Seconds allowed per step")->check(CLI::PositiveNumber);
-  check_command
-      ->add_option("--implementation", check.implementation,
-                   "Which code to check: student (your files), reference, or mutant_NAME (a classic mistake)")
-      ->check(CLI::Validator(
-          [](std::string& s) {
+  // The student release holds no references and no mutants: there it checks the student's
+  // files only, and does not offer the choice.
+  const bool release = !std::filesystem::exists(paths.source + "/solutions");
+  CLI::Option* implementation =
+      check_command
+          ->add_option("--implementation", check.implementation,
+                       "Which code to check: student (your files), reference, or mutant_NAME (a classic mistake)")
+          ->check(CLI::Validator(
+              [release](std::string& s) {
+    if (release && s != "student")
+      return std::string("this is the student release: it holds your files only, no reference or mutant to check");
     return s == "student" || s == "reference" || s.rfind("mutant_", 0) == 0
                ? std::string()
                : std::string("must be student, reference or mutant_NAME");
-          },
-          "IMPLEMENTATION"));
+              },
+              "IMPLEMENTATION"));
+  if (release) implementation->group("");  // hidden from --help
 
   runner::GradeOptions grade;
   CLI::App* grade_command =

@@ -65,6 +65,14 @@ echo "$out" | tail -n 4
 steps=$(sed -n 's/^.*[0-9]* of \([0-9]*\) steps pass.*$/\1/p' <<<"$out" | tail -n 1)
 [ -n "$steps" ] && [ "$(grep -c "not implemented yet" <<<"$out")" = "$steps" ] ||
   fail "not every step of the release says 'not implemented yet'"
+# What cannot work without the references is not offered there, and says why if asked for.
+help=$(cd "$root/source" && ./labkit help 2>&1)
+grep -qE "^  (figures|bench|package|release) " <<<"$help" && fail "the release's ./labkit help offers a command it cannot run"
+out=$(cd "$root/source" && ./labkit check 02 --implementation reference 2>&1) &&
+  fail "the release's ./labkit check --implementation reference runs"
+grep -q "student release" <<<"$out" || fail "the release's --implementation reference does not say why it is refused: $out"
+out=$(cd "$root/source" && ./labkit figures 2>&1) && fail "the release's ./labkit figures runs"
+grep -q "student release" <<<"$out" || fail "the release's ./labkit figures does not say why it is refused: $out"
 
 echo "--- 5. run_autograder: the reference (files uploaded one by one), then nothing"
 for lab in "$kit"/solutions/*/; do cp "$lab"*.cpp "$root/submission/"; done
