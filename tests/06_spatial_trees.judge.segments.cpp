@@ -47,7 +47,8 @@ long long walk_listings(const KdTree& tree, const Segment& s) {
     }
     const int axis = n.axis;
     // a's side; from the plane itself the side d goes to, and below when d runs in it.
-    const bool below_near = s.a[axis] < n.split || (s.a[axis] == n.split && d[axis] <= 0);
+    const double side = s.a[axis] != n.split ? s.a[axis] - n.split : d[axis];
+    const bool below_near = side <= 0;
     const int near = below_near ? p.node + 1 : n.index, far = below_near ? n.index : p.node + 1;
     const double t_split = d[axis] == 0 ? -1 : (n.split - s.a[axis]) / d[axis];
     if (t_split <= 0 || t_split > p.t1) {

@@ -148,15 +148,15 @@ rc::Gen<double> wide_scale() {
                                            {1, std::ldexp(1.0, 166)}});
 }
 
-rc::Gen<Triangle> needle(double s) {
-  return rc::gen::suchThat(rc::gen::exec([s] {
+rc::Gen<Triangle> needle(double s, int thinnest) {
+  return rc::gen::suchThat(rc::gen::exec([s, thinnest] {
                              const Vec3 p = *point(s), u = nonzero(s);
                              // A direction across the long edge u, with any other component removed.
                              Vec3 w = *rc::gen::suchThat(point(1.0), [&u](const Vec3& v) {
                                return v.cross(u).squaredNorm() > 1e-6 * v.squaredNorm() * u.squaredNorm();
                              });
                              w -= (w.dot(u) / u.dot(u)) * u;
-                             const double aspect = std::ldexp(1.0, *rc::gen::inRange(4, 28));
+                             const double aspect = std::ldexp(1.0, *rc::gen::inRange(thinnest, 28));
                              w *= u.norm() / (aspect * w.norm());
                              // Where the third vertex sits along the long edge: at an end (a spike), inside it
                              // or beyond it (slivers).
@@ -186,8 +186,7 @@ rc::Gen<SegmentTrianglePair> needle_crossed_steeply() {
     // The thinnest: aspect ratios 2^24 and up. A crossing inside the very thinnest is
     // within the checker's band of doubt (either yes/no passes), but its t and weights
     // are still checked.
-    const Triangle t = *rc::gen::suchThat(
-        needle(s), [](const Triangle& n) { return std::pow(size_of(n), 2) >= std::ldexp(n.normal().norm(), 24); });
+    const Triangle t = *needle(s, 24);
     int i = 0;  // the long edge runs from t[i] to t[i + 1]
     for (int k = 1; k < 3; ++k)
       if ((t[(k + 1) % 3] - t[k]).squaredNorm() > (t[(i + 1) % 3] - t[i]).squaredNorm()) i = k;

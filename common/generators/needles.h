@@ -26,8 +26,8 @@ namespace labkit::gen {
 
 // 2^k for k in {-166, -20, -10, 0, 10, 20, 166}: mostly 1.
 rc::Gen<double> wide_scale();
-// A needle triangle (non-zero area) of length scale `s`.
-rc::Gen<Triangle> needle(double s);
+// A needle triangle (non-zero area) of length scale `s`, its aspect ratio 2^thinnest to 2^27.
+rc::Gen<Triangle> needle(double s, int thinnest = 4);
 // Ordinary triangles (mostly) and needles.
 rc::Gen<Triangle> any_triangle(double s);
 
