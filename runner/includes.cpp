@@ -36,11 +36,13 @@ bool exists(const std::string& path) {
   return fs::is_regular_file(path, e);
 }
 
-// Headers of libraries a lab file may not use, where the system's package lists cannot
-// say which headers are the C library's (`system` then allows everything else).
+// Headers a lab file may not use: other libraries', where the system's package lists
+// cannot say which headers are the C library's (`system` then allows everything else),
+// and the C library's dynamic loader, which would load at run time what the compile
+// refuses (GMP, MPFR).
 bool blocked(const std::string& relative) {
   static const std::regex names(
-      R"(^(CGAL|boost|flint|mpfr|gmp|nlohmann|catch2|rapidcheck)/|^(gmp|mpfr|mpf2mpfr|mpc)[^/]*$)");
+      R"(^(CGAL|boost|flint|mpfr|gmp|nlohmann|catch2|rapidcheck)/|^(gmp|mpfr|mpf2mpfr|mpc)[^/]*$|^dlfcn\.h$)");
   return std::regex_search(relative, names);
 }
 
@@ -200,7 +202,9 @@ Rule rule_for(const std::string& kit, const std::string& lab_folder, const std::
   for (const std::string& file : c_library_headers())
     for (const std::string& folder : rule.system)
       if (under(file, folder)) {
-        rule.files.insert(file);
+        std::string relative = file.substr(folder.size());
+        if (!relative.empty() && relative[0] == '/') relative.erase(0, 1);
+        if (!blocked(relative)) rule.files.insert(file);
         break;
       }
 

@@ -108,6 +108,9 @@ std::string audit(const std::vector<Symbol>& symbols, const Lab& lab, const std:
   static const std::regex judging(
       R"((^|[^A-Za-z0-9_:])(labkit::check|labkit::gen|labkit::lab[0-9]+::judge|labkit::remote|oracle|Catch|rc)::)");
   static const std::regex given_tools(R"((^|[^A-Za-z0-9_:])labkit::given::)");
+  // Loading a library at run time would bring in what the compile refuses (GMP, MPFR).
+  static const std::set<std::string> loading{"dlopen",      "dlmopen", "dlsym", "dlvsym", "__libc_dlopen_mode",
+                                             "__libc_dlsym"};
   std::string problems;
   int count = 0;
   const auto problem = [&](const std::string& text) {
@@ -120,6 +123,9 @@ std::string audit(const std::vector<Symbol>& symbols, const Lab& lab, const std:
       problem("defines " + s.readable + "(): the kit's tests have their own");
     else if (std::regex_search(s.readable, judging))
       problem((defined ? "defines " : "uses ") + s.readable + ", which belongs to the kit's tests, judge or oracle");
+    else if (!defined && loading.count(s.name))
+      problem("uses " + s.readable +
+              "(): a lab's file loads no library at run time (exact arithmetic is the judge's alone)");
     else if (!given && std::regex_search(s.readable, given_tools))
       problem((defined ? "defines " : "uses ") + s.readable +
               ", a given tool of other labs: this lab's header does not offer it, so write your own");

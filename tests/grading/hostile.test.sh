@@ -191,15 +191,15 @@ namespace { struct Forge { Forge() {
 stub_with weak_rename 'extern "C" __attribute__((weak)) int rename(const char*, const char* to) {
   if (std::FILE* f = std::fopen(to, "w")) { std::fputs("{\"finished\": true, \"test_cases\": [], \"queries\": []}", f); std::fclose(f); }
   return 0; }'
-# The exact oracle by its mangled name: in its own binary (/proc/self/exe) or through
-# dlsym. If it is there, segment_plane aborts (and this suite fails).
+# The exact oracle by its mangled name in its own binary (/proc/self/exe); dlsym, the other
+# way to look, is refused at the build (load_gmp). If it is there, segment_plane aborts
+# (and this suite fails).
 inject oracle_by_name segment_plane '  if (oracle_reachable()) std::abort();'
-{ printf '#include <dlfcn.h>\n#include <fstream>\n#include <iterator>\n#include <string>\nnamespace {\nbool oracle_reachable() {\n'
+{ printf '#include <fstream>\n#include <iterator>\n#include <string>\nnamespace {\nbool oracle_reachable() {\n'
   printf '  static const bool found = [] { std::ifstream exe("/proc/self/exe", std::ios::binary);\n'
   printf '    const std::string bytes((std::istreambuf_iterator<char>(exe)), std::istreambuf_iterator<char>());\n'
   printf '    const std::string name = std::string("6labkit6") + "oracle";  // built at run time: not in the binary itself\n'
-  printf '    return bytes.find(name) != std::string::npos ||\n'
-  printf '           dlsym(RTLD_DEFAULT, ("_ZN" + name + "13segment_planeERKNS_7SegmentERKNS_8TriangleE").c_str()) != nullptr; }();\n'
+  printf '    return bytes.find(name) != std::string::npos; }();\n'
   printf '  return found;\n}\n}  // namespace\n'
   cat "$subs/oracle_by_name/$lab02"; } >"$work/oracle.cpp" && mv "$work/oracle.cpp" "$subs/oracle_by_name/$lab02"
 # A .preinit_array function (runs before any initialiser; the audit refused only numbered
@@ -237,12 +237,19 @@ reference "$subs/include_cgal"
   >"$subs/include_cgal/$lab02"
 reference "$subs/include_numbers"
 { printf '#include <vector>\n#include <gmp.h>\n#include <mpfr.h>\n#include <boost/multiprecision/cpp_int.hpp>\n'
+  printf '#include <dlfcn.h>\n'  # the loader, that would bring them in at run time
   cat "$kit/solutions/02_segment_triangle/segment_triangle.cpp"; } >"$subs/include_numbers/$lab02"
 # Lab 06's ready segment-triangle test, borrowed for lab 02 (whose point is to write one):
 # included (its header is not lab 02's), or declared by hand and linked.
 reference "$subs/include_given"
 { printf '#include "common/given/segment_triangle.h"\n'; cat "$kit/solutions/02_segment_triangle/segment_triangle.cpp"; } \
   >"$subs/include_given/$lab02"
+# Exact arithmetic loaded at run time, the loader declared by hand (its header is
+# refused): the symbol audit refuses the call.
+reference "$subs/load_gmp"
+{ printf 'extern "C" void* dlopen(const char*, int);\n'
+  printf 'void* gmp_loaded = dlopen("libgmp.so.10", 2);\n'
+  cat "$kit/solutions/02_segment_triangle/segment_triangle.cpp"; } >"$subs/load_gmp/$lab02"
 reference "$subs/declare_given"
 { printf 'namespace labkit { struct Segment; struct Triangle; namespace given { struct SegmentHit;\n'
   printf 'SegmentHit segment_triangle(const Segment&, const Triangle&); } }\n'
@@ -422,10 +429,13 @@ expect preinit_seed graded
 expect_refused include_oracle '"common/oracle/segment_triangle.cpp" (line 4)'
 expect_refused include_cgal '<CGAL/Simple_cartesian.h> (line 1)'
 expect_refused include_given '"common/given/segment_triangle.h" (line 1)'
+expect load_gmp "does not compile"
+grep -q "loads no library at run time" "$out/load_gmp/report.txt" ||
+  fail "load_gmp: the feedback does not say a lab's file loads no library"
 expect declare_given "does not compile"
 grep -q "a given tool of other labs" "$out/declare_given/report.txt" ||
   fail "declare_given: the feedback does not say the given tool is not this lab's"
-expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)'
+expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)' '<dlfcn.h> (line 5)'
 expect inherited_fds graded
 nothing_written "sandbox $(grep -o 'sandbox: [A-Za-z]*' "$out/reference/report.txt" | head -n 1)"
 expect udp_out graded
@@ -545,7 +555,7 @@ for mode in bubblewrap landlock; do
   expect include_reference "does not compile"
   expect_refused include_oracle '"common/oracle/segment_triangle.cpp" (line 4)'
   expect_refused include_cgal '<CGAL/Simple_cartesian.h> (line 1)'
-  expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)'
+  expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)' '<dlfcn.h> (line 5)'
   expect inherited_fds graded
   nothing_written "--sandbox $mode"
   expect udp_out graded
@@ -576,7 +586,7 @@ cp -R "$out/reference" "$work/out-none/"
 main_out="$out" && out="$work/out-none"
 expect_refused include_oracle '"common/oracle/segment_triangle.cpp" (line 4)'
 expect_refused include_cgal '<CGAL/Simple_cartesian.h> (line 1)'
-expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)'
+expect_refused include_numbers '<gmp.h> (line 2)' '<mpfr.h> (line 3)' '<boost/multiprecision/cpp_int.hpp> (line 4)' '<dlfcn.h> (line 5)'
 expect inherited_fds graded
 nothing_written "--sandbox none"
 expect udp_out graded
@@ -623,7 +633,8 @@ declare -A fault=(
   [forge_report]="stub + static init writing a passing report" [weak_rename]="stub + weak rename() swapping reports"
   [oracle_by_name]="the oracle by mangled name, /proc/self/exe" [preinit_seed]=".preinit_array reading the seed"
   [kit_programs]="stub + exec of the reference's program" [include_oracle]="#include of the oracle's .cpp, renamed"
-  [include_cgal]="#include <CGAL/...>" [include_numbers]="#include <gmp.h>, <mpfr.h>, Boost.Multiprecision"
+  [include_cgal]="#include <CGAL/...>" [include_numbers]="#include <gmp.h>, <mpfr.h>, Boost, <dlfcn.h>"
+  [load_gmp]="dlopen of libgmp, declared by hand"
   [inherited_fds]="reading and writing descriptors 5 to 20" [udp_out]="UDP datagrams out")
 {
   echo
@@ -632,7 +643,7 @@ declare -A fault=(
     steal_seed early_constructor symlink include_reference own_main partial all_or_nothing latin1_crash latin1_compile \
     fifo_report symlink_report queries_5 finished_yes crafted_token crafted_inflight labs bad_members bad_members_tar bomb \
     forge_report weak_rename oracle_by_name preinit_seed kit_programs include_oracle include_cgal include_numbers \
-    inherited_fds udp_out giant_frame defaults; do
+    load_gmp inherited_fds udp_out giant_frame defaults; do
     [ -f "$out/$name/steps.tsv" ] || continue
     seconds=$(grep -oE '\(([0-9.]+) s\)$' "$out/$name/report.txt" | tail -n 1 | tr -d '() s')
     awk -F'\t' -v f="${fault[$name]}" -v t="$seconds" 'FNR == 1 { next }
