@@ -146,7 +146,6 @@ void judge_items(const std::vector<Item>& items, std::size_t begin, std::size_t 
   remote::begin_batch();
   for (std::size_t first = begin; first < end; first += kAlive) {
     struct Case {
-      std::size_t index;
       std::string token;  // its replay token: a crash of the judge's process names its case
       std::unique_ptr<remote::Fiber> fiber;
     };
@@ -158,7 +157,7 @@ void judge_items(const std::vector<Item>& items, std::size_t begin, std::size_t 
       return done;
     };
     for (std::size_t i = first; i < std::min(end, first + kAlive); ++i) {
-      Case c{i, items[i].token(),
+      Case c{items[i].token(),
              std::make_unique<remote::Fiber>([&items, &outcomes, i] { outcomes[i] = items[i].judge(); })};
       if (!run(c)) waiting.push_back(std::move(c));
     }

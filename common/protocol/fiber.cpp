@@ -3,7 +3,6 @@
 #include <cxxabi.h>
 #include <sys/mman.h>
 #include <ucontext.h>
-#include <cstring>
 #include <new>
 #include <stdexcept>
 #include <utility>
@@ -13,9 +12,10 @@ namespace labkit::remote {
 
 namespace {
 
-// A judge's deepest stack (CGAL's exact arithmetic included) is well under this; the page
-// below it is kept unmapped, so that an overflow stops the process instead of writing
-// over another fiber's stack.
+// A judge's deepest stack (CGAL's exact arithmetic included) is well under this; the 64 KB
+// below it are kept unmapped, so that an overflow stops the process (the harness's crash
+// handler, on its own signal stack, names the case) instead of writing over another
+// fiber's stack.
 constexpr std::size_t kStackBytes = std::size_t(1) << 20;
 constexpr std::size_t kGuardBytes = std::size_t(64) << 10;
 
