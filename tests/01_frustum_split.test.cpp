@@ -14,6 +14,12 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
+// The header's input domain (every non-zero coordinate, offset and normal component from 2^-100 to 2^100): shrinking a failing case stays in it.
+const bool kDomain = [] {
+  check::domain({check::Domain::Of::each, 0x1p-100, 0x1p100});
+  return true;
+}();
+
 namespace {
 
 const double kHalfRoot2 = std::sqrt(0.5);
@@ -55,7 +61,7 @@ auto expect_polygon(std::vector<Vec3> corners, double area, Run run, Judge judge
     // The contract's rules first, with their reasons; then exactly these corners.
     const Outcome judged = judge(in, got);
     if (judged.verdict == Outcome::Verdict::fail) return judged;
-    Expect e;
+    Expect e("the pieces are the kept polygon split into triangles, each corner a corner of the polygon");
     const int expected = corners.size() >= 3 ? int(corners.size()) - 2 : 0;
     e.that("triangles", int(got.size()) == expected, std::to_string(got.size()), std::to_string(expected),
            corners.empty()
@@ -99,7 +105,7 @@ auto clip_gives(std::vector<Vec3> corners, double area) {
 Outcome expect_planes(const Frustum& got, const std::array<Plane, 6>& expected, const Outcome& judged) {
   if (judged.verdict == Outcome::Verdict::fail) return judged;  // the contract's rules first, with their reasons
   static const char* names[6] = {"left", "right", "bottom", "top", "near", "far"};
-  Expect e;
+  Expect e("each plane is the worked example's normal and offset, within 1e-12");
   for (int i = 0; i < 6; ++i) {
     const Plane &g = got.planes[std::size_t(i)], &x = expected[std::size_t(i)];
     const bool ok = (g.normal - x.normal).norm() <= 1e-12 && std::abs(g.offset - x.offset) <= 1e-12;
@@ -206,7 +212,7 @@ TEST_CASE(LABKIT_STEP(L01S1) ": worked examples", "[lab01][step1]") {
     return [=](const TrianglePlane& in) {
       const double got = answerer::signed_distance(in.plane, x), value = in.plane.value(x),
                    length = in.plane.normal.norm();
-      Expect e;
+      Expect e("the signed distance is (n . x + offset) / |n|");
       e.that("signed_distance", std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected),
              "the signed distance is (n . x + offset) / |n| = " + fmt(value) + " / " + fmt(length) + " = " +
                  fmt(expected) +
@@ -375,7 +381,9 @@ TEST_CASE(LABKIT_STEP(L01S5) ": worked examples", "[lab01][step5]") {
     // The contract's rules first (sizes, pieces, colours), with their reasons.
     const Outcome judged = judge::clip_mesh(in, got, Rules::exact);
     if (judged.verdict == Outcome::Verdict::fail) return judged;
-    Expect e;
+    Expect e(
+        "clip_mesh cuts each triangle by the planes and keeps its pieces, each listing its source triangle, each new "
+        "vertex coloured by the t of its cut");
     e.equal("triangles", int(got.mesh.size()), 3);
     double area = 0;
     for (std::size_t k = 0; k < got.mesh.size(); ++k) area += got.mesh.triangle(k).area();

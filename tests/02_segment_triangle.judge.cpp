@@ -161,7 +161,9 @@ Outcome segment_plane(const SegmentTrianglePair& in, const PlaneCrossing& got, R
   const double tol = tolerance_of(in);
   const oracle::PlaneCrossing exact = oracle::segment_plane(in.segment, in.triangle);
   const double n_length = in.triangle.normal().norm();
-  Expect e;
+  Expect e(
+      "segment_plane: d_a and d_b are the ends' signed distances along the unit normal, and the crossing is at t = d_a "
+      "/ (d_a - d_b)");
   const auto distance = [&](const std::string& name, const Vec3& p, double mine, double d) {
     const double d_tol = distance_tolerance(p, in.triangle, tol);
     std::string why = name + " must be the signed distance of " + name.substr(2) +
@@ -234,7 +236,9 @@ Outcome barycentric(const PointTriangle& in, const Barycentric& got) {
                 "a zero-area triangle has no plane to drop an axis from");
   }
   const Vec3 m = n.cwiseAbs();
-  Expect e;
+  Expect e(
+      "barycentric drops the axis of the normal's largest component and solves x = v0 + alpha e1 + beta e2 in the two "
+      "axes left");
   const bool axis_ok =
       got.dropped_axis >= 0 && got.dropped_axis <= 2 && m[got.dropped_axis] >= m.maxCoeff() - kRelative;
   int best = 0;
@@ -272,7 +276,9 @@ Outcome find_segment_triangle(const SegmentTrianglePair& in, const SegmentTriang
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !triangle_hit(in)) return decision;
   const double tol = tolerance_of(in);
   const oracle::SegmentHit exact = oracle::segment_triangle(in.segment, in.triangle);
-  Expect e;
+  Expect e(
+      "a hit is where the segment meets the triangle: t along a to b, point a + t (b - a), weights of v0, v1, v2 that "
+      "give the point");
   check_hit(e, in.segment, in.triangle, got.t, got.point, got.barycentric, got.normal, tol);
   // In the plane the common part is a piece of the segment: the answer is its first point.
   if (exact.coplanar && rules == Rules::exact) {

@@ -28,7 +28,9 @@ Outcome first_hit(const SegmentMeshPair& in, const MeshHit& got, Rules rules) {
   if (!hit_or_ambiguous(in.segment, tri, tol, rules))
     return fail(describe_hits(hits), "triangle " + std::to_string(got.triangle) + " at t = " + fmt(got.t),
                 "the segment does not meet triangle " + std::to_string(got.triangle));
-  Expect e;
+  Expect e(
+      "a hit is where the segment meets the triangle: t along a to b, point a + t (b - a), weights of v0, v1, v2 that "
+      "give the point");
   check_hit(e, in.segment, tri, got.t, got.point, got.barycentric, got.normal, tol);
   // The first hit whose existence is not in doubt bounds t from above.
   for (const oracle::SegmentHit& h : hits) {
@@ -63,7 +65,9 @@ Outcome all_hits(const SegmentMeshPair& in, const std::vector<MeshHit>& got, Rul
         return fail(expected, answer, "the segment does not meet triangle " + std::to_string(h.triangle));
       doubt = true;
     }
-    Expect e;
+    Expect e(
+        "a hit is where the segment meets the triangle: t along a to b, point a + t (b - a), weights of v0, v1, v2 "
+        "that give the point");
     check_hit(e, in.segment, tri, h.t, h.point, h.barycentric, h.normal, tol);
     const Outcome o = e.outcome();
     if (o.verdict == Outcome::Verdict::fail)

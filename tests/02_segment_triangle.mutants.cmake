@@ -29,6 +29,12 @@ labkit_mutant(02 segment_triangle NAME normal_toward_a STEP 4 SAYS "as wound"
   FIND "h.normal = d.n.normalized();"
   REPLACE "h.normal = d.n.normalized(); if ((s.a - tri.v0).dot(h.normal) < 0) h.normal = -h.normal;")
 
+# Step 4: each volume V_i taken as the weight of v_i, the start of its edge; it weighs the
+# vertex facing that edge (V_1 weighs v0, V_2 v1, V_0 v2): the weights turn one place.
+labkit_mutant(02 segment_triangle NAME weights_on_wrong_vertices STEP 4 SAYS "weights of v0, v1, v2" "another order"
+  FIND "Vec3(Vec3(v1, v2, v0) / sum)"
+  REPLACE "Vec3(Vec3(v0, v1, v2) / sum)")
+
 labkit_mutant(02 segment_triangle NAME first_found_not_nearest STEP 5 SAYS "smallest t"
   FIND "if (!d.hit || (best.hit && d.t >= best.t)) continue;  // a miss, or not nearer"
   REPLACE "if (!d.hit || best.hit) continue;")
@@ -44,6 +50,12 @@ labkit_mutant(02 segment_triangle NAME all_hits_drops_equal_t STEP 5 SAYS "missi
 labkit_mutant(02 segment_triangle NAME moving_one_frame STEP 6 SAYS "m1^-1 b"
   FIND "const Segment local{m0.inverse() * segment.a, m1.inverse() * segment.b};"
   REPLACE "const Segment local{m0.inverse() * segment.a, m0.inverse() * segment.b};")
+
+# Step 6: the normal carried to the world like a point, by m1's rotation and translation:
+# a normal is a direction, turned by the rotation only.
+labkit_mutant(02 segment_triangle NAME normal_moved_like_a_point STEP 6 SAYS "rotation only" "no translation"
+  FIND "hit.normal = m1.linear() * hit.normal;"
+  REPLACE "hit.normal = m1 * hit.normal;")
 
 labkit_mutant(02 segment_triangle NAME vertex_face_only STEP 7 SAYS "edge-edge"
   FIND "for (const auto& [i, j] : edges_of(a)) {"

@@ -17,6 +17,12 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
+// The header's input domain (S, the largest absolute coordinate, from 1e-50 to 1e50): shrinking a failing case stays in it.
+const bool kDomain = [] {
+  check::domain({check::Domain::Of::scale, 1e-50, 1e50});
+  return true;
+}();
+
 // What keeps each query's calls well defined, in the header's words: a crash in that
 // query says it first (check::rule).
 const bool kRules = [] {
@@ -83,7 +89,9 @@ TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   check::example(query::segment_plane, "a above, b below: crosses at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
     const PlaneCrossing got = answerer::segment_plane(in.segment, in.triangle);
-    Expect e;
+    Expect e(
+        "segment_plane: d_a and d_b are the ends' signed distances along the unit normal, and the crossing is at t = "
+        "d_a / (d_a - d_b), point a + t (b - a)");
     expect_distance(e, "d_a", got.d_a, 3, 16);
     expect_distance(e, "d_b", got.d_b, -1, 16);
     e.equal("crosses", got.crosses, true);
@@ -94,7 +102,9 @@ TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   check::example(query::segment_plane, "both ends above: no crossing", pair({1, 1, 2}, {3, 3, 5}),
                  [](const SegmentTrianglePair& in) {
     const PlaneCrossing got = answerer::segment_plane(in.segment, in.triangle);
-    Expect e;
+    Expect e(
+        "segment_plane: d_a and d_b are the ends' signed distances along the unit normal; both on one side, no "
+        "crossing");
     expect_distance(e, "d_a", got.d_a, 2, 16);
     expect_distance(e, "d_b", got.d_b, 5, 16);
     e.equal("crosses", got.crosses, false);
@@ -103,7 +113,7 @@ TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   check::example(query::segment_plane, "a on the plane: crosses at t = 0", pair({1, 1, 0}, {2, 2, 2}),
                  [](const SegmentTrianglePair& in) {
     const PlaneCrossing got = answerer::segment_plane(in.segment, in.triangle);
-    Expect e;
+    Expect e("segment_plane: an end on the plane (d = 0) is a crossing at that end");
     e.equal("crosses", got.crosses, true);
     expect_t(e, got.t, 0);
     e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
@@ -112,7 +122,9 @@ TEST_CASE(LABKIT_STEP(L02S1) ": worked examples", "[lab02][step1]") {
   check::example(query::segment_plane, "the normal follows the winding",
                  pair({1, 1, 3}, {1, 1, -1}, {{0, 0, 0}, {0, 4, 0}, {4, 0, 0}}), [](const SegmentTrianglePair& in) {
                    const PlaneCrossing got = answerer::segment_plane(in.segment, in.triangle);
-                   Expect e;
+                   Expect e(
+                       "segment_plane: the distances are measured along the triangle's own normal (v1 - v0) x (v2 - "
+                       "v0), so they follow its winding");
                    expect_distance(e, "d_a", got.d_a, -3, 16);
                    expect_distance(e, "d_b", got.d_b, 1, 16);
                    expect_t(e, got.t, 0.75);
@@ -158,7 +170,9 @@ TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[la
   const auto expect = [](int axis, double alpha, double beta) {
     return [=](const PointTriangle& in) {
       const Barycentric got = answerer::barycentric(in.x, in.triangle);
-      Expect e;
+      Expect e(
+          "barycentric drops the axis of the normal's largest component and solves x = v0 + alpha e1 + beta e2 in the "
+          "two axes left");
       e.equal("dropped_axis", got.dropped_axis, axis);
       const auto weight = [&e](const std::string& name, double mine, double exact) {
         std::string why = "x = v0 + alpha e1 + beta e2 needs " + name + " = " + fmt(exact);
@@ -179,7 +193,7 @@ TEST_CASE(LABKIT_STEP(L02S3) ": worked examples in the dropped-axis plane", "[la
   check::example(query::barycentric, "x = v2 gives beta = 1", PointTriangle{{0, 4, 0}, kFloor}, expect(2, 0, 1));
   check::example(query::barycentric, "zero area: no axis", PointTriangle{{1, 1, 1}, kFlat},
                  [](const PointTriangle& in) {
-    Expect e;
+    Expect e("a triangle of zero area has no plane to drop an axis from: dropped_axis = -1");
     e.equal("dropped_axis", answerer::barycentric(in.x, in.triangle).dropped_axis, -1);
     return e.outcome();
   });
@@ -212,7 +226,9 @@ TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
   check::example(query::find_segment_triangle, "through the inside at t = 3/4", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
     const SegmentTriangleHit got = answerer::find_segment_triangle(in.segment, in.triangle);
-    Expect e;
+    Expect e(
+        "find_segment_triangle reports the crossing with the triangle: t along a to b, point a + t (b - a), "
+        "barycentric the weights of v0, v1, v2 there, normal the unit normal as wound");
     e.equal("hit", got.hit, true);
     e.near("t", got.t, 0.75, 1e-12);
     e.near("point", got.point, Vec3(1, 1, 0), 1e-12);
@@ -223,14 +239,16 @@ TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
   check::example(query::find_segment_triangle, "from below: same normal, t = 1/4", pair({1, 1, -1}, {1, 1, 3}),
                  [](const SegmentTrianglePair& in) {
     const SegmentTriangleHit got = answerer::find_segment_triangle(in.segment, in.triangle);
-    Expect e;
+    Expect e(
+        "find_segment_triangle reports the crossing with the triangle: t along a to b, and the normal as wound, "
+        "whichever side a comes from");
     e.equal("hit", got.hit, true);
     expect_t(e, got.t, 0.25);
     expect_normal(e, got.normal, Vec3(0, 0, 1));
     return e.outcome();
   });
   const auto miss = [](const SegmentTrianglePair& in) {
-    Expect e;
+    Expect e("a segment that misses the closed triangle is a miss for find and test alike");
     e.equal("hit", answerer::find_segment_triangle(in.segment, in.triangle).hit, false);
     e.equal("test", answerer::test_segment_triangle(in.segment, in.triangle), false);
     return e.outcome();
@@ -256,7 +274,9 @@ TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
       pair(Vec3(1, 1, 3) * tiny, Vec3(1, 1, -1) * tiny, {{0, 0, 0}, Vec3(4 * tiny, 0, 0), Vec3(0, 4 * tiny, 0)}),
       [tiny](const SegmentTrianglePair& in) {
     const SegmentTriangleHit got = answerer::find_segment_triangle(in.segment, in.triangle);
-    Expect e;
+    Expect e(
+        "find_segment_triangle reports the crossing with the triangle at any scale: t along a to b, point a + t (b - "
+        "a)");
     e.that("hit", got.hit, describe(got.hit), "true",
            "the triangle's area |n| / 2 = " + fmt(in.triangle.area()) +
                " is not zero: only an exactly zero normal means zero area (a fuzzy test such as "
@@ -267,7 +287,7 @@ TEST_CASE(LABKIT_STEP(L02S4) ": worked examples", "[lab02][step4]") {
       });
   check::example(query::test_segment_triangle, "through the inside", pair({1, 1, 3}, {1, 1, -1}),
                  [](const SegmentTrianglePair& in) {
-    Expect e;
+    Expect e("test_segment_triangle says yes exactly when the segment meets the closed triangle");
     e.equal("test", answerer::test_segment_triangle(in.segment, in.triangle), true);
     return e.outcome();
   });
@@ -295,7 +315,7 @@ TEST_CASE(LABKIT_STEP(L02S5) ": worked examples", "[lab02][step5]") {
   check::example(query::first_hit, "the shelf before the floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
     const MeshHit got = answerer::first_hit(in.segment, in.mesh);
-    Expect e;
+    Expect e("first_hit is the hit with the smallest t, with that hit's triangle, t, point and normal");
     e.equal("hit", got.hit, true);
     e.that("triangle", got.triangle == 3, std::to_string(got.triangle), "3",
            "first_hit is the hit with the smallest t: the shelf (triangle 3, t = 0.5) before the floor "
@@ -312,7 +332,7 @@ TEST_CASE(LABKIT_STEP(L02S5) ": worked examples", "[lab02][step5]") {
   check::example(query::all_hits, "shelf, then floor", SegmentMeshPair{{{1, 3, 5}, {1, 3, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
     const std::vector<MeshHit> got = answerer::all_hits(in.segment, in.mesh);
-    Expect e;
+    Expect e("all_hits lists every triangle the segment meets, once each, sorted by t");
     e.equal("count", int(got.size()), 2);
     if (got.size() == 2) {
       e.that("first triangle", got[0].triangle == 3, std::to_string(got[0].triangle), "3",
@@ -330,7 +350,7 @@ TEST_CASE(LABKIT_STEP(L02S5) ": worked examples", "[lab02][step5]") {
                  });
   check::example(query::any_hit, "beside the squares", SegmentMeshPair{{{5, 5, 5}, {5, 5, -1}}, mesh},
                  [](const SegmentMeshPair& in) {
-    Expect e;
+    Expect e("a segment that meets no triangle: any_hit is false, first_hit has no hit, all_hits is empty");
     e.equal("any_hit", answerer::any_hit(in.segment, in.mesh), false);
     e.equal("first_hit.hit", answerer::first_hit(in.segment, in.mesh).hit, false);
     e.equal("all_hits.size()", int(answerer::all_hits(in.segment, in.mesh).size()), 0);
@@ -361,7 +381,9 @@ TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
                  MovingMesh{{{1, 1, 1}, {1, 1, 1}}, floor, RigidTransform::Identity(), up},
                  [](const MovingMesh& in) {
     const MeshHit got = answerer::first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
-    Expect e;
+    Expect e(
+        "first_hit_moving reports the hit in the world at time t: the point on the mesh at its pose then, the normal "
+        "turned by that pose's rotation only (a normal is a direction: no translation)");
     e.that("hit", got.hit, describe(got.hit), "true",
            "in the floor's own frame the particle goes from m0^-1 a = (1, 1, 1) to m1^-1 b = (1, 1, -1), "
            "through the floor: each end goes through its own pose");
@@ -379,7 +401,7 @@ TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
                  MovingMesh{{{2, 2, 1}, {3, 2, -1}}, floor, RigidTransform::Identity(), aside},
                  [](const MovingMesh& in) {
     const MeshHit got = answerer::first_hit_moving(in.segment, in.mesh, in.m0, in.m1);
-    Expect e;
+    Expect e("first_hit_moving reports the hit in the world at time t: the point on the mesh at its pose then");
     e.equal("hit", got.hit, true);
     e.near("t", got.t, 0.5, 1e-12);
     e.that("point", (got.point - Vec3(3, 2, 0)).norm() <= 1e-12, fmt(got.point), fmt(Vec3(3, 2, 0)),
@@ -387,12 +409,13 @@ TEST_CASE(LABKIT_STEP(L02S6) ": worked examples", "[lab02][step6]") {
     return e.outcome();
   });
   check::example(query::first_hit_moving, "the rising floor stops short of a falling particle",
-                 MovingMesh{{{1, 1, 3}, {1, 1, 2.5}}, floor, RigidTransform::Identity(), up}, [](const MovingMesh& in) {
-                   // In the floor's frame the particle goes from z = 3 to z = 0.5: no hit.
-                   Expect e;
-                   e.equal("hit", answerer::first_hit_moving(in.segment, in.mesh, in.m0, in.m1).hit, false);
-                   return e.outcome();
-                 });
+                 MovingMesh{{{1, 1, 3}, {1, 1, 2.5}}, floor, RigidTransform::Identity(), up},
+                 [](const MovingMesh& in) {
+    // In the floor's frame the particle goes from z = 3 to z = 0.5: no hit.
+    Expect e("first_hit_moving follows the particle in the mesh's own frame, each end through its own pose");
+    e.equal("hit", answerer::first_hit_moving(in.segment, in.mesh, in.m0, in.m1).hit, false);
+    return e.outcome();
+  });
 }
 
 TEST_CASE(LABKIT_STEP(L02S6) ": random cases", "[lab02][step6][oracle]") {
@@ -443,7 +466,7 @@ auto expect_contact(bool hit, double t, Vec3 point) {
     const MeshContact got = run_contact(in);
     const Outcome rules = judge::first_contact_moving_meshes(in, got, Rules::exact);
     if (rules.verdict == Outcome::Verdict::fail) return rules;
-    Expect e;
+    Expect e("the first contact is the earliest time the moving triangles touch, with the point where they touch then");
     e.equal("hit", got.hit, hit);
     if (hit && got.hit) {
       e.near("t", got.t, t, 1e-12);
@@ -494,7 +517,7 @@ Outcome exact_find(const SegmentTrianglePair& in) {
 auto expect_hit(double t) {
   return [t](const SegmentTrianglePair& in) {
     const SegmentTriangleHit got = answerer::find_segment_triangle(in.segment, in.triangle);
-    Expect e;
+    Expect e("a segment that meets the closed triangle hits it: t along a to b, point a + t (b - a)");
     const bool coplanar = oracle::segment_triangle(in.segment, in.triangle).coplanar;
     e.that("hit", got.hit, describe(got.hit), "true",
            coplanar ? "the segment lies in the triangle's plane, and in the plane it hits where the two meet"
@@ -510,7 +533,7 @@ auto expect_hit(double t) {
 }
 
 Outcome expect_miss(const SegmentTrianglePair& in) {
-  Expect e;
+  Expect e("a segment that misses the closed triangle is a miss for find and test alike");
   e.equal("hit", answerer::find_segment_triangle(in.segment, in.triangle).hit, false);
   e.equal("test", answerer::test_segment_triangle(in.segment, in.triangle), false);
   return e.outcome();
@@ -539,7 +562,7 @@ TEST_CASE(LABKIT_STEP(L02S8) ": touching, edges, vertices, coplanar, zero size",
 
   constexpr auto edges = query::robust_point_in_triangle;
   const auto on_boundary = [](const PointTriangle& in) {
-    Expect e;
+    Expect e("a point on an edge or a vertex is in the closed triangle: both point-in-triangle tests say yes");
     e.equal("point_in_triangle_edges", answerer::point_in_triangle_edges(in.x, in.triangle), true);
     e.equal("point_in_triangle_barycentric", answerer::point_in_triangle_barycentric(in.x, in.triangle), true);
     return e.outcome();
@@ -556,7 +579,9 @@ TEST_CASE(LABKIT_STEP(L02S8) ": shared edges and vertices in a mesh", "[lab02][s
   check::example(q, "through the shared diagonal: both triangles", SegmentMeshPair{{{2, 2, 1}, {2, 2, -1}}, floor},
                  [](const SegmentMeshPair& in) {
     const std::vector<MeshHit> got = answerer::all_hits(in.segment, in.mesh);
-    Expect e;
+    Expect e(
+        "all_hits lists every triangle the segment meets once, even through a shared edge or corner; equal t go by "
+        "triangle index");
     e.equal("count", int(got.size()), 2);
     if (got.size() == 2) {
       e.equal("order by index on a tie", got[0].triangle, 0);
@@ -566,11 +591,12 @@ TEST_CASE(LABKIT_STEP(L02S8) ": shared edges and vertices in a mesh", "[lab02][s
     return e.outcome();
   });
   check::example(q, "through the shared corner (4, 4, 0): both triangles",
-                 SegmentMeshPair{{{4, 4, 3}, {4, 4, -3}}, floor}, [](const SegmentMeshPair& in) {
-                   Expect e;
-                   e.equal("count", int(answerer::all_hits(in.segment, in.mesh).size()), 2);
-                   return e.outcome();
-                 });
+                 SegmentMeshPair{{{4, 4, 3}, {4, 4, -3}}, floor},
+                 [](const SegmentMeshPair& in) {
+    Expect e("all_hits lists every triangle the segment meets once, even through a shared edge or corner");
+    e.equal("count", int(answerer::all_hits(in.segment, in.mesh).size()), 2);
+    return e.outcome();
+  });
 }
 
 TEST_CASE(LABKIT_STEP(L02S8) ": moving meshes touching exactly", "[lab02][step8]") {

@@ -174,7 +174,7 @@ Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules) {
 }
 
 Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got) {
-  Expect e;
+  Expect e("the 15 axes are A's columns, B's columns, then A_i x B_j, unnormalised");
   for (int k = 0; k < 15; ++k) {
     const Vec3 exact = oracle::box_pair_axis(in.a, in.b, k);
     if ((got[k] - exact).norm() > 1e-12) {
@@ -211,13 +211,17 @@ Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules) {
     return fail("a unit axis", answer, "the axis has length " + fmt(got.axis.norm()) + ", not 1");
   const Vec3 numbered = oracle::box_pair_axis(in.a, in.b, got.axis_index);
   const double length = numbered.norm();
+  // The axis itself before the rules about short axes: a wrong axis (B's rows taken for
+  // its columns, a frame left out) is the mistake, whatever its length would be.
+  if (length > 0 && got.axis.cross(numbered / length).norm() > 1e-9 + direction_slack(length, got.axis_index))
+    return fail(axis_name(got.axis_index) + " = +-" + fmt(Vec3(numbered / length)), answer,
+                "the axis must be the one its index names, " + axis_name(got.axis_index) +
+                    ", in world coordinates: yours is not parallel to it (B's axes are the columns of its matrix, "
+                    "and A_i x B_j crosses the two world vectors)");
   if (got.intersecting && got.axis_index >= 6 && length < kShortest)
     return fail("a face axis or an edge axis with |A_i x B_j| >= 1e-6", answer,
                 axis_name(got.axis_index) + " has length " + fmt(length) +
                     ": nearly parallel edges are left out of the least-penetration search");
-  if (length > 0 && got.axis.cross(numbered / length).norm() > 1e-9 + direction_slack(length, got.axis_index))
-    return fail(axis_name(got.axis_index) + " = +-" + fmt(Vec3(numbered / length)), answer,
-                "the axis is not parallel to the axis its index names");
   const double offset = (in.b.center - in.a.center).dot(got.axis);
   if (offset < -tol)
     return fail("the axis pointing from A toward B", answer,

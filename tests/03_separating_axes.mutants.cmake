@@ -28,6 +28,17 @@ labkit_mutant(03 separating_axes NAME face_axes_only STEP 2 SAYS "separating axi
       if (separates(p.edge_axis(i, j))) return false;"
   REPLACE "")
 
+# Step 2: B's face axis read as a row of its rotation matrix: its axes are the columns.
+labkit_mutant(03 separating_axes NAME b_axis_from_a_row STEP 2 SAYS "B's column"
+  FIND "if (index < 6) return b.axes.col(index - 3);"
+  REPLACE "if (index < 6) return b.axes.row(index - 3).transpose();")
+
+# Step 2: the centres' offset c_B - c_A left in world coordinates while R and the radii are
+# in A's frame: it must be expressed in A's frame too, t = A^T (c_B - c_A).
+labkit_mutant(03 separating_axes NAME offset_not_in_a_frame STEP 2 SAYS "projections"
+  FIND "t(box_a.axes.transpose() * (box_b.center - box_a.center)),"
+  REPLACE "t(box_b.center - box_a.center),")
+
 labkit_mutant(03 separating_axes NAME depth_not_normalized STEP 3 SAYS "unit axis" "divide by |L|"
   FIND "c.depth = (x.r - std::abs(x.s)) / length;"
   REPLACE "c.depth = x.r - std::abs(x.s);")

@@ -24,6 +24,12 @@ labkit_mutant(04 bisection NAME magic_epsilon STEP 1 SAYS "epsilon" "clear"
   FIND "return squared_distance(b, a.center) <= a.radius * a.radius;"
   REPLACE "return squared_distance(b, a.center) <= a.radius * a.radius + 1e-9;")
 
+# Step 1: the closest point clamped in the box's own axes and left there: its local
+# coordinates returned, never taken back to the world (centre + sum of s_k axis_k).
+labkit_mutant(04 bisection NAME closest_point_left_local STEP 1 SAYS "taken back to the world"
+  FIND "q += std::clamp(d.dot(box.axes.col(k)), -h, h) * box.axes.col(k);"
+  REPLACE "q[k] = std::clamp(d.dot(box.axes.col(k)), -h, h);")
+
 labkit_mutant(04 bisection NAME returns_the_overlapping_end STEP 2 SAYS "last clear time" "overlapping end"
   FIND "  r.t = lo;
   r.t_contact = hi;"
@@ -50,6 +56,11 @@ labkit_mutant(04 bisection NAME halves_to_zero STEP 2 SAYS "log2" "tolerance"
   FIND "while (hi - lo > tolerance) {"
   REPLACE "while (hi - lo > 0) {")
 
+# Step 3: a sphere's smallest size taken as its radius: a sphere is as thin as its diameter.
+labkit_mutant(04 bisection NAME sphere_size_is_radius STEP 3 SAYS "diameter" "1/2 of the answer"
+  FIND "if (shape.kind == Shape::Kind::sphere) return 2 * shape.sphere.radius;"
+  REPLACE "if (shape.kind == Shape::Kind::sphere) return shape.sphere.radius;")
+
 labkit_mutant(04 bisection NAME substeps_not_strict STEP 3 SAYS "strict"
   FIND "return int(std::floor(ratio)) + 1;"
   REPLACE "return std::max(1, int(std::ceil(ratio)));")
@@ -58,6 +69,12 @@ labkit_mutant(04 bisection NAME substeps_not_strict STEP 3 SAYS "strict"
 labkit_mutant(04 bisection NAME closing_speed_of_the_fastest STEP 3 SAYS "relative speed" "sum"
   FIND "return speed_a + speed_b;"
   REPLACE "return std::max(speed_a, speed_b);")
+
+# Step 3: a box's reach taken as its bounding sphere's radius |h| about its own centre: the
+# header's reach is from the body's origin, |c| + |h|, and a box set off its origin orbits.
+labkit_mutant(04 bisection NAME box_reach_from_its_centre STEP 3 SAYS "each over its reach"
+  FIND "const double reach_b = b.kind == Shape::Kind::sphere ? reach(b.sphere) : reach(b.box);"
+  REPLACE "const double reach_b = b.kind == Shape::Kind::sphere ? reach(b.sphere) : b.box.half_extents.norm();")
 
 labkit_mutant(04 bisection NAME bisects_from_the_start STEP 3 SAYS "first overlapping sub-step"
   FIND "TimeOfImpact r = halve(pair, previous, tk, tolerance);"

@@ -18,6 +18,12 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
+// The header's input domain (every length 0 or of magnitude from 1e-100 to 1e100): shrinking a failing case stays in it.
+const bool kDomain = [] {
+  check::domain({check::Domain::Of::each, 1e-100, 1e100});
+  return true;
+}();
+
 namespace {
 
 // ---- The handout's scenes ------------------------------------------------------------------
@@ -61,30 +67,26 @@ RigidTransform quarter_turn_then(const Vec3& shift) {
   return m;
 }
 
-// A worked example's numbers, with the rule that yields them as the why of a mismatch.
-Outcome because(const Expect& e, const std::string& rule) {
-  Outcome o = e.outcome();
-  if (o.verdict == Outcome::Verdict::fail && !rule.empty()) o.why = rule + " (" + o.why + ")";
-  return o;
-}
 std::string yes_no(bool b) { return b ? "true" : "false"; }
 
 // Expectations of a search's answer.
 auto expect_hit(double t, double t_contact, int steps, int iterations, const std::string& rule = "") {
   return [=](const TimeOfImpact& got) {
-    Expect e;
+    Expect e(rule.empty() ? "the search returns t, the last time found clear, and t_contact, the first found "
+                            "overlapping, within the tolerance"
+                          : rule);
     e.equal("hit", got.hit, true);
     e.equal("overlapping_at_start", got.overlapping_at_start, false);
     e.near("t", got.t, t, 1e-12);
     e.near("t_contact", got.t_contact, t_contact, 1e-12);
     e.equal("steps", got.steps, steps);
     e.equal("iterations", got.iterations, iterations);
-    return because(e, rule);
+    return e.outcome();
   };
 }
 auto expect_no_hit(double t1, int steps) {
   return [=](const TimeOfImpact& got) {
-    Expect e;
+    Expect e("a motion that never overlaps is no hit, with t the end of the interval");
     e.equal("hit", got.hit, false);
     e.near("t", got.t, t1, 0);
     e.equal("steps", got.steps, steps);
@@ -93,7 +95,7 @@ auto expect_no_hit(double t1, int steps) {
 }
 auto expect_start(double t0) {
   return [=](const TimeOfImpact& got) {
-    Expect e;
+    Expect e("bodies that overlap at t0 are a hit at the start: overlapping_at_start, t = t_contact = t0");
     e.equal("hit", got.hit, true);
     e.equal("overlapping_at_start", got.overlapping_at_start, true);
     e.near("t", got.t, t0, 0);
@@ -185,25 +187,26 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   check::example(query::placed, "a quarter turn, then 5 along x", Sphere{{1, 0, 0}, 2}, [=](const Sphere& in) {
     const Sphere s = answerer::placed(in, pose);
     const Box b = answerer::placed(Box{in.center, Mat3::Identity(), {2, 1, 1}}, pose);
-    Expect e;
+    const std::string rule =
+        "a pose moves a centre by the whole pose and turns a box's axes by its rotation, pose.linear() * axes; "
+        "sizes stay";
+    Expect e(rule);
     e.near("sphere centre", s.center, Vec3(5, 1, 0), 1e-12);
     e.near("sphere radius", s.radius, 2, 0);
     e.near("box centre", b.center, Vec3(5, 1, 0), 1e-12);
     const bool turned =
         (Vec3(b.axes.col(0)) - Vec3(0, 1, 0)).norm() <= 1e-12 && (Vec3(b.axes.col(1)) - Vec3(-1, 0, 0)).norm() <= 1e-12;
     e.that("box axes 0, 1", turned, fmt(Vec3(b.axes.col(0))) + ", " + fmt(Vec3(b.axes.col(1))), "(0, 1, 0), (-1, 0, 0)",
-           "the quarter turn takes axis x to y");
+           rule + " (the quarter turn takes axis x to y)");
     e.near("box half extents", b.half_extents, Vec3(2, 1, 1), 0);
-    return because(e,
-                   "a pose moves a centre by the whole pose and turns a box's axes by its rotation, "
-                   "pose.linear() * axes; sizes stay");
+    return e.outcome();
   });
 
   const std::string closed = "sets are closed, touching counts: overlap <=> |c_a - c_b|^2 <= (r_a + r_b)^2";
   const auto spheres = [closed](bool expected) {
     return [=](const Sphere& b) {
       const bool got = answerer::overlap(Sphere{Vec3::Zero(), 1}, b);
-      Expect e;
+      Expect e("sets are closed, touching counts");
       e.that("overlap", got == expected, yes_no(got), yes_no(expected), closed);
       return e.outcome();
     };
@@ -216,7 +219,9 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   const Box wall{{4, 0, 0}, Mat3::Identity(), {4, 4, 4}};
   const auto nearest = [](const Vec3& expected) {
     return [expected](const PointBox& in) {
-      Expect e;
+      Expect e(
+          "the closest point of a box to x is x clamped to the box in the box's own axes, then taken back to the "
+          "world");
       e.near("closest point", answerer::closest_point(in.box, in.point), expected, 1e-12);
       return e.outcome();
     };
@@ -231,7 +236,7 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
   const auto sphere_box = [wall](bool expected) {
     return [wall, expected](const Sphere& a) {
       const bool got = answerer::overlap(a, wall);
-      Expect e;
+      Expect e("sets are closed, touching counts");
       e.that("overlap", got == expected, yes_no(got), yes_no(expected),
              "sets are closed, touching counts: overlap <=> |c - closest_point(box, c)|^2 <= r^2, the closest point "
              "clamped in the box's own axes");
@@ -250,7 +255,7 @@ TEST_CASE(LABKIT_STEP(L04S1) ": worked examples", "[lab04][step1]") {
       const bool got_t0 = answerer::overlap_at(pair, in.times.t0), got_t1 = answerer::overlap_at(pair, in.times.t1);
       const Outcome o = judge::overlap_at(in, got_t0, got_t1);
       if (o.verdict == Outcome::Verdict::fail) return o;
-      Expect e;
+      Expect e("overlap_at(t) places both bodies at time t and tests those shapes");
       e.equal("overlap_at(t0)", got_t0, at_t0);
       e.equal("overlap_at(t1)", got_t1, at_t1);
       return e.outcome();
@@ -294,7 +299,7 @@ TEST_CASE(LABKIT_STEP(L04S2) ": worked examples", "[lab04][step2]") {
     for (double t : *recording.asked)
       if (t != in.times.t0 && t != in.times.t1 && std::find(midpoints.begin(), midpoints.end(), t) == midpoints.end())
         midpoints.push_back(t);
-    Expect e;
+    Expect e("bisection asks the midpoint of the bracket each time, halving it, in the lecture's order");
     e.equal("times asked besides t0 and t1", int(midpoints.size()), 5);
     const double lecture[] = {0.5, 0.25, 0.375, 0.4375, 0.40625};
     for (std::size_t k = 0; k < std::min<std::size_t>(5, midpoints.size()); ++k)
@@ -320,7 +325,8 @@ TEST_CASE(LABKIT_STEP(L04S2) ": random cases", "[lab04][step2][oracle]") {
 TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
   check::example(query::smallest_size, "a sphere's diameter, a box's thinnest extent", bullet_and_window(1.0 / 64),
                  [](const MovingPairCase& in) {
-    Expect e;
+    Expect e(
+        "a shape's smallest size is its thinnest width: a sphere's diameter 2 r, a box's smallest full extent 2 h");
     e.near("bullet", answerer::smallest_size(shape_of(in.a)), 0.25, 0);
     e.near("window", answerer::smallest_size(shape_of(in.b)), 0.5, 0);
     return e.outcome();
@@ -330,7 +336,8 @@ TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
       const int got = answerer::substeps_for(in.max_speed, in.step, in.smallest_size);
       const Outcome o = judge::substeps_for(in, got, Rules::exact);
       if (o.verdict == Outcome::Verdict::fail) return o;
-      Expect e;
+      Expect e(
+          "substeps = ceil(max_speed step / smallest_size): no sub-step moves a body further than its smallest size");
       e.equal("substeps", got, expected);
       return e.outcome();
     };
@@ -352,7 +359,7 @@ TEST_CASE(LABKIT_STEP(L04S3) ": worked examples", "[lab04][step3]") {
     const double got = run_closing_speed(in);
     const Outcome o = judge::closing_speed(in, got);
     if (o.verdict == Outcome::Verdict::fail) return o;
-    Expect e;
+    Expect e("two bodies close on each other at most at the sum of their max speeds");
     e.near("closing_speed", got, 6, 0);
     return e.outcome();
   });
@@ -381,7 +388,7 @@ TEST_CASE(LABKIT_STEP(L04S3) ": random cases", "[lab04][step3][oracle]") {
 
 TEST_CASE(LABKIT_STEP(L04S4) ": worked examples", "[lab04][step4]") {
   const auto surfaces = [](double got, double expected, double radii) {
-    Expect e;
+    Expect e("the distance between the closed bodies is the gap between their surfaces");
     e.that("distance", std::abs(got - expected) <= 1e-12, fmt(got), fmt(expected),
            "the distance between the closed bodies is the gap between their surfaces (0 when they overlap)" +
                std::string(std::abs(got - expected - radii) <= 1e-12 ? ": yours is larger by the radii, measured "
@@ -405,7 +412,7 @@ TEST_CASE(LABKIT_STEP(L04S4) ": worked examples", "[lab04][step4]") {
   check::example(query::distance_at, "the ball at t = 0 and at t = 0.3125", ball_and_wall(0, 0.3125, 1),
                  [](const MovingPairCase& in) {
     const MovingPair pair = pair_of(in);
-    Expect e;
+    Expect e("distance_at(t) is the gap between the bodies' surfaces at time t, each body at its pose then");
     e.near("distance_at(0)", answerer::distance_at(pair, 0), 5, 1e-12);
     e.near("distance_at(0.3125)", answerer::distance_at(pair, 0.3125), 1.25, 1e-12);
     return e.outcome();
@@ -442,7 +449,7 @@ TEST_CASE(LABKIT_STEP(L04S5) ": touching, grazing, zero sizes", "[lab04][step5]"
   const auto overlapping = [](bool expected) {
     return [expected](const MovingPairCase& in) {
       const bool got = answerer::overlap_at(pair_of(in), 0);
-      Expect e;
+      Expect e("sets are closed: bodies that touch at t overlap at t");
       e.equal("overlap_at(0)", got, expected);
       const Outcome o = e.outcome();
       return o.verdict == Outcome::Verdict::fail ? o : judge::overlap_at(in, got, got, Rules::exact);
@@ -470,7 +477,7 @@ TEST_CASE(LABKIT_STEP(L04S5) ": touching, grazing, zero sizes", "[lab04][step5]"
                  [=](const MovingPairCase& in) {
     const Outcome touch = overlapping(true)(in);
     if (touch.verdict == Outcome::Verdict::fail) return touch;
-    Expect e;
+    Expect e("touching bodies are 0 apart");
     e.near("distance_at(0)", answerer::distance_at(pair_of(in), 0), 0, 0);
     return e.outcome();
   });

@@ -80,7 +80,7 @@ Outcome distance_verdict(const oracle::SquaredDistance& exact, double got_square
                     ", is " + fmt(d - got) + " below it (tolerance " + fmt(tol) +
                     "), so no pair of their points is that close (a point outside its shape? clamp t to [0, 1], "
                     "s and t to the half-sizes)");
-  Expect e;
+  Expect e("the closest pair is the pair of points, one on each shape, with the least distance");
   shape_checks(e);
   const oracle::SquaredDistance pair = oracle::squared_distance(p0, p1);
   e.that("closest pair", pair.compare(d, tol) <= 0,
@@ -95,7 +95,8 @@ void check_segment_point(Expect& e, const char* name, const Segment& s, double t
   const std::string range = parameter_range_problem(t, 0.0, 1.0, t_name);
   e.that(t_name, range.empty(), fmt(t), "a parameter in [0, 1]", range);
   e.that(name, oracle::parameter_reproduces(s, t, p, tol), fmt(p), std::string("a + ") + t_name + " (b - a)",
-         std::string("a + ") + t_name + " (b - a) is " + fmt((s.point(t) - p).norm()) + " away from " + name);
+         std::string(name) + " must be the segment's point a + " + t_name + " (b - a) at your " + t_name + ": it is " +
+             fmt((s.point(t) - p).norm()) + " away from it");
 }
 
 void check_rectangle_point(Expect& e, const char* name, const Rectangle& r, double s, double t, const Vec3& p,
@@ -104,13 +105,31 @@ void check_rectangle_point(Expect& e, const char* name, const Rectangle& r, doub
       parameter_range_problem(s, -r.half_u, r.half_u, "s") + parameter_range_problem(t, -r.half_v, r.half_v, "t");
   e.that("s, t", range.empty(), fmt(s) + ", " + fmt(t), "|s| <= half_u and |t| <= half_v", range);
   e.that(name, oracle::rectangle_point_reproduces(r, s, t, p, tol), fmt(p), "center + s u + t v",
-         "center + s u + t v is " + fmt((r.center + s * r.u + t * r.v - p).norm()) + " away from " + name);
+         std::string(name) + " must be the rectangle's point center + s u + t v at your s and t: it is " +
+             fmt((r.center + s * r.u + t * r.v - p).norm()) + " away from it");
 }
 
 void check_on_rectangle(Expect& e, const char* name, const Rectangle& r, const Vec3& p, double tol) {
   const oracle::SquaredDistance d = oracle::squared_distance(p, r);
   e.that(name, d.compare(tol) <= 0, fmt(p), "a point of the rectangle",
-         std::string(name) + " is " + fmt(d.distance()) + " from the rectangle (tolerance " + fmt(tol) + ")");
+         std::string(name) +
+             " must be a point of its rectangle (a closest pair is one point on each shape): yours "
+             "is " +
+             fmt(d.distance()) + " from it (tolerance " + fmt(tol) + ")");
+}
+
+// closest0 on the second shape and closest1 on the first: the roles swapped, as after a
+// call made with the shapes the other way round whose points were not swapped back.
+template <class Shape>
+void check_not_swapped(Expect& e, const Shape& first, const Shape& second, const Vec3& closest0, const Vec3& closest1,
+                       double tol) {
+  const auto on = [tol](const Vec3& p, const Shape& shape) {
+    return oracle::squared_distance(p, shape).compare(tol) <= 0;
+  };
+  const bool swapped = !on(closest0, first) && !on(closest1, second) && on(closest0, second) && on(closest1, first);
+  e.that("closest0, closest1", !swapped, fmt(closest0) + ", " + fmt(closest1), "a point of the first, of the second",
+         "closest0 is the point on the first shape and closest1 the point on the second: yours are swapped (after "
+         "a call with the shapes the other way round, swap its points back)");
 }
 
 using check::verdict;
@@ -239,6 +258,7 @@ Outcome segment_segment(const SegmentPair& in, const SegmentSegmentDistance& got
   const double tol = kRelative * scale(in);
   Outcome o = distance_verdict(oracle::squared_distance(in.first, in.second), got.squared_distance, got.closest0,
                                got.closest1, tol, [&](Expect& e) {
+                                 check_not_swapped(e, in.first, in.second, got.closest0, got.closest1, tol);
                                  check_segment_point(e, "closest0", in.first, got.s, "s", got.closest0, tol);
                                  check_segment_point(e, "closest1", in.second, got.t, "t", got.closest1, tol);
                                });
@@ -273,6 +293,7 @@ Outcome rectangle_rectangle(const RectanglePair& in, const RectangleRectangleDis
   const double tol = kRelative * scale(in);
   return distance_verdict(oracle::squared_distance(in.first, in.second), got.squared_distance, got.closest0,
                           got.closest1, tol, [&](Expect& e) {
+                            check_not_swapped(e, in.first, in.second, got.closest0, got.closest1, tol);
                             check_on_rectangle(e, "closest0", in.first, got.closest0, tol);
                             check_on_rectangle(e, "closest1", in.second, got.closest1, tol);
                           });

@@ -58,7 +58,7 @@ struct Facts {
 // A shape whose value f0 + g t against the plane (|n| times the centre's signed distance)
 // must come within reach (|n| times its radius): the facts of steps 4 and 6.
 Facts plane_facts(const Plane& given, const Vec3& c, const Vec3& v, double reach_unit, double signed_reach_unit,
-                  const Sweep& got, double duration) {
+                  double bounding_unit, const Sweep& got, double duration) {
   const Plane p = scaled(given);
   const double n = p.normal.norm(), f0 = p.value(c), g = p.normal.dot(v), sigma = f0 >= 0 ? 1.0 : -1.0;
   Facts f;
@@ -80,6 +80,22 @@ Facts plane_facts(const Plane& given, const Vec3& c, const Vec3& v, double reach
     if (got.status == SweepStatus::contact && std::abs(got.time - would_time) <= 1e-6 * std::max(1.0, would_time))
       f.wrong_time = unit;
   }
+  // The reach the answered time implies: none (the centre's own time: the plane not
+  // offset by the reach), or a box's bounding sphere |h| in place of its reach.
+  if (f.wrong_time.empty() && got.status == SweepStatus::contact && std::isfinite(got.time)) {
+    const double implied = std::abs(f0 + g * got.time) / n;
+    const double close = 1e-6 * std::max({reach_unit, bounding_unit, std::abs(f0) / n});
+    if (reach_unit > close && implied <= close)
+      f.wrong_time =
+          " (your time is when the centre itself reaches the plane: the shape touches it when its centre "
+          "is its reach " +
+          fmt(reach_unit) + " away, so offset the plane by the reach)";
+    else if (bounding_unit > reach_unit * (1 + 1e-6) && std::abs(implied - bounding_unit) <= close)
+      f.wrong_time =
+          " (your time is when the box's bounding sphere, radius |h| = " + fmt(bounding_unit) +
+          ", touches the plane: the box itself reaches only rho = sum_i h_i |n . axis_i| / |n| = " + fmt(reach_unit) +
+          " toward it)";
+  }
   if (f.wrong_status.empty() && sigma < 0 && got.status == SweepStatus::none)
     f.wrong_status =
         " (the centre starts behind the plane, n . c + offset < 0: the plane is two-sided, and it is "
@@ -94,7 +110,8 @@ Facts plane_facts(const Plane& given, const Vec3& c, const Vec3& v, double reach
 }
 
 Facts facts(const SpherePlaneMotion& in, const Sweep& got) {
-  return plane_facts(in.plane, in.sphere.center, in.velocity, in.sphere.radius, in.sphere.radius, got, in.duration);
+  return plane_facts(in.plane, in.sphere.center, in.velocity, in.sphere.radius, in.sphere.radius, in.sphere.radius, got,
+                     in.duration);
 }
 
 Facts facts(const BoxPlaneMotion& in, const Sweep& got) {
@@ -104,7 +121,8 @@ Facts facts(const BoxPlaneMotion& in, const Sweep& got) {
     reach += in.box.half_extents[i] * std::abs(unit.dot(in.box.axes.col(i)));
     signed_reach += in.box.half_extents[i] * unit.dot(in.box.axes.col(i));
   }
-  return plane_facts(in.plane, in.box.center, in.velocity, reach, std::abs(signed_reach), got, in.duration);
+  return plane_facts(in.plane, in.box.center, in.velocity, reach, std::abs(signed_reach), in.box.half_extents.norm(),
+                     got, in.duration);
 }
 
 Facts facts(const SphereSphereMotion& in, const Sweep& got) {

@@ -22,6 +22,12 @@ labkit_mutant(05 sphere_sweeps NAME ends_only STEP 2 SAYS "nearer pair" "four si
   FIND "for (int i = 0; i < 4; ++i) {\n    const SegmentSegmentDistance e = segment_segment(segment, side(rectangle, i));"
   REPLACE "for (int i = 0; i < 0; ++i) {\n    const SegmentSegmentDistance e = segment_segment(segment, side(rectangle, i));")
 
+# Step 2: rectangle_rectangle asks segment_rectangle with B's side first (B against A) and
+# keeps its points as they come: closest0 lands on the second rectangle, closest1 on the first.
+labkit_mutant(05 sphere_sweeps NAME swapped_call_not_swapped_back STEP 2 SAYS "closest0" "swapped"
+  FIND "if (e.squared_distance < best.squared_distance) best = {e.squared_distance, e.closest1, e.closest0};"
+  REPLACE "if (e.squared_distance < best.squared_distance) best = {e.squared_distance, e.closest0, e.closest1};")
+
 # Step 3: r0^2 + r1^2 instead of (r0 + r1)^2.
 labkit_mutant(05 sphere_sweeps NAME sum_of_squares STEP 3 SAYS "(r0 + r1)^2"
   FIND "return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));"
@@ -52,6 +58,12 @@ labkit_mutant(05 sphere_sweeps NAME one_sided_plane STEP 4 SAYS "two-sided"
 labkit_mutant(05 sphere_sweeps NAME plane_later_root STEP 4 SAYS "later root"
   FIND "a.time = std::clamp((a.side * f0 - reach) / (-a.side * g), 0.0, duration);"
   REPLACE "a.time = std::clamp((a.side * f0 + reach) / (-a.side * g), 0.0, duration);")
+
+# Step 4: the plane not offset by the radius: the time the centre reaches the plane itself,
+# after the sphere has already cut into it.
+labkit_mutant(05 sphere_sweeps NAME centre_reaches_plane STEP 4 SAYS "gap reaches 0" "centre itself reaches the plane"
+  FIND "const PlaneApproach a = approach_plane(f0, g, r * std::sqrt(nn), square(r) * nn, duration);"
+  REPLACE "const PlaneApproach a = approach_plane(f0, g, 0.0, 0.0, duration);")
 
 # Step 5: the textbook root (-b - sqrt(b^2 - ac)) / a, which cancels when contact is soon.
 labkit_mutant(05 sphere_sweeps NAME cancelling_root STEP 5 SAYS "cancel"
@@ -107,3 +119,9 @@ labkit_mutant(05 sphere_sweeps NAME signed_projection STEP 7 SAYS "absolute valu
 labkit_mutant(05 sphere_sweeps NAME decide_on_rounded_distance STEP 8 SAYS "exact products"
   FIND "return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));"
   REPLACE "return segment_segment(a.axis, b.axis).squared_distance <= square(a.radius + b.radius);")
+
+# Step 7: a box's reach toward the plane taken as its bounding sphere's radius |h|: it
+# meets the plane too early.
+labkit_mutant(05 sphere_sweeps NAME box_bounding_sphere STEP 7 SAYS "bounding sphere"
+  FIND "for (int i = 0; i < 3; ++i) reach += box.half_extents[i] * std::abs(plane.normal.dot(box.axes.col(i)));"
+  REPLACE "reach = box.half_extents.norm() * plane.normal.norm();")

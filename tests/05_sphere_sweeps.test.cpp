@@ -14,6 +14,12 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
+// The header's input domain (S 0 or in [1e-40, 1e40]): shrinking a failing case stays in it.
+const bool kDomain = [] {
+  check::domain({check::Domain::Of::scale, 1e-40, 1e40});
+  return true;
+}();
+
 namespace {
 
 constexpr double kExample = 1e-12;  // worked examples: hand arithmetic, to rounding
@@ -80,7 +86,9 @@ auto expect_sweep(SweepStatus status, double time = 0.0, std::optional<Vec3> poi
                   double time_tolerance = kExample) {
   return [=](const Motion& in) {
     const Sweep got = run(in);
-    Expect e;
+    Expect e(
+        "a sweep reports whether the shapes are apart, overlapping at t = 0, or in contact, and the first time of "
+        "contact");
     e.equal("status", got.status, status);
     if (status == SweepStatus::contact && got.status == status) {
       e.near("time", got.time, time, time_tolerance);
@@ -103,7 +111,7 @@ bool test(const LozengePair& p) { return answerer::test_lozenge_lozenge(p.a, p.b
 
 template <class Pair> auto expect_test(bool meet) {
   return [meet](const Pair& in) {
-    Expect e;
+    Expect e("sets are closed: shapes that touch meet");
     e.equal("meet", test(in), meet);
     return both(e, judge::test_pair(in, test(in), Rules::exact));
   };
@@ -128,7 +136,7 @@ TEST_CASE(LABKIT_STEP(L05S1) ": worked examples", "[lab05][step1]") {
   const auto point = [](double t, Vec3 closest, double d2) {
     return [=](const PointSegmentPair& in) {
       const PointSegmentDistance got = answerer::point_segment(in.p, in.segment);
-      Expect e;
+      Expect e("the closest point of a segment to p is at t, the projection of p on the line clamped to [0, 1]");
       e.near("t", got.t, t, kExample);
       e.near("closest", got.closest, closest, kExample);
       e.near("squared_distance", got.squared_distance, d2, kExample);
@@ -147,7 +155,9 @@ TEST_CASE(LABKIT_STEP(L05S1) ": worked examples", "[lab05][step1]") {
   const auto pair = [](double s, double t, double d2) {
     return [=](const SegmentPair& in) {
       const SegmentSegmentDistance got = answerer::segment_segment(in.first, in.second);
-      Expect e;
+      Expect e(
+          "the closest points of two segments are at s and t, each clamped to [0, 1], with the squared distance "
+          "between them");
       e.near("squared_distance", got.squared_distance, d2, kExample);
       e.near("s", got.s, s, kExample);
       e.near("t", got.t, t, kExample);
@@ -167,7 +177,7 @@ TEST_CASE(LABKIT_STEP(L05S1) ": worked examples", "[lab05][step1]") {
   check::example(query::segment_segment, "parallel, overlapping: any closest pair",
                  SegmentPair{kAxis, {{2, 3, 0}, {6, 3, 0}}},
                  [](const SegmentPair& in) {
-    Expect e;
+    Expect e("parallel overlapping segments: any closest pair, at the lines' distance");
     e.near("squared_distance", answerer::segment_segment(in.first, in.second).squared_distance, 9, kExample);
     return both(e, run_segment_segment(in));
   });
@@ -186,7 +196,9 @@ TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
   const auto point = [](double s, double t, double d2) {
     return [=](const PointRectanglePair& in) {
       const PointRectangleDistance got = answerer::point_rectangle(in.p, in.rectangle);
-      Expect e;
+      Expect e(
+          "the closest point of a rectangle to p is at (s, t), p's coordinates in the rectangle's axes clamped to its "
+          "half-sizes");
       e.near("s", got.s, s, kExample);
       e.near("t", got.t, t, kExample);
       e.near("squared_distance", got.squared_distance, d2, kExample);
@@ -203,7 +215,7 @@ TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
 
   const auto segment = [](double d2) {
     return [=](const SegmentRectanglePair& in) {
-      Expect e;
+      Expect e("the distance between a segment and a rectangle is the smallest over their points");
       e.near("squared_distance", answerer::segment_rectangle(in.segment, in.rectangle).squared_distance, d2, kExample);
       return both(e, run_segment_rectangle(in));
     };
@@ -211,7 +223,7 @@ TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
   check::example(query::segment_rectangle, "piercing it: distance 0 at r = 1/4",
                  SegmentRectanglePair{{{1, 0, -1}, {1, 0, 3}}, kFloor}, [](const SegmentRectanglePair& in) {
                    const SegmentRectangleDistance got = answerer::segment_rectangle(in.segment, in.rectangle);
-                   Expect e;
+                   Expect e("a segment that pierces the rectangle is 0 away, at the r where it crosses");
                    e.near("squared_distance", got.squared_distance, 0, kExample);
                    e.near("r", got.r, 0.25, kExample);
                    e.near("closest1", got.closest1, Vec3(1, 0, 0), kExample);
@@ -226,7 +238,7 @@ TEST_CASE(LABKIT_STEP(L05S2) ": worked examples", "[lab05][step2]") {
 
   const auto rectangles = [](double d2) {
     return [=](const RectanglePair& in) {
-      Expect e;
+      Expect e("the distance between two rectangles is the smallest over their points");
       e.near("squared_distance", answerer::rectangle_rectangle(in.first, in.second).squared_distance, d2, kExample);
       return both(e, run_rectangle_rectangle(in));
     };
@@ -360,7 +372,7 @@ TEST_CASE(LABKIT_STEP(L05S5) ": worked examples", "[lab05][step5]") {
   check::example(q, "a hair apart, closing fast: contact very soon",
                  SS{{kHair, 1}, {-1, -2, -2}, {{0, 0, 0}, 2}, {0, 0, 0}, 1}, [](const SS& in) {
                    const Sweep got = run(in);
-                   Expect e;
+                   Expect e("a sweep reports the first time of contact, however close the shapes start");
                    e.equal("status", got.status, SweepStatus::contact);
                    e.near("time", got.time, kHairTime, 1e-9 * kHairTime);
                    return both(e, run_sweep(in, Rules::exact));
@@ -459,7 +471,7 @@ TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
   constexpr auto q = query::robust_segment_segment;
   check::example(q, "collinear and overlapping: distance 0", SegmentPair{kAxis, {{2, 0, 0}, {7, 0, 0}}},
                  [](const SegmentPair& in) {
-    Expect e;
+    Expect e("collinear overlapping segments are 0 apart");
     e.near("squared_distance", answerer::segment_segment(in.first, in.second).squared_distance, 0, kExample);
     return both(e, run_segment_segment(in));
   });

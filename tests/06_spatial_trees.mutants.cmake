@@ -36,6 +36,12 @@ labkit_mutant(06 spatial_trees NAME far_child_behind_a STEP 2 SAYS "t_split" "fa
   FIND "if (t_split > span.t1 || t_split <= 0) {"
   REPLACE "if (t_split > span.t1) {")
 
+# Step 2: any_hit walks on after its first hit, testing every triangle the walk meets
+# (and keeping the last hit), where it should stop at the first one.
+labkit_mutant(06 spatial_trees NAME any_hit_walks_on STEP 2 SAYS "stops at its first hit"
+  FIND "return -kInfinity;  // stop the walk"
+  REPLACE "continue;  // walks on after its first hit")
+
 # Step 3: a point on a node's plane is sent in front, as if it were off the plane.
 labkit_mutant(06 spatial_trees NAME on_plane_goes_front STEP 3 SAYS "side = 0" "both subtrees"
   FIND "if (side > 0) {"
@@ -96,6 +102,12 @@ labkit_mutant(06 spatial_trees NAME bvh_descends_b_at_tie STEP 7 SAYS "equal vol
 labkit_mutant(06 spatial_trees NAME bvh_stops_at_first_pair STEP 7 SAYS "every pair"
   FIND "if (!every) return out;"
   REPLACE "return out;")
+
+# Step 7: two leaves' triangles tested without testing the leaves' boxes first: the box
+# test only before descending, so leaves whose boxes are apart still test their pairs.
+labkit_mutant(06 spatial_trees NAME bvh_leaf_boxes_untested STEP 7 SAYS "leaves' boxes overlap"
+  FIND "++out.box_tests;\n    if (!given_boxes_overlap(na.box, nb.box)) continue;"
+  REPLACE "const bool both_leaves = na.left < 0 && nb.left < 0;\n    if (!both_leaves) ++out.box_tests;\n    if (!both_leaves && !given_boxes_overlap(na.box, nb.box)) continue;")
 
 # Step 8: the tree stops splitting at depth 2: leaves of thousands of triangles. Every
 # answer is still right; only the count of tests gives it away.

@@ -120,7 +120,9 @@ Outcome aim(const LaunchCase& in, const Aim& got, Rules rules) {
   }
   const Vec3 d = in.target - in.from;
   const double g = in.gravity.norm();
-  Expect e;
+  Expect e(
+      "tan(angle) = (v^2 +- sqrt(D)) / (g x) with D = v^4 + 2 v^2 (d . g) - |d x g|^2; each angle's velocity and "
+      "flight time follow from it");
   const bool vertical = in.speed == 0 || oracle::launch_vertical(in.from, in.target, in.gravity);
   const double radicand = oracle::launch_radicand(in.from, in.target, in.speed, in.gravity);
   if (!std::isfinite(got.radicand) || !std::isfinite(got.low.angle) || !std::isfinite(got.high.angle) ||

@@ -19,7 +19,9 @@ Outcome impulse(const ImpulseCase& in, const Impulse& got) {
   // v_close's sign is in doubt when moving every velocity by 1e-9 V, and the normal by
   // 1e-9, could flip it.
   const bool doubt = std::abs(exact.v_close) <= closing_band(in);
-  Expect e;
+  Expect e(
+      "j_n = -(1 + e) m v_close n with v_close = (v - v_obj) . n; friction opposes the sliding with min(mu |j_n|, m "
+      "|v_t|)");
   if (got.closing != exact.closing && !doubt)
     return fail("closing = " + describe(exact.closing), "closing = " + describe(got.closing),
                 "v_close = (v - v_obj) . n = " + fmt(exact.v_close) + ": the particle is " +
@@ -74,7 +76,8 @@ Outcome collide(const CollideCase& in, const Collision& got) {
         return fail(o.expected, answer,
                     o.why + " (a hit there is another bounce, or the stop when the cap is used up)");
       doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
-      Expect e;
+      Expect e(
+          "after each hit the particle moves on from the hit point, with the new velocity, for the remaining time");
       e.that("position", (got.position - piece.b).norm() <= tol, fmt(got.position), fmt(piece.b),
              "the particle must end where " + where + " ends, " + fmt(piece.b) +
                  ": after each hit it moves on from the hit point for the remaining time (1 - t) r only (tolerance " +
@@ -95,7 +98,7 @@ Outcome collide(const CollideCase& in, const Collision& got) {
       return fail(fmt(b.hit.point), fmt(b.from),
                   "bounce " + std::to_string(k) + ": `from` must be the hit point (settled by at most tol)");
     if (k == got.bounces) {  // the stop
-      Expect e;
+      Expect e("the bounce cap: after bounce_cap impulses the next hit stops the particle, at rest on the surface");
       e.that("position", (got.position - b.from).norm() <= tol, fmt(got.position), fmt(b.from),
              "a stopped particle stays at its stopping hit's `from`");
       e.that("velocity", (got.velocity - u).norm() <= tol_v, fmt(got.velocity), fmt(u),

@@ -123,7 +123,7 @@ Outcome emit(const EmitCase& in, const std::vector<Particle>& first, const std::
       return fail("a lifetime in [" + fmt(em.lifetime - em.lifetime_spread) + ", " +
                       fmt(em.lifetime + em.lifetime_spread) + "]",
                   fmt(p.lifetime), which + "its lifetime is out of the emitter's range");
-    Expect e;
+    Expect e("a particle is born with the emitter's mass, age 0, alive, and previous = position");
     e.equal("mass", p.mass, em.mass);
     e.equal("age", p.age, 0.0);
     e.equal("alive", p.alive, true);
@@ -211,9 +211,9 @@ double acceleration_size(const MotionCase& in) {
          (std::abs(in.forces.drag) * v + std::abs(in.forces.air_drag) * v * v) / in.particle.mass;
 }
 
-Outcome compare_particle(const MotionCase& in, const oracle::State& exact, const Particle& got, double tol_p,
-                         double tol_v) {
-  Expect e;
+Outcome compare_particle(const std::string& rule, const MotionCase& in, const oracle::State& exact, const Particle& got,
+                         double tol_p, double tol_v) {
+  Expect e(rule);
   e.near("position", got.position, exact.position, tol_p);
   e.near("velocity", got.velocity, exact.velocity, tol_v);
   e.near("previous", got.previous, exact.previous, tol_p);
@@ -234,7 +234,9 @@ double position_tolerance(const MotionCase& in) {
 
 Outcome force(const MotionCase& in, const Vec3& got) {
   const Vec3 exact = oracle::force(in.particle.velocity, in.particle.mass, exact_forces(in.forces));
-  Expect e;
+  Expect e(
+      "F = m g - k1 v - k2 |v| v: gravity is an acceleration, and each drag opposes the whole velocity vector "
+      "(|v| is the speed, not one component's size)");
   e.near("force", got, exact, kRelative * in.particle.mass * acceleration_size(in) + 1e-300);
   return e.outcome();
 }
@@ -243,20 +245,27 @@ Outcome euler_step(const MotionCase& in, const Particle& got) {
   const oracle::State exact =
       oracle::euler_step(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
   const double tol_v = kRelative * (largest(in.particle.velocity) + in.dt * acceleration_size(in) + 1e-300);
-  return compare_particle(in, exact, got, position_tolerance(in), tol_v);
+  return compare_particle(
+      "explicit Euler takes both updates from the start of the step: a = F / m, p' = p + v dt, "
+      "v' = v + a dt, previous' = p",
+      in, exact, got, position_tolerance(in), tol_v);
 }
 
 Outcome start_verlet(const MotionCase& in, const Particle& got) {
   const oracle::State exact =
       oracle::start_verlet(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
-  return compare_particle(in, exact, got, position_tolerance(in), kRelative * largest(in.particle.velocity) + 1e-300);
+  return compare_particle(
+      "start_verlet keeps the particle and sets previous = p - v dt + a dt^2 / 2, so that the "
+      "first Verlet step is the Taylor step",
+      in, exact, got, position_tolerance(in), kRelative * largest(in.particle.velocity) + 1e-300);
 }
 
 Outcome verlet_step(const MotionCase& in, const Particle& got) {
   const oracle::State exact =
       oracle::verlet_step(state_of(in.particle), in.particle.mass, exact_forces(in.forces), in.dt);
   const double tol_p = position_tolerance(in);
-  return compare_particle(in, exact, got, tol_p, tol_p / in.dt);
+  return compare_particle("a Verlet step: p' = 2 p - previous + a dt^2, previous' = p, v' = (p' - p) / dt", in, exact,
+                          got, tol_p, tol_p / in.dt);
 }
 
 }  // namespace labkit::lab07::judge

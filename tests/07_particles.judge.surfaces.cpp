@@ -284,7 +284,8 @@ Outcome first_hit_on(const Segment& s, const Scene& scene, const SurfaceHit& got
   if (on_plane == on_triangle)
     return fail(expected, "plane " + std::to_string(got.plane) + ", triangle " + std::to_string(got.triangle),
                 "a hit names exactly one surface: a plane index or a triangle index (the other -1)");
-  Expect e;
+  Expect e(
+      "the first hit is the surface met at the smallest t, at a + t (b - a), with that surface's unit normal toward a");
   double slack = 0;
   if (on_plane) {
     const Plane& p = scene.planes[std::size_t(got.plane)];
@@ -340,7 +341,9 @@ Outcome hit_plane(const SegmentScene& in, const SurfaceHit& got, Rules rules) {
   const bool expected = plane_hit_by_rule(s, p);
   const Outcome decision = decide(got.hit, expected, plane_unstable(s, p, scale, rules), rules, plane_rule(s, p));
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
-  Expect e;
+  Expect e(
+      "a plane is hit where the step crosses to its back: t = value(a) / (value(a) - value(b)), the point a + t (b - "
+      "a), the normal n / |n|");
   check_plane_hit(e, s, p, got, tol);
   const Outcome o = e.outcome();
   return o.verdict == Outcome::Verdict::fail ? o : decision;
@@ -352,7 +355,9 @@ Outcome hit_triangle(const SegmentTrianglePair& in, const SurfaceHit& got) {
   const Outcome decision = decide(got.hit, expected, triangle_unstable(in.segment, in.triangle, tol, Rules::random),
                                   Rules::random, triangle_rule(in.segment, in.triangle));
   if (decision.verdict == Outcome::Verdict::fail || !got.hit || !expected) return decision;
-  Expect e;
+  Expect e(
+      "a triangle is hit from either side where the step meets it: the point a + t (b - a), the unit normal turned "
+      "toward a");
   check_triangle_hit(e, in.segment, in.triangle, got, tol);
   const Outcome o = e.outcome();
   return o.verdict == Outcome::Verdict::fail ? o : decision;

@@ -17,6 +17,12 @@ labkit_mutant(07 particles NAME verlet_start_without_acceleration STEP 2 SAYS "T
   FIND "next.previous = p.position - p.velocity * dt + 0.5 * a * dt * dt;"
   REPLACE "next.previous = p.position - p.velocity * dt;")
 
+# Step 2: the air drag taken per component, -k2 |v_i| v_i, instead of -k2 |v| v along the
+# whole velocity: right for motion along one axis only.
+labkit_mutant(07 particles NAME drag_per_component STEP 2 SAYS "whole velocity vector"
+  FIND "- forces.air_drag * p.velocity.norm() * p.velocity;"
+  REPLACE "- forces.air_drag * p.velocity.cwiseAbs().cwiseProduct(p.velocity);")
+
 labkit_mutant(07 particles NAME launch_height_sign STEP 3 SAYS "height" "gravity points down"
   FIND "const double D = v2 * v2 + 2 * v2 * d.dot(gravity) - gx_squared;"
   REPLACE "const double D = v2 * v2 - 2 * v2 * d.dot(gravity) - gx_squared;")
@@ -76,3 +82,9 @@ labkit_mutant(07 particles NAME hit_point_not_settled STEP 7 SAYS "strictly in f
 labkit_mutant(07 particles NAME verlet_previous_kept STEP 7 SAYS "previous" "Verlet"
   FIND "if (integrator == Integrator::verlet && (c.bounces > 0 || c.stopped)) p.previous = p.position - p.velocity * dt;"
   REPLACE "")
+
+# Step 7: collide's end position left as computed, not settled: after a bounce that
+# slides along a surface it can end a hair behind the plane, by rounding.
+labkit_mutant(07 particles NAME end_position_not_settled STEP 7 SAYS "behind"
+  FIND "c.position = settle_in(piece.b, scene, last);"
+  REPLACE "c.position = piece.b;")

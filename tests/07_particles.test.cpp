@@ -16,6 +16,12 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
+// The header's input domain (every coordinate, velocity and gravity component 0 or from 2^-100 to 2^100): shrinking a failing case stays in it.
+const bool kDomain = [] {
+  check::domain({check::Domain::Of::each, 0x1p-100, 0x1p100});
+  return true;
+}();
+
 // What keeps each query's calls finite, in the header's words: a crash or a time-out in
 // that query says it first (check::rule).
 const bool kRules = [] {
@@ -38,12 +44,6 @@ Outcome first_failure(std::initializer_list<Outcome> outcomes) {
   for (const Outcome& o : outcomes)
     if (o.verdict == Outcome::Verdict::fail) return o;
   return check::pass();
-}
-
-// A worked example's field-by-field check fails with the rule the example teaches first,
-// then the field and the numbers: the rule is what a student needs to find the mistake.
-Outcome teach(const std::string& rule, const Outcome& o) {
-  return o.verdict == Outcome::Verdict::fail ? check::fail(o.expected, o.got, rule + ": " + o.why) : o;
 }
 
 // ---- Runners: call the code under test, hand the answer to its judge ------------------
@@ -145,13 +145,12 @@ TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
   const auto counts = [](std::vector<int> expected, std::vector<double> owed) {
     return [=](const BirthsCase& in) {
       const std::vector<Births> got = run_births_steps(in);
-      Expect e;
+      Expect e("born = floor(owed + rate dt), and the fraction left over is carried to the next step in owed");
       for (std::size_t k = 0; k < expected.size() && k < got.size(); ++k) {
         e.equal("count " + std::to_string(k), got[k].count, expected[k]);
         e.near("owed " + std::to_string(k), got[k].owed, owed[k], 1e-12);
       }
-      return teach("born = floor(owed + rate dt), and the fraction left over is carried to the next step in owed",
-                   e.outcome());
+      return e.outcome();
     };
   };
   BirthsCase ten{};
@@ -172,10 +171,9 @@ TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
   check::example(query::births, "10 per second at 64 steps per second: 10 in a second", fine, [](const BirthsCase& in) {
     int total = 0;
     for (const Births& b : run_births_steps(in)) total += b.count;
-    Expect e;
+    Expect e("the fraction of a particle owed each step (10/64) must be carried, or none is ever born");
     e.equal("births in 64 steps", total, 10);
-    return teach("the fraction of a particle owed each step (10/64) must be carried, or none is ever born",
-                 e.outcome());
+    return e.outcome();
   });
 
   AgeCase ages{};
@@ -190,16 +188,14 @@ TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
   check::example(query::age, "ages 0, 1/4, 1/2 (lifetimes 1/2, 1/2, 1), dt 1/4: the second dies", ages,
                  [](const AgeCase& in) {
     const std::vector<Particle> got = answerer::age(in.particles, in.dt);
-    Expect e;
+    Expect e("age + dt >= lifetime dies; the survivors keep their order");
     e.equal("survivors", int(got.size()), 2);
     if (got.size() == 2) {
       e.equal("first age", got[0].age, 0.25);
       e.equal("second age", got[1].age, 0.75);
       e.equal("order kept", got[1].position, Vec3(0.5, 0, 0));
     }
-    return e.outcome().verdict == Outcome::Verdict::fail
-               ? teach("age + dt >= lifetime dies; the survivors keep their order", e.outcome())
-               : judge::age(in, got);
+    return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : judge::age(in, got);
   });
 
   EmitCase still{};
@@ -212,17 +208,14 @@ TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
   check::example(query::emit, "no spread: at (1, 2, 3), velocity (0, 0, 5)", still, [](const EmitCase& in) {
     Random random(1);
     const Particle p = answerer::emit(in.emitter, random);
-    Expect e;
+    Expect e("with no spread a particle is born at the emitter's position, speed along its direction");
     e.near("position", p.position, Vec3(1, 2, 3), 1e-12);
     e.near("velocity", p.velocity, Vec3(0, 0, 5), 1e-12);
     e.equal("lifetime", p.lifetime, 2.0);
     e.equal("mass", p.mass, 0.5);
     e.equal("age", p.age, 0.0);
     e.equal("alive", p.alive, true);
-    return e.outcome().verdict == Outcome::Verdict::fail
-               ? teach("with no spread a particle is born at the emitter's position, speed along its direction",
-                       e.outcome())
-               : run_emit(in);
+    return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : run_emit(in);
   });
 
   // A cone at zero speed turns nothing: every particle is the same, and that is right.
@@ -259,17 +252,17 @@ TEST_CASE(LABKIT_STEP(L07S1) ": worked examples", "[lab07][step1]") {
       where += p.position;
     }
     const double n = in.count;
-    Expect e;
-    e.that(
-        "mean cos(angle to the axis)", std::abs(cos_sum / n - 0.75) <= 0.005, fmt(cos_sum / n), "0.75",
-        "directions must be uniform in solid angle: cos(angle) uniform in [cos(cone), 1], mean 0.75 over a 60-degree "
-        "cone; yours is " +
-            fmt(cos_sum / n) + (cos_sum / n > 0.8 ? " (the angle itself drawn uniformly gives 0.827)" : ""));
+    Expect e("each attribute is drawn uniformly from its range");
+    e.that("mean cos(angle to the axis)", std::abs(cos_sum / n - 0.75) <= 0.005, fmt(cos_sum / n), "0.75",
+           "each attribute is drawn uniformly from its range: directions must be uniform in solid angle: cos(angle) "
+           "uniform in [cos(cone), 1], mean 0.75 over a 60-degree "
+           "cone; yours is " +
+               fmt(cos_sum / n) + (cos_sum / n > 0.8 ? " (the angle itself drawn uniformly gives 0.827)" : ""));
     e.near("mean sideways direction", side / n, Vec3::Zero(), 0.01);
     e.near("mean speed", speed_sum / n, 10, 0.05);
     e.near("mean lifetime", life_sum / n, 3, 0.02);
     e.near("mean position", where / n, Vec3(0, 0, 1), 0.03);
-    const Outcome stats = teach("each attribute is drawn uniformly from its range", e.outcome());
+    const Outcome stats = e.outcome();
     if (stats.verdict == Outcome::Verdict::fail) return stats;
     EmitCase some = in;
     some.count = 200;
@@ -304,31 +297,29 @@ TEST_CASE(LABKIT_STEP(L07S2) ": worked examples", "[lab07][step2]") {
   check::example(query::euler_step, "two Euler steps of a thrown particle", thrown(), [](const MotionCase& in) {
     const Particle one = answerer::euler_step(in.particle, in.forces, in.dt);
     const Particle two = answerer::euler_step(one, in.forces, in.dt);
-    Expect e;
+    Expect e(
+        "explicit Euler takes both updates from the start of the step: p' = p + v dt with the old v (moving with "
+        "the new v is semi-implicit Euler)");
     e.near("position after 1", one.position, Vec3(1, 0, 10), 1e-12);
     e.near("velocity after 1", one.velocity, Vec3(2, 0, -5), 1e-12);
     e.near("position after 2", two.position, Vec3(2, 0, 7.5), 1e-12);
     e.near("velocity after 2", two.velocity, Vec3(2, 0, -10), 1e-12);
-    return teach(
-        "explicit Euler takes both updates from the start of the step: p' = p + v dt with the old v (moving with "
-        "the new v is semi-implicit Euler)",
-        e.outcome());
+    return e.outcome();
   });
   check::example(query::verlet_step, "two Verlet steps land on the exact parabola", thrown(), [](const MotionCase& in) {
     const Particle start = answerer::start_verlet(in.particle, in.forces, in.dt);
     const Particle one = answerer::verlet_step(start, in.forces, in.dt);
     const Particle two = answerer::verlet_step(one, in.forces, in.dt);
-    Expect e;
+    Expect e(
+        "start_verlet's previous = p - v dt + a dt^2 / 2 makes the first Verlet step the Taylor step "
+        "p + v dt + a dt^2 / 2; then p' = 2 p - previous + a dt^2, previous' = p");
     e.near("previous at the start", start.previous, Vec3(-1, 0, 8.75), 1e-12);
     e.near("position after 1", one.position, Vec3(1, 0, 8.75), 1e-12);
     e.near("velocity after 1", one.velocity, Vec3(2, 0, -2.5), 1e-12);
     e.near("position after 2", two.position, Vec3(2, 0, 5), 1e-12);
     e.near("velocity after 2", two.velocity, Vec3(2, 0, -7.5), 1e-12);
     e.near("previous after 2", two.previous, Vec3(1, 0, 8.75), 1e-12);
-    return teach(
-        "start_verlet's previous = p - v dt + a dt^2 / 2 makes the first Verlet step the Taylor step "
-        "p + v dt + a dt^2 / 2; then p' = 2 p - previous + a dt^2, previous' = p",
-        e.outcome());
+    return e.outcome();
   });
   MotionCase dragged{};
   dragged.particle.mass = 2;
@@ -336,18 +327,17 @@ TEST_CASE(LABKIT_STEP(L07S2) ": worked examples", "[lab07][step2]") {
   dragged.forces = {Vec3(0, 0, -10), 0.5, 0.25};
   dragged.dt = 0.5;
   check::example(query::force, "gravity and both drags: (-2 - 4, 0, -20)", dragged, [](const MotionCase& in) {
-    Expect e;
+    Expect e("F = m g - k1 v - k2 |v| v: gravity is an acceleration, both drags oppose the velocity");
     e.near("force", answerer::force(in.particle, in.forces), Vec3(-6, 0, -20), 1e-12);
-    return teach("F = m g - k1 v - k2 |v| v: gravity is an acceleration, both drags oppose the velocity", e.outcome());
+    return e.outcome();
   });
   check::example(query::euler_step, "with drag: the velocity loses 6 / 2 * 1/2 along x", dragged,
                  [](const MotionCase& in) {
     const Particle one = answerer::euler_step(in.particle, in.forces, in.dt);
-    Expect e;
+    Expect e("explicit Euler with drag: a = F / m at the start of the step, p' = p + v dt, v' = v + a dt");
     e.near("position", one.position, Vec3(2, 0, 0), 1e-12);
     e.near("velocity", one.velocity, Vec3(2.5, 0, -5), 1e-12);
-    return teach("explicit Euler with drag: a = F / m at the start of the step, p' = p + v dt, v' = v + a dt",
-                 e.outcome());
+    return e.outcome();
   });
 }
 
@@ -364,7 +354,15 @@ LaunchCase lecture_shot(Vec3 target) { return {Vec3::Zero(), target, 25, Vec3(0,
 auto expect_angles(int count, double radicand, double low, double high, double low_time, double high_time) {
   return [=](const LaunchCase& in) {
     const Aim got = answerer::aim(in.from, in.target, in.speed, in.gravity);
-    Expect e;
+    // The likely mistake: the radicand of a target as far below (y's sign flipped).
+    const Vec3 d = in.target - in.from;
+    const double g = in.gravity.norm(), x = d.cross(in.gravity).norm() / g, y = -d.dot(in.gravity) / g;
+    const double A = g * x * x / (2 * in.speed * in.speed), flipped = x * x - 4 * A * (A - y);
+    const bool sign_flipped = y != 0 && std::abs(got.radicand - flipped) <= 1e-9 * std::abs(flipped);
+    Expect e(sign_flipped ? "the height is y = -(d . g) / |g| because gravity points down: yours is the "
+                            "answer for a target as far below"
+                          : "tan(angle) = (v^2 +- sqrt(D)) / (g x) with D = v^4 + 2 v^2 (d . g) - |d x g|^2 "
+                            "(the height y = -(d . g) / |g|: gravity points down)");
     e.equal("count", got.count, count);
     e.near("radicand", got.radicand, radicand, 1e-9 * std::abs(radicand) + 1e-12);
     if (count > 0) {
@@ -373,17 +371,7 @@ auto expect_angles(int count, double radicand, double low, double high, double l
       e.near("low.time", got.low.time, low_time, 1e-9);
       e.near("high.time", got.high.time, high_time, 1e-9);
     }
-    // The likely mistake: the radicand of a target as far below (y's sign flipped).
-    const Vec3 d = in.target - in.from;
-    const double g = in.gravity.norm(), x = d.cross(in.gravity).norm() / g, y = -d.dot(in.gravity) / g;
-    const double A = g * x * x / (2 * in.speed * in.speed), flipped = x * x - 4 * A * (A - y);
-    const bool sign_flipped = y != 0 && std::abs(got.radicand - flipped) <= 1e-9 * std::abs(flipped);
-    const Outcome o =
-        teach(sign_flipped ? "the height is y = -(d . g) / |g| because gravity points down: yours is the "
-                             "answer for a target as far below"
-                           : "tan(angle) = (v^2 +- sqrt(D)) / (g x) with D = v^4 + 2 v^2 (d . g) - |d x g|^2 "
-                             "(the height y = -(d . g) / |g|: gravity points down)",
-              e.outcome());
+    const Outcome o = e.outcome();
     return o.verdict == Outcome::Verdict::fail ? o : judge::aim(in, got, Rules::exact);
   };
 }
@@ -399,7 +387,7 @@ TEST_CASE(LABKIT_STEP(L07S3) ": worked examples", "[lab07][step3]") {
   check::example(query::aim, "the lecture's example, in degrees to 0.001: 19.445 and 70.555", lecture_shot({40, 0, 0}),
                  [](const LaunchCase& in) {
     const Aim got = answerer::aim(in.from, in.target, in.speed, in.gravity);
-    Expect e;
+    Expect e("tan(angle) = (v^2 +- sqrt(D)) / (g x): the lecture's shot gives 19.445 and 70.555 degrees");
     e.near("low, degrees to 0.001", std::round(got.low.angle / kDegree * 1000) / 1000, 19.445, 1e-9);
     e.near("high, degrees to 0.001", std::round(got.high.angle / kDegree * 1000) / 1000, 70.555, 1e-9);
     e.near("radicand, to 0.01", std::round(got.radicand * 100) / 100, 969.31, 1e-9);
@@ -432,11 +420,11 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
       const SurfaceHit got = answerer::hit_plane(in.segment, in.scene.planes[0]);
       const Outcome judged = judge::hit_plane(in, got, Rules::exact);
       if (judged.verdict == Outcome::Verdict::fail) return judged;
-      Expect e;
+      Expect e("t = value(a) / (value(a) - value(b)), the point a + t (b - a), the normal n / |n|");
       e.near("t", got.t, t, 1e-12);
       e.near("point", got.point, point, 1e-12);
       e.near("normal", got.normal, in.scene.planes[0].normal.normalized(), 1e-12);
-      return teach("t = value(a) / (value(a) - value(b)), the point a + t (b - a), the normal n / |n|", e.outcome());
+      return e.outcome();
     };
   };
   const auto plane_miss = [](const SegmentScene& in) {
@@ -460,24 +448,22 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   check::example(query::hit_plane, "resting on a plane within value(a)'s rounding bound, moving behind: t = 0", resting,
                  [](const SegmentScene& in) {
     const SurfaceHit got = answerer::hit_plane(in.segment, in.scene.planes[0]);
-    Expect e;
-    e.equal("hit", got.hit, true);
-    const Outcome o = teach(
+    Expect e(
         "a computed value(a) within its rounding bound counts as 0 (the particle rests on "
-        "the plane), so a step moving behind hits at t = 0",
-        e.outcome());
+        "the plane), so a step moving behind hits at t = 0");
+    e.equal("hit", got.hit, true);
+    const Outcome o = e.outcome();
     return o.verdict == Outcome::Verdict::fail ? o : judge::hit_plane(in, got, Rules::exact);
   });
 
   const auto triangle_hit = [](double t, Vec3 normal) {
     return [=](const SegmentTrianglePair& in) {
       const SurfaceHit got = answerer::hit_triangle(in.segment, in.triangle);
-      Expect e;
+      Expect e("triangles are two-sided: hit from either side, the unit normal turned to the side a is on");
       e.equal("hit", got.hit, true);
       e.near("t", got.t, t, 1e-12);
       e.near("normal", got.normal, normal, 1e-12);
-      const Outcome o = teach(
-          "triangles are two-sided: hit from either side, the unit normal turned to the side a is on", e.outcome());
+      const Outcome o = e.outcome();
       return o.verdict == Outcome::Verdict::fail ? o : judge::hit_triangle(in, got);
     };
   };
@@ -486,12 +472,11 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   check::example(query::hit_triangle, "from below: two-sided, the normal faces down",
                  SegmentTrianglePair{{{1, 1, -1}, {1, 1, 3}}, kFloorTriangle}, triangle_hit(0.25, {0, 0, -1}));
   check::example(query::hit_triangle, "starting on the triangle: leaving it, no hit",
-                 SegmentTrianglePair{{{1, 1, 0}, {1, 1, -1}}, kFloorTriangle},
-                 [](const SegmentTrianglePair& in) {
-    Expect e;
-    e.equal("hit", answerer::hit_triangle(in.segment, in.triangle).hit, false);
-    return teach("a step starting exactly on a triangle's plane is leaving the sheet: no hit", e.outcome());
-  });
+                 SegmentTrianglePair{{{1, 1, 0}, {1, 1, -1}}, kFloorTriangle}, [](const SegmentTrianglePair& in) {
+                   Expect e("a step starting exactly on a triangle's plane is leaving the sheet: no hit");
+                   e.equal("hit", answerer::hit_triangle(in.segment, in.triangle).hit, false);
+                   return e.outcome();
+                 });
 
   SegmentScene floor_and_shelf;
   floor_and_shelf.segment = {{1, 3, 5}, {1, 3, -1}};
@@ -500,14 +485,13 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   check::example(query::first_hit, "the shelf (t = 1/2) before the floor (t = 5/6)", floor_and_shelf,
                  [](const SegmentScene& in) {
     const SurfaceHit got = answerer::first_hit(in.segment, in.scene);
-    Expect e;
+    Expect e("the first hit is the one with the smallest t, and names its triangle (plane -1)");
     e.equal("hit", got.hit, true);
     e.equal("plane", got.plane, -1);
     e.equal("triangle", got.triangle, 1);
     e.near("t", got.t, 0.5, 1e-12);
     e.near("point", got.point, Vec3(1, 3, 2), 1e-12);
-    const Outcome o =
-        teach("the first hit is the one with the smallest t, and names its triangle (plane -1)", e.outcome());
+    const Outcome o = e.outcome();
     return o.verdict == Outcome::Verdict::fail ? o : judge::first_hit(in, got, Rules::exact);
   });
   SegmentScene tie;
@@ -517,13 +501,12 @@ TEST_CASE(LABKIT_STEP(L07S4) ": worked examples", "[lab07][step4]") {
   check::example(query::first_hit, "a triangle lying on the floor: the tie goes to the plane", tie,
                  [](const SegmentScene& in) {
     const SurfaceHit got = answerer::first_hit(in.segment, in.scene);
-    Expect e;
+    Expect e("on a tie in t, planes come before triangles (replace the best only when strictly nearer)");
     e.equal("hit", got.hit, true);
     e.equal("plane", got.plane, 0);
     e.equal("triangle", got.triangle, -1);
     e.near("t", got.t, 0.5, 1e-12);
-    return teach("on a tie in t, planes come before triangles (replace the best only when strictly nearer)",
-                 e.outcome());
+    return e.outcome();
   });
   // Found by a secret-seed run: the segment passes a hair outside an edge of triangle 5
   // (in doubt, so hitting it is fine); its t is judged against the plane crossing.
@@ -555,12 +538,12 @@ namespace {
 auto expect_impulse(std::string rule, bool closing, Vec3 normal_impulse, Vec3 friction, Vec3 velocity) {
   return [=](const ImpulseCase& in) {
     const Impulse got = answerer::impulse(in.velocity, in.object_velocity, in.normal, in.mass, in.material);
-    Expect e;
+    Expect e(rule);
     e.equal("closing", got.closing, closing);
     e.near("normal_impulse", got.normal_impulse, normal_impulse, 1e-12);
     e.near("friction", got.friction, friction, 1e-12);
     e.near("velocity", got.velocity, velocity, 1e-12);
-    const Outcome o = teach(rule, e.outcome());
+    const Outcome o = e.outcome();
     return o.verdict == Outcome::Verdict::fail ? o : judge::impulse(in, got);
   };
 }
@@ -605,12 +588,12 @@ namespace {
 auto expect_collision(std::string rule, Vec3 position, Vec3 velocity, int bounces, bool stopped) {
   return [=](const CollideCase& in) {
     const Collision got = run_collide_only(in);
-    Expect e;
+    Expect e(rule);
     e.near("position", got.position, position, 1e-9);
     e.near("velocity", got.velocity, velocity, 1e-9);
     e.equal("bounces", got.bounces, bounces);
     e.equal("stopped", got.stopped, stopped);
-    const Outcome o = teach(rule, e.outcome());
+    const Outcome o = e.outcome();
     return o.verdict == Outcome::Verdict::fail ? o : judge::collide(in, got);
   };
 }
@@ -718,7 +701,7 @@ TEST_CASE(LABKIT_STEP(L07S7) ": worked examples", "[lab07][step7]") {
   crack.scene.planes.push_back(Plane{{0, 0, -1}, 0.5});  // a ceiling at z = 1/2: a crack to bounce in
   check::example(query::invariants, "in a crack, up to the cap", crack, [](const CollideCase& in) {
     const Collision got = run_collide_only(in);
-    Expect e;
+    Expect e("the bounce cap: after bounce_cap impulses, the next hit stops the particle");
     e.equal("stopped", got.stopped, true);
     const Outcome o = e.outcome();
     return first_failure({o, judge::invariants(in, got), judge::collide(in, got)});
@@ -740,13 +723,14 @@ TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][st
                  [](const SystemCase& in) {
     System system = system_of(in);
     for (int k = 0; k < in.steps; ++k) answerer::step(system, in.dt);
-    Expect e;
+    Expect e("one birth per step (rate dt = 1), dead at age >= lifetime 0.35, never behind the floor");
     e.equal("particles", int(system.particles.size()), 3);
     e.near("time", system.time, 1.0, 1e-12);
     for (const Particle& p : system.particles)
-      e.that("above the floor", p.position.z() >= 0, fmt(p.position), "z >= 0", "below the floor");
-    const Outcome o =
-        teach("one birth per step (rate dt = 1), dead at age >= lifetime 0.35, never behind the floor", e.outcome());
+      e.that("above the floor", p.position.z() >= 0, fmt(p.position), "z >= 0",
+             "one birth per step (rate dt = 1), dead at age >= lifetime 0.35, never behind the floor: a particle is "
+             "below the floor");
+    const Outcome o = e.outcome();
     return o.verdict == Outcome::Verdict::fail ? o : run_system(in);
   });
   // One particle dropped onto the floor with Verlet: after the bounce, previous is
@@ -764,7 +748,9 @@ TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][st
     p.lifetime = 10;
     system.particles = {answerer::start_verlet(p, system.forces, in.dt)};
     answerer::step(system, in.dt);  // from z = 1 toward z = -1: hits at t = 1/2, back up to z = 1
-    Expect e;
+    Expect e(
+        "Verlet keeps its velocity in position - previous: after a bounce, previous = position - velocity dt, or "
+        "the next step goes on with the velocity from before the bounce");
     e.equal("particles", int(system.particles.size()), 1);
     if (system.particles.size() == 1) {
       const Particle& q = system.particles[0];
@@ -775,10 +761,7 @@ TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][st
     }
     answerer::step(system, in.dt);
     if (system.particles.size() == 1) e.near("position after 2", system.particles[0].position, Vec3(0, 0, 3), 1e-12);
-    return teach(
-        "Verlet keeps its velocity in position - previous: after a bounce, previous = position - velocity dt, or "
-        "the next step goes on with the velocity from before the bounce",
-        e.outcome());
+    return e.outcome();
   });
 }
 
@@ -786,7 +769,11 @@ TEST_CASE(LABKIT_STEP(L07S7) ": invariants, random cases", "[lab07][step7][oracl
   check::random_cases(query::settle, gen::settle_case(), [](const SettleCase& in) {
     return judge::settle(in, answerer::settle(in.x, in.scene, in.last));
   });
-  check::random_cases(query::invariants, gen::collide_case(false), run_invariants);
+  // One case in two a dead slide along a tilted plane, whose end lands within rounding of
+  // it: an end position not settled is caught at the default count.
+  check::random_cases(query::invariants,
+                      rc::gen::weightedOneOf<CollideCase>({{1, gen::collide_case(false)}, {1, gen::dead_slide()}}),
+                      run_invariants);
   check::random_cases(query::system, gen::system_case(), run_system);
 }
 

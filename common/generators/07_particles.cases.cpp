@@ -406,6 +406,32 @@ rc::Gen<StepSurfaces> valid_steps(bool decided = false) {
 
 }  // namespace
 
+// A dead bounce (e = 0, mu = 0) off a tilted plane halfway through the step, sliding on
+// far along it for the rest: the end a + t r + v_t (1 - t) dt, computed in doubles,
+// lands within a few roundings of the plane, behind it about as often as not unless
+// collide settles it (the header, step 7: never end behind a plane). Drawn often, so that a
+// check at the default count catches an unsettled end, not only a graded run.
+rc::Gen<CollideCase> dead_slide() {
+  return rc::gen::exec([] {
+    const Vec3 n = *unit_vector();
+    const double scale = std::ldexp(1.0, *rc::gen::inRange(-20, 21));
+    const Vec3 on = scale * *direction(1.0, 4);  // a point of the plane
+    Vec3 along = n.cross(*unit_vector());        // a direction in the plane
+    if (along.norm() < 0.1) along = n.cross(Vec3(n.y(), n.z(), n.x()));
+    // A slide long against the plane's offset: the end's rounding, a few units in the last
+    // place of a far point, outgrows the margin settle gives the hit point.
+    const double height = scale * *dyadic(1, 16, 4), length = std::ldexp(scale, *rc::gen::inRange(4, 13));
+    CollideCase c;
+    c.step = {on + height * n - length * along.normalized(), on - height * n + length * along.normalized()};
+    c.dt = *rc::gen::element(1.0, 0.125, 1.0 / 60);
+    c.velocity = (c.step.b - c.step.a) / c.dt;
+    c.scene.planes = {Plane{n, -n.dot(on)}};
+    c.scene.material = Material{0.0, 0.0};
+    c.scene.bounce_cap = *rc::gen::inRange(1, 5);
+    return c;
+  });
+}
+
 rc::Gen<CollideCase> collide_case(bool decided) {
   return rc::gen::exec([decided] {
     const StepSurfaces c = *valid_steps(decided);

@@ -61,7 +61,9 @@ rc::Gen<SegmentTrianglePair> sheet_case();  // lab 02's families, needles, just 
 rc::Gen<lab07::SegmentScene> segment_scene();
 rc::Gen<lab07::SegmentScene> exact_segment_scene();
 rc::Gen<lab07::ImpulseCase> impulse_case();
-rc::Gen<lab07::CollideCase> collide_case(bool decided = true);  // step 7: false, exact degenerate steps kept
+rc::Gen<lab07::CollideCase> collide_case(bool decided = true);
+rc::Gen<lab07::CollideCase>
+dead_slide();  // step 7: e = 0 off a tilted plane, sliding on to the end  // step 7: false, exact degenerate steps kept
 rc::Gen<lab07::SettleCase> settle_case();
 rc::Gen<lab07::SystemCase> system_case();
 

@@ -8,6 +8,8 @@
 
 #include <fcntl.h>
 #include <unistd.h>
+#include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
@@ -374,25 +376,118 @@ void install_signal_handlers() {
 
 namespace labkit::check {
 
+namespace {
+Domain& the_domain() {
+  static Domain d;
+  return d;
+}
+}  // namespace
+
+void domain(const Domain& d) { the_domain() = d; }
+
+bool in_domain(const codec::Values& v) {
+  const Domain& d = the_domain();
+  const auto inside = [&d](double x) { return x == 0 || (std::abs(x) >= d.low && std::abs(x) <= d.high); };
+  double scale = 0;
+  for (std::size_t i = 0; i < v.numbers.size(); ++i) {
+    if (v.kinds[i] != codec::Kind::length) continue;
+    if (!std::isfinite(v.numbers[i])) return false;
+    if (d.of == Domain::Of::each && !inside(v.numbers[i])) return false;
+    scale = std::max(scale, std::abs(v.numbers[i]));
+  }
+  return d.of == Domain::Of::each || inside(scale);
+}
+
+bool counts_something(const std::string& field) {
+  for (const char* word : {"count", "tests", "steps", "iterations", "size", "pieces", "nodes", "births", "survivors",
+                           "bounces", "particles", "pairs", "halvings", "times asked"})
+    if (field.find(word) != std::string::npos) return true;
+  return false;
+}
+
+Expect::Expect(std::string rule) : rule_(std::move(rule)) {}
+
 void Expect::add(const std::string& field, const std::string& got, const std::string& expected, bool ok,
                  const std::string& why) {
   expected_ += (expected_.empty() ? "" : ", ") + field + " = " + expected;
   got_ += (got_.empty() ? "" : ", ") + field + " = " + got;
   if (ok) return;
-  if (!failed_) why_ = why.empty() ? field + " differs" : why;
+  if (!failed_) why_ = why.empty() ? rule_ + ": " + field + " differs from the answer" : why;
   failed_ = true;
 }
 
+namespace {
+
+std::string with_cause(std::string line, const std::string& cause) {
+  return cause.empty() ? line : line + "; " + cause;
+}
+
+bool whole(double x) { return x >= 2 && x <= 1e6 && std::abs(x - std::round(x)) <= 1e-9 * x; }
+
+// "3 times", "1/3 of", "sqrt(2) times": a ratio a person recognises, or "".
+std::string factor_words(double ratio) {
+  if (whole(ratio)) return fmt(std::round(ratio)) + " times";
+  if (ratio > 0 && whole(1 / ratio)) return "1/" + fmt(std::round(1 / ratio)) + " of";
+  if (whole(ratio * ratio)) return "sqrt(" + fmt(std::round(ratio * ratio)) + ") times";
+  if (ratio > 0 && whole(1 / (ratio * ratio))) return "1/sqrt(" + fmt(std::round(1 / (ratio * ratio))) + ") of";
+  return "";
+}
+
+}  // namespace
+
+std::string likely_cause(double got, double expected, double tolerance) {
+  if (!std::isfinite(got)) return "yours is not a finite number";
+  if (std::abs(got - expected) <= tolerance) return "";
+  if (std::abs(expected) > tolerance && std::abs(got + expected) <= tolerance) return "yours has the opposite sign";
+  if (std::abs(got) <= tolerance) return "yours is 0";
+  if (std::abs(expected) <= tolerance) return "";
+  const double ratio = got / expected;
+  if (const std::string f = factor_words(std::abs(ratio)); !f.empty())
+    return "yours is " + f + " the answer" + (ratio < 0 ? ", with the opposite sign" : "") +
+           ": a factor left in or out (a length such as |n|, a 2, a mass)?";
+  return "";
+}
+
+std::string likely_cause(const Vec3& got, const Vec3& expected, double tolerance) {
+  if (!got.allFinite()) return "yours is not finite";
+  if ((got - expected).norm() <= tolerance) return "";
+  const double g = got.norm(), x = expected.norm();
+  if (x > tolerance && (got + expected).norm() <= tolerance)
+    return "yours points the opposite way: a sign, or a difference taken the other way round?";
+  if (g <= tolerance) return "yours is the zero vector";
+  if (x <= tolerance) return "";
+  if (got.cross(expected).norm() <= tolerance * x && got.dot(expected) > 0) {
+    const std::string f = factor_words(g / x);
+    return "yours has the right direction but " + (f.empty() ? fmt(g / x) + " times" : f) + " the length";
+  }
+  Vec3 a = got.cwiseAbs(), b = expected.cwiseAbs();
+  std::sort(a.data(), a.data() + 3);
+  std::sort(b.data(), b.data() + 3);
+  if ((a - b).norm() <= tolerance)
+    return "yours has the answer's components in another order or with other signs: a swap, or a row taken "
+           "for a column?";
+  if (std::abs(g - x) <= tolerance)
+    return "yours has the right length in another direction: a turn applied twice, the wrong way, or not undone "
+           "(a frame)?";
+  return "";
+}
+
 void Expect::near(const std::string& field, double got, double expected, double tolerance) {
-  const bool ok = std::abs(got - expected) <= tolerance;
+  const double off = std::abs(got - expected);
+  const bool ok = off <= tolerance;
+  if (!ok) misses_.push_back({field, Vec3(got, 0, 0), Vec3(expected, 0, 0), tolerance, true});
   add(field, fmt(got), fmt(expected), ok,
-      field + " is off by " + fmt(std::abs(got - expected)) + " (tolerance " + fmt(tolerance) + ")");
+      with_cause(rule_ + ": " + field + " is off by " + fmt(off) + " (tolerance " + fmt(tolerance) + ")",
+                 likely_cause(got, expected, tolerance)));
 }
 
 void Expect::near(const std::string& field, const Vec3& got, const Vec3& expected, double tolerance) {
   const double off = (got - expected).norm();
-  add(field, fmt(got), fmt(expected), off <= tolerance,
-      field + " is off by " + fmt(off) + " (tolerance " + fmt(tolerance) + ")");
+  const bool ok = off <= tolerance;
+  if (!ok) misses_.push_back({field, got, expected, tolerance, false});
+  add(field, fmt(got), fmt(expected), ok,
+      with_cause(rule_ + ": " + field + " is off by " + fmt(off) + " (tolerance " + fmt(tolerance) + ")",
+                 likely_cause(got, expected, tolerance)));
 }
 
 void Expect::that(const std::string& field, bool ok, const std::string& got, const std::string& expected,
@@ -400,7 +495,21 @@ void Expect::that(const std::string& field, bool ok, const std::string& got, con
   add(field, got, expected, ok, why);
 }
 
-Outcome Expect::outcome() const { return failed_ ? fail(expected_, got_, why_) : pass(); }
+// Two fields that each hold the other's answer were swapped, whatever else is wrong: that
+// is said first.
+Outcome Expect::outcome() const {
+  if (!failed_) return pass();
+  for (std::size_t i = 0; i < misses_.size(); ++i)
+    for (std::size_t j = i + 1; j < misses_.size(); ++j) {
+      const Miss &p = misses_[i], &q = misses_[j];
+      const double tol = std::max(p.tolerance, q.tolerance);
+      if (p.scalar == q.scalar && (p.got - q.expected).norm() <= tol && (q.got - p.expected).norm() <= tol)
+        return fail(
+            expected_, got_,
+            rule_ + ": " + p.field + " and " + q.field + " are swapped: yours has each one's answer in the other");
+    }
+  return fail(expected_, got_, why_);
+}
 
 Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no) {
   if (rules == Rules::exact) doubt = false;

@@ -32,11 +32,15 @@
 #include <cstring>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <random>
+#include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <utility>
+#include <vector>
 
 namespace labkit::check {
 
@@ -86,19 +90,35 @@ enum class Rules { random, exact };
 Outcome verdict(bool got, bool expected, bool doubt, Rules rules, const std::string& yes, const std::string& no);
 
 // Collects the differences between an answer and the expected one, field by field,
-// for hand-worked examples:
-//   Expect e;
+// for hand-worked examples and judges. Its rule, in the lab's words, leads every why line
+// a comparison writes, before the field and its numbers; where the two numbers show the
+// likely cause (a sign, a factor, a swap, a turn), the line ends with it:
+//   Expect e("the crossing is a + t (b - a), with t the fraction d_a / (d_a - d_b)");
 //   e.equal("crosses", got.crosses, true);
 //   e.near("t", got.t, 0.25, 1e-12);
 //   return e.outcome();
+// why: "the crossing is a + t (b - a), ...: t is off by 0.5 (tolerance 1e-12); yours has
+// the opposite sign".
+// A field that counts (tests, steps, pieces...), where one too many or too few is an
+// off-by-one; an index (a triangle's, an axis's) is not.
+bool counts_something(const std::string& field);
+
 class Expect {
  public:
+  explicit Expect(std::string rule);
   template <class T> void equal(const std::string& field, const T& got, const T& expected) {
-    add(field, describe(got), describe(expected), got == expected, "");
+    const std::string g = describe(got), x = describe(expected);
+    std::string mismatch = field + " is " + g + ", not " + x;
+    if (g.size() + x.size() > 80) mismatch = field + " differs from the answer";
+    if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>)
+      if (counts_something(field) && (got - expected == 1 || expected - got == 1))
+        mismatch += std::string(got > expected ? "; one more" : "; one fewer") + " than the answer (an off-by-one?)";
+    add(field, g, x, got == expected, rule_ + ": " + mismatch);
   }
   void near(const std::string& field, double got, double expected, double tolerance);
   void near(const std::string& field, const Vec3& got, const Vec3& expected, double tolerance);
-  // A condition with its own wording, for rules that are not a comparison.
+  // A condition with its own wording, for rules that are not a comparison (an empty why:
+  // the Expect's rule and the field).
   void that(const std::string& field, bool ok, const std::string& got, const std::string& expected,
             const std::string& why);
   Outcome outcome() const;
@@ -106,9 +126,44 @@ class Expect {
  private:
   void add(const std::string& field, const std::string& got, const std::string& expected, bool ok,
            const std::string& why);
-  std::string expected_, got_, why_;
+  std::string rule_, expected_, got_, why_;
   bool failed_ = false;
+  // The near() fields that failed, to tell two swapped fields apart from two wrong ones.
+  struct Miss {
+    std::string field;
+    Vec3 got, expected;
+    double tolerance;
+    bool scalar;
+  };
+  std::vector<Miss> misses_;
 };
+
+// What a wrong number most likely came from, read off the answer and yours alone: the
+// opposite sign, a whole or square-root factor (a length left in or out), the right
+// direction at another length, the right length in another direction, the components in
+// another order. Empty when nothing simple explains the difference.
+std::string likely_cause(double got, double expected, double tolerance);
+std::string likely_cause(const Vec3& got, const Vec3& expected, double tolerance);
+
+// A lab's input domain, as its header states it, over the lengths a case writes
+// (codec::Kind::length): either the input's scale S, its largest |length|, is 0 or lies
+// in [low, high] (Of::scale), or every non-zero length does (Of::each). Each lab's test
+// file states its own once (check::domain); shrinking a failing case never leaves it,
+// and a failing case shown outside it is the kit's error, never the student's.
+struct Domain {
+  enum class Of { scale, each } of = Of::scale;
+  double low = 0, high = std::numeric_limits<double>::infinity();
+};
+void domain(const Domain& d);
+struct OutsideDomain : std::runtime_error {
+  explicit OutsideDomain(const std::string& input)
+      : std::runtime_error(
+            "a failing case to show lies outside the header's input domain, so it shows nothing about "
+            "the answer (the kit's generator is at fault): " +
+            input.substr(0, 300)) {}
+};
+bool in_domain(const codec::Values& v);
+template <class Input> bool in_domain(const Input& input) { return in_domain(values_of(input)); }
 
 // The input's length scale S: its largest absolute coordinate (never below 1e-300).
 template <class Input> double scale_of_input(const Input& input) {
@@ -537,6 +592,9 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
     detail::report_to_catch(report, true);
     return;
   }
+  // Shrinking stays in the header's domain when the case it starts from is in it (a
+  // generator that draws outside it is the kit's to fix; its case is shown as drawn).
+  const bool start_in_domain = in_domain(inputs[std::size_t(first_failing_case) - 1]);
   std::optional<detail::Failure> first_failure = detail::failure_of(
       "", query, inputs[std::size_t(first_failing_case) - 1], outcomes[std::size_t(first_failing_case) - 1]);
   inputs = {};
@@ -562,10 +620,13 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
   int shrinks = -1, tries = 0;
   std::chrono::steady_clock::time_point shrink_start;
   std::optional<detail::Failure> smallest;
+  std::optional<Input> smallest_input;
   const auto property = [&] {
     const Input input = *gen;
     if (!shrinking && ++seen < first_failing_case) return;
     if (shrinking && (++tries > kShrinkTries || std::chrono::steady_clock::now() - shrink_start > kShrinkTime)) return;
+    if (shrinking && start_in_domain && !in_domain(input))
+      return;  // a smaller case outside the header's domain shows nothing
     if (!shrinking) shrink_start = std::chrono::steady_clock::now();
     const std::string token = replay_token(query, input);
     detail::set_inflight(token);
@@ -575,11 +636,13 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
     shrinking = true;
     ++shrinks;
     smallest = detail::failure_of("", query, input, o);
+    smallest_input = input;
     RC_FAIL(o.why);
   };
   const auto result = rc::detail::checkProperty(rc::detail::toProperty(property), metadata, params, listener, {});
 
   if (result.template is<rc::detail::FailureResult>() && smallest) {
+    if (start_in_domain && !in_domain(*smallest_input)) throw OutsideDomain(smallest->input);
     smallest->shrinks = shrinks;
     const int at = first_failing_case;
     smallest->title = "random case " + std::to_string(at) + " of " + std::to_string(s.cases);

@@ -89,14 +89,43 @@ TEST_CASE("the oracle's orientation follows the right-hand rule", "[kit]") {
 }
 
 TEST_CASE("Expect words a mismatch field by field", "[kit]") {
-  check::Expect e;
+  check::Expect e("t is the fraction of the way from a to b");
   e.near("t", 0.5, 0.75, 1e-12);
   e.equal("hit", true, true);
   const check::Outcome o = e.outcome();
   CHECK(o.verdict == check::Outcome::Verdict::fail);
-  CHECK_THAT(o.why, labkit::check::contains_text("t is off by 0.25"));
+  // The rule first, then the field and its numbers: never a field and a number alone.
+  CHECK(o.why.rfind("t is the fraction of the way from a to b: t is off by 0.25", 0) == 0);
   CHECK_THAT(o.expected, labkit::check::contains_text("t = 0.75"));
   CHECK_THAT(o.got, labkit::check::contains_text("t = 0.5"));
+}
+
+TEST_CASE("Expect names the likely cause a wrong number shows", "[kit]") {
+  const auto why = [](auto got, auto expected) {
+    check::Expect e("rule");
+    e.near("x", got, expected, 1e-12);
+    return e.outcome().why;
+  };
+  CHECK_THAT(why(-2.0, 2.0), labkit::check::contains_text("opposite sign"));
+  CHECK_THAT(why(6.0, 2.0), labkit::check::contains_text("3 times the answer"));
+  CHECK_THAT(why(1.0, 4.0), labkit::check::contains_text("1/4 of the answer"));
+  CHECK_THAT(why(std::sqrt(2.0) * 3, 3.0), labkit::check::contains_text("sqrt(2) times"));
+  CHECK(why(2.5, 2.0) == "rule: x is off by 0.5 (tolerance 1e-12)");  // nothing simple: no guess
+  CHECK_THAT(why(Vec3(0, 0, -1), Vec3(0, 0, 1)), labkit::check::contains_text("opposite way"));
+  CHECK_THAT(why(Vec3(0, 0, 2), Vec3(0, 0, 1)), labkit::check::contains_text("right direction but 2 times"));
+  CHECK_THAT(why(Vec3(0, 1, 0), Vec3(1, 0, 0)), labkit::check::contains_text("another order"));
+  CHECK_THAT(why(Vec3(0.6, 0.8, 0), Vec3(1, 0, 0)), labkit::check::contains_text("right length in another direction"));
+  CHECK_THAT(why(Vec3(0, 0, 0), Vec3(1, 2, 3)), labkit::check::contains_text("zero vector"));
+
+  check::Expect swapped("closest0 is on the first body, closest1 on the second");
+  swapped.near("closest0", Vec3(4, 5, 6), Vec3(1, 2, 3), 1e-12);
+  swapped.near("closest1", Vec3(1, 2, 3), Vec3(4, 5, 6), 1e-12);
+  CHECK_THAT(swapped.outcome().why, labkit::check::contains_text("closest0 and closest1 are swapped"));
+
+  check::Expect counted("a query tests each triangle once");
+  counted.equal("tests", 4, 3);
+  CHECK(counted.outcome().why ==
+        "a query tests each triangle once: tests is 4, not 3; one more than the answer (an off-by-one?)");
 }
 
 TEST_CASE("the given segment-triangle test agrees with the oracle and is watertight", "[kit]") {
