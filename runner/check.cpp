@@ -6,8 +6,11 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
+#include <functional>
 #include <iostream>
 #include <sstream>
 #include <thread>
@@ -45,21 +48,36 @@ std::string counts(const StepResult& r) {
 // A report's text, as the terminal may show it (the code under test wrote it).
 std::string shown(const std::string& text) { return term::indent(safe_text(text), "            "); }
 
-// The commands that replay a case, each one shell word per argument; none for a token
-// the harness never writes (the code under test printed or wrote it).
-void print_replay(const Lab& lab, const std::string& token) {
-  const std::string check = replay_command("check", lab.id, token);
-  if (check.empty()) {
+// A token longer than a report line (a mesh of hundreds of triangles) is kept in a file
+// under build/cases/ and named by a short handle, @query-hash, which ./labkit check and
+// ./labkit view read back: the why line stays in sight. A short token is its own handle.
+std::string handle_of(const std::string& build, const std::string& token) {
+  constexpr std::size_t kLongest = 160;
+  if (token.size() <= kLongest) return shell_quote(token);
+  char hash[9];
+  std::snprintf(hash, sizeof hash, "%08x", unsigned(std::hash<std::string>{}(token)&0xffffffffu));
+  const std::string name = token.substr(0, token.find(':')) + "-" + hash;
+  std::error_code ignored;
+  std::filesystem::create_directories(build + "/cases", ignored);
+  std::ofstream(build + "/cases/" + name) << token;
+  return "@" + name;
+}
+
+// The commands that replay a case; none for a token the harness never writes (the code
+// under test printed or wrote it).
+void print_replay(const Lab& lab, const std::string& token, const std::string& build) {
+  if (!is_replay_token(token)) {
     std::cout << "  replay    none (the case reported is not a replay token the kit writes)\n";
     return;
   }
-  std::cout << "  replay    " << bold(check) << "\n";
-  std::cout << "  see it    " << replay_command("view", lab.id, token) << "\n";
+  const std::string handle = handle_of(build, token);
+  std::cout << "  replay    " << bold("./labkit check " + lab.id + " --case " + handle) << "\n";
+  std::cout << "  see it    ./labkit view " << lab.id << " --case " << handle << "\n";
 }
 
-void print_failure(const Failure& f, const std::string& query, const Lab& lab) {
+void print_failure(const Failure& f, const std::string& query, const Lab& lab, const std::string& build) {
   std::cout << safe_text(labkit::report::format(f, query, "  "));
-  if (!f.replay.empty()) print_replay(lab, f.replay);
+  if (!f.replay.empty()) print_replay(lab, f.replay, build);
 }
 
 // What gdb printed about the answerer (--debug), in short.
@@ -96,7 +114,7 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
       // Its output may have faked the in-flight marker: only a real token is described.
       if (is_replay_token(r.inflight))
         std::cout << "  on input  " << shown(describe_token(programs, lab, r.inflight)) << "\n";
-      print_replay(lab, r.inflight);
+      print_replay(lab, r.inflight, paths.build);
     }
     const std::string tail =
         r.run.output.size() > 1200 ? r.run.output.substr(r.run.output.size() - 1200) : r.run.output;
@@ -109,7 +127,7 @@ void print_details(const StepResult& r, const Lab& lab, const Paths& paths) {
       return;
     }
     if (q.failure && q.not_implemented.empty()) {
-      print_failure(*q.failure, q.query, lab);
+      print_failure(*q.failure, q.query, lab, paths.build);
       return;
     }
   }
@@ -324,7 +342,7 @@ int check(const Paths& paths, const CheckOptions& options) {
                     << "): ";
           if (q.failure) {
             std::cout << red("fails") << "\n";
-            print_failure(*q.failure, q.query, *lab);
+            print_failure(*q.failure, q.query, *lab, paths.build);
             if (options.debug) print_debugger(r.run.output);
           } else {
             std::cout << green(q.ambiguous ? "passes (an ambiguous case: any answer is accepted)" : "passes") << "\n";
