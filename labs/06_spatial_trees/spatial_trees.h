@@ -376,7 +376,7 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
 
 // ---- Step 8 (L06S8): efficiency, counted -------------------------------------------------------
 // No new function: steps 1, 2 and 5 must also be fast, measured by counting tests, never
-// by timing. On 10,000-triangle meshes (a sphere, a torus, a terrain and a soup, from
+// by timing. On meshes of about 10,000 triangles (a sphere, a torus, a terrain and a soup, from
 // common/generators/meshes.h) with your own tree, over 1,000 random segments per mesh and
 // query:
 //  - short segments (a fiftieth of the mesh's size) at the surface: first_hit and any_hit

@@ -209,10 +209,11 @@ void SpatialTreesScene::update_kd() {
   any_ = counted(1, [&] { return any_hit(tree_, segment_); });
   all_ = counted(2, [&] { return all_hits(tree_, segment_); });
   exact_hits_ = oracle::segment_mesh_crossings(segment_, mesh_);
-  Step s2 =
-      judged("L06S2",
-             std::string("first_hit, any_hit, all_hits on ") + (tree_is_students_ ? "your tree" : "the checker's tree"),
-             first_, [&](const KdHit& got) { return judge::first_hit(in, tree_, got, calls[0]); });
+  Step s2 = judged("L06S2",
+                   std::string("first_hit, any_hit, all_hits on ") + (tree_is_students_   ? "your tree"
+                                                                      : figure_ == "walk" ? "a median tree"
+                                                                                          : "the checker's tree"),
+                   first_, [&](const KdHit& got) { return judge::first_hit(in, tree_, got, calls[0]); });
   join(s2, any_, [&](const KdHit& got) { return judge::any_hit(in, tree_, got, calls[1]); });
   join(s2, all_, [&](const KdHits& got) { return judge::all_hits(in, tree_, got, calls[2]); });
   int met = 0;
@@ -231,7 +232,12 @@ void SpatialTreesScene::update_kd() {
            : "",
        "brute force: " + std::to_string(mesh_.size())},
       {"leaves the segment meets", std::to_string(met), "of " + std::to_string(leaves_.size())}};
-  if (!tree_is_students_ && s2.note.empty()) s2.note = "step 1 is not done: the queries run on the checker's tree";
+  // Whose tree is drawn and queried, said where the verdicts are: never "agrees" beside a
+  // tree that is not the student's without the reason.
+  if (!tree_is_students_ && s2.note.empty())
+    s2.note = figure_ == "walk" ? "the walk figure draws a median tree, 5 levels deep, not yours"
+              : !built_         ? "step 1 is not done: the queries run on the checker's tree"
+                                : "your tree breaks step 1's rule: the queries run on the checker's tree";
   verdict_[2] = s2.verdict;
   steps.push_back(s2);
 }
