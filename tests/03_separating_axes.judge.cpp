@@ -71,6 +71,19 @@ bool meet(const MovingBoxes& in, double from, double to, double slack) {
   return oracle::moving_boxes_meet(in.a, in.velocity_a, in.b, in.velocity_b, from, to, slack);
 }
 
+// The answer of a test that takes the centres' offset c_B - c_A as if it were already in
+// A's frame (the A^T left out): that of B moved to c_A + A (c_B - c_A). When it is the
+// answer given, the likely cause is that frame.
+bool offset_frame_mistake_agrees(const BoxPair& in, bool answer_intersecting) {
+  if (in.a.axes.isIdentity(0)) return false;  // A's frame is the world's: no such mistake
+  Box moved = in.b;
+  moved.center = in.a.center + in.a.axes * (in.b.center - in.a.center);
+  return oracle::boxes_intersect(in.a, moved) == answer_intersecting;
+}
+constexpr const char* kOffsetFrame =
+    "; is the offset between the centres in A's frame, t = A^T (c_B - c_A)? Your answer is that of the offset "
+    "taken as it is";
+
 // Why a yes/no answer about two static boxes is wrong, in the contract's words: the axis
 // that separates them and its gap, or that none does, and the likely cause.
 std::string why_boxes(const BoxPair& in, bool expected_intersecting) {
@@ -93,7 +106,9 @@ std::string why_boxes(const BoxPair& in, bool expected_intersecting) {
       return "the boxes are apart (flat boxes, beside each other in a plane), your answer says they intersect";
     std::string why = axis_name(best) + " is a separating axis: the boxes' projections on it are apart (gap " +
                       fmt(gap) + " along the unit axis); your answer says they intersect";
-    if (best >= 6 && !face_separates)
+    if (offset_frame_mistake_agrees(in, true))
+      why += kOffsetFrame;
+    else if (best >= 6 && !face_separates)
       why += "; only an edge axis A_i x B_j separates them: are all 9 edge axes tested?";
     else if (gap < 1e-6 * size)
       why += "; a gap this small is lost to an epsilon added to the radii";
@@ -103,10 +118,12 @@ std::string why_boxes(const BoxPair& in, bool expected_intersecting) {
                     fmt(least) + "), your answer says separated";
   if (least <= 1e-9 * size)
     why += "; boxes that only touch intersect: separation is strict, |s| > r_A + r_B";
+  else if (offset_frame_mistake_agrees(in, false))
+    why += kOffsetFrame;
   else if (shortest >= 0 && shortest_length < 1e-6)
-    why += "; " + axis_name(shortest) + " has length " + fmt(shortest_length) +
-           ": nearly parallel edges (a zero axis separates nothing); compute its radius along the vector itself, "
-           "B_m . L, not with R(i, n)";
+    why += "; if your answer came from " + axis_name(shortest) + ": it has length " + fmt(shortest_length) +
+           " here (nearly parallel edges), and a zero axis separates nothing; compute its radius along the vector "
+           "itself, B_m . L, not with R(i, n)";
   return why;
 }
 
@@ -208,7 +225,10 @@ Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules) {
   if (got.axis_index < 0 || got.axis_index > 14 || !got.axis.allFinite() || !std::isfinite(got.depth))
     return fail("an axis index from 0 to 14 with a finite axis and depth", answer, "the axis or the depth is missing");
   if (std::abs(got.axis.norm() - 1) > 1e-9)
-    return fail("a unit axis", answer, "the axis has length " + fmt(got.axis.norm()) + ", not 1");
+    return fail("a unit axis", answer,
+                "the reported axis is the unit vector L / |L| (a depth is measured along a unit axis): yours has "
+                "length " +
+                    fmt(got.axis.norm()));
   const Vec3 numbered = oracle::box_pair_axis(in.a, in.b, got.axis_index);
   const double length = numbered.norm();
   // The axis itself before the rules about short axes: a wrong axis (B's rows taken for

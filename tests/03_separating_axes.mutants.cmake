@@ -35,7 +35,7 @@ labkit_mutant(03 separating_axes NAME b_axis_from_a_row STEP 2 SAYS "B's column"
 
 # Step 2: the centres' offset c_B - c_A left in world coordinates while R and the radii are
 # in A's frame: it must be expressed in A's frame too, t = A^T (c_B - c_A).
-labkit_mutant(03 separating_axes NAME offset_not_in_a_frame STEP 2 SAYS "projections"
+labkit_mutant(03 separating_axes NAME offset_not_in_a_frame STEP 2 SAYS "projections" "A's frame"
   FIND "t(box_a.axes.transpose() * (box_b.center - box_a.center)),"
   REPLACE "t(box_b.center - box_a.center),")
 

@@ -186,7 +186,7 @@ Outcome kd_tree(const Mesh& mesh, const KdTree& got) {
     const Aabb b = box_of(t);
     if (!((b.min.array() >= got.bounds.min.array()).all() && (b.max.array() <= got.bounds.max.array()).all()))
       return fail(expected, "bounds " + labkit::describe(got.bounds),
-                  "triangle " + str(i) + " is not inside the bounds");
+                  "the tree's bounds hold every triangle of the mesh: triangle " + str(i) + " is not inside them");
   }
   std::vector<LeafCell> leaves;
   const std::string shape = walk_kd_tree(got, leaves);

@@ -102,14 +102,16 @@ std::string describe_hit(const KdHit& h) {
 // reports it (point on the segment and the triangle, t and the weights reproduce it).
 std::string check_hit(const Segment& s, const Mesh& mesh, const KdHit& h, double tol) {
   if (h.triangle < 0 || std::size_t(h.triangle) >= mesh.size())
-    return "triangle " + str(h.triangle) + " does not exist";
+    return "a hit names a triangle of the mesh: triangle " + str(h.triangle) + " does not exist";
   const Triangle tri = mesh.triangle(std::size_t(h.triangle));
   if (!h.point.allFinite() || !oracle::within(h.point, tri, tol))
-    return "the point " + fmt(h.point) + " is not on triangle " + str(h.triangle) + " (tolerance " + fmt(tol) + ")";
+    return "a hit's point is where the segment meets its triangle: " + fmt(h.point) + " is not on triangle " +
+           str(h.triangle) + " (tolerance " + fmt(tol) + ")";
   if (!oracle::within(h.point, s, tol))
-    return "the point " + fmt(h.point) + " is not on the segment (tolerance " + fmt(tol) + ")";
+    return "a hit's point is where the segment meets its triangle: " + fmt(h.point) +
+           " is not on the segment (tolerance " + fmt(tol) + ")";
   if (!oracle::parameter_reproduces(s, h.t, h.point, tol))
-    return "a + t (b - a) with t = " + fmt(h.t) + " is not the point " + fmt(h.point);
+    return "a hit's t gives its point, a + t (b - a): with t = " + fmt(h.t) + " it is not the point " + fmt(h.point);
   if (!(std::abs(h.barycentric.sum() - 1) <= kRelative) || !oracle::weights_reproduce(tri, h.barycentric, h.point, tol))
     return "the weights " + fmt(h.barycentric) + " do not describe the point (use given::segment_triangle's)";
   return "";
