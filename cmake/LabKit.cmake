@@ -122,14 +122,15 @@ function(labkit_add_lab number name)
   set_property(GLOBAL APPEND PROPERTY LABKIT_GRADING_TARGETS answer_${stem}_student test_${stem})
 
   # ctest: one test per step of the reference. Each leaves its harness report in
-  # build/reports/, which `labkit-runner report` sums up after the suite.
+  # build/reports/, which `labkit-runner report` sums up after the suite, and checks that
+  # every random case it draws lies in the header's input domain (LABKIT_DOMAIN_AUDIT).
   if(TARGET ${lab}_reference)
     labkit_manifest_steps(${number} steps)
     file(MAKE_DIRECTORY "${PROJECT_BINARY_DIR}/reports")
     foreach(step IN LISTS steps)
       add_test(NAME ${lab}.step${step} COMMAND test_${stem} "[${lab}][step${step}]")
       set_tests_properties(${lab}.step${step} PROPERTIES LABELS "reference;${lab}" FIXTURES_SETUP labkit_reports
-        ENVIRONMENT "LABKIT_REPORT=${PROJECT_BINARY_DIR}/reports/${lab}.step${step}.json;LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>")
+        ENVIRONMENT "LABKIT_REPORT=${PROJECT_BINARY_DIR}/reports/${lab}.step${step}.json;LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>;LABKIT_DOMAIN_AUDIT=1")
     endforeach()
     # The header's preconditions: the reference rejects every kind of invalid input with
     # std::invalid_argument naming the argument. Tagged [contract], in no step: students

@@ -366,6 +366,8 @@ int check(const Paths& paths, const CheckOptions& options) {
                 << term::pad(s.title, title_width) << term::pad(coloured_status(r.status), 22) << counts(r) << "\n";
       if (r.status == Status::passed) {
         ++passing;
+        for (const QueryResult& q : r.queries)
+          for (const std::string& note : q.notes) std::cout << dim("       " + safe_text(note)) << "\n";
         continue;
       }
       if (r.status != Status::not_implemented) to_explain.push_back({lab, r});

@@ -14,9 +14,12 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
-// The header's input domain (every non-zero coordinate, offset and normal component from 2^-100 to 2^100): shrinking a failing case stays in it.
+// The header's input domain (every non-zero coordinate, offset and normal component from
+// 2^-130 to 2^130): shrinking a failing case stays in it.
 const bool kDomain = [] {
-  check::domain({check::Domain::Of::each, 0x1p-100, 0x1p100});
+  // Not audited yet: a frustum's planes, derived from a camera or a lattice, have offsets
+  // that cancel to any small value (2^-134 was drawn), below the per-value domain.
+  check::domain({check::Domain::Of::each, 0x1p-130, 0x1p130, false, false});
   return true;
 }();
 

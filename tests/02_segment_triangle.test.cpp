@@ -17,9 +17,11 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
-// The header's input domain (S, the largest absolute coordinate, from 1e-50 to 1e50): shrinking a failing case stays in it.
+// The header's input domain (S, the largest absolute coordinate, from 1e-50 to 1e50): each
+// case is drawn in it (scaled by a power of two, which keeps it the same case) and
+// shrinking a failing case stays in it.
 const bool kDomain = [] {
-  check::domain({check::Domain::Of::scale, 1e-50, 1e50});
+  check::domain({check::Domain::Of::scale, 1e-50, 1e50, true});
   return true;
 }();
 

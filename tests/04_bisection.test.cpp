@@ -18,7 +18,8 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
-// The header's input domain (every length 0 or of magnitude from 1e-100 to 1e100): shrinking a failing case stays in it.
+// The header's input domain (every length 0 or of magnitude from 1e-100 to 1e100):
+// shrinking a failing case stays in it.
 const bool kDomain = [] {
   check::domain({check::Domain::Of::each, 1e-100, 1e100});
   return true;

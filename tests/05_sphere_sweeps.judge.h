@@ -52,3 +52,13 @@ Outcome sweep_box_plane(const BoxPlaneMotion& in, const Sweep& got, Rules rules 
 
 }  // namespace judge
 }  // namespace labkit::lab05
+
+namespace labkit {
+
+// The header's S of the inputs whose S is not their largest length (a plane counts by its
+// distance from the origin, not its normal's size): the domain check::in_domain keeps a
+// shrunk case in.
+inline double header_scale(const SpherePlaneMotion& in) { return lab05::judge::scale(in); }
+inline double header_scale(const BoxPlaneMotion& in) { return lab05::judge::scale(in); }
+
+}  // namespace labkit

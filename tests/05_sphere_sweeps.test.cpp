@@ -14,7 +14,8 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
-// The header's input domain (S 0 or in [1e-40, 1e40]): shrinking a failing case stays in it.
+// The header's input domain (S 0 or in [1e-40, 1e40]): shrinking a failing case stays in
+// it.
 const bool kDomain = [] {
   check::domain({check::Domain::Of::scale, 1e-40, 1e40});
   return true;

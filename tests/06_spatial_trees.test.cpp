@@ -20,9 +20,11 @@ using check::Expect;
 using check::Outcome;
 using judge::Rules;
 
-// The header's input domain (S from 1e-50 to 1e50, or all zeros): shrinking a failing case stays in it.
+// The header's input domain (S from 1e-50 to 1e50, or all zeros): each case is drawn in it
+// (scaled by a power of two, which keeps it the same case) and shrinking a failing case
+// stays in it.
 const bool kDomain = [] {
-  check::domain({check::Domain::Of::scale, 1e-50, 1e50});
+  check::domain({check::Domain::Of::scale, 1e-50, 1e50, true});
   return true;
 }();
 
@@ -742,6 +744,7 @@ Outcome run_efficiency(const EfficiencyCase& in) {
   if (long_all.mean() > kLongAllMean)
     return check::fail(expected, got,
                        "all_hits tests only the leaves the segment meets: too many tests on the " + name + leaves);
+  check::note(query::efficiency_segments.name, name + ": " + got + " (bounds: " + expected + ")");
   return check::pass();
 }
 
@@ -765,7 +768,13 @@ TEST_CASE(LABKIT_STEP(L06S8) ": tests counted on about 10,000 triangles", "[lab0
            "(stop at the first interval starting after high[i]); a grid, those in the same or adjacent cells (cells at "
            "least one diameter wide, not much more); the brute force makes " +
                std::to_string(in.count * (in.count - 1) / 2));
-    return e.outcome();
+    const Outcome o = e.outcome();
+    if (o.verdict == Outcome::Verdict::pass)
+      check::note(query::efficiency_spheres.name, std::to_string(in.count) + " spheres: " + std::to_string(got.tests) +
+                                                      " tests (bound " + std::to_string(kSphereTests) +
+                                                      "; the brute force makes " +
+                                                      std::to_string(in.count * (in.count - 1) / 2) + ")");
+    return o;
   });
 }
 

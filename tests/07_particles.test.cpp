@@ -16,9 +16,10 @@ using check::Outcome;
 using check::rejects;
 using judge::Rules;
 
-// The header's input domain (every coordinate, velocity and gravity component 0 or from 2^-100 to 2^100): shrinking a failing case stays in it.
+// The header's input domain (every coordinate, velocity and gravity component 0 or from
+// 2^-130 to 2^130): shrinking a failing case stays in it.
 const bool kDomain = [] {
-  check::domain({check::Domain::Of::each, 0x1p-100, 0x1p100});
+  check::domain({check::Domain::Of::each, 0x1p-130, 0x1p130});
   return true;
 }();
 

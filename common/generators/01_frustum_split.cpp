@@ -1,7 +1,10 @@
 #include "common/generators/01_frustum_split.h"
 #include "common/generators/generators.h"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <vector>
 
 namespace labkit {
 
@@ -102,8 +105,27 @@ namespace {
 Triangle wound(Triangle t);
 
 // An exponent for the scale extremes: 2^-100 to 2^-60 or 2^60 to 2^100 (about 1e-30 to
-// 1e-18 and 1e18 to 1e30), the ends of the header's domain.
+// 1e-18 and 1e18 to 1e30), toward the ends of the header's domain.
 int signed_extreme() { return *rc::gen::element(-1, 1) * *rc::gen::inRange(60, 101); }
+
+// The exponent e, moved toward 0 as far as needed for every non-zero value times 2^e to
+// stay inside 2^-100 to 2^100, the scale families' ends (the header's domain reaches
+// 2^-130 and 2^130: room for what a case builds on them). Values spread wider (an offset
+// left near 0 by rounding) are not scaled at all.
+int inside_domain(int e, const std::vector<double>& values) {
+  int low = -100000, high = 100000;
+  for (double v : values)
+    if (v != 0 && std::isfinite(v)) {
+      low = std::max(low, -100 - std::ilogb(v));
+      high = std::min(high, 99 - std::ilogb(v));
+    }
+  return low > high ? 0 : std::clamp(e, low, high);
+}
+std::vector<double> components(std::initializer_list<Vec3> vs, std::initializer_list<double> xs = {}) {
+  std::vector<double> out(xs);
+  for (const Vec3& v : vs) out.insert(out.end(), {v.x(), v.y(), v.z()});
+  return out;
+}
 
 // The same plane with its coefficients times k: normals up to 2 become up to 16, the
 // edge of lab 01's exact domain (|n_i| <= 16, |offset| <= 2^14 times the lattice unit).
@@ -212,6 +234,8 @@ rc::Gen<TrianglePlane> needle_plane_case() {
 // The same case with its coordinates times 2^e and its normal times 2^g: every
 // degeneracy stays exact, and the coordinates reach the header's extremes.
 TrianglePlane scaled(TrianglePlane c, int e, int g) {
+  e = inside_domain(e, components({c.triangle.v0, c.triangle.v1, c.triangle.v2}));
+  g = inside_domain(g, components({c.plane.normal}, {std::ldexp(c.plane.offset, e)}));
   for (int i = 0; i < 3; ++i) c.triangle[i] = std::ldexp(1.0, e) * c.triangle[i];
   c.plane.normal *= std::ldexp(1.0, g);
   c.plane.offset = std::ldexp(c.plane.offset, e + g);
@@ -596,13 +620,16 @@ rc::Gen<CameraParameters> camera() {
       return f.cross(u).norm() >= std::sin(15 * M_PI / 180) * f.norm() * u.norm();
     });
     if (*rc::gen::inRange(0, 16) == 0) {  // forward and up of any length
-      c.forward *= std::ldexp(1.0, *rc::gen::inRange(-100, 101));
-      c.up *= std::ldexp(1.0, *rc::gen::inRange(-100, 101));
+      c.forward *= std::ldexp(1.0, inside_domain(*rc::gen::inRange(-100, 101), components({c.forward})));
+      c.up *= std::ldexp(1.0, inside_domain(*rc::gen::inRange(-100, 101), components({c.up})));
     }
     c.fov_y = *rc::gen::inRange(20, 121) * M_PI / 180;
     c.aspect = *rc::gen::element(0.5, 0.75, 1.0, 4.0 / 3.0, 16.0 / 9.0, 2.0);
     c.near = s * std::ldexp(1.0, *rc::gen::inRange(-3, 2));
     c.far = c.near * *rc::gen::inRange(2, 65);
+    // At the ends of the domain, every length kept inside it (a similar camera).
+    const int e = inside_domain(0, components({c.eye}, {c.near, c.far}));
+    c.eye *= std::ldexp(1.0, e), c.near = std::ldexp(c.near, e), c.far = std::ldexp(c.far, e);
     return c;
   });
 }
@@ -642,7 +669,7 @@ rc::Gen<TriangleFrustum> triangle_frustum() {
     TriangleFrustum c = *rc::gen::weightedOneOf<TriangleFrustum>({{3, camera_case()}, {1, exact_case()}});
     if (*rc::gen::inRange(0, 8) == 0)  // each plane's coefficients times 2^-100 to 2^100: normals of any length
       for (Plane& p : c.frustum.planes) {
-        const int g = *rc::gen::inRange(-100, 101);
+        const int g = inside_domain(*rc::gen::inRange(-100, 101), components({p.normal}, {p.offset}));
         p = {std::ldexp(1.0, g) * p.normal, std::ldexp(p.offset, g)};
       }
     return c;

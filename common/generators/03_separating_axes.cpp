@@ -1,6 +1,7 @@
 #include "common/generators/03_separating_axes.h"
 #include "common/generators/generators.h"
 #include "common/generators/grid.h"
+#include "common/harness/codec.h"
 
 #include <algorithm>
 #include <array>
@@ -496,9 +497,16 @@ MovingBoxes moving(bool exact) {
   return m;
 }
 
-// The ends of the header's scale range: every position (and velocity) times 2^160 or
-// 2^-160 (about 1e48 and 1e-48). Powers of two keep every relation of the case exact.
-double scale_end() { return std::ldexp(1.0, *rc::gen::element(160, -160)); }
+// The ends of the header's scale range: every position (and velocity) times the power of
+// two that takes the case's S to just inside 1e50 (2^165 <= S < 2^166) or 1e-50
+// (2^-166 <= S < 2^-165). Powers of two keep every relation of the case exact.
+template <class T> double scale_end(const T& c) {
+  const codec::Values v = values_of(c);
+  double s = 1e-300;
+  for (std::size_t i = 0; i < v.numbers.size(); ++i)
+    if (v.kinds[i] == codec::Kind::length) s = std::max(s, std::abs(v.numbers[i]));
+  return std::ldexp(1.0, *rc::gen::element(165, -166) - std::ilogb(s));
+}
 Box scaled(Box b, double f) {
   b.center *= f;
   b.half_extents *= f;
@@ -516,7 +524,10 @@ MovingBoxes scaled(MovingBoxes m, double f) {
 }
 // One case in 16 at an end of the scale range.
 template <class T> rc::Gen<T> with_scale_ends(rc::Gen<T> gen) {
-  return rc::gen::weightedOneOf<T>({{15, gen}, {1, rc::gen::exec([gen] { return scaled(*gen, scale_end()); })}});
+  return rc::gen::weightedOneOf<T>({{15, gen}, {1, rc::gen::exec([gen] {
+                                                  const T c = *gen;
+                                                  return scaled(c, scale_end(c));
+                                                })}});
 }
 
 }  // namespace
@@ -541,7 +552,7 @@ rc::Gen<BoxOnAxis> box_on_axis() {
         in.axis = in.box.axes.col(0).cross(in.box.axes.col(*rc::gen::inRange(1, 3)));
     }
     if (*rc::gen::inRange(0, 8) == 0) in.box.center += *lattice_point(1024.0 * std::max(1.0, scale_of(in)), 64);
-    if (*rc::gen::inRange(0, 16) == 0) in.box = scaled(in.box, scale_end());
+    if (*rc::gen::inRange(0, 16) == 0) in.box = scaled(in.box, scale_end(in.box));
     return in;
   });
 }

@@ -446,7 +446,8 @@ rc::Gen<CollideCase> collide_case(bool decided) {
     // The integrator's velocity: the step's own, or one that differs from it (Euler's new
     // velocity is not the one it moved with).
     const Vec3 along = (c.step.b - c.step.a) / out.dt;
-    const double size = std::max(largest(along), 1e-300);
+    // A particle at rest (a = b) is given a velocity at the scale of where it is.
+    const double size = largest(along) > 0 ? largest(along) : std::max(largest(c.step.a), 0x1p-100) / out.dt;
     out.velocity = *rc::gen::weightedOneOf<Vec3>(
         {{3, rc::gen::just(along)},
          {1, rc::gen::map(lattice_point(size / 4, 4), [along](const Vec3& d) { return Vec3(along + d); })}});

@@ -51,6 +51,7 @@ Settings read_settings() {
   if (const char* v = std::getenv(variable::hide_seed)) s.hide_seed = std::string(v) == "1";
   if (const char* v = std::getenv(variable::describe)) s.describe_only = std::string(v) == "1";
   if (const char* v = std::getenv(variable::count_all)) s.count_all = std::string(v) == "1";
+  if (const char* v = std::getenv(variable::domain_audit)) s.domain_audit = std::string(v) == "1";
   // A graded run's seed is a secret: it comes in a file that is deleted once read, and
   // is wiped from the environment (getenv, and /proc/self/environ, which shows the
   // original bytes in place), before any code under test runs (see read_early below).
@@ -99,6 +100,8 @@ std::map<std::string, std::string>& rules() {
 }  // namespace
 
 void rule(const std::string& query, const std::string& text) { rules()[query] = text; }
+
+void note(const std::string& query, const std::string& text) { detail::entry(query, "examples").notes.push_back(text); }
 
 const std::string& rule_of(const std::string& query) {
   static const std::string none;
@@ -384,6 +387,12 @@ Domain& the_domain() {
 }  // namespace
 
 void domain(const Domain& d) { the_domain() = d; }
+const Domain& domain() { return the_domain(); }
+
+bool in_domain_scale(double s) {
+  const Domain& d = the_domain();
+  return std::isfinite(s) && (s == 0 || (s >= d.low && s <= d.high));
+}
 
 bool in_domain(const codec::Values& v) {
   const Domain& d = the_domain();
@@ -457,9 +466,12 @@ std::string likely_cause(const Vec3& got, const Vec3& expected, double tolerance
   if (g <= tolerance) return "yours is the zero vector";
   if (x <= tolerance) return "";
   if (got.cross(expected).norm() <= tolerance * x && got.dot(expected) > 0) {
+    if (std::abs(g - x) <= 1e-6 * x) return "";
     const std::string f = factor_words(g / x);
     return "yours has the right direction but " + (f.empty() ? fmt(g / x) + " times" : f) + " the length";
   }
+  // The two causes below read a shape in the difference: not in one of rounding's size.
+  if ((got - expected).norm() < 1e-3 * x) return "";
   Vec3 a = got.cwiseAbs(), b = expected.cwiseAbs();
   std::sort(a.data(), a.data() + 3);
   std::sort(b.data(), b.data() + 3);

@@ -64,6 +64,7 @@ struct Settings {
   bool hide_seed = false;
   bool describe_only = false;  // LABKIT_DESCRIBE=1: with a replay, describe its input, run nothing
   bool count_all = false;
+  bool domain_audit = false;  // LABKIT_DOMAIN_AUDIT=1: a case drawn outside the header's domain is a kit error
 };
 const Settings& settings();
 
@@ -153,17 +154,57 @@ std::string likely_cause(const Vec3& got, const Vec3& expected, double tolerance
 struct Domain {
   enum class Of { scale, each } of = Of::scale;
   double low = 0, high = std::numeric_limits<double>::infinity();
+  // The lab's inputs scale exactly: every length times a power of two is the same case at
+  // another size (no plane's offset beside its normal, no mass beside a length). Its
+  // families are drawn scale-free, and each case drawn is placed in [low, high] (fitted).
+  bool fit = false;
+  // Checked by the domain audit (LABKIT_DOMAIN_AUDIT): false where the generators cannot
+  // keep every derived number in a per-value domain yet (lab 01: frustum planes' offsets,
+  // which cancel to any small value), said where it is set.
+  bool audited = true;
 };
 void domain(const Domain& d);
+const Domain& domain();
 struct OutsideDomain : std::runtime_error {
   explicit OutsideDomain(const std::string& input)
       : std::runtime_error(
-            "a failing case to show lies outside the header's input domain, so it shows nothing about "
-            "the answer (the kit's generator is at fault): " +
+            "a shrunk failing case left the header's input domain, so it shows nothing about the answer (the "
+            "kit's shrinking is at fault): " +
             input.substr(0, 300)) {}
 };
 bool in_domain(const codec::Values& v);
-template <class Input> bool in_domain(const Input& input) { return in_domain(values_of(input)); }
+bool in_domain_scale(double s);  // S alone, for Of::scale: 0 or within [low, high]
+namespace detail {
+template <class T, class = void> struct HasHeaderScale : std::false_type {};
+template <class T>
+struct HasHeaderScale<T, std::void_t<decltype(header_scale(std::declval<const T&>()))>> : std::true_type {};
+}  // namespace detail
+// A lab whose header defines S otherwise than as the largest length (lab 05: a plane's
+// distance |offset| / |n|, its direction left out) declares header_scale(input) for
+// those inputs, beside them (found by argument-dependent lookup).
+// The case scaled by the power of two that brings its S into the domain, for a lab whose
+// inputs scale exactly (Domain::fit); every relation of it (a touch, a coplanarity, a
+// tie) stays exact. Any other case as it is.
+template <class Input> Input fitted(const Input& input) {
+  const Domain& d = domain();
+  if (!d.fit || d.of != Domain::Of::scale) return input;
+  codec::Values v = values_of(input);
+  double s = 0;
+  for (std::size_t i = 0; i < v.numbers.size(); ++i)
+    if (v.kinds[i] == codec::Kind::length) s = std::max(s, std::abs(v.numbers[i]));
+  if (s == 0 || !std::isfinite(s) || (s >= d.low && s <= d.high)) return input;
+  const int k = s > d.high ? std::ilogb(d.high) - 1 - std::ilogb(s) : std::ilogb(d.low) + 1 - std::ilogb(s);
+  for (std::size_t i = 0; i < v.numbers.size(); ++i)
+    if (v.kinds[i] == codec::Kind::length) v.numbers[i] = std::ldexp(v.numbers[i], k);
+  return from_numbers<Input>(std::move(v.numbers));
+}
+
+template <class Input> bool in_domain(const Input& input) {
+  if constexpr (detail::HasHeaderScale<Input>::value)
+    return in_domain_scale(header_scale(input));
+  else
+    return in_domain(values_of(input));
+}
 
 // The input's length scale S: its largest absolute coordinate (never below 1e-300).
 template <class Input> double scale_of_input(const Input& input) {
@@ -192,6 +233,9 @@ bool flips_under_perturbation(const Input& input, ExactAnswer&& exact, int sampl
 // input in that query then says the rule before what happened. Set once per query, in
 // the lab's test file, before its cases.
 void rule(const std::string& query, const std::string& text);
+// A measurement a passing example shows beside its step (./labkit check): the counts a
+// step bounds, against their bounds.
+void note(const std::string& query, const std::string& text);
 const std::string& rule_of(const std::string& query);
 template <class Input> void rule(const Query<Input>& query, const std::string& text) { rule(query.name, text); }
 template <class Input> const std::string& rule_of(const Query<Input>& query) { return rule_of(query.name); }
@@ -531,7 +575,7 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
 
   // One probe first: a stub is reported as "not implemented yet" instead of being shrunk.
   {
-    const Input probe = gen(rc::Random(detail::seed_for(query)), 0).value();
+    const Input probe = fitted(gen(rc::Random(detail::seed_for(query)), 0).value());
     detail::QueryReport scratch;
     detail::run_judge(judge, probe, scratch);
     if (!scratch.not_implemented.empty()) {
@@ -554,8 +598,8 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
   // The cases, drawn as RapidCheck draws them: the same seed gives the same cases.
   std::vector<Input> inputs;
   inputs.reserve(std::size_t(s.cases));
-  const auto drawn = rc::detail::checkProperty(rc::detail::toProperty([&] { inputs.push_back(*gen); }), metadata,
-                                               params, listener, {});
+  const auto drawn = rc::detail::checkProperty(rc::detail::toProperty([&] { inputs.push_back(fitted(*gen)); }),
+                                               metadata, params, listener, {});
   if (!drawn.template is<rc::detail::SuccessResult>()) {
     report.error =
         "the random cases could not be drawn: " + (drawn.template is<rc::detail::FailureResult>()
@@ -564,6 +608,16 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
     detail::save_report();
     detail::report_to_catch(report, true);
     return;
+  }
+
+  // The kit's own tests check the generators: every case drawn lies in the header's
+  // domain (the reference's steps run with LABKIT_DOMAIN_AUDIT=1).
+  if (s.domain_audit && domain().audited) {
+    const auto outside = std::find_if(inputs.begin(), inputs.end(), [](const Input& in) { return !in_domain(in); });
+    if (outside != inputs.end())
+      throw std::runtime_error("case " + std::to_string(outside - inputs.begin() + 1) + " of " +
+                               std::to_string(inputs.size()) +
+                               " was drawn outside the header's input domain: " + describe(*outside).substr(0, 600));
   }
 
   // Judged a chunk at a time, each chunk's calls in one batch. The student's check stops
@@ -592,9 +646,6 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
     detail::report_to_catch(report, true);
     return;
   }
-  // Shrinking stays in the header's domain when the case it starts from is in it (a
-  // generator that draws outside it is the kit's to fix; its case is shown as drawn).
-  const bool start_in_domain = in_domain(inputs[std::size_t(first_failing_case) - 1]);
   std::optional<detail::Failure> first_failure = detail::failure_of(
       "", query, inputs[std::size_t(first_failing_case) - 1], outcomes[std::size_t(first_failing_case) - 1]);
   inputs = {};
@@ -621,8 +672,9 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
   std::chrono::steady_clock::time_point shrink_start;
   std::optional<detail::Failure> smallest;
   std::optional<Input> smallest_input;
+  bool start_in_domain = true;
   const auto property = [&] {
-    const Input input = *gen;
+    const Input input = fitted(*gen);
     if (!shrinking && ++seen < first_failing_case) return;
     if (shrinking && (++tries > kShrinkTries || std::chrono::steady_clock::now() - shrink_start > kShrinkTime)) return;
     if (shrinking && start_in_domain && !in_domain(input))
@@ -633,6 +685,9 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
     const Outcome o = detail::run_judge(judge, input, report);
     detail::clear_inflight();
     if (o.verdict != Outcome::Verdict::fail) return;
+    // Shrinking stays in the header's domain when the case it starts from is in it (the
+    // domain audit of the kit's tests keeps the generators in it).
+    if (!shrinking) start_in_domain = in_domain(input);
     shrinking = true;
     ++shrinks;
     smallest = detail::failure_of("", query, input, o);

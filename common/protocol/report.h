@@ -49,9 +49,12 @@ struct Query {
   std::string not_implemented;     // the stub's message, when a stub was hit
   std::string error;               // a failure of the harness itself ("kit error: ...")
   std::optional<Failure> failure;  // null in JSON when every case passed
+  // What a query measured that a student wants to see even when it passes (lab 06 step
+  // 8's test counts against their bounds), measured in the judge's process.
+  std::vector<std::string> notes;
 };
 LABKIT_FIELDS(Query, test_case, query, kind, cases, passed, ambiguous, failed, trivial, trivial_passed, decisive,
-              decisive_passed, not_implemented, error, failure)
+              decisive_passed, not_implemented, error, failure, notes)
 
 // One Catch test case.
 struct TestCase {
@@ -96,6 +99,7 @@ constexpr const char* cases = "LABKIT_CASES";
 constexpr const char* replay = "LABKIT_REPLAY";
 constexpr const char* describe = "LABKIT_DESCRIBE";
 constexpr const char* count_all = "LABKIT_COUNT_ALL";
+constexpr const char* domain_audit = "LABKIT_DOMAIN_AUDIT";  // the kit's own tests: every case drawn in the domain
 }  // namespace variable
 
 }  // namespace labkit::report

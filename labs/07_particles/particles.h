@@ -60,11 +60,12 @@
 //  - Never behind a surface: exact (step 7). Energy: 1e-12, relative (step 7).
 //
 // Input domain: answers must match the exact ones (as above) for every input whose
-// coordinates, velocity and gravity components and speeds are 0 or of magnitude 2^-100 to
-// 2^100 (about 1e-30 to 1e30), with masses and time steps of magnitude 2^-20 to 2^20, and
+// coordinates, velocity and gravity components and speeds are 0 or of magnitude 2^-130 to
+// 2^130 (about 1e-39 to 1e39), with masses and time steps of magnitude 2^-20 to 2^20, and
 // within one input, the gaps between its surfaces (a crack) at least 2^-40 S.
 // Plane normals need not be unit (any non-zero length in that range); triangles may be
-// needles (aspect ratios up to 1e8). The tests draw from all of it, both ends included.
+// needles (aspect ratios up to 1e8). The tests draw from across it, out to about 2^-120
+// and 2^120.
 //
 // Preconditions. Each function refuses invalid input with std::invalid_argument, its
 // message naming the argument and the rule (e.g. "impulse: mass must be finite and > 0,

@@ -61,7 +61,7 @@ def write(queries):
 def query(name, passed, failure=None):
     return {"test_case": "t", "query": name, "kind": "random", "cases": 1, "passed": passed, "ambiguous": 0,
             "failed": 1 - passed, "trivial": 0, "trivial_passed": 0, "decisive": 1, "decisive_passed": passed,
-            "not_implemented": "", "error": "", "failure": failure}
+            "not_implemented": "", "error": "", "failure": failure, "notes": []}
 
 def failure(title, input, got, why, replay):
     return {"title": title, "input": input, "expected": "yes", "got": got, "why": why, "replay": replay, "shrinks": 0}
@@ -124,7 +124,7 @@ student() { mkdir -p "$subs/$1/$(dirname $lab02)" && printf '%s\n' "$2" >"$subs/
 # disk) and the grader's under /tmp. Then they end well.
 tamper() { printf 'for report in "${LABKIT_REPORT:-}" ../report.json ../*/report.json /tmp/labkit-grade.*/*/lab02/*/report.json; do %s; done 2>/dev/null; :' "$1"; }
 crafted="segment_plane:1' ; touch $owned ; '"
-forged='{"seed": "hidden", "cases_per_query": 1, "finished": true, "test_cases": [{"name": "t", "tags": [], "passed": false, "ended": true, "failures": [], "not_implemented": ""}], "queries": [{"test_case": "t", "query": "segment_plane", "kind": "random", "cases": 1, "passed": 0, "ambiguous": 0, "failed": 1, "trivial": 0, "trivial_passed": 0, "decisive": 1, "decisive_passed": 0, "not_implemented": "", "error": "", "failure": {"title": "t", "input": "i", "expected": "e", "got": "g", "why": "w", "replay": "'"$crafted"'", "shrinks": 0}}]}'
+forged='{"seed": "hidden", "cases_per_query": 1, "finished": true, "test_cases": [{"name": "t", "tags": [], "passed": false, "ended": true, "failures": [], "not_implemented": ""}], "queries": [{"test_case": "t", "query": "segment_plane", "kind": "random", "cases": 1, "passed": 0, "ambiguous": 0, "failed": 1, "trivial": 0, "trivial_passed": 0, "decisive": 1, "decisive_passed": 0, "not_implemented": "", "error": "", "failure": {"title": "t", "input": "i", "expected": "e", "got": "g", "why": "w", "replay": "'"$crafted"'", "shrinks": 0}, "notes": []}]}'
 
 student passing ': nothing to add'
 # Two wrong answers breaking one rule on other numbers: one concept on the class page.
@@ -509,7 +509,7 @@ failure = {"title": "random case 7 of 1000", "input": "in", "expected": "yes", "
            "shrinks": 0}
 query = {"test_case": "t", "query": "q", "kind": "random", "cases": 1000, "passed": 791, "ambiguous": 0, "failed": 209,
          "trivial": 0, "trivial_passed": 0, "decisive": 1000, "decisive_passed": 791,
-         "not_implemented": "", "error": "", "failure": failure}
+         "not_implemented": "", "error": "", "failure": failure, "notes": []}
 with open(os.environ["LABKIT_REPORT"], "w") as f:
     json.dump({"seed": "hidden", "cases_per_query": 1000, "finished": True, "queries": [query],
                "test_cases": [{"name": "t", "tags": [], "passed": False, "ended": True, "failures": [],
