@@ -88,11 +88,15 @@ void print_debugger(const std::string& output) {
     return;
   }
   // The signal, the line it stopped on, then the backtrace's frames in the lab's own
-  // files (the kit's frames below them only say how the call arrived).
+  // files (the kit's frames below them only say how the call arrived). The backtrace
+  // ends at its first line that is not a frame: what follows is the tests' own output.
   std::istringstream in(output.substr(at));
   std::string line, lines;
+  bool frames = false;
   for (int n = 0; std::getline(in, line) && n < 60; ++n) {
     const bool frame = line.rfind("#", 0) == 0;
+    if (frames && !frame) break;
+    frames = frames || frame;
     if (frame && line.find("/common/protocol/") != std::string::npos) break;
     if (!frame || line.find("/labs/") != std::string::npos || line.find("/src/") != std::string::npos)
       lines += line + "\n";
@@ -342,7 +346,12 @@ int check(const Paths& paths, const CheckOptions& options) {
                     << "): ";
           if (q.failure) {
             std::cout << red("fails") << "\n";
-            print_failure(*q.failure, q.query, *lab, paths.build);
+            Failure f = *q.failure;
+            // Under gdb the judge sees gdb's exit, not the crash, and gdb's output as the
+            // code's: the debugger's own lines below are the explanation.
+            if (options.debug && (f.got == "a crash" || f.got == "no answer"))
+              f.why = "your code did not answer this call under the debugger: its report below says why and where";
+            print_failure(f, q.query, *lab, paths.build);
             if (options.debug) print_debugger(r.run.output);
           } else {
             std::cout << green(q.ambiguous ? "passes (an ambiguous case: any answer is accepted)" : "passes") << "\n";
