@@ -64,8 +64,9 @@
 //    of the matrix's first three columns and B of its last column.
 //
 // Domain: where answers must match the exact ones within those tolerances. Finite
-// input whose non-zero coordinates, offsets and normal components have magnitudes from
-// 2^-130 to 2^130 (about 1e-39 to 1e39), normals of any length in that range; triangles
+// input whose non-zero coordinates and normal components have magnitudes from 2^-130 to
+// 2^130 (about 1e-39 to 1e39), normals of any length in that range, and offsets at most
+// 2^130 (a smaller one, down to 0, is a plane through or near the origin); triangles
 // of any shape, needles with an aspect up to 1e8 included; cameras with fov_y from 20
 // to 120 degrees, aspect from 1/2 to 2 and far / near up to 64. (In that range a product
 // of three plane values neither overflows nor underflows.)
