@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -56,7 +57,11 @@ std::string handle_of(const std::string& build, const std::string& token) {
   if (token.size() <= kLongest) return shell_quote(token);
   char hash[9];
   std::snprintf(hash, sizeof hash, "%08x", unsigned(std::hash<std::string>{}(token)&0xffffffffu));
-  const std::string name = token.substr(0, token.find(':')) + "-" + hash;
+  // The query names the file; a token the code under test printed (a crash's in-flight
+  // marker) may hold other characters in its query than the kit's names: those become _.
+  std::string name = token.substr(0, token.find(':')) + "-" + hash;
+  for (char& c : name)
+    if (!std::isalnum(static_cast<unsigned char>(c)) && c != '_' && c != '.' && c != '-') c = '_';
   std::error_code ignored;
   std::filesystem::create_directories(build + "/cases", ignored);
   std::ofstream(build + "/cases/" + name) << token;
@@ -81,8 +86,11 @@ void print_failure(const Failure& f, const std::string& query, const Lab& lab, c
 }
 
 // What gdb printed about the answerer (--debug), in short.
+// What gdb prints when the code it runs is stopped by a signal.
+constexpr const char* kGdbStopped = "Program received signal";
+
 void print_debugger(const std::string& output) {
-  const auto at = output.find("Program received signal");
+  const auto at = output.find(kGdbStopped);
   if (at == std::string::npos) {
     std::cout << "  debugger  the code did not crash under gdb\n";
     return;
@@ -349,7 +357,7 @@ int check(const Paths& paths, const CheckOptions& options) {
             Failure f = *q.failure;
             // Under gdb the judge sees gdb's exit, not the crash, and gdb's output as the
             // code's: the debugger's own lines below are the explanation.
-            if (options.debug && (f.got == "a crash" || f.got == "no answer"))
+            if (options.debug && r.run.output.find(kGdbStopped) != std::string::npos)
               f.why = "your code did not answer this call under the debugger: its report below says why and where";
             print_failure(f, q.query, *lab, paths.build);
             if (options.debug) print_debugger(r.run.output);
