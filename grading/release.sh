@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
 # What students and Gradescope get, and nothing more (run through ./labkit):
 #
-#   release OUT_DIR                            the students' repository
-#   package gradescope [--out FILE] [--seed S] [--budget SECONDS]
+#   release OUT_DIR [--classroom ITEM...]      the students' repository; with an
+#                                              assignment (e.g. 03:core), its GitHub
+#                                              Classroom workflow in .github/workflows/
+#   package gradescope [--out FILE] [--seed S] [--budget SECONDS] [--assignment ITEM...]
 #                                              the autograder zip: the release, plus
 #                                              setup.sh, run_autograder and secret_seed
-#                                              (and grading_budget, with --budget)
+#                                              (and grading_budget, with --budget; and
+#                                              assignment.json, with --assignment)
+#
+# An assignment's items (03:core, 06, 05:1,4,5,8, or a JSON file) are checked against
+# the manifest and frozen by the kit's runner ($LABKIT_RUNNER, which ./labkit builds).
 #
 # The release is a list of what to take, not of what to leave out, so that a file added
 # to the kit later never reaches students by default. It never holds solutions/, the
@@ -58,21 +64,64 @@ make_release() {
   say "wrote the student release in $out"
 }
 
+# freeze_assignment OUT_JSON [WORKFLOW] ITEM...: the assignment checked and frozen.
+freeze_assignment() {
+  local out="$1" workflow="$2"
+  shift 2
+  [ -n "${LABKIT_RUNNER:-}" ] || { say "an assignment needs the kit's runner: run this through ./labkit"; exit 2; }
+  [ $# -gt 0 ] || { say "--assignment and --classroom take items, e.g. 03:core (README, \"Fitting a course\")"; exit 2; }
+  "$LABKIT_RUNNER" assignment "$@" --out "$out" ${workflow:+--workflow "$workflow"} >&2 || exit 2
+}
+
+# Items after an option, up to the next option.
+take_items() {
+  items=()
+  while [ $# -gt 0 ] && [[ "$1" != --* ]]; do items+=("$1"); shift; done
+}
+
 command="${1:-}"
 shift || true
 case "$command" in
   release)
-    [ $# -eq 1 ] || { say "usage: ./labkit release OUT_DIR"; exit 2; }
-    make_release "$1"
+    usage="usage: ./labkit release OUT_DIR [--classroom ITEM...]"
+    [ $# -ge 1 ] && [[ "$1" != --* ]] || { say "$usage"; exit 2; }
+    out="$1"
+    shift
+    classroom=()
+    if [ $# -gt 0 ]; then
+      [ "$1" = --classroom ] || { say "unknown option '$1'; $usage"; exit 2; }
+      shift
+      take_items "$@"
+      classroom=("${items[@]}")
+      [ ${#classroom[@]} -eq $# ] || { say "$usage"; exit 2; }
+      [ ${#classroom[@]} -gt 0 ] || { say "--classroom takes an assignment, e.g. 03:core"; exit 2; }
+      # Checked before the release is written: a wrong item leaves no half-made folder.
+      scratch="$(mktemp -d)"
+      trap 'rm -rf "$scratch"' EXIT
+      freeze_assignment "$scratch/assignment.json" "$scratch/classroom.yml" "${classroom[@]}"
+    fi
+    make_release "$out"
+    if [ ${#classroom[@]} -gt 0 ]; then
+      mkdir -p "$out/.github/workflows"
+      cp "$scratch/classroom.yml" "$out/.github/workflows/classroom.yml"
+      say "with its GitHub Classroom workflow: $out/.github/workflows/classroom.yml (README, \"GitHub Classroom\")"
+    fi
     ;;
   package)
-    [ "${1:-}" = gradescope ] || { say "usage: ./labkit package gradescope [--out FILE] [--seed S] [--budget SECONDS]"; exit 2; }
+    [ "${1:-}" = gradescope ] || { say "usage: ./labkit package gradescope [--out FILE] [--seed S] [--budget SECONDS] [--assignment ITEM...]"; exit 2; }
     shift
     zip_file="${LABKIT_BUILD_DIR:-$ROOT/build}/gradescope-autograder.zip"
     seed="${LABKIT_GRADING_SEED:-}"
     budget=""
+    assignment=()
     while [ $# -gt 0 ]; do
       case "$1" in
+        --assignment)
+          shift
+          take_items "$@"
+          [ ${#items[@]} -gt 0 ] || { say "--assignment takes items, e.g. --assignment 03:core"; exit 2; }
+          assignment+=("${items[@]}")
+          shift ${#items[@]} ;;
         --out) zip_file="$2"; shift 2 ;;
         --seed) seed="$2"; shift 2 ;;
         --budget)
@@ -88,7 +137,11 @@ case "$command" in
     fi
     staging="$(mktemp -d)"
     trap 'rm -rf "$staging"' EXIT
+    # The assignment first: a wrong item stops here, before anything is written.
+    if [ ${#assignment[@]} -gt 0 ]; then freeze_assignment "$staging/assignment.json" "" "${assignment[@]}"; fi
     make_release "$staging/source" 2>/dev/null
+    # run_autograder grades this assignment only (./labkit grade --assignment).
+    [ ${#assignment[@]} -eq 0 ] || mv "$staging/assignment.json" "$staging/source/assignment.json"
     cp -p "$ROOT"/grading/gradescope/setup.sh "$ROOT"/grading/gradescope/run_autograder "$staging/source/"
     (umask 077 && printf '%s' "$seed" >"$staging/source/secret_seed")
     # A submission's time budget (./labkit grade --budget); without it, the grader's default.
@@ -101,7 +154,7 @@ case "$command" in
     say "its secret seed is $seed_note; it is in the zip only, never commit it"
     ;;
   *)
-    say "usage: release.sh release OUT_DIR | package gradescope [--out FILE] [--seed S] [--budget SECONDS]"
+    say "usage: release.sh release OUT_DIR [--classroom ITEM...] | package gradescope [--out FILE] [--seed S] [--budget SECONDS] [--assignment ITEM...]"
     exit 2
     ;;
 esac

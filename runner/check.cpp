@@ -247,6 +247,27 @@ std::string describe_token(const Programs& programs, const Lab& lab, const std::
   return token;
 }
 
+namespace {
+
+// "core path (steps 1, 2, 3, 6; about 160 min): 2 of 4 pass; extensions: steps 4, 5",
+// or "done with the core ...": what finishing the lab's one-session path means.
+std::string core_summary(const Lab& lab, const std::vector<StepResult>& results) {
+  std::string core, extensions;
+  int core_steps = 0, core_passing = 0;
+  for (const Step& s : lab.steps) {
+    std::string& list = s.core ? core : extensions;
+    list += (list.empty() ? "" : ", ") + std::to_string(s.number);
+  }
+  for (const StepResult& r : results)
+    if (r.step->core) ++core_steps, core_passing += r.status == Status::passed;
+  const std::string path = "the core path (steps " + core + ", about " + std::to_string(lab.core_minutes()) + " min)";
+  const std::string rest = extensions.empty() ? "" : "; the extensions: steps " + extensions;
+  if (core_steps > 0 && core_passing == core_steps) return "done with " + path + ": every core step passes" + rest;
+  return path + ": " + std::to_string(core_passing) + " of " + std::to_string(core_steps) + " pass" + rest;
+}
+
+}  // namespace
+
 int check(const Paths& paths, const CheckOptions& options) {
   const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
   std::vector<const Lab*> labs;
@@ -376,11 +397,14 @@ int check(const Paths& paths, const CheckOptions& options) {
       return 2;
     }
 
+    // Next: the first core step that does not pass, else the first extension.
+    const StepResult* next = nullptr;
     for (const StepResult& r : results) {
       ++total;
       const Step& s = *r.step;
       std::cout << "  " << term::pad(std::to_string(s.number), 3) << term::pad(s.tag, 7)
-                << term::pad(s.title, title_width) << term::pad(coloured_status(r.status), 22) << counts(r) << "\n";
+                << term::pad(s.core ? "core" : "extension", 11) << term::pad(s.title, title_width)
+                << term::pad(coloured_status(r.status), 22) << counts(r) << "\n";
       if (r.status == Status::passed) {
         ++passing;
         for (const QueryResult& q : r.queries)
@@ -388,13 +412,17 @@ int check(const Paths& paths, const CheckOptions& options) {
         continue;
       }
       if (r.status != Status::not_implemented) to_explain.push_back({lab, r});
-      if (next_step.empty()) {
-        next_step = "lab " + lab->id + " step " + std::to_string(s.number) + " (" + s.tag + "): " + lab->handout() +
-                    ", \"Step " + std::to_string(s.number) + "\"";
-        // A step begun but failing: its hints are one command away (handouts/hints/).
-        if (r.status != Status::not_implemented && std::filesystem::exists(paths.source + "/" + lab->hints()))
-          next_step += "; stuck? ./labkit hint " + lab->id + " " + std::to_string(s.number);
-      }
+      if (!next || (s.core && !next->step->core)) next = &r;
+    }
+    if (steps.size() > 1) std::cout << dim("  " + core_summary(*lab, results)) << "\n";
+    if (next && next_step.empty()) {
+      const Step& s = *next->step;
+      next_step = "lab " + lab->id + " step " + std::to_string(s.number) + " (" + s.tag + ", " +
+                  (s.core ? "core" : "an extension") + "): " + lab->handout() + ", \"Step " + std::to_string(s.number) +
+                  "\"";
+      // A step begun but failing: its hints are one command away (handouts/hints/).
+      if (next->status != Status::not_implemented && std::filesystem::exists(paths.source + "/" + lab->hints()))
+        next_step += "; stuck? ./labkit hint " + lab->id + " " + std::to_string(s.number);
     }
   }
 

@@ -1,6 +1,8 @@
 #include "grade.h"
 #include "cgroup.h"
+#include "assignment.h"
 #include "class_report.h"
+#include "gradebook.h"
 #include "common/text.h"
 #include "lab_build.h"
 #include "results.h"
@@ -22,6 +24,7 @@
 #include <map>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -694,7 +697,10 @@ int grade(const Paths& paths, const GradeOptions& options) {
     std::cerr << "labkit grade: name at least one submission (a folder, a .zip or a .tar.gz)\n";
     return 2;
   }
-  const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
+  Assignment assignment = options.assignment.empty() ? Assignment{} : parse_assignment(options.assignment);
+  const Manifest manifest = restrict_to(load_manifest(paths.source + "/grading/manifest.json"), assignment);
+  const std::optional<Roster> roster =
+      options.roster.empty() ? std::nullopt : std::optional<Roster>(load_roster(options.roster));
   Context c{paths,
             options,
             {},
@@ -739,6 +745,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
     if (options.budget != kGradingBudget) c.run.regrade += " --budget " + points(options.budget);
   }
   c.run.cases = options.cases;
+  c.run.assignment = assignment.name;
   c.run.sandbox = c.sandbox.description();
   fit_envelope(c, own_envelope());
   if (options.seed.empty())
@@ -800,11 +807,14 @@ int grade(const Paths& paths, const GradeOptions& options) {
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (!single) {
     write_file(fs::path(options.out) / "class.csv", class_csv(grades));
+    const Gradebook book = gradebook_csv(grades, assignment.name, roster ? &*roster : nullptr);
+    write_file(fs::path(options.out) / "gradebook.csv", book.csv);
+    for (const std::string& note : book.notes) std::cerr << "labkit grade: gradebook.csv: " << note << "\n";
     const std::string page = write_class_page(grades, c.run, options.out, seconds, c.work + "/plots");
     std::cout << "\n"
               << term::bold("Class") << ": " << grades.size() << " submissions graded in " << points(seconds)
               << " s with " << c.jobs << (c.jobs == 1 ? " worker" : " workers") << "; "
-              << (fs::path(options.out) / "class.csv").string() << ", " << page << "\n";
+              << (fs::path(options.out) / "class.csv").string() << ", gradebook.csv, " << page << "\n";
   } else {
     std::cout << "\nResults: " << (fs::path(options.out) / "results.json").string()
               << ", junit.xml, report.txt, steps.tsv\n";

@@ -9,7 +9,9 @@
 // cases it passes (ambiguous cases count as passed).
 //
 // Results: OUT/results.json (Gradescope), OUT/junit.xml, OUT/report.txt (the table) and
-// OUT/steps.tsv for one submission; OUT/<name>/... for each of several, and OUT/class.csv.
+// OUT/steps.tsv for one submission; OUT/<name>/... for each of several, and OUT/class.csv,
+// OUT/gradebook.csv (for Canvas and Moodle) and the class page. With an assignment
+// (assignment.h) all of them hold its labs and steps only, and its total.
 #pragma once
 
 #include "kit.h"
@@ -42,6 +44,8 @@ struct GradeOptions {
   std::string out = "grades";
   std::string seed;                // the secret seed; "" grades with the public one (and says so)
   std::vector<std::string> labs;   // empty: every lab the kit has
+  std::vector<std::string> assignment;  // its items or file (assignment.h); empty: the whole kit
+  std::string roster;                   // a roster CSV for gradebook.csv (gradebook.h); "": none
   int jobs = 0;                    // processes at once (0: what the CPU and memory envelope allows)
   int cases = kGradingCases;       // random cases per query
   double timeout = 60;             // seconds per step

@@ -1,5 +1,6 @@
 // labkit-runner: the commands behind ./labkit. Run it through ./labkit, which installs
 // what is missing, configures and builds first.
+#include "assignment.h"
 #include "check.h"
 #include "fake.h"
 #include "grade.h"
@@ -69,6 +70,15 @@ int main(int argc, char** argv) {
       ->check(CLI::PositiveNumber);
   grade_command->add_option("--labs", grade.labs, "Only these labs, e.g. --labs 01 02");
   grade_command
+      ->add_option("--assignment", grade.assignment,
+                   "Only this assignment's labs and steps, with its points: an item such as 03:core, 06 or "
+                   "05:1,4,5,8 (repeat the option for more labs), or a JSON file (README, \"Fitting a course\")")
+      ->expected(1)
+      ->take_all();
+  grade_command->add_option("--roster", grade.roster,
+                            "A CSV of the students: a \"submission\" column and the columns your gradebook matches "
+                            "on; gradebook.csv then has a row per student (README, \"Gradebooks\")");
+  grade_command
       ->add_option("--cases", grade.cases,
                    "Random cases per query (default " + std::to_string(runner::kGradingCases) + ")")
       ->check(CLI::Range(1, 100000000));
@@ -98,6 +108,18 @@ int main(int argc, char** argv) {
       ->add_option("--max-ambiguous", max_ambiguous,
                    "Fail when a random family outside a robustness step has more ambiguous cases than this, in %")
       ->check(CLI::Range(0.0, 100.0));
+
+  // `./labkit package gradescope --assignment ...` and `./labkit release --classroom ...`:
+  // the assignment checked against the manifest and frozen (its steps and points as
+  // they are now) into a file the package carries.
+  std::vector<std::string> assignment_items;
+  std::string assignment_out, assignment_workflow;
+  CLI::App* assignment_command =
+      app.add_subcommand("assignment", "Check an assignment against the manifest and write it out, frozen");
+  assignment_command->group("");  // behind ./labkit package and release
+  assignment_command->add_option("items", assignment_items, "Items such as 03:core, or a JSON file")->required();
+  assignment_command->add_option("--out", assignment_out, "The JSON file to write")->required();
+  assignment_command->add_option("--workflow", assignment_workflow, "Also write its GitHub Classroom workflow here");
 
   // The kit's own test of a classic mistake (ctest labNN.mutant.NAME); not for students.
   runner::MutantOptions mutant;
@@ -140,6 +162,7 @@ int main(int argc, char** argv) {
       unsetenv("LABKIT_SEED");
       return runner::grade(paths, grade);
     }
+    if (assignment_command->parsed()) return runner::freeze_assignment(paths, assignment_items, assignment_out, assignment_workflow);
     if (mutant_command->parsed()) return runner::mutant(paths, mutant);
     if (fake_command->parsed()) return runner::fake(paths, fake);
     if (report_command->parsed()) {

@@ -7,6 +7,13 @@
 
 namespace runner {
 
+int Lab::core_minutes() const {
+  int sum = 0;
+  for (const Step& s : steps)
+    if (s.core) sum += s.minutes;
+  return sum;
+}
+
 const Lab* Manifest::find(const std::string& id) const {
   for (const Lab& lab : labs)
     if (lab.id == id || lab.stem() == id || lab.name == id) return &lab;
@@ -26,9 +33,17 @@ Manifest load_manifest(const std::string& path) {
       lab.name = l.at("name").get<std::string>();
       lab.title = l.value("title", lab.name);
       lab.student_files = l.at("student_files").get<std::vector<std::string>>();
-      for (const auto& s : l.at("steps"))
-        lab.steps.push_back({s.at("step").get<int>(), s.at("tag").get<std::string>(), s.at("title").get<std::string>(),
-                             s.value("points", 0.0), s.value("partial", false), s.value("robustness", false)});
+      for (const auto& s : l.at("steps")) {
+        Step step{s.at("step").get<int>(), s.at("tag").get<std::string>(), s.at("title").get<std::string>(),
+                  s.value("points", 0.0),  s.value("partial", false),      s.value("robustness", false)};
+        const std::string tier = s.value("tier", "core");
+        if (tier != "core" && tier != "extension")
+          throw std::runtime_error(path + ": step " + step.tag + " has tier '" + tier +
+                                   "'; a tier is core or extension");
+        step.core = tier == "core";
+        step.minutes = s.value("minutes", 0);
+        lab.steps.push_back(step);
+      }
       m.labs.push_back(lab);
     }
     return m;

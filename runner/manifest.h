@@ -15,6 +15,9 @@ struct Step {
   // The lab's robustness step: exactly degenerate input, judged by the header's exact rules.
   // Only its random families may be mostly ambiguous; every other step's must be decisive.
   bool robustness = false;
+  // Its tier: core (the lab's path for one 3-hour session) or extension (the deeper work).
+  bool core = true;
+  int minutes = 0;  // an estimate of the time a second-year student needs for it
 };
 
 struct Lab {
@@ -23,6 +26,7 @@ struct Lab {
   std::string title;
   std::vector<std::string> student_files;
   std::vector<Step> steps;
+  int core_minutes() const;  // the core path's estimate
 
   std::string stem() const { return id + "_" + name; }
   // A step runs two programs (common/protocol/answerer.h): the judge's, the kit's own

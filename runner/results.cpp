@@ -117,6 +117,7 @@ std::string points(double x) {
 std::string table(const SubmissionGrade& s, const GradingRun& run) {
   std::ostringstream out;
   out << "Submission " << safe_line(s.name) << "   (" << safe_line(s.source) << ")\n";
+  if (!run.assignment.empty()) out << "  assignment: " << run.assignment << "\n";
   out << "  seed: " << seed_text(run) << ", " << (run.cases ? std::to_string(run.cases) : std::string("the default"))
       << " random cases per query; sandbox: " << run.sandbox << "\n";
   if (!run.regrade.empty())
@@ -198,6 +199,7 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
     summary += "Lab " + l.lab->id + " " + l.lab->title + ": " + points(l.score) + " / " + points(l.max_score) +
                (built ? "" : " (" + lab_state(l) + ")") + "\n";
   }
+  if (!run.assignment.empty()) summary = "Assignment: " + run.assignment + "\n" + summary;
   if (!s.error.empty())
     summary = "The submission could not be read: " + quoted_after_label(s.error, "  ") + "\n" + summary;
   for (const std::string& note : s.notes) summary += "Note: " + safe_line(note) + "\n";
@@ -206,6 +208,7 @@ nlohmann::json gradescope_results(const SubmissionGrade& s, const GradingRun& ru
     summary += "Cases: this submission's own, drawn from the secret seed and its files; regrade: " + run.regrade + "\n";
   nlohmann::json extra = {{"seed", run.seed_kind}, {"sandbox", run.sandbox}, {"limits", run.limits}};
   if (run.cases > 0) extra["cases_per_query"] = run.cases;
+  if (!run.assignment.empty()) extra["assignment"] = run.assignment;
   return {{"score", s.score},
           {"execution_time", int(std::ceil(s.seconds))},
           {"output", summary},
@@ -267,18 +270,19 @@ std::string steps_tsv(const SubmissionGrade& s) {
   return out;
 }
 
-std::string class_csv(const std::vector<SubmissionGrade>& all) {
-  if (all.empty()) return "submission,total,max\n";
+std::string csv_field(std::string text) {
   // RFC 4180, and never a formula: a spreadsheet evaluates a cell that starts with = + -
   // @, a tab or a CR ("-2-2" is -4, "=HYPERLINK(...)" a link), so such a cell starts with
   // an apostrophe, which spreadsheets show as text and do not display.
-  const auto csv_field = [](std::string text) {
-    if (!text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos) text = "'" + text;
-    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
-  };
+  if (!text.empty() && std::string_view("=+-@\t\r").find(text.front()) != std::string_view::npos) text = "'" + text;
+  if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+std::string class_csv(const std::vector<SubmissionGrade>& all) {
+  if (all.empty()) return "submission,total,max\n";
   std::string out = "submission";
   for (const LabGrade& l : all.front().labs) out += ",lab" + l.lab->id;
   out += ",total,max\n";

@@ -19,6 +19,7 @@ struct GradingRun {
   int cases = 0;        // random cases per query (0: the harness's default)
   std::string sandbox;  // Sandbox::description()
   std::string limits;   // each step's time and memory, the workers and the envelope
+  std::string assignment;  // its name (assignment.h), "" for the whole kit
 };
 
 // The readable table: a line per lab and per step, then each step's feedback.
@@ -40,6 +41,9 @@ std::string steps_tsv(const SubmissionGrade& s);
 
 // The class: one row per submission, one column per lab, then the total and the maximum.
 std::string class_csv(const std::vector<SubmissionGrade>& all);
+
+// A CSV cell (RFC 4180) that no spreadsheet evaluates as a formula.
+std::string csv_field(std::string text);
 
 // Text as XML (and HTML) character data or an attribute value: & < > " ' escaped, and
 // the control characters XML 1.0 forbids shown as "?".
