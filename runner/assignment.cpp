@@ -15,7 +15,8 @@ namespace runner {
 namespace {
 
 bool is_number(const std::string& text) {
-  return !text.empty() && text.size() < 4 && std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(c); });
+  return !text.empty() && text.size() < 4 &&
+         std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(c); });
 }
 
 // "core", "extension", "all" or "1,2,6".
@@ -60,9 +61,8 @@ Assignment from_file(const std::string& path) {
       const auto& s = l["steps"];
       if (s.is_string()) {
         read_which(part, s.get<std::string>(), item);
-      } else if (s.is_array() && !s.empty() && std::all_of(s.begin(), s.end(), [](const auto& n) {
-                   return n.is_number_integer();
-                 })) {
+      } else if (s.is_array() && !s.empty() &&
+                 std::all_of(s.begin(), s.end(), [](const auto& n) { return n.is_number_integer(); })) {
         part.which.clear();
         for (const auto& n : s) part.steps.push_back(n.get<int>());
       } else {
@@ -139,8 +139,8 @@ Manifest restrict_to(const Manifest& manifest, Assignment& assignment) {
                                  ", which has steps 1 to " + std::to_string(lab->steps.size()));
     for (const auto& [step, points] : part.points)
       if (std::none_of(lab->steps.begin(), lab->steps.end(), [&](const Step& s) { return s.number == step; }))
-        throw std::runtime_error("the assignment gives points to step " + std::to_string(step) + " of lab " +
-                                 lab->id + ", which has no such step");
+        throw std::runtime_error("the assignment gives points to step " + std::to_string(step) + " of lab " + lab->id +
+                                 ", which has no such step");
     Lab kept = *lab;
     kept.steps.clear();
     for (Step s : lab->steps) {
@@ -153,8 +153,8 @@ Manifest restrict_to(const Manifest& manifest, Assignment& assignment) {
     }
     for (const auto& [step, points] : part.points)
       if (std::none_of(kept.steps.begin(), kept.steps.end(), [&](const Step& s) { return s.number == step; }))
-        throw std::runtime_error("the assignment gives points to step " + std::to_string(step) + " of lab " +
-                                 lab->id + ", which is not among the assignment's steps of that lab");
+        throw std::runtime_error("the assignment gives points to step " + std::to_string(step) + " of lab " + lab->id +
+                                 ", which is not among the assignment's steps of that lab");
     if (kept.steps.empty())
       throw std::runtime_error("the assignment's lab " + lab->id + " part (" + part.which + ") has no step");
     const std::string which = part.which.empty() ? "steps" : part.which == "all" ? "all steps" : part.which + " steps";
@@ -191,8 +191,8 @@ int freeze_assignment(const Paths& paths, const std::vector<std::string>& items,
       part.steps.push_back(s.number);
       part.points[s.number] = s.points;
       total += s.points;
-      std::cout << "  lab " << lab.id << " step " << s.number << " (" << (s.core ? "core" : "extension") << "): "
-                << s.title << ", " << s.points << " points\n";
+      std::cout << "  lab " << lab.id << " step " << s.number << " (" << (s.core ? "core" : "extension")
+                << "): " << s.title << ", " << s.points << " points\n";
     }
     frozen.parts.push_back(part);
   }

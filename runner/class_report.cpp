@@ -155,7 +155,9 @@ struct Trouble {
 
 }  // namespace
 
-std::vector<std::string> class_files() { return {"class.csv", "gradebook.csv", kClassPage, "class-totals.svg", "class-steps.svg"}; }
+std::vector<std::string> class_files() {
+  return {"class.csv", "gradebook.csv", kClassPage, "class-totals.svg", "class-steps.svg"};
+}
 
 std::string concept_of(const std::string& why) {
   const std::string line = why.substr(0, why.find('\n'));
@@ -373,17 +375,18 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
   std::ofstream file(page, std::ios::binary);
   file << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" << title
        << "</title>\n<style>\n"
-      << "body { font-family: sans-serif; max-width: 1000px; margin: 2em auto; color: #222; }\n"
-      << "table { border-collapse: collapse; margin: 1em 0; font-size: 0.9em; }\n"
-      << "th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }\n"
-      << "th { background: #eef2f7; } tr.lab td { background: #f6f6f6; font-weight: bold; }\n"
-      << "td.bad { color: #a00; } td.example { font-family: monospace; font-size: 0.85em; }\n"
-      << ".note { color: #666; } img { max-width: 100%; }\n</style>\n</head>\n<body>\n"
-      << "<h1>" << title << "</h1>\n<p>" << all.size() << " submissions graded on " << when << " in " << points(seconds)
-      << " s; seed: " << html(run.seed_kind) << ", " << run.cases
-      << " random cases per query; limits: " << html(run.limits)
-      << ". Each submission's name links to its report; class.csv has the same totals, gradebook.csv them in the form Canvas and Moodle import.</p>\n"
-      << body.str() << "</body>\n</html>\n";
+       << "body { font-family: sans-serif; max-width: 1000px; margin: 2em auto; color: #222; }\n"
+       << "table { border-collapse: collapse; margin: 1em 0; font-size: 0.9em; }\n"
+       << "th, td { border: 1px solid #ccc; padding: 0.25em 0.6em; text-align: left; vertical-align: top; }\n"
+       << "th { background: #eef2f7; } tr.lab td { background: #f6f6f6; font-weight: bold; }\n"
+       << "td.bad { color: #a00; } td.example { font-family: monospace; font-size: 0.85em; }\n"
+       << ".note { color: #666; } img { max-width: 100%; }\n</style>\n</head>\n<body>\n"
+       << "<h1>" << title << "</h1>\n<p>" << all.size() << " submissions graded on " << when << " in "
+       << points(seconds) << " s; seed: " << html(run.seed_kind) << ", " << run.cases
+       << " random cases per query; limits: " << html(run.limits)
+       << ". Each submission's name links to its report; class.csv has the same totals, gradebook.csv them in the form "
+          "Canvas and Moodle import.</p>\n"
+       << body.str() << "</body>\n</html>\n";
   if (!file) throw std::runtime_error("cannot write " + page.string());
   return page.string();
 }

@@ -41,14 +41,14 @@ std::string classroom_workflow(const Manifest& chosen, const std::string& name) 
   for (const Lab& lab : chosen.labs) {
     y << "      - name: " << quoted("Build and check lab " + lab.id) << "\n"
       << "        run: |\n"
-      << "          ./labkit check " << lab.id << " > check-" << lab.id << ".txt 2>&1 || true\n"
+      << "          ./labkit check " << lab.id << " > check-" << lab.id << ".txt || true\n"
       << "          cat check-" << lab.id << ".txt\n"
       << "          { echo '### Lab " << lab.id << "'; echo '```'; cat check-" << lab.id
       << ".txt; echo '```'; } >> \"$GITHUB_STEP_SUMMARY\"\n";
     for (const Step& s : lab.steps) {
       const std::string id = "lab" + lab.id + "-step" + std::to_string(s.number);
-      y << "      - name: " << quoted("Lab " + lab.id + " step " + std::to_string(s.number) + " (" +
-                                     (s.core ? "core" : "extension") + ")")
+      y << "      - name: "
+        << quoted("Lab " + lab.id + " step " + std::to_string(s.number) + " (" + (s.core ? "core" : "extension") + ")")
         << "\n"
         << "        id: " << id << "\n"
         << "        uses: classroom-resources/autograding-command-grader@v1\n"

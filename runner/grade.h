@@ -42,16 +42,16 @@ constexpr double kBuildSeconds = 300;
 struct GradeOptions {
   std::vector<std::string> submissions;
   std::string out = "grades";
-  std::string seed;                // the secret seed; "" grades with the public one (and says so)
-  std::vector<std::string> labs;   // empty: every lab the kit has
+  std::string seed;                     // the secret seed; "" grades with the public one (and says so)
+  std::vector<std::string> labs;        // empty: every lab the kit has
   std::vector<std::string> assignment;  // its items or file (assignment.h); empty: the whole kit
   std::string roster;                   // a roster CSV for gradebook.csv (gradebook.h); "": none
-  int jobs = 0;                    // processes at once (0: what the CPU and memory envelope allows)
-  int cases = kGradingCases;       // random cases per query
-  double timeout = 60;             // seconds per step
-  double budget = kGradingBudget;  // seconds of wall time for a submission's compiles and steps together
-  std::size_t memory_mb = 2048;    // address space per step (less when the envelope is smaller)
-  std::string sandbox = "auto";    // auto, bubblewrap, landlock or none (sandbox.h)
+  int jobs = 0;                         // processes at once (0: what the CPU and memory envelope allows)
+  int cases = kGradingCases;            // random cases per query
+  double timeout = 60;                  // seconds per step
+  double budget = kGradingBudget;       // seconds of wall time for a submission's compiles and steps together
+  std::size_t memory_mb = 2048;         // address space per step (less when the envelope is smaller)
+  std::string sandbox = "auto";         // auto, bubblewrap, landlock or none (sandbox.h)
 };
 
 struct StepGrade {

@@ -43,9 +43,9 @@ std::vector<std::vector<std::string>> read_csv(const std::string& text, const st
   }
   if (quoted) throw std::runtime_error(path + ": a quoted field is never closed");
   // Blank lines (and the one after the last line break) are no records.
-  records.erase(std::remove_if(records.begin(), records.end(),
-                               [](const auto& r) { return r.size() == 1 && r[0].empty(); }),
-                records.end());
+  records.erase(
+      std::remove_if(records.begin(), records.end(), [](const auto& r) { return r.size() == 1 && r[0].empty(); }),
+      records.end());
   return records;
 }
 
@@ -66,7 +66,8 @@ Roster load_roster(const std::string& path) {
   const auto records = read_csv(content, path);
   if (records.empty()) throw std::runtime_error("the roster " + path + " is empty");
   const std::vector<std::string>& header = records.front();
-  const auto at = std::find_if(header.begin(), header.end(), [](const std::string& h) { return lower(h) == "submission"; });
+  const auto at =
+      std::find_if(header.begin(), header.end(), [](const std::string& h) { return lower(h) == "submission"; });
   if (at == header.end())
     throw std::runtime_error("the roster " + path +
                              " has no \"submission\" column: its header names the column holding each student's "
@@ -74,7 +75,8 @@ Roster load_roster(const std::string& path) {
                              "User ID)");
   const std::size_t key = std::size_t(at - header.begin());
   if (header.size() < 2)
-    throw std::runtime_error("the roster " + path + " has only the submission column: add the columns your "
+    throw std::runtime_error("the roster " + path +
+                             " has only the submission column: add the columns your "
                              "gradebook matches students on (e.g. Student, ID, SIS User ID, or Email address)");
   Roster roster;
   for (std::size_t i = 0; i < header.size(); ++i)
@@ -99,8 +101,7 @@ Roster load_roster(const std::string& path) {
   return roster;
 }
 
-Gradebook gradebook_csv(const std::vector<SubmissionGrade>& all, const std::string& assignment,
-                        const Roster* roster) {
+Gradebook gradebook_csv(const std::vector<SubmissionGrade>& all, const std::string& assignment, const Roster* roster) {
   Gradebook book;
   const std::string column = assignment.empty() ? "Lab kit, all labs" : assignment;
   const auto row = [](const std::vector<std::string>& cells) {

@@ -30,7 +30,6 @@ struct Gradebook {
   std::vector<std::string> notes;  // submissions not on the roster, students with none
 };
 
-Gradebook gradebook_csv(const std::vector<SubmissionGrade>& all, const std::string& assignment,
-                        const Roster* roster);
+Gradebook gradebook_csv(const std::vector<SubmissionGrade>& all, const std::string& assignment, const Roster* roster);
 
 }  // namespace runner

@@ -162,7 +162,8 @@ int main(int argc, char** argv) {
       unsetenv("LABKIT_SEED");
       return runner::grade(paths, grade);
     }
-    if (assignment_command->parsed()) return runner::freeze_assignment(paths, assignment_items, assignment_out, assignment_workflow);
+    if (assignment_command->parsed())
+      return runner::freeze_assignment(paths, assignment_items, assignment_out, assignment_workflow);
     if (mutant_command->parsed()) return runner::mutant(paths, mutant);
     if (fake_command->parsed()) return runner::fake(paths, fake);
     if (report_command->parsed()) {

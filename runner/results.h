@@ -16,9 +16,9 @@ struct GradingRun {
   // With a secret: the command that grades a submission again on the same cases (each
   // submission's own, seed.h), with the secret left for the instructor to fill in.
   std::string regrade;
-  int cases = 0;        // random cases per query (0: the harness's default)
-  std::string sandbox;  // Sandbox::description()
-  std::string limits;   // each step's time and memory, the workers and the envelope
+  int cases = 0;           // random cases per query (0: the harness's default)
+  std::string sandbox;     // Sandbox::description()
+  std::string limits;      // each step's time and memory, the workers and the envelope
   std::string assignment;  // its name (assignment.h), "" for the whole kit
 };
 

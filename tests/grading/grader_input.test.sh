@@ -565,5 +565,82 @@ mkdir -p "$work/labs_in_place/labs/02_segment_triangle" && echo ': x' >"$work/la
   cp "$subs/bomb.zip" "$work/labs_in_place/bob.zip"
 refused labs_in_place "labs/02_segment_triangle/segment_triangle.cpp" "bob.zip"
 
+# ---- 5. one assignment: its steps, its total, its gradebook -------------------------
+# An assignment (runner/assignment.h) narrows everything written to its steps, with its
+# total; a wrong one, or a wrong roster, stops the grader before it grades anything.
+assigned="$work/assigned"
+core_steps=$(python3 -c 'import json, sys
+lab = [l for l in json.load(open(sys.argv[1]))["labs"] if l["id"] == "02"][0]
+print(" ".join(str(s["step"]) for s in lab["steps"] if s["tier"] == "core"),
+      sum(s["points"] for s in lab["steps"] if s["tier"] == "core"))' "$kit/grading/manifest.json")
+read -r -a core <<<"$core_steps"
+core_points="${core[-1]}"
+unset 'core[-1]'
+grade "$build" "$subs/passing" --assignment 02:1,3 --out "$assigned/one" >"$work/assigned.log" 2>&1 ||
+  fail "an assignment of steps 1 and 3: exit $? ($(tail -n 3 "$work/assigned.log"))"
+python3 - "$assigned/one/results.json" <<'PY' || fail "an assignment's results.json: see above"
+import json, sys
+r = json.load(open(sys.argv[1]))
+numbers = sorted(t["number"] for t in r["tests"] if "score" in t)
+problems = []
+if numbers != ["2.1", "2.3"]: problems.append(f"results.json has steps {numbers}, the assignment 02:1,3")
+if not r["output"].startswith("Assignment: Lab 02, steps 1, 3\n"): problems.append("its output does not name the assignment first")
+if r["score"] != sum(t["max_score"] for t in r["tests"] if "score" in t): problems.append(f"score {r['score']} is not its steps' total")
+print("\n".join(problems) or "an assignment's results.json: fine")
+sys.exit(1 if problems else 0)
+PY
+printf 'Student,ID,SIS User ID,submission\n"Pass, Ada",101,s101,passing\nNo Show,102,s102,absent\n' >"$work/roster.csv"
+grade "$build" "$subs/passing" "$subs/crash" --assignment 02:core --roster "$work/roster.csv" --out "$assigned/class" \
+  >"$work/assigned.log" 2>&1 || fail "a class graded on 02:core with a roster: exit $?"
+steps=$(awk -F'\t' 'NR > 1 { printf "%s%s", sep, $2; sep = " " }' "$assigned/class/passing/steps.tsv")
+[ "$steps" = "${core[*]}" ] || fail "02:core graded steps '$steps'; the manifest's core steps are '${core[*]}'"
+expected_book=$(printf 'Student,ID,SIS User ID,"Lab 02, core steps"\n"Pass, Ada",101,s101,%s\nNo Show,102,s102,\n' "$core_points")
+[ "$(cat "$assigned/class/gradebook.csv")" = "$expected_book" ] ||
+  fail "gradebook.csv with a roster: got '$(cat "$assigned/class/gradebook.csv")', expected '$expected_book'"
+grep -q 'submission "crash" .* is not on the roster' "$work/assigned.log" || fail "a submission off the roster is not named"
+grep -q '(absent)' "$work/assigned.log" || fail "a roster student with no submission is not named"
+grep -q '^lab02,' "$assigned/class/class.csv" && fail "class.csv has a row that is not a submission"
+head -n 1 "$assigned/class/class.csv" | grep -qx 'submission,lab02,total,max' || fail "class.csv's columns: $(head -n 1 "$assigned/class/class.csv")"
+grep -q "<h1>Class report: Lab 02, core steps</h1>" "$assigned/class/class.html" || fail "the class page does not name the assignment"
+# A wrong assignment or roster: exit 2, the reason, nothing written.
+printf 'Student,ID\nAda,101\n' >"$work/no_key.csv"
+printf 'ID,submission\n1,ada\n2,ada\n' >"$work/twice.csv"
+for wrong in "--assignment 02:9|step 9 of lab 02" "--assignment 08|lab '08'" "--assignment 02:core,1|'core' is none" \
+             "--assignment 02:extra|'extra' is none" "--roster $work/no_key.csv|no \"submission\" column" \
+             "--roster $work/twice.csv|two students" "--roster $work/missing.csv|cannot read the roster"; do
+  read -r -a args <<<"${wrong%%|*}"
+  said=$(grade "$build" "$subs/passing" "$subs/crash" "${args[@]}" --out "$assigned/wrong" 2>&1)
+  code=$?
+  [ $code -eq 2 ] || fail "${wrong%%|*}: exit $code, expected 2"
+  grep -qF -- "${wrong#*|}" <<<"$said" || fail "${wrong%%|*}: the message does not say '${wrong#*|}': $said"
+  [ -e "$assigned/wrong" ] && fail "${wrong%%|*}: results were written" && rm -rf "$assigned/wrong"
+done
+# Frozen for a package, and its GitHub Classroom workflow: a command grader per step,
+# awarding the step's points when `./labkit check 02 --step K` passes, and the reporter.
+"$runner" assignment 02:core --out "$assigned/frozen.json" --workflow "$assigned/classroom.yml" >/dev/null ||
+  fail "the assignment 02:core cannot be frozen"
+python3 - "$assigned/frozen.json" "$assigned/classroom.yml" "$kit/grading/manifest.json" <<'PY' || fail "frozen assignment or workflow: see above"
+import json, re, sys
+frozen, workflow = json.load(open(sys.argv[1])), open(sys.argv[2]).read()
+lab = [l for l in json.load(open(sys.argv[3]))["labs"] if l["id"] == "02"][0]
+core = [s for s in lab["steps"] if s["tier"] == "core"]
+problems = []
+if frozen["labs"] != [{"lab": "02", "steps": [s["step"] for s in core],
+                       "points": {str(s["step"]): s["points"] for s in core}}]:
+    problems.append(f"frozen: {frozen}")
+graders = re.findall(r"command: (.*)\n +timeout: \d+\n +max-score: (\S+)", workflow)
+if graders != [(f"./labkit check 02 --step {s['step']}", f"{s['points']:g}") for s in core]:
+    problems.append(f"the workflow's graders: {graders}")
+ids = ",".join(f"lab02-step{s['step']}" for s in core)
+if f"runners: {ids}" not in workflow: problems.append("the reporter does not list every grader")
+for s in core:
+    if f'LAB02-STEP{s["step"]}_RESULTS: "${{{{steps.lab02-step{s["step"]}.outputs.result}}}}"' not in workflow:
+        problems.append(f"the reporter has no result of step {s['step']}")
+if "./labkit check 02 > check-02.txt || true" not in workflow or "GITHUB_STEP_SUMMARY" not in workflow:
+    problems.append("the workflow does not put the step table in the run's summary")
+print("\n".join(problems) or "frozen assignment and its workflow: fine")
+sys.exit(1 if problems else 0)
+PY
+
 [ $failures -eq 0 ] && echo "grader input: every hostile output, name and archive cost only what it should, and no report was reached" || cat "$work/grade.log"
 exit $((failures > 0))

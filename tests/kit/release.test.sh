@@ -8,7 +8,10 @@
 #   3. the zip unpacked under a folder laid out as Gradescope's /autograder, setup.sh
 #      run there (it builds the kit from scratch: the slow part), the release's own
 #      `./labkit check` run (every step "not implemented yet"), then run_autograder on
-#      the reference and on an empty submission.
+#      the reference and on an empty submission;
+#   6. one assignment (lab 03's core steps): its package freezes it, run_autograder grades
+#      a lab-03-only submission on those steps alone, and the GitHub Classroom workflow's
+#      commands give each step's points on the stub (none) and the reference (all).
 #
 #   release.test.sh KIT_ROOT NO_SOLUTION_CHECKER SCHEMA_CHECKER
 set -uo pipefail
@@ -89,6 +92,53 @@ rm -rf "$root/submission"/* "$root/results"/*
 (cd "$root" && LABKIT_AUTOGRADER_ROOT="$root" ./run_autograder --cases 200 >"$work/autograder.log" 2>&1) ||
   fail "run_autograder on an empty submission exits $?"
 grep -q '^  "score": 0' "$root/results/results.json" || fail "an empty submission does not score 0"
+
+echo "--- 6. one assignment: lab 03's core steps, on Gradescope and GitHub Classroom"
+"$kit/labkit" package gradescope --assignment 03:core --out "$work/lab03.zip" --seed "$secret" >/dev/null 2>&1 ||
+  fail "./labkit package gradescope --assignment 03:core exits $?"
+core=$(python3 -c 'import json, sys
+lab = [l for l in json.load(open(sys.argv[1]))["labs"] if l["id"] == "03"][0]
+print(" ".join(str(s["step"]) for s in lab["steps"] if s["tier"] == "core"))' "$kit/grading/manifest.json")
+diff <(unzip -Z1 "$work/lab03.zip" | grep -vx assignment.json | sort) <(sort <<<"$listing") >/dev/null ||
+  fail "the lab 03 zip holds more than the full kit's zip and assignment.json"
+unzip -p "$work/lab03.zip" assignment.json >"$root/source/assignment.json" || fail "the lab 03 zip has no assignment.json"
+rm -rf "$root/submission"/* "$root/results"/*
+cp "$kit"/solutions/03_*/*.cpp "$root/submission/"
+(cd "$root" && LABKIT_AUTOGRADER_ROOT="$root" ./run_autograder --cases 200 >"$work/autograder.log" 2>&1) ||
+  { cat "$work/autograder.log"; fail "run_autograder on lab 03's core exits $?"; }
+rm "$root/source/assignment.json"
+python3 - "$root/results/results.json" "$core" <<'PY' || fail "lab 03's core results.json: see above"
+import json, sys
+r, core = json.load(open(sys.argv[1])), sys.argv[2].split()
+steps = [t for t in r["tests"] if "score" in t]
+problems = []
+if [t["number"] for t in steps] != [f"3.{k}" for k in core]: problems.append(f"steps {[t['number'] for t in steps]}, expected 3.{core}")
+total = sum(t["max_score"] for t in steps)
+if r["score"] != total or total == 0: problems.append(f"a lab-03-only reference scores {r['score']} of {total}")
+if not r["output"].startswith("Assignment: Lab 03, core steps"): problems.append("its output does not name the assignment")
+print("\n".join(problems) or f"lab 03 core on Gradescope: {r['score']:g} of {total:g}, steps {core}")
+sys.exit(1 if problems else 0)
+PY
+"$schema_check" "$kit/grading/gradescope-results.schema.json" "$root/results/results.json" || fail "lab 03's results.json does not match the schema"
+"$kit/labkit" release "$work/classroom" --classroom 03:core >/dev/null 2>&1 || fail "./labkit release --classroom 03:core exits $?"
+workflow="$work/classroom/.github/workflows/classroom.yml"
+[ -f "$workflow" ] || fail "the Classroom release has no $workflow"
+diff -r -x .github "$work/release" "$work/classroom" >/dev/null || fail "the Classroom release differs from the release beyond .github/"
+# The workflow's commands, in the built release (as the runner's checkout would run them).
+mapfile -t graders < <(sed -n 's/^ *command: //p' "$workflow")
+[ "${#graders[@]}" = "$(wc -w <<<"$core")" ] || fail "the workflow has ${#graders[@]} graders for core steps $core"
+lab03="$root/source/labs/03_separating_axes/separating_axes.cpp"
+(cd "$root/source" && ./labkit check 03 >check-03.txt; [ -s check-03.txt ] && grep -q "core path" check-03.txt) ||
+  fail "the workflow's table step shows no table with the core path"
+for command in "${graders[@]}"; do
+  (cd "$root/source" && bash -c "$command" >/dev/null 2>&1) && fail "the stub earns the points of '$command'"
+done
+cp "$kit"/solutions/03_*/*.cpp "$lab03"
+for command in "${graders[@]}"; do
+  (cd "$root/source" && bash -c "$command" >/dev/null 2>&1) || fail "the reference does not earn the points of '$command'"
+done
+cp "$work/release/labs/03_separating_axes/separating_axes.cpp" "$lab03"
+rm -f "$root/source/check-03.txt"
 
 [ $failures -eq 0 ] && echo "release and Gradescope package: all checks passed"
 exit $((failures > 0))
