@@ -188,28 +188,46 @@ Outcome invariants(const CollideCase& in, const Collision& got) {
 Outcome settle(const SettleCase& in, const Vec3& got) {
   const Scene& scene = in.scene;
   const double tol = kRelative * scale_with(scene, {in.x});
+  const std::string rule =
+      "settle moves x by less than tol to where it is, exactly, not behind any plane it was within rounding of, and "
+      "strictly in front of the surface just hit";
   if (!finite(got) || (got - in.x).norm() > tol)
-    return fail("a point within " + fmt(tol) + " of x", fmt(got), "settle moved x by " + fmt((got - in.x).norm()));
+    return fail("a point within " + fmt(tol) + " of x", fmt(got),
+                rule + ": settle moved x by " + fmt((got - in.x).norm()));
+  // The planes settle must keep got in front of: all but those x is clearly behind (by
+  // more than 1000 rounding errors), which are not settle's business.
+  std::vector<std::size_t> kept;
   for (std::size_t i = 0; i < scene.planes.size(); ++i) {
     const Plane& p = scene.planes[i];
     const bool strict = in.last.hit && in.last.plane == int(i);
-    // Clearly behind from the start (more than 1000 rounding errors): not settle's business.
     const Vec3 terms = p.normal.cwiseProduct(in.x);
     const double value = terms.x() + terms.y() + terms.z() + p.offset;
-    if (!strict && (p.normal == Vec3::Zero() || value < -1000 * 1e-15 * (terms.cwiseAbs().sum() + std::abs(p.offset))))
-      continue;
-    const int side = oracle::plane_side(p, got);
+    if (strict || (p.normal != Vec3::Zero() && value >= -1000 * 1e-15 * (terms.cwiseAbs().sum() + std::abs(p.offset))))
+      kept.push_back(i);
+  }
+  const bool triangle = in.last.hit && valid_triangle(scene, in.last.triangle);
+  // Two surfaces or more to stay in front of: x may sit in a crease, where the push off
+  // one alone goes behind the other.
+  const std::string crease = kept.size() + (triangle ? 1 : 0) > 1
+                                 ? "; in a crease, push off every surface found in doubt so far, together: a push "
+                                   "off one alone can go behind another"
+                                 : "";
+  for (std::size_t i : kept) {
+    const bool strict = in.last.hit && in.last.plane == int(i);
+    const int side = oracle::plane_side(scene.planes[i], got);
     if (strict ? side <= 0 : side < 0)
       return fail(strict ? "strictly in front of plane " + std::to_string(i) + " (the one just hit)"
                          : "not behind plane " + std::to_string(i),
-                  fmt(got), "exactly, n . x + c is " + std::string(side < 0 ? "negative" : "zero") + " there");
+                  fmt(got),
+                  rule + ": n . x + c of plane " + std::to_string(i) + " is " + (side < 0 ? "negative" : "zero") +
+                      " there" + crease);
   }
-  if (in.last.hit && valid_triangle(scene, in.last.triangle)) {
+  if (triangle) {
     const Triangle tri = scene.mesh.triangle(std::size_t(in.last.triangle));
     const int facing = in.last.normal.dot(tri.normal()) < 0 ? -1 : 1;
     if (facing * oracle::orientation(tri.v0, tri.v1, tri.v2, got) <= 0)
       return fail("strictly in front of triangle " + std::to_string(in.last.triangle) + ", on last.normal's side",
-                  fmt(got), "exactly, the point is on or behind the triangle's plane");
+                  fmt(got), rule + ": the point is on or behind the triangle's plane, on last.normal's side" + crease);
   }
   return pass();
 }

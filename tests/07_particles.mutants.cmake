@@ -79,7 +79,7 @@ labkit_mutant(07 particles NAME hit_point_not_settled STEP 7 SAYS "strictly in f
   FIND "bounce.from = settle_in(hit.point, scene, hit);"
   REPLACE "bounce.from = hit.point;")
 
-labkit_mutant(07 particles NAME verlet_previous_kept STEP 7 SAYS "previous" "Verlet"
+labkit_mutant(07 particles NAME verlet_previous_kept STEP 8 SAYS "previous" "Verlet"
   FIND "if (integrator == Integrator::verlet && (c.bounces > 0 || c.stopped)) p.previous = p.position - p.velocity * dt;"
   REPLACE "")
 
@@ -88,3 +88,15 @@ labkit_mutant(07 particles NAME verlet_previous_kept STEP 7 SAYS "previous" "Ver
 labkit_mutant(07 particles NAME end_position_not_settled STEP 7 SAYS "behind"
   FIND "c.position = settle_in(piece.b, scene, last);"
   REPLACE "c.position = piece.b;")
+
+# Step 7: the plane just hit taken as "not behind" is enough: a point exactly on it
+# (value 0) is left there, and the next piece starts on the surface instead of off it.
+labkit_mutant(07 particles NAME hit_plane_not_strict STEP 7 SAYS "strictly in front"
+  FIND "const bool strict = last.hit && last.plane == int(i);"
+  REPLACE "const bool strict = false;")
+
+# Step 8: settle keeps x off the surface just hit and nothing else: in a crease the push
+# off that surface leaves x behind the other one.
+labkit_mutant(07 particles NAME settles_off_last_only STEP 8 SAYS "crease" "behind"
+  FIND "keep[i] =\n        scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));"
+  REPLACE "keep[i] = last.hit && last.plane == int(i);")

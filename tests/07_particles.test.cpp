@@ -659,36 +659,58 @@ TEST_CASE(LABKIT_STEP(L07S6) ": random cases", "[lab07][step6][oracle]") {
 
 // ---- Step 7 ----------------------------------------------------------------------------
 
+namespace {
+
+Outcome run_settle(const SettleCase& in) { return judge::settle(in, answerer::settle(in.x, in.scene, in.last)); }
+
+// collide's ends, judged by the invariants first: a `from` or an end behind its surface
+// is named as such before the trace is compared.
+Outcome run_settled_ends(const CollideCase& in) {
+  const Collision got = run_collide_only(in);
+  const Outcome o = judge::invariants(in, got);
+  return o.verdict == Outcome::Verdict::fail ? o : judge::collide(in, got);
+}
+
+}  // namespace
+
 TEST_CASE(LABKIT_STEP(L07S7) ": worked examples", "[lab07][step7]") {
-  const auto settled = [](const SettleCase& in) {
-    return judge::settle(in, answerer::settle(in.x, in.scene, in.last));
-  };
   SettleCase on{};
   on.x = Vec3(1, 1, 0);
   on.scene = floor_scene(0, 0);
   on.last = {true, 0, -1, 0.5, Vec3(1, 1, 0), Vec3(0, 0, 1)};
-  check::example(query::settle, "exactly on the floor just hit: lifted off it", on, settled);
+  check::example(query::settle, "exactly on the floor just hit: lifted off it", on, run_settle);
   SettleCase behind = on;
   behind.x = Vec3(0.125, 0, -1.3877787807814457e-17);
-  check::example(query::settle, "a hair below the floor: back above it", behind, settled);
-  SettleCase crease = on;
-  crease.x = Vec3(0, 1, 0);
-  crease.scene.planes.push_back(Plane{{1, 0, -2}, 0});  // x >= 2 z: a wedge 26.6 degrees wide
-  check::example(query::settle, "in an acute crease: off both planes at once", crease, settled);
+  check::example(query::settle, "a hair below the floor: back above it", behind, run_settle);
   SettleCase sheet{};
   sheet.x = Vec3(1, 1, 0);
   gen::add_square(sheet.scene.mesh, 4, 0);
   sheet.last = {true, -1, 0, 0.5, Vec3(1, 1, 0), Vec3(0, 0, -1)};
-  check::example(query::settle, "on a sheet hit from below: below it", sheet, settled);
+  check::example(query::settle, "on a sheet hit from below: below it", sheet, run_settle);
 
   // A dead bounce (e = 0) along the floor: the hit point a + t (b - a) comes out
   // 1.4e-17 below the floor, and the particle would slide on there.
   const CollideCase dead{{{0, 0, 0.1}, {1, 0, -0.7}}, {1, 0, -0.8}, 1, 1, floor_scene(0, 0)};
-  check::example(query::invariants, "a dead bounce slides on, above the floor", dead, [](const CollideCase& in) {
-    const Collision got = run_collide_only(in);
-    const Outcome o = judge::invariants(in, got);
-    return o.verdict == Outcome::Verdict::fail ? o : judge::collide(in, got);
-  });
+  check::example(query::settled_ends, "a dead bounce slides on, above the floor", dead, run_settled_ends);
+}
+
+TEST_CASE(LABKIT_STEP(L07S7) ": one surface, random cases", "[lab07][step7][oracle]") {
+  check::random_cases(query::settle, gen::settle_case(true), run_settle);
+  // A dead slide along a tilted plane, whose end lands within rounding of it: an end
+  // position not settled is caught at the default count.
+  check::random_cases(query::settled_ends, gen::dead_slide(), run_settled_ends);
+}
+
+// ---- Step 8 ----------------------------------------------------------------------------
+
+TEST_CASE(LABKIT_STEP(L07S8) ": worked examples", "[lab07][step8]") {
+  SettleCase crease{};
+  crease.x = Vec3(0, 1, 0);
+  crease.scene = floor_scene(0, 0);
+  crease.scene.planes.push_back(Plane{{1, 0, -2}, 0});  // x >= 2 z: a wedge 26.6 degrees wide
+  crease.last = {true, 0, -1, 0.5, Vec3(1, 1, 0), Vec3(0, 0, 1)};
+  check::example(query::crease_settle, "in an acute crease: off both planes at once", crease, run_settle);
+
   check::example(query::invariants, "e = 1: the speed is kept through two bounces", into_corner(4), run_invariants);
   // Found by a seed sweep: a starts exactly on plane 0, where n . a + c rounds to -1.5e-11.
   check::example(
@@ -709,7 +731,7 @@ TEST_CASE(LABKIT_STEP(L07S7) ": worked examples", "[lab07][step7]") {
   });
 }
 
-TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][step7]") {
+TEST_CASE(LABKIT_STEP(L07S8) ": the handling loop, worked examples", "[lab07][step8]") {
   // Ten per second, one each step of 1/10 s; each lives 4 steps (lifetime 0.35).
   SystemCase fountain{};
   fountain.emitter.position = Vec3(0, 0, 1);
@@ -766,15 +788,9 @@ TEST_CASE(LABKIT_STEP(L07S7) ": the handling loop, worked examples", "[lab07][st
   });
 }
 
-TEST_CASE(LABKIT_STEP(L07S7) ": invariants, random cases", "[lab07][step7][oracle]") {
-  check::random_cases(query::settle, gen::settle_case(), [](const SettleCase& in) {
-    return judge::settle(in, answerer::settle(in.x, in.scene, in.last));
-  });
-  // One case in two a dead slide along a tilted plane, whose end lands within rounding of
-  // it: an end position not settled is caught at the default count.
-  check::random_cases(query::invariants,
-                      rc::gen::weightedOneOf<CollideCase>({{1, gen::collide_case(false)}, {1, gen::dead_slide()}}),
-                      run_invariants);
+TEST_CASE(LABKIT_STEP(L07S8) ": creases, invariants and the loop, random cases", "[lab07][step8][oracle]") {
+  check::random_cases(query::crease_settle, gen::settle_case(false), run_settle);
+  check::random_cases(query::invariants, gen::collide_case(false), run_invariants);
   check::random_cases(query::system, gen::system_case(), run_system);
 }
 

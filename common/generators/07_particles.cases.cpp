@@ -486,8 +486,8 @@ rc::Gen<CollideCase> collide_case(bool decided) {
 
 // A point on (or a hair from) a surface the step hits or could hit, as collide meets
 // them; the surface is met from the side the step starts on, as a particle would.
-rc::Gen<SettleCase> settle_case() {
-  return rc::gen::exec([] {
+rc::Gen<SettleCase> settle_case(bool one_surface) {
+  return rc::gen::exec([one_surface] {
     const StepSurfaces c =
         *rc::gen::suchThat(valid_steps(), [](const StepSurfaces& x) { return !x.planes.empty() || x.mesh.size() > 0; });
     SettleCase out;
@@ -497,6 +497,11 @@ rc::Gen<SettleCase> settle_case() {
     const bool on_plane = std::size_t(i) < c.planes.size();
     const int j = on_plane ? i : i - int(c.planes.size());
     const Triangle tri = on_plane ? Triangle{} : c.mesh.triangle(std::size_t(j));
+    if (one_surface) {  // the surface chosen, alone in its scene
+      out.scene.planes = on_plane ? std::vector<Plane>{c.planes[std::size_t(j)]} : std::vector<Plane>{};
+      out.scene.mesh = on_plane ? Mesh{} : Mesh{{tri.v0, tri.v1, tri.v2}, {{0, 1, 2}}};
+    }
+    const int index = one_surface ? 0 : j;
     const int side = on_plane ? 1 : oracle::orientation(tri.v0, tri.v1, tri.v2, c.step.a);
     if (!on_plane && side == 0) {  // the step starts on the sheet: it cannot hit it
       out.x = c.step.a;
@@ -504,7 +509,7 @@ rc::Gen<SettleCase> settle_case() {
     }
     if (on_plane) {
       const Plane& p = c.planes[std::size_t(j)];
-      last = {true, j, -1, 0.0, Vec3::Zero(), p.normal.normalized()};
+      last = {true, index, -1, 0.0, Vec3::Zero(), p.normal.normalized()};
       // Where a + t (b - a) lands, computed as a student would: a hair either side.
       const double va = p.value(c.step.a), vb = p.value(c.step.b);
       Vec3 x = (va != vb) ? c.step.point(va / (va - vb)) : c.step.a;
@@ -514,7 +519,7 @@ rc::Gen<SettleCase> settle_case() {
       out.x = x;
     } else {
       const Vec3 n = tri.normal();
-      last = {true, -1, j, 0.0, Vec3::Zero(), side * n.normalized()};
+      last = {true, -1, index, 0.0, Vec3::Zero(), side * n.normalized()};
       const Vec3 weights = Vec3(*dyadic(0, 8, 3), *dyadic(0, 8, 3), 0);
       Vec3 x = tri.v0 + weights.x() * (tri.v1 - tri.v0) + weights.y() * (tri.v2 - tri.v0);
       x -= n * ((x - tri.v0).dot(n) / n.squaredNorm());  // onto the plane, up to rounding

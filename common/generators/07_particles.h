@@ -62,9 +62,11 @@ rc::Gen<lab07::SegmentScene> segment_scene();
 rc::Gen<lab07::SegmentScene> exact_segment_scene();
 rc::Gen<lab07::ImpulseCase> impulse_case();
 rc::Gen<lab07::CollideCase> collide_case(bool decided = true);
-rc::Gen<lab07::CollideCase>
-dead_slide();  // step 7: e = 0 off a tilted plane, sliding on to the end  // step 7: false, exact degenerate steps kept
-rc::Gen<lab07::SettleCase> settle_case();
+// Step 7: e = 0 off a tilted plane, sliding on to the end.
+rc::Gen<lab07::CollideCase> dead_slide();
+// A point computed onto a surface just hit, in a scene of that surface alone (step 7) or
+// of a step's surfaces, where it may lie in a crease (step 8).
+rc::Gen<lab07::SettleCase> settle_case(bool one_surface);
 rc::Gen<lab07::SystemCase> system_case();
 
 }  // namespace labkit::gen

@@ -108,7 +108,8 @@ LABKIT_FIELDS(SystemCase, emitter, scene, forces, verlet, seed, dt, steps)
                X_IN(exact, first_hit, SegmentScene)                                                                 \
   /* step 5 */ X(impulse, ImpulseCase)                                                                              \
   /* step 6 */ X(collide, CollideCase)                                                                              \
-  /* step 7 */ X(invariants, CollideCase) X(settle, SettleCase) X(system, SystemCase)
+  /* step 7 */ X(settle, SettleCase) X(settled_ends, CollideCase)                                                   \
+  /* step 8 */ X_IN(crease, settle, SettleCase) X(invariants, CollideCase) X(system, SystemCase)
 // clang-format on
 
 namespace labkit::lab07::query {

@@ -56,10 +56,10 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
   not_implemented("L07S6", step, velocity, mass, dt, scene);
 }
 
-// L07S7: never behind, exactly.
+// L07S7: never behind, exactly (L07S8: in creases and corners too).
 Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) { not_implemented("L07S7", x, scene, last); }
 
-// L07S7: the handling loop.
-void System::step(double dt) { not_implemented("L07S7", dt); }
+// L07S8: the handling loop.
+void System::step(double dt) { not_implemented("L07S8", dt); }
 
 }  // namespace labkit::lab07

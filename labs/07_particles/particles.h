@@ -57,7 +57,7 @@
 //    moves by a relative 1e-9 (to first order), plus 1e-15. For a near, fast shot this is
 //    about 1e-9 S / x: the low angle must be right to its own size, not to the high one's.
 //  - Integrators: within 1e-9 times the sum of the magnitudes of the terms added.
-//  - Never behind a surface: exact (step 7). Energy: 1e-12, relative (step 7).
+//  - Never behind a surface: exact (steps 7, 8). Energy: 1e-12, relative (step 8).
 //
 // Input domain: answers must match the exact ones (as above) for every input whose
 // coordinates, velocity and gravity components and speeds are 0 or of magnitude 2^-130 to
@@ -317,10 +317,12 @@ struct Collision {
 // the world's. A step of a = b with u != 0 is a particle at rest struck by the scene.
 Collision collide(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene);
 
-// ---- Step 7 (L07S7): never behind, exactly; the handling loop ----------------------
+// ---- Step 7 (L07S7): never behind one surface, exactly ---------------------------------
 
 // A point computed in floating point can land a hair behind the surface it was meant to
-// touch. settle(x, scene, last) returns x moved by less than tol (usually by a few
+// touch. Step 7 checks settle on one surface (the one just hit: a push along its normal
+// does it) and collide's `from` and end points settled; step 8 on points in a crease of
+// two or three surfaces, where a push off one can go behind another. settle(x, scene, last) returns x moved by less than tol (usually by a few
 // rounding errors) so that, in exact arithmetic,
 //  - it is not behind any plane of the scene that x is within 1000 rounding errors of
 //    (value >= -1000 error, below), or in front of: a point computed to lie on a plane
@@ -359,6 +361,11 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
 // (1) is why step 4 decides a's side of a plane with value(a)'s rounding bound: a
 // particle resting on a plane whose n . a + c rounds a hair below zero still hits it.
 Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last);
+
+// ---- Step 8 (L07S8): creases and corners; the handling loop ----------------------------
+
+// settle in creases and corners (step 7's direction d from two or three normals), the
+// invariants (1)-(4) on every kind of step, and the handling loop below.
 
 enum class Integrator { euler, verlet };
 

@@ -478,7 +478,7 @@ Collision collide_in(const Segment& step, const Vec3& velocity, double mass, dou
   return c;
 }
 
-// ---- Step 7: never behind, exactly; the handling loop --------------------------------
+// ---- Step 7: never behind one surface, exactly -------------------------------------------
 
 // (x - v0) . (e1 x e2): Shewchuk's bound for orient3d, (7 + 56 2^-53) 2^-53 times the
 // "permanent" (the triple product with every product made positive), below 1e-15 times it.
@@ -633,6 +633,8 @@ Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
   }
   return settle_in(x, scene, last);
 }
+
+// ---- Step 8: creases and corners; the handling loop --------------------------------------
 
 void System::step(double dt) {
   require_positive("System::step", "dt", dt);

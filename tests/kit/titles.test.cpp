@@ -79,3 +79,27 @@ TEST_CASE("the step banners of contracts, stubs and references give the manifest
   }
   CHECK(banners > 0);
 }
+
+// README, "Fitting a course": each lab's core path fits one 3-hour session and keeps a
+// core part of its robustness lesson; every step has a tier and an estimate.
+TEST_CASE("each lab's core steps fit one 3-hour session, robustness included", "[kit]") {
+  const nlohmann::json all = manifest();  // kept: a loop over a temporary's member dangles
+  for (const auto& lab : all["labs"]) {
+    int core_minutes = 0;
+    bool core_robustness = false;
+    for (const auto& step : lab["steps"]) {
+      INFO("lab " << lab["id"] << " step " << step["step"]);
+      REQUIRE(step.contains("tier"));
+      const std::string tier = step["tier"].get<std::string>();
+      CHECK((tier == "core" || tier == "extension"));
+      REQUIRE(step.contains("minutes"));
+      CHECK(step["minutes"].get<int>() > 0);
+      if (tier == "core") core_minutes += step["minutes"].get<int>();
+      if (tier == "core" && step.value("robustness", false)) core_robustness = true;
+    }
+    INFO("lab " << lab["id"] << ": its core steps take " << core_minutes << " minutes");
+    CHECK(core_minutes <= 180);
+    CHECK(core_minutes >= 60);
+    CHECK(core_robustness);
+  }
+}
