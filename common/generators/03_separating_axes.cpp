@@ -501,10 +501,7 @@ MovingBoxes moving(bool exact) {
 // two that takes the case's S to just inside 1e50 (2^165 <= S < 2^166) or 1e-50
 // (2^-166 <= S < 2^-165). Powers of two keep every relation of the case exact.
 template <class T> double scale_end(const T& c) {
-  const codec::Values v = values_of(c);
-  double s = 1e-300;
-  for (std::size_t i = 0; i < v.numbers.size(); ++i)
-    if (v.kinds[i] == codec::Kind::length) s = std::max(s, std::abs(v.numbers[i]));
+  const double s = std::max(values_of(c).largest_length(), 1e-300);
   return std::ldexp(1.0, *rc::gen::element(165, -166) - std::ilogb(s));
 }
 Box scaled(Box b, double f) {

@@ -396,15 +396,11 @@ bool in_domain_scale(double s) {
 
 bool in_domain(const codec::Values& v) {
   const Domain& d = the_domain();
+  if (d.of == Domain::Of::scale) return in_domain_scale(v.largest_length());
   const auto inside = [&d](double x) { return x == 0 || (std::abs(x) >= d.low && std::abs(x) <= d.high); };
-  double scale = 0;
-  for (std::size_t i = 0; i < v.numbers.size(); ++i) {
-    if (v.kinds[i] != codec::Kind::length) continue;
-    if (!std::isfinite(v.numbers[i])) return false;
-    if (d.of == Domain::Of::each && !inside(v.numbers[i])) return false;
-    scale = std::max(scale, std::abs(v.numbers[i]));
-  }
-  return d.of == Domain::Of::each || inside(scale);
+  for (std::size_t i = 0; i < v.numbers.size(); ++i)
+    if (v.kinds[i] == codec::Kind::length && (!std::isfinite(v.numbers[i]) || !inside(v.numbers[i]))) return false;
+  return true;
 }
 
 bool counts_something(const std::string& field) {

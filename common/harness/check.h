@@ -189,9 +189,7 @@ template <class Input> Input fitted(const Input& input) {
   const Domain& d = domain();
   if (!d.fit || d.of != Domain::Of::scale) return input;
   codec::Values v = values_of(input);
-  double s = 0;
-  for (std::size_t i = 0; i < v.numbers.size(); ++i)
-    if (v.kinds[i] == codec::Kind::length) s = std::max(s, std::abs(v.numbers[i]));
+  const double s = v.largest_length();
   if (s == 0 || !std::isfinite(s) || (s >= d.low && s <= d.high)) return input;
   const int k = s > d.high ? std::ilogb(d.high) - 1 - std::ilogb(s) : std::ilogb(d.low) + 1 - std::ilogb(s);
   for (std::size_t i = 0; i < v.numbers.size(); ++i)
@@ -208,13 +206,9 @@ template <class Input> bool in_domain(const Input& input) {
     return in_domain(values_of(input));
 }
 
-// The input's length scale S: its largest absolute coordinate (never below 1e-300).
+// The input's length scale S (codec::Values::largest_length), never below 1e-300.
 template <class Input> double scale_of_input(const Input& input) {
-  const codec::Values v = values_of(input);
-  double s = 0.0;
-  for (std::size_t i = 0; i < v.numbers.size(); ++i)
-    if (v.kinds[i] == codec::Kind::length && std::isfinite(v.numbers[i])) s = std::max(s, std::abs(v.numbers[i]));
-  return std::max(s, 1e-300);
+  return std::max(values_of(input).largest_length(true), 1e-300);
 }
 
 // The relative size of the perturbation that decides ambiguity (handouts/checking.md, "ambiguous").

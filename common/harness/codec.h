@@ -10,7 +10,9 @@
 
 #include "common/geometry.h"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <stdexcept>
 #include <string>
@@ -47,6 +49,23 @@ enum class Kind : unsigned char { length, unit, count };
 struct Values {
   std::vector<double> numbers;
   std::vector<Kind> kinds;
+
+  // The input's length scale S: its largest |length| (0 when it has none). A length that
+  // is not finite makes S infinite (or NaN), unless `finite_only`, which leaves it out.
+  // The ambiguity check, the domain check and the scaling of cases into the domain all
+  // measure S with this one definition.
+  double largest_length(bool finite_only = false) const {
+    double s = 0;
+    for (std::size_t i = 0; i < numbers.size(); ++i) {
+      if (kinds[i] != Kind::length) continue;
+      if (!std::isfinite(numbers[i])) {
+        if (finite_only) continue;
+        return std::abs(numbers[i]);
+      }
+      s = std::max(s, std::abs(numbers[i]));
+    }
+    return s;
+  }
 };
 
 class Writer {
