@@ -195,7 +195,7 @@ function(labkit_manifest_steps number out)
   set(${out} ${result} PARENT_SCOPE)
 endfunction()
 
-# labkit_mutant(NN name NAME id STEP k SAYS "word" ... FIND "text" REPLACE "text" [FILE solution.cpp])
+# labkit_mutant(NN name NAME id STEP k SAYS "word" ... FIND "text" REPLACE "text" [EVERYWHERE] [FILE solution.cpp])
 #
 # A mutant is the reference solution with one classic mistake written in (the handout's
 # "classic mistake" of that step): the text FIND replaced by REPLACE. ctest then runs the
@@ -203,10 +203,11 @@ endfunction()
 # the why of that first failure to hold each SAYS word (the concept the mistake breaks):
 # this is how the kit shows that its tests fail, in the right step, for the mistakes
 # students actually make, and say so in the lab's words. Mutants live beside the
-# lab's tests, in tests/NN_name.mutants.cmake.
+# lab's tests, in tests/NN_name.mutants.cmake. FIND must name one place in the reference;
+# EVERYWHERE says the mistake is made at every place it names.
 function(labkit_mutant number name)
   # PARSE_ARGV keeps the semicolons of C++ code inside FIND and REPLACE.
-  cmake_parse_arguments(PARSE_ARGV 2 M "" "NAME;STEP;FILE;FIND;REPLACE" "SAYS")
+  cmake_parse_arguments(PARSE_ARGV 2 M "EVERYWHERE" "NAME;STEP;FILE;FIND;REPLACE" "SAYS")
   set(stem ${number}_${name})
   if(NOT M_FILE)
     set(M_FILE ${name}.cpp)
@@ -217,6 +218,17 @@ function(labkit_mutant number name)
   if(at EQUAL -1)
     message(FATAL_ERROR "mutant '${M_NAME}' of lab ${number}: its FIND text no longer appears in "
                         "solutions/${stem}/${M_FILE}; update tests/${stem}.mutants.cmake")
+  endif()
+  # Exactly one place, unless EVERYWHERE: a FIND text that appears twice by accident would
+  # put the mistake in both.
+  string(LENGTH "${M_FIND}" find_length)
+  math(EXPR after "${at} + ${find_length}")
+  string(SUBSTRING "${text}" ${after} -1 rest)
+  string(FIND "${rest}" "${M_FIND}" again)
+  if(NOT again EQUAL -1 AND NOT M_EVERYWHERE)
+    message(FATAL_ERROR "mutant '${M_NAME}' of lab ${number}: its FIND text appears more than once in "
+                        "solutions/${stem}/${M_FILE}: make it name one place, or add EVERYWHERE "
+                        "(tests/${stem}.mutants.cmake)")
   endif()
   string(REPLACE "${M_FIND}" "${M_REPLACE}" mutated "${text}")
   set(output "${PROJECT_BINARY_DIR}/mutants/${stem}/${M_NAME}.cpp")

@@ -84,9 +84,10 @@ labkit_mutant(03 separating_axes NAME enter_leave_not_swapped STEP 5 SAYS "enter
   FIND "if (x.ds < 0) std::swap(enter, leave);"
   REPLACE "")
 
+# Step 5: the motion axes left out, W x A_i and W x B_j alike (both loops: EVERYWHERE).
 labkit_mutant(03 separating_axes NAME no_motion_axes STEP 5 SAYS "W x A_i"
   FIND "    if (std::abs(s) > r) return false;"
-  REPLACE "")
+  REPLACE "" EVERYWHERE)
 
 labkit_mutant(03 separating_axes NAME an_instant_is_no_contact STEP 5 SAYS "single instant"
   FIND "if (first - last > first_error + last_error) return {};"
