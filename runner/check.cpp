@@ -13,6 +13,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <thread>
 
@@ -268,8 +269,12 @@ std::string core_summary(const Lab& lab, const std::vector<StepResult>& results)
 
 }  // namespace
 
-int check(const Paths& paths, const CheckOptions& options) {
-  const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
+namespace {
+
+// The labs asked for (all the kit has when none is named), or none after saying on stderr
+// why the request cannot be run.
+std::optional<std::vector<const Lab*>> labs_asked(const Manifest& manifest, const Paths& paths,
+                                                  const CheckOptions& options) {
   std::vector<const Lab*> labs;
   for (const std::string& id : options.labs) {
     const Lab* lab = manifest.find(id.size() == 1 ? "0" + id : id);
@@ -277,7 +282,7 @@ int check(const Paths& paths, const CheckOptions& options) {
       std::string known;
       for (const Lab& l : manifest.labs) known += (known.empty() ? "" : ", ") + l.id;
       std::cerr << "labkit check: there is no lab '" << id << "'; the labs are " << known << "\n";
-      return 2;
+      return std::nullopt;
     }
     labs.push_back(lab);
   }
@@ -287,47 +292,129 @@ int check(const Paths& paths, const CheckOptions& options) {
       if (std::filesystem::is_directory(paths.source + "/labs/" + l.stem())) labs.push_back(&l);
   if (!options.replay.empty() && labs.size() != 1) {
     std::cerr << "labkit check: --case replays one lab's case; name the lab, e.g. ./labkit check 02 --case '...'\n";
-    return 2;
+    return std::nullopt;
   }
   if (!options.replay.empty() && !is_replay_token(options.replay)) {
     std::cerr << "labkit check: a case looks like 'query:1,2,3' (copy it from a failure report); got '"
               << safe_text(options.replay.substr(0, 60)) << "'\n";
-    return 2;
+    return std::nullopt;
   }
-
-  StepOptions step_options;
-  step_options.seed = options.seed;
-  step_options.cases = options.cases;
-  step_options.replay = options.replay;
   if (options.debug && options.replay.empty()) {
     std::cerr << "labkit check: --debug replays one case under gdb; add the --case a failure report printed\n";
-    return 2;
+    return std::nullopt;
   }
-  step_options.debugger = options.debug;
-  if (options.debug) step_options.call_seconds = 120;  // gdb reads the program's symbols first
-  step_options.limits.seconds = options.timeout;
-  step_options.limits.memory_bytes = std::size_t(4) << 30;
-  const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+  for (const Lab* lab : labs)
+    if (options.step != 0 &&
+        std::none_of(lab->steps.begin(), lab->steps.end(), [&](const Step& s) { return s.number == options.step; })) {
+      std::cerr << "labkit check: lab " << lab->id << " has no step " << options.step << "\n";
+      return std::nullopt;
+    }
+  return labs;
+}
 
-  const auto start = std::chrono::steady_clock::now();
+StepOptions step_options_for(const CheckOptions& options) {
+  StepOptions o;
+  o.seed = options.seed;
+  o.cases = options.cases;
+  o.replay = options.replay;
+  o.debugger = options.debug;
+  if (options.debug) o.call_seconds = 120;  // gdb reads the program's symbols first
+  o.limits.seconds = options.timeout;
+  o.limits.memory_bytes = std::size_t(4) << 30;
+  return o;
+}
+
+// --case: the one replayed case's verdict, or why it could not be replayed. The exit code.
+int report_replay(const std::vector<StepResult>& results, const Lab& lab, const Paths& paths,
+                  const CheckOptions& options) {
+  for (const StepResult& r : results)
+    for (const QueryResult& q : r.queries) {
+      if (!q.error.empty()) {
+        std::cerr << "labkit check: " << safe_text(q.error) << "\n";
+        return 2;
+      }
+      if (q.cases == 0) continue;
+      std::cout << "  replayed " << safe_text(q.query) << " (step " << r.step->number << ", " << r.step->tag << "): ";
+      if (!q.failure) {
+        std::cout << green(q.ambiguous ? "passes (an ambiguous case: any answer is accepted)" : "passes") << "\n";
+        return 0;
+      }
+      std::cout << red("fails") << "\n";
+      Failure f = *q.failure;
+      // Under gdb the judge sees gdb's exit, not the crash, and gdb's output as the
+      // code's: the debugger's own lines below are the explanation.
+      if (options.debug && r.run.output.find(kGdbStopped) != std::string::npos)
+        f.why = "your code did not answer this call under the debugger: its report below says why and where";
+      print_failure(f, q.query, lab, paths.build);
+      if (options.debug) print_debugger(r.run.output);
+      return 1;
+    }
+  for (const StepResult& r : results)
+    if (r.status != Status::passed && r.status != Status::failing) {
+      print_details(r, lab, paths);
+      return 1;
+    }
+  std::cerr << "labkit check: no step of lab " << lab.id << " has the query '"
+            << options.replay.substr(0, options.replay.find(':')) << "'\n";
+  return 2;
+}
+
+// What the table adds up to: steps shown and passing, the failing ones to explain below
+// it, and where to go next.
+struct Tally {
   int total = 0, passing = 0;
   std::string next_step;
   std::vector<std::pair<const Lab*, StepResult>> to_explain;
-  const bool replaying = !options.replay.empty();
-  std::vector<std::vector<const Step*>> selected;
-  for (const Lab* lab : labs) {
-    selected.emplace_back();
-    for (const Step& s : lab->steps)
-      if (options.step == 0 || s.number == options.step) selected.back().push_back(&s);
-    if (selected.back().empty()) {
-      std::cerr << "labkit check: lab " << lab->id << " has no step " << options.step << "\n";
-      return 2;
+};
+
+// A lab's rows: each step with its tier, status and counts (a passing step's notes under
+// it), then the core path's progress.
+void print_rows(const Lab& lab, const std::vector<StepResult>& results, std::size_t title_width, const Paths& paths,
+                Tally& tally) {
+  const StepResult* next = nullptr;  // the first core step that does not pass, else extension
+  for (const StepResult& r : results) {
+    ++tally.total;
+    const Step& s = *r.step;
+    std::cout << "  " << term::pad(std::to_string(s.number), 3) << term::pad(s.tag, 7)
+              << term::pad(s.core ? "core" : "extension", 11) << term::pad(s.title, title_width)
+              << term::pad(coloured_status(r.status), 22) << counts(r) << "\n";
+    if (r.status == Status::passed) {
+      ++tally.passing;
+      for (const QueryResult& q : r.queries)
+        for (const std::string& note : q.notes) std::cout << dim("       " + safe_text(note)) << "\n";
+      continue;
     }
+    if (r.status != Status::not_implemented) tally.to_explain.push_back({&lab, r});
+    if (!next || (s.core && !next->step->core)) next = &r;
   }
+  if (results.size() > 1) std::cout << dim("  " + core_summary(lab, results)) << "\n";
+  if (!next || !tally.next_step.empty()) return;
+  const Step& s = *next->step;
+  tally.next_step = "lab " + lab.id + " step " + std::to_string(s.number) + " (" + s.tag + ", " +
+                    (s.core ? "core" : "an extension") + "): " + lab.handout() + ", \"Step " +
+                    std::to_string(s.number) + "\"";
+  // A step begun but failing: its hints are one command away (handouts/hints/).
+  if (next->status != Status::not_implemented && std::filesystem::exists(paths.source + "/" + lab.hints()))
+    tally.next_step += "; stuck? ./labkit hint " + lab.id + " " + std::to_string(s.number);
+}
+
+}  // namespace
+
+int check(const Paths& paths, const CheckOptions& options) {
+  const Manifest manifest = load_manifest(paths.source + "/grading/manifest.json");
+  const std::optional<std::vector<const Lab*>> asked = labs_asked(manifest, paths, options);
+  if (!asked) return 2;
+  const std::vector<const Lab*>& labs = *asked;
+  const StepOptions step_options = step_options_for(options);
+  const int jobs = options.jobs > 0 ? options.jobs : int(std::max(1u, std::thread::hardware_concurrency()));
+  const bool replaying = !options.replay.empty();
+  const auto start = std::chrono::steady_clock::now();
+
   // The title column fits the longest title shown.
   std::size_t title_width = 40;
-  for (const auto& steps : selected)
-    for (const Step* s : steps) title_width = std::max(title_width, s->title.size() + 2);
+  for (const Lab* lab : labs)
+    for (const Step& s : lab->steps)
+      if (options.step == 0 || s.number == options.step) title_width = std::max(title_width, s.title.size() + 2);
   if (!replaying)
     std::cout << bold("labkit check")
               << dim(": " + std::string(options.cases ? std::to_string(options.cases) : "the default") +
@@ -344,11 +431,11 @@ int check(const Paths& paths, const CheckOptions& options) {
     build_targets(paths, all, &built, true);
   }
 
-  for (std::size_t l = 0; l < labs.size(); ++l) {
-    const Lab* lab = labs[l];
-    const std::vector<const Step*>& steps = selected[l];
-    const Programs programs{paths.build + "/" + lab->judge_binary(),
-                            paths.build + "/" + lab->answerer(options.implementation)};
+  Tally tally;
+  for (const Lab* lab : labs) {
+    std::vector<const Step*> steps;
+    for (const Step& s : lab->steps)
+      if (options.step == 0 || s.number == options.step) steps.push_back(&s);
     bool built = false;
     const std::string errors =
         build_targets(paths, {lab->judge_binary(), lab->answerer(options.implementation)}, &built);
@@ -357,86 +444,28 @@ int check(const Paths& paths, const CheckOptions& options) {
     if (!built) {
       std::cout << "  " << red("does not compile") << ": every step of this lab fails until it does.\n\n    "
                 << term::indent(safe_text(errors), "    ") << "\n";
-      total += int(steps.size());
-      if (next_step.empty()) next_step = "make lab " + lab->id + " compile (the errors above)";
+      tally.total += int(steps.size());
+      if (tally.next_step.empty()) tally.next_step = "make lab " + lab->id + " compile (the errors above)";
       continue;
     }
+    const Programs programs{paths.build + "/" + lab->judge_binary(),
+                            paths.build + "/" + lab->answerer(options.implementation)};
     const std::vector<StepResult> results = run_steps(programs, *lab, steps, step_options, jobs);
-
-    if (replaying) {
-      for (const StepResult& r : results)
-        for (const QueryResult& q : r.queries) {
-          if (!q.error.empty()) {
-            std::cerr << "labkit check: " << safe_text(q.error) << "\n";
-            return 2;
-          }
-          if (q.cases == 0) continue;
-          std::cout << "  replayed " << safe_text(q.query) << " (step " << r.step->number << ", " << r.step->tag
-                    << "): ";
-          if (q.failure) {
-            std::cout << red("fails") << "\n";
-            Failure f = *q.failure;
-            // Under gdb the judge sees gdb's exit, not the crash, and gdb's output as the
-            // code's: the debugger's own lines below are the explanation.
-            if (options.debug && r.run.output.find(kGdbStopped) != std::string::npos)
-              f.why = "your code did not answer this call under the debugger: its report below says why and where";
-            print_failure(f, q.query, *lab, paths.build);
-            if (options.debug) print_debugger(r.run.output);
-          } else {
-            std::cout << green(q.ambiguous ? "passes (an ambiguous case: any answer is accepted)" : "passes") << "\n";
-          }
-          return q.failure ? 1 : 0;
-        }
-      for (const StepResult& r : results)
-        if (r.status != Status::passed && r.status != Status::failing) {
-          print_details(r, *lab, paths);
-          return 1;
-        }
-      std::cerr << "labkit check: no step of lab " << lab->id << " has the query '"
-                << options.replay.substr(0, options.replay.find(':')) << "'\n";
-      return 2;
-    }
-
-    // Next: the first core step that does not pass, else the first extension.
-    const StepResult* next = nullptr;
-    for (const StepResult& r : results) {
-      ++total;
-      const Step& s = *r.step;
-      std::cout << "  " << term::pad(std::to_string(s.number), 3) << term::pad(s.tag, 7)
-                << term::pad(s.core ? "core" : "extension", 11) << term::pad(s.title, title_width)
-                << term::pad(coloured_status(r.status), 22) << counts(r) << "\n";
-      if (r.status == Status::passed) {
-        ++passing;
-        for (const QueryResult& q : r.queries)
-          for (const std::string& note : q.notes) std::cout << dim("       " + safe_text(note)) << "\n";
-        continue;
-      }
-      if (r.status != Status::not_implemented) to_explain.push_back({lab, r});
-      if (!next || (s.core && !next->step->core)) next = &r;
-    }
-    if (steps.size() > 1) std::cout << dim("  " + core_summary(*lab, results)) << "\n";
-    if (next && next_step.empty()) {
-      const Step& s = *next->step;
-      next_step = "lab " + lab->id + " step " + std::to_string(s.number) + " (" + s.tag + ", " +
-                  (s.core ? "core" : "an extension") + "): " + lab->handout() + ", \"Step " + std::to_string(s.number) +
-                  "\"";
-      // A step begun but failing: its hints are one command away (handouts/hints/).
-      if (next->status != Status::not_implemented && std::filesystem::exists(paths.source + "/" + lab->hints()))
-        next_step += "; stuck? ./labkit hint " + lab->id + " " + std::to_string(s.number);
-    }
+    if (replaying) return report_replay(results, *lab, paths, options);
+    print_rows(*lab, results, title_width, paths, tally);
   }
 
-  for (const auto& [lab, r] : to_explain) print_details(r, *lab, paths);
+  for (const auto& [lab, r] : tally.to_explain) print_details(r, *lab, paths);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream took;
   took.precision(2);
   took << std::fixed << seconds;
   std::cout << "\n"
-            << bold(std::to_string(passing) + " of " + std::to_string(total) + " steps pass")
+            << bold(std::to_string(tally.passing) + " of " + std::to_string(tally.total) + " steps pass")
             << dim(" (" + took.str() + " s)");
-  if (!next_step.empty()) std::cout << ". Next: " << next_step;
+  if (!tally.next_step.empty()) std::cout << ". Next: " << tally.next_step;
   std::cout << "\n";
-  return passing == total ? 0 : 1;
+  return tally.passing == tally.total ? 0 : 1;
 }
 
 }  // namespace runner

@@ -41,6 +41,12 @@ double step_score(const Step& step, const StepResult& result) {
 namespace {
 
 struct Context {
+  Context(const Paths& p, const GradeOptions& o)
+      : paths(p),
+        options(o),
+        sandbox(Sandbox::make(o.sandbox, {p.source + "/common", p.build}, p.source)),
+        step_memory_mb(o.memory_mb) {}
+
   const Paths& paths;
   const GradeOptions& options;
   std::vector<const Lab*> labs;
@@ -701,15 +707,7 @@ int grade(const Paths& paths, const GradeOptions& options) {
   const Manifest manifest = restrict_to(load_manifest(paths.source + "/grading/manifest.json"), assignment);
   const std::optional<Roster> roster =
       options.roster.empty() ? std::nullopt : std::optional<Roster>(load_roster(options.roster));
-  Context c{paths,
-            options,
-            {},
-            {},
-            Sandbox::make(options.sandbox, {paths.source + "/common", paths.build}, paths.source),
-            {},
-            {},
-            1,
-            options.memory_mb};
+  Context c(paths, options);
   for (const Lab& lab : manifest.labs) {
     const bool wanted =
         options.labs.empty() || std::find_if(options.labs.begin(), options.labs.end(), [&](const std::string& id) {
