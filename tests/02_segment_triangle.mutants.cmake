@@ -80,3 +80,10 @@ labkit_mutant(02 segment_triangle NAME crossing_point_edge_tests STEP 8 SAYS "bo
 labkit_mutant(02 segment_triangle NAME coplanar_is_a_miss STEP 8 SAYS "in the plane"
   FIND "if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);"
   REPLACE "if (d_a == 0 && d_b == 0) return {};")
+
+# Step 9: the frame taken as half-open, [0, 1): a contact exactly at its end is dropped,
+# as if the next frame would see it (it starts with the meshes touching, which no
+# frame then reports).
+labkit_mutant(02 segment_triangle NAME frame_end_excluded STEP 9 SAYS "first touch" "t = 1"
+  FIND "if (best.hit && t >= best.t) return;  // not earlier"
+  REPLACE "if (t >= 1 || (best.hit && t >= best.t)) return;")

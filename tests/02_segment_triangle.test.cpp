@@ -601,7 +601,31 @@ TEST_CASE(LABKIT_STEP(L02S8) ": shared edges and vertices in a mesh", "[lab02][s
   });
 }
 
-TEST_CASE(LABKIT_STEP(L02S8) ": moving meshes touching exactly", "[lab02][step8]") {
+TEST_CASE(LABKIT_STEP(L02S8) ": random exact degenerate cases", "[lab02][step8][oracle]") {
+  check::random_cases(query::robust_find_segment_triangle, gen::exact_segment_triangle(), exact_find);
+  check::random_cases(query::robust_point_in_triangle, gen::exact_point_triangle(), [](const PointTriangle& in) {
+    const Outcome o = judge::point_in_triangle(in, answerer::point_in_triangle_edges(in.x, in.triangle), Rules::exact);
+    if (o.verdict == Outcome::Verdict::fail) return o;
+    return judge::point_in_triangle(in, answerer::point_in_triangle_barycentric(in.x, in.triangle), Rules::exact);
+  });
+  check::random_cases(query::robust_all_hits, gen::exact_segment_mesh(), [](const SegmentMeshPair& in) {
+    const Outcome o = judge::all_hits(in, answerer::all_hits(in.segment, in.mesh), Rules::exact);
+    if (o.verdict == Outcome::Verdict::fail) return o;
+    return judge::first_hit(in, answerer::first_hit(in.segment, in.mesh), Rules::exact);
+  });
+  // The thinnest needles, crossed steeply near their long edge: many yes/no answers are in
+  // doubt there, but t, the point and the weights are checked all the same.
+  check::random_cases(query::needle_find_segment_triangle, gen::needle_crossed_steeply(),
+                      [](const SegmentTrianglePair& in) {
+    const Outcome o = run_find(in);
+    return o.verdict == Outcome::Verdict::fail ? o : run_test(in);
+  });
+}
+
+// ---- Step 9: robustness of the moving meshes (an extension, as step 7 is) -------------
+// Step 7 on exact input: contacts exactly at a vertex, on an edge, at t = 1, in one plane.
+
+TEST_CASE(LABKIT_STEP(L02S9) ": worked examples", "[lab02][step9]") {
   constexpr auto q = query::robust_first_contact_moving_meshes;
   // The spike's vertex (1, 1, 2) falls onto the floor's shared diagonal (0,0)-(4,4).
   check::example(q, "a vertex onto the shared diagonal at t = 1/2",
@@ -625,25 +649,10 @@ TEST_CASE(LABKIT_STEP(L02S8) ": moving meshes touching exactly", "[lab02][step8]
                  MovingMeshes{flat_a, {4, 0, 0}, flat_b, {0, 0, 0}}, expect_contact(true, 0.5, {4, 0, 0}));
 }
 
-TEST_CASE(LABKIT_STEP(L02S8) ": random exact degenerate cases", "[lab02][step8][oracle]") {
-  check::random_cases(query::robust_find_segment_triangle, gen::exact_segment_triangle(), exact_find);
-  check::random_cases(query::robust_point_in_triangle, gen::exact_point_triangle(), [](const PointTriangle& in) {
-    const Outcome o = judge::point_in_triangle(in, answerer::point_in_triangle_edges(in.x, in.triangle), Rules::exact);
-    if (o.verdict == Outcome::Verdict::fail) return o;
-    return judge::point_in_triangle(in, answerer::point_in_triangle_barycentric(in.x, in.triangle), Rules::exact);
-  });
-  check::random_cases(query::robust_all_hits, gen::exact_segment_mesh(), [](const SegmentMeshPair& in) {
-    const Outcome o = judge::all_hits(in, answerer::all_hits(in.segment, in.mesh), Rules::exact);
-    if (o.verdict == Outcome::Verdict::fail) return o;
-    return judge::first_hit(in, answerer::first_hit(in.segment, in.mesh), Rules::exact);
-  });
-  // The thinnest needles, crossed steeply near their long edge: many yes/no answers are in
-  // doubt there, but t, the point and the weights are checked all the same.
-  check::random_cases(query::needle_find_segment_triangle, gen::needle_crossed_steeply(),
-                      [](const SegmentTrianglePair& in) {
-    const Outcome o = run_find(in);
-    return o.verdict == Outcome::Verdict::fail ? o : run_test(in);
-  });
+TEST_CASE(LABKIT_STEP(L02S9) ": random exact degenerate cases", "[lab02][step9][oracle]") {
+  check::random_cases(
+      query::robust_first_contact_moving_meshes, gen::exact_moving_meshes(),
+      [](const MovingMeshes& in) { return judge::first_contact_moving_meshes(in, run_contact(in), Rules::exact); });
 }
 
 // ---- Preconditions: the reference rejects invalid input (not graded) -------------------

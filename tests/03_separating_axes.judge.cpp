@@ -301,6 +301,22 @@ std::string noise_hint(const MovingBoxes& in) {
   return "";
 }
 
+// An axis along which B does not move at all while the boxes touch exactly on it
+// (|s| = r): a static test with >= for > calls them apart for the whole motion.
+std::string touching_still_axis(const MovingBoxes& in) {
+  const Vec3 w = in.velocity_b - in.velocity_a;
+  for (int k = 0; k < 15; ++k) {
+    const Vec3 axis = oracle::box_pair_axis(in.a, in.b, k);
+    if (axis.isZero() || w.dot(axis) != 0) continue;
+    for (const double sign : {1.0, -1.0})
+      if (oracle::box_depth_along(in.a, in.b, sign * axis) == 0)
+        return "; along " + axis_name(k) +
+               " B does not move and the boxes touch exactly (|s| = r) all the while: touching is not apart, "
+               "which takes |s| > r, strictly";
+  }
+  return "";
+}
+
 }  // namespace
 
 Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules) {
@@ -315,8 +331,11 @@ Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules) {
     o.why = "the boxes touch while t runs from " + fmt(t.first) + " to " + fmt(t.last) +
             ": contact on all 15 axes at once; your answer says they never touch";
     const Vec3 w = in.velocity_b - in.velocity_a;
+    const std::string still = touching_still_axis(in);
     if (t.last - t.first <= 1e-9 * std::max(in.duration, 1e-300))
       o.why += "; they touch for a single instant: first == last (to rounding) is a contact";
+    else if (!still.empty())
+      o.why += still;
     else if (w.dot(in.b.center - in.a.center) < 0)
       o.why += "; B approaches A: on an axis where ds = W . L < 0, (r - s) / ds is the entering time, not the leaving";
     return o;

@@ -106,3 +106,9 @@ labkit_mutant(03 separating_axes NAME touching_boxes_separate STEP 2 SAYS "nearl
 labkit_mutant(03 separating_axes NAME touching_faces_apart STEP 6 SAYS "only touch" "strict"
   FIND "bool separates(const AxisTest& x) { return std::abs(x.s) > x.r; }"
   REPLACE "bool separates(const AxisTest& x) { return x.length2 > 1e-20 && std::abs(x.s) >= x.r; }")
+
+# Step 7: an axis along which B does not move tested with >= for >: boxes sliding along
+# each other while touching come out apart for the whole frame.
+labkit_mutant(03 separating_axes NAME sliding_contact_apart STEP 7 SAYS "does not move" "strictly"
+  FIND "if (separates(x)) return {};  // apart on this axis at every time: never"
+  REPLACE "if (x.length2 > 0 && std::abs(x.s) >= x.r) return {};")

@@ -435,7 +435,13 @@ TEST_CASE(LABKIT_STEP(L03S6) ": touching and parallel boxes", "[lab03][step6]") 
   });
 }
 
-TEST_CASE(LABKIT_STEP(L03S6) ": touching and coplanar triangles", "[lab03][step6]") {
+TEST_CASE(LABKIT_STEP(L03S6) ": random exact degenerate cases", "[lab03][step6][oracle]") {
+  check::random_cases(query::robust_boxes, gen::exact_box_pair(), exact_boxes);
+}
+
+// ---- Step 7: robustness of steps 4 and 5 (extensions, as they are) --------------------
+
+TEST_CASE(LABKIT_STEP(L03S7) ": touching and coplanar triangles", "[lab03][step7]") {
   constexpr auto q = query::robust_triangles;
   const auto expect = [](bool intersecting) {
     return both<TrianglePair>(
@@ -459,7 +465,7 @@ TEST_CASE(LABKIT_STEP(L03S6) ": touching and coplanar triangles", "[lab03][step6
                  expect(false));
 }
 
-TEST_CASE(LABKIT_STEP(L03S6) ": moving boxes that touch at an instant, slide, or start together", "[lab03][step6]") {
+TEST_CASE(LABKIT_STEP(L03S7) ": moving boxes that touch at an instant, slide, or start together", "[lab03][step7]") {
   constexpr auto q = query::robust_moving_boxes;
   const auto expect = [](bool contact, double first, double last) {
     return both<MovingBoxes>(
@@ -490,8 +496,7 @@ TEST_CASE(LABKIT_STEP(L03S6) ": moving boxes that touch at an instant, slide, or
                  expect(true, 0, 0));
 }
 
-TEST_CASE(LABKIT_STEP(L03S6) ": random exact degenerate cases", "[lab03][step6][oracle]") {
-  check::random_cases(query::robust_boxes, gen::exact_box_pair(), exact_boxes);
+TEST_CASE(LABKIT_STEP(L03S7) ": random exact degenerate cases", "[lab03][step7][oracle]") {
   check::random_cases(query::robust_triangles, gen::exact_triangle_pair(), exact_triangles);
   check::random_cases(query::robust_moving_boxes, gen::exact_moving_boxes(), exact_moving);
 }

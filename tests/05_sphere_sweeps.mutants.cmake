@@ -115,8 +115,8 @@ labkit_mutant(05 sphere_sweeps NAME signed_projection STEP 7 SAYS "absolute valu
   FIND "reach += box.half_extents[i] * std::abs(plane.normal.dot(box.axes.col(i)));"
   REPLACE "reach += box.half_extents[i] * plane.normal.dot(box.axes.col(i));")
 
-# Step 8: deciding on the constructed (rounded) distance instead of division-free products.
-labkit_mutant(05 sphere_sweeps NAME decide_on_rounded_distance STEP 8 SAYS "exact products"
+# Step 9: deciding on the constructed (rounded) distance instead of division-free products.
+labkit_mutant(05 sphere_sweeps NAME decide_on_rounded_distance STEP 9 SAYS "exact products"
   FIND "return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));"
   REPLACE "return segment_segment(a.axis, b.axis).squared_distance <= square(a.radius + b.radius);")
 

@@ -476,14 +476,6 @@ TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
     e.near("squared_distance", answerer::segment_segment(in.first, in.second).squared_distance, 0, kExample);
     return both(e, run_segment_segment(in));
   });
-  check::example(query::robust_test_capsule_capsule, "crossing at 1/3 and 2/3, exactly touching",
-                 CapsulePair{{{{0, 0, 0}, {3, 0, 0}}, 1}, {{{1, -2, 2}, {1, 1, 2}}, 1}},
-                 expect_test<CapsulePair>(true));
-  check::example(query::robust_test_capsule_lozenge, "resting exactly on the floor",
-                 CapsuleLozenge{{{{-1, 0, 3}, {1, 0, 3}}, 1}, {kFloor, 2}}, expect_test<CapsuleLozenge>(true));
-  check::example(query::robust_test_lozenge_lozenge, "a zero-size lozenge touching a corner",
-                 LozengePair{{kFloor, 0}, {{{3, 1, 0}, {1, 0, 0}, {0, 1, 0}, 0, 0}, 1}},
-                 expect_test<LozengePair>(true));
 
   constexpr auto s = query::robust_sweep_sphere_sphere;
   check::example(s, "touching at t = 0, moving apart", SS{{{0, 0, 0}, 2}, {0, 0, 0}, {{0, 3, 4}, 3}, {0, 3, 4}, 1},
@@ -499,10 +491,6 @@ TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
                  SP{{{0, 0, 2}, 1}, {1, 0, 0}, kShelf, 4}, expect_sweep<SP>(SweepStatus::overlapping));
   check::example(query::robust_sweep_sphere_plane, "reaching it exactly at T",
                  SP{{{0, 0, 5}, 1}, {0, 0, -2}, kShelf, 1.5}, expect_sweep<SP>(SweepStatus::contact, 1.5, {0, 0, 1}));
-  // Step 3's flat lozenge: an axis parallel to a side only up to rounding. The recipe
-  // (w . n)^2 <= R^2 |n|^2 alone says "meet" here; measure the pair itself instead.
-  check::example(query::robust_test_capsule_lozenge, "an axis parallel to a flat lozenge in floating point, 532 apart",
-                 input_from_token<CapsuleLozenge>(parse_token(kFlatLozengeToken)), expect_test<CapsuleLozenge>(false));
   check::example(query::robust_sweep_sphere_capsule,
                  "sliding exactly parallel to the axis, R from it: touches the cap at t = 2",
                  SC{{{-4, 2, 0}, 1}, {2, 0, 0}, kRod, 4}, expect_sweep<SC>(SweepStatus::contact, 2, {0, 1, 0}));
@@ -513,24 +501,44 @@ TEST_CASE(LABKIT_STEP(L05S8) ": worked examples", "[lab05][step8]") {
   check::example(query::robust_sweep_sphere_capsule, "a zero-length capsule, reached exactly at T = 3",
                  SC{{{0, 0, 5}, 1}, {0, 0, -1}, {{{0, 0, 0}, {0, 0, 0}}, 1}, 3},
                  expect_sweep<SC>(SweepStatus::contact, 3, {0, 0, 1}));
-  check::example(query::robust_sweep_box_plane, "a point box resting on the ground",
-                 BP{{{0, 0, 0}, Mat3::Identity(), {0, 0, 0}}, {0, 0, -1}, kGround, 1},
-                 expect_sweep<BP>(SweepStatus::overlapping));
 }
 
 TEST_CASE(LABKIT_STEP(L05S8) ": random exact degenerate cases", "[lab05][step8][oracle]") {
   check::random_cases(query::robust_segment_segment, gen::segment_pair(true), run_segment_segment);
-  check::random_cases(query::robust_segment_rectangle, gen::segment_rectangle(true), run_segment_rectangle);
-  check::random_cases(query::robust_test_sphere_capsule, gen::sphere_capsule(true), run_exact_test<SphereCapsule>);
-  check::random_cases(query::robust_test_capsule_capsule, gen::capsule_pair(true), run_exact_test<CapsulePair>);
-  check::random_cases(query::robust_test_capsule_lozenge, gen::capsule_lozenge(true), run_exact_test<CapsuleLozenge>);
-  check::random_cases(query::robust_test_lozenge_lozenge, gen::lozenge_pair(true), run_exact_test<LozengePair>);
   check::random_cases(query::robust_sweep_sphere_plane, gen::sphere_plane_motion(true),
                       [](const SP& in) { return run_sweep(in, Rules::exact); });
   check::random_cases(query::robust_sweep_sphere_sphere, gen::sphere_sphere_motion(true),
                       [](const SS& in) { return run_sweep(in, Rules::exact); });
   check::random_cases(query::robust_sweep_sphere_capsule, gen::sphere_capsule_motion(true),
                       [](const SC& in) { return run_sweep(in, Rules::exact); });
+}
+
+// ---- Step 9: robustness of steps 2, 3 and 7 (extensions, as they are) -----------------
+
+TEST_CASE(LABKIT_STEP(L05S9) ": worked examples", "[lab05][step9]") {
+  check::example(query::robust_test_capsule_capsule, "crossing at 1/3 and 2/3, exactly touching",
+                 CapsulePair{{{{0, 0, 0}, {3, 0, 0}}, 1}, {{{1, -2, 2}, {1, 1, 2}}, 1}},
+                 expect_test<CapsulePair>(true));
+  check::example(query::robust_test_capsule_lozenge, "resting exactly on the floor",
+                 CapsuleLozenge{{{{-1, 0, 3}, {1, 0, 3}}, 1}, {kFloor, 2}}, expect_test<CapsuleLozenge>(true));
+  check::example(query::robust_test_lozenge_lozenge, "a zero-size lozenge touching a corner",
+                 LozengePair{{kFloor, 0}, {{{3, 1, 0}, {1, 0, 0}, {0, 1, 0}, 0, 0}, 1}},
+                 expect_test<LozengePair>(true));
+  // Step 3's flat lozenge: an axis parallel to a side only up to rounding. The recipe
+  // (w . n)^2 <= R^2 |n|^2 alone says "meet" here; measure the pair itself instead.
+  check::example(query::robust_test_capsule_lozenge, "an axis parallel to a flat lozenge in floating point, 532 apart",
+                 input_from_token<CapsuleLozenge>(parse_token(kFlatLozengeToken)), expect_test<CapsuleLozenge>(false));
+  check::example(query::robust_sweep_box_plane, "a point box resting on the ground",
+                 BP{{{0, 0, 0}, Mat3::Identity(), {0, 0, 0}}, {0, 0, -1}, kGround, 1},
+                 expect_sweep<BP>(SweepStatus::overlapping));
+}
+
+TEST_CASE(LABKIT_STEP(L05S9) ": random exact degenerate cases", "[lab05][step9][oracle]") {
+  check::random_cases(query::robust_segment_rectangle, gen::segment_rectangle(true), run_segment_rectangle);
+  check::random_cases(query::robust_test_sphere_capsule, gen::sphere_capsule(true), run_exact_test<SphereCapsule>);
+  check::random_cases(query::robust_test_capsule_capsule, gen::capsule_pair(true), run_exact_test<CapsulePair>);
+  check::random_cases(query::robust_test_capsule_lozenge, gen::capsule_lozenge(true), run_exact_test<CapsuleLozenge>);
+  check::random_cases(query::robust_test_lozenge_lozenge, gen::lozenge_pair(true), run_exact_test<LozengePair>);
   check::random_cases(query::robust_sweep_box_plane, gen::box_plane_motion(true),
                       [](const BP& in) { return run_sweep(in, Rules::exact); });
 }

@@ -833,7 +833,16 @@ TEST_CASE(LABKIT_STEP(L06S9) ": k-d trees on exact input", "[lab06][step9]") {
                  [](const Mesh& m) { return judge::kd_tree(m, answerer::build_kd_tree(m)); });
 }
 
-TEST_CASE(LABKIT_STEP(L06S9) ": BSP trees and spheres on exact input", "[lab06][step9]") {
+TEST_CASE(LABKIT_STEP(L06S9) ": random exact degenerate cases", "[lab06][step9][oracle]") {
+  check::random_cases(query::robust_segment_queries, gen::exact_tree_query(),
+                      [](const TreeQuery& in) { return all_three(in, Rules::exact); });
+  check::random_cases(query::robust_build_kd_tree, gen::exact_mesh(),
+                      [](const Mesh& m) { return judge::kd_tree(m, answerer::build_kd_tree(m)); });
+}
+
+// ---- Step 10: robustness of steps 3 to 7 (extensions, as they are) -----------------------
+
+TEST_CASE(LABKIT_STEP(L06S10) ": BSP trees, spheres and BVHs on exact input", "[lab06][step10]") {
   // An L of three cubes (scaled by 2): faces share planes, points lie on them.
   const Mesh l = gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Vec3::Zero(), 2.0);
   constexpr auto q = query::robust_classify;
@@ -864,11 +873,7 @@ TEST_CASE(LABKIT_STEP(L06S9) ": BSP trees and spheres on exact input", "[lab06][
                  expect_frames({{{}, 0, 0}, {{{0, 1}}, 1, 1}, {{{0, 1}, {1, 2}}, 2, 1}}));
 }
 
-TEST_CASE(LABKIT_STEP(L06S9) ": random exact degenerate cases", "[lab06][step9][oracle]") {
-  check::random_cases(query::robust_segment_queries, gen::exact_tree_query(),
-                      [](const TreeQuery& in) { return all_three(in, Rules::exact); });
-  check::random_cases(query::robust_build_kd_tree, gen::exact_mesh(),
-                      [](const Mesh& m) { return judge::kd_tree(m, answerer::build_kd_tree(m)); });
+TEST_CASE(LABKIT_STEP(L06S10) ": random exact degenerate cases", "[lab06][step10][oracle]") {
   check::random_cases(query::robust_classify, gen::exact_point_query(), [](const PointQuery& in) {
     return judge::classify(in, answerer::classify(answerer::build_bsp(in.mesh), in.point), Rules::exact);
   });

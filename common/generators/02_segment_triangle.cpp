@@ -98,7 +98,71 @@ Vec3 feature_point(const Mesh& m, int kind) {
   return v0 + u * (v1 - v0) + w * (v2 - v0);
 }
 
+// A point of a feature of the mesh for exact aims: a vertex (0), a point of an edge at a
+// sixteenth of its length, ends and middle included (1), or a point of a face (2).
+Vec3 exact_feature_point(const Mesh& m, int kind) {
+  const auto& tri = m.triangles[std::size_t(*rc::gen::inRange<int>(0, int(m.triangles.size())))];
+  const int first = *rc::gen::inRange(0, 3);
+  const Vec3 v0 = m.vertices[std::size_t(tri[std::size_t(first)])],
+             v1 = m.vertices[std::size_t(tri[std::size_t((first + 1) % 3)])],
+             v2 = m.vertices[std::size_t(tri[std::size_t((first + 2) % 3)])];
+  if (kind == 0) return v0;
+  if (kind == 1) return v0 + *rc::gen::element(0, 1, 8, 8, 16, *rc::gen::inRange(1, 16)) / 16.0 * (v1 - v0);
+  const int u = *rc::gen::inRange(0, 9), w = *rc::gen::inRange(0, 9 - u);
+  return v0 + u / 8.0 * (v1 - v0) + w / 8.0 * (v2 - v0);
+}
+
+// One triangle in the plane z = 0 with integer corners within 8 of the origin, not thin.
+Mesh flat_triangle() {
+  Mesh m;
+  m.triangles = {{0, 1, 2}};
+  for (;;) {
+    m.vertices.clear();
+    for (int i = 0; i < 3; ++i) m.vertices.emplace_back(*integer(8), *integer(8), 0);
+    const Vec3 e1 = m.vertices[1] - m.vertices[0], e2 = m.vertices[2] - m.vertices[0];
+    if (std::abs(e1.cross(e2).z()) >= 8) return m;
+  }
+}
+
 }  // namespace
+
+rc::Gen<lab02::MovingMeshes> exact_moving_meshes() {
+  return rc::gen::exec([] {
+    lab02::MovingMeshes in;
+    // Both within 8 sqrt(3) < 14 of their centres; B's centre an integer vector at least
+    // 32 from A's: apart at t = 0, as the header requires.
+    const bool flat = *rc::gen::element(0, 0, 0, 1);
+    const auto mesh = [flat] {
+      if (flat) return flat_triangle();
+      Mesh m = small_mesh();
+      for (Vec3& v : m.vertices) v *= 8;  // the 1/8 lattice, on integers
+      return m;
+    };
+    in.a = mesh();
+    in.b = mesh();
+    Vec3 dir(*integer(4), *integer(4), flat ? 0 : *integer(4));
+    if (dir == Vec3::Zero()) dir = Vec3(1, 0, 0);
+    const Vec3 offset = dir * std::ceil(32 / dir.norm());
+    for (Vec3& v : in.b.vertices) v += offset;
+    // A feature of A aimed at a feature of B, to meet exactly at t0 (t0 = 1: at the end
+    // of the frame; t0 = 2: exactly stopping short); a face onto a face only rarely.
+    const int kind_a = *rc::gen::element(0, 0, 1, 1, 2), kind_b = *rc::gen::element(0, 1, 1, 2, 2);
+    const Vec3 x_a = exact_feature_point(in.a, kind_a), x_b = exact_feature_point(in.b, kind_b);
+    const double t0 = *rc::gen::weightedElement<double>({{3, 0.25}, {4, 0.5}, {4, 1.0}, {1, 2.0}});
+    in.velocity_b = *rc::gen::element(0, 1) ? Vec3::Zero() : Vec3(*integer(8), *integer(8), flat ? 0 : *integer(8));
+    in.velocity_a = *rc::gen::element(0, 0, 0, 0, 0, 0, 0, 0, 0, 1) ? in.velocity_b  // no relative motion
+                                                                    : Vec3((x_b - x_a) / t0 + in.velocity_b);
+    if (*rc::gen::element(0, 1)) {  // B moves onto A instead
+      std::swap(in.a, in.b);
+      std::swap(in.velocity_a, in.velocity_b);
+    }
+    const double s = *scale();
+    for (Vec3& v : in.a.vertices) v *= s;
+    for (Vec3& v : in.b.vertices) v *= s;
+    in.velocity_a *= s, in.velocity_b *= s;
+    return in;
+  });
+}
 
 rc::Gen<lab02::MovingMeshes> moving_meshes() {
   return rc::gen::exec([] {

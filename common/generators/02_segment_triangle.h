@@ -18,5 +18,10 @@ rc::Gen<lab02::MovingMesh> moving_mesh();
 // chosen vertex-face or edge-edge pair meets at a chosen time, or passing just beside
 // it, or stopping short: decisive, at every scale of the header.
 rc::Gen<lab02::MovingMeshes> moving_meshes();
+// The same meshes on integers, apart at t = 0 and aimed exactly: a vertex onto a vertex,
+// an edge or a face, an edge onto an edge (at its end or its middle), touching exactly
+// at t = 1, two flat triangles sliding in one plane, or no relative motion. Every
+// number is a small integer over a power of two: exact input for the robustness step.
+rc::Gen<lab02::MovingMeshes> exact_moving_meshes();
 
 }  // namespace labkit::gen

@@ -53,8 +53,8 @@ LABKIT_FIELDS(MovingMeshes, a, velocity_a, b, velocity_b)
   /* step 7 */ X(first_contact_moving_meshes, MovingMeshes)                                                     \
   /* step 8 */ X_IN(robust, point_in_triangle, PointTriangle)                                                   \
                X_IN(robust, find_segment_triangle, SegmentTrianglePair) X_IN(robust, all_hits, SegmentMeshPair) \
-               X_IN(robust, first_contact_moving_meshes, MovingMeshes)                                          \
-               X_IN(needle, find_segment_triangle, SegmentTrianglePair)
+               X_IN(needle, find_segment_triangle, SegmentTrianglePair)                                         \
+  /* step 9 */ X_IN(robust, first_contact_moving_meshes, MovingMeshes)
 // clang-format on
 
 namespace labkit::lab02::query {

@@ -59,8 +59,8 @@ LABKIT_FIELDS(MovingBoxes, a, velocity_a, b, velocity_b, duration)
   /* step 3 */ X(find_boxes, BoxPair)                                                  \
   /* step 4 */ X(triangles_by_intervals, TrianglePair) X(test_triangles, TrianglePair) \
   /* step 5 */ X(test_moving_boxes, MovingBoxes) X(find_moving_boxes, MovingBoxes)     \
-  /* step 6 */ X_IN(robust, boxes, BoxPair) X_IN(robust, triangles, TrianglePair)      \
-               X_IN(robust, moving_boxes, MovingBoxes)
+  /* step 6 */ X_IN(robust, boxes, BoxPair)                                            \
+  /* step 7 */ X_IN(robust, triangles, TrianglePair) X_IN(robust, moving_boxes, MovingBoxes)
 // clang-format on
 
 namespace labkit::lab03::query {

@@ -113,12 +113,13 @@ using LozengePair = VolumePair<Lozenge, Lozenge>;
                X_IN(sweep_sphere_sphere, grazing, SphereSphereMotion)                                                \
   /* step 6 */ X(sweep_sphere_capsule, SphereCapsuleMotion)                                                          \
   /* step 7 */ X(sweep_box_plane, BoxPlaneMotion)                                                                    \
-  /* step 8 */ X_IN(robust, segment_segment, SegmentPair) X_IN(robust, segment_rectangle, SegmentRectanglePair)      \
+  /* step 8 */ X_IN(robust, segment_segment, SegmentPair) X_IN(robust, sweep_sphere_plane, SpherePlaneMotion)        \
+               X_IN(robust, sweep_sphere_sphere, SphereSphereMotion)                                                 \
+               X_IN(robust, sweep_sphere_capsule, SphereCapsuleMotion)                                               \
+  /* step 9 */ X_IN(robust, segment_rectangle, SegmentRectanglePair)                                                 \
                X_IN(robust, test_sphere_capsule, SphereCapsule) X_IN(robust, test_capsule_capsule, CapsulePair)      \
                X_IN(robust, test_capsule_lozenge, CapsuleLozenge) X_IN(robust, test_lozenge_lozenge, LozengePair)    \
-               X_IN(robust, sweep_sphere_plane, SpherePlaneMotion)                                                   \
-               X_IN(robust, sweep_sphere_sphere, SphereSphereMotion)                                                 \
-               X_IN(robust, sweep_sphere_capsule, SphereCapsuleMotion) X_IN(robust, sweep_box_plane, BoxPlaneMotion)
+               X_IN(robust, sweep_box_plane, BoxPlaneMotion)
 // clang-format on
 
 namespace labkit::lab05::query {

@@ -92,7 +92,7 @@ LABKIT_FIELDS(SpreadSpheres, count, seed)
   /* step 7 */ X(colliding_triangles, BvhQuery)                                                    \
   /* step 8 */ X_IN(efficiency, segments, EfficiencyCase) X_IN(efficiency, spheres, SpreadSpheres) \
   /* step 9 */ X_IN(robust, build_kd_tree, Mesh) X_IN(robust, segment_queries, TreeQuery)          \
-               X_IN(robust, classify, PointQuery) X_IN(robust, back_to_front, PointQuery)          \
+  /* step 10 */ X_IN(robust, classify, PointQuery) X_IN(robust, back_to_front, PointQuery)         \
                X_IN(robust, overlapping_pairs, SphereSet) X_IN(robust, sweep_frames, SweepCase)    \
                X_IN(robust, colliding_triangles, BvhQuery)
 // clang-format on

@@ -184,9 +184,13 @@ struct MeshContact {
 MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b, const Vec3& velocity_b);
 
 // ---- Step 8 (L02S8): robustness: touching and coplanar -----------------------------
-// No new function: steps 1 to 7 must follow the rules at the top of this file on exact
+// No new function: steps 2 to 5 must follow the rules at the top of this file on exact
 // degenerate input (ends on the triangle, through edges and vertices, coplanar
-// segments, zero-length segments, zero-area triangles, edges shared in a mesh, meshes
-// touching exactly at a vertex or an edge).
+// segments, zero-length segments, zero-area triangles, edges shared in a mesh).
+
+// ---- Step 9 (L02S9): robustness: moving meshes -------------------------------------
+// No new function (an extension, as step 7 is): step 7 must follow its rules above on
+// exact degenerate input (meshes touching exactly at a vertex or an edge, at t = 1, or
+// sliding into each other in one plane).
 
 }  // namespace labkit::lab02

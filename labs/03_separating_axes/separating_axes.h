@@ -205,11 +205,15 @@ ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Bo
                                   double duration);
 
 // ---- Step 6 (L03S6): robustness: touching and parallel -------------------------------
-// No new function: steps 1 to 5 must follow the rules at the top of this file exactly on
+// No new function: steps 1 to 3 must follow the rules at the top of this file exactly on
 // exact input (integer coordinates up to 1024 times a power of two, axes that are signed
 // permutations of the coordinate axes): boxes touching along a face, an edge or at a
-// corner, edges exactly parallel, zero half extents, triangles touching at vertices and
-// edges or lying in one plane, zero-area triangles, moving boxes that touch at one
-// instant, slide along each other, or start in contact.
+// corner, edges exactly parallel, zero half extents.
+
+// ---- Step 7 (L03S7): robustness: triangles and moving boxes --------------------------
+// No new function (an extension, as steps 4 and 5 are): steps 4 and 5 must follow the
+// same rules on exact input: triangles touching at vertices and edges or lying in one
+// plane, zero-area triangles, moving boxes that touch at one instant, slide along each
+// other, or start in contact.
 
 }  // namespace labkit::lab03

@@ -206,15 +206,20 @@ Sweep sweep_sphere_capsule(const Sphere& sphere, const Vec3& velocity, const Cap
 Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& plane, double duration);
 
 // ---- Step 8 (L05S8): robustness: parallel, touching, grazing ------------------------
-// No new function: steps 1 to 7 on exact degenerate input (small integers, |x| <= 64,
-// times a power of two): parallel, collinear and crossing segments, zero-length segments
-// and zero-size rectangles, shapes exactly touching, spheres exactly grazing, contact
-// exactly at T, touching at t = 0 while moving away, no relative motion, boxes resting on
-// the plane, spheres a hair apart that meet very soon, and spheres sliding exactly
-// parallel to a capsule's axis, starting on it, or meeting a zero-length one. On such input the tests and
-// statuses must be exactly right (nothing is ambiguous): decide by comparing squared
-// distances without dividing (num <= R^2 den), then construct. Distances keep their tol.
-// (Step 3's random and worked cases still hold you to the rules on lines that are
-// parallel only up to rounding: there the rounded d0 x d1 is noise, so measure the pair.)
+// No new function: steps 1, 4, 5 and 6 on exact degenerate input (small integers,
+// |x| <= 64, times a power of two): parallel, collinear and crossing segments,
+// zero-length segments, spheres exactly touching or grazing, contact exactly at T,
+// touching at t = 0 while moving away, no relative motion, spheres a hair apart that
+// meet very soon, and spheres sliding exactly parallel to a capsule's axis, starting on
+// it, or meeting a zero-length one. On such input the statuses must be exactly right
+// (nothing is ambiguous): decide by comparing squared distances without dividing
+// (num <= R^2 den), then construct. Distances keep their tol.
+
+// ---- Step 9 (L05S9): robustness: rectangles, static pairs, boxes --------------------
+// No new function (an extension, as steps 2, 3 and 7 are): steps 2, 3 and 7 on the same
+// exact input: zero-size rectangles, capsules and lozenges exactly touching, boxes
+// resting on the plane. (Step 3's random and worked cases still hold you to the rules on
+// lines that are parallel only up to rounding: there the rounded d0 x d1 is noise, so
+// measure the pair.)
 
 }  // namespace labkit::lab05

@@ -392,10 +392,14 @@ constexpr double kLongAllMean = 600;
 constexpr long long kSphereTests = 100000;
 
 // ---- Step 9 (L06S9): robustness: splits through vertices ------------------------------------
-// No new function: steps 1 to 7 on exact degenerate input. Split planes through vertices
+// No new function: steps 1 and 2 on exact degenerate input. Split planes through vertices
 // and along faces (a triangle in the plane goes to both sides), segments lying in a split
-// plane or on a wall of the root's cell, ending or starting exactly on one; points and
-// eyes exactly on planes, faces, edges and vertices; balls touching exactly, even along x;
-// triangles of two meshes touching exactly, an edge through an edge or a vertex on one.
+// plane or on a wall of the root's cell, ending or starting exactly on one.
+
+// ---- Step 10 (L06S10): robustness: BSP trees, spheres, BVHs ---------------------------------
+// No new function (an extension, as steps 3 to 7 are): steps 3 to 7 on exact degenerate
+// input. Points and eyes exactly on planes, faces, edges and vertices; balls touching
+// exactly, even along x; triangles of two meshes touching exactly, an edge through an
+// edge or a vertex on one.
 
 }  // namespace labkit::lab06

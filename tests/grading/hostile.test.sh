@@ -392,16 +392,16 @@ expect symlink "not submitted"
 # its functions from others): a crash or a time-out costs its case, not its step, so a
 # step with partial credit keeps the points of its other queries.
 # point_in_triangle_barycentric is steps 3 and 8's, point_in_triangle_edges steps 2 and
-# 8's, all_hits steps 5 and 8's, segment_plane step 1's, any_hit step 5's (step 8 is the
-# robustness step; step 7, two moving meshes, calls none of them).
+# 8's, all_hits steps 5 and 8's, segment_plane step 1's, any_hit step 5's (step 8 is a
+# robustness step; steps 7 and 9, two moving meshes, call none of them).
 expect segfault graded 3="failing*" 8="failing*"
 expect endless_loop graded 2=failing 8="failing*"
 expect allocate_50gb graded 5="failing*" 8="failing*"
 expect print_100mb graded 1="too much output"
 expect exit_0 graded 5="failing*"
 expect giant_frame graded 5="failing*"
-faulty_lab=06 expect forged_counts graded 2="failing*" 5=failing 8=failing 9="failing*"
-expect defaults graded 1=failing 2=failing 3=failing 4=failing 5=failing 6=failing 7=failing 8=failing
+faulty_lab=06 expect forged_counts graded 2="failing*" 5=failing 8=failing 9="failing*" 10="failing*"
+expect defaults graded 1=failing 2=failing 3=failing 4=failing 5=failing 6=failing 7=failing 8=failing 9=failing
 grep -q "more than any answer to this call can hold" "$out/giant_frame/report.txt" ||
   fail "giant_frame: the report does not say the answer was larger than any answer to its call"
 expect all_or_nothing graded 1=failing

@@ -1,7 +1,8 @@
 // Lab and step titles come from grading/manifest.json alone. The tests' names and the
 // viewer's list read them from it (common/harness/titles.h); the handouts and the banners
 // of the contract headers, stubs and references are prose, so this test holds them to it:
-// change a title in the manifest and this names every line to change with it.
+// change a title in the manifest and this names every line to change with it. The same
+// holds for each step's tier and minutes (the handouts' core path, the hints' marks).
 #define CATCH_CONFIG_MAIN  // Catch2 2: main() is here; Catch2 3: it is Catch2::Catch2WithMain's
 #include "common/harness/catch.h"
 #include "common/text.h"
@@ -13,6 +14,7 @@
 #include <map>
 #include <regex>
 #include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -101,5 +103,91 @@ TEST_CASE("each lab's core steps fit one 3-hour session, robustness included", "
     CHECK(core_minutes <= 180);
     CHECK(core_minutes >= 60);
     CHECK(core_robustness);
+  }
+}
+
+namespace {
+
+// Runs of spaces and line breaks as one space: prose wraps wherever it likes.
+std::string one_line(std::string text) {
+  std::string out;
+  for (char c : text) {
+    if (c == '\n') c = ' ';
+    if (c != ' ' || out.empty() || out.back() != ' ') out += c;
+  }
+  return out;
+}
+
+std::string joined(const std::vector<std::string>& parts) {
+  std::string out;
+  for (std::size_t i = 0; i < parts.size(); ++i)
+    out += (i == 0 ? "" : i + 1 == parts.size() ? " and " : ", ") + parts[i];
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("each handout gives its core path and each step's tier and minutes from the manifest", "[kit]") {
+  const nlohmann::json all = manifest();
+  for (const auto& lab : all["labs"]) {
+    const std::string id = lab["id"];
+    const fs::path handout = fs::path(source_dir()) / "handouts" / (stem_of(lab) + ".md");
+    INFO(handout.string());
+    const std::string text = labkit::read_file(handout);
+    int core_minutes = 0;
+    std::vector<std::string> core_steps, extensions;
+    for (const auto& step : lab["steps"]) {
+      const std::string tag = step["tag"], number = std::to_string(step["step"].get<int>()),
+                        minutes = std::to_string(step["minutes"].get<int>());
+      const bool core = step["tier"] == "core";
+      if (core) {
+        core_minutes += step["minutes"].get<int>();
+        core_steps.push_back(number + (core_steps.empty() ? " (about " + minutes + " min)" : " (" + minutes + ")"));
+      } else {
+        extensions.push_back(number);
+      }
+      // The step's text starts with its tier and minutes: "*Core, about 25 min.*".
+      const std::string mark = std::string(core ? "*Core" : "*Extension") + ", about " + minutes + " min.*";
+      const std::string heading_end = " (" + tag + ")\n";
+      const std::size_t at = text.find(heading_end);
+      REQUIRE(at != std::string::npos);
+      std::size_t from = at + heading_end.size();
+      while (from < text.size() && text[from] == '\n') ++from;
+      const std::string first = text.substr(from, text.find('\n', from) - from);
+      INFO(tag << ": the step's text must start with \"" << mark << "\"; it starts \"" << first << "\"");
+      CHECK(first.rfind(mark, 0) == 0);
+    }
+    // One 3-hour session for the core (the manifest's comment), said near the top.
+    CHECK(core_minutes <= 180);
+    const std::size_t section_at = text.find("\n## Core path\n");
+    REQUIRE(section_at != std::string::npos);
+    CHECK(section_at < text.find("\n## Step "));
+    const std::string section = one_line(text.substr(section_at, text.find("\n## ", section_at + 1) - section_at));
+    const std::string steps = "steps " + joined(core_steps) + ", " + std::to_string(core_minutes) + " minutes";
+    const std::string extension_list =
+        extensions.empty() ? "no extension"
+                           : std::string(extensions.size() > 1 ? "steps " : "step ") + joined(extensions) + ".";
+    const std::string check = "`./labkit check " + id + "`";
+    INFO("the core path section must say \"" << steps << "\", \"" << extension_list << "\" and " << check);
+    CHECK(section.find(steps) != std::string::npos);
+    CHECK(section.find(extension_list) != std::string::npos);
+    CHECK(section.find(check) != std::string::npos);
+  }
+}
+
+TEST_CASE("each hints file marks its extension steps' sections, and only those", "[kit]") {
+  const nlohmann::json all = manifest();
+  for (const auto& lab : all["labs"]) {
+    const fs::path hints = fs::path(source_dir()) / "handouts" / "hints" / (stem_of(lab) + ".md");
+    if (!fs::exists(hints)) continue;
+    INFO(hints.string());
+    const std::string text = labkit::read_file(hints);
+    for (const auto& step : lab["steps"]) {
+      const std::string heading = "\n## Step " + std::to_string(step["step"].get<int>());
+      const bool core = step["tier"] == "core";
+      INFO("step " << step["step"] << " is " << (core ? "core: \"" : "an extension: \"") << heading.substr(1)
+                   << (core ? "\"" : " (extension)\""));
+      CHECK(text.find(heading + (core ? " (extension)\n" : "\n")) == std::string::npos);
+    }
   }
 }
