@@ -14,8 +14,8 @@
 //    keeps its sorted list from frame to frame (frame coherence, step 6);
 //  - two trees of oriented boxes, traversed together, find the triangle pairs of two
 //    meshes that meet (step 7).
-// Step 8 counts the tests of steps 1, 2 and 5; step 9 feeds steps 1 to 7 exact
-// degenerate input.
+// Step 8 counts the tests of steps 1, 2 and 5; step 9 feeds steps 1 and 2, and step 10
+// steps 3 to 7, exact degenerate input.
 //
 // The primitive is given. Whether a segment hits a triangle is decided by the watertight
 // test labkit::given::segment_triangle (common/given/segment_triangle.h), here and in the
@@ -51,7 +51,7 @@
 //    given_triangles_meet). In a check or a grade they run in the checker's process,
 //    which counts what it served (common/given/served.h): count them in your answers,
 //    and the two must agree.
-// Step 9's input is on integers (|x| <= 1024 times a power of two; segments whose
+// Steps 9 and 10's input is on integers (|x| <= 1024 times a power of two; segments whose
 // b - a has a power of two as its largest |component|, where the given test is exact):
 // there nothing is ambiguous, and every rule below holds exactly.
 #pragma once
@@ -198,7 +198,7 @@ KdHits all_hits(const KdTree& tree, const Segment& segment);
 // |d| <= 1e-13 |e0|_1 |e1|_1 |x - v0|_1 (e0 = v1 - v0, e1 = v2 - v0), as zero: a neighbour
 // sharing an edge with the plane's triangle would otherwise be cut into a sliver on the
 // wrong side, whose node then answers for a whole wedge of space (classify fails far from
-// the surface). On step 9's integers the snap never fires. Zero-area triangles are left
+// the surface). On step 10's integers the snap never fires. Zero-area triangles are left
 // out altogether.
 //
 // Classify, for a closed mesh wound outward (every normal pointing out of the solid):

@@ -325,7 +325,7 @@ double side_value(const Triangle& t, const Vec3& x) { return (t.v1 - t.v0).cross
 // into a sliver on the wrong side, and that sliver's node would claim a whole wedge of
 // space for the wrong side of the solid. The rounding error is at most a few units of
 // 2^-53 of |e0| |e1| |x - v0| (1-norms); 1e-13 of it is far above that, and on the
-// integer input of step 9 (|x| <= 1024 times a power of two) far below the smallest
+// integer input of step 10 (|x| <= 1024 times a power of two) far below the smallest
 // non-zero value, so there the sign stays exact.
 double build_side(const Triangle& t, const Vec3& x) {
   const Vec3 e0 = t.v1 - t.v0, e1 = t.v2 - t.v0, r = x - t.v0;
