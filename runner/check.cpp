@@ -391,7 +391,7 @@ void print_rows(const Lab& lab, const std::vector<StepResult>& results, std::siz
   if (!next || !tally.next_step.empty()) return;
   const Step& s = *next->step;
   tally.next_step = "lab " + lab.id + " step " + std::to_string(s.number) + " (" + s.tag + ", " +
-                    (s.core ? "core" : "an extension") + "): " + lab.handout() + ", \"Step " +
+                    (s.core ? "core" : "an extension") + "): " + lab.handout_of(s) + ", \"Step " +
                     std::to_string(s.number) + "\"";
   // A step begun but failing: its hints are one command away (handouts/hints/).
   if (next->status != Status::not_implemented && std::filesystem::exists(paths.source + "/" + lab.hints()))

@@ -42,6 +42,11 @@ Manifest load_manifest(const std::string& path) {
                                    "'; a tier is core or extension");
         step.core = tier == "core";
         step.minutes = s.value("minutes", 0);
+        const std::string handout = s.value("handout", "main");
+        if (handout != "main" && handout != "extensions")
+          throw std::runtime_error(path + ": step " + step.tag + " has handout '" + handout +
+                                   "'; a step's section is in the main handout or the extensions one");
+        step.in_extensions_handout = handout == "extensions";
         lab.steps.push_back(step);
       }
       m.labs.push_back(lab);

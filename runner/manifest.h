@@ -18,6 +18,9 @@ struct Step {
   // Its tier: core (the lab's path for one 3-hour session) or extension (the deeper work).
   bool core = true;
   int minutes = 0;  // an estimate of the time a second-year student needs for it
+  // Where its section is: the lab's handout, or (the manifest's "handout": "extensions")
+  // the handout's companion for extension steps a one-session handout has no room for.
+  bool in_extensions_handout = false;
 };
 
 struct Lab {
@@ -36,6 +39,8 @@ struct Lab {
   std::string judge_binary() const { return "test_" + stem(); }
   std::string answerer(const std::string& implementation) const { return "answer_" + stem() + "_" + implementation; }
   std::string handout() const { return "handouts/" + stem() + ".md"; }
+  std::string extensions_handout() const { return "handouts/" + stem() + ".extensions.md"; }
+  std::string handout_of(const Step& s) const { return s.in_extensions_handout ? extensions_handout() : handout(); }
   std::string hints() const { return "handouts/hints/" + stem() + ".md"; }
 };
 

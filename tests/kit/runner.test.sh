@@ -80,13 +80,15 @@ for handout in "$root"/handouts/[0-9][0-9]_*.md; do
   [ "$lines" -le 450 ] || fail "$name has $lines lines; a handout is one lab session, at most 450"
 done
 if [ -f "$manifest" ]; then
-  # "Next: ... handouts/NN_name.md, \"Step K\"": each manifest step has its heading, with its tag.
-  while read -r stem step tag; do
-    grep -q "^## Step $step: .*($tag)" "$root/handouts/$stem.md" ||
-      fail "handouts/$stem.md has no heading '## Step $step: ... ($tag)' (the manifest's step, where the runner points)"
+  # "Next: ... handouts/NN_name.md, \"Step K\"": each manifest step has its heading, with its
+  # tag, in the lab's handout or, for a step the manifest puts there, its extensions handout.
+  while read -r file step tag; do
+    grep -q "^## Step $step: .*($tag)" "$root/handouts/$file" ||
+      fail "handouts/$file has no heading '## Step $step: ... ($tag)' (the manifest's step, where the runner points)"
   done < <(sed -n 's/^ *"id": *"\([0-9]*\)".*/ID \1/p; s/^ *"name": *"\([^"]*\)".*/NAME \1/p
+                  s/.*"step": *\([0-9]*\), *"tag": *"\([^"]*\)".*"handout": *"extensions".*/STEP \1 \2 .extensions/p; t
                   s/.*"step": *\([0-9]*\), *"tag": *"\([^"]*\)".*/STEP \1 \2/p' "$manifest" |
-           awk '$1 == "ID" { id = $2 } $1 == "NAME" { stem = id "_" $2 } $1 == "STEP" { print stem, $2, $3 }')
+           awk '$1 == "ID" { id = $2 } $1 == "NAME" { stem = id "_" $2 } $1 == "STEP" { print stem $4 ".md", $2, $3 }')
 fi
 for page in "$root"/handouts/*.md "$root"/handouts/hints/*.md; do
   folder=$(dirname "$page")

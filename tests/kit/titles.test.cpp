@@ -35,6 +35,15 @@ std::string stem_of(const nlohmann::json& lab) {
   return lab["id"].get<std::string>() + "_" + lab["name"].get<std::string>();
 }
 
+// A step's section is in the lab's handout, or (the manifest's "handout": "extensions") in
+// its companion for the extension steps a one-session handout has no room for.
+bool in_extensions_handout(const nlohmann::json& step) { return step.value("handout", "main") == "extensions"; }
+
+fs::path handout_of(const nlohmann::json& lab, const nlohmann::json& step) {
+  return fs::path(source_dir()) / "handouts" /
+         (stem_of(lab) + (in_extensions_handout(step) ? ".extensions.md" : ".md"));
+}
+
 }  // namespace
 
 TEST_CASE("each handout's headings give the manifest's lab and step titles", "[kit]") {
@@ -46,12 +55,15 @@ TEST_CASE("each handout's headings give the manifest's lab and step titles", "[k
     const std::string title = "# Lab " + lab["id"].get<std::string>() + ": " + lab["title"].get<std::string>();
     CHECK(text.substr(0, text.find('\n')) == title);
     for (const auto& step : lab["steps"]) {
+      INFO(handout_of(lab, step).string());
+      const std::string holder = labkit::read_file(handout_of(lab, step));
+      if (in_extensions_handout(step)) CHECK(holder.substr(0, holder.find('\n')) == title + ", extensions");
       const std::string tag = step["tag"], heading_start = "## Step " + std::to_string(step["step"].get<int>()) + ": ";
       const std::regex heading("^## Step [0-9]+: (.*) \\(" + tag + "\\)$", std::regex::multiline);
       std::smatch m;
       INFO(tag << ": the handout needs the heading \"" << heading_start << step["title"].get<std::string>() << " ("
                << tag << ")\"");
-      REQUIRE(std::regex_search(text, m, heading));
+      REQUIRE(std::regex_search(holder, m, heading));
       CHECK(m[0].str().rfind(heading_start, 0) == 0);
       CHECK(m[1].str() == step["title"].get<std::string>());
     }
@@ -147,14 +159,17 @@ TEST_CASE("each handout gives its core path and each step's tier and minutes fro
       } else {
         extensions.push_back(number);
       }
-      // The step's text starts with its tier and minutes: "*Core, about 25 min.*".
+      // The step's text starts with its tier and minutes: "*Core, about 25 min.*". A step in
+      // the extensions handout is an extension.
+      CHECK((!in_extensions_handout(step) || !core));
+      const std::string holder = labkit::read_file(handout_of(lab, step));
       const std::string mark = std::string(core ? "*Core" : "*Extension") + ", about " + minutes + " min.*";
       const std::string heading_end = " (" + tag + ")\n";
-      const std::size_t at = text.find(heading_end);
+      const std::size_t at = holder.find(heading_end);
       REQUIRE(at != std::string::npos);
       std::size_t from = at + heading_end.size();
-      while (from < text.size() && text[from] == '\n') ++from;
-      const std::string first = text.substr(from, text.find('\n', from) - from);
+      while (from < holder.size() && holder[from] == '\n') ++from;
+      const std::string first = holder.substr(from, holder.find('\n', from) - from);
       INFO(tag << ": the step's text must start with \"" << mark << "\"; it starts \"" << first << "\"");
       CHECK(first.rfind(mark, 0) == 0);
     }
