@@ -173,6 +173,34 @@ std::string contact_rule(const MovingMeshes& in, const oracle::MeshContact& c) {
          std::to_string(eb[1]) + ") of B" + seen;
 }
 
+// What is wrong with a contact's normal n, given the normals of the features in contact
+// by then (the header's rule); empty when nothing is.
+std::string contact_normal_error(const Vec3& n, const Vec3& d, const std::vector<oracle::ContactNormal>& normals) {
+  if (!n.allFinite() || std::abs(n.norm() - 1) > 1e-9)
+    return "the normal must have unit length (yours has length " + fmt(n.norm()) + ")";
+  bool turned = false;
+  for (const oracle::ContactNormal& c : normals) {
+    const double bound = 1e-8 * c.spread;
+    if (c.perpendicular_to_direction) {
+      if (std::abs(n.dot(c.direction)) > bound) continue;
+      if (n.dot(d) <= bound * d.norm()) return {};
+      turned = true;
+      continue;
+    }
+    const Vec3 m = c.direction.dot(d) > 0 ? Vec3(-c.direction) : c.direction;  // from B toward A
+    if ((n - m).norm() <= bound) return {};
+    if ((n + m).norm() <= bound) {
+      if (std::abs(m.dot(d)) <= bound * d.norm()) return {};  // d . normal = 0: either sign
+      turned = true;
+    }
+  }
+  if (turned)
+    return "the normal points from B toward A, so that d . normal <= 0 (A closes on B against it); yours points "
+           "the other way";
+  return "the normal is that of the features in contact: the unit normal of the face a vertex meets, or (e x f) / "
+         "|e x f| for two edges; yours is none of those (tolerance 1e-8 |e| |f| / |e x f|)";
+}
+
 }  // namespace
 
 Outcome first_contact_moving_meshes(const MovingMeshes& in, const MeshContact& got, Rules rules) {
@@ -231,6 +259,10 @@ Outcome first_contact_moving_meshes(const MovingMeshes& in, const MeshContact& g
                     "moved by t vb (within ") +
             fmt(reach) + "), and yours is off " + (on_a ? "B" : "A") +
             " (a point found in B's frame moves on by t vb; in A's frame by t va)");
+  const double slack = rules == Rules::exact ? 1e-9 : dt;
+  const auto normals = oracle::contact_normals_by(in.a, in.velocity_a, in.b, in.velocity_b, got.t + slack);
+  if (const std::string wrong = contact_normal_error(got.normal, d, normals); !wrong.empty())
+    return fail(fmt(exact.normal), fmt(got.normal), wrong + "; " + contact_rule(in, exact));
   return decision;
 }
 

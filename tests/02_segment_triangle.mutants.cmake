@@ -73,6 +73,18 @@ labkit_mutant(02 segment_triangle NAME last_contact STEP 7 SAYS "first contact"
   FIND "if (best.hit && t >= best.t) return;  // not earlier"
   REPLACE "if (best.hit && t <= best.t) return;")
 
+# The normal left as the cross product happens to point: half the time from A toward B,
+# so a response would push the meshes into each other.
+labkit_mutant(02 segment_triangle NAME contact_normal_unturned STEP 7 SAYS "from B toward A" "d . normal <= 0"
+  FIND "return unit.dot(d) > 0 ? Vec3(-unit) : unit;"
+  REPLACE "return unit;")
+
+# The classic shortcut: two edges' contact normal taken as the motion's direction. Only
+# e x f is normal to both edges; the motion crosses them at any angle.
+labkit_mutant(02 segment_triangle NAME edge_contact_normal_along_motion STEP 7 SAYS "(e x f) / |e x f|"
+  FIND "const Vec3 normal = edge_pair_normal(p1 - p0, edge.b - edge.a, d);"
+  REPLACE "const Vec3 normal = -d.normalized();")
+
 labkit_mutant(02 segment_triangle NAME crossing_point_edge_tests STEP 8 SAYS "boundary"
   FIND "const double side = d_a > d_b ? 1.0 : -1.0;"
   REPLACE "if (!point_in_triangle_edges(s.point(d_a / (d_a - d_b)), tri)) return {}; const double side = 0;")

@@ -462,17 +462,21 @@ MeshContact run_contact(const MovingMeshes& in) {
   return answerer::first_contact_moving_meshes(in.a, in.velocity_a, in.b, in.velocity_b);
 }
 
-// An example's check: the expected contact, then the judge's rules (exact input).
-auto expect_contact(bool hit, double t, Vec3 point) {
+// An example's check: the judge's rules (exact input), then the expected contact; its
+// normal where only one will do (a contact in one plane may point either way).
+auto expect_contact(bool hit, double t = 0, Vec3 point = Vec3::Zero(), Vec3 normal = Vec3::Zero()) {
   return [=](const MovingMeshes& in) {
     const MeshContact got = run_contact(in);
     const Outcome rules = judge::first_contact_moving_meshes(in, got, Rules::exact);
     if (rules.verdict == Outcome::Verdict::fail) return rules;
-    Expect e("the first contact is the earliest time the moving triangles touch, with the point where they touch then");
+    Expect e(
+        "the first contact is the earliest time the moving triangles touch, with the point where they touch then "
+        "and the contact's unit normal, from B toward A");
     e.equal("hit", got.hit, hit);
     if (hit && got.hit) {
       e.near("t", got.t, t, 1e-12);
       e.near("point", got.point, point, 1e-12);
+      if (normal != Vec3::Zero()) e.near("normal", got.normal, normal, 1e-12);  // else: either sign, the judge's
     }
     return e.outcome();
   };
@@ -483,17 +487,21 @@ auto expect_contact(bool hit, double t, Vec3 point) {
 TEST_CASE(LABKIT_STEP(L02S7) ": worked examples", "[lab02][step7]") {
   constexpr auto q = query::first_contact_moving_meshes;
   check::example(q, "a vertex of A falls on B's face: t = 1/2",
-                 MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 2, 0}));
+                 MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, 0}},
+                 expect_contact(true, 0.5, {1, 2, 0}, {0, 0, 1}));
   check::example(q, "both move: A falls by 2, the floor rises by 2, t = 1/2",
-                 MovingMeshes{spike(), {0, 0, -2}, floor_square(), {0, 0, 2}}, expect_contact(true, 0.5, {1, 2, 1}));
-  check::example(q, "a vertex of B meets A's face: the rising floor lifts into the spike",
-                 MovingMeshes{floor_square(), {0, 0, 4}, spike(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 2, 2}));
-  check::example(q, "edge against edge: crossed triangles, t = 1/2",
-                 MovingMeshes{upright_a(), {0, 0, -2}, upright_b(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 0, 0}));
+                 MovingMeshes{spike(), {0, 0, -2}, floor_square(), {0, 0, 2}},
+                 expect_contact(true, 0.5, {1, 2, 1}, {0, 0, 1}));
+  check::example(
+      q, "a vertex of B meets A's face: the rising floor lifts into the spike; the normal points from B down to A",
+      MovingMeshes{floor_square(), {0, 0, 4}, spike(), {0, 0, 0}}, expect_contact(true, 0.5, {1, 2, 2}, {0, 0, -1}));
+  check::example(q, "edge against edge: crossed triangles, t = 1/2, normal e x f = (0, 0, 16) turned to unit length",
+                 MovingMeshes{upright_a(), {0, 0, -2}, upright_b(), {0, 0, 0}},
+                 expect_contact(true, 0.5, {1, 0, 0}, {0, 0, 1}));
   check::example(q, "stops short: the spike falls only 1.5",
-                 MovingMeshes{spike(), {0, 0, -1.5}, floor_square(), {0, 0, 0}}, expect_contact(false, 0, {0, 0, 0}));
+                 MovingMeshes{spike(), {0, 0, -1.5}, floor_square(), {0, 0, 0}}, expect_contact(false));
   check::example(q, "the same velocity: never closer", MovingMeshes{spike(), {0, 0, -4}, floor_square(), {0, 0, -4}},
-                 expect_contact(false, 0, {0, 0, 0}));
+                 expect_contact(false));
 }
 
 TEST_CASE(LABKIT_STEP(L02S7) ": random cases", "[lab02][step7][oracle]") {
@@ -630,10 +638,10 @@ TEST_CASE(LABKIT_STEP(L02S9) ": worked examples", "[lab02][step9]") {
   // The spike's vertex (1, 1, 2) falls onto the floor's shared diagonal (0,0)-(4,4).
   check::example(q, "a vertex onto the shared diagonal at t = 1/2",
                  MovingMeshes{spike({1, 1, 2}), {0, 0, -4}, floor_square(), {0, 0, 0}},
-                 expect_contact(true, 0.5, {1, 1, 0}));
+                 expect_contact(true, 0.5, {1, 1, 0}, {0, 0, 1}));
   // The contact happens exactly at the end of the frame: closed, it counts.
   check::example(q, "touching exactly at t = 1", MovingMeshes{spike(), {0, 0, -2}, floor_square(), {0, 0, 0}},
-                 expect_contact(true, 1, {1, 2, 0}));
+                 expect_contact(true, 1, {1, 2, 0}, {0, 0, 1}));
   // The end (2, 0, 1) of A's lowest edge lands exactly on B's top edge.
   Mesh b = upright_b();
   b.vertices = {{2, -2, 0}, {2, 2, 0}, {2, 0, -2}};

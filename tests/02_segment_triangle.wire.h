@@ -15,7 +15,7 @@ LABKIT_FIELDS(Barycentric, dropped_axis, alpha, beta)
 LABKIT_FIELDS(SegmentTriangleHit, hit, t, point, barycentric, normal)
 LABKIT_FIELDS(MeshHit, hit, triangle, t, point, barycentric, normal)
 
-LABKIT_FIELDS(MeshContact, hit, t, point)
+LABKIT_FIELDS(MeshContact, hit, t, point, normal)
 
 using MeshHits = std::vector<MeshHit>;
 

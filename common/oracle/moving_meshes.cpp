@@ -129,7 +129,24 @@ MeshContact first_contact_translating(const Mesh& a, const Vec3& va, const Mesh&
     return false;
   });
   if (!best) return {};
-  return {true, rounded(best->t), rounded(best->point), best->kind, best->fa, best->fb, best->approach};
+  MeshContact out{true, rounded(best->t), rounded(best->point), best->kind, best->fa, best->fb, best->approach};
+  // The features' normal: a face's (B's for kind 0, A's for kind 1), or e x f.
+  const auto edge = [](const Mesh& m, const std::array<int, 2>& e) {
+    return exact(m.vertices[std::size_t(e[1])]) - exact(m.vertices[std::size_t(e[0])]);
+  };
+  V n;
+  if (best->kind == 2) {
+    n = CGAL::cross_product(edge(a, mesh_edges(a)[std::size_t(best->fa)]),
+                            edge(b, mesh_edges(b)[std::size_t(best->fb)]));
+  } else {
+    const Epeck::Triangle_3 face =
+        exact(best->kind == 0 ? b.triangle(std::size_t(best->fb)) : a.triangle(std::size_t(best->fa)));
+    n = CGAL::cross_product(face[1] - face[0], face[2] - face[0]);
+  }
+  if (CGAL::is_positive(n * (exact(va) - exact(vb)))) n = -n;
+  const double length = std::sqrt(rounded(n * n));
+  if (length > 0) out.normal = Vec3(rounded(n.x()), rounded(n.y()), rounded(n.z())) / length + Vec3::Zero();  // no -0
+  return out;
 }
 
 bool contact_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, double t) {
@@ -138,6 +155,77 @@ bool contact_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, do
   const FT limit(t);
   candidates(a, va, b, vb, [&](const Exact& c) { return found = c.t <= limit; });
   return found;
+}
+
+namespace {
+
+// The normal of two edges e and f (a face's normal is that of two of its edges), rounded
+// to unit length, with how loosely they fix it; parallel edges give their axis.
+ContactNormal normal_of(const V& e, const V& f) {
+  const V n = CGAL::cross_product(e, f);
+  const double ee = std::sqrt(rounded(e * e)), ff = std::sqrt(rounded(f * f));
+  if (n == CGAL::NULL_VECTOR) {
+    const V axis = e == CGAL::NULL_VECTOR ? f : e;
+    const double length = std::sqrt(rounded(axis * axis));
+    return {Vec3(rounded(axis.x()), rounded(axis.y()), rounded(axis.z())) / length, true, 1.0};
+  }
+  const double nn = std::sqrt(rounded(n * n));
+  return {Vec3(rounded(n.x()), rounded(n.y()), rounded(n.z())) / nn, false, std::max(1.0, ee * ff / nn)};
+}
+
+// Exact: the segment s meets the closed set the segment (p0, p1) sweeps along w, for s
+// and p0 p1 in any position (the swept set may be a parallelogram, a segment or a point).
+bool meets_swept(const Epeck::Segment_3& s, const P& p0, const P& p1, const V& w) {
+  const P corners[4] = {p0, p1, p1 + w, p0 + w};
+  if (!CGAL::collinear(corners[0], corners[1], corners[2]) || !CGAL::collinear(corners[0], corners[2], corners[3])) {
+    const auto meets = [&](const P& x, const P& y, const P& z) {
+      const Epeck::Triangle_3 tri(x, y, z);
+      return !tri.is_degenerate() && CGAL::do_intersect(s, tri);
+    };
+    if (meets(corners[0], corners[1], corners[2]) || meets(corners[0], corners[2], corners[3])) return true;
+  }
+  // Degenerate pieces: the swept set's boundary segments cover what is left.
+  for (int i = 0; i < 4; ++i) {
+    const Epeck::Segment_3 side(corners[i], corners[(i + 1) % 4]);
+    if (side.is_degenerate() ? s.has_on(side.source()) : CGAL::do_intersect(s, side)) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+std::vector<ContactNormal> contact_normals_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, double t) {
+  std::vector<ContactNormal> out;
+  if (!(t >= 0)) return out;
+  const FT limit = CGAL::min(ft(t), FT(1));
+  const V d = exact(va) - exact(vb);
+  const V swept = limit * d;
+  // A vertex of `from` along p -> p + w against each face of `to`.
+  const auto vertices_on_faces = [&](const Mesh& from, const Mesh& to, const V& w) {
+    for (const Vec3& v : from.vertices) {
+      const P p = exact(v);
+      const Epeck::Segment_3 path(p, p + w);
+      for (std::size_t k = 0; k < to.size(); ++k) {
+        const Epeck::Triangle_3 tri = exact(to.triangle(k));
+        if (tri.is_degenerate()) continue;
+        if (path.is_degenerate() ? tri.has_on(p) : CGAL::do_intersect(path, tri))
+          out.push_back(normal_of(tri[1] - tri[0], tri[2] - tri[0]));
+      }
+    }
+  };
+  vertices_on_faces(a, b, swept);
+  vertices_on_faces(b, a, -swept);
+  const auto eb = mesh_edges(b);
+  for (const auto& e : mesh_edges(a)) {
+    const P p0 = exact(a.vertices[std::size_t(e[0])]), p1 = exact(a.vertices[std::size_t(e[1])]);
+    if (p0 == p1) continue;  // a point: its faces' vertices above cover it
+    for (const auto& f : eb) {
+      const Epeck::Segment_3 edge(exact(b.vertices[std::size_t(f[0])]), exact(b.vertices[std::size_t(f[1])]));
+      if (edge.is_degenerate()) continue;
+      if (meets_swept(edge, p0, p1, swept)) out.push_back(normal_of(p1 - p0, edge.to_vector()));
+    }
+  }
+  return out;
 }
 
 bool touch_during_frame_fast(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb) {

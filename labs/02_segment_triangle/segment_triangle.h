@@ -158,8 +158,12 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
 //             p0 ---------- p1
 // The first contact is the smallest such time over the three families (at the first
 // touch of two triangles, a vertex touches a face or an edge touches an edge). Report
-// it, and the contact point in the world at that time (on both meshes as they are
-// then); no contact during [0, 1]: hit = false.
+// it, the contact point in the world at that time (on both meshes as they are then),
+// and the contact's normal, the other half of a contact's description (the direction a
+// response pushes along): the unit normal of the face a vertex meets, or for two edges e
+// and f, (e x f) / |e x f|; for parallel edges, any unit vector perpendicular to both.
+// Its sign: d . normal <= 0, so it points from B toward A (A closes on B against it);
+// either sign where d . normal = 0. No contact during [0, 1]: hit = false.
 //
 // Precondition (not checked: it would cost a triangle-triangle test per pair): the
 // meshes do not touch at t = 0. Checked (std::invalid_argument naming the argument):
@@ -175,10 +179,15 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
 //    face's normal; for two edges e, f, their cross product e x f). A grazing contact
 //    (small c) fixes t only loosely.
 //  - point: within 2 tol + |d| tol / c of both meshes at your t.
+//  - normal: unit length within 1e-9, and within 1e-8 k of the normal of a face or an
+//    edge pair that touches by your t + tol / c, k = |e| |f| / |e x f| (for a face, its
+//    two edges from one vertex): a needle face or nearly parallel edges fix their normal
+//    only loosely. Where several features touch at once, any of their normals will do.
 struct MeshContact {
-  bool hit = false;           // the meshes touch at some t in [0, 1]
-  double t = 0.0;             // the first such time
-  Vec3 point = Vec3::Zero();  // a point where they touch then, in the world
+  bool hit = false;            // the meshes touch at some t in [0, 1]
+  double t = 0.0;              // the first such time
+  Vec3 point = Vec3::Zero();   // a point where they touch then, in the world
+  Vec3 normal = Vec3::Zero();  // the contact's unit normal, from B toward A
 };
 
 MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b, const Vec3& velocity_b);

@@ -557,13 +557,31 @@ std::vector<std::array<int, 2>> edges_of(const Mesh& mesh) {
   return {edges.begin(), edges.end()};
 }
 
-// The earliest contact so far: its time, and its point in the frame it was found in,
-// carried to the world by that frame's own motion at that time.
+// The contact's normal from the direction n of a face's normal or of e x f: unit length,
+// turned to point from B toward A, against A's motion d as seen from B (d . n <= 0).
+Vec3 facing(const Vec3& n, const Vec3& d) {
+  const Vec3 unit = n.normalized();
+  return unit.dot(d) > 0 ? Vec3(-unit) : unit;
+}
+
+// Two edges e and f: e x f is normal to both. Parallel edges have no such cross product;
+// then any direction perpendicular to both will do, and the part of d across them (or, if
+// d runs along them too, any perpendicular) is one.
+Vec3 edge_pair_normal(const Vec3& e, const Vec3& f, const Vec3& d) {
+  const Vec3 n = e.cross(f);
+  if (n != Vec3::Zero()) return facing(n, d);
+  const Vec3 across = d - (d.dot(e) / e.squaredNorm()) * e;
+  if (across != Vec3::Zero()) return facing(across, d);
+  return facing(e.unitOrthogonal(), d);
+}
+
+// The earliest contact so far: its time, its point in the frame it was found in (carried
+// to the world by that frame's own motion at that time), and its normal.
 struct Earliest {
   MeshContact best;
-  void offer(double t, const Vec3& point_in_frame, const Vec3& frame_velocity) {
+  void offer(double t, const Vec3& point_in_frame, const Vec3& frame_velocity, const Vec3& normal) {
     if (best.hit && t >= best.t) return;  // not earlier
-    best = {true, t, point_in_frame + t * frame_velocity};
+    best = {true, t, point_in_frame + t * frame_velocity, normal};
   }
 };
 
@@ -583,13 +601,13 @@ MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, c
   for (const Vec3& p : a.vertices)
     for (std::size_t k = 0; k < b.size(); ++k) {
       const Decision h = decide({p, p + d}, b.triangle(k));
-      if (h.hit) earliest.offer(h.t, p + h.t * d, velocity_b);
+      if (h.hit) earliest.offer(h.t, p + h.t * d, velocity_b, facing(b.triangle(k).normal(), d));
     }
   // 2. Seen from A, B moves by -d: B's vertices against A's faces (the other delta matrix).
   for (const Vec3& q : b.vertices)
     for (std::size_t k = 0; k < a.size(); ++k) {
       const Decision h = decide({q, q - d}, a.triangle(k));
-      if (h.hit) earliest.offer(h.t, q - h.t * d, velocity_a);
+      if (h.hit) earliest.offer(h.t, q - h.t * d, velocity_a, facing(a.triangle(k).normal(), d));
     }
   // 3. An edge p0 p1 of A sweeps the parallelogram p0, p1, p1 + d, p0 + d (the 4D
   //    extrusion of the edge, in 3D): two triangles, against each edge q0 q1 of B. A hit
@@ -602,10 +620,12 @@ MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, c
     const Triangle first{p0, p1, p1 + d}, second{p0, p1 + d, p0 + d};
     for (const auto& [k, l] : edges_b) {
       const Segment edge{b.vertices[std::size_t(k)], b.vertices[std::size_t(l)]};
+      const Vec3 normal = edge_pair_normal(p1 - p0, edge.b - edge.a, d);
       const SegmentTriangleHit h1 = hit_from(decide(edge, first), edge, first);
-      if (h1.hit) earliest.offer(std::clamp(h1.barycentric[2], 0.0, 1.0), h1.point, velocity_b);
+      if (h1.hit) earliest.offer(std::clamp(h1.barycentric[2], 0.0, 1.0), h1.point, velocity_b, normal);
       const SegmentTriangleHit h2 = hit_from(decide(edge, second), edge, second);
-      if (h2.hit) earliest.offer(std::clamp(h2.barycentric[1] + h2.barycentric[2], 0.0, 1.0), h2.point, velocity_b);
+      if (h2.hit)
+        earliest.offer(std::clamp(h2.barycentric[1] + h2.barycentric[2], 0.0, 1.0), h2.point, velocity_b, normal);
     }
   }
   return earliest.best;

@@ -272,6 +272,7 @@ void SegmentTriangleScene::update_contact() {
   step.rows = {{"contact", c ? yes_no(c->hit) : "", yes_no(e.hit)},
                {"t", c && c->hit ? num(c->t) : "", e.hit ? num(e.t) : ""},
                {"point", c && c->hit ? num(c->point) : "", e.hit ? num(e.point) : ""},
+               {"normal", c && c->hit ? num(c->normal) : "", e.hit ? num(e.normal) : ""},
                {"family", "", e.hit ? kinds[e.kind] : ""}};
   verdict_[7] = step.verdict;
   steps.push_back(step);

@@ -146,6 +146,10 @@ void SegmentTriangleScene::draw_contact(Frame& f) const {
     r.point(contact_->point, c, 5);
     r.ring(contact_->point, c, 15, 2.5f);
     r.label(contact_->point, "contact   t = " + num(contact_->t), c, 18, -16);
+    // The normal, from B toward A, drawn a fifth of the scene's size long.
+    const double reach = 0.2 * std::max(1.0, d.norm());
+    r.arrow(contact_->point, contact_->point + reach * contact_->normal, c, 2);
+    r.label(contact_->point + reach * contact_->normal, "n", c);
   }
   if (f.show_exact && e.hit) r.ring(e.point, palette::exact, 9);
 }
