@@ -203,8 +203,10 @@ endfunction()
 # the why of that first failure to hold each SAYS word (the concept the mistake breaks):
 # this is how the kit shows that its tests fail, in the right step, for the mistakes
 # students actually make, and say so in the lab's words. Mutants live beside the
-# lab's tests, in tests/NN_name.mutants.cmake. FIND must name one place in the reference;
-# EVERYWHERE says the mistake is made at every place it names.
+# lab's tests, in tests/NN_name.mutants.cmake.
+#
+include("${CMAKE_CURRENT_LIST_DIR}/MutantAnchor.cmake")  # labkit_mutant_apply
+
 function(labkit_mutant number name)
   # PARSE_ARGV keeps the semicolons of C++ code inside FIND and REPLACE.
   cmake_parse_arguments(PARSE_ARGV 2 M "EVERYWHERE" "NAME;STEP;FILE;FIND;REPLACE" "SAYS")
@@ -213,24 +215,9 @@ function(labkit_mutant number name)
     set(M_FILE ${name}.cpp)
   endif()
   set(source "${PROJECT_SOURCE_DIR}/solutions/${stem}/${M_FILE}")
-  file(READ "${source}" text)
-  string(FIND "${text}" "${M_FIND}" at)
-  if(at EQUAL -1)
-    message(FATAL_ERROR "mutant '${M_NAME}' of lab ${number}: its FIND text no longer appears in "
-                        "solutions/${stem}/${M_FILE}; update tests/${stem}.mutants.cmake")
-  endif()
-  # Exactly one place, unless EVERYWHERE: a FIND text that appears twice by accident would
-  # put the mistake in both.
-  string(LENGTH "${M_FIND}" find_length)
-  math(EXPR after "${at} + ${find_length}")
-  string(SUBSTRING "${text}" ${after} -1 rest)
-  string(FIND "${rest}" "${M_FIND}" again)
-  if(NOT again EQUAL -1 AND NOT M_EVERYWHERE)
-    message(FATAL_ERROR "mutant '${M_NAME}' of lab ${number}: its FIND text appears more than once in "
-                        "solutions/${stem}/${M_FILE}: make it name one place, or add EVERYWHERE "
-                        "(tests/${stem}.mutants.cmake)")
-  endif()
-  string(REPLACE "${M_FIND}" "${M_REPLACE}" mutated "${text}")
+  file(READ "${source}" mutated)
+  set(where "solutions/${stem}/${M_FILE} (tests/${stem}.mutants.cmake)")
+  labkit_mutant_apply(mutated ${M_NAME} "${M_FIND}" "${M_REPLACE}" "${M_EVERYWHERE}" "${where}")
   set(output "${PROJECT_BINARY_DIR}/mutants/${stem}/${M_NAME}.cpp")
   # Rewritten only when it changes, so that a reconfigure does not rebuild every mutant.
   set(old "")

@@ -10,7 +10,7 @@ labkit_mutant(02 segment_triangle NAME distance_not_normalized STEP 1 SAYS "dist
   REPLACE "c.d_a = (segment.a - triangle.v0).dot(triangle.normal());\n  c.d_b = (segment.b - triangle.v0).dot(triangle.normal());")
 
 labkit_mutant(02 segment_triangle NAME strict_edge_test STEP 2 SAYS "closed"
-  FIND "if ((x - from).dot(n.cross(to - from)) < 0) return false;  // strictly outside edge i"
+  FIND "if ((x - from).dot(n.cross(to - from)) < 0) return false;"
   REPLACE "if ((x - from).dot(n.cross(to - from)) <= 0) return false;")
 
 labkit_mutant(02 segment_triangle NAME beta_sign STEP 3 SAYS "beta" "sign"
@@ -18,11 +18,11 @@ labkit_mutant(02 segment_triangle NAME beta_sign STEP 3 SAYS "beta" "sign"
   REPLACE "b.beta = cross(p, e1) / cross(e1, e2);")
 
 labkit_mutant(02 segment_triangle NAME fuzzy_zero_area STEP 4 SAYS "zero area"
-  FIND "if (n == Vec3::Zero()) return {};                             // zero area: no plane, never hit"
+  FIND "if (n == Vec3::Zero()) return {};"
   REPLACE "if (input_tri.normal().isZero()) return {};")
 
 labkit_mutant(02 segment_triangle NAME magic_epsilon STEP 4 SAYS "same side"
-  FIND "if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side"
+  FIND "if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};"
   REPLACE "if ((d_a > 1e-9 && d_b > 1e-9) || (d_a < -1e-9 && d_b < -1e-9)) return {};")
 
 labkit_mutant(02 segment_triangle NAME normal_toward_a STEP 4 SAYS "as wound"
@@ -36,7 +36,7 @@ labkit_mutant(02 segment_triangle NAME weights_on_wrong_vertices STEP 4 SAYS "we
   REPLACE "Vec3(Vec3(v0, v1, v2) / sum)")
 
 labkit_mutant(02 segment_triangle NAME first_found_not_nearest STEP 5 SAYS "smallest t"
-  FIND "if (!d.hit || (best.hit && d.t >= best.t)) continue;  // a miss, or not nearer"
+  FIND "if (!d.hit || (best.hit && d.t >= best.t)) continue;"
   REPLACE "if (!d.hit || best.hit) continue;")
 
 labkit_mutant(02 segment_triangle NAME hits_unsorted STEP 5 SAYS "sorted by t"
@@ -44,8 +44,8 @@ labkit_mutant(02 segment_triangle NAME hits_unsorted STEP 5 SAYS "sorted by t"
   REPLACE "return x.triangle < y.triangle;")
 
 labkit_mutant(02 segment_triangle NAME all_hits_drops_equal_t STEP 5 SAYS "missing" "same t"
-  FIND "  return hits;\n}\n\n// The lecture's delta matrix"
-  REPLACE "  hits.erase(std::unique(hits.begin(), hits.end(), [](const MeshHit& x, const MeshHit& y) { return x.t == y.t; }), hits.end());\n  return hits;\n}\n\n// The lecture's delta matrix")
+  FIND "  return hits;\n}"
+  REPLACE "  hits.erase(std::unique(hits.begin(), hits.end(), [](const MeshHit& x, const MeshHit& y) { return x.t == y.t; }), hits.end());\n  return hits;\n}")
 
 labkit_mutant(02 segment_triangle NAME moving_one_frame STEP 6 SAYS "m1^-1 b"
   FIND "const Segment local{m0.inverse() * segment.a, m1.inverse() * segment.b};"
@@ -66,11 +66,11 @@ labkit_mutant(02 segment_triangle NAME one_delta_matrix STEP 7 SAYS "vertex" "of
   REPLACE "for (const Vec3& q : std::vector<Vec3>{})")
 
 labkit_mutant(02 segment_triangle NAME absolute_motion STEP 7 SAYS "relative motion"
-  FIND "const Vec3 d = velocity_a - velocity_b;  // relative, never absolute: B moves too"
+  FIND "const Vec3 d = velocity_a - velocity_b;"
   REPLACE "const Vec3 d = velocity_a;")
 
 labkit_mutant(02 segment_triangle NAME last_contact STEP 7 SAYS "first contact"
-  FIND "if (best.hit && t >= best.t) return;  // not earlier"
+  FIND "if (best.hit && t >= best.t) return;"
   REPLACE "if (best.hit && t <= best.t) return;")
 
 # The normal left as the cross product happens to point: half the time from A toward B,
@@ -97,5 +97,5 @@ labkit_mutant(02 segment_triangle NAME coplanar_is_a_miss STEP 8 SAYS "in the pl
 # as if the next frame would see it (it starts with the meshes touching, which no
 # frame then reports).
 labkit_mutant(02 segment_triangle NAME frame_end_excluded STEP 9 SAYS "first touch" "t = 1"
-  FIND "if (best.hit && t >= best.t) return;  // not earlier"
+  FIND "if (best.hit && t >= best.t) return;"
   REPLACE "if (t >= 1 || (best.hit && t >= best.t)) return;")

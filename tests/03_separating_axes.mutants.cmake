@@ -6,7 +6,7 @@ labkit_mutant(03 separating_axes NAME radius_without_abs STEP 1 SAYS "absolute v
   REPLACE "p.radius += box.half_extents[k] * box.axes.col(k).dot(axis);")
 
 labkit_mutant(03 separating_axes NAME touching_intervals_separate STEP 1 SAYS "touching" "strict"
-  FIND "return std::abs(s) > r;  // a zero axis gives 0 > 0: never separated"
+  FIND "return std::abs(s) > r;"
   REPLACE "return std::abs(s) >= r;")
 
 labkit_mutant(03 separating_axes NAME edge_axis_normalized STEP 2 SAYS "not normalised"
@@ -110,5 +110,5 @@ labkit_mutant(03 separating_axes NAME touching_faces_apart STEP 6 SAYS "only tou
 # Step 7: an axis along which B does not move tested with >= for >: boxes sliding along
 # each other while touching come out apart for the whole frame.
 labkit_mutant(03 separating_axes NAME sliding_contact_apart STEP 7 SAYS "does not move" "strictly"
-  FIND "if (separates(x)) return {};  // apart on this axis at every time: never"
+  FIND "if (separates(x)) return {};"
   REPLACE "if (x.length2 > 0 && std::abs(x.s) >= x.r) return {};")

@@ -46,7 +46,7 @@ labkit_mutant(05 sphere_sweeps NAME parallel_in_floating_point STEP 3 SAYS "near
 
 # Step 4: a plane whose normal is not unit length, used as if it were.
 labkit_mutant(05 sphere_sweeps NAME unnormalised_normal STEP 4 SAYS "is n unit"
-  FIND "  const Plane plane = scaled(given);\n  const double f0 = plane.value(sphere.center), g = plane.normal.dot(velocity);\n  const double nn = plane.normal.squaredNorm(), r = sphere.radius;\n  if (square(f0) <= square(r) * nn) return overlapping();  // touching or cutting it now\n  const PlaneApproach a = approach_plane(f0, g, r * std::sqrt(nn), square(r) * nn, duration);"
+  FIND "  const Plane plane = scaled(given);\n  const double f0 = plane.value(sphere.center), g = plane.normal.dot(velocity);\n  const double nn = plane.normal.squaredNorm(), r = sphere.radius;\n  if (square(f0) <= square(r) * nn) return overlapping();\n  const PlaneApproach a = approach_plane(f0, g, r * std::sqrt(nn), square(r) * nn, duration);"
   REPLACE "  const Plane plane = given;\n  const double f0 = plane.value(sphere.center), g = plane.normal.dot(velocity);\n  const double nn = plane.normal.squaredNorm(), r = sphere.radius;\n  if (std::abs(f0) <= r) return overlapping();\n  const PlaneApproach a = approach_plane(f0, g, r, square(r), duration);")
 
 # Step 4: a one-sided plane: only the front side is ever approached.
@@ -77,17 +77,17 @@ labkit_mutant(05 sphere_sweeps NAME sphere_later_root STEP 5 SAYS "later root"
 
 # Step 5: forgetting that spheres moving apart never meet (a negative root is reported).
 labkit_mutant(05 sphere_sweeps NAME moving_apart_forgotten STEP 5 SAYS "move apart"
-  FIND "if (b >= 0) return {};  // moving apart or sideways: the gap only grows"
+  FIND "if (b >= 0) return {};"
   REPLACE "")
 
 # Step 5: an exact graze (b^2 = ac) dismissed as a miss.
 labkit_mutant(05 sphere_sweeps NAME graze_is_a_miss STEP 5 SAYS "graze"
-  FIND "if (disc < 0) return {};  // the closest approach misses"
+  FIND "if (disc < 0) return {};"
   REPLACE "if (disc <= 0) return {};")
 
 # Step 5: touching at t = 0 not counted as overlapping (a strict comparison).
 labkit_mutant(05 sphere_sweeps NAME touching_not_overlapping STEP 5 SAYS "touching" "overlapping"
-  FIND "if (c <= 0) return overlapping();  // touching or overlapping at t = 0"
+  FIND "if (c <= 0) return overlapping();"
   REPLACE "if (c < 0) return overlapping();")
 
 # Step 6: the grown capsule without its caps: only the side's root (and the fallback).
@@ -97,8 +97,8 @@ labkit_mutant(05 sphere_sweeps NAME forgotten_caps STEP 6 SAYS "caps"
 
 # Step 6: the later root of the side (when the centre leaves the grown capsule).
 labkit_mutant(05 sphere_sweeps NAME capsule_later_root STEP 6 SAYS "later root"
-  FIND "  const double t = c / (-b + std::sqrt(disc));\n  // Clip to the slab"
-  REPLACE "  const double t = (-b + std::sqrt(disc)) / a;\n  // Clip to the slab")
+  FIND "  const double t = c / (-b + std::sqrt(disc));"
+  REPLACE "  const double t = (-b + std::sqrt(disc)) / a;")
 
 # Step 6: the infinite cylinder's root taken without clipping it to the slab.
 labkit_mutant(05 sphere_sweeps NAME unclipped_cylinder STEP 6 SAYS "slab"

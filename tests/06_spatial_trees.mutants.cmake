@@ -1,3 +1,4 @@
+set(LABKIT_UNANCHORED_MUTANTS ON)  # TRANSITION
 # Lab 06's classic mistakes (handouts/06_spatial_trees.md); each must fail its step first,
 # and that failure's why must say the words after SAYS (the concept, not a field).
 
@@ -145,3 +146,5 @@ labkit_mutant(06 spatial_trees NAME balls_tested_privately STEP 5 SAYS "given_ba
 labkit_mutant(06 spatial_trees NAME ends_compared_privately STEP 6 SAYS "only with compare_ends"
   FIND "  const int c = compare_ends(a, b);"
   REPLACE "  const int c = (a.value > b.value) - (a.value < b.value);")
+
+set(LABKIT_UNANCHORED_MUTANTS OFF)

@@ -1,3 +1,4 @@
+set(LABKIT_UNANCHORED_MUTANTS ON)  # TRANSITION
 # Lab 07's classic mistakes (handouts/07_particles.md); each must fail its step first, and
 # its first failure's why must say the SAYS words (the concept, not a field's name).
 
@@ -100,3 +101,5 @@ labkit_mutant(07 particles NAME hit_plane_not_strict STEP 7 SAYS "strictly in fr
 labkit_mutant(07 particles NAME settles_off_last_only STEP 8 SAYS "crease" "behind"
   FIND "keep[i] =\n        scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));"
   REPLACE "keep[i] = last.hit && last.plane == int(i);")
+
+set(LABKIT_UNANCHORED_MUTANTS OFF)

@@ -49,6 +49,7 @@ void require_frustum(const Frustum& f, const char* query) {
     require_plane(f.planes[std::size_t(k)], query, "frustum.planes[" + std::to_string(k) + "] (" + names[k] + ")");
 }
 
+// mutant: magic_epsilon
 Side side_of(double value) { return value > 0 ? Side::in : (value < 0 ? Side::out : Side::on); }
 
 //   Derivation. A point x of the triangle's plane has homogeneous barycentric weights
@@ -99,6 +100,7 @@ Corner cut(const Corner& p, const Corner& q, int m, const std::array<Vec3, 6>& d
   c.planes = 1u << m;
   if (const unsigned common = p.edges & q.edges) {
     const int a = common & 1u ? 0 : (common & 2u ? 1 : 2), b = (a + 1) % 3;
+    // mutant: cut_t_from_wrong_end
     c.w[b] = d[std::size_t(m)][a];
     c.w[a] = -d[std::size_t(m)][b];
     c.edges = 1u << a;
@@ -136,12 +138,15 @@ Polygon clip_polygon(const Triangle& t, const Plane* planes, int count) {
     if (d[std::size_t(k)] == Vec3::Zero()) continue;
 
     Side sides[Polygon::capacity];
+    // mutant: classify_rounded_points
     for (int i = 0; i < polygon.size; ++i) sides[i] = side_of(polygon.corner[std::size_t(i)].w.dot(d[std::size_t(k)]));
     Polygon next;
     for (int i = 0; i < polygon.size; ++i) {
+      // mutant: closing_side_not_cut
       const int j = (i + 1) % polygon.size;
       Corner p = polygon.corner[std::size_t(i)];
       if (sides[i] == Side::on) p.planes |= 1u << k;  // the polygon may now have a side along plane k
+      // mutant: strict_keep
       if (sides[i] != Side::out) next.add(p);
       if ((sides[i] == Side::in && sides[j] == Side::out) || (sides[i] == Side::out && sides[j] == Side::in)) {
         const Corner c = cut(p, polygon.corner[std::size_t(j)], k, d);
@@ -165,6 +170,7 @@ std::vector<Triangle> fan(const Polygon& polygon, const Triangle& t) {
   Vec3 previous = point(1);
   for (int i = 2; i < polygon.size; ++i) {
     const Vec3 current = point(i);
+    // mutant: winding_lost
     out.push_back({first, previous, current});
     previous = current;
   }
@@ -176,6 +182,7 @@ std::vector<Triangle> fan(const Polygon& polygon, const Triangle& t) {
 double signed_distance(const Plane& plane, const Vec3& x) {
   require_plane(plane, "signed_distance", "plane");
   require_point(x, "signed_distance", "x");
+  // mutant: distance_not_normalized
   return plane.value(x) / plane.normal.norm();
 }
 
@@ -216,9 +223,11 @@ Frustum frustum_from_camera(const Camera& camera) {
   const Vec3 f = camera.forward.normalized();
   const Vec3 r = f.cross(camera.up).normalized();
   const Vec3 u = r.cross(f);
+  // mutant: full_angle_tangent
   const double ty = std::tan(camera.fov_y / 2);
   const double tx = camera.aspect * ty;
   const auto through = [](const Vec3& normal, const Vec3& point) {
+    // mutant: outward_normals
     const Vec3 n = normal.normalized();
     return Plane{n, -n.dot(point)};
   };
@@ -240,11 +249,13 @@ Frustum frustum_from_matrix(const Mat4& view_projection) {
   static const char* names[6] = {"left r3 + r0", "right r3 - r0", "bottom r3 + r1",
                                  "top r3 - r1",  "near r3 + r2",  "far r3 - r2"};
   const auto plane = [&](int row, double sign) {
+    // mutant: columns_not_rows
     const Vec4 c = (view_projection.row(3) + sign * view_projection.row(row)).transpose();
     const double length = c.head<3>().norm();
     require(length > 0, "frustum_from_matrix",
             std::string("view_projection: the ") + names[2 * row + (sign < 0)] +
                 " plane's normal (a, b, c) must be non-zero, got (0, 0, 0)");
+    // mutant: matrix_planes_not_normalized
     return Plane{c.head<3>() / length, c[3] / length};
   };
   Frustum frustum;
@@ -260,6 +271,7 @@ Frustum frustum_from_matrix(const Mat4& view_projection) {
 std::vector<Triangle> clip_triangle(const Triangle& triangle, const Frustum& frustum) {
   require_triangle(triangle, "clip_triangle");
   require_frustum(frustum, "clip_triangle");
+  // mutant: side_planes_only
   return fan(clip_polygon(triangle, frustum.planes.data(), 6), triangle);
 }
 
@@ -297,6 +309,7 @@ ClippedMesh clip_mesh(const ColoredMesh& in, const Frustum& frustum) {
       }
       index[i] = int(out.mesh.vertices.size());
       out.mesh.vertices.push_back(blend(c, t.v0, t.v1, t.v2));
+      // mutants: colour_from_wrong_vertices, colour_t_from_wrong_end, new_vertex_without_colour
       out.colors.push_back(
           blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])], in.colors[std::size_t(face[2])]));
     }

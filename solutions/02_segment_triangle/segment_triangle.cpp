@@ -271,10 +271,13 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
   const Vec3 p0 = tri.v0 - s.a, p1 = tri.v1 - s.a, p2 = tri.v2 - s.a;
   const Vec3 direction = s.b - s.a;
   const Vec3 a_to_v = s.a - tri.v0, b_to_v = s.b - tri.v0;
-  const double d_a = a_to_v.dot(n);                             // (a - v0) . n
-  const double d_b = b_to_v.dot(n);                             // (b - v0) . n
+  const double d_a = a_to_v.dot(n);  // (a - v0) . n
+  const double d_b = b_to_v.dot(n);  // (b - v0) . n
+  // mutant: magic_epsilon
   if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side
-  if (n == Vec3::Zero()) return {};                             // zero area: no plane, never hit
+  // mutant: fuzzy_zero_area
+  if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit
+  // mutant: coplanar_is_a_miss
   if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);
 
   // A segment in the plane up to rounding: its volumes below are noise, in 2D.
@@ -299,6 +302,7 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
     return {true, t, n, Vec3::Zero()};
   }
 
+  // mutant: crossing_point_edge_tests
   const double side = d_a > d_b ? 1.0 : -1.0;
   const Vec3 m = direction.cross(p0);
   const double v0 = m.dot(p1);
@@ -313,6 +317,7 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
   // good to 1e-11 while the sum is at least 1e-5 |b - a| |p|^2; a segment closer to
   // parallel than that leaves the weights to be measured on the point.
   const bool steep = sum * sum >= 1e-10 * direction.squaredNorm() * reach * reach;
+  // mutant: weights_on_wrong_vertices
   return {true, d_a / (d_a - d_b), n, steep ? Vec3(Vec3(v1, v2, v0) / sum) : Vec3(Vec3::Zero())};
 }
 
@@ -330,6 +335,7 @@ SegmentTriangleHit hit_from(const Decision& d, const Segment& s, const Triangle&
     const Barycentric b = barycentric(h.point, tri);
     h.barycentric = Vec3(1 - b.alpha - b.beta, b.alpha, b.beta);
   }
+  // mutant: normal_toward_a
   h.normal = d.n.normalized();
   return h;
 }
@@ -403,6 +409,7 @@ PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
   const Vec3 unit = n / length;
   PlaneCrossing c;
   const double d_a = (s.a - tri.v0).dot(unit), d_b = (s.b - tri.v0).dot(unit);
+  // mutant: distance_not_normalized
   c.d_a = scale.out(d_a);
   c.d_b = scale.out(d_b);
   // Both ends strictly on one side: no crossing. Both on the plane: no single point.
@@ -410,6 +417,7 @@ PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
   if (d_a == 0 && d_b == 0) return c;
   c.crosses = true;
   // d_a and d_b have opposite signs (or one is 0): d_a - d_b never cancels.
+  // mutant: crossing_t_sign
   c.t = d_a / (d_a - d_b);
   c.point = (d_a * segment.b - d_b * segment.a) / (d_a - d_b);
   return c;
@@ -427,6 +435,7 @@ bool point_in_triangle_edges(const Vec3& point, const Triangle& input) {
     const Vec3& from = triangle[i];
     const Vec3& to = triangle[(i + 1) % 3];
     // n x (to - from) lies in the plane and points into the triangle.
+    // mutant: strict_edge_test
     if ((x - from).dot(n.cross(to - from)) < 0) return false;  // strictly outside edge i
   }
   return true;
@@ -453,6 +462,7 @@ Barycentric barycentric(const Vec3& point, const Triangle& input) {
   // misses p by the rounding times the aspect ratio. Projecting what alpha leaves onto
   // e2 instead keeps that residual at the rounding of p itself, however thin the
   // triangle (the weights still describe x, which is what they are for).
+  // mutant: beta_sign
   b.beta = (p - b.alpha * e1).dot(e2) / e2.squaredNorm();
   return b;
 }
@@ -497,6 +507,7 @@ MeshHit first_hit(const Segment& segment, const Mesh& mesh) {
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const Triangle tri = mesh.triangle(i);
     const Decision d = decide(segment, tri);
+    // mutant: first_found_not_nearest
     if (!d.hit || (best.hit && d.t >= best.t)) continue;  // a miss, or not nearer
     best = mesh_hit_from(hit_from(d, segment, tri), int(i));
   }
@@ -521,7 +532,9 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
     if (d.hit) hits.push_back(mesh_hit_from(hit_from(d, segment, tri), int(i)));
   }
   std::sort(hits.begin(), hits.end(),
+            // mutant: hits_unsorted
             [](const MeshHit& x, const MeshHit& y) { return x.t != y.t ? x.t < y.t : x.triangle < y.triangle; });
+  // mutant: all_hits_drops_equal_t
   return hits;
 }
 
@@ -534,10 +547,12 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
   require("first_hit_moving", mesh);
   require_rigid("first_hit_moving", "m0", m0);
   require_rigid("first_hit_moving", "m1", m1);
+  // mutant: moving_one_frame
   const Segment local{m0.inverse() * segment.a, m1.inverse() * segment.b};
   MeshHit hit = first_hit(local, mesh);
   if (!hit.hit) return hit;
   hit.point = m1 * hit.point;
+  // mutant: normal_moved_like_a_point
   hit.normal = m1.linear() * hit.normal;
   return hit;
 }
@@ -561,6 +576,7 @@ std::vector<std::array<int, 2>> edges_of(const Mesh& mesh) {
 // turned to point from B toward A, against A's motion d as seen from B (d . n <= 0).
 Vec3 facing(const Vec3& n, const Vec3& d) {
   const Vec3 unit = n.normalized();
+  // mutant: contact_normal_unturned
   return unit.dot(d) > 0 ? Vec3(-unit) : unit;
 }
 
@@ -580,6 +596,7 @@ Vec3 edge_pair_normal(const Vec3& e, const Vec3& f, const Vec3& d) {
 struct Earliest {
   MeshContact best;
   void offer(double t, const Vec3& point_in_frame, const Vec3& frame_velocity, const Vec3& normal) {
+    // mutants: last_contact, frame_end_excluded
     if (best.hit && t >= best.t) return;  // not earlier
     best = {true, t, point_in_frame + t * frame_velocity, normal};
   }
@@ -595,6 +612,7 @@ MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, c
   require("first_contact_moving_meshes", b);
   require_finite("first_contact_moving_meshes", "velocity_a", velocity_a);
   require_finite("first_contact_moving_meshes", "velocity_b", velocity_b);
+  // mutant: absolute_motion
   const Vec3 d = velocity_a - velocity_b;  // relative, never absolute: B moves too
   Earliest earliest;
   // 1. A vertex p of A travels p -> p + d past B's faces; the point is in B's frame.
@@ -604,6 +622,7 @@ MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, c
       if (h.hit) earliest.offer(h.t, p + h.t * d, velocity_b, facing(b.triangle(k).normal(), d));
     }
   // 2. Seen from A, B moves by -d: B's vertices against A's faces (the other delta matrix).
+  // mutant: one_delta_matrix
   for (const Vec3& q : b.vertices)
     for (std::size_t k = 0; k < a.size(); ++k) {
       const Decision h = decide({q, q - d}, a.triangle(k));
@@ -614,12 +633,14 @@ MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, c
   //    point w0 p0 + w1 p1 + w2 (p1 + d) is reached at t = w2 (the weight of the moved
   //    corner); on the second triangle (p0, p1 + d, p0 + d) at t = w1 + w2.
   const auto edges_b = edges_of(b);
+  // mutant: vertex_face_only
   for (const auto& [i, j] : edges_of(a)) {
     const Vec3& p0 = a.vertices[std::size_t(i)];
     const Vec3& p1 = a.vertices[std::size_t(j)];
     const Triangle first{p0, p1, p1 + d}, second{p0, p1 + d, p0 + d};
     for (const auto& [k, l] : edges_b) {
       const Segment edge{b.vertices[std::size_t(k)], b.vertices[std::size_t(l)]};
+      // mutant: edge_contact_normal_along_motion
       const Vec3 normal = edge_pair_normal(p1 - p0, edge.b - edge.a, d);
       const SegmentTriangleHit h1 = hit_from(decide(edge, first), edge, first);
       if (h1.hit) earliest.offer(std::clamp(h1.barycentric[2], 0.0, 1.0), h1.point, velocity_b, normal);

@@ -108,6 +108,7 @@ struct Pair {
 
   Pair(const Box& box_a, const Box& box_b, const Vec3& velocity)
       : R(box_a.axes.transpose() * box_b.axes),
+        // mutant: offset_not_in_a_frame
         t(box_a.axes.transpose() * (box_b.center - box_a.center)),
         w(box_a.axes.transpose() * velocity),
         a(box_a.half_extents),
@@ -125,6 +126,7 @@ struct Pair {
     AxisTest x;
     x.s = t[i];
     x.ds = w[i];
+    // mutant: epsilon_guard
     x.r = a[i] + b[0] * std::abs(R(i, 0)) + b[1] * std::abs(R(i, 1)) + b[2] * std::abs(R(i, 2));
     x.local = Vec3::Unit(i);
     return x;
@@ -158,6 +160,7 @@ struct Pair {
     AxisTest x;
     x.s = t[l] * R(k, j) - t[k] * R(l, j);
     x.ds = w[l] * R(k, j) - w[k] * R(l, j);
+    // mutant: textbook_radius
     x.r = a[k] * std::abs(R(l, j)) + a[l] * std::abs(R(k, j)) + b[m] * std::abs(C(i, n)) + b[n] * std::abs(C(i, m));
     x.length2 = R(k, j) * R(k, j) + R(l, j) * R(l, j);
     x.local[i] = 0.0;
@@ -174,6 +177,7 @@ struct Pair {
 };
 
 // The strict test: touching projections (|s| == r) do not separate.
+// mutants: touching_boxes_separate, touching_faces_apart
 bool separates(const AxisTest& x) { return std::abs(x.s) > x.r; }
 
 // The unit axis in the world, pointing from A toward B, and the depth along it.
@@ -181,7 +185,9 @@ void describe_axis(BoxContact& c, const AxisTest& x, int index, const Box& a) {
   const double length = std::sqrt(x.length2);
   c.axis_index = index;
   c.axis = a.axes * x.local / length;
+  // mutant: axis_not_toward_b
   if (x.s < 0) c.axis = -c.axis;
+  // mutant: depth_not_normalized
   c.depth = (x.r - std::abs(x.s)) / length;
 }
 
@@ -193,6 +199,7 @@ Projection project_box(const Box& box, const Vec3& axis) {
   Projection p;
   p.center = box.center.dot(axis);
   // The corner farthest along L takes, on each box axis, the side where A_k . L >= 0.
+  // mutant: radius_without_abs
   for (int k = 0; k < 3; ++k) p.radius += box.half_extents[k] * std::abs(box.axes.col(k).dot(axis));
   return p;
 }
@@ -203,6 +210,7 @@ bool separated_on_axis(const Box& a, const Box& b, const Vec3& axis) {
   require_finite("separated_on_axis", "axis", axis);
   const double s = (b.center - a.center).dot(axis);
   const double r = project_box(a, axis).radius + project_box(b, axis).radius;
+  // mutant: touching_intervals_separate
   return std::abs(s) > r;  // a zero axis gives 0 > 0: never separated
 }
 
@@ -211,8 +219,10 @@ Vec3 box_axis(const Box& a, const Box& b, int index) {
   require_box("box_axis", "b", b);
   if (index < 0 || index > 14) reject("box_axis", "index", "must be 0 to 14", std::to_string(index));
   if (index < 3) return a.axes.col(index);
+  // mutant: b_axis_from_a_row
   if (index < 6) return b.axes.col(index - 3);
   const int i = (index - 6) / 3, j = (index - 6) % 3;
+  // mutant: edge_axis_normalized
   return a.axes.col(i).cross(b.axes.col(j));
 }
 
@@ -225,6 +235,7 @@ bool test_boxes(const Box& a, const Box& b) {
     if (separates(p.face_a(i))) return false;
   for (int j = 0; j < 3; ++j)
     if (separates(p.face_b(j))) return false;
+  // mutant: face_axes_only
   p.cofactors();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -249,6 +260,7 @@ BoxContact find_boxes(const Box& a, const Box& b) {
     }
     if (x.length2 < kShortAxis2) continue;  // nearly parallel edges: direction too uncertain
     const double depth = (x.r - std::abs(x.s)) / std::sqrt(x.length2);
+    // mutant: deepest_axis
     if (contact.axis_index < 0 || depth < least) {
       least = depth;
       describe_axis(contact, x, index, a);
@@ -274,11 +286,13 @@ namespace {
 // volumes of t's vertices against that plane, all non-zero and not all of one sign.
 std::pair<double, double> interval_on_line(const Triangle& t, const double d[3], int k) {
   // p: the vertex whose side the other two do not share.
+  // mutant: ratio_from_wrong_vertex
   const int p = (d[0] > 0) == (d[1] > 0) ? 2 : ((d[0] > 0) == (d[2] > 0) ? 1 : 0);
   const int q = next(p), r = after_next(p);
   // Similar triangles: the crossing splits edge p q in the ratio d_p : -d_q.
   const double end_q = t[p][k] + (t[q][k] - t[p][k]) * (d[p] / (d[p] - d[q]));
   const double end_r = t[p][k] + (t[r][k] - t[p][k]) * (d[p] / (d[p] - d[r]));
+  // mutant: intervals_not_sorted
   return {std::min(end_q, end_r), std::max(end_q, end_r)};  // the ends come in either order
 }
 
@@ -303,6 +317,7 @@ LineIntervals triangles_by_intervals(const Triangle& t0, const Triangle& t1) {
   const Vec3 m = t0.normal().cross(t1.normal()).cwiseAbs();          // |D_k|, D = n0 x n1
   // The coordinate that varies most along the line (never one where D_k = 0, which
   // would read every point of the line as the same number).
+  // mutant: line_on_smallest_coordinate
   out.axis = m.x() >= m.y() && m.x() >= m.z() ? 0 : (m.y() >= m.z() ? 1 : 2);
   out.crossing = true;
   std::tie(out.low0, out.high0) = interval_on_line(t0, d0, out.axis);
@@ -375,10 +390,12 @@ struct Sides {
 };
 
 Sides sides(const Triangle& t, const Triangle& of) {
+  // mutant: needle_normal_at_any_vertex
   const Plane3 plane = plane_of(t);
   Sides s;
   for (int i = 0; i < 3; ++i) {
     const double d = (of[i] - plane.at).dot(plane.n);
+    // mutant: coplanar_only_when_exactly_zero
     const bool in_plane = std::abs(d) <= 4e-15 * (of[i] - plane.at).norm() * plane.edges;
     s.sign[i] = in_plane ? 0 : sign(d);
   }
@@ -441,6 +458,7 @@ bool test_triangles(const Triangle& t0, const Triangle& t1) {
   if (one_side(s1)) return false;  // T1 lies strictly on one side of T0's plane
   const Sides s0 = sides(t1, t0);  // T0's vertices against T1's plane
   if (one_side(s0)) return false;
+  // mutant: coplanar_is_a_miss
   if (s1.coplanar || s0.coplanar) return coplanar_triangles_intersect(t0, t1);
   Triangle a = t0, b = t1;
   const bool flip_b = canonical(a, s0);  // a's vertex 0 above b's plane
@@ -448,6 +466,7 @@ bool test_triangles(const Triangle& t0, const Triangle& t1) {
   if (flip_b) std::swap(b.v1, b.v2);  // swapping b's q and r flips b's plane
   if (flip_a) std::swap(a.v1, a.v2);
   // The two segments on L overlap: T1's starts before T0's ends, and ends after it starts.
+  // mutant: interval_ends_strict
   return orient(a.v0, a.v1, b.v0, b.v1) <= 0 && orient(a.v0, a.v2, b.v2, b.v0) <= 0;
 }
 
@@ -472,11 +491,14 @@ ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Bo
     // No motion along this axis, or less over the whole duration than the rounding of s
     // and r (then the times below would be rounding noise): a static test.
     const double noise = 4e-15 * size * std::sqrt(x.length2);
+    // mutant: times_from_rounding_noise
     if (std::abs(x.ds) * duration <= noise) {
+      // mutant: sliding_contact_apart
       if (separates(x)) return {};  // apart on this axis at every time: never
       continue;                     // overlapping on it at every time: no constraint
     }
     double enter = (-x.r - x.s) / x.ds, leave = (x.r - x.s) / x.ds;
+    // mutant: enter_leave_not_swapped
     if (x.ds < 0) std::swap(enter, leave);
     const double error = noise / std::abs(x.ds) + 4e-15 * std::max(std::abs(enter), std::abs(leave));
     if (enter > first) first = enter, first_error = error;
@@ -492,6 +514,7 @@ ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Bo
     // through each other touch for a single instant, the enter time of one axis equal
     // to the leave time of another, and rounding may put the two in either order. A
     // wider gap between them than their errors: they never touch.
+    // mutant: an_instant_is_no_contact
     if (first - last > first_error + last_error) return {};
     first = last = std::clamp(0.5 * (first + last), 0.0, duration);
   }
@@ -518,6 +541,7 @@ bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const
     const double s = p.t[k] * p.w[l] - p.t[l] * p.w[k];
     double r = p.a[k] * std::abs(p.w[l]) + p.a[l] * std::abs(p.w[k]);
     for (int m = 0; m < 3; ++m) r += p.b[m] * std::abs(p.R(k, m) * p.w[l] - p.R(l, m) * p.w[k]);
+    // mutant: no_motion_axes
     if (std::abs(s) > r) return false;
   }
   // W x B_j, in B's frame w_B x e_j, with w_B = R^T w and t_B = R^T t. Now B's radius
@@ -528,6 +552,7 @@ bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const
     const double s = tb[k] * wb[l] - tb[l] * wb[k];
     double r = p.b[k] * std::abs(wb[l]) + p.b[l] * std::abs(wb[k]);
     for (int m = 0; m < 3; ++m) r += p.a[m] * std::abs(p.R(m, k) * wb[l] - p.R(m, l) * wb[k]);
+    // mutant: no_motion_axes
     if (std::abs(s) > r) return false;
   }
   return true;

@@ -111,6 +111,7 @@ double squared_distance(const Box& box, const Vec3& p) {
   const Vec3 d = p - box.center;
   double sum = 0.0;
   for (int k = 0; k < 3; ++k) {
+    // mutant: clamp_in_world_axes
     const double excess = std::abs(d.dot(box.axes.col(k))) - box.half_extents[k];
     if (excess > 0) sum += excess * excess;  // outside the slab of axis k
   }
@@ -157,14 +158,17 @@ TimeOfImpact no_hit(double t1, int steps) {
 TimeOfImpact halve(const MovingPair& pair, double lo, double hi, double tolerance) {
   TimeOfImpact r;
   r.hit = true;
+  // mutants: one_halving_too_many, halves_to_zero
   while (hi - lo > tolerance) {
     const double mid = lo + 0.5 * (hi - lo);
     ++r.iterations;
+    // mutant: keeps_the_wrong_half
     if (overlap_at(pair, mid))
       hi = mid;  // the contact began at or before mid: look back
     else
       lo = mid;  // still clear at mid: look forward
   }
+  // mutant: returns_the_overlapping_end
   r.t = lo;
   r.t_contact = hi;
   return r;
@@ -177,6 +181,7 @@ TimeOfImpact halve(const MovingPair& pair, double lo, double hi, double toleranc
 Sphere placed(const Sphere& sphere, const RigidTransform& pose) { return {pose * sphere.center, sphere.radius}; }
 
 Box placed(const Box& box, const RigidTransform& pose) {
+  // mutant: axes_not_turned
   return {pose * box.center, pose.linear() * box.axes, box.half_extents};
 }
 
@@ -186,6 +191,7 @@ bool overlap(const Sphere& a, const Sphere& b) {
   // |c_a - c_b| <= r_a + r_b, squared: both sides are non-negative, so squaring keeps
   // the order and the equality (touching) exactly.
   const double reach = a.radius + b.radius;
+  // mutant: touching_is_clear
   return (a.center - b.center).squaredNorm() <= reach * reach;
 }
 
@@ -196,6 +202,7 @@ Vec3 closest_point(const Box& box, const Vec3& p) {
   Vec3 q = box.center;
   for (int k = 0; k < 3; ++k) {
     const double h = box.half_extents[k];
+    // mutant: closest_point_left_local
     q += std::clamp(d.dot(box.axes.col(k)), -h, h) * box.axes.col(k);
   }
   return q;
@@ -204,6 +211,7 @@ Vec3 closest_point(const Box& box, const Vec3& p) {
 bool overlap(const Sphere& a, const Box& b) {
   require_body("overlap", "a", a);
   require_body("overlap", "b", b);
+  // mutants: touching_a_box_is_clear, magic_epsilon
   return squared_distance(b, a.center) <= a.radius * a.radius;
 }
 
@@ -222,6 +230,7 @@ bool overlap_at(const MovingPair& pair, double t) {
 TimeOfImpact bisect(const MovingPair& pair, double t0, double t1, double tolerance) {
   require_pair("bisect", pair);
   require_times("bisect", t0, t1, tolerance);
+  // mutant: start_assumed_clear
   if (overlap_at(pair, t0)) return overlapping_at_start(t0);
   if (!overlap_at(pair, t1)) return no_hit(t1, 0);  // clear at both ends: nothing seen
   return halve(pair, t0, t1, tolerance);
@@ -231,6 +240,7 @@ TimeOfImpact bisect(const MovingPair& pair, double t0, double t1, double toleran
 
 double smallest_size(const Shape& shape) {
   require_body("smallest_size", "shape", shape);
+  // mutant: sphere_size_is_radius
   if (shape.kind == Shape::Kind::sphere) return 2 * shape.sphere.radius;
   return 2 * shape.box.half_extents.minCoeff();
 }
@@ -247,6 +257,7 @@ int substeps_for(double closing_speed, double step, double smallest_size) {
   if (smallest_size == 0) return 0;  // a zero size can slip between any two samples
   const double ratio = closing_speed * step / smallest_size;
   if (!(ratio < kMaxSubsteps)) return 0;  // too many sub-steps (or not a number)
+  // mutant: substeps_not_strict
   return int(std::floor(ratio)) + 1;
 }
 
@@ -258,12 +269,14 @@ TimeOfImpact sample_then_bisect(const MovingPair& pair, double t0, double t1, in
   if (substeps < 1) reject("sample_then_bisect", "substeps must be >= 1", std::to_string(substeps));
   if (overlap_at(pair, t0)) return overlapping_at_start(t0);
   double previous = t0;
+  // mutant: samples_the_end_only
   for (int k = 1; k <= substeps; ++k) {
     const double tk = k == substeps ? t1 : t0 + (t1 - t0) * k / substeps;
     if (!overlap_at(pair, tk)) {  // still clear: the next sub-step
       previous = tk;
       continue;
     }
+    // mutant: bisects_from_the_start
     TimeOfImpact r = halve(pair, previous, tk, tolerance);
     r.steps = k;
     return r;
@@ -281,11 +294,13 @@ double closing_speed(const Sphere& a, const StandardMotion& motion_a, const Shap
   if (!std::isfinite(t0)) reject("closing_speed", "t0 must be finite", str(t0));
   if (!std::isfinite(t1)) reject("closing_speed", "t1 must be finite", str(t1));
   if (!(t0 <= t1)) reject("closing_speed", "t0 <= t1 must hold", "t0 = " + str(t0) + ", t1 = " + str(t1));
+  // mutant: box_reach_from_its_centre
   const double reach_b = b.kind == Shape::Kind::sphere ? reach(b.sphere) : reach(b.box);
   const double speed_a = max_speed(motion_a, reach(a), t0, t1), speed_b = max_speed(motion_b, reach_b, t0, t1);
   const char* rule = "'s velocity, acceleration and spin must be finite";
   if (!std::isfinite(speed_a)) reject("closing_speed", std::string("motion_a") + rule, "a speed of " + str(speed_a));
   if (!std::isfinite(speed_b)) reject("closing_speed", std::string("motion_b") + rule, "a speed of " + str(speed_b));
+  // mutant: closing_speed_of_the_fastest
   return speed_a + speed_b;
 }
 
@@ -297,6 +312,7 @@ double distance(const Sphere& a, const Sphere& b) {
   const double reach = a.radius + b.radius;
   const double d2 = (a.center - b.center).squaredNorm();
   if (d2 <= reach * reach) return 0.0;  // overlapping: decided as in step 1
+  // mutant: distance_between_centres
   return std::sqrt(d2) - reach;
 }
 
@@ -332,10 +348,13 @@ TimeOfImpact advance(const MovingPair& pair, double t0, double t1, double max_cl
   for (;;) {
     const double d = distance_at(pair, t);
     // A bound of zero: nothing moves toward anything, the whole interval is safe.
+    // mutant: advance_by_the_distance
     const double safe = max_closing_speed > 0 ? d / max_closing_speed : std::numeric_limits<double>::infinity();
+    // mutant: advance_without_the_floor
     const double next = std::min(t + std::max(safe, tolerance), t1);
     ++steps;
     if (overlap_at(pair, next)) {  // the contact began in (t, next]: bisection finishes
+      // mutant: advance_without_bisecting
       TimeOfImpact r = halve(pair, t, next, tolerance);
       r.steps = steps;
       return r;

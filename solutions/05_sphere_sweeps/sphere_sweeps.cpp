@@ -150,6 +150,7 @@ bool segment_segment_within(const Segment& s0, const Segment& s1, double r2) {
   // picks up w's long component along the lines, so it no longer measures their distance.
   // Measure the pair itself: any pair of points is at least the true distance apart, and
   // when the segments really cross at such an angle the pair found is accurate.
+  // mutant: parallel_in_floating_point
   if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm()) return point_segment_within(point_at(s0, s / nn), s1, r2);
   return square(w.dot(n)) <= r2 * nn;
 }
@@ -223,6 +224,7 @@ struct PlaneApproach {
 };
 PlaneApproach approach_plane(double f0, double g, double reach, double reach2, double duration) {
   PlaneApproach a;
+  // mutant: one_sided_plane
   a.side = f0 > 0 ? 1.0 : -1.0;
   // Moving away from the plane, or along it (the lecture's "T < 0"): never.
   if (a.side * g >= 0) return a;
@@ -231,6 +233,7 @@ PlaneApproach approach_plane(double f0, double g, double reach, double reach2, d
   if (end > 0 && square(end) > reach2) return a;
   a.contact = true;
   // side * f(t) falls from side * f0 to reach at t = (side f0 - reach) / (-side g).
+  // mutant: plane_later_root
   a.time = std::clamp((a.side * f0 - reach) / (-a.side * g), 0.0, duration);
   return a;
 }
@@ -285,9 +288,11 @@ SegmentSegmentDistance segment_segment(const Segment& first, const Segment& seco
 
   const Vec3 d0 = first.b - first.a, d1 = second.b - second.a;
   const Vec3 n = d0.cross(d1);
+  // mutant: textbook_denominator
   const double nn = n.squaredNorm();
   if (nn > 0) {
     const Vec3 w = second.a - first.a;
+    // mutant: clamp_not_reproject
     const double s = w.cross(d1).dot(n) / nn, t = w.cross(d0).dot(n) / nn;
     if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
       // The point at s, then its projection onto the second segment. For nearly parallel
@@ -327,6 +332,7 @@ PointRectangleDistance point_rectangle(const Vec3& p, const Rectangle& rectangle
   // by clamping to the half-size. h, the height above the plane, is whatever it is.
   const Vec3 w = p - rectangle.center;
   PointRectangleDistance r;
+  // mutant: no_clamp_to_rectangle
   r.s = std::clamp(w.dot(rectangle.u), -rectangle.half_u, rectangle.half_u);
   r.t = std::clamp(w.dot(rectangle.v), -rectangle.half_v, rectangle.half_v);
   r.closest = rectangle.center + r.s * rectangle.u + r.t * rectangle.v;
@@ -360,6 +366,7 @@ SegmentRectangleDistance segment_rectangle(const Segment& segment, const Rectang
     const PointRectangleDistance e = point_rectangle(p, rectangle);
     if (e.squared_distance < best.squared_distance) best = {e.squared_distance, r, e.s, e.t, p, e.closest};
   }
+  // mutant: ends_only
   for (int i = 0; i < 4; ++i) {
     const SegmentSegmentDistance e = segment_segment(segment, side(rectangle, i));
     if (e.squared_distance >= best.squared_distance) continue;  // not nearer
@@ -383,6 +390,7 @@ RectangleRectangleDistance rectangle_rectangle(const Rectangle& first, const Rec
   }
   for (int i = 0; i < 4; ++i) {
     const SegmentRectangleDistance e = segment_rectangle(side(second, i), first);
+    // mutant: swapped_call_not_swapped_back
     if (e.squared_distance < best.squared_distance) best = {e.squared_distance, e.closest1, e.closest0};
   }
   return best;
@@ -414,6 +422,7 @@ bool test_sphere_lozenge(const Sphere& a, const Lozenge& b) {
 bool test_capsule_capsule(const Capsule& a, const Capsule& b) {
   require("test_capsule_capsule", "a", a);
   require("test_capsule_capsule", "b", b);
+  // mutants: sum_of_squares, decide_on_rounded_distance
   return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));
 }
 
@@ -429,6 +438,7 @@ bool test_lozenge_lozenge(const Lozenge& a, const Lozenge& b) {
   const double r2 = square(a.radius + b.radius);
   for (int i = 0; i < 4; ++i)
     if (segment_rectangle_within(side(a.rectangle, i), b.rectangle, r2)) return true;
+  // mutant: one_lozenges_sides
   for (int i = 0; i < 4; ++i)
     if (segment_rectangle_within(side(b.rectangle, i), a.rectangle, r2)) return true;
   return false;
@@ -442,11 +452,13 @@ Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane
   require("sweep_sphere_plane", "plane", given);
   // With f(t) = normal . c(t) + offset = f0 + g t, the signed distance is f / |normal|:
   // compare f with r |normal| rather than normalising (the normal need not be unit).
-  // First the plane is rescaled by a power of two, so that n . n is a normal double.
+  // First the plane is rescaled by a power of two, so that n . n is a normal double. A
+  // sphere touching or cutting the plane now is overlapping.
+  // mutants: unnormalised_normal, centre_reaches_plane
   const Plane plane = scaled(given);
   const double f0 = plane.value(sphere.center), g = plane.normal.dot(velocity);
   const double nn = plane.normal.squaredNorm(), r = sphere.radius;
-  if (square(f0) <= square(r) * nn) return overlapping();  // touching or cutting it now
+  if (square(f0) <= square(r) * nn) return overlapping();
   const PlaneApproach a = approach_plane(f0, g, r * std::sqrt(nn), square(r) * nn, duration);
   if (!a.contact) return {};  // moving away, along it, or not there yet at T
   const Vec3 center = sphere.center + a.time * velocity;
@@ -480,16 +492,20 @@ Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, co
   const Vec3 A = s0.center - s1.center, B = v0 - v1;
   const double R = s0.radius + s1.radius;
   const double c = A.squaredNorm() - R * R;
+  // mutant: touching_not_overlapping
   if (c <= 0) return overlapping();  // touching or overlapping at t = 0
   const double a = B.squaredNorm();
   if (a == 0) return {};  // no relative motion: the gap stays what it is
   const double b = A.dot(B);
+  // mutant: moving_apart_forgotten
   if (b >= 0) return {};  // moving apart or sideways: the gap only grows
   const double disc = a * R * R - A.cross(B).squaredNorm();
+  // mutant: graze_is_a_miss
   if (disc < 0) return {};  // the closest approach misses
   // The distance falls until t = -b / a. If that is after T, contact needs |A + T B| <= R.
   if (-b > a * duration && (A + duration * B).squaredNorm() > R * R) return {};  // not there yet at T
   const double q = -b + std::sqrt(disc);
+  // mutants: cancelling_root, sphere_later_root
   const double t = std::min(c / q, duration);
   // The point of contact: on the segment between the centres, r0 / R of the way.
   const Vec3 p = s0.center + t * v0, relative = A + t * B;
@@ -529,10 +545,12 @@ double first_time_cylinder(const Vec3& m, const Vec3& v, const Vec3& d, double R
   if (a == 0 || b >= 0 || c <= 0) return kInfinity;
   const double disc = dd * (a * R2 - square(md.dot(v)));
   if (disc < 0) return kInfinity;  // the line of motion passes the cylinder by
+  // mutant: capsule_later_root
   const double t = c / (-b + std::sqrt(disc));
   // Clip to the slab: a root beyond an end plane hits the infinite cylinder where the
   // capsule has no side; there the end sphere decides.
   const double along = (m + t * v).dot(d);
+  // mutant: unclipped_cylinder
   return along >= 0 && along <= dd ? t : kInfinity;
 }
 
@@ -560,12 +578,14 @@ Sweep sweep_sphere_capsule(const Sphere& sphere, const Vec3& velocity, const Cap
   require_motion("sweep_sphere_capsule", velocity, "velocity", duration);
   require("sweep_sphere_capsule", "capsule", capsule);
   const Segment& axis = capsule.axis;
+  // mutant: grown_by_one_radius
   const double R = sphere.radius + capsule.radius, R2 = square(R);
   if (point_segment_within(sphere.center, axis, R2)) return overlapping();  // touching or inside now
   const Segment path{sphere.center, sphere.center + duration * velocity};
   if (!segment_segment_within(path, axis, R2)) return {};  // the swept sphere misses it
   const Vec3 d = axis.b - axis.a;
   double t = std::min({first_time_cylinder(sphere.center - axis.a, velocity, d, R2),
+                       // mutant: forgotten_caps
                        first_time_sphere(sphere.center - axis.a, velocity, R2),
                        first_time_sphere(sphere.center - axis.b, velocity, R2)});
   if (!(t <= duration)) t = segment_segment(path, axis).s * duration;  // a graze lost to rounding
@@ -588,6 +608,7 @@ Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& given, 
   // every term with its own sign). Multiply through by |n|: then f and the reach are
   // compared without a square root.
   double reach = 0.0;
+  // mutants: signed_projection, box_bounding_sphere
   for (int i = 0; i < 3; ++i) reach += box.half_extents[i] * std::abs(plane.normal.dot(box.axes.col(i)));
   const double f0 = plane.value(box.center), g = plane.normal.dot(velocity);
   if (std::abs(f0) <= reach) return overlapping();  // resting on it or cutting it now
