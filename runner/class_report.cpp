@@ -203,14 +203,12 @@ std::string concept_of(const std::string& why) {
   return rule;
 }
 
-std::string write_class_page(const std::vector<SubmissionGrade>& all, const GradingRun& run, const std::string& out,
-                             double seconds, const std::string& scratch) {
-  fs::create_directories(out);
-  const fs::path page = fs::path(out) / kClassPage;
-  std::ostringstream body;
-  const double max = all.empty() ? 0 : all.front().max_score;
+namespace {
 
-  // The totals.
+// The totals: a line of figures and a histogram.
+void totals_section(std::ostream& body, const std::vector<SubmissionGrade>& all, const std::string& scratch,
+                    const std::string& out) {
+  const double max = all.empty() ? 0 : all.front().max_score;
   std::vector<double> totals;
   for (const SubmissionGrade& s : all) totals.push_back(s.score);
   std::sort(totals.begin(), totals.end());
@@ -227,8 +225,11 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
        << points(totals.empty() ? 0 : totals.back()) << " of " << points(max) << "; "
        << std::count(totals.begin(), totals.end(), max) << " with full marks.</p>\n";
   if (!all.empty()) body << figure_html(totals_plot(all, max, scratch, out), "a histogram of the submissions' totals");
+}
 
-  // Each step's pass rate, as a plot and as a table.
+// Each step's pass rate, as a plot and as a table.
+void steps_section(std::ostream& body, const std::vector<SubmissionGrade>& all, const std::string& scratch,
+                   const std::string& out) {
   if (!all.empty()) {
     body << "<h2>Each step</h2>\n" << figure_html(steps_plot(all, scratch, out), "each step's pass rate");
     body << "<table>\n<tr><th>step</th><th>title</th><th>passed</th><th>failing</th><th>not implemented</th>"
@@ -265,8 +266,10 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
     }
     body << "</table>\n";
   }
+}
 
-  // The concepts most often broken.
+// The concepts most often broken: the rules of the first failures, counted by submission.
+void concepts_section(std::ostream& body, const std::vector<SubmissionGrade>& all) {
   std::map<std::string, Concept> concepts;
   for (const SubmissionGrade& s : all)
     for (const LabGrade& l : s.labs)
@@ -298,8 +301,10 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
            << html(ranked[r]->example) << "</td></tr>\n";
     body << "</table>\n";
   }
+}
 
-  // What cost more than a wrong answer: one row per submission, lab and kind, with its steps.
+// What cost more than a wrong answer: one row per submission, lab and kind, with its steps.
+void trouble_section(std::ostream& body, const std::vector<SubmissionGrade>& all) {
   std::vector<Trouble> trouble;
   for (const SubmissionGrade& s : all) {
     if (!s.error.empty()) trouble.push_back({s.name, "could not be read", "", quoted_lines(first_line(s.error))});
@@ -339,8 +344,10 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
            << "</td></tr>\n";
     body << "</table>\n";
   }
+}
 
-  // Every submission.
+// Every submission, a row each: its labs' points and its total.
+void submissions_section(std::ostream& body, const std::vector<SubmissionGrade>& all) {
   body << "<h2>Submissions</h2>\n<table>\n<tr><th>submission</th>";
   if (!all.empty())
     for (const LabGrade& l : all.front().labs) body << "<th>lab " << html(l.lab->id) << "</th>";
@@ -367,7 +374,20 @@ std::string write_class_page(const std::vector<SubmissionGrade>& all, const Grad
          << " s</td></tr>\n";
   }
   body << "</table>\n";
+}
 
+}  // namespace
+
+std::string write_class_page(const std::vector<SubmissionGrade>& all, const GradingRun& run, const std::string& out,
+                             double seconds, const std::string& scratch) {
+  fs::create_directories(out);
+  const fs::path page = fs::path(out) / kClassPage;
+  std::ostringstream body;
+  totals_section(body, all, scratch, out);
+  steps_section(body, all, scratch, out);
+  concepts_section(body, all);
+  trouble_section(body, all);
+  submissions_section(body, all);
   char when[64] = "";
   const std::time_t now = std::time(nullptr);
   std::strftime(when, sizeof when, "%Y-%m-%d %H:%M", std::localtime(&now));

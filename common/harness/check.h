@@ -16,6 +16,7 @@
 
 #include "common/harness/codec.h"
 #include "common/harness/query.h"
+#include "common/harness/rapidcheck_adaptor.h"
 #include "common/harness/titles.h"
 #include "common/not_implemented.h"
 #include "common/oracle/not_finite.h"
@@ -270,14 +271,6 @@ std::uint64_t seed_for(const std::string& query);
 // Remembered so that a crash or a time-out can still name the input it died on.
 void set_inflight(const std::string& token);
 void clear_inflight();
-
-// RapidCheck's own listener prints a banner and a hint about RC_PARAMS; our reports say
-// how to replay instead.
-struct QuietListener : rc::detail::TestListener {
-  void onTestCaseFinished(const rc::detail::CaseDescription&) override {}
-  void onShrinkTried(const rc::detail::CaseDescription&, bool) override {}
-  void onTestFinished(const rc::detail::TestMetadata&, const rc::detail::TestResult&) override {}
-};
 
 // "The rule: <the query's rule>. <what happened>", or what happened alone.
 inline std::string with_rule(const std::string& query, const std::string& what) {
@@ -552,62 +545,35 @@ template <class Input, class Judge> void random_cases(const Query<Input>& q, con
   }
 }
 
+namespace detail {
+
+// A stub is reported as "not implemented yet" from one probe, instead of being shrunk.
 template <class Input, class Judge>
-void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>& gen, Judge& judge,
-                                    QueryReport& report) {
-  const std::string query = q.name;
+bool not_implemented_by_probe(const std::string& query, const rc::Gen<Input>& gen, Judge& judge, QueryReport& report) {
+  const Input probe = fitted(rapidcheck::first_case(gen, seed_for(query)));
+  QueryReport scratch;
+  run_judge(judge, probe, scratch);
+  if (scratch.not_implemented.empty()) return false;
+  report.not_implemented = scratch.not_implemented;
+  return true;
+}
+
+// The query's cases, drawn as RapidCheck draws them (the same seed, the same cases); none
+// if they could not be drawn (report.error says why). The kit's own tests check the
+// generators: every case lies in the header's domain (LABKIT_DOMAIN_AUDIT=1).
+template <class Input>
+std::optional<std::vector<Input>> draw_cases(const std::string& query, const rc::Gen<Input>& gen, QueryReport& report) {
   const Settings& s = settings();
-  if (!s.replay.empty()) {
-    if (parse_token(s.replay).query != query) return;
-    try {
-      detail::replay_one<Input>(query, judge, report);
-    } catch (const BadToken& e) {
-      report.error = e.what();
-    }
-    detail::save_report();
-    detail::report_to_catch(report, true);
-    return;
-  }
-
-  // One probe first: a stub is reported as "not implemented yet" instead of being shrunk.
-  {
-    const Input probe = fitted(gen(rc::Random(detail::seed_for(query)), 0).value());
-    detail::QueryReport scratch;
-    detail::run_judge(judge, probe, scratch);
-    if (!scratch.not_implemented.empty()) {
-      report.not_implemented = scratch.not_implemented;
-      detail::save_report();
-      detail::report_to_catch(report, true);
-      return;
-    }
-  }
-
-  rc::detail::TestParams params;
-  params.seed = detail::seed_for(query);
-  params.maxSuccess = s.cases;
-  params.maxSize = 100;
-  rc::detail::TestMetadata metadata;
-  metadata.id = metadata.description = query;
-  detail::QuietListener listener;
-  remote::new_query();
-
-  // The cases, drawn as RapidCheck draws them: the same seed gives the same cases.
   std::vector<Input> inputs;
   inputs.reserve(std::size_t(s.cases));
-  const auto drawn = rc::detail::checkProperty(rc::detail::toProperty([&] { inputs.push_back(fitted(*gen)); }),
-                                               metadata, params, listener, {});
-  if (!drawn.template is<rc::detail::SuccessResult>()) {
-    report.error =
-        "the random cases could not be drawn: " + (drawn.template is<rc::detail::FailureResult>()
-                                                       ? drawn.template get<rc::detail::FailureResult>().description
-                                                       : std::string("RapidCheck gave up or failed"));
-    detail::save_report();
-    detail::report_to_catch(report, true);
-    return;
+  const rapidcheck::Result drawn =
+      rapidcheck::run(query, seed_for(query), s.cases, [&] { inputs.push_back(fitted(*gen)); });
+  if (drawn.kind != rapidcheck::Result::Kind::passed) {
+    report.error = "the random cases could not be drawn: " + (drawn.kind == rapidcheck::Result::Kind::failed
+                                                                  ? drawn.description
+                                                                  : std::string("RapidCheck gave up or failed"));
+    return std::nullopt;
   }
-
-  // The kit's own tests check the generators: every case drawn lies in the header's
-  // domain (the reference's steps run with LABKIT_DOMAIN_AUDIT=1).
   if (s.domain_audit) {
     const auto outside = std::find_if(inputs.begin(), inputs.end(), [](const Input& in) { return !in_domain(in); });
     if (outside != inputs.end())
@@ -615,106 +581,129 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
                                std::to_string(inputs.size()) +
                                " was drawn outside the header's input domain: " + describe(*outside).substr(0, 600));
   }
+  return inputs;
+}
 
-  // Judged a chunk at a time, each chunk's calls in one batch. The student's check stops
-  // at the chunk holding the first failure; a graded run judges every case (partial
-  // credit), and its report still shows the first failure, shrunk.
+// Judges the cases a chunk at a time, each chunk's calls in one batch; the 1-based index
+// of the first failing case, 0 for none. The student's check stops at the chunk holding
+// the first failure; a graded run judges every case (partial credit).
+template <class Input, class Judge>
+int judge_cases(const std::vector<Input>& inputs, Judge& judge, QueryReport& report, std::vector<Outcome>& outcomes) {
   constexpr std::size_t kChunk = 1024;
-  std::vector<Outcome> outcomes(inputs.size());
-  int first_failing_case = 0;  // 1-based; 0: none
-  if (s.count_all) {
-    detail::judge_graded(inputs, judge, report, outcomes);
+  outcomes.assign(inputs.size(), Outcome{});
+  int first_failing_case = 0;
+  if (settings().count_all) {
+    judge_graded(inputs, judge, report, outcomes);
     for (std::size_t i = 0; i < outcomes.size() && first_failing_case == 0; ++i)
       if (outcomes[i].verdict == Outcome::Verdict::fail) first_failing_case = int(i) + 1;
-  } else {
-    const std::vector<detail::Item> items = detail::items_of(inputs, judge, report);
-    for (std::size_t begin = 0; begin < inputs.size() && first_failing_case == 0; begin += kChunk) {
-      const std::size_t end = std::min(inputs.size(), begin + kChunk);
-      detail::judge_items(items, begin, end, outcomes);
-      for (std::size_t i = begin; i < end && first_failing_case == 0; ++i) {
-        detail::tally(report, outcomes[i]);
-        if (outcomes[i].verdict == Outcome::Verdict::fail) first_failing_case = int(i) + 1;
-      }
+    return first_failing_case;
+  }
+  const std::vector<Item> items = items_of(inputs, judge, report);
+  for (std::size_t begin = 0; begin < inputs.size() && first_failing_case == 0; begin += kChunk) {
+    const std::size_t end = std::min(inputs.size(), begin + kChunk);
+    judge_items(items, begin, end, outcomes);
+    for (std::size_t i = begin; i < end && first_failing_case == 0; ++i) {
+      tally(report, outcomes[i]);
+      if (outcomes[i].verdict == Outcome::Verdict::fail) first_failing_case = int(i) + 1;
     }
   }
-  detail::save_report();
-  if (first_failing_case == 0) {
-    detail::report_to_catch(report, true);
-    return;
-  }
-  std::optional<detail::Failure> first_failure = detail::failure_of(
-      "", query, inputs[std::size_t(first_failing_case) - 1], outcomes[std::size_t(first_failing_case) - 1]);
-  inputs = {};
-  outcomes = {};
-  // A call that never finished is not shrunk: each try would wait out the time limit.
-  if (first_failure->got == remote::kNoAnswer) {
-    first_failure->title = "random case " + std::to_string(first_failing_case) + " of " + std::to_string(s.cases);
-    report.failure = first_failure;
-    detail::save_report();
-    detail::report_to_catch(report, true);
-    return;
-  }
+  return first_failing_case;
+}
 
-  // RapidCheck draws the same cases again to shrink the first failure: those before it
-  // passed already, so only the failing case and its shrinks are judged, one at a time.
-  // Shrinking has a budget: code that fails every input (a crash before main, say) makes
-  // every smaller input fail too, and a large input (two meshes) has a long way down.
-  // Past the budget the smallest failure so far is the one shown.
+// RapidCheck draws the same cases again to shrink the first failure (case `first`,
+// 1-based): those before it passed already, so only the failing case and its shrinks are
+// judged, one at a time. Shrinking has a budget: code that fails every input (a crash
+// before main, say) makes every smaller input fail too, and a large input (two meshes)
+// has a long way down; past it the smallest failure so far is the one shown. Sets
+// report.failure, or report.error when the generator itself failed.
+template <class Input, class Judge>
+void shrink_failure(const std::string& query, const rc::Gen<Input>& gen, Judge& judge, QueryReport& report, int first,
+                    Failure first_failure) {
   constexpr int kShrinkTries = 400;
   constexpr auto kShrinkTime = std::chrono::seconds(5);
-  bool shrinking = false;
-  int seen = 0;
-  int shrinks = -1, tries = 0;
+  const std::string title = "random case " + std::to_string(first) + " of " + std::to_string(settings().cases);
+  bool shrinking = false, start_in_domain = true;
+  int seen = 0, shrinks = -1, tries = 0;
   std::chrono::steady_clock::time_point shrink_start;
-  std::optional<detail::Failure> smallest;
+  std::optional<Failure> smallest;
   std::optional<Input> smallest_input;
-  bool start_in_domain = true;
   const auto property = [&] {
     const Input input = fitted(*gen);
-    if (!shrinking && ++seen < first_failing_case) return;
+    if (!shrinking && ++seen < first) return;
     if (shrinking && (++tries > kShrinkTries || std::chrono::steady_clock::now() - shrink_start > kShrinkTime)) return;
-    if (shrinking && start_in_domain && !in_domain(input))
-      return;  // a smaller case outside the header's domain shows nothing
+    if (shrinking && start_in_domain && !in_domain(input)) return;  // a smaller case outside the domain shows nothing
     if (!shrinking) shrink_start = std::chrono::steady_clock::now();
-    const std::string token = replay_token(query, input);
-    detail::set_inflight(token);
-    const Outcome o = detail::run_judge(judge, input, report);
-    detail::clear_inflight();
+    set_inflight(replay_token(query, input));
+    const Outcome o = run_judge(judge, input, report);
+    clear_inflight();
     if (o.verdict != Outcome::Verdict::fail) return;
-    // Shrinking stays in the header's domain when the case it starts from is in it (the
-    // domain audit of the kit's tests keeps the generators in it).
+    // Shrinking stays in the header's domain when the case it starts from is in it.
     if (!shrinking) start_in_domain = in_domain(input);
     shrinking = true;
     ++shrinks;
-    smallest = detail::failure_of("", query, input, o);
+    smallest = failure_of("", query, input, o);
     smallest_input = input;
     RC_FAIL(o.why);
   };
-  const auto result = rc::detail::checkProperty(rc::detail::toProperty(property), metadata, params, listener, {});
-
-  if (result.template is<rc::detail::FailureResult>() && smallest) {
+  const rapidcheck::Result result = rapidcheck::run(query, seed_for(query), settings().cases, property);
+  using Kind = rapidcheck::Result::Kind;
+  if (result.kind == Kind::failed && smallest) {
     if (start_in_domain && !in_domain(*smallest_input)) throw OutsideDomain(smallest->input);
     smallest->shrinks = shrinks;
-    const int at = first_failing_case;
-    smallest->title = "random case " + std::to_string(at) + " of " + std::to_string(s.cases);
+    smallest->title = title;
     report.failure = smallest;
-  } else if (result.template is<rc::detail::FailureResult>()) {
-    // The property failed without a judge's verdict: the generator itself threw.
-    report.error =
-        "a random case could not be generated: " + result.template get<rc::detail::FailureResult>().description;
-  } else if (result.template is<rc::detail::GaveUpResult>()) {
-    report.error = "the generator gave up: " + result.template get<rc::detail::GaveUpResult>().description;
-  } else if (result.template is<rc::detail::Error>()) {
-    report.error = "RapidCheck failed: " + result.template get<rc::detail::Error>().description;
-  } else if (first_failure) {
-    // It failed in the counting pass but not when run again: the code under test is
-    // not deterministic. The case it failed on is still the one to show.
-    first_failure->title = "random case " + std::to_string(first_failing_case) + " of " + std::to_string(s.cases) +
-                           " (it passed when run again: is the code deterministic?)";
+  } else if (result.kind == Kind::failed) {  // no judge's verdict: the generator itself threw
+    report.error = "a random case could not be generated: " + result.description;
+  } else if (result.kind == Kind::gave_up) {
+    report.error = "the generator gave up: " + result.description;
+  } else if (result.kind == Kind::error) {
+    report.error = "RapidCheck failed: " + result.description;
+  } else {
+    // It failed in the counting pass but not when run again: the code under test is not
+    // deterministic. The case it failed on is still the one to show.
+    first_failure.title = title + " (it passed when run again: is the code deterministic?)";
     report.failure = first_failure;
   }
-  detail::save_report();
-  detail::report_to_catch(report, true);
+}
+
+}  // namespace detail
+
+template <class Input, class Judge>
+void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>& gen, Judge& judge,
+                                    QueryReport& report) {
+  const std::string query = q.name;
+  const auto finish = [&report] {
+    save_report();
+    report_to_catch(report, true);
+  };
+  if (!settings().replay.empty()) {
+    if (parse_token(settings().replay).query != query) return;
+    try {
+      replay_one<Input>(query, judge, report);
+    } catch (const BadToken& e) {
+      report.error = e.what();
+    }
+    return finish();
+  }
+  if (not_implemented_by_probe(query, gen, judge, report)) return finish();
+  remote::new_query();
+  std::optional<std::vector<Input>> inputs = draw_cases(query, gen, report);
+  if (!inputs) return finish();
+  std::vector<Outcome> outcomes;
+  const int first = judge_cases(*inputs, judge, report, outcomes);
+  save_report();
+  if (first == 0) return finish();
+  Failure first_failure = failure_of("", query, (*inputs)[std::size_t(first) - 1], outcomes[std::size_t(first) - 1]);
+  inputs.reset();
+  outcomes = {};
+  if (first_failure.got == remote::kNoAnswer) {
+    // A call that never finished is not shrunk: each try would wait out the time limit.
+    first_failure.title = "random case " + std::to_string(first) + " of " + std::to_string(settings().cases);
+    report.failure = first_failure;
+    return finish();
+  }
+  shrink_failure(query, gen, judge, report, first, first_failure);
+  finish();
 }
 
 }  // namespace labkit::check
