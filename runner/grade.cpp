@@ -1,8 +1,10 @@
 #include "grade.h"
 #include "assignment.h"
+#include "budget.h"
 #include "cgroup.h"
 #include "class_report.h"
 #include "common/text.h"
+#include "feedback.h"
 #include "gradebook.h"
 #include "lab_build.h"
 #include "results.h"
@@ -58,70 +60,6 @@ struct Context {
   std::size_t step_memory_mb;  // each step's memory: --memory, or less to fit the envelope
 };
 
-// The secret never appears in what is written, even if the code under test found it.
-std::string redact(std::string text, const std::string& secret) {
-  if (secret.size() < 6) return text;
-  for (std::size_t at; (at = text.find(secret)) != std::string::npos;) text.replace(at, secret.size(), "[secret]");
-  return text;
-}
-
-// Everything a student controls in a grade, as it may be written and shown: never the
-// secret or a seed drawn from it (even if the code under test found them), and safe
-// text (untrusted.h). The one place this happens: every result file and the terminal
-// get a grade through it.
-void make_presentable(SubmissionGrade& g, const std::vector<std::string>& secrets) {
-  const auto presentable = [&](std::string& text) {
-    for (const std::string& secret : secrets) text = redact(text, secret);
-    text = safe_text(text);
-  };
-  presentable(g.name);
-  presentable(g.source);
-  presentable(g.error);
-  for (std::string& note : g.notes) presentable(note);
-  for (LabGrade& l : g.labs) {
-    presentable(l.build_output);
-    for (StepGrade& s : l.steps) {
-      presentable(s.feedback);
-      presentable(s.why);
-    }
-  }
-}
-
-// The last `n` bytes of `text`, from the start of a character: a tail cut in the middle
-// of one would begin with a broken character.
-std::string tail(const std::string& text, std::size_t n) {
-  if (text.size() <= n) return text;
-  std::size_t from = text.size() - n;
-  for (int k = 0; k < 3 && from < text.size() && (static_cast<unsigned char>(text[from]) & 0xC0) == 0x80; ++k) ++from;
-  return "..." + text.substr(from);
-}
-
-// Where a value's further lines start, under the labels ("why       ").
-const std::string kUnder(10, ' ');
-
-// A failure as the student reads it, one field a line under a label column, as
-// labkit::report::format lays it out; the judge's fields may carry what the code under
-// test said (an exception's message, what it printed before it crashed), so each
-// field's further lines are quoted (untrusted.h): none can pass for a line of the kit's.
-// The input is the kit's own description of a case the kit drew.
-std::string failure_text(const Failure& f, const std::string& query) {
-  std::string text = "query     " + safe_line(query) + (f.title.empty() ? "" : ", " + safe_line(f.title));
-  if (f.shrinks > 0) text += " (shrunk " + std::to_string(f.shrinks) + " times)";
-  text += "\ninput     " + term::indent(safe_text(f.input), kUnder);
-  text += "\nexpected  " + quoted_after_label(f.expected, kUnder);
-  text += "\ngot       " + quoted_after_label(f.got, kUnder);
-  text += "\nwhy       " + quoted_after_label(f.why, kUnder) + "\n";
-  return text;
-}
-
-// The command that replays a case, or why there is none: a token the harness never
-// writes (the code under test printed or wrote it) never becomes a command.
-std::string replay_line(const Lab& lab, const std::string& token) {
-  const std::string command = replay_command("check", lab.id, token);
-  return "replay    " +
-         (command.empty() ? "none (the case it reported is not a replay token the kit writes)" : command) + "\n";
-}
-
 // A graded step's options; `seed` is the submission's own for the lab (seed.h), "" for
 // the public cases.
 StepOptions graded_step_options(const std::string& folder, const Context& c, const std::string& seed) {
@@ -142,157 +80,9 @@ StepOptions graded_step_options(const std::string& folder, const Context& c, con
   return options;
 }
 
-// A submission's time budget: the wall clock of the processes the grader runs for it
-// (compiles, links, steps and the descriptions of their failing cases), measured by the
-// grader alone. A process may run for the least of its own limit and what is left, less
-// what the submission's other processes running meanwhile may still take, so that
-// together they never pass the budget.
-class Budget {
- public:
-  // The shortest time worth starting a process for.
-  static constexpr double kLeast = 1;
-
-  void set(double seconds) { total_ = seconds; }
-
-  // Up to `wanted` seconds for one process: what it may run for, or 0 when less than
-  // kLeast is left (the budget ran out).
-  double take(double wanted) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    const double left = total_ - used_ - held_;
-    if (left < kLeast) {
-      ran_out_ = true;
-      return 0;
-    }
-    const double given = std::min(wanted, left);
-    held_ += given;
-    return given;
-  }
-
-  // A process given `taken` seconds ended after `seconds`, spent on `what` ("lab 02
-  // step 3"); `taken` 0 for time charged without a process of its own (a build shared
-  // with another submission).
-  void spend(double taken, double seconds, const std::string& what) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    held_ -= taken;
-    used_ += seconds;
-    if (seconds > 0) spent_.push_back({what, seconds});
-  }
-
-  void ran_out() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    ran_out_ = true;
-  }
-
-  double total() const { return total_; }
-  double used() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    return used_;
-  }
-
-  // When it ran out: what used it, the slowest labs first, each with its slowest parts.
-  std::string note() {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!ran_out_) return "";
-    std::map<std::string, std::vector<std::pair<double, std::string>>> labs;  // "lab 02" -> (seconds, part)
-    for (const auto& [what, seconds] : spent_) {
-      const std::size_t space = what.find(' ', 4);
-      labs[what.substr(0, space)].push_back({seconds, space == std::string::npos ? what : what.substr(space + 1)});
-    }
-    std::vector<std::pair<double, std::string>> ranked;
-    for (auto& [lab, parts] : labs) {
-      std::sort(parts.rbegin(), parts.rend());
-      double sum = 0;
-      for (const auto& part : parts) sum += part.first;
-      std::string text = lab + " " + points(sum) + " s (";
-      for (std::size_t k = 0; k < parts.size() && k < 3; ++k)
-        text += (k ? ", " : "") + parts[k].second + " " + points(parts[k].first) + " s";
-      ranked.push_back({sum, text + (parts.size() > 3 ? ", ...)" : ")")});
-    }
-    std::sort(ranked.rbegin(), ranked.rend());
-    std::string text = "the submission's time budget ran out: its compiles and steps may take " + points(total_) +
-                       " s of wall time together (--budget), and they took " + points(used_) +
-                       " s; what used it, the slowest first: ";
-    for (std::size_t k = 0; k < ranked.size() && k < 4; ++k) text += (k ? "; " : "") + ranked[k].second;
-    return text;
-  }
-
- private:
-  std::mutex mutex_;
-  double total_ = kGradingBudget, used_ = 0, held_ = 0;
-  std::vector<std::pair<std::string, double>> spent_;
-  bool ran_out_ = false;
-};
-
 // What a step or lab the budget never reached says.
 const char* const kNoTime =
     "not graded: the submission's time budget ran out before it (the report's time budget line says what used it)";
-
-// What the student reads about one step: the verdict, the counts, the first failure and
-// how to replay it with the public kit.
-std::string feedback(const StepResult& r, const Lab& lab, const Programs& programs, const Context& c,
-                     const std::string& seed, Budget& budget) {
-  std::ostringstream out;
-  int cases = 0, passed = 0;
-  for (const QueryResult& q : r.queries) {
-    cases += q.cases;
-    passed += q.passed + q.ambiguous;
-  }
-  out << status_word(r.status);
-  if (r.status == Status::passed || r.status == Status::failing)
-    out << ": " << passed << " of " << cases << " cases pass"
-        << (r.ambiguous ? " (" + std::to_string(r.ambiguous) + " of them ambiguous: any answer is accepted there)"
-                        : "");
-  out << "\n";
-  if (abnormal(r.status)) {
-    out << "what      " << quoted_after_label(r.detail, kUnder) << "\n";
-    if (!r.inflight.empty() && !is_replay_token(r.inflight)) {
-      out << replay_line(lab, r.inflight);  // its output faked the marker: no input to describe
-    } else if (!r.inflight.empty()) {
-      // Describing runs no code under test; it keeps the graded limits all the same, and
-      // takes its time from the submission's budget (none left: the token alone).
-      std::string input = r.inflight;
-      if (const double seconds = budget.take(30); seconds > 0) {
-        StepOptions describe = graded_step_options(fs::path(programs.answerer).parent_path().string(), c, seed);
-        describe.replay = r.inflight;
-        describe.describe_only = true;
-        describe.count_all = false;
-        describe.limits.seconds = seconds;
-        const StepResult d = run_step(programs, lab, *r.step, describe);
-        budget.spend(seconds, d.run.seconds, "lab " + lab.id + " step " + std::to_string(r.step->number));
-        for (const QueryResult& q : d.queries)
-          if (q.failure && !q.failure->input.empty()) input = q.failure->input;
-      }
-      out << "on input  " << term::indent(input, kUnder) << "\n";
-      out << replay_line(lab, r.inflight);
-    }
-    if (r.status == Status::crashed || r.status == Status::exited_early || r.status == Status::out_of_memory) {
-      const std::string last = tail(r.run.output, 800);
-      if (!last.empty()) out << "its last output:\n" << quoted_lines(last) << "\n";
-    }
-    return out.str();
-  }
-  for (const QueryResult& q : r.queries) {
-    if (!q.error.empty()) {
-      out << safe_line(q.query) << ": " << quoted_after_label(q.error, kUnder) << "\n";
-      break;
-    }
-    if (q.failure && q.not_implemented.empty()) {
-      const Failure& f = *q.failure;
-      out << failure_text(f, q.query);
-      if (!f.replay.empty()) out << replay_line(lab, f.replay);
-      break;
-    }
-  }
-  return out.str();
-}
-
-// The rule a failing step's first failure broke, as its judge worded it.
-std::string first_why(const StepResult& r) {
-  if (r.status != Status::failing) return "";
-  for (const QueryResult& q : r.queries)
-    if (q.failure && q.not_implemented.empty()) return q.failure->why;
-  return "";
-}
 
 // A lab of a submission before anything is known of it: every step waiting.
 LabGrade pending_lab(const Lab& lab) {
@@ -440,21 +230,60 @@ class Grader {
     }
   }
 
-  void build(std::size_t i, std::size_t l) {
-    Graded& g = *all_[i];
-    const Lab& lab = *c_.labs[l];
-    std::map<std::string, std::string> files, contents;
-    std::string missing, key = lab.id;
+  // A lab's files in a submission: where each is, its text, and the build cache's key
+  // (the lab and the files' whole contents); `missing` names those it lacks.
+  struct LabFiles {
+    std::map<std::string, std::string> paths, contents;
+    std::string key, missing;
+  };
+  static LabFiles lab_files(const Graded& g, const Lab& lab) {
+    LabFiles files;
+    files.key = lab.id;
     for (const std::string& f : lab.student_files) {
       const auto found = g.sub.files.find(f);
       if (found == g.sub.files.end()) {
-        missing += (missing.empty() ? "" : ", ") + f;
+        files.missing += (files.missing.empty() ? "" : ", ") + f;
         continue;
       }
-      files[f] = found->second;
-      const std::string text = contents[f] = labkit::read_file(found->second);
-      key += '\0' + f + '\0' + std::to_string(text.size()) + '\0' + text;
+      files.paths[f] = found->second;
+      const std::string text = files.contents[f] = labkit::read_file(found->second);
+      files.key += '\0' + f + '\0' + std::to_string(text.size()) + '\0' + text;
     }
+    return files;
+  }
+
+  // Builds a cache entry's lab in `folder` within `limit` seconds, then runs what waited
+  // for it (other submissions with the same files).
+  void build_into(BuildCache::Entry& entry, const Lab& lab, const LabFiles& files, const std::string& folder,
+                  double limit) {
+    const auto start = std::chrono::steady_clock::now();
+    try {
+      fs::create_directories(folder);
+      fs::permissions(folder, fs::perms(0711));
+      entry.build = build_lab(c_.paths, lab, c_.recipes.at(&lab), files.paths, folder, c_.sandbox, limit);
+    } catch (const std::exception& e) {
+      entry.build = LabBuild{};
+      entry.build.errors = std::string("the grader could not build it: ") + e.what();
+    }
+    entry.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    entry.limit = limit;
+    std::vector<std::function<void(const BuildCache::Entry&)>> waiting;
+    {
+      std::lock_guard<std::mutex> lock(cache_.mutex);
+      entry.done = true;
+      waiting.swap(entry.waiting);
+      // Cut short by this submission's budget, not by its files: the next submission
+      // with the same files builds them again.
+      if (entry.build.timed_out && limit < kBuildSeconds) cache_.entries.erase(files.key);
+    }
+    for (auto& then : waiting) then(entry);
+  }
+
+  void build(std::size_t i, std::size_t l) {
+    Graded& g = *all_[i];
+    const Lab& lab = *c_.labs[l];
+    const LabFiles files = lab_files(g, lab);
+    const std::string& missing = files.missing;
     if (!missing.empty()) {
       std::lock_guard<std::mutex> lock(g.mutex);
       const std::string why = "The submission has no " + missing + ".";
@@ -473,7 +302,7 @@ class Grader {
     const std::string what = "lab " + lab.id + " build";
     // Its own cases: another file (a resubmission) draws others, the same files the same.
     if (!c_.options.seed.empty()) {
-      const std::string seed = submission_seed(c_.options.seed, lab.id, contents);
+      const std::string seed = submission_seed(c_.options.seed, lab.id, files.contents);
       std::lock_guard<std::mutex> lock(g.mutex);
       g.seeds[l] = seed;
     }
@@ -481,7 +310,7 @@ class Grader {
     std::string folder;
     {
       std::lock_guard<std::mutex> lock(cache_.mutex);
-      auto& found = cache_.entries[key];
+      auto& found = cache_.entries[files.key];
       if (found && !found->done) {  // the same files are being built: their steps follow that build
         {
           std::lock_guard<std::mutex> held(g.mutex);
@@ -502,32 +331,8 @@ class Grader {
       }
       entry = found;
     }
-    if (!folder.empty()) {
-      const auto start = std::chrono::steady_clock::now();
-      try {
-        fs::create_directories(folder);
-        fs::permissions(folder, fs::perms(0711));
-        entry->build = build_lab(c_.paths, lab, c_.recipes.at(&lab), files, folder, c_.sandbox, limit);
-      } catch (const std::exception& e) {
-        entry->build = LabBuild{};
-        entry->build.errors = std::string("the grader could not build it: ") + e.what();
-      }
-      entry->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      entry->limit = limit;
-      g.budget.spend(limit, entry->seconds, what);
-      std::vector<std::function<void(const BuildCache::Entry&)>> waiting;
-      {
-        std::lock_guard<std::mutex> lock(cache_.mutex);
-        entry->done = true;
-        waiting.swap(entry->waiting);
-        // Cut short by this submission's budget, not by its files: the next submission
-        // with the same files builds them again.
-        if (entry->build.timed_out && limit < kBuildSeconds) cache_.entries.erase(key);
-      }
-      for (auto& then : waiting) then(*entry);
-    } else {
-      g.budget.spend(limit, entry->seconds, what);
-    }
+    if (!folder.empty()) build_into(*entry, lab, files, folder, limit);
+    g.budget.spend(limit, entry->seconds, what);
     built(i, l, *entry);
   }
 
@@ -600,7 +405,9 @@ class Grader {
                    " s left of its own " + points(c_.options.timeout) +
                    " s; the report's time budget line says what used it)";
     } else {
-      s.feedback = feedback(r, lab, programs, c_, g.seeds[l], g.budget);
+      const StepOptions describe =
+          graded_step_options(fs::path(programs.answerer).parent_path().string(), c_, g.seeds[l]);
+      s.feedback = feedback(r, lab, programs, describe, g.budget);
       s.why = first_why(r);
     }
     std::lock_guard<std::mutex> lock(g.mutex);
@@ -696,45 +503,30 @@ void fit_envelope(Context& c, const Envelope& envelope) {
               << ": the grader runs in " << envelope.description << "\n";
 }
 
-}  // namespace
-
-int grade(const Paths& paths, const GradeOptions& options) {
-  if (options.submissions.empty()) {
-    std::cerr << "labkit grade: name at least one submission (a folder, a .zip or a .tar.gz)\n";
-    return 2;
-  }
-  Assignment assignment = options.assignment.empty() ? Assignment{} : parse_assignment(options.assignment);
-  const Manifest manifest = restrict_to(load_manifest(paths.source + "/grading/manifest.json"), assignment);
-  const std::optional<Roster> roster =
-      options.roster.empty() ? std::nullopt : std::optional<Roster>(load_roster(options.roster));
-  Context c(paths, options);
+// The labs asked for that the kit builds; a lab in the manifest and labs/ whose build the
+// kit has no record of (its labkit_add_lab line still commented) is named, not graded.
+std::vector<const Lab*> labs_to_grade(const Paths& paths, const Manifest& manifest, const GradeOptions& options) {
+  std::vector<const Lab*> labs;
   for (const Lab& lab : manifest.labs) {
     const bool wanted =
         options.labs.empty() || std::find_if(options.labs.begin(), options.labs.end(), [&](const std::string& id) {
                                   return id == lab.id || "0" + id == lab.id || id == lab.stem();
                                 }) != options.labs.end();
     if (!wanted || !fs::is_directory(paths.source + "/labs/" + lab.stem())) continue;  // a lab not written yet
-    // A lab whose folder exists but which the kit does not build yet (its labkit_add_lab
-    // line is still commented) cannot be graded: said once, and the others are.
     if (!fs::exists(recipe_record(paths, lab))) {
       std::cerr << "labkit grade: lab " << lab.id << " is in grading/manifest.json and labs/, but the kit's build has "
                 << "no record of it (is its labkit_add_lab line in CMakeLists.txt?): not graded\n";
       continue;
     }
-    c.labs.push_back(&lab);
+    labs.push_back(&lab);
   }
-  if (c.labs.empty()) {
-    std::cerr << "labkit grade: no lab to grade (the kit has none of those asked for)\n";
-    return 2;
-  }
-  // Before any work: a class whose names clash is not graded at all.
-  const Submissions found = find_submissions(options.submissions, c.labs, kClassFiles);
-  if (!found.error.empty()) {
-    std::cerr << "labkit grade: " << found.error << "\n";
-    return 2;
-  }
-  for (const std::string& line : found.classes) std::cerr << "labkit grade: " << line << "\n";
-  for (const Lab* lab : c.labs) c.recipes[lab] = load_recipe(paths, *lab);
+  return labs;
+}
+
+// What every report says of the run: its seed, cases, assignment, sandbox and limits, and
+// how to grade one submission again; a missing or short secret is warned of.
+void describe_run(Context& c, const Assignment& assignment) {
+  const GradeOptions& options = c.options;
   c.run.seed_kind = options.seed.empty() ? "public" : "secret";
   if (!options.seed.empty()) {
     c.run.regrade = "./labkit grade <this submission> --seed <your secret>";
@@ -751,15 +543,35 @@ int grade(const Paths& paths, const GradeOptions& options) {
                  "which students can see and hard-code\n";
   else if (options.seed.size() < 8)
     std::cerr << "labkit grade: a secret seed this short can be guessed; use a long phrase\n";
+}
 
-  // The scratch root: in $TMPDIR when it is set, as for any program, else in /tmp.
+// The scratch root: in $TMPDIR when it is set, as for any program, else in /tmp.
+std::string make_scratch() {
   const char* tmp = std::getenv("TMPDIR");
   std::string work_template = std::string(tmp && *tmp == '/' ? tmp : "/tmp") + "/labkit-grade.XXXXXX";
   if (!mkdtemp(work_template.data())) throw std::runtime_error("cannot make a scratch folder in " + work_template);
-  c.work = work_template;
-  const RemovedAtEnd scratch{c.work};
-  fs::permissions(c.work, fs::perms(0711));
+  fs::permissions(work_template, fs::perms(0711));
+  return work_template;
+}
 
+// A class's own files: class.csv, gradebook.csv and the class page.
+void write_class_files(const std::vector<SubmissionGrade>& grades, const Context& c, const Assignment& assignment,
+                       const std::optional<Roster>& roster, double seconds) {
+  const fs::path out(c.options.out);
+  write_file(out / "class.csv", class_csv(grades));
+  const Gradebook book = gradebook_csv(grades, assignment.name, roster ? &*roster : nullptr);
+  write_file(out / "gradebook.csv", book.csv);
+  for (const std::string& note : book.notes) std::cerr << "labkit grade: gradebook.csv: " << note << "\n";
+  const std::string page = write_class_page(grades, c.run, c.options.out, seconds, c.work + "/plots");
+  std::cout << "\n"
+            << term::bold("Class") << ": " << grades.size() << " submissions graded in " << points(seconds)
+            << " s with " << c.jobs << (c.jobs == 1 ? " worker" : " workers") << "; " << (out / "class.csv").string()
+            << ", gradebook.csv, " << page << "\n";
+}
+
+// Grades every submission found, writing each one's results as it ends; true when every
+// result could be written. The grades in `grades`, in the order found.
+bool grade_all(Context& c, const Submissions& found, std::vector<SubmissionGrade>& grades) {
   const bool single = !found.a_class;
   std::vector<std::unique_ptr<Graded>> all;
   for (std::size_t i = 0; i < found.paths.size(); ++i) {
@@ -769,15 +581,12 @@ int grade(const Paths& paths, const GradeOptions& options) {
     all.back()->work = c.work + "/" + std::to_string(i);
   }
   const auto folder_of = [&](const Graded& g) {
-    return single ? fs::path(options.out) : fs::path(options.out) / g.name;
+    return single ? fs::path(c.options.out) : fs::path(c.options.out) / g.name;
   };
-
-  std::vector<SubmissionGrade> grades(all.size());
   std::mutex print;
   std::atomic<bool> trouble{false};  // the grader's own: results it could not write
-  const auto start = std::chrono::steady_clock::now();
   Grader grader(c, all, [&](Graded& g) {
-    make_presentable(g.grade, secrets_of(g, options.seed));
+    make_presentable(g.grade, secrets_of(g, c.options.seed));
     std::string unwritten;
     try {
       write_results(g.grade, folder_of(g), c);
@@ -793,32 +602,58 @@ int grade(const Paths& paths, const GradeOptions& options) {
   grader.progress = [&](Graded& g) {
     std::lock_guard<std::mutex> lock(g.writing);
     SubmissionGrade now = Grader::so_far(g);
-    make_presentable(now, secrets_of(g, options.seed));
+    make_presentable(now, secrets_of(g, c.options.seed));
     try {
       write_file(folder_of(g) / "results.json", gradescope_results(now, c.run).dump(2) + "\n");
     } catch (const std::exception&) {  // said once, when the final write fails too
     }
   };
   grader.run();
-  for (std::size_t i = 0; i < all.size(); ++i) grades[i] = all[i]->grade;
+  grades.clear();
+  for (const auto& g : all) grades.push_back(g->grade);
+  return !trouble;
+}
 
+}  // namespace
+
+int grade(const Paths& paths, const GradeOptions& options) {
+  if (options.submissions.empty()) {
+    std::cerr << "labkit grade: name at least one submission (a folder, a .zip or a .tar.gz)\n";
+    return 2;
+  }
+  Assignment assignment = options.assignment.empty() ? Assignment{} : parse_assignment(options.assignment);
+  const Manifest manifest = restrict_to(load_manifest(paths.source + "/grading/manifest.json"), assignment);
+  const std::optional<Roster> roster =
+      options.roster.empty() ? std::nullopt : std::optional<Roster>(load_roster(options.roster));
+  Context c(paths, options);
+  c.labs = labs_to_grade(paths, manifest, options);
+  if (c.labs.empty()) {
+    std::cerr << "labkit grade: no lab to grade (the kit has none of those asked for)\n";
+    return 2;
+  }
+  // Before any work: a class whose names clash is not graded at all.
+  const Submissions found = find_submissions(options.submissions, c.labs, kClassFiles);
+  if (!found.error.empty()) {
+    std::cerr << "labkit grade: " << found.error << "\n";
+    return 2;
+  }
+  for (const std::string& line : found.classes) std::cerr << "labkit grade: " << line << "\n";
+  for (const Lab* lab : c.labs) c.recipes[lab] = load_recipe(paths, *lab);
+  describe_run(c, assignment);
+  c.work = make_scratch();
+  const RemovedAtEnd scratch{c.work};
+
+  const auto start = std::chrono::steady_clock::now();
+  std::vector<SubmissionGrade> grades;
+  const bool written = grade_all(c, found, grades);
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (!single) {
-    write_file(fs::path(options.out) / "class.csv", class_csv(grades));
-    const Gradebook book = gradebook_csv(grades, assignment.name, roster ? &*roster : nullptr);
-    write_file(fs::path(options.out) / "gradebook.csv", book.csv);
-    for (const std::string& note : book.notes) std::cerr << "labkit grade: gradebook.csv: " << note << "\n";
-    const std::string page = write_class_page(grades, c.run, options.out, seconds, c.work + "/plots");
-    std::cout << "\n"
-              << term::bold("Class") << ": " << grades.size() << " submissions graded in " << points(seconds)
-              << " s with " << c.jobs << (c.jobs == 1 ? " worker" : " workers") << "; "
-              << (fs::path(options.out) / "class.csv").string() << ", gradebook.csv, " << page << "\n";
-  } else {
+  if (found.a_class)
+    write_class_files(grades, c, assignment, roster, seconds);
+  else
     std::cout << "\nResults: " << (fs::path(options.out) / "results.json").string()
               << ", junit.xml, report.txt, steps.tsv\n";
-  }
-  if (trouble) std::cerr << "labkit grade: the grader had trouble of its own (above, or in a submission's results)\n";
-  return trouble ? 1 : 0;
+  if (!written) std::cerr << "labkit grade: the grader had trouble of its own (above, or in a submission's results)\n";
+  return written ? 0 : 1;
 }
 
 }  // namespace runner
