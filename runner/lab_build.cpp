@@ -253,6 +253,80 @@ const std::set<std::string>& runtime_symbols() {
   return symbols;
 }
 
+namespace {
+
+// One compile of the student's file, as the recipe's command gives it, rewritten: its
+// source the submission's copy, its object in `out`, no dependency files, and `-H` (the
+// headers it reads, for the audit). `readable`: what the sandbox lets the compiler read.
+struct CompileCommand {
+  std::vector<std::string> argv, readable;
+};
+CompileCommand compile_command(const Paths& paths, const std::string& lab_folder, const Command& command,
+                               const std::string& source, const std::string& copy, const std::string& object,
+                               const includes::Rule& rule, const std::string& src) {
+  CompileCommand c;
+  c.readable = {src};
+  for (std::size_t i = 0; i < command.argv.size(); ++i) {
+    std::string word = command.argv[i];
+    if (word == "-o" && i + 1 < command.argv.size()) {
+      c.argv.insert(c.argv.end(), {"-o", object});
+      ++i;
+      continue;
+    }
+    if ((word == "-MF" || word == "-MT" || word == "-MQ") && i + 1 < command.argv.size()) {
+      ++i;
+      continue;
+    }
+    if (word == "-MD" || word == "-MMD") continue;
+    if (absolute_in(command.directory, word) == source) word = copy;
+    c.argv.push_back(word);
+    // What the compiler reads: include folders and forced includes (the precompiled
+    // header beside them). The kit's root stands for common/ and labs/ only.
+    std::string path = word;
+    if (word.rfind("-I", 0) == 0) path = word.substr(2);
+    if (path.empty() || path[0] != '/' || !fs::exists(path)) continue;
+    if (fs::equivalent(path, paths.source)) {
+      const std::vector<std::string> allowed = includes::kit_paths(rule, lab_folder);
+      c.readable.insert(c.readable.end(), allowed.begin(), allowed.end());
+    } else if (fs::is_directory(path)) {
+      if (path.rfind(paths.source + "/", 0) == 0 || path.rfind(paths.build + "/", 0) == 0) c.readable.push_back(path);
+    } else if (path.rfind(paths.build + "/", 0) == 0) {
+      c.readable.push_back(fs::path(path).parent_path().string());
+    }
+  }
+  c.argv.push_back("-H");
+  return c;
+}
+
+// The link, as the recipe's command gives it: the student library replaced by the
+// compiled objects, the program written to `binary`.
+CompileCommand link_command(const LabRecipe& recipe, const std::vector<std::string>& objects,
+                            const std::string& binary) {
+  CompileCommand c;
+  for (std::size_t i = 0; i < recipe.link.argv.size(); ++i) {
+    const std::string& word = recipe.link.argv[i];
+    if (word == "-o" && i + 1 < recipe.link.argv.size()) {
+      c.argv.insert(c.argv.end(), {"-o", binary});
+      ++i;
+      continue;
+    }
+    const std::string path = absolute_in(recipe.link.directory, word);
+    if (path == recipe.student_library) {
+      c.argv.insert(c.argv.end(), objects.begin(), objects.end());
+      // No debug sections: a graded binary is run, never debugged, and this makes it
+      // 4 MB instead of 50 (a class of twenty writes a gigabyte less) and links faster.
+      c.argv.push_back("-Wl,--strip-debug");
+      continue;
+    }
+    const bool file = word[0] != '-' && fs::is_regular_file(path);
+    c.argv.push_back(file ? path : word);
+    if (file) c.readable.push_back(path);
+  }
+  return c;
+}
+
+}  // namespace
+
 LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
                    const std::map<std::string, std::string>& files, const std::string& folder, const Sandbox& sandbox,
                    double seconds) {
@@ -282,39 +356,11 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
     // kit's tree, and the headers it read are audited against it.
     includes::Rule rule = includes::rule_for(paths.source, lab_folder, command.argv);
     rule.folders.push_back((src / manifest_path).parent_path().string());  // the submission's own files
-    std::vector<std::string> argv, readable = {src.string()};
-    for (std::size_t i = 0; i < command.argv.size(); ++i) {
-      std::string word = command.argv[i];
-      if (word == "-o" && i + 1 < command.argv.size()) {
-        argv.insert(argv.end(), {"-o", object});
-        ++i;
-        continue;
-      }
-      if ((word == "-MF" || word == "-MT" || word == "-MQ") && i + 1 < command.argv.size()) {
-        ++i;
-        continue;
-      }
-      if (word == "-MD" || word == "-MMD") continue;
-      if (absolute_in(command.directory, word) == source) word = (src / manifest_path).string();
-      argv.push_back(word);
-      // What the compiler reads: include folders and forced includes (the precompiled
-      // header beside them). The kit's root stands for common/ and labs/ only.
-      std::string path = word;
-      if (word.rfind("-I", 0) == 0) path = word.substr(2);
-      if (path.empty() || path[0] != '/' || !fs::exists(path)) continue;
-      if (fs::equivalent(path, paths.source)) {
-        const std::vector<std::string> allowed = includes::kit_paths(rule, lab_folder);
-        readable.insert(readable.end(), allowed.begin(), allowed.end());
-      } else if (fs::is_directory(path)) {
-        if (path.rfind(paths.source + "/", 0) == 0 || path.rfind(paths.build + "/", 0) == 0) readable.push_back(path);
-      } else if (path.rfind(paths.build + "/", 0) == 0) {
-        readable.push_back(fs::path(path).parent_path().string());
-      }
-    }
-    argv.push_back("-H");  // the headers it reads, for the audit
+    const CompileCommand compile =
+        compile_command(paths, lab_folder, command, source, (src / manifest_path).string(), object, rule, src.string());
     Limits limits = build_limits(left());
     limits.kept_bytes = limits.flood_bytes = std::size_t(64) << 20;  // every header it read, or no build
-    const Confined c = sandbox.confine(argv, out.string(), readable, limits);
+    const Confined c = sandbox.confine(compile.argv, out.string(), compile.readable, limits);
     const Run r = run(c.argv, {}, c.limits, out.string());
     std::string output;
     const std::vector<includes::Header> headers = includes::split_output(r.output, &output);
@@ -343,27 +389,8 @@ LabBuild build_lab(const Paths& paths, const Lab& lab, const LabRecipe& recipe,
   }
 
   const std::string binary = (out / lab.answerer("submission")).string();
-  std::vector<std::string> argv, readable;
-  for (std::size_t i = 0; i < recipe.link.argv.size(); ++i) {
-    const std::string& word = recipe.link.argv[i];
-    if (word == "-o" && i + 1 < recipe.link.argv.size()) {
-      argv.insert(argv.end(), {"-o", binary});
-      ++i;
-      continue;
-    }
-    const std::string path = absolute_in(recipe.link.directory, word);
-    if (path == recipe.student_library) {
-      argv.insert(argv.end(), objects.begin(), objects.end());
-      // No debug sections: a graded binary is run, never debugged, and this makes it
-      // 4 MB instead of 50 (a class of twenty writes a gigabyte less) and links faster.
-      argv.push_back("-Wl,--strip-debug");
-      continue;
-    }
-    const bool file = word[0] != '-' && fs::is_regular_file(path);
-    argv.push_back(file ? path : word);
-    if (file) readable.push_back(path);
-  }
-  const Confined c = sandbox.confine(argv, out.string(), readable, build_limits(left()));
+  const CompileCommand link = link_command(recipe, objects, binary);
+  const Confined c = sandbox.confine(link.argv, out.string(), link.readable, build_limits(left()));
   const Run r = run(c.argv, {}, c.limits, out.string());
   if (!r.ok()) {
     b.timed_out = r.timed_out;
