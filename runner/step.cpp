@@ -190,6 +190,61 @@ std::string answerer_command(const Programs& programs, const StepOptions& option
   return nlohmann::json(launcher(answerer, confined.argv)).dump();
 }
 
+// The judge's environment for one step: where it writes its report and the case in
+// flight, how to start the answerer, and the cases to run. A secret seed never goes on a
+// command line or in the environment (which other processes could show): a file the
+// harness deletes, in the judge's folder.
+Environment judge_environment(const StepOptions& options, const std::string& scratch, const std::string& answerer) {
+  Environment env = {{variable::report, (fs::path(scratch) / "report.json").string()},
+                     {variable::inflight, (fs::path(scratch) / "inflight").string()},
+                     {variable::answerer, answerer}};
+  if (options.call_seconds > 0) env.push_back({variable::call_seconds, std::to_string(options.call_seconds)});
+  if (!options.seed.empty() && options.hide_seed) {
+    const fs::path seed_file = fs::path(scratch) / ".seed";
+    std::ofstream(seed_file) << options.seed;
+    fs::permissions(seed_file, fs::perms::owner_read | fs::perms::owner_write);
+    env.push_back({variable::seed_file, seed_file.string()});
+  } else if (!options.seed.empty()) {
+    env.push_back({variable::seed, options.seed});
+  }
+  if (options.cases > 0) env.push_back({variable::cases, std::to_string(options.cases)});
+  if (!options.replay.empty()) env.push_back({variable::replay, options.replay});
+  if (options.hide_seed) env.push_back({variable::hide_seed, "1"});
+  if (options.count_all) env.push_back({variable::count_all, "1"});
+  if (options.describe_only) env.push_back({variable::describe, "1"});
+  if (!options.record_examples.empty()) env.push_back({"LABKIT_RECORD_EXAMPLES", options.record_examples});
+  return env;
+}
+
+// What an abnormal end of the judge's process means, in the student's words.
+std::string abnormal_detail(const StepResult& r, const StepOptions& options) {
+  switch (r.status) {
+    case Status::crashed:  // the judge's process is the kit's: its death is never the student's code crashing
+      return r.run.signal ? "the kit's test process was killed by " + signal_name(r.run.signal)
+                          : "the kit's test program could not be run: " + r.run.output.substr(0, 300);
+    case Status::exited_early:
+      return "the kit's test process ended before its tests did, with exit status " + std::to_string(r.run.exit_code) +
+             ": a kit error, not yours (please report it)";
+    case Status::out_of_memory:
+      return "the kit's test process ran out of memory (std::bad_alloc" +
+             (options.limits.memory_bytes
+                  ? ", the limit is " + std::to_string(options.limits.memory_bytes >> 20) + " MB"
+                  : std::string()) +
+             ")";
+    case Status::kit_error:
+      for (const QueryResult& q : r.queries)
+        if (q.error.rfind("kit error", 0) == 0) return q.query + ": " + q.error;
+      return "";
+    case Status::timed_out:
+      return "the step did not finish within " + std::to_string(int(options.limits.seconds)) +
+             " s: the code under test is too slow for its cases (each call has a time limit too)";
+    case Status::flooded:
+      return "it printed more than " + std::to_string(options.limits.flood_bytes >> 20) +
+             " MB and was stopped (what the code under test prints counts: remove debug prints)";
+    default: return "";
+  }
+}
+
 }  // namespace
 
 StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, const StepOptions& options) {
@@ -210,70 +265,22 @@ StepResult run_step(const Programs& programs, const Lab& lab, const Step& step, 
     r.detail = r.run.output;
     return r;
   }
-  const fs::path report = fs::path(scratch) / "report.json";
-
   // Held until the step ends: the answerer's uid, and its control group (everything left
   // in it is killed then, and the group removed).
   std::shared_ptr<void> answerer_lease;
   const std::unique_ptr<StepGroup> group = answerer_group(options);
-  const fs::path inflight = fs::path(scratch) / "inflight";
-  Environment env = {
-      {variable::report, report.string()},
-      {variable::inflight, inflight.string()},
-      {variable::answerer, answerer_command(programs, options, answerer_scratch, group.get(), &answerer_lease)}};
-  if (options.call_seconds > 0) env.push_back({variable::call_seconds, std::to_string(options.call_seconds)});
-  if (!options.seed.empty() && options.hide_seed) {
-    // A secret seed never goes on a command line or in the environment (which other
-    // processes could show): a file the harness deletes, in the judge's folder.
-    const fs::path seed_file = fs::path(scratch) / ".seed";
-    std::ofstream(seed_file) << options.seed;
-    fs::permissions(seed_file, fs::perms::owner_read | fs::perms::owner_write);
-    env.push_back({variable::seed_file, seed_file.string()});
-  } else if (!options.seed.empty()) {
-    env.push_back({variable::seed, options.seed});
-  }
-  if (options.cases > 0) env.push_back({variable::cases, std::to_string(options.cases)});
-  if (!options.replay.empty()) env.push_back({variable::replay, options.replay});
-  if (options.hide_seed) env.push_back({variable::hide_seed, "1"});
-  if (options.count_all) env.push_back({variable::count_all, "1"});
-  if (options.describe_only) env.push_back({variable::describe, "1"});
-  if (!options.record_examples.empty()) env.push_back({"LABKIT_RECORD_EXAMPLES", options.record_examples});
+  const Environment env = judge_environment(
+      options, scratch, answerer_command(programs, options, answerer_scratch, group.get(), &answerer_lease));
   const std::string filter = "[lab" + lab.id + "][step" + std::to_string(step.number) + "]";
   r.run = run({programs.judge, filter}, env, options.limits, scratch);
-  read_report(report, r);
-  r.inflight = inflight_token(inflight);
+  read_report(fs::path(scratch) / "report.json", r);
+  r.inflight = inflight_token(fs::path(scratch) / "inflight");
   std::error_code ignored;
   fs::remove_all(scratch, ignored);
   if (answerer_scratch != scratch) fs::remove_all(answerer_scratch, ignored);
 
   r.status = decide(r);
-  if (r.status == Status::crashed) {
-    // The judge's process is the kit's: its death is never the student's code crashing.
-    if (r.run.signal)
-      r.detail = "the kit's test process was killed by " + signal_name(r.run.signal);
-    else
-      r.detail = "the kit's test program could not be run: " + r.run.output.substr(0, 300);
-  }
-  if (r.status == Status::exited_early) {
-    r.detail = "the kit's test process ended before its tests did, with exit status " +
-               std::to_string(r.run.exit_code) + ": a kit error, not yours (please report it)";
-  }
-  if (r.status == Status::out_of_memory)
-    r.detail =
-        "the kit's test process ran out of memory (std::bad_alloc" +
-        (options.limits.memory_bytes ? ", the limit is " + std::to_string(options.limits.memory_bytes >> 20) + " MB"
-                                     : std::string()) +
-        ")";
-  if (r.status == Status::kit_error)
-    for (const QueryResult& q : r.queries)
-      if (q.error.rfind("kit error", 0) == 0 && r.detail.empty()) r.detail = q.query + ": " + q.error;
-  if (r.status == Status::timed_out)
-    r.detail = "the step did not finish within " + std::to_string(int(options.limits.seconds)) +
-               " s: the code under test is too slow for its cases (each call has a time limit too)";
-  if (r.status == Status::flooded)
-    r.detail = "it printed more than " + std::to_string(options.limits.flood_bytes >> 20) +
-               " MB and was stopped (what the code under test prints counts: remove debug prints)";
-
+  r.detail = abnormal_detail(r, options);
   for (const QueryResult& q : r.queries) {
     if (q.kind == "examples")
       r.examples += q.cases;
