@@ -129,6 +129,65 @@ bool apply_limits(const Limits& limits) {
   return true;
 }
 
+namespace {
+
+// A child's time limit: SIGTERM to its group at the deadline (the harness then names the
+// case it was running), SIGKILL two seconds later.
+struct Deadline {
+  pid_t pid;
+  Clock::time_point at, kill_at{};
+  bool timed_out = false;
+
+  void enforce(Clock::time_point now) {
+    if (!timed_out && now >= at) {
+      timed_out = true;
+      kill(-pid, SIGTERM);
+      kill_at = now + std::chrono::seconds(2);
+    }
+    if (kill_at != Clock::time_point{} && now >= kill_at) kill(-pid, SIGKILL);
+  }
+  Clock::time_point next() const { return kill_at != Clock::time_point{} ? kill_at : at; }
+};
+
+// Reads the child's output until its pipe closes (or, once the child is gone, a second
+// more: a process it started outside its group may hold the pipe), within its limits.
+// Whether it was reaped meanwhile, with `status`.
+bool read_output(pid_t pid, int fd, const Limits& limits, const Observer& observe, Deadline& deadline, Capture& capture,
+                 Run& result, int& status) {
+  bool open = true, exited = false;
+  Clock::time_point drained_at{};
+  char buffer[1 << 16];
+  while (open) {
+    const auto now = Clock::now();
+    if (!exited && waitpid(pid, &status, WNOHANG) == pid) {
+      exited = true;
+      drained_at = now + std::chrono::seconds(1);
+    }
+    if (exited && now >= drained_at) break;
+    deadline.enforce(now);
+    const int wait_ms = int(
+        std::max<long long>(10, std::chrono::duration_cast<std::chrono::milliseconds>(deadline.next() - now).count()));
+    pollfd p{fd, POLLIN, 0};
+    const int ready = poll(&p, 1, std::min(wait_ms, 1000));
+    if (ready < 0 && errno != EINTR) break;
+    if (ready <= 0) continue;
+    const ssize_t n = read(fd, buffer, sizeof buffer);
+    if (n <= 0) {
+      open = n < 0 && (errno == EINTR || errno == EAGAIN);
+      continue;
+    }
+    capture.add(buffer, std::size_t(n));
+    if (observe) observe(buffer, std::size_t(n));
+    if (!result.flooded && capture.total() > limits.flood_bytes) {
+      result.flooded = true;
+      kill(-pid, SIGKILL);
+    }
+  }
+  return exited;
+}
+
+}  // namespace
+
 Run run(const std::vector<std::string>& argv, const Environment& env, const Limits& limits,
         const std::string& directory, const Observer& observe) {
   Run result;
@@ -153,61 +212,20 @@ Run run(const std::vector<std::string>& argv, const Environment& env, const Limi
   close(pipe_fds[1]);
 
   Capture capture(limits.kept_bytes);
-  const auto deadline = start + std::chrono::duration<double>(limits.seconds);
-  Clock::time_point kill_at{};
-  bool open = true, exited = false;
-  Clock::time_point drained_at{};
+  // At most 1e7 s (four months): a Clock::duration holds that without overflow.
+  const auto limit = std::chrono::duration<double>(std::min(limits.seconds, 1e7));
+  Deadline deadline{pid, start + std::chrono::duration_cast<Clock::duration>(limit)};
   int status = 0;
-  char buffer[1 << 16];
-  while (open) {
-    const auto now = Clock::now();
-    if (!exited && waitpid(pid, &status, WNOHANG) == pid) {
-      exited = true;
-      drained_at = now + std::chrono::seconds(1);
-    }
-    // The child is gone and a process it started outside its group (a daemon) holds the
-    // pipe: its output is not waited for (the caller's cleanup ends it).
-    if (exited && now >= drained_at) break;
-    if (!result.timed_out && now >= deadline) {
-      result.timed_out = true;
-      kill(-pid, SIGTERM);  // lets the harness name the case it was running
-      kill_at = now + std::chrono::seconds(2);
-    }
-    if (kill_at != Clock::time_point{} && now >= kill_at) kill(-pid, SIGKILL);
-    const auto until = kill_at != Clock::time_point{} ? kill_at : deadline;
-    const int wait_ms =
-        int(std::max<long long>(10, std::chrono::duration_cast<std::chrono::milliseconds>(until - now).count()));
-    pollfd p{pipe_fds[0], POLLIN, 0};
-    const int ready = poll(&p, 1, std::min(wait_ms, 1000));
-    if (ready < 0 && errno != EINTR) break;
-    if (ready <= 0) continue;
-    const ssize_t n = read(pipe_fds[0], buffer, sizeof buffer);
-    if (n <= 0) {
-      open = n < 0 && (errno == EINTR || errno == EAGAIN);
-      continue;
-    }
-    capture.add(buffer, std::size_t(n));
-    if (observe) observe(buffer, std::size_t(n));
-    if (!result.flooded && capture.total() > limits.flood_bytes) {
-      result.flooded = true;
-      kill(-pid, SIGKILL);
-    }
-  }
+  bool exited = read_output(pid, pipe_fds[0], limits, observe, deadline, capture, result, status);
   close(pipe_fds[0]);
-
   // The pipe closed: the child is gone or closed its output. Wait, still within limits.
   while (!exited) {
     if (waitpid(pid, &status, WNOHANG) == pid) break;
-    const auto now = Clock::now();
-    if (!result.timed_out && now >= deadline) {
-      result.timed_out = true;
-      kill(-pid, SIGTERM);
-      kill_at = now + std::chrono::seconds(2);
-    }
-    if (kill_at != Clock::time_point{} && now >= kill_at) kill(-pid, SIGKILL);
+    deadline.enforce(Clock::now());
     usleep(10000);
   }
   kill(-pid, SIGKILL);  // anything it left behind in its group
+  result.timed_out = deadline.timed_out;
   result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
   result.output_size = capture.total();
   result.output = capture.text();
