@@ -257,6 +257,120 @@ std::string Answerer::ended_how() {
   return how;
 }
 
+namespace {
+
+// What goes to the answerer: the requests not answered yet, framed, and the replies to
+// its served calls, which go out between two requests, never inside one.
+class Outbox {
+ public:
+  Outbox(const std::vector<std::string>& requests, std::size_t from) {
+    std::size_t size = 0;
+    for (std::size_t i = from; i < requests.size(); ++i) size += sizeof(std::uint64_t) + requests[i].size();
+    requests_.reserve(size);
+    for (std::size_t i = from; i < requests.size(); ++i) append_frame(requests_, requests[i]);
+  }
+  bool pending() const { return written_ < requests_.size() || replied_ < replies_.size(); }
+  std::size_t unsent_replies() const { return replies_.size(); }
+  void reply(const std::string& reply) { append_frame(replies_, reply); }
+
+  // Writes what the pipe takes: the rest of the request being sent, else a reply.
+  void send(int fd) {
+    if (written_ == frame_end_ && replied_ < replies_.size()) {
+      const ssize_t n = write(fd, replies_.data() + replied_, replies_.size() - replied_);
+      if (n > 0) replied_ += std::size_t(n);
+      if (replied_ == replies_.size()) replies_.clear(), replied_ = 0;
+      return;
+    }
+    if (written_ == frame_end_) {
+      std::uint64_t n = 0;
+      std::memcpy(&n, requests_.data() + written_, sizeof n);
+      frame_end_ = written_ + sizeof n + std::size_t(n);
+    }
+    const ssize_t n = write(fd, requests_.data() + written_, frame_end_ - written_);
+    if (n > 0) written_ += std::size_t(n);
+  }
+
+ private:
+  static void append_frame(std::string& to, const std::string& payload) {
+    const std::uint64_t n = payload.size();
+    to.append(reinterpret_cast<const char*>(&n), sizeof n).append(payload);
+  }
+  std::string requests_, replies_;
+  std::size_t written_ = 0, frame_end_ = 0;  // requests_[written_, frame_end_): the request being sent
+  std::size_t replied_ = 0;
+};
+
+// Waits for one of `fds` to be ready, for at most `wait_ms`. A few quick looks first: the
+// answerer often replies within microseconds (a served call's round trip), and waking
+// from sleep costs far more on a VM. Each look yields the processor, so that on a busy
+// machine the answerer runs instead.
+int wait_ready(pollfd (&fds)[3], long long wait_ms) {
+  int ready = 0;
+  for (int spin = 0; spin < kSpins && ready == 0; ++spin)
+    if ((ready = poll(fds, 3, 0)) == 0) sched_yield();
+  if (ready == 0) ready = poll(fds, 3, int(std::min<long long>(wait_ms, 1000)));
+  return ready;
+}
+
+}  // namespace
+
+std::pair<Response::Kind, std::string> Answerer::serve(const std::vector<std::string>& requests, std::size_t& received,
+                                                       std::vector<Response>& out, int& failed_starts) {
+  Outbox outbox(requests, received);
+  Frames frames;
+  auto deadline = Clock::now() + call_limit_ + (greeted_ ? std::chrono::milliseconds(0) : std::chrono::seconds(10));
+  // Each whole frame that arrived: the greeting, a given function's call (counted in this
+  // call's ledger, and answered if served; the call's time limit goes on running), or an
+  // answer. Throws std::runtime_error for anything else.
+  const auto take_frames = [&] {
+    std::string payload;
+    while (received < requests.size() &&
+           frames.next(payload, greeted_ ? largest_answer(requests[received].size()) : kGreetingLimit)) {
+      if (!greeted_) {
+        if (payload != kHello) throw std::runtime_error("it did not greet as an answerer does");
+        greeted_ = true;
+        failed_starts = 0;
+      } else if (!payload.empty() && (payload[0] == char(Status::given) || payload[0] == char(Status::counted))) {
+        std::string reply;
+        if (given::take_frame(static_cast<unsigned char>(payload[0]), payload.substr(1), out[received].served, reply)) {
+          if (outbox.unsent_replies() > kUnreadReplies)
+            throw std::runtime_error("it made given calls without reading their results");
+          outbox.reply(reply);
+        }
+        continue;
+      } else {
+        out[received].kind = Response::Kind::answered;
+        out[received++].bytes = std::move(payload);
+      }
+      deadline = Clock::now() + call_limit_;
+    }
+  };
+  while (received < requests.size()) {
+    pollfd fds[3] = {{from_, POLLIN, 0}, {outbox.pending() ? to_ : -1, POLLOUT, 0}, {output_, POLLIN, 0}};
+    const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (wait <= 0)
+      return {Response::Kind::timed_out, "it did not answer within " +
+                                             std::to_string(call_limit_.count() / 1000.0).substr(0, 4) +
+                                             " s (the time limit of one call)"};
+    const int ready = wait_ready(fds, wait);
+    if (ready < 0 && errno != EINTR) return {Response::Kind::crashed, std::string("poll failed: ") + strerror(errno)};
+    if (fds[2].revents & (POLLIN | POLLHUP | POLLERR)) drain_output();
+    if (fds[1].revents & (POLLOUT | POLLERR | POLLHUP)) outbox.send(to_);
+    if (!(fds[0].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+    char buffer[1 << 16];
+    const ssize_t n = read(from_, buffer, sizeof buffer);
+    if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) return {Response::Kind::crashed, ended_how()};
+    if (n > 0) frames.add(buffer, std::size_t(n));
+    try {
+      take_frames();
+    } catch (const std::runtime_error& e) {
+      return {Response::Kind::broken, std::string("its process wrote something that is not an answer: ") + e.what() +
+                                          " (does the code write to file descriptor 4?)"};
+    }
+  }
+  return {Response::Kind::answered, ""};
+}
+
 std::vector<Response> Answerer::exchange(const std::vector<std::string>& requests) {
   std::vector<Response> out(requests.size());
   std::size_t received = 0;
@@ -279,102 +393,7 @@ std::vector<Response> Answerer::exchange(const std::vector<std::string>& request
       continue;
     }
     // Send every request not answered yet, and read answers as they come.
-    std::string outbox;
-    std::size_t size = 0;
-    for (std::size_t i = received; i < requests.size(); ++i) size += sizeof(std::uint64_t) + requests[i].size();
-    outbox.reserve(size);
-    for (std::size_t i = received; i < requests.size(); ++i) {
-      const std::uint64_t n = requests[i].size();
-      outbox.append(reinterpret_cast<const char*>(&n), sizeof n).append(requests[i]);
-    }
-    // outbox[written, frame_end) is the rest of the request being sent; the replies to
-    // served calls go out between two requests, never inside one.
-    std::size_t written = 0, frame_end = 0;
-    std::string replies;
-    std::size_t replied = 0;
-    const auto send_some = [&] {
-      if (written == frame_end && replied < replies.size()) {
-        const ssize_t n = write(to_, replies.data() + replied, replies.size() - replied);
-        if (n > 0) replied += std::size_t(n);
-        if (replied == replies.size()) replies.clear(), replied = 0;
-        return;
-      }
-      if (written == frame_end) {
-        std::uint64_t n = 0;
-        std::memcpy(&n, outbox.data() + written, sizeof n);
-        frame_end = written + sizeof n + std::size_t(n);
-      }
-      const ssize_t n = write(to_, outbox.data() + written, frame_end - written);
-      if (n > 0) written += std::size_t(n);
-    };
-    Frames frames;
-    auto deadline = Clock::now() + call_limit_ + (greeted_ ? std::chrono::milliseconds(0) : std::chrono::seconds(10));
-    std::string problem;  // why this run of the answerer ended early
-    Response::Kind kind = Response::Kind::crashed;
-    while (received < requests.size() && problem.empty()) {
-      const bool to_send = written < outbox.size() || replied < replies.size();
-      pollfd fds[3] = {{from_, POLLIN, 0}, {to_send ? to_ : -1, POLLOUT, 0}, {output_, POLLIN, 0}};
-      const auto wait = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
-      if (wait <= 0) {
-        kind = Response::Kind::timed_out;
-        problem = "it did not answer within " + std::to_string(call_limit_.count() / 1000.0).substr(0, 4) +
-                  " s (the time limit of one call)";
-        break;
-      }
-      // A few quick looks before sleeping: the answerer often replies within microseconds
-      // (a served call's round trip), and waking from sleep costs far more on a VM. Each
-      // look yields the processor, so that on a busy machine the answerer runs instead.
-      int ready = 0;
-      for (int spin = 0; spin < kSpins && ready == 0; ++spin)
-        if ((ready = poll(fds, 3, 0)) == 0) sched_yield();
-      if (ready == 0) ready = poll(fds, 3, int(std::min<long long>(wait, 1000)));
-      if (ready < 0 && errno != EINTR) {
-        problem = std::string("poll failed: ") + strerror(errno);
-        break;
-      }
-      if (fds[2].revents & (POLLIN | POLLHUP | POLLERR)) drain_output();
-      if (fds[1].revents & (POLLOUT | POLLERR | POLLHUP)) send_some();
-      if (fds[0].revents & (POLLIN | POLLHUP | POLLERR)) {
-        char buffer[1 << 16];
-        const ssize_t n = read(from_, buffer, sizeof buffer);
-        if (n == 0 || (n < 0 && errno != EAGAIN && errno != EINTR)) {
-          problem = ended_how();
-          break;
-        }
-        if (n > 0) frames.add(buffer, std::size_t(n));
-        std::string payload;
-        try {
-          while (received < requests.size() &&
-                 frames.next(payload, greeted_ ? largest_answer(requests[received].size()) : kGreetingLimit)) {
-            if (!greeted_) {
-              if (payload != kHello) throw std::runtime_error("it did not greet as an answerer does");
-              greeted_ = true;
-              failed_starts = 0;
-            } else if (!payload.empty() && (payload[0] == char(Status::given) || payload[0] == char(Status::counted))) {
-              // A given function's call, counted in this call's ledger (and answered, if
-              // served); the time limit of the call goes on running.
-              std::string reply;
-              if (given::take_frame(static_cast<unsigned char>(payload[0]), payload.substr(1), out[received].served,
-                                    reply)) {
-                if (replies.size() > kUnreadReplies)
-                  throw std::runtime_error("it made given calls without reading their results");
-                const std::uint64_t n = reply.size();
-                replies.append(reinterpret_cast<const char*>(&n), sizeof n).append(reply);
-              }
-              continue;
-            } else {
-              out[received].kind = Response::Kind::answered;
-              out[received++].bytes = std::move(payload);
-            }
-            deadline = Clock::now() + call_limit_;
-          }
-        } catch (const std::runtime_error& e) {
-          kind = Response::Kind::broken;
-          problem = std::string("its process wrote something that is not an answer: ") + e.what() +
-                    " (does the code write to file descriptor 4?)";
-        }
-      }
-    }
+    const auto [kind, problem] = serve(requests, received, out, failed_starts);
     if (problem.empty()) break;
     // This run of the answerer is over: the call it was on gets the blame, the rest
     // are sent again to a new one.

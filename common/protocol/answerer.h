@@ -37,6 +37,7 @@
 #include <stdexcept>
 #include <string>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace labkit::remote {
@@ -110,6 +111,10 @@ class Answerer {
  private:
   explicit Answerer(std::vector<std::string> argv);
   std::vector<Response> exchange(const std::vector<std::string>& requests);
+  // One run of the running answerer over requests[received...]: sends them, reads the
+  // answers into `out`. The problem that ended it early and its kind; "" when all came.
+  std::pair<Response::Kind, std::string> serve(const std::vector<std::string>& requests, std::size_t& received,
+                                               std::vector<Response>& out, int& failed_starts);
   bool start();
   void stop(bool kill_it);
   std::string ended_how();
