@@ -132,6 +132,8 @@ class App {
   void panel();
   void caption();
   void steps_table();
+  void draw_frame(GLFWwindow* window, bool offscreen, GLuint framebuffer, double& update_ms);
+  int write_offscreen(Offscreen& target, double ms_per_frame, double cpu_ms_per_frame, double update_ms);
   void print_steps() const;
 
   Options options_;
@@ -295,6 +297,66 @@ void App::print_steps() const {
   }
 }
 
+// One frame: the panel or the caption, the scene brought up to date, drawn into
+// `framebuffer` (0: the window) with the handles and the interface on top.
+void App::draw_frame(GLFWwindow* window, bool offscreen, GLuint framebuffer, double& update_ms) {
+  glfwPollEvents();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  int fb_width, fb_height, win_width, win_height;
+  glfwGetFramebufferSize(window, &fb_width, &fb_height);
+  glfwGetWindowSize(window, &win_width, &win_height);
+  if (offscreen) fb_width = win_width = options_.width, fb_height = win_height = options_.height;
+  const bool show_panel = !options_.figure;
+  const int view_width = std::max(1, win_width - (show_panel ? int(kPanelWidth) : 0));
+  const float scale = float(fb_width) / float(std::max(win_width, 1));
+  if (!offscreen) input(view_width, win_height);
+  if (show_panel)
+    panel();
+  else
+    caption();
+  if (dirty_) {
+    const auto u0 = std::chrono::steady_clock::now();
+    scene_->update();
+    update_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - u0).count();
+    dirty_ = false;
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, fb_width, fb_height);
+  glClearColor(palette::background.r, palette::background.g, palette::background.b, 1);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+  glViewport(0, 0, int(float(view_width) * scale), fb_height);
+  render_.begin(camera_.view(view_width, win_height));
+  Frame f{render_, show_exact_, options_.figure, focus_};
+  scene_->draw(f);
+  drag_.draw(scene_->handles(), render_);
+  render_.end();
+  glViewport(0, 0, fb_width, fb_height);
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+}
+
+// The last offscreen frame: the benchmark's line, and the screenshot with each step's
+// verdict.
+int App::write_offscreen(Offscreen& target, double ms, double cpu, double update_ms) {
+  if (options_.benchmark > 0)
+    std::printf(
+        "lab %s (%s): %.1f ms/frame (%.0f frames per second), %.1f ms of CPU per frame, over %d frames at "
+        "%dx%d, %zu triangles drawn, update %.1f ms, on %s\n",
+        kScenes[index_].lab, scene_->mode.c_str(), ms, 1000 / ms, cpu, options_.benchmark, options_.width,
+        options_.height, render_.triangles_drawn(), update_ms, reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  if (!options_.screenshot.empty()) {
+    const std::vector<unsigned char> pixels = target.read();
+    if (!stbi_write_png(options_.screenshot.c_str(), options_.width, options_.height, 4, pixels.data(),
+                        options_.width * 4))
+      return fail("cannot write " + options_.screenshot);
+    std::cout << "wrote " << options_.screenshot << " (" << options_.width << "x" << options_.height << ")\n";
+    print_steps();
+  }
+  return 0;
+}
+
 int App::run(GLFWwindow* window) {
   if (!render_.init(error_)) return fail(error_);
   const bool offscreen = !options_.screenshot.empty() || options_.benchmark > 0;
@@ -305,7 +367,6 @@ int App::run(GLFWwindow* window) {
   scene_->update();
   dirty_ = false;
   frame_camera();
-
   // CPU time of the whole process (llvmpipe's threads too): the work a frame costs,
   // whatever else the machine is doing.
   const auto cpu_ms = [] {
@@ -313,51 +374,12 @@ int App::run(GLFWwindow* window) {
     getrusage(RUSAGE_SELF, &u);
     return 1e3 * double(u.ru_utime.tv_sec + u.ru_stime.tv_sec) + 1e-3 * double(u.ru_utime.tv_usec + u.ru_stime.tv_usec);
   };
-  const auto t0 = std::chrono::steady_clock::now();
   double update_ms = 0, cpu_from = 0;
-  auto timed_from = t0;
+  auto timed_from = std::chrono::steady_clock::now();
   const int warm_up = 3;
   const int last = options_.benchmark > 0 ? warm_up + options_.benchmark : options_.frames;
   for (int frame = 0; !glfwWindowShouldClose(window); ++frame) {
-    glfwPollEvents();
-    ImGui_ImplOpenGL3_NewFrame();
-    ImGui_ImplGlfw_NewFrame();
-    ImGui::NewFrame();
-
-    int fb_width, fb_height, win_width, win_height;
-    glfwGetFramebufferSize(window, &fb_width, &fb_height);
-    glfwGetWindowSize(window, &win_width, &win_height);
-    if (offscreen) fb_width = win_width = options_.width, fb_height = win_height = options_.height;
-    const bool show_panel = !options_.figure;
-    const int view_width = std::max(1, win_width - (show_panel ? int(kPanelWidth) : 0));
-    const float scale = float(fb_width) / float(std::max(win_width, 1));
-
-    if (!offscreen) input(view_width, win_height);
-    if (show_panel)
-      panel();
-    else
-      caption();
-    if (dirty_) {
-      const auto u0 = std::chrono::steady_clock::now();
-      scene_->update();
-      update_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - u0).count();
-      dirty_ = false;
-    }
-
-    glBindFramebuffer(GL_FRAMEBUFFER, offscreen ? target.msaa : 0);
-    glViewport(0, 0, fb_width, fb_height);
-    glClearColor(palette::background.r, palette::background.g, palette::background.b, 1);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    glViewport(0, 0, int(float(view_width) * scale), fb_height);
-    render_.begin(camera_.view(view_width, win_height));
-    Frame f{render_, show_exact_, options_.figure, focus_};
-    scene_->draw(f);
-    drag_.draw(scene_->handles(), render_);
-    render_.end();
-    glViewport(0, 0, fb_width, fb_height);
-    ImGui::Render();
-    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-
+    draw_frame(window, offscreen, offscreen ? target.msaa : 0, update_ms);
     if (!offscreen) {
       glfwSwapBuffers(window);
       continue;
@@ -365,27 +387,10 @@ int App::run(GLFWwindow* window) {
     glFinish();
     if (frame + 1 == warm_up) timed_from = std::chrono::steady_clock::now(), cpu_from = cpu_ms();
     if (frame + 1 < last) continue;
-    if (options_.benchmark > 0) {
-      const double ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - timed_from).count() /
-          options_.benchmark;
-      const double cpu = (cpu_ms() - cpu_from) / options_.benchmark;
-      std::printf(
-          "lab %s (%s): %.1f ms/frame (%.0f frames per second), %.1f ms of CPU per frame, over %d frames at "
-          "%dx%d, %zu triangles drawn, update %.1f ms, on %s\n",
-          kScenes[index_].lab, scene_->mode.c_str(), ms, 1000 / ms, cpu, options_.benchmark, options_.width,
-          options_.height, render_.triangles_drawn(), update_ms,
-          reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
-    }
-    if (!options_.screenshot.empty()) {
-      const std::vector<unsigned char> pixels = target.read();
-      if (!stbi_write_png(options_.screenshot.c_str(), options_.width, options_.height, 4, pixels.data(),
-                          options_.width * 4))
-        return fail("cannot write " + options_.screenshot);
-      std::cout << "wrote " << options_.screenshot << " (" << options_.width << "x" << options_.height << ")\n";
-      print_steps();
-    }
-    break;
+    const int frames = std::max(1, options_.benchmark);
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - timed_from).count() / frames;
+    return write_offscreen(target, ms, (cpu_ms() - cpu_from) / frames, update_ms);
   }
   return 0;
 }
