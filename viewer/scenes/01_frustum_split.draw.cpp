@@ -39,73 +39,66 @@ void FrustumSplitScene::draw_exact(Renderer& r, const Triangle& t, const std::ve
     r.line(e.corners[i], e.corners[(i + 1) % e.corners.size()], palette::exact, width);
 }
 
-void FrustumSplitScene::draw(Frame& f) {
+// Step 1-2: one triangle against one plane, its vertices' sides and the cut points.
+void FrustumSplitScene::draw_plane(Frame& f) const {
   Renderer& r = f.render;
-  draw_ground(r);
-  if (mode_ == Mode::plane) {
-    const Triangle& t = split_.triangle;
-    const Plane& p = split_.plane;
-    const double size = std::max({(t.v1 - t.v0).norm(), (t.v2 - t.v1).norm(), (t.v0 - t.v2).norm(), 1e-9});
-    if (p.normal != Vec3::Zero()) {  // the plane: a translucent square around its handle, its normal pointing in
-      const Vec3 n = p.normal.normalized(), u = n.unitOrthogonal(), c = anchor_;
-      const Square q = square_around(c, u, n.cross(u), size);
-      fill(r, q, palette::surface.with_alpha(0.22f));
-      outline(r, q, palette::surface, 1);
-      r.arrow(c, c + 0.35 * size * n, palette::muted, 2);
-      r.label(c + 0.35 * size * n, "in", palette::muted);
-    }
-    for (int i = 0; i < 3; ++i) r.dashed(t[i], t[(i + 1) % 3], palette::muted, 1.5f);
-    if (pieces_ && f.shows(2)) draw_pieces(r, *pieces_, verdict_[2]);
-    if (f.show_exact && f.shows(2)) draw_exact(r, t, {p});
-    // The cut points, named as the handout and the lecture's figure name them: c0, c1 in
-    // the order the walk v0 -> v1 -> v2 -> v0 meets them (only sides whose ends have
-    // strictly opposite signs are cut). Each label sits away from the triangle's middle.
-    const Vec3 middle = (t.v0 + t.v1 + t.v2) / 3;
-    int cuts = 0;
-    for (int i = 0; i < 3; ++i) {
-      const Vec3 &a = t[i], &b = t[(i + 1) % 3];
-      const double da = p.value(a), db = p.value(b);
-      if (!((da > 0 && db < 0) || (da < 0 && db > 0))) continue;
-      const Vec3 c = (da * b - db * a) / (da - db);
-      const bool left = (c - middle).dot(r.view().right.cast<double>()) < 0;
-      const bool below = (c - middle).dot(r.view().up.cast<double>()) < 0;
-      r.point(c, palette::muted, 4);
-      r.label(c, "c" + std::to_string(cuts++), palette::input, left ? -24 : 8, below ? 2 : -8);
-    }
-    for (int i = 0; i < 3; ++i) {
-      const Side side = sides_ ? (*sides_)[std::size_t(i)] : Side::on;
-      r.point(t[i], sides_ && f.shows(1) ? side_colour(side) : palette::input, 7);
-      std::string text = "v" + std::to_string(i);
-      if (distances_ && f.shows(1)) text += "   d = " + num((*distances_)[std::size_t(i)]);
-      if (sides_ && f.shows(1)) text += ", " + side_name(side);
-      r.label(t[i], text, f.shows(1) ? colour(verdict_[1]) : palette::muted);
-      const int exact = oracle::side(p, t[i]);
-      if (sides_ && f.shows(1) && exact != int((*sides_)[std::size_t(i)])) r.ring(t[i], palette::disagree, 12, 2.5f);
-    }
-    return;
+  const Triangle& t = split_.triangle;
+  const Plane& p = split_.plane;
+  const double size = std::max({(t.v1 - t.v0).norm(), (t.v2 - t.v1).norm(), (t.v0 - t.v2).norm(), 1e-9});
+  if (p.normal != Vec3::Zero()) {  // the plane: a translucent square around its handle, its normal pointing in
+    const Vec3 n = p.normal.normalized(), u = n.unitOrthogonal(), c = anchor_;
+    const Square q = square_around(c, u, n.cross(u), size);
+    fill(r, q, palette::surface.with_alpha(0.22f));
+    outline(r, q, palette::surface, 1);
+    r.arrow(c, c + 0.35 * size * n, palette::muted, 2);
+    r.label(c + 0.35 * size * n, "in", palette::muted);
   }
+  for (int i = 0; i < 3; ++i) r.dashed(t[i], t[(i + 1) % 3], palette::muted, 1.5f);
+  if (pieces_ && f.shows(2)) draw_pieces(r, *pieces_, verdict_[2]);
+  if (f.show_exact && f.shows(2)) draw_exact(r, t, {p});
+  // The cut points, named as the handout and the lecture's figure name them: c0, c1 in
+  // the order the walk v0 -> v1 -> v2 -> v0 meets them (only sides whose ends have
+  // strictly opposite signs are cut). Each label sits away from the triangle's middle.
+  const Vec3 middle = (t.v0 + t.v1 + t.v2) / 3;
+  int cuts = 0;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 &a = t[i], &b = t[(i + 1) % 3];
+    const double da = p.value(a), db = p.value(b);
+    if (!((da > 0 && db < 0) || (da < 0 && db > 0))) continue;
+    const Vec3 c = (da * b - db * a) / (da - db);
+    const bool left = (c - middle).dot(r.view().right.cast<double>()) < 0;
+    const bool below = (c - middle).dot(r.view().up.cast<double>()) < 0;
+    r.point(c, palette::muted, 4);
+    r.label(c, "c" + std::to_string(cuts++), palette::input, left ? -24 : 8, below ? 2 : -8);
+  }
+  for (int i = 0; i < 3; ++i) {
+    const Side side = sides_ ? (*sides_)[std::size_t(i)] : Side::on;
+    r.point(t[i], sides_ && f.shows(1) ? side_colour(side) : palette::input, 7);
+    std::string text = "v" + std::to_string(i);
+    if (distances_ && f.shows(1)) text += "   d = " + num((*distances_)[std::size_t(i)]);
+    if (sides_ && f.shows(1)) text += ", " + side_name(side);
+    r.label(t[i], text, f.shows(1) ? colour(verdict_[1]) : palette::muted);
+    const int exact = oracle::side(p, t[i]);
+    if (sides_ && f.shows(1) && exact != int((*sides_)[std::size_t(i)])) r.ring(t[i], palette::disagree, 12, 2.5f);
+  }
+}
 
-  const Frustum exact = exact_frustum();
-  const std::vector<Plane> planes(exact.planes.begin(), exact.planes.end());
-  draw_frustum(r, exact, frustum_ && f.shows(3) ? palette::muted.with_alpha(0.5f) : palette::muted, 1.5f, true);
-  if (frustum_ && f.shows(3)) draw_frustum(r, *frustum_, colour(verdict_[3]), 2.5f, false);
-  if (f.show_exact && f.shows(3) && source_ != Source::planes) draw_frustum(r, exact, palette::exact, 1.2f, false);
-  if (source_ == Source::camera) {
-    r.point(camera_.eye, palette::input, 6), r.label(camera_.eye, "eye", palette::input);
-    r.dashed(camera_.eye, look_, palette::input, 1.5f);
-    r.point(look_, palette::input, 5), r.label(look_, "look", palette::input);
+// Steps 3-4: the frustum (the answer's, the exact one) and one triangle split by it.
+void FrustumSplitScene::draw_frustum_triangle(Frame& f, const std::vector<Plane>& planes) const {
+  Renderer& r = f.render;
+  const Triangle& t = triangle_;
+  r.triangle(t.v0, t.v1, t.v2, palette::surface.with_alpha(0.18f));
+  for (int i = 0; i < 3; ++i) {
+    r.dashed(t[i], t[(i + 1) % 3], palette::muted, 1.5f);
+    r.point(t[i], palette::input, 6), r.label(t[i], "v" + std::to_string(i), palette::input);
   }
-  if (mode_ == Mode::frustum) {
-    const Triangle& t = triangle_;
-    r.triangle(t.v0, t.v1, t.v2, palette::surface.with_alpha(0.18f));
-    for (int i = 0; i < 3; ++i) {
-      r.dashed(t[i], t[(i + 1) % 3], palette::muted, 1.5f);
-      r.point(t[i], palette::input, 6), r.label(t[i], "v" + std::to_string(i), palette::input);
-    }
-    if (pieces_ && f.shows(4)) draw_pieces(r, *pieces_, verdict_[4]);
-    if (f.show_exact && f.shows(4)) draw_exact(r, t, planes);
-    return;
-  }
+  if (pieces_ && f.shows(4)) draw_pieces(r, *pieces_, verdict_[4]);
+  if (f.show_exact && f.shows(4)) draw_exact(r, t, planes);
+}
+
+// Step 5: the mesh and its clipped, coloured pieces.
+void FrustumSplitScene::draw_mesh(Frame& f, const std::vector<Plane>& planes) const {
+  Renderer& r = f.render;
   const Mesh& m = mesh_.mesh;
   for (std::size_t i = 0; i < m.size(); ++i) {
     const Triangle t = m.triangle(i);
@@ -125,6 +118,24 @@ void FrustumSplitScene::draw(Frame& f) {
     const Triangle t = out.triangle(i);
     for (int k = 0; k < 3; ++k) r.line(t[k], t[(k + 1) % 3], colour(verdict_[5]), 1.5f);
   }
+}
+
+void FrustumSplitScene::draw(Frame& f) {
+  Renderer& r = f.render;
+  draw_ground(r);
+  if (mode_ == Mode::plane) return draw_plane(f);
+  const Frustum exact = exact_frustum();
+  const std::vector<Plane> planes(exact.planes.begin(), exact.planes.end());
+  draw_frustum(r, exact, frustum_ && f.shows(3) ? palette::muted.with_alpha(0.5f) : palette::muted, 1.5f, true);
+  if (frustum_ && f.shows(3)) draw_frustum(r, *frustum_, colour(verdict_[3]), 2.5f, false);
+  if (f.show_exact && f.shows(3) && source_ != Source::planes) draw_frustum(r, exact, palette::exact, 1.2f, false);
+  if (source_ == Source::camera) {
+    r.point(camera_.eye, palette::input, 6), r.label(camera_.eye, "eye", palette::input);
+    r.dashed(camera_.eye, look_, palette::input, 1.5f);
+    r.point(look_, palette::input, 5), r.label(look_, "look", palette::input);
+  }
+  if (mode_ == Mode::frustum) return draw_frustum_triangle(f, planes);
+  draw_mesh(f, planes);
 }
 
 bool FrustumSplitScene::inputs() {

@@ -51,6 +51,9 @@ class FrustumSplitScene : public Scene {
   Frustum update_planes();
   void update_frustum();
   void update_mesh();
+  void draw_plane(Frame& f) const;
+  void draw_frustum_triangle(Frame& f, const std::vector<Plane>& planes) const;
+  void draw_mesh(Frame& f, const std::vector<Plane>& planes) const;
   void draw_pieces(Renderer& r, const std::vector<Triangle>& pieces, Verdict v) const;
   void draw_exact(Renderer& r, const Triangle& t, const std::vector<Plane>& planes) const;
 
