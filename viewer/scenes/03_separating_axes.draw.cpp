@@ -104,75 +104,80 @@ void SeparatingAxesScene::draw_line_intervals(Frame& f) const {
   }
 }
 
+// Step 4: two triangles, their vertices named with the text's roles p, q, r.
+void SeparatingAxesScene::draw_triangles(Frame& f) const {
+  Renderer& r = f.render;
+  const Color c = tri_ ? colour(verdict_[4]) : palette::surface;
+  r.triangle(t0_.v0, t0_.v1, t0_.v2, palette::surface.with_alpha(0.6f));
+  r.triangle(t1_.v0, t1_.v1, t1_.v2, palette::input.with_alpha(0.45f));
+  // The header's names, t0.v0 ... t1.v2, and where each triangle straddles the other's
+  // plane, the vertex roles of the text: p alone on its side, then q and r.
+  // (The header's rule: p alone on its side, q and r on the other side or in the plane;
+  // or p in the plane and q, r strictly on one side.)
+  const auto sides = [](const Triangle& t, const Triangle& other, int side[3]) {
+    for (int i = 0; i < 3; ++i) side[i] = oracle::orientation(other.v0, other.v1, other.v2, t[i]);
+    const bool one_side = (side[0] > 0 && side[1] > 0 && side[2] > 0) || (side[0] < 0 && side[1] < 0 && side[2] < 0);
+    return !one_side && (side[0] != 0 || side[1] != 0 || side[2] != 0);
+  };
+  const auto roles = [](const int side[3], std::string names[3]) {
+    for (int k = 0; k < 3; ++k)
+      for (const int flip : {1, -1}) {
+        const int p = flip * side[k], q = flip * side[(k + 1) % 3], r = flip * side[(k + 2) % 3];
+        if (p >= 0 && q <= 0 && r <= 0 && (p > 0 || (q < 0 && r < 0))) {
+          names[k] += " = p", names[(k + 1) % 3] += " = q", names[(k + 2) % 3] += " = r";
+          return;
+        }
+      }
+  };
+  std::string n0[3], n1[3];
+  for (int i = 0; i < 3; ++i) n0[i] = "t0.v" + std::to_string(i), n1[i] = "t1.v" + std::to_string(i);
+  int s0[3], s1[3];
+  if (t0_.normal() != Vec3::Zero() && t1_.normal() != Vec3::Zero() && sides(t0_, t1_, s0) && sides(t1_, t0_, s1))
+    roles(s0, n0), roles(s1, n1);
+  for (int i = 0; i < 3; ++i) {
+    r.line(t0_[i], t0_[(i + 1) % 3], palette::surface, 2);
+    r.line(t1_[i], t1_[(i + 1) % 3], c, 2.5f);
+    r.label(t0_[i], n0[i], palette::surface);
+    r.label(t1_[i], n1[i], palette::input);
+  }
+  draw_line_intervals(f);
+  if (tri_) r.label((t1_.v0 + t1_.v1 + t1_.v2) / 3, *tri_ ? "intersect" : "apart", c, 12, 34);
+  if (f.show_exact && oracle::triangles_intersect(t0_, t1_))
+    r.ring((t0_.v0 + t0_.v1 + t0_.v2) / 3, palette::exact, 9);  // violet: they do intersect
+}
+
+// Step 5: the moving boxes, at the shown time and at the answer's first contact.
+void SeparatingAxesScene::draw_moving(Frame& f) const {
+  Renderer& r = f.render;
+  // The start (faint), the end (faint, dashed path), the boxes at the shown time, and
+  // B at the student's first contact time.
+  draw_shaded_box(r, a_, palette::muted, 0, 1);
+  draw_shaded_box(r, b_, palette::muted, 0, 1);
+  r.dashed(b_.center, b_.center + duration_ * vb_, palette::muted);
+  if (va_ != Vec3::Zero()) r.dashed(a_.center, a_.center + duration_ * va_, palette::muted);
+  const auto moved = [](Box b, const Vec3& v, double t) {
+    b.center += t * v;
+    return b;
+  };
+  draw_shaded_box(r, moved(a_, va_, shown_time_), palette::surface, 0.35f);
+  draw_shaded_box(r, moved(b_, vb_, shown_time_), palette::input, 0.25f);
+  r.label(b_.center + shown_time_ * vb_, "t = " + num(shown_time_), palette::input);
+  if (interval_ && interval_->contact && f.shows(5)) {
+    const Color c = colour(verdict_[5]);
+    draw_shaded_box(r, moved(b_, vb_ - va_, interval_->first), c, 0, 2.5f);
+    r.label(b_.center + interval_->first * (vb_ - va_), "first " + num(interval_->first) + " (seen from A)", c, 10, 14);
+  }
+  if (interval_ && !interval_->contact && f.shows(5))
+    r.label(b_.center + 0.5 * duration_ * vb_, "no contact in [0, " + num(duration_) + "]", colour(verdict_[5]), 12,
+            14);
+  if (f.show_exact && exact_times_.contact) r.ring(b_.center + exact_times_.first * (vb_ - va_), palette::exact, 9);
+}
+
 void SeparatingAxesScene::draw(Frame& f) {
   Renderer& r = f.render;
   draw_ground(r);
-  if (mode_ == Mode::triangles) {
-    const Color c = tri_ ? colour(verdict_[4]) : palette::surface;
-    r.triangle(t0_.v0, t0_.v1, t0_.v2, palette::surface.with_alpha(0.6f));
-    r.triangle(t1_.v0, t1_.v1, t1_.v2, palette::input.with_alpha(0.45f));
-    // The header's names, t0.v0 ... t1.v2, and where each triangle straddles the other's
-    // plane, the vertex roles of the text: p alone on its side, then q and r.
-    // (The header's rule: p alone on its side, q and r on the other side or in the plane;
-    // or p in the plane and q, r strictly on one side.)
-    const auto sides = [](const Triangle& t, const Triangle& other, int side[3]) {
-      for (int i = 0; i < 3; ++i) side[i] = oracle::orientation(other.v0, other.v1, other.v2, t[i]);
-      const bool one_side = (side[0] > 0 && side[1] > 0 && side[2] > 0) || (side[0] < 0 && side[1] < 0 && side[2] < 0);
-      return !one_side && (side[0] != 0 || side[1] != 0 || side[2] != 0);
-    };
-    const auto roles = [](const int side[3], std::string names[3]) {
-      for (int k = 0; k < 3; ++k)
-        for (const int flip : {1, -1}) {
-          const int p = flip * side[k], q = flip * side[(k + 1) % 3], r = flip * side[(k + 2) % 3];
-          if (p >= 0 && q <= 0 && r <= 0 && (p > 0 || (q < 0 && r < 0))) {
-            names[k] += " = p", names[(k + 1) % 3] += " = q", names[(k + 2) % 3] += " = r";
-            return;
-          }
-        }
-    };
-    std::string n0[3], n1[3];
-    for (int i = 0; i < 3; ++i) n0[i] = "t0.v" + std::to_string(i), n1[i] = "t1.v" + std::to_string(i);
-    int s0[3], s1[3];
-    if (t0_.normal() != Vec3::Zero() && t1_.normal() != Vec3::Zero() && sides(t0_, t1_, s0) && sides(t1_, t0_, s1))
-      roles(s0, n0), roles(s1, n1);
-    for (int i = 0; i < 3; ++i) {
-      r.line(t0_[i], t0_[(i + 1) % 3], palette::surface, 2);
-      r.line(t1_[i], t1_[(i + 1) % 3], c, 2.5f);
-      r.label(t0_[i], n0[i], palette::surface);
-      r.label(t1_[i], n1[i], palette::input);
-    }
-    draw_line_intervals(f);
-    if (tri_) r.label((t1_.v0 + t1_.v1 + t1_.v2) / 3, *tri_ ? "intersect" : "apart", c, 12, 34);
-    if (f.show_exact && oracle::triangles_intersect(t0_, t1_))
-      r.ring((t0_.v0 + t0_.v1 + t0_.v2) / 3, palette::exact, 9);  // violet: they do intersect
-    return;
-  }
-  if (mode_ == Mode::moving) {
-    // The start (faint), the end (faint, dashed path), the boxes at the shown time, and
-    // B at the student's first contact time.
-    draw_shaded_box(r, a_, palette::muted, 0, 1);
-    draw_shaded_box(r, b_, palette::muted, 0, 1);
-    r.dashed(b_.center, b_.center + duration_ * vb_, palette::muted);
-    if (va_ != Vec3::Zero()) r.dashed(a_.center, a_.center + duration_ * va_, palette::muted);
-    const auto moved = [](Box b, const Vec3& v, double t) {
-      b.center += t * v;
-      return b;
-    };
-    draw_shaded_box(r, moved(a_, va_, shown_time_), palette::surface, 0.35f);
-    draw_shaded_box(r, moved(b_, vb_, shown_time_), palette::input, 0.25f);
-    r.label(b_.center + shown_time_ * vb_, "t = " + num(shown_time_), palette::input);
-    if (interval_ && interval_->contact && f.shows(5)) {
-      const Color c = colour(verdict_[5]);
-      draw_shaded_box(r, moved(b_, vb_ - va_, interval_->first), c, 0, 2.5f);
-      r.label(b_.center + interval_->first * (vb_ - va_), "first " + num(interval_->first) + " (seen from A)", c, 10,
-              14);
-    }
-    if (interval_ && !interval_->contact && f.shows(5))
-      r.label(b_.center + 0.5 * duration_ * vb_, "no contact in [0, " + num(duration_) + "]", colour(verdict_[5]), 12,
-              14);
-    if (f.show_exact && exact_times_.contact) r.ring(b_.center + exact_times_.first * (vb_ - va_), palette::exact, 9);
-    return;
-  }
+  if (mode_ == Mode::triangles) return draw_triangles(f);
+  if (mode_ == Mode::moving) return draw_moving(f);
   draw_shaded_box(r, a_, palette::surface, 0.35f);
   draw_shaded_box(r, b_, palette::input, 0.2f);
   r.label(a_.center, "A", palette::surface), r.label(b_.center, "B", palette::input);

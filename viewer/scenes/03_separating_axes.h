@@ -49,6 +49,8 @@ class SeparatingAxesScene : public Scene {
   void update_boxes();
   void update_triangles();
   void update_moving();
+  void draw_triangles(Frame& f) const;
+  void draw_moving(Frame& f) const;
   void draw_projection(Frame& f) const;
   void draw_line_intervals(Frame& f) const;
 
