@@ -146,6 +146,63 @@ void SphereSweepsScene::draw_cores(Frame& f) const {
     r.ring(*closest0_, palette::exact, 9), r.ring(*closest1_, palette::exact, 9);
 }
 
+// Step 6: the capsule (its axis and hull), and the Minkowski sum the centre runs into: the
+// same axis grown to R = r + rc, dashed ends of the slab where the side stops.
+void SphereSweepsScene::draw_grown_capsule(Renderer& r) const {
+  const Segment& axis = capsule_.axis;
+  const double R = capsule_.radius + s0_.radius;
+  r.line(axis.a, axis.b, palette::surface, 2.5f);
+  r.point(axis.a, palette::surface, 5), r.point(axis.b, palette::surface, 5);
+  r.label(axis.a, "a", palette::surface), r.label(axis.b, "b", palette::surface);
+  // Across the axis toward the sphere's start, so that a view along the motion's plane
+  // shows the side's lines, the slab's ends and the caps in profile.
+  const Vec3 d = axis.b - axis.a;
+  Vec3 e1 = d == Vec3::Zero() ? Vec3::UnitY() : perpendicular(d);
+  if (d != Vec3::Zero()) {
+    const Vec3 off = (s0_.center - axis.a) - (s0_.center - axis.a).dot(d) / d.squaredNorm() * d;
+    if (off.norm() > 1e-9 * d.norm()) e1 = off.normalized();
+  }
+  capsule_hull(r, axis, capsule_.radius, palette::surface, 1.8f, e1);
+  capsule_hull(r, axis, R, palette::muted.with_alpha(0.8f), 1.2f, e1);
+  if (d != Vec3::Zero()) {
+    r.label(axis.a - R * e1, "grown capsule: R = r + rc = " + num(R), palette::muted, -40, 22);
+    // The slab's end planes, across the grown capsule: the side counts only between them.
+    for (const Vec3& end : {axis.a, axis.b}) r.dashed(end - 1.5 * R * e1, end + 1.5 * R * e1, palette::muted, 1.5f);
+    // The side's root (the infinite cylinder's), when it falls outside the slab.
+    const Vec3 m = s0_.center - axis.a, md = m.cross(d), vd = v0_.cross(d);
+    const double qa = vd.squaredNorm(), qb = md.dot(vd), qc = md.squaredNorm() - R * R * d.squaredNorm();
+    if (qa > 0 && qb < 0 && qc > 0 && qb * qb - qa * qc >= 0) {
+      const double t = qc / (-qb + std::sqrt(qb * qb - qa * qc));
+      const Vec3 x = s0_.center + t * v0_;
+      const double along = (x - axis.a).dot(d) / d.squaredNorm();
+      if (t <= duration_ && (along < 0 || along > 1)) {
+        r.point(x, palette::disagree, 5);
+        r.label(x, "cylinder's root t = " + num(t) + ": outside the slab", palette::disagree, 30, -6);
+      }
+    }
+  }
+}
+
+// The student's contact: the shapes then, and the point; or what the answer said instead.
+void SphereSweepsScene::draw_answer(Renderer& r, const Vec3& start0, const Color& c) const {
+  if (sweep_ && sweep_->status == SweepStatus::contact && std::isfinite(sweep_->time)) {
+    const double t = sweep_->time;
+    if (mode_ == Mode::box_plane) {
+      Box then = box_;
+      then.center = box_.center + t * v0_;
+      draw_box(r, then, c, 2.5f);
+    } else {
+      ball(r, s0_.center + t * v0_, s0_.radius, c, 2);
+      if (mode_ == Mode::sphere_capsule) r.point(s0_.center + t * v0_, c, 4);
+      if (mode_ == Mode::sphere_sphere) ball(r, s1_.center + t * v1_, s1_.radius, c, 2);
+    }
+    r.point(sweep_->point, c, 6);
+    r.label(sweep_->point, "contact  t = " + num(t), c, 12, 10);
+  } else if (sweep_) {
+    r.label(start0, sweep_->status == SweepStatus::overlapping ? "overlapping at t = 0" : "no contact", c, 12, -24);
+  }
+}
+
 void SphereSweepsScene::draw_sweep(Frame& f) const {
   Renderer& r = f.render;
   const int step = step_of(mode_);
@@ -153,42 +210,7 @@ void SphereSweepsScene::draw_sweep(Frame& f) const {
   const Vec3 start0 = mode_ == Mode::box_plane ? box_.center : s0_.center;
   if (mode_ == Mode::sphere_plane || mode_ == Mode::box_plane)
     draw_plane(r, plane_, start0 + 0.5 * duration_ * v0_, radius);
-  if (mode_ == Mode::sphere_capsule) {
-    // The capsule (its axis and hull), and the Minkowski sum the centre runs into: the
-    // same axis grown to R = r + rc, dashed ends of the slab where the side stops.
-    const Segment& axis = capsule_.axis;
-    const double R = capsule_.radius + s0_.radius;
-    r.line(axis.a, axis.b, palette::surface, 2.5f);
-    r.point(axis.a, palette::surface, 5), r.point(axis.b, palette::surface, 5);
-    r.label(axis.a, "a", palette::surface), r.label(axis.b, "b", palette::surface);
-    // Across the axis toward the sphere's start, so that a view along the motion's plane
-    // shows the side's lines, the slab's ends and the caps in profile.
-    const Vec3 d = axis.b - axis.a;
-    Vec3 e1 = d == Vec3::Zero() ? Vec3::UnitY() : perpendicular(d);
-    if (d != Vec3::Zero()) {
-      const Vec3 off = (s0_.center - axis.a) - (s0_.center - axis.a).dot(d) / d.squaredNorm() * d;
-      if (off.norm() > 1e-9 * d.norm()) e1 = off.normalized();
-    }
-    capsule_hull(r, axis, capsule_.radius, palette::surface, 1.8f, e1);
-    capsule_hull(r, axis, R, palette::muted.with_alpha(0.8f), 1.2f, e1);
-    if (d != Vec3::Zero()) {
-      r.label(axis.a - R * e1, "grown capsule: R = r + rc = " + num(R), palette::muted, -40, 22);
-      // The slab's end planes, across the grown capsule: the side counts only between them.
-      for (const Vec3& end : {axis.a, axis.b}) r.dashed(end - 1.5 * R * e1, end + 1.5 * R * e1, palette::muted, 1.5f);
-      // The side's root (the infinite cylinder's), when it falls outside the slab.
-      const Vec3 m = s0_.center - axis.a, md = m.cross(d), vd = v0_.cross(d);
-      const double qa = vd.squaredNorm(), qb = md.dot(vd), qc = md.squaredNorm() - R * R * d.squaredNorm();
-      if (qa > 0 && qb < 0 && qc > 0 && qb * qb - qa * qc >= 0) {
-        const double t = qc / (-qb + std::sqrt(qb * qb - qa * qc));
-        const Vec3 x = s0_.center + t * v0_;
-        const double along = (x - axis.a).dot(d) / d.squaredNorm();
-        if (t <= duration_ && (along < 0 || along > 1)) {
-          r.point(x, palette::disagree, 5);
-          r.label(x, "cylinder's root t = " + num(t) + ": outside the slab", palette::disagree, 30, -6);
-        }
-      }
-    }
-  }
+  if (mode_ == Mode::sphere_capsule) draw_grown_capsule(r);
   // The shapes at t = 0 (input colours) and at T (faint), and their paths.
   r.dashed(start0, end0_, palette::muted, 1.5f);
   r.label(end0_, "t = T", palette::muted);
@@ -208,23 +230,7 @@ void SphereSweepsScene::draw_sweep(Frame& f) const {
     r.point(s1_.center, palette::surface, 5);
     r.dashed(s1_.center, end1_, palette::muted, 1.5f);
   }
-  // The student's contact: the shapes then, and the point.
-  if (sweep_ && sweep_->status == SweepStatus::contact && std::isfinite(sweep_->time)) {
-    const double t = sweep_->time;
-    if (mode_ == Mode::box_plane) {
-      Box then = box_;
-      then.center = box_.center + t * v0_;
-      draw_box(r, then, c, 2.5f);
-    } else {
-      ball(r, s0_.center + t * v0_, s0_.radius, c, 2);
-      if (mode_ == Mode::sphere_capsule) r.point(s0_.center + t * v0_, c, 4);
-      if (mode_ == Mode::sphere_sphere) ball(r, s1_.center + t * v1_, s1_.radius, c, 2);
-    }
-    r.point(sweep_->point, c, 6);
-    r.label(sweep_->point, "contact  t = " + num(t), c, 12, 10);
-  } else if (sweep_) {
-    r.label(start0, sweep_->status == SweepStatus::overlapping ? "overlapping at t = 0" : "no contact", c, 12, -24);
-  }
+  draw_answer(r, start0, c);
   if (f.show_exact && exact_time_ >= 0) {  // the exact first contact: the centres then
     r.ring(start0 + exact_time_ * v0_, palette::exact, 9);
     if (mode_ == Mode::sphere_sphere) r.ring(s1_.center + exact_time_ * v1_, palette::exact, 9);

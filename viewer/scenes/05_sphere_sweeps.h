@@ -68,6 +68,8 @@ class SphereSweepsScene : public Scene {
   void follow_handles();
   void draw_cores(Frame& f) const;
   void draw_sweep(Frame& f) const;
+  void draw_grown_capsule(Renderer& r) const;
+  void draw_answer(Renderer& r, const Vec3& start0, const Color& c) const;
 
   Mode mode_ = Mode::cores;
   Shape a_, b_;
