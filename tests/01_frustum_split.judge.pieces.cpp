@@ -126,6 +126,82 @@ std::string stray_corner(const Triangle& t, const std::vector<Plane>& planes, co
   return "";
 }
 
+// One answer of pieces of one triangle, and what the checks below share.
+struct PiecesCase {
+  const Triangle& t;
+  const std::vector<Plane>& planes;
+  const std::vector<Triangle>& got;
+  Rules rules;
+  double tol, area_tol;
+  bool flat;
+  oracle::ClippedPolygon exact;
+};
+
+// Where the corners are: in every plane, and in the input triangle ("" when so).
+std::string corners_problem(const PiecesCase& c) {
+  static const char* plane_names[6] = {"left", "right", "bottom", "top", "near", "far"};
+  for (std::size_t i = 0; i < c.got.size(); ++i)
+    for (int j = 0; j < 3; ++j) {
+      const Vec3& p = c.got[i][j];
+      for (std::size_t k = 0; k < c.planes.size(); ++k)
+        if (!oracle::inside_all(p, {c.planes[k]}, c.tol))
+          return "the pieces must lie in every plane: corner " + fmt(p) + " of triangle " + std::to_string(i) +
+                 " is outside " +
+                 (c.planes.size() == 6 ? std::string("the ") + plane_names[k] + " plane" : "the plane") + " by " +
+                 fmt(-oracle::signed_distance(c.planes[k], p)) + " (tolerance " + fmt(c.tol) + ")" +
+                 (c.planes.size() == 6 && k >= 4 ? ": clip by all six planes, near and far included" : "");
+      if (!surely_near(p, c.t, c.tol) && !oracle::within(p, c.t, c.tol))
+        return "the pieces must lie in the input triangle: corner " + fmt(p) + " of triangle " + std::to_string(i) +
+               " is " + fmt(oracle::distance(p, c.t)) + " from it (tolerance " + fmt(c.tol) + ")";
+    }
+  return "";
+}
+
+// How many pieces: exact, unless a small change of the input could change it (`doubt`).
+std::string count_problem(const PiecesCase& c, bool doubt) {
+  if (c.flat || int(c.got.size()) == c.exact.triangles() || doubt) return "";
+  std::string cause = missing_corner(c.t, c.planes, c.got, c.exact, c.tol);
+  if (cause.empty() && c.rules == Rules::exact)
+    cause = " (this input is exact: decide every sign from the vertices' plane values, never from a rounded cut point)";
+  return (c.exact.has_area ? "triangle ∩ planes has " + count_of(c.exact.corners.size(), "corner") + ", so " +
+                                 count_of(std::size_t(c.exact.triangles()), "triangle") +
+                                 (c.exact.triangles() == 1 ? " is" : " are") + " expected, not "
+                           : std::string("triangle ∩ planes has no area, so no triangle is expected, not ")) +
+         std::to_string(c.got.size()) + cause;
+}
+
+// How much they cover: the exact area, or (random input) between the areas the planes
+// shifted out and in by the margin give.
+std::string area_problem(const PiecesCase& c) {
+  double area = 0;
+  for (const Triangle& p : c.got) area += p.area();
+  if (std::abs(area - c.exact.area) <= c.area_tol) return "";
+  if (c.rules == Rules::random) {
+    const double out = oracle::clip(c.t, shifted(c.planes, kMargin * c.tol)).area;
+    const double in = oracle::clip(c.t, shifted(c.planes, -kMargin * c.tol)).area;
+    if (area >= in - c.area_tol && area <= out + c.area_tol) return "";
+  }
+  return "the pieces must cover triangle ∩ planes: their areas sum to " + fmt(area) + ", its area is " +
+         fmt(c.exact.area) + " (tolerance " + fmt(c.area_tol) + ")" + stray_corner(c.t, c.planes, c.got, c.tol);
+}
+
+// No overlaps, and the input's winding.
+std::string layout_problem(const PiecesCase& c) {
+  const Vec3 normal = c.t.normal();
+  for (std::size_t i = 0; i < c.got.size(); ++i) {
+    if (!c.flat && c.got[i].area() > c.area_tol && !(c.got[i].normal().dot(normal) > 0))
+      return "every piece must wind like the input, (v1 - v0) x (v2 - v0) pointing the same way: triangle " +
+             std::to_string(i) + "'s normal " + fmt(c.got[i].normal()) + " points away from the input's " + fmt(normal);
+    for (std::size_t j = 0; j < i; ++j) {
+      const double overlap = oracle::overlap_area(c.got[i], c.got[j], c.t);
+      if (!(overlap <= c.area_tol))
+        return "the pieces must not overlap: triangles " + std::to_string(j) + " and " + std::to_string(i) +
+               " overlap by an area of " + fmt(overlap) + " (tolerance " + fmt(c.area_tol) + ")";
+    }
+  }
+  return "";
+}
+
 // The checks every answer made of pieces of one triangle must pass: the header's
 // "Pieces" rules. S comes from the caller (a mesh's S covers all of its vertices).
 Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::vector<Triangle>& got, double S,
@@ -142,80 +218,14 @@ Outcome pieces(const Triangle& t, const std::vector<Plane>& planes, const std::v
   if (clear == Clear::inside && got.size() == 1 && same_triangle(got[0], t)) return pass();
   if (clear == Clear::outside && got.empty()) return pass();
 
-  const oracle::ClippedPolygon exact = oracle::clip(t, planes);
-  const std::string expected = describe_polygon(exact), answer = describe_pieces(got);
-  const bool flat = oracle::is_degenerate(t);
-  const double area_tol = kRelative * S * longest_edge(t);
-
-  // Where the corners are.
-  static const char* plane_names[6] = {"left", "right", "bottom", "top", "near", "far"};
-  for (std::size_t i = 0; i < got.size(); ++i)
-    for (int j = 0; j < 3; ++j) {
-      const Vec3& p = got[i][j];
-      for (std::size_t k = 0; k < planes.size(); ++k)
-        if (!oracle::inside_all(p, {planes[k]}, tol))
-          return fail(expected, answer,
-                      "the pieces must lie in every plane: corner " + fmt(p) + " of triangle " + std::to_string(i) +
-                          " is outside " +
-                          (planes.size() == 6 ? std::string("the ") + plane_names[k] + " plane" : "the plane") +
-                          " by " + fmt(-oracle::signed_distance(planes[k], p)) + " (tolerance " + fmt(tol) + ")" +
-                          (planes.size() == 6 && k >= 4 ? ": clip by all six planes, near and far included" : ""));
-      if (!surely_near(p, t, tol) && !oracle::within(p, t, tol))
-        return fail(expected, answer,
-                    "the pieces must lie in the input triangle: corner " + fmt(p) + " of triangle " +
-                        std::to_string(i) + " is " + fmt(oracle::distance(p, t)) + " from it (tolerance " + fmt(tol) +
-                        ")");
-    }
-
-  // How many pieces: exact, unless a small change of the input could change it.
-  const bool doubt = rules == Rules::random && !flat && oracle::clip_in_doubt(t, planes, tol);
-  if (!flat && int(got.size()) != exact.triangles() && !doubt)
-    return fail(
-        expected, answer,
-        (exact.has_area ? "triangle ∩ planes has " + count_of(exact.corners.size(), "corner") + ", so " +
-                              count_of(std::size_t(exact.triangles()), "triangle") +
-                              (exact.triangles() == 1 ? " is" : " are") + " expected, not "
-                        : std::string("triangle ∩ planes has no area, so no triangle is expected, not ")) +
-            std::to_string(got.size()) + [&] {
-              const std::string cause = missing_corner(t, planes, got, exact, tol);
-              if (!cause.empty() || rules != Rules::exact) return cause;
-              return std::string(
-                  " (this input is exact: decide every sign from the vertices' plane values, never "
-                  "from a rounded cut point)");
-            }());
-
-  // How much they cover.
-  double area = 0;
-  for (const Triangle& p : got) area += p.area();
-  if (!(std::abs(area - exact.area) <= area_tol)) {
-    bool within_shifts = false;
-    if (rules == Rules::random) {
-      const double out = oracle::clip(t, shifted(planes, kMargin * tol)).area;
-      const double in = oracle::clip(t, shifted(planes, -kMargin * tol)).area;
-      within_shifts = area >= in - area_tol && area <= out + area_tol;
-    }
-    if (!within_shifts)
-      return fail(expected, answer,
-                  "the pieces must cover triangle ∩ planes: their areas sum to " + fmt(area) + ", its area is " +
-                      fmt(exact.area) + " (tolerance " + fmt(area_tol) + ")" + stray_corner(t, planes, got, tol));
-  }
-
-  // No overlaps, and the input's winding.
-  const Vec3 normal = t.normal();
-  for (std::size_t i = 0; i < got.size(); ++i) {
-    if (!flat && got[i].area() > area_tol && !(got[i].normal().dot(normal) > 0))
-      return fail(expected, answer,
-                  "every piece must wind like the input, (v1 - v0) x (v2 - v0) pointing the same way: triangle " +
-                      std::to_string(i) + "'s normal " + fmt(got[i].normal()) + " points away from the input's " +
-                      fmt(normal));
-    for (std::size_t j = 0; j < i; ++j) {
-      const double overlap = oracle::overlap_area(got[i], got[j], t);
-      if (!(overlap <= area_tol))
-        return fail(expected, answer,
-                    "the pieces must not overlap: triangles " + std::to_string(j) + " and " + std::to_string(i) +
-                        " overlap by an area of " + fmt(overlap) + " (tolerance " + fmt(area_tol) + ")");
-    }
-  }
+  const PiecesCase c{
+      t, planes, got, rules, tol, kRelative * S * longest_edge(t), oracle::is_degenerate(t), oracle::clip(t, planes)};
+  const std::string expected = describe_polygon(c.exact), answer = describe_pieces(got);
+  const bool doubt = rules == Rules::random && !c.flat && oracle::clip_in_doubt(t, planes, tol);
+  for (const std::string& why : {corners_problem(c), count_problem(c, doubt)})
+    if (!why.empty()) return fail(expected, answer, why);
+  for (const auto& check : {area_problem, layout_problem})
+    if (const std::string why = check(c); !why.empty()) return fail(expected, answer, why);
   return doubt ? ambiguous() : pass();
 }
 
