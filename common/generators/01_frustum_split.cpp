@@ -408,84 +408,94 @@ Triangle wound(Triangle t) {
   return {t[turn], t[(turn + 1) % 3], t[(turn + 2) % 3]};
 }
 
+// Exact degenerate triangles 0 to 3: a vertex or an edge on a feature of the frustum, or
+// the triangle in a face plane, touching from outside.
+Triangle on_a_feature(const ExactFrustum& f, int kind) {
+  const auto feature = [&] {
+    return feature_point(f, *rc::gen::element(Feature::corner, Feature::edge, Feature::face));
+  };
+  switch (kind) {
+    case 0: {  // a vertex on a feature, the others anywhere around
+      return {feature().point, around(f), around(f)};
+    }
+    case 1: {  // an edge in a face plane, the third vertex anywhere
+      const FeaturePoint p = feature_point(f, Feature::face);
+      FeaturePoint q = feature_point(f, Feature::face);
+      for (int tries = 0; tries < 8 && q.planes[0] != p.planes[0]; ++tries) q = feature_point(f, Feature::face);
+      if (q.planes[0] != p.planes[0]) q = p;
+      return {p.point, q.point, around(f)};
+    }
+    case 2: {  // lying in a face plane
+      const FeaturePoint p = feature_point(f, Feature::face);
+      std::array<Vec3, 3> v{p.point, p.point, p.point};
+      for (int i = 1; i < 3; ++i)
+        for (int tries = 0; tries < 16; ++tries) {
+          const FeaturePoint q = feature_point(f, Feature::face);
+          if (q.planes[0] == p.planes[0]) {
+            v[std::size_t(i)] = q.point;
+            break;
+          }
+        }
+      return {v[0], v[1], v[2]};
+    }
+    case 3: {  // touching a face, an edge or a corner from outside at one vertex
+      const FeaturePoint p = feature();
+      const Vec3 out = outward(f, p.planes[0], p.planes[1]) * f.s;
+      return {p.point, p.point + out, p.point + 2 * out + sideways(f, p.planes[0], p.planes[1])};
+    }
+  }
+  return {};
+}
+
+// Exact degenerate triangles 4 to 8: edges through the frustum's edge lines and corners,
+// zero area, and cut points no double can hold.
+Triangle through_an_edge_line(const ExactFrustum& f, int kind) {
+  const auto feature = [&] {
+    return feature_point(f, *rc::gen::element(Feature::corner, Feature::edge, Feature::face));
+  };
+  switch (kind) {
+    case 4: {  // an edge through an edge line (or a corner) of the frustum
+      const FeaturePoint p = feature_point(f, *rc::gen::element(Feature::corner, Feature::edge));
+      const Vec3 d = *direction(8 * f.s, 4);
+      return {p.point + d, p.point - *rc::gen::inRange(1, 4) * d, around(f)};
+    }
+    case 5: {  // touching along an edge line from outside
+      const FeaturePoint p = feature_point(f, Feature::edge);
+      FeaturePoint q = p;
+      for (int tries = 0; tries < 8 && (q.point == p.point || q.planes != p.planes); ++tries)
+        q = feature_point(f, Feature::edge);
+      return {p.point, q.point, p.point + outward(f, p.planes[0], p.planes[1]) * f.s};
+    }
+    case 6: {  // a zero-area triangle through a feature
+      const Vec3 a = feature().point, b = around(f);
+      return {a, b, a + *rc::gen::inRange(-2, 3) * (b - a)};
+    }
+    case 7: {  // an edge through a side edge line a third of the way along: a cut point
+               // that no double can hold, exactly on a second plane (for a pyramid)
+      const FeaturePoint p = feature_point(f, Feature::edge, true);
+      const Vec3 v0 = around(f);
+      const double m = *rc::gen::element(1.0, 2.0, 4.0, 5.0);
+      return {v0, 3 * p.point + m * p.along - 2 * v0, around(f)};  // crosses p + m/3 along at t = 1/3
+    }
+    case 8: {  // in a plane through a side edge line, outside the frustum on both sides of
+               // it: only a segment of the line is left, and the crossings are at t = 1/3
+      const FeaturePoint p = feature_point(f, Feature::edge, true);
+      // e points out of the first plane and into the second; -e the other way round.
+      const Vec3 e = f.s * (f.plane(p.planes[1]).normal - f.plane(p.planes[0]).normal);
+      const auto on_line = [&] { return p.point + double(*integer(2)) * p.along; };
+      return {on_line() + e, on_line() - 2 * e, on_line() + e};
+    }
+  }
+  return {};
+}
+
 rc::Gen<TriangleFrustum> exact_case() {
   return rc::gen::exec([] {
     const ExactFrustum f = *exact_frustum();
-    const auto feature = [&] {
-      return feature_point(f, *rc::gen::element(Feature::corner, Feature::edge, Feature::face));
-    };
-    Triangle t;
-    switch (*rc::gen::inRange(0, 11)) {
-      case 0: {  // a vertex on a feature, the others anywhere around
-        t = {feature().point, around(f), around(f)};
-        break;
-      }
-      case 1: {  // an edge in a face plane, the third vertex anywhere
-        const FeaturePoint p = feature_point(f, Feature::face);
-        FeaturePoint q = feature_point(f, Feature::face);
-        for (int tries = 0; tries < 8 && q.planes[0] != p.planes[0]; ++tries) q = feature_point(f, Feature::face);
-        if (q.planes[0] != p.planes[0]) q = p;
-        t = {p.point, q.point, around(f)};
-        break;
-      }
-      case 2: {  // lying in a face plane
-        const FeaturePoint p = feature_point(f, Feature::face);
-        std::array<Vec3, 3> v{p.point, p.point, p.point};
-        for (int i = 1; i < 3; ++i)
-          for (int tries = 0; tries < 16; ++tries) {
-            const FeaturePoint q = feature_point(f, Feature::face);
-            if (q.planes[0] == p.planes[0]) {
-              v[std::size_t(i)] = q.point;
-              break;
-            }
-          }
-        t = {v[0], v[1], v[2]};
-        break;
-      }
-      case 3: {  // touching a face, an edge or a corner from outside at one vertex
-        const FeaturePoint p = feature();
-        const Vec3 out = outward(f, p.planes[0], p.planes[1]) * f.s;
-        t = {p.point, p.point + out, p.point + 2 * out + sideways(f, p.planes[0], p.planes[1])};
-        break;
-      }
-      case 4: {  // an edge through an edge line (or a corner) of the frustum
-        const FeaturePoint p = feature_point(f, *rc::gen::element(Feature::corner, Feature::edge));
-        const Vec3 d = *direction(8 * f.s, 4);
-        t = {p.point + d, p.point - *rc::gen::inRange(1, 4) * d, around(f)};
-        break;
-      }
-      case 5: {  // touching along an edge line from outside
-        const FeaturePoint p = feature_point(f, Feature::edge);
-        FeaturePoint q = p;
-        for (int tries = 0; tries < 8 && (q.point == p.point || q.planes != p.planes); ++tries)
-          q = feature_point(f, Feature::edge);
-        t = {p.point, q.point, p.point + outward(f, p.planes[0], p.planes[1]) * f.s};
-        break;
-      }
-      case 6: {  // a zero-area triangle through a feature
-        const Vec3 a = feature().point, b = around(f);
-        t = {a, b, a + *rc::gen::inRange(-2, 3) * (b - a)};
-        break;
-      }
-      case 7: {  // an edge through a side edge line a third of the way along: a cut point
-                 // that no double can hold, exactly on a second plane (for a pyramid)
-        const FeaturePoint p = feature_point(f, Feature::edge, true);
-        const Vec3 v0 = around(f);
-        const double m = *rc::gen::element(1.0, 2.0, 4.0, 5.0);
-        t = {v0, 3 * p.point + m * p.along - 2 * v0, around(f)};  // crosses p + m/3 along at t = 1/3
-        break;
-      }
-      case 8: {  // in a plane through a side edge line, outside the frustum on both sides of
-                 // it: only a segment of the line is left, and the crossings are at t = 1/3
-        const FeaturePoint p = feature_point(f, Feature::edge, true);
-        // e points out of the first plane and into the second; -e the other way round.
-        const Vec3 e = f.s * (f.plane(p.planes[1]).normal - f.plane(p.planes[0]).normal);
-        const auto on_line = [&] { return p.point + double(*integer(2)) * p.along; };
-        t = {on_line() + e, on_line() - 2 * e, on_line() + e};
-        break;
-      }
-      default: t = {around(f), around(f), around(f)};
-    }
+    const int kind = *rc::gen::inRange(0, 11);
+    const Triangle t = kind <= 3   ? on_a_feature(f, kind)
+                       : kind <= 8 ? through_an_edge_line(f, kind)
+                                   : Triangle{around(f), around(f), around(f)};
     Frustum planes = f.frustum();
     const int k = *rc::gen::inRange(1, 9);
     for (Plane& p : planes.planes) p = longer(p, k);
