@@ -77,6 +77,9 @@ struct Mesh {
     const auto& f = triangles[i];
     return {vertices[f[0]], vertices[f[1]], vertices[f[2]]};
   }
+  // Its edges: the distinct vertex pairs of its triangles, each once, as (lower, higher)
+  // vertex indices, sorted (a triangle's repeated index makes no edge).
+  std::vector<std::array<int, 2>> edges() const;
 };
 LABKIT_FIELDS(Mesh, vertices, triangles)
 

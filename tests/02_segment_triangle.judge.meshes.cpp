@@ -166,8 +166,7 @@ std::string contact_rule(const MovingMeshes& in, const oracle::MeshContact& c) {
     return "the meshes first touch" + at + ": vertex " + std::to_string(c.feature_b) +
            " of B, on its path q -> q - d (the other delta matrix), meets face " + std::to_string(c.feature_a) +
            " of A" + seen;
-  const auto ea = oracle::mesh_edges(in.a)[std::size_t(c.feature_a)],
-             eb = oracle::mesh_edges(in.b)[std::size_t(c.feature_b)];
+  const auto ea = in.a.edges()[std::size_t(c.feature_a)], eb = in.b.edges()[std::size_t(c.feature_b)];
   return "the meshes first touch" + at + ": edge-edge, edge (" + std::to_string(ea[0]) + ", " + std::to_string(ea[1]) +
          ") of A, sweeping its quad (two triangles), meets edge (" + std::to_string(eb[0]) + ", " +
          std::to_string(eb[1]) + ") of B" + seen;

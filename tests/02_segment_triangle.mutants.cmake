@@ -58,7 +58,7 @@ labkit_mutant(02 segment_triangle NAME normal_moved_like_a_point STEP 6 SAYS "ro
   REPLACE "hit.normal = m1 * hit.normal;")
 
 labkit_mutant(02 segment_triangle NAME vertex_face_only STEP 7 SAYS "edge-edge"
-  FIND "for (const auto& [i, j] : edges_of(a)) {"
+  FIND "for (const auto& [i, j] : a.edges()) {"
   REPLACE "for (const auto& [i, j] : std::vector<std::array<int, 2>>{}) {")
 
 labkit_mutant(02 segment_triangle NAME one_delta_matrix STEP 7 SAYS "vertex" "of B" "other delta matrix"

@@ -99,7 +99,7 @@ template <class Keep> void candidates(const Mesh& a, const Vec3& va, const Mesh&
       if (auto t = vertex_face(pb[j], -d, pa[tri[0]], pa[tri[1]], pa[tri[2]], &approach))
         if (keep(Exact{*t, pb[j] + *t * wb, 1, int(k), int(j), approach})) return;
     }
-  const auto ea = mesh_edges(a), eb = mesh_edges(b);
+  const auto ea = a.edges(), eb = b.edges();
   for (std::size_t i = 0; i < ea.size(); ++i)
     for (std::size_t j = 0; j < eb.size(); ++j) {
       const P& p0 = pa[ea[i][0]];
@@ -111,16 +111,6 @@ template <class Keep> void candidates(const Mesh& a, const Vec3& va, const Mesh&
 }
 
 }  // namespace
-
-std::vector<std::array<int, 2>> mesh_edges(const Mesh& mesh) {
-  std::set<std::array<int, 2>> edges;
-  for (const auto& tri : mesh.triangles)
-    for (int i = 0; i < 3; ++i) {
-      const int u = tri[i], v = tri[(i + 1) % 3];
-      if (u != v) edges.insert({std::min(u, v), std::max(u, v)});
-    }
-  return {edges.begin(), edges.end()};
-}
 
 MeshContact first_contact_translating(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb) {
   std::optional<Exact> best;
@@ -136,8 +126,7 @@ MeshContact first_contact_translating(const Mesh& a, const Vec3& va, const Mesh&
   };
   V n;
   if (best->kind == 2) {
-    n = CGAL::cross_product(edge(a, mesh_edges(a)[std::size_t(best->fa)]),
-                            edge(b, mesh_edges(b)[std::size_t(best->fb)]));
+    n = CGAL::cross_product(edge(a, a.edges()[std::size_t(best->fa)]), edge(b, b.edges()[std::size_t(best->fb)]));
   } else {
     const Epeck::Triangle_3 face =
         exact(best->kind == 0 ? b.triangle(std::size_t(best->fb)) : a.triangle(std::size_t(best->fa)));
@@ -215,8 +204,8 @@ std::vector<ContactNormal> contact_normals_by(const Mesh& a, const Vec3& va, con
   };
   vertices_on_faces(a, b, swept);
   vertices_on_faces(b, a, -swept);
-  const auto eb = mesh_edges(b);
-  for (const auto& e : mesh_edges(a)) {
+  const auto eb = b.edges();
+  for (const auto& e : a.edges()) {
     const P p0 = exact(a.vertices[std::size_t(e[0])]), p1 = exact(a.vertices[std::size_t(e[1])]);
     if (p0 == p1) continue;  // a point: its faces' vertices above cover it
     for (const auto& f : eb) {
@@ -243,8 +232,8 @@ bool touch_during_frame_fast(const Mesh& a, const Vec3& va, const Mesh& b, const
     for (std::size_t k = 0; k < a.size(); ++k)
       if (hits({fast(q), fast(q - d)}, {fast(a.triangle(k).v0), fast(a.triangle(k).v1), fast(a.triangle(k).v2)}))
         return true;
-  const auto eb = mesh_edges(b);
-  for (const auto& e : mesh_edges(a)) {
+  const auto eb = b.edges();
+  for (const auto& e : a.edges()) {
     const Vec3& p0 = a.vertices[std::size_t(e[0])];
     const Vec3& p1 = a.vertices[std::size_t(e[1])];
     const K::Triangle_3 first(fast(p0), fast(p1), fast(p1 + d)), second(fast(p0), fast(p1 + d), fast(p0 + d));

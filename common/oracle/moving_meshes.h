@@ -16,15 +16,12 @@ namespace oracle {
 using labkit::Mesh;
 using labkit::Vec3;
 
-// The undirected edges of a mesh, each once, as (lower, higher) vertex indices, sorted.
-std::vector<std::array<int, 2>> mesh_edges(const Mesh& mesh);
-
 struct MeshContact {
   bool hit = false;
   double t = 0.0;              // the first contact time (exact, rounded)
   Vec3 point = Vec3::Zero();   // a common point at that time, in the world (rounded)
   int kind = -1;               // 0: a vertex of A on a face of B; 1: a vertex of B on a face of A; 2: edge-edge
-  int feature_a = -1;          // kind 0: vertex of A; 1: triangle of A; 2: edge of A (index in mesh_edges)
+  int feature_a = -1;          // kind 0: vertex of A; 1: triangle of A; 2: edge of A (index in Mesh::edges)
   int feature_b = -1;          // kind 0: triangle of B; 1: vertex of B; 2: edge of B
   double approach = 0.0;       // the closing speed along the contact's unit normal (face normal,
                                // or e x f for edge-edge): how sharply t is fixed

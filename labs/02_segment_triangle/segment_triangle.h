@@ -152,7 +152,7 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
 //     The time of a hit is its weight along d: w2 on the first triangle, w1 + w2 on the
 //     second.
 //            p0 + d ------ p1 + d          edges: the distinct vertex pairs of the
-//              |  second  /  |             triangles (mesh.triangles), each once.
+//              |  second  /  |             triangles, each once: mesh.edges().
 //              |       /     |
 //              |   /  first  |
 //             p0 ---------- p1

@@ -561,17 +561,6 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
 
 namespace {
 
-// The edges of a mesh: the distinct vertex pairs of its triangles, each once.
-std::vector<std::array<int, 2>> edges_of(const Mesh& mesh) {
-  std::set<std::array<int, 2>> edges;
-  for (const auto& tri : mesh.triangles)
-    for (int i = 0; i < 3; ++i) {
-      const int u = tri[i], v = tri[(i + 1) % 3];
-      if (u != v) edges.insert({std::min(u, v), std::max(u, v)});
-    }
-  return {edges.begin(), edges.end()};
-}
-
 // The contact's normal from the direction n of a face's normal or of e x f: unit length,
 // turned to point from B toward A, against A's motion d as seen from B (d . n <= 0).
 Vec3 facing(const Vec3& n, const Vec3& d) {
@@ -632,9 +621,9 @@ MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, c
   //    extrusion of the edge, in 3D): two triangles, against each edge q0 q1 of B. A hit
   //    point w0 p0 + w1 p1 + w2 (p1 + d) is reached at t = w2 (the weight of the moved
   //    corner); on the second triangle (p0, p1 + d, p0 + d) at t = w1 + w2.
-  const auto edges_b = edges_of(b);
+  const auto edges_b = b.edges();
   // mutant: vertex_face_only
-  for (const auto& [i, j] : edges_of(a)) {
+  for (const auto& [i, j] : a.edges()) {
     const Vec3& p0 = a.vertices[std::size_t(i)];
     const Vec3& p1 = a.vertices[std::size_t(j)];
     const Triangle first{p0, p1, p1 + d}, second{p0, p1 + d, p0 + d};

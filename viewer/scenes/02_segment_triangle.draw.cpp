@@ -128,7 +128,7 @@ void SegmentTriangleScene::draw_contact(Frame& f) const {
         r.label(centre(in.b) + in.velocity_b, "vb", palette::surface);
   const oracle::MeshContact& e = exact_contact_;
   if (e.hit && e.kind == 2) {  // the swept parallelogram of the contact's edge of A, in B's frame (B still)
-    const auto edge = oracle::mesh_edges(in.a)[std::size_t(e.feature_a)];
+    const auto edge = in.a.edges()[std::size_t(e.feature_a)];
     const Vec3 p0 = in.a.vertices[std::size_t(edge[0])], p1 = in.a.vertices[std::size_t(edge[1])];
     const Vec3 o = t * in.velocity_b;  // drawn where B is at the contact
     r.triangle(o + p0, o + p1, o + p1 + d, palette::exact.with_alpha(0.22f));
