@@ -31,6 +31,10 @@ LABKIT_FIELDS(Material, restitution, friction)
 LABKIT_FIELDS(Scene, planes, mesh, material, bounce_cap, velocity, mesh_query)
 LABKIT_FIELDS(Collision, position, velocity, bounces, stopped, trace)
 LABKIT_FIELDS(System, emitter, scene, forces, integrator, random, particles, time)
+LABKIT_FIELDS(Spring, stiffness, damping, rest_length)
+LABKIT_FIELDS(RigidBody, centre, velocity, angular_velocity, mass, inverse_inertia)
+LABKIT_FIELDS(Contact, point, normal, restitution)
+LABKIT_FIELDS(RigidImpulse, closing, v_rel, j, velocity_a, angular_velocity_a, velocity_b, angular_velocity_b)
 
 using Particles = std::vector<Particle>;
 using MeshQuery = std::function<SurfaceHit(const Segment&, const Mesh&)>;
@@ -70,7 +74,9 @@ template <> struct labkit::wire::Codec<labkit::lab07::MeshQuery> {
   CALL(Impulse, impulse, (const Vec3&, const Vec3&, const Vec3&, double, const Material&))              \
   CALL(Collision, collide, (const Segment&, const Vec3&, double, double, const Scene&))                 \
   CALL(Vec3, settle, (const Vec3&, const Scene&, const SurfaceHit&))                                    \
-  METHOD(System, step, (double))
+  METHOD(System, step, (double))                                                                       \
+  CALL(Vec3, spring_force, (const Particle&, const Particle&, const Spring&))                             \
+  CALL(RigidImpulse, rigid_impulse, (const RigidBody&, const RigidBody&, const Contact&))
 // clang-format on
 
 // The judge's process calls the code under test only as answerer::name(...) (calls.h).

@@ -92,6 +92,20 @@ struct SystemCase {
 };
 LABKIT_FIELDS(SystemCase, emitter, scene, forces, verlet, seed, dt, steps)
 
+struct SpringCase {
+  Particle a;
+  Particle b;
+  Spring spring;
+};
+LABKIT_FIELDS(SpringCase, a, b, spring)
+
+struct RigidCase {
+  RigidBody a;
+  RigidBody b;
+  Contact contact;
+};
+LABKIT_FIELDS(RigidCase, a, b, contact)
+
 }  // namespace labkit::lab07
 
 // ---- The queries -------------------------------------------------------------------------
@@ -109,7 +123,9 @@ LABKIT_FIELDS(SystemCase, emitter, scene, forces, verlet, seed, dt, steps)
   /* step 5 */ X(impulse, ImpulseCase)                                                                              \
   /* step 6 */ X(collide, CollideCase)                                                                              \
   /* step 7 */ X(settle, SettleCase) X(settled_ends, CollideCase)                                                   \
-  /* step 8 */ X_IN(crease, settle, SettleCase) X(invariants, CollideCase) X(system, SystemCase)
+  /* step 8 */ X_IN(crease, settle, SettleCase) X(invariants, CollideCase) X(system, SystemCase)                   \
+  /* step 9 */ X(spring_force, SpringCase)                                                                          \
+  /* step 10 */ X(rigid_impulse, RigidCase)
 // clang-format on
 
 namespace labkit::lab07::query {

@@ -62,4 +62,14 @@ Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) { not_imp
 // L07S8: the handling loop.
 void System::step(double dt) { not_implemented("L07S8", dt); }
 
+// L07S9 (extension): Hooke's law along the spring, plus damping along it.
+Vec3 spring_force(const Particle& a, const Particle& b, const Spring& spring) {
+  not_implemented("L07S9", a, b, spring);
+}
+
+// L07S10 (extension): one impulse changes linear and angular velocities.
+RigidImpulse rigid_impulse(const RigidBody& a, const RigidBody& b, const Contact& contact) {
+  not_implemented("L07S10", a, b, contact);
+}
+
 }  // namespace labkit::lab07

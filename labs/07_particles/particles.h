@@ -1,8 +1,10 @@
 // Lab 07: particle systems that bounce.
-// Handout: handouts/07_particles.md. Lectures 001 (Collision Handling Part 2 of 2: dynamic
-// collision response, particle systems), 002 (Math, Physics and Collision Detection:
-// particle physics, Euler and Verlet, target practice) and 004 (Collision Detection:
-// particle collisions, collision response).
+// Handout: handouts/07_particles.md (steps 9 and 10: handouts/07_particles.extensions.md).
+// Lectures 001 (Collision Handling Part 2 of 2: dynamic collision response, particle
+// systems), 002 (Math, Physics and Collision Detection: particle physics, Euler and Verlet,
+// target practice, springs and damping), 003 (Simulation and Animation: the contact
+// algorithm for rigid bodies, step 10) and 004 (Collision Detection: particle collisions,
+// collision response).
 //
 // You write labs/07_particles/particles.cpp; this header is the contract.
 //
@@ -58,6 +60,7 @@
 //    about 1e-9 S / x: the low angle must be right to its own size, not to the high one's.
 //  - Integrators: within 1e-9 times the sum of the magnitudes of the terms added.
 //  - Never behind a surface: exact (steps 7, 8). Energy: 1e-12, relative (step 8).
+//  - The spring force (step 9) and the rigid-body impulse (step 10): see their steps.
 //
 // Input domain: answers must match the exact ones (as above) for every input whose
 // coordinates, velocity and gravity components and speeds are 0 or of magnitude 2^-130 to
@@ -65,7 +68,10 @@
 // within one input, the gaps between its surfaces (a crack) at least 2^-40 S.
 // Plane normals need not be unit (any non-zero length in that range); triangles may be
 // needles (aspect ratios up to 1e8). The tests draw from across it, out to about 2^-120
-// and 2^120.
+// and 2^120. Step 9: stiffness and damping 0 or of magnitude 2^-20 to 2^20, the rest
+// length a length. Step 10: angular velocities and inverse-inertia entries 0 or of
+// magnitude 2^-130 to 2^130 (its tests draw lengths and speeds from 2^-40 to 2^40, so
+// that w = v / length and I^-1 = 1 / (m length^2) stay inside).
 //
 // Preconditions. Each function refuses invalid input with std::invalid_argument, its
 // message naming the argument and the rule (e.g. "impulse: mass must be finite and > 0,
@@ -81,7 +87,12 @@
 //    its vertices; bounce_cap in [0, kMaxBounceCap]; restitution and friction >= 0;
 //  - impulse: normal a unit vector (| |n|^2 - 1 | <= 1e-9), mass > 0;
 //  - settle: when last.hit, last names one plane or one triangle of the scene, and
-//    last.normal is non-zero.
+//    last.normal is non-zero;
+//  - spring_force: both particles valid as for force; spring.stiffness, damping and
+//    rest_length >= 0;
+//  - rigid_impulse: masses > 0; each inverse_inertia symmetric (exactly) with a
+//    non-negative diagonal (and positive semi-definite, as an inverse inertia tensor is:
+//    not checked); contact.normal a unit vector (| |n|^2 - 1 | <= 1e-9); restitution >= 0.
 #pragma once
 
 #include "common/geometry.h"
@@ -390,5 +401,83 @@ struct System {
   // where they are at the end of each step before calling it.
   void step(double dt);
 };
+
+// ---- Step 9 (L07S9): a damped spring between two particles -------------------------
+// Extension. Lecture 002's linear spring and viscous damping, between two particles.
+
+struct Spring {
+  double stiffness = 1.0;    // k_s: force per unit of stretch
+  double damping = 0.0;      // k_d: force per unit of speed along the spring
+  double rest_length = 1.0;  // l_rest: the length at which the spring pulls nothing
+};
+
+// The force the spring puts on `a` (the force on b is its opposite, Newton's third law):
+//     d = a.position - b.position,   l = |d|,   u = d / l   (unit, from b toward a),
+//     F_a = -( k_s (l - l_rest) + k_d ((a.velocity - b.velocity) . u) ) u.
+// Stretched (l > l_rest) it pulls a toward b; compressed it pushes a away. The damping
+// takes only the part of the relative velocity along the spring: particles circling
+// each other at a fixed distance feel no damping.
+// Zero length (a.position == b.position, exactly): u is undefined and the force is zero
+// (a defined rule, not an error).
+// Tolerance: F within
+//     tol_F = 1e-9 (k_s S + k_d V) (1 + S / l),
+// S the largest absolute coordinate of the two positions and l_rest, V the largest
+// absolute component of the two velocities: the direction u is only known to about
+// 1e-16 S / l when the particles are close (d is a difference of coordinates of size S),
+// which is why the bound grows with S / l. When l <= 1e-9 S the direction is in doubt
+// (it turns freely under a relative 1e-9 change of the input): any finite force passes.
+Vec3 spring_force(const Particle& a, const Particle& b, const Spring& spring);
+
+// ---- Step 10 (L07S10): rigid-body impulse with its angular part --------------------
+// Extension. Lecture 003's contact algorithm: two rigid bodies meet at one point; one
+// impulse J = j n changes both linear and angular velocities.
+
+struct RigidBody {
+  Vec3 centre = Vec3::Zero();               // centre of mass
+  Vec3 velocity = Vec3::Zero();             // of the centre of mass
+  Vec3 angular_velocity = Vec3::Zero();     // w, radians per second, world frame
+  double mass = 1.0;                        // m
+  Mat3 inverse_inertia = Mat3::Identity();  // I^-1 in the WORLD frame: R I_body^-1 R^T
+};
+
+struct Contact {
+  Vec3 point = Vec3::Zero();    // where the bodies touch
+  Vec3 normal = Vec3::UnitZ();  // unit, from b toward a: the impulse pushes a along +n
+  double restitution = 0.5;     // e
+};
+
+struct RigidImpulse {
+  bool closing = false;            // v_rel < 0: the contact points move together
+  double v_rel = 0.0;              // n . (v_pa - v_pb), see below
+  double j = 0.0;                  // the impulse's size (0 when not closing)
+  Vec3 velocity_a = Vec3::Zero();  // after the impulse (unchanged when not closing)
+  Vec3 angular_velocity_a = Vec3::Zero();
+  Vec3 velocity_b = Vec3::Zero();
+  Vec3 angular_velocity_b = Vec3::Zero();
+};
+
+// With r_a = point - a.centre, r_b = point - b.centre, the contact points' velocities
+// v_pa = v_a + w_a x r_a and v_pb = v_b + w_b x r_b, and v_rel = n . (v_pa - v_pb):
+//  - closing when v_rel < 0; v_rel = 0 (sliding or resting) and v_rel > 0 are not closing,
+//    and the bodies are returned unchanged;
+//  - when closing:  j = -(1 + e) v_rel / (1/m_a + 1/m_b + n . ((I_a^-1 (r_a x n)) x r_a)
+//                                                      + n . ((I_b^-1 (r_b x n)) x r_b)),
+//    J = j n,   v_a' = v_a + J / m_a,   v_b' = v_b - J / m_b,
+//    w_a' = w_a + I_a^-1 (r_a x J),   w_b' = w_b - I_b^-1 (r_b x J).
+// Then the contact points separate at -e times the speed they closed with
+// (n . (v_pa' - v_pb') = -e v_rel), and the momentum m_a v_a + m_b v_b is unchanged.
+// Tolerances. S: the largest absolute coordinate of the centres and the point; for each
+// body R = |r| + S (r's length, plus the size of the coordinates r is a difference of) and
+// K = 3 times the largest absolute entry of its I^-1; T = |v_a| + |v_b| + |w_a| R_a + |w_b| R_b
+// (the size of v_rel's terms); D the exact denominator of j, D_abs = 1/m_a + 1/m_b +
+// K_a R_a^2 + K_b R_b^2 (the size of its terms).
+//  - closing: exact, except when 0 < |v_rel| <= 1e-8 T, where either answer passes (an
+//    exact tie, v_rel = 0, is not closing: the rule above);
+//  - v_rel within 1e-9 T;  j within tol_j = 1e-9 ((1 + e) T + |j| D_abs) / D;
+//  - v_a within 1e-9 |v_a| + (tol_j + 1e-9 |j|) / m_a, w_a within 1e-9 |w_a| +
+//    K_a R_a (tol_j + 1e-9 |j|) (the same for b);
+//  - the two invariants above, checked exactly on your velocities, within what those
+//    tolerances allow.
+RigidImpulse rigid_impulse(const RigidBody& a, const RigidBody& b, const Contact& contact);
 
 }  // namespace labkit::lab07

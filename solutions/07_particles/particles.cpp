@@ -666,4 +666,87 @@ void System::step(double dt) {
   time += dt;
 }
 
+// ---- Step 9 (L07S9): a damped spring between two particles -------------------------
+
+// Hooke's law: a spring pulls in proportion to how far it is stretched beyond its rest
+// length, along its own line. With u the unit vector from b to a, a stretched spring
+// (l > l_rest) pulls a back toward b: F_a = -k_s (l - l_rest) u. The damper resists the
+// rate at which the length changes, and that rate is dl/dt = (v_a - v_b) . u: only the
+// part of the relative velocity along the spring. Damping the whole relative velocity
+// would also brake two particles that circle each other at a fixed length, which no
+// spring does. The force on b is -F_a (Newton's third law), so the pair's momentum is
+// kept.
+Vec3 spring_force(const Particle& a, const Particle& b, const Spring& spring) {
+  require_valid("spring_force", "a", a);
+  require_valid("spring_force", "b", b);
+  require_not_negative("spring_force", "spring.stiffness", spring.stiffness);
+  require_not_negative("spring_force", "spring.damping", spring.damping);
+  require_not_negative("spring_force", "spring.rest_length", spring.rest_length);
+  const Vec3 d = a.position - b.position;
+  const double l = d.norm();
+  if (l == 0) return Vec3::Zero();  // no direction to pull along: the header's rule
+  const Vec3 u = d / l;
+  const double stretch = l - spring.rest_length;                // > 0: stretched
+  const double lengthening = (a.velocity - b.velocity).dot(u);  // dl/dt
+  return -(spring.stiffness * stretch + spring.damping * lengthening) * u;
+}
+
+// ---- Step 10 (L07S10): rigid-body impulse with its angular part --------------------
+
+namespace {
+
+void require_valid(const char* query, const std::string& name, const RigidBody& body) {
+  require_finite(query, name + ".centre", body.centre);
+  require_finite(query, name + ".velocity", body.velocity);
+  require_finite(query, name + ".angular_velocity", body.angular_velocity);
+  require_positive(query, name + ".mass", body.mass);
+  const Mat3& m = body.inverse_inertia;
+  const bool symmetric = m.allFinite() && m(0, 1) == m(1, 0) && m(0, 2) == m(2, 0) && m(1, 2) == m(2, 1);
+  const bool diagonal = m(0, 0) >= 0 && m(1, 1) >= 0 && m(2, 2) >= 0;
+  if (!symmetric || !diagonal)
+    throw std::invalid_argument(std::string(query) + ": " + name +
+                                ".inverse_inertia must be finite, symmetric, with a diagonal >= 0, got rows " +
+                                text(Vec3(m.row(0))) + " " + text(Vec3(m.row(1))) + " " + text(Vec3(m.row(2))));
+}
+
+}  // namespace
+
+// Derivation (lecture 003). A body's material point at the contact moves with
+// v_p = v + w x r, r = point - centre. An impulse J = j n at that point changes the
+// momentum by J (v' = v + J / m) and the angular momentum by the torque impulse r x J
+// (w' = w + I^-1 (r x J), with I^-1 in the world frame). So the contact point's velocity
+// changes by
+//     dv_p = J / m + (I^-1 (r x J)) x r  =  j (n / m + (I^-1 (r x n)) x r),
+// and along the normal by j (1/m + n . ((I^-1 (r x n)) x r)). b gets -J. Newton's law of
+// restitution asks v_rel' = -e v_rel; v_rel' - v_rel = j * (the sum of both bodies' terms),
+// so j = -(1 + e) v_rel / (1/m_a + 1/m_b + angular terms). The angular terms equal
+// (r x n) . I^-1 (r x n) >= 0: a body that can turn gives way more easily than one that
+// cannot, so j is never more than the particle formula's.
+RigidImpulse rigid_impulse(const RigidBody& a, const RigidBody& b, const Contact& contact) {
+  require_valid("rigid_impulse", "a", a);
+  require_valid("rigid_impulse", "b", b);
+  require_finite("rigid_impulse", "contact.point", contact.point);
+  const Vec3& n = contact.normal;
+  require(n.allFinite() && std::abs(n.squaredNorm() - 1) <= 1e-9, "rigid_impulse", "contact.normal",
+          "must be a unit vector", n);
+  require_not_negative("rigid_impulse", "contact.restitution", contact.restitution);
+  RigidImpulse out;
+  out.velocity_a = a.velocity, out.angular_velocity_a = a.angular_velocity;
+  out.velocity_b = b.velocity, out.angular_velocity_b = b.angular_velocity;
+  const Vec3 r_a = contact.point - a.centre, r_b = contact.point - b.centre;
+  const Vec3 v_pa = a.velocity + a.angular_velocity.cross(r_a), v_pb = b.velocity + b.angular_velocity.cross(r_b);
+  out.v_rel = n.dot(v_pa - v_pb);
+  if (!(out.v_rel < 0)) return out;  // moving apart, or resting/sliding (v_rel = 0): no impulse
+  out.closing = true;
+  const Vec3 turn_a = a.inverse_inertia * r_a.cross(n), turn_b = b.inverse_inertia * r_b.cross(n);
+  const double denominator = 1 / a.mass + 1 / b.mass + n.dot(turn_a.cross(r_a)) + n.dot(turn_b.cross(r_b));
+  out.j = -(1 + contact.restitution) * out.v_rel / denominator;
+  const Vec3 J = out.j * n;
+  out.velocity_a = a.velocity + J / a.mass;                                        // p_a += J
+  out.velocity_b = b.velocity - J / b.mass;                                        // p_b -= J
+  out.angular_velocity_a = a.angular_velocity + a.inverse_inertia * r_a.cross(J);  // L_a += r_a x J
+  out.angular_velocity_b = b.angular_velocity - b.inverse_inertia * r_b.cross(J);  // L_b -= r_b x J
+  return out;
+}
+
 }  // namespace labkit::lab07
