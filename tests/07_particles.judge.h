@@ -72,6 +72,11 @@ Outcome settle(const SettleCase& in, const Vec3& got);
 // not behind any plane (exactly); the count equal to the births while none can have died.
 Outcome system_step(const SystemCase& in, const System& after, int step);
 
+// Step 9 (tests/07_particles.judge.bodies.cpp).
+Outcome spring_force(const SpringCase& in, const Vec3& got);
+// Step 10.
+Outcome rigid_impulse(const RigidCase& in, const RigidImpulse& got);
+
 // The judges' doubt tests, which the generators use to keep decisive families just
 // outside the ambiguity band: a point's side of a plane (at input scale S), a segment
 // against a two-sided triangle (at tol), and the |v_close| below which an impulse's
@@ -79,6 +84,10 @@ Outcome system_step(const SystemCase& in, const System& after, int step);
 bool plane_in_doubt(const Plane& p, const Vec3& x, double scale);
 bool sheet_in_doubt(const Segment& s, const Triangle& tri, double tol);
 double closing_band(const ImpulseCase& in);
+// Step 9: the spring's direction is in doubt (l <= 1e-9 S); step 10: |v_rel| below this
+// band leaves "closing" in doubt.
+bool spring_in_doubt(const SpringCase& in);
+double rigid_closing_band(const RigidCase& in);
 
 }  // namespace judge
 }  // namespace labkit::lab07

@@ -103,3 +103,37 @@ labkit_mutant(07 particles NAME settles_off_last_only STEP 8 SAYS "crease" "behi
   REPLACE "keep[i] = last.hit && last.plane == int(i);")
 
 set(LABKIT_UNANCHORED_MUTANTS OFF)
+
+# Step 9 (extension): the damper on the whole relative velocity brakes particles that
+# circle each other at a fixed length; a spring damps only the change of its length.
+labkit_mutant(07 particles NAME spring_damps_whole_relative_velocity STEP 9 SAYS "along the spring"
+  FIND "return -(spring.stiffness * stretch + spring.damping * lengthening) * u;"
+  REPLACE "return -spring.stiffness * stretch * u - spring.damping * (a.velocity - b.velocity);")
+
+# Step 9: d = b - a gives the force on b (or the sign flipped): the spring pushes when
+# stretched.
+labkit_mutant(07 particles NAME spring_force_on_b STEP 9 SAYS "force is on a"
+  FIND "const Vec3 d = a.position - b.position;"
+  REPLACE "const Vec3 d = b.position - a.position;")
+
+# Step 9: Hooke's law on the whole length: a spring that is never at rest.
+labkit_mutant(07 particles NAME spring_ignores_rest_length STEP 9 SAYS "rest length"
+  FIND "const double stretch = l - spring.rest_length;"
+  REPLACE "const double stretch = l;")
+
+# Step 10 (extension): the particle formula j = -(1 + e) v_rel / (1/m_a + 1/m_b): the
+# bodies' turning left out of j, so the contact points do not separate at -e v_rel.
+labkit_mutant(07 particles NAME rigid_angular_part_forgotten STEP 10 SAYS "angular terms" "denominator"
+  FIND "const double denominator = 1 / a.mass + 1 / b.mass + n.dot(turn_a.cross(r_a)) + n.dot(turn_b.cross(r_b));"
+  REPLACE "const double denominator = 1 / a.mass + 1 / b.mass;")
+
+# Step 10: J x r instead of r x J: the torque impulse turns the body the wrong way.
+labkit_mutant(07 particles NAME rigid_torque_order_swapped STEP 10 SAYS "r_a x J"
+  FIND "out.angular_velocity_a = a.angular_velocity + a.inverse_inertia * r_a.cross(J);"
+  REPLACE "out.angular_velocity_a = a.angular_velocity + a.inverse_inertia * J.cross(r_a);")
+
+# Step 10: the angular momentum change r x J taken as the angular velocity change: the
+# inverse inertia not applied.
+labkit_mutant(07 particles NAME rigid_inverse_inertia_not_applied STEP 10 SAYS "inverse inertia"
+  FIND "out.angular_velocity_b = b.angular_velocity - b.inverse_inertia * r_b.cross(J);"
+  REPLACE "out.angular_velocity_b = b.angular_velocity - r_b.cross(J);")

@@ -794,6 +794,118 @@ TEST_CASE(LABKIT_STEP(L07S8) ": creases, invariants and the loop, random cases",
   check::random_cases(query::system, gen::system_case(), run_system);
 }
 
+// ---- Step 9 (extension) ----------------------------------------------------------------
+
+namespace {
+
+Outcome run_spring(const SpringCase& in) {
+  return judge::spring_force(in, answerer::spring_force(in.a, in.b, in.spring));
+}
+
+SpringCase spring_case(Vec3 a, Vec3 va, Vec3 b, Vec3 vb, Spring spring) {
+  SpringCase c;
+  c.a.position = a, c.a.velocity = va, c.b.position = b, c.b.velocity = vb, c.spring = spring;
+  return c;
+}
+
+auto expect_spring(std::string rule, Vec3 force) {
+  return [=](const SpringCase& in) {
+    const Vec3 got = answerer::spring_force(in.a, in.b, in.spring);
+    Expect e(rule);
+    e.near("force", got, force, 1e-12);
+    const Outcome o = e.outcome();
+    return o.verdict == Outcome::Verdict::fail ? o : judge::spring_force(in, got);
+  };
+}
+
+}  // namespace
+
+TEST_CASE(LABKIT_STEP(L07S9) ": worked examples", "[lab07][step9]") {
+  const Vec3 zero = Vec3::Zero();
+  check::example(
+      query::spring_force, "stretched by 2: it pulls a back toward b",
+      spring_case({3, 0, 0}, zero, zero, zero, {2, 0, 1}),
+      expect_spring("Hooke's law: F_a = -k_s (l - l_rest) u, the stretch beyond the rest length, with u = (a - b) / l "
+                    "the unit vector from b to a (the force is on a)",
+                    {-4, 0, 0}));
+  check::example(
+      query::spring_force, "compressed to half its rest length: it pushes a away from b",
+      spring_case({0, 0.5, 0}, zero, zero, zero, {4, 0, 1}),
+      expect_spring("the rest length: a spring shorter than l_rest pushes, k_s (l - l_rest) < 0", {0, 2, 0}));
+  check::example(query::spring_force,
+                 "at rest length, a moving away along the spring and sideways: only the first is damped",
+                 spring_case({3, 0, 0}, {2, 5, 0}, zero, zero, {2, 0.5, 3}),
+                 expect_spring("damping acts along the spring: k_d ((v_a - v_b) . u) u, the sideways 5 is not damped",
+                               {-1, 0, 0}));
+  check::example(
+      query::spring_force, "both particles at one point: no direction, no force",
+      spring_case({1, 1, 1}, {1, 0, 0}, {1, 1, 1}, zero, {2, 0.5, 1}),
+      expect_spring("zero length: a and b at the same point give the spring no direction, and the force is zero",
+                    zero));
+}
+
+TEST_CASE(LABKIT_STEP(L07S9) ": random cases", "[lab07][step9][oracle]") {
+  check::random_cases(query::spring_force, gen::spring_case(), run_spring);
+}
+
+// ---- Step 10 (extension) ---------------------------------------------------------------
+
+namespace {
+
+Outcome run_rigid(const RigidCase& in) {
+  return judge::rigid_impulse(in, answerer::rigid_impulse(in.a, in.b, in.contact));
+}
+
+// The handout's example: a (mass 1, I^-1 = 1) centred at (-1, 0, 1) meets b (mass 1,
+// I^-1 = 1) centred at (0, 0, -1) at the origin, normal +z (from b toward a), e = 1/2.
+RigidCase lever(Vec3 va, Vec3 wa) {
+  RigidCase c;
+  c.a.centre = {-1, 0, 1}, c.a.velocity = va, c.a.angular_velocity = wa;
+  c.b.centre = {0, 0, -1};
+  c.contact = {Vec3::Zero(), Vec3::UnitZ(), 0.5};
+  return c;
+}
+
+auto expect_rigid(std::string rule, bool closing, double j, Vec3 va, Vec3 wa, Vec3 vb, Vec3 wb) {
+  return [=](const RigidCase& in) {
+    const RigidImpulse got = answerer::rigid_impulse(in.a, in.b, in.contact);
+    Expect e(rule);
+    e.equal("closing", got.closing, closing);
+    e.near("j", got.j, j, 1e-12);
+    e.near("velocity_a", got.velocity_a, va, 1e-12);
+    e.near("angular_velocity_a", got.angular_velocity_a, wa, 1e-12);
+    e.near("velocity_b", got.velocity_b, vb, 1e-12);
+    e.near("angular_velocity_b", got.angular_velocity_b, wb, 1e-12);
+    const Outcome o = e.outcome();
+    return o.verdict == Outcome::Verdict::fail ? o : judge::rigid_impulse(in, got);
+  };
+}
+
+}  // namespace
+
+TEST_CASE(LABKIT_STEP(L07S10) ": worked examples", "[lab07][step10]") {
+  const Vec3 zero = Vec3::Zero();
+  check::example(
+      query::rigid_impulse, "a falls at 2 onto b off its centre: j = 1, and a starts to turn", lever({0, 0, -2}, zero),
+      expect_rigid("j = -(1 + e) v_rel / (1/m_a + 1/m_b + n . ((I_a^-1 (r_a x n)) x r_a) + ...) = 3 / 3: the "
+                   "angular terms add 1 to the denominator (a's lever arm); w_a' = w_a + I_a^-1 (r_a x J)",
+                   true, 1, {0, 0, -1}, {0, -1, 0}, {0, 0, -1}, zero));
+  check::example(query::rigid_impulse, "a still body spinning into b: its contact point closes at 2",
+                 lever(zero, {0, 2, 0}),
+                 expect_rigid("the contact point moves with v + w x r: w_a x r_a = (-2, 0, -2) closes at 2", true, 1,
+                              {0, 0, 1}, {0, 1, 0}, {0, 0, -1}, zero));
+  check::example(
+      query::rigid_impulse, "a rising away from b: no impulse", lever({0, 0, 2}, zero),
+      expect_rigid("v_rel = 2 > 0: the bodies separate, and nothing changes", false, 0, {0, 0, 2}, zero, zero, zero));
+  check::example(query::rigid_impulse, "a sliding over b: v_rel = 0 is not closing", lever({3, 0, 0}, zero),
+                 expect_rigid("closing only when v_rel < 0: sliding (v_rel = 0) gets no impulse", false, 0, {3, 0, 0},
+                              zero, zero, zero));
+}
+
+TEST_CASE(LABKIT_STEP(L07S10) ": random cases", "[lab07][step10][oracle]") {
+  check::random_cases(query::rigid_impulse, gen::rigid_case(), run_rigid);
+}
+
 // ---- Preconditions (the header's "Preconditions"): the reference only ------------------
 // Tagged [contract], in no step: students are not graded on invalid input. Each call must
 // throw std::invalid_argument whose message names the argument.
@@ -910,6 +1022,32 @@ TEST_CASE("L07 preconditions: invalid input is refused, naming the argument", "[
   system.emitter.mass = 1;
   system.scene.planes = {Plane{bad, 0}};
   rejects("scene.planes[0].normal", [&] { answerer::step(system, 0.1); });
+
+  const Particle far{Vec3(1, 0, 0)};
+  rejects("spring.stiffness", [&] { answerer::spring_force(far, Particle{}, Spring{-1, 0, 1}); });
+  rejects("spring.damping", [&] { answerer::spring_force(far, Particle{}, Spring{1, nan, 1}); });
+  rejects("spring.rest_length", [&] { answerer::spring_force(far, Particle{}, Spring{1, 0, -1}); });
+  rejects("a.position", [&] { answerer::spring_force(Particle{bad}, Particle{}, Spring{}); });
+  Particle massless;
+  massless.mass = 0;
+  rejects("b.mass", [&] { answerer::spring_force(far, massless, Spring{}); });
+
+  RigidBody body;
+  const Contact contact{Vec3::Zero(), up, 0.5};
+  body.mass = 0;
+  rejects("a.mass", [&] { answerer::rigid_impulse(body, RigidBody{}, contact); });
+  body = RigidBody{};
+  body.inverse_inertia(0, 1) = 1;  // not symmetric
+  rejects("b.inverse_inertia", [&] { answerer::rigid_impulse(RigidBody{}, body, contact); });
+  body = RigidBody{};
+  body.angular_velocity = bad;
+  rejects("a.angular_velocity", [&] { answerer::rigid_impulse(body, RigidBody{}, contact); });
+  rejects("contact.normal", [&] {
+    answerer::rigid_impulse(RigidBody{}, RigidBody{}, Contact{Vec3::Zero(), Vec3(0, 0, 2), 0.5});
+  });
+  rejects("contact.restitution", [&] {
+    answerer::rigid_impulse(RigidBody{}, RigidBody{}, Contact{Vec3::Zero(), up, -0.5});
+  });
 
   // Documented results, not errors: zero speed or gravity (count 0), a zero normal (no hit).
   CHECK(answerer::aim(Vec3::Zero(), Vec3(1, 0, 0), 0, Vec3(0, 0, -1)).count == 0);

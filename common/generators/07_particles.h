@@ -69,4 +69,15 @@ rc::Gen<lab07::CollideCase> dead_slide();
 rc::Gen<lab07::SettleCase> settle_case(bool one_surface);
 rc::Gen<lab07::SystemCase> system_case();
 
+// ---- The extensions' cases (common/generators/07_particles.bodies.cpp) ------------------
+// Step 9: two particles on a spring: far apart, close together (down to 2^-20 of their
+// coordinates), far from the origin, at rest length, circling (no stretching), with and
+// without damping and rest length.
+rc::Gen<lab07::SpringCase> spring_case();
+// Step 10: two rigid bodies at a contact: general, diagonal and round inertia, hit
+// through both centres (no turning), separating, sliding past (v_rel near 0, moved just
+// outside the ambiguity band), a heavy body and a light one; lengths and speeds from
+// 2^-40 to 2^40.
+rc::Gen<lab07::RigidCase> rigid_case();
+
 }  // namespace labkit::gen

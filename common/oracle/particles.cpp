@@ -180,4 +180,74 @@ bool squared_speed_at_least(const Vec3& v, const Vec3& reference, double factor)
   return dot(a, a) >= ft(factor) * dot(b, b);
 }
 
+// ---- Springs -----------------------------------------------------------------------
+
+Vec3 spring_force(const Vec3& position_a, const Vec3& velocity_a, const Vec3& position_b, const Vec3& velocity_b,
+                  double stiffness, double damping, double rest_length) {
+  const V3 d = exact_vector(position_a) - exact_vector(position_b);
+  if (CGAL::is_zero(dot(d, d))) return Vec3::Zero();
+  const FT l = length(d);
+  const FT closing = dot(exact_vector(velocity_a) - exact_vector(velocity_b), d) / l;  // (v_a - v_b) . u
+  const FT size = ft(stiffness) * (l - ft(rest_length)) + ft(damping) * closing;
+  return rounded((-size / l) * d);
+}
+
+// ---- Rigid bodies ------------------------------------------------------------------
+
+namespace {
+
+V3 times(const labkit::Mat3& m, const V3& v) {
+  V3 r;
+  FT* out[3] = {&r.x, &r.y, &r.z};
+  for (int i = 0; i < 3; ++i) *out[i] = ft(m(i, 0)) * v.x + ft(m(i, 1)) * v.y + ft(m(i, 2)) * v.z;
+  return r;
+}
+
+// The velocity of the body's material point at `point`: v + w x r.
+V3 point_velocity(const Body& body, const V3& point) {
+  const V3 r = point - exact_vector(body.centre);
+  return exact_vector(body.velocity) + cross(exact_vector(body.angular_velocity), r);
+}
+
+FT normal_velocity(const Body& a, const Body& b, const Vec3& point, const Vec3& normal) {
+  const V3 p = exact_vector(point);
+  return dot(exact_vector(normal), point_velocity(a, p) - point_velocity(b, p));
+}
+
+}  // namespace
+
+RigidImpulse rigid_impulse(const Body& a, const Body& b, const Vec3& point, const Vec3& normal, double e) {
+  RigidImpulse out;
+  const V3 p = exact_vector(point), n = exact_vector(normal);
+  const V3 ra = p - exact_vector(a.centre), rb = p - exact_vector(b.centre);
+  const V3 turn_a = times(a.inverse_inertia, cross(ra, n)), turn_b = times(b.inverse_inertia, cross(rb, n));
+  const FT denominator =
+      ft(1) / ft(a.mass) + ft(1) / ft(b.mass) + dot(n, cross(turn_a, ra)) + dot(n, cross(turn_b, rb));
+  const FT v_rel = normal_velocity(a, b, point, normal);
+  out.v_rel = kernel::rounded(v_rel);
+  out.denominator = kernel::rounded(denominator);
+  out.velocity_a = a.velocity, out.angular_velocity_a = a.angular_velocity;
+  out.velocity_b = b.velocity, out.angular_velocity_b = b.angular_velocity;
+  if (!CGAL::is_negative(v_rel)) return out;
+  out.closing = true;
+  const FT j = -(ft(1) + ft(e)) * v_rel / denominator;
+  out.j = kernel::rounded(j);
+  out.velocity_a = rounded(exact_vector(a.velocity) + (j / ft(a.mass)) * n);
+  out.velocity_b = rounded(exact_vector(b.velocity) - (j / ft(b.mass)) * n);
+  out.angular_velocity_a = rounded(exact_vector(a.angular_velocity) + j * turn_a);  // I_a^-1 (r_a x j n)
+  out.angular_velocity_b = rounded(exact_vector(b.angular_velocity) - j * turn_b);
+  return out;
+}
+
+Vec3 momentum_change(const Body& a, const Body& b, const Vec3& velocity_a, const Vec3& velocity_b) {
+  return rounded(ft(a.mass) * (exact_vector(velocity_a) - exact_vector(a.velocity)) +
+                 ft(b.mass) * (exact_vector(velocity_b) - exact_vector(b.velocity)));
+}
+
+double restitution_defect(const Body& a, const Body& b, const Body& a_after, const Body& b_after, const Vec3& point,
+                          const Vec3& normal, double e) {
+  return kernel::rounded(normal_velocity(a_after, b_after, point, normal) +
+                         ft(e) * normal_velocity(a, b, point, normal));
+}
+
 }  // namespace oracle

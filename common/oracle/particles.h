@@ -88,4 +88,41 @@ bool trajectory_reaches(const Vec3& from, const Vec3& velocity, double t, const 
 bool squared_speed_at_most(const Vec3& v, const Vec3& reference, double factor);
 bool squared_speed_at_least(const Vec3& v, const Vec3& reference, double factor);
 
+// ---- Springs (step 9) --------------------------------------------------------------
+
+// The force on a of a damped spring from a to b (lab 07's header, step 9):
+//   d = a - b, l = |d|, u = d / l,  F_a = -(k_s (l - l_rest) + k_d ((v_a - v_b) . u)) u,
+// zero when d = 0. l is the exact |d|^2 rounded and rooted in double (see above); the
+// rest is exact, rounded once.
+Vec3 spring_force(const Vec3& position_a, const Vec3& velocity_a, const Vec3& position_b, const Vec3& velocity_b,
+                  double stiffness, double damping, double rest_length);
+
+// ---- Rigid bodies (step 10) --------------------------------------------------------
+
+struct Body {
+  Vec3 centre = Vec3::Zero();
+  Vec3 velocity = Vec3::Zero();
+  Vec3 angular_velocity = Vec3::Zero();
+  double mass = 1.0;
+  labkit::Mat3 inverse_inertia = labkit::Mat3::Identity();  // world frame
+};
+struct RigidImpulse {
+  bool closing = false;      // v_rel < 0, exactly
+  double v_rel = 0.0;        // n . ((v_a + w_a x r_a) - (v_b + w_b x r_b)), r = point - centre
+  double j = 0.0;            // -(1 + e) v_rel / denominator when closing, else 0
+  double denominator = 0.0;  // 1/m_a + 1/m_b + n . ((I_a^-1 (r_a x n)) x r_a) + (the same for b)
+  Vec3 velocity_a = Vec3::Zero(), angular_velocity_a = Vec3::Zero();
+  Vec3 velocity_b = Vec3::Zero(), angular_velocity_b = Vec3::Zero();
+};
+// Lecture 003's contact algorithm with restitution e, `normal` used as given (meant to be
+// unit length, from b toward a): every operation is rational, so all of it is exact.
+RigidImpulse rigid_impulse(const Body& a, const Body& b, const Vec3& point, const Vec3& normal, double e);
+// The invariants of an answer, exact and rounded once: the change of linear momentum
+// m_a (v_a' - v_a) + m_b (v_b' - v_b) (zero for any impulse pair J, -J), and
+// v_rel' + e v_rel with v_rel' the relative normal velocity of the contact points after
+// (zero for a closing contact).
+Vec3 momentum_change(const Body& a, const Body& b, const Vec3& velocity_a, const Vec3& velocity_b);
+double restitution_defect(const Body& a, const Body& b, const Body& a_after, const Body& b_after, const Vec3& point,
+                          const Vec3& normal, double e);
+
 }  // namespace oracle

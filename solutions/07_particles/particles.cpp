@@ -682,12 +682,15 @@ Vec3 spring_force(const Particle& a, const Particle& b, const Spring& spring) {
   require_not_negative("spring_force", "spring.stiffness", spring.stiffness);
   require_not_negative("spring_force", "spring.damping", spring.damping);
   require_not_negative("spring_force", "spring.rest_length", spring.rest_length);
+  // mutant: spring_force_on_b
   const Vec3 d = a.position - b.position;
   const double l = d.norm();
   if (l == 0) return Vec3::Zero();  // no direction to pull along: the header's rule
   const Vec3 u = d / l;
+  // mutant: spring_ignores_rest_length
   const double stretch = l - spring.rest_length;                // > 0: stretched
   const double lengthening = (a.velocity - b.velocity).dot(u);  // dl/dt
+  // mutant: spring_damps_whole_relative_velocity
   return -(spring.stiffness * stretch + spring.damping * lengthening) * u;
 }
 
@@ -739,12 +742,15 @@ RigidImpulse rigid_impulse(const RigidBody& a, const RigidBody& b, const Contact
   if (!(out.v_rel < 0)) return out;  // moving apart, or resting/sliding (v_rel = 0): no impulse
   out.closing = true;
   const Vec3 turn_a = a.inverse_inertia * r_a.cross(n), turn_b = b.inverse_inertia * r_b.cross(n);
+  // mutant: rigid_angular_part_forgotten
   const double denominator = 1 / a.mass + 1 / b.mass + n.dot(turn_a.cross(r_a)) + n.dot(turn_b.cross(r_b));
   out.j = -(1 + contact.restitution) * out.v_rel / denominator;
   const Vec3 J = out.j * n;
-  out.velocity_a = a.velocity + J / a.mass;                                        // p_a += J
-  out.velocity_b = b.velocity - J / b.mass;                                        // p_b -= J
+  out.velocity_a = a.velocity + J / a.mass;  // p_a += J
+  out.velocity_b = b.velocity - J / b.mass;  // p_b -= J
+  // mutant: rigid_torque_order_swapped
   out.angular_velocity_a = a.angular_velocity + a.inverse_inertia * r_a.cross(J);  // L_a += r_a x J
+  // mutant: rigid_inverse_inertia_not_applied
   out.angular_velocity_b = b.angular_velocity - b.inverse_inertia * r_b.cross(J);  // L_b -= r_b x J
   return out;
 }
