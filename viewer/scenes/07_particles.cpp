@@ -4,6 +4,8 @@
 //   fountain         system (or no token): a fountain on a terrain and a floor,
 //                    animated with play, pause and single-step        steps 1, 2, 4-7
 //   target practice  aim, exact.aim: the two shots at a target        step 3
+//   spring           spring_force: two particles on a damped spring   step 9
+//   bodies           rigid_impulse: two rigid bodies at a contact     step 10
 //   one step         collide, invariants, first_hit, exact.first_hit, hit_plane:
 //                    one particle's step and its bounces               steps 4-7
 //                    (a moving scene, Scene::velocity u: the surfaces drawn where they
@@ -33,6 +35,9 @@ const std::vector<Preset> kPresets = {
     {"dead", "a dead bounce (e = 0): the hit point is settled above the floor", nullptr, false, -90, 2, 7},
     {"paddle", "a floor rising at u = (0, 0, 2) (e = 1/2): the bounce seen from the floor, from a' = a + u dt", nullptr,
      true, -90, 2, 6},
+    {"spring", "a stretched spring with damping: the force on a, and its opposite on b", nullptr, true, -90, 2, 9},
+    {"bodies", "a box falls on its edge onto a block (e = 1/2): j = 1, and it starts to turn", nullptr, true, -90, 2,
+     10},
 };
 
 // The exact first hit of a segment on a scene (planes, then triangles; ties to the first).
@@ -108,9 +113,16 @@ CollideCase preset_step(const std::string& name) {
 
 ParticlesScene::ParticlesScene(const Setup& setup) {
   case_ = default_fountain();
+  spring_ = default_spring();
+  bodies_ = default_bodies();
   const Preset* preset = view_preset(kPresets, setup);
   if (setup.token.empty() && preset && !preset->token) {
-    if (preset->name != std::string("fountain")) mode_ = Mode::step, one_ = preset_step(preset->name);
+    if (preset->name == std::string("bodies"))
+      mode_ = Mode::bodies;
+    else if (preset->name == std::string("spring"))
+      mode_ = Mode::spring;
+    else if (preset->name != std::string("fountain"))
+      mode_ = Mode::step, one_ = preset_step(preset->name);
     // A figure shows the fountain grown: two seconds of it.
     else
       case_.steps = 120;
@@ -129,6 +141,8 @@ ParticlesScene::ParticlesScene(const Setup& setup) {
              Loaders{[&](auto, const SystemCase& in) { case_ = in; },
                      [&](auto, const LaunchCase& in) { mode_ = Mode::target, launch_ = in; },
                      [&](auto, const CollideCase& in) { mode_ = Mode::step, one_ = in; },
+                     [&](auto, const SpringCase& in) { mode_ = Mode::spring, spring_ = in; },
+                     [&](auto, const RigidCase& in) { mode_ = Mode::bodies, bodies_ = in; },
                      [&](auto q, const SegmentScene& in) {
     mode_ = Mode::step, one_ = CollideCase{in.segment, in.segment.b - in.segment.a, 1, 1, in.scene};
     if (q == query::hit_plane) {
@@ -156,7 +170,7 @@ void ParticlesScene::restart() {
 }
 
 void ParticlesScene::frame_inputs() {
-  const char* names[] = {"fountain", "target practice", "one step"};
+  const char* names[] = {"fountain", "target practice", "one step", "spring", "bodies"};
   mode = names[int(mode_)];
   Eigen::AlignedBox3d box;
   if (mode_ == Mode::fountain) {
@@ -166,6 +180,12 @@ void ParticlesScene::frame_inputs() {
     const double reach = launch_.speed * launch_.speed / std::max(launch_.gravity.norm(), 1e-9);
     box.extend(launch_.from -
                launch_.gravity.normalized() * std::min(reach / 2, 2 * (launch_.target - launch_.from).norm()));
+  } else if (mode_ == Mode::spring) {
+    box.extend(spring_.a.position), box.extend(spring_.b.position);
+    box.extend(spring_.a.position + Vec3::Constant(0.5)), box.extend(spring_.b.position - Vec3::Constant(0.5));
+  } else if (mode_ == Mode::bodies) {
+    for (const Vec3& p : {bodies_.a.centre, bodies_.b.centre, bodies_.contact.point}) box.extend(p);
+    box.extend(box.min() - Vec3::Constant(1)), box.extend(box.max() + Vec3::Constant(1));
   } else {
     // A moving scene: also where it carries a (a') and where its surfaces start the step.
     const Vec3 carried = one_.scene.velocity * one_.dt;
@@ -180,6 +200,8 @@ void ParticlesScene::frame_inputs() {
 std::string ParticlesScene::token() const {
   if (mode_ == Mode::target) return replay_token(query::aim, launch_);
   if (mode_ == Mode::step) return replay_token(query::collide, one_);
+  if (mode_ == Mode::spring) return replay_token(query::spring_force, spring_);
+  if (mode_ == Mode::bodies) return replay_token(query::rigid_impulse, bodies_);
   SystemCase c = case_;
   c.steps = stepped_;
   return replay_token(query::system, c);
@@ -193,6 +215,10 @@ void ParticlesScene::update() {
     update_fountain();
   else if (mode_ == Mode::target)
     update_target();
+  else if (mode_ == Mode::spring)
+    update_spring();
+  else if (mode_ == Mode::bodies)
+    update_bodies();
   else
     update_step(one_, 4);
 }

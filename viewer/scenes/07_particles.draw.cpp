@@ -127,6 +127,8 @@ void ParticlesScene::draw(Frame& f) {
     }
     return;
   }
+  if (mode_ == Mode::spring) return draw_spring(f);
+  if (mode_ == Mode::bodies) return draw_bodies(f);
   draw_surfaces(r);
   if (mode_ == Mode::step) {
     draw_collision(f, one_, collision_);
@@ -150,6 +152,7 @@ void ParticlesScene::draw(Frame& f) {
 }
 
 bool ParticlesScene::inputs() {
+  if (mode_ == Mode::spring || mode_ == Mode::bodies) return inputs_extensions();
   bool changed = false;
   if (mode_ == Mode::target) {
     changed |= edit("from", launch_.from) | edit("target", launch_.target) |
@@ -198,6 +201,9 @@ bool ParticlesScene::inputs() {
 std::vector<Handle> ParticlesScene::handles() {
   if (mode_ == Mode::target) return {{&launch_.from, "from"}, {&launch_.target, "target"}};
   if (mode_ == Mode::step) return {{&one_.step.a, "a"}, {&one_.step.b, "b"}};
+  if (mode_ == Mode::spring) return {{&spring_.a.position, "a"}, {&spring_.b.position, "b"}};
+  if (mode_ == Mode::bodies)
+    return {{&bodies_.a.centre, "centre a"}, {&bodies_.b.centre, "centre b"}, {&bodies_.contact.point, "contact"}};
   return {};
 }
 

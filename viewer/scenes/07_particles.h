@@ -1,7 +1,8 @@
 // Lab 07 scene: particle systems that bounce. What its files share:
 // 07_particles.cpp sets the scene up and runs the steps,
 // 07_particles.fountain.cpp runs the fountain, 07_particles.draw.cpp draws it and edits
-// its inputs.
+// its inputs, 07_particles.bodies.cpp runs, draws and edits the extensions' two modes
+// (a spring, two rigid bodies).
 #pragma once
 
 #include "viewer/scenes/scenes.h"
@@ -16,7 +17,7 @@ namespace viewer::particles {
 using namespace labkit;
 using namespace labkit::lab07;
 
-enum class Mode { fountain, target, step };
+enum class Mode { fountain, target, step, spring, bodies };
 
 // The exact first hit of a segment on a scene (exact_first_hit).
 struct ExactHit {
@@ -32,6 +33,10 @@ struct Track {
   Attempt<Collision> collision;
   Verdict invariants = Verdict::none;
 };
+
+// The extensions' modes start from their handout's examples (07_particles.bodies.cpp).
+SpringCase default_spring();
+RigidCase default_bodies();
 
 class ParticlesScene : public Scene {
  public:
@@ -51,6 +56,12 @@ class ParticlesScene : public Scene {
   void update_step(const CollideCase& in, int first_step);
   void draw_surfaces(Renderer& r) const;
   void draw_collision(Frame& f, const CollideCase& in, const Attempt<Collision>& got) const;
+  // The extensions (07_particles.bodies.cpp).
+  void update_spring();
+  void update_bodies();
+  void draw_spring(Frame& f) const;
+  void draw_bodies(Frame& f) const;
+  bool inputs_extensions();
 
   Mode mode_ = Mode::fountain;
   SystemCase case_;  // the fountain's set-up: emitter, scene, forces, seed, dt
@@ -74,7 +85,12 @@ class ParticlesScene : public Scene {
   Attempt<Impulse> impulse_;
   Attempt<Collision> collision_;
   ExactHit exact_hit_;
-  Verdict verdict_[8] = {};
+  Verdict verdict_[11] = {};
+
+  SpringCase spring_;  // step 9: two particles on a spring
+  Attempt<Vec3> spring_force_;
+  RigidCase bodies_;  // step 10: two rigid bodies at a contact
+  Attempt<RigidImpulse> rigid_;
 };
 
 }  // namespace viewer::particles
