@@ -36,8 +36,11 @@ Outcome spring_force(const SpringCase& in, const Vec3& got) {
   if (spring_in_doubt(in)) return ambiguous();
   const Vec3 exact = oracle::spring_force(in.a.position, in.a.velocity, in.b.position, in.b.velocity, s.stiffness,
                                           s.damping, s.rest_length);
-  const double S = spring_scale(in), l = (in.a.position - in.b.position).norm();
-  const double tol = kRelative * (s.stiffness * S + s.damping * spring_speed(in)) * (1 + S / l) + 1e-300;
+  // d = a - b carries rounding of size S: the length is off by about S, the direction by
+  // about S / l, which turns the whole force |F| <= k_s |l - l_rest| + k_d |v_a - v_b|.
+  const double S = spring_scale(in), V = spring_speed(in), l = (in.a.position - in.b.position).norm();
+  const double tol =
+      kRelative * (s.stiffness * (S + std::abs(l - s.rest_length) * S / l) + s.damping * V * (1 + 4 * S / l)) + 1e-300;
   Expect e(
       "F_a = -(k_s (l - l_rest) + k_d ((v_a - v_b) . u)) u, u = (a - b) / l: the force is on a, Hooke's law pulls it "
       "back toward the rest length along the spring, and the damping takes only the part of the relative velocity "

@@ -837,11 +837,21 @@ TEST_CASE(LABKIT_STEP(L07S9) ": worked examples", "[lab07][step9]") {
                  spring_case({3, 0, 0}, {2, 5, 0}, zero, zero, {2, 0.5, 3}),
                  expect_spring("damping acts along the spring: k_d ((v_a - v_b) . u) u, the sideways 5 is not damped",
                                {-1, 0, 0}));
-  check::example(
-      query::spring_force, "both particles at one point: no direction, no force",
-      spring_case({1, 1, 1}, {1, 0, 0}, {1, 1, 1}, zero, {2, 0.5, 1}),
-      expect_spring("zero length: a and b at the same point give the spring no direction, and the force is zero",
-                    zero));
+  check::example(query::spring_force, "both particles at one point: no direction, no force; half a unit apart, a push",
+                 spring_case({1, 1, 1}, {1, 0, 0}, {1, 1, 1}, zero, {2, 0.5, 1}),
+                 [](const SpringCase& in) {
+    // The zero force alone would be earned by a file that does nothing: the same
+    // spring, a moved half a unit along x, must push (-2 (0.5 - 1) - 0.5 * 1 = 0.5).
+    SpringCase apart = in;
+    apart.a.position.x() += 0.5;
+    const Outcome moved = expect_spring(
+        "zero length is the only special case: half a unit apart, a is pushed away, "
+        "-(k_s (l - l_rest) + k_d ((v_a - v_b) . u)) u = (0.5, 0, 0)",
+        {0.5, 0, 0})(apart);
+    if (moved.verdict == Outcome::Verdict::fail) return moved;
+    return expect_spring("zero length: a and b at the same point give the spring no direction, and the force is zero",
+                         Vec3::Zero())(in);
+  });
 }
 
 TEST_CASE(LABKIT_STEP(L07S9) ": random cases", "[lab07][step9][oracle]") {

@@ -56,12 +56,18 @@ rc::Gen<SpringCase> spring_case() {
     b.mass = a.mass;
     c.spring.stiffness = *coefficient();
     c.spring.damping = *rc::gen::weightedOneOf<double>({{1, rc::gen::just(0.0)}, {3, coefficient()}});
-    const Vec3 d = a.position - b.position;
+    const Vec3 gap = a.position - b.position;
     c.spring.rest_length = *rc::gen::weightedOneOf<double>({{1, rc::gen::just(0.0)}, {3, dyadic(1, 64, 2)}}) * s;
-    if (family == 3) c.spring.rest_length = d.norm();  // at rest length: only the damping pulls
-    if (family == 4 && d != Vec3::Zero()) {            // circling: no lengthening, so no damping force
+    if (family == 3) {  // at rest length: only the damping pulls, so it must have a lengthening to damp
+      c.spring.rest_length = gap.norm();
+      c.spring.damping = *coefficient();
+      b.velocity = a.velocity - *dyadic(1, 16, 2) * gap;
+    }
+    if (family == 4 && gap != Vec3::Zero()) {  // circling: no lengthening, so no damping force
       const Vec3 dv = a.velocity - b.velocity;
-      b.velocity = a.velocity - (dv - dv.dot(d) / d.squaredNorm() * d);
+      b.velocity = a.velocity - (dv - dv.dot(gap) / gap.squaredNorm() * gap);
+    }
+    if (family == 3 || family == 4) {
       // Cancellation's dust (far below the speeds) set to 0: it would leave the domain.
       for (int i = 0; i < 3; ++i)
         if (std::abs(b.velocity[i]) < std::ldexp(s, -40)) b.velocity[i] = 0;

@@ -420,12 +420,14 @@ struct Spring {
 // Zero length (a.position == b.position, exactly): u is undefined and the force is zero
 // (a defined rule, not an error).
 // Tolerance: F within
-//     tol_F = 1e-9 (k_s S + k_d V) (1 + S / l),
+//     tol_F = 1e-9 ( k_s (S + |l - l_rest| S / l) + k_d V (1 + 4 S / l) ),
 // S the largest absolute coordinate of the two positions and l_rest, V the largest
-// absolute component of the two velocities: the direction u is only known to about
-// 1e-16 S / l when the particles are close (d is a difference of coordinates of size S),
-// which is why the bound grows with S / l. When l <= 1e-9 S the direction is in doubt
-// (it turns freely under a relative 1e-9 change of the input): any finite force passes.
+// absolute component of the two velocities. d is a difference of coordinates of size S,
+// so its rounding moves the length by about 1e-16 S and turns the direction u by about
+// 1e-16 S / l, which turns the whole force (k_s |l - l_rest| plus the damping's up to
+// k_d 4 V): close particles far from the origin have a poorly known direction. When
+// l <= 1e-9 S the direction is in doubt (it turns freely under a relative 1e-9 change of
+// the input): any finite force passes.
 Vec3 spring_force(const Particle& a, const Particle& b, const Spring& spring);
 
 // ---- Step 10 (L07S10): rigid-body impulse with its angular part --------------------
