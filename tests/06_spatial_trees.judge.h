@@ -87,5 +87,13 @@ ObbWalk header_walk(const ObbTree& a, const ObbTree& b, bool a_at_tie = true);
 Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got,
                             Rules rules = Rules::random);
 
+// Step 11 (tests/06_spatial_trees.judge.hash.cpp). The pairs of balls whose cells
+// (floor(c / cell), exact: cell is a power of two) differ by at most 1 along each axis:
+// the most tests the header allows. The pairs against the exact brute force; `calls`,
+// given_balls_meet's calls the judge counted, against that bound. An exact case (in.exact)
+// allows no ambiguity, whatever `rules` says.
+long long neighbour_pairs(const HashCase& in);
+Outcome hashed_pairs(const HashCase& in, const SpherePairs& got, long long calls, Rules rules = Rules::random);
+
 }  // namespace judge
 }  // namespace labkit::lab06

@@ -147,4 +147,23 @@ labkit_mutant(06 spatial_trees NAME ends_compared_privately STEP 6 SAYS "only wi
   FIND "  const int c = compare_ends(a, b);"
   REPLACE "  const int c = (a.value > b.value) - (a.value < b.value);")
 
+# Step 11: a bucket's entries taken whatever their cell: the bucket also holds cells that
+# collide with the one looked for, so balls far apart are tested (and, reached from two
+# of the 27 cells, tested twice).
+labkit_mutant(06 spatial_trees NAME hash_bucket_not_filtered STEP 11 SAYS "neighbouring cells" "key"
+  FIND "if (!same_cell(entry.key, want)) continue;  // another cell that shares this bucket"
+  REPLACE "(void)want;  // every entry of the bucket")
+
+# Step 11: only the cells at dx, dy, dz = 0 or +1 looked at: a pair whose other ball lies
+# below or behind, with the larger index, is lost.
+labkit_mutant(06 spatial_trees NAME hash_half_neighbourhood STEP 11 SAYS "missing" "27 cells"
+  FIND "for (int dx = -1; dx <= 1; ++dx)"
+  REPLACE "for (int dx = 0; dx <= 1; ++dx)")
+
+# Step 11: each pair tested from both of its balls: right pairs only after a unique, and
+# twice the tests the hash needs.
+labkit_mutant(06 spatial_trees NAME hash_pairs_from_both_balls STEP 11 SAYS "once"
+  FIND "if (entry.sphere <= i) continue;            // each pair once: from its smaller index"
+  REPLACE "if (entry.sphere == i) continue;")
+
 set(LABKIT_UNANCHORED_MUTANTS OFF)

@@ -888,6 +888,79 @@ TEST_CASE(LABKIT_STEP(L06S10) ": random exact degenerate cases", "[lab06][step10
   });
 }
 
+// ---- Step 11 (extension): spatial hashing ---------------------------------------------------------
+
+namespace {
+
+// The pairs and the calls of given_balls_meet the judge counted, judged; then the pairs
+// and the tests the handout's example works out.
+Outcome judge_hash(const HashCase& in, Rules rules = Rules::random) {
+  const SpherePairs got = answerer::hashed_pairs(in.spheres, in.cell, in.buckets);
+  return judge::hashed_pairs(in, got, served("given_balls_meet"), rules);
+}
+
+auto expect_hash(std::vector<std::array<int, 2>> pairs, long long tests) {
+  return [pairs, tests](const HashCase& in) {
+    const SpherePairs got = answerer::hashed_pairs(in.spheres, in.cell, in.buckets);
+    const Outcome right = judge::hashed_pairs(in, got, served("given_balls_meet"), Rules::exact);
+    if (right.verdict == Outcome::Verdict::fail) return right;
+    Expect e("a spatial hash tests the pairs of balls in neighbouring cells, each once, whatever the buckets");
+    e.equal("pairs", got.pairs, pairs);
+    e.equal("tests", int(got.tests), int(tests));
+    return e.outcome();
+  };
+}
+
+// The handout's example: unit balls, cells of side 2, two pairs 2^31 apart along x. With
+// 4 buckets the cells (0, 0, 0) and (2^30, 0, 0) share bucket 0, (1, 0, 0) and
+// (2^30 + 1, 0, 0) bucket 1.
+constexpr double kFar = 2147483648.0;  // 2^31
+HashCase two_far_pairs(int buckets) {
+  return HashCase{{{{1, 1, 0}, 1}, {{2.5, 1, 0}, 1}, {{kFar + 1, 1, 0}, 1}, {{kFar + 3, 1, 0}, 1}}, 2, buckets, true};
+}
+
+// A sparse world: `clusters` clusters of `per` balls on integers (centres in [0, 64]^3,
+// radii 1 to 3), each moved by a multiple of 2^32 along the axes.
+HashCase sparse_world(int clusters, int per, int buckets, std::uint64_t seed) {
+  SplitMix64 random{seed};
+  HashCase c{{}, 8, buckets, true};
+  for (int k = 0; k < clusters; ++k) {
+    const Vec3 offset = 4294967296.0 * Vec3(random.below(17) - 8, random.below(17) - 8, random.below(17) - 8);
+    for (int i = 0; i < per; ++i)
+      c.spheres.push_back({offset + Vec3(random.below(65), random.below(65), random.below(65)), 1.0 + random.below(3)});
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE(LABKIT_STEP(L06S11) ": worked examples", "[lab06][step11]") {
+  check::example(query::hashed_pairs, "two pairs 2^31 apart, 4 buckets: cells share buckets", two_far_pairs(4),
+                 expect_hash({{0, 1}, {2, 3}}, 2));
+  check::example(query::hashed_pairs, "the same with 1 bucket: every cell collides", two_far_pairs(1),
+                 expect_hash({{0, 1}, {2, 3}}, 2));
+  check::example(query::hashed_pairs, "touching across a wall at x = 0, below zero on one side",
+                 HashCase{{{{-0.5, 0, 0}, 0.5}, {{0.5, 0, 0}, 0.5}, {{-2.5, 0, 0}, 0.5}}, 1, 7, true},
+                 expect_hash({{0, 1}}, 1));
+  check::example(query::hashed_pairs, "diagonal neighbours, the larger index below and behind",
+                 HashCase{{{{0.25, 0.25, 0.25}, 1}, {{-0.25, -0.25, -0.25}, 1}}, 2, 64, true},
+                 expect_hash({{0, 1}}, 1));
+  check::example(query::hashed_pairs, "no spheres", HashCase{{}, 1, 3, true}, expect_hash({}, 0));
+  check::example(query::hashed_pairs, "600 balls in 6 clusters 2^32 apart, 64 buckets", sparse_world(6, 100, 64, 11),
+                 [](const HashCase& in) {
+    const Outcome o = judge_hash(in, Rules::exact);
+    if (o.verdict == Outcome::Verdict::pass)
+      check::note(query::hashed_pairs.name, "600 balls in 6 clusters: at most " +
+                                                std::to_string(judge::neighbour_pairs(in)) +
+                                                " tests (the brute force makes 179,700)");
+    return o;
+  });
+}
+
+TEST_CASE(LABKIT_STEP(L06S11) ": random cases", "[lab06][step11][oracle]") {
+  check::random_cases(query::hashed_pairs, gen::hash_case(), [](const HashCase& in) { return judge_hash(in); });
+}
+
 // ---- The header's preconditions (not a graded step) ---------------------------------------------
 // Tagged [contract]: ctest runs it with the reference only. Students are not graded on
 // invalid input; the reference refuses each kind with std::invalid_argument naming the
@@ -924,6 +997,11 @@ TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[
   refused("spheres[0].radius", [&] { answerer::run_sweep({{{{0, 0, 0}, -1}}}); });
   refused("spheres", [&] { answerer::run_sweep({{{{0, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}}); });
   refused("spheres[1].radius", [&] { answerer::overlapping_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, -1}}); });
+  refused("cell", [&] { answerer::hashed_pairs({{{0, 0, 0}, 1}}, 3, 4); });
+  refused("cell", [&] { answerer::hashed_pairs({{{0, 0, 0}, 1}}, 1, 4); });  // below the diameter 2
+  refused("buckets", [&] { answerer::hashed_pairs({{{0, 0, 0}, 1}}, 2, 0); });
+  refused("spheres[0].center", [&] { answerer::hashed_pairs({{{0x1p62, 0, 0}, 1}}, 2, 4); });
+  refused("spheres[1].radius", [&] { answerer::hashed_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, nan}}, 2, 4); });
   Mesh out_of_range = lean_and_stand();
   out_of_range.triangles[1][2] = 6;
   refused("mesh.triangles[1]", [&] { answerer::build_kd_tree(out_of_range); });

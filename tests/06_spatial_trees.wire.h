@@ -118,7 +118,8 @@ inline SweepFrames run_sweep(const Frames& frames) {
   CALL(SpherePairs, overlapping_pairs, (const Spheres&))                   \
   CALL(SegmentRuns, run_segments, (const KdTree&, const Segments&, bool)) \
   CALL(SweepFrames, run_sweep, (const Frames&))                            \
-  CALL(TrianglePairs, colliding_triangles, (const ObbTree&, const ObbTree&, bool))
+  CALL(TrianglePairs, colliding_triangles, (const ObbTree&, const ObbTree&, bool)) \
+  CALL(SpherePairs, hashed_pairs, (const Spheres&, double, int))
 // clang-format on
 
 // The judge's process calls the code under test only as answerer::name(...) (calls.h).

@@ -43,4 +43,10 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
   not_implemented("L06S7", a, b, every);
 }
 
+// L06S11: the spatial hash: buckets of (cell key, ball), the 27 cells around each ball,
+// only entries whose key is the cell looked for (a pair: given_balls_meet).
+SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int buckets) {
+  not_implemented("L06S11", spheres, cell, buckets);
+}
+
 }  // namespace labkit::lab06

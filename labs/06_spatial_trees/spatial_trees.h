@@ -15,7 +15,8 @@
 //  - two trees of oriented boxes, traversed together, find the triangle pairs of two
 //    meshes that meet (step 7).
 // Step 8 counts the tests of steps 1, 2 and 5; step 9 feeds steps 1 and 2, and step 10
-// steps 3 to 7, exact degenerate input.
+// steps 3 to 7, exact degenerate input. Extensions beyond them: a spatial hash for sparse
+// worlds (step 11) and an octree that adapts to where the balls are (step 12).
 //
 // The primitive is given. Whether a segment hits a triangle is decided by the watertight
 // test labkit::given::segment_triangle (common/given/segment_triangle.h), here and in the
@@ -61,6 +62,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace labkit::lab06 {
@@ -401,5 +403,54 @@ constexpr long long kSphereTests = 100000;
 // input. Points and eyes exactly on planes, faces, edges and vertices; balls touching
 // exactly, even along x; triangles of two meshes touching exactly, an edge through an
 // edge or a vertex on one.
+
+// ---- Step 11 (L06S11): spatial hashing for sparse worlds ---------------------------------
+//
+// An extension beside step 5. A world can be sparse: a few clusters of balls, 2^30 apart.
+// A dense grid of cells one diameter wide would need more cells than memory holds; a
+// spatial hash keeps only the cells that hold a ball, in a table of a fixed number of
+// buckets, keyed by the cell's integer coordinates:
+//
+//    cell of a point p:   (floor(p.x / cell), floor(p.y / cell), floor(p.z / cell))
+//    bucket of a cell:    cell_hash(c) % buckets        (given below, not counted)
+//
+// Put every ball in the bucket of the cell holding its centre, with that cell's key.
+// Then, for each ball, look in the 27 cells around its own (dx, dy, dz in -1, 0, 1): go
+// to each one's bucket and take only the entries whose key is that cell. Distinct cells
+// may share a bucket (a collision: `buckets` may be 1); an entry of another cell is not a
+// neighbour, and a bucket reached from two of the 27 cells must not yield a pair twice.
+// Test each candidate pair with given_balls_meet (step 5's counted test) once.
+//
+// Why it is exact: `cell` is a power of two, so p / cell and its floor are computed
+// without rounding, and cell >= 2 r_max (the largest diameter): two balls that meet have
+// centres at most r_i + r_j <= cell apart along every axis, so their cells differ by at
+// most one along each axis. Nothing is lost, and every pair tested sits in neighbouring
+// cells.
+//
+// Counts, by the checker (it counts given_balls_meet's calls, as in step 5): at most one
+// test per pair of balls whose cells are neighbours (differ by at most 1 along each axis),
+// whatever the buckets; `tests` must equal the calls.
+//
+// Preconditions: every centre finite, every radius finite and >= 0; `cell` a power of two
+// with cell >= 2 r (every radius r); |coordinate| / cell <= 2^60 for every centre (so that
+// a cell's coordinates fit in 64-bit integers, with room for the neighbour at +-1);
+// 1 <= buckets <= 2^20. Random cases span 2^31 and more (clusters far apart): a cell's
+// coordinates do not fit in an int. On centres and radii that are integers (times a
+// power of two) below 2^24 within a cluster, given_balls_meet is exact, and nothing there
+// is ambiguous: exact touching counts as meeting.
+
+struct Cell {
+  std::int64_t x = 0, y = 0, z = 0;  // the cell [x cell, (x + 1) cell) x ... holds the point
+};
+
+// Given (not counted): the classic hash of a cell, three large odd numbers and XOR. The
+// bucket is cell_hash(c) % buckets.
+inline std::uint64_t cell_hash(const Cell& c) {
+  return (std::uint64_t(c.x) * 73856093u) ^ (std::uint64_t(c.y) * 19349663u) ^ (std::uint64_t(c.z) * 83492791u);
+}
+
+// Every pair of balls that meet, as step 5's overlapping_pairs, through a hash table of
+// `buckets` buckets over cells of side `cell`.
+SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int buckets);
 
 }  // namespace labkit::lab06

@@ -936,4 +936,87 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
   return out;
 }
 
+// ---- Step 11 ------------------------------------------------------------------------------------
+
+// Step 5's grid, with its cells kept in a hash table instead of an array. A cell is named
+// by its integer coordinates, floor(p / cell) along each axis; only the cells that hold a
+// centre are ever stored, so a world of clusters 2^30 apart costs what its balls cost.
+//
+//    cells (x, y)           bucket = cell_hash(c) % buckets           buckets = 4
+//    (0, 0) (1, 0)   ->     bucket 0: [(0, 0) ball 2] [(7, -3) ball 5]   <- two cells, one bucket
+//    (7, -3)                bucket 1: [(1, 0) ball 0]
+//
+// Why nothing is lost: `cell` is a power of two, so p / cell is exact and so is its
+// floor; cell >= 2 r_max, so two balls that meet (|c_i - c_j| <= r_i + r_j <= cell) have
+// centres at most one cell apart along each axis, and their cells differ by at most one
+// there. Looking in the 27 cells around a ball's own finds every ball it can meet.
+//
+// Why nothing is added: a bucket holds every cell that hashes to it. Each entry carries
+// its cell's key, and only entries whose key is the cell looked for are taken. Then an
+// entry matches one of the 27 cells at most, and no pair is seen twice from one ball;
+// keeping each pair from its smaller index sees it once in all.
+namespace {
+
+Cell cell_of(const Vec3& p, double cell) {
+  return {std::int64_t(std::floor(p.x() / cell)), std::int64_t(std::floor(p.y() / cell)),
+          std::int64_t(std::floor(p.z() / cell))};
+}
+
+bool same_cell(const Cell& a, const Cell& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+void require_hash_input(const std::vector<Sphere>& spheres, double cell, int buckets) {
+  require_spheres("hashed_pairs", spheres);
+  int exponent = 0;
+  if (!(cell > 0) || !std::isfinite(cell) || std::frexp(cell, &exponent) != 0.5)
+    throw std::invalid_argument("hashed_pairs: cell must be a power of two, got " + text(cell));
+  if (buckets < 1 || buckets > (1 << 20))
+    throw std::invalid_argument("hashed_pairs: buckets must be from 1 to 2^20, got " + std::to_string(buckets));
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const Sphere& s = spheres[i];
+    if (!(2 * s.radius <= cell))
+      throw std::invalid_argument("hashed_pairs: cell must be at least every ball's diameter, got " + text(cell) +
+                                  " beside spheres[" + std::to_string(i) + "].radius = " + text(s.radius));
+    if (!(s.center.cwiseAbs().maxCoeff() / cell <= 0x1p60))
+      throw std::invalid_argument("hashed_pairs: spheres[" + std::to_string(i) +
+                                  "].center / cell must be at most 2^60 in every coordinate, got " + text(s.center));
+  }
+}
+
+}  // namespace
+
+SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int buckets) {
+  require_hash_input(spheres, cell, buckets);
+  const auto bucket_of = [buckets](const Cell& c) { return std::size_t(cell_hash(c) % std::uint64_t(buckets)); };
+  struct Entry {
+    Cell key;  // the cell whose ball this is: the bucket holds other cells too
+    int sphere;
+  };
+  std::vector<std::vector<Entry>> table(static_cast<std::size_t>(buckets));
+  std::vector<Cell> cells(spheres.size());
+  for (int i = 0; i < int(spheres.size()); ++i) {
+    cells[std::size_t(i)] = cell_of(spheres[std::size_t(i)].center, cell);
+    table[bucket_of(cells[std::size_t(i)])].push_back({cells[std::size_t(i)], i});
+  }
+  SpherePairs out;
+  for (int i = 0; i < int(spheres.size()); ++i) {
+    const Cell& own = cells[std::size_t(i)];
+    // mutant: hash_half_neighbourhood
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const Cell want{own.x + dx, own.y + dy, own.z + dz};
+          for (const Entry& entry : table[bucket_of(want)]) {
+            // mutants: hash_bucket_not_filtered, hash_pairs_from_both_balls
+            if (!same_cell(entry.key, want)) continue;  // another cell that shares this bucket
+            if (entry.sphere <= i) continue;            // each pair once: from its smaller index
+            ++out.tests;
+            if (given_balls_meet(spheres[std::size_t(i)], spheres[std::size_t(entry.sphere)]))
+              out.pairs.push_back({i, entry.sphere});
+          }
+        }
+  }
+  std::sort(out.pairs.begin(), out.pairs.end());
+  return out;
+}
+
 }  // namespace labkit::lab06
