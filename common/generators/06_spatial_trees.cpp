@@ -182,3 +182,44 @@ rc::Gen<lab06::HashCase> hash_case() {
 }
 
 }  // namespace labkit::gen
+
+namespace labkit::gen {
+
+// Step 12. Two cases in three: 1 to 3 clusters of balls, each within a unit of its
+// centre, the centres spread over 128 units, so the tree cuts deep around the clusters
+// and leaves the space between them whole; the query box near some ball. One in three:
+// balls and a box on integers, where balls touch each other, the cuts and the box
+// exactly (judged exactly).
+rc::Gen<lab06::OctreeCase> octree_case() {
+  return rc::gen::exec([] {
+    lab06::OctreeCase c;
+    const double s = *scale();
+    c.exact = *rc::gen::inRange(0, 3) == 0;
+    c.capacity = *rc::gen::element(1, 2, 4, 8);
+    c.max_depth = *rc::gen::inRange(0, 7);
+    if (c.exact) {
+      // Radii 0 or 1 on a lattice of 17^3 points: a ball's box spans few of the deepest
+      // cells, so the tree stays small (an answer crosses the process boundary).
+      const int n = *rc::gen::inRange(0, 40);
+      for (int i = 0; i < n; ++i) c.spheres.push_back({*lattice_point(s, 8), s * *rc::gen::inRange(0, 2)});
+      c.max_depth = std::min(c.max_depth, 4);
+      const Vec3 a = *lattice_point(s, 10), b = *lattice_point(s, 10);
+      c.box = {a.cwiseMin(b), a.cwiseMax(b)};
+      return c;
+    }
+    const int clusters = *rc::gen::inRange(1, 4);
+    for (int k = 0; k < clusters; ++k) {
+      const Vec3 centre = *point(s * 4);
+      const int n = *rc::gen::inRange(1, 25);
+      for (int i = 0; i < n; ++i)
+        c.spheres.push_back({centre + *point(s / 16), s * *rc::gen::inRange(0, 1 << 20) / double(1 << 23)});
+    }
+    const Vec3 near = c.spheres[std::size_t(*rc::gen::inRange(0, int(c.spheres.size())))].center + *point(s / 16);
+    Vec3 half;
+    for (int i = 0; i < 3; ++i) half[i] = s * *rc::gen::inRange(0, 1 << 20) / double(1 << 19);
+    c.box = {near - half, near + half};
+    return c;
+  });
+}
+
+}  // namespace labkit::gen

@@ -31,5 +31,8 @@ rc::Gen<lab06::BvhQuery> bvh_query();
 // Step 11: sparse worlds (clusters 2^30 apart, on integers: exact touching), step 5's
 // sets, bucket counts from 1 (every cell collides) to thousands.
 rc::Gen<lab06::HashCase> hash_case();
+// Step 12: clusters of balls in a wide space (the octree adapts to them), a box near
+// them; or balls and a box on integers, touching exactly, judged exactly.
+rc::Gen<lab06::OctreeCase> octree_case();
 
 }  // namespace labkit::gen

@@ -85,6 +85,17 @@ struct HashCase {
 };
 LABKIT_FIELDS(HashCase, spheres, cell, buckets, exact)
 
+// Step 12: balls, the octree's leaf capacity and depth limit, and a query box. `exact`:
+// integers (times a power of two), where given_ball_meets_box is exact: no ambiguity.
+struct OctreeCase {
+  std::vector<Sphere> spheres;
+  int capacity = 4;
+  int max_depth = 6;
+  Aabb box;
+  bool exact = false;
+};
+LABKIT_FIELDS(OctreeCase, spheres, capacity, max_depth, box, exact)
+
 }  // namespace labkit::lab06
 
 // ---- The queries -------------------------------------------------------------------------
@@ -106,7 +117,8 @@ LABKIT_FIELDS(HashCase, spheres, cell, buckets, exact)
   /* step 10 */ X_IN(robust, classify, PointQuery) X_IN(robust, back_to_front, PointQuery)         \
                X_IN(robust, overlapping_pairs, SphereSet) X_IN(robust, sweep_frames, SweepCase)    \
                X_IN(robust, colliding_triangles, BvhQuery)                                         \
-  /* step 11 */ X(hashed_pairs, HashCase)
+  /* step 11 */ X(hashed_pairs, HashCase)                                                        \
+  /* step 12 */ X(build_octree, OctreeCase) X(balls_in_box, OctreeCase)
 // clang-format on
 
 namespace labkit::lab06::query {

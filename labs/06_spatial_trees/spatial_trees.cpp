@@ -49,4 +49,14 @@ SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int bu
   not_implemented("L06S11", spheres, cell, buckets);
 }
 
+// L06S12: the octree: cut a node in 8 at its centre while it holds more than `capacity`
+// balls (and is above max_depth); a ball goes to every child its box meets.
+Octree build_octree(const std::vector<Sphere>& spheres, int capacity, int max_depth) {
+  not_implemented("L06S12", spheres, capacity, max_depth);
+}
+
+// L06S12: the balls that meet a box, descending only the children whose cells meet it
+// (a cell: given_cell_meets_box; a ball, once: given_ball_meets_box).
+BallsInBox balls_in_box(const Octree& tree, const Aabb& box) { not_implemented("L06S12", tree, box); }
+
 }  // namespace labkit::lab06

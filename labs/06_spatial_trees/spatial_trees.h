@@ -453,4 +453,75 @@ inline std::uint64_t cell_hash(const Cell& c) {
 // `buckets` buckets over cells of side `cell`.
 SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int buckets);
 
+// ---- Step 12 (L06S12): an octree that adapts -----------------------------------------------
+//
+// An extension beside steps 5 and 11, whose cells are all one size. An octree cuts space
+// only where the balls crowd: a cell holding few balls stays whole, however big it is,
+// and a crowded one is cut in eight, again and again. Drawn flat (a quadtree):
+//
+//    +---------------+---------------+     the root held 7 balls > capacity 2: cut in 4 (8 in 3D);
+//    |               |       |  o    |     the top right quarter held 4: cut again; the other
+//    |      o        |-------+-------|     quarters hold 2 or fewer and stay whole
+//    |               |  o o  |   o   |
+//    +---------------+---------------+     the ball x lies across the cut between the bottom
+//    |               |               |     quarters: both list it
+//    |               x      o        |
+//    +---------------+---------------+
+//
+// Build. Every node owns a closed box, its cell; the root's is the tightest box around
+// every ball's box [c - r, c + r] (computed in doubles so). A node at depth d (the root:
+// 0) holding more than `capacity` balls, with d < max_depth, is interior: its centre
+// m = 0.5 * (cell.min + cell.max) (in doubles so) cuts it into 8 children. Child k
+// (k = x + 2 y + 4 z, each bit 0 or 1) takes along each axis i the lower half
+// [min_i, m_i] when bit i of k is 0, the upper half [m_i, max_i] when it is 1. A ball goes
+// to every child whose closed cell meets its box (box.min_i <= cell.max_i and
+// cell.min_i <= box.max_i on every axis): a ball touching a cut goes both ways. Any other
+// node is a leaf and lists its balls in increasing index order. No choice is left: the
+// checker's tree and yours must be the same, node for node (in any order of the nodes,
+// as long as a node's 8 children sit side by side).
+//
+// Query: every ball that meets a closed box. Test a cell against the box with
+// given_cell_meets_box and a ball with given_ball_meets_box (both counted). Test the
+// root's cell; at an interior node whose cell meets the box, test its 8 children's cells
+// and descend only those that meet it; at a leaf, test its balls, each ball at most once
+// per query (a ball may be listed in several leaves the query reaches). The checker runs
+// this traversal itself and allows no more tests of either kind: cell tests <= 1 + 8 x
+// (interior nodes whose cells meet the box), ball tests <= the distinct balls listed in
+// the leaves reached. The checker hands your query its own tree (the one the rule above
+// gives), so this query does not rest on your build.
+//
+// Preconditions: every centre finite, every radius finite and >= 0; 1 <= capacity <= 64;
+// 0 <= max_depth <= 10 (a node at max_depth is a leaf however many balls it holds: balls
+// at one point can never be separated); the query box finite, box.min <= box.max. A
+// ball meets a box when the distance from its centre to the closed box is <= r (touching
+// counts). On integer input (times a power of two) given_ball_meets_box is exact and
+// nothing is ambiguous.
+
+struct OctNode {
+  Aabb cell;       // closed
+  int child = -1;  // interior: its children are nodes[child], ..., nodes[child + 7]; -1: a leaf
+  int first = 0;   // a leaf's balls are items[first], ..., items[first + count - 1], increasing
+  int count = 0;
+};
+
+struct Octree {
+  std::vector<OctNode> nodes;   // nodes[0] is the root; none when there is no ball
+  std::vector<int> items;       // the leaves' ball indices
+  std::vector<Sphere> spheres;  // spheres[i]: ball i, as given
+};
+
+// Given: the closed boxes share a point. Counted.
+bool given_cell_meets_box(const Aabb& cell, const Aabb& box);
+// Given: the squared distance from the centre to the closed box is <= r^2, in doubles. Counted.
+bool given_ball_meets_box(const Sphere& ball, const Aabb& box);
+
+struct BallsInBox {
+  std::vector<int> balls;    // every ball that meets the box, once, sorted
+  long long cell_tests = 0;  // your calls of given_cell_meets_box
+  long long ball_tests = 0;  // your calls of given_ball_meets_box
+};
+
+Octree build_octree(const std::vector<Sphere>& spheres, int capacity, int max_depth);
+BallsInBox balls_in_box(const Octree& tree, const Aabb& box);
+
 }  // namespace labkit::lab06

@@ -1019,4 +1019,132 @@ SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int bu
   return out;
 }
 
+// ---- Step 12 ------------------------------------------------------------------------------------
+
+// An octree (lecture 001's adaptive partitioning): a cell is cut in eight at its centre
+// only while it holds more than `capacity` balls, so cells stay big where space is empty
+// and get small where balls crowd. Two clusters far apart cost two short chains of cuts,
+// where a uniform grid as fine as the finest leaf would fill the whole space between.
+//
+//   child k = x + 2 y + 4 z:       z = 0:  +---+---+      z = 1:  +---+---+
+//   bit i of k picks the upper             | 2 | 3 |              | 6 | 7 |
+//   half along axis i                      +---+---+              +---+---+
+//                                          | 0 | 1 |              | 4 | 5 |
+//                                          +---+---+ -> x         +---+---+
+//
+// A ball goes to every child whose closed cell meets its box, so a query that reaches
+// any leaf a ball touches finds it there; the price is that one ball may be listed in
+// several leaves, and a query must test it once.
+namespace {
+
+Aabb ball_box(const Sphere& s) { return {s.center - Vec3::Constant(s.radius), s.center + Vec3::Constant(s.radius)}; }
+
+bool closed_boxes_meet(const Aabb& a, const Aabb& b) {
+  // mutant: octree_touching_one_side
+  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+}
+
+}  // namespace
+
+Octree build_octree(const std::vector<Sphere>& spheres, int capacity, int max_depth) {
+  require_spheres("build_octree", spheres);
+  if (capacity < 1 || capacity > 64)
+    throw std::invalid_argument("build_octree: capacity must be from 1 to 64, got " + std::to_string(capacity));
+  if (max_depth < 0 || max_depth > 10)
+    throw std::invalid_argument("build_octree: max_depth must be from 0 to 10, got " + std::to_string(max_depth));
+  Octree tree;
+  tree.spheres = spheres;
+  if (spheres.empty()) return tree;
+  std::vector<Aabb> boxes;
+  Aabb root = ball_box(spheres[0]);
+  for (const Sphere& s : spheres) {
+    boxes.push_back(ball_box(s));
+    root = {root.min.cwiseMin(boxes.back().min), root.max.cwiseMax(boxes.back().max)};
+  }
+  struct Job {
+    int node, depth;
+    std::vector<int> balls;  // increasing: filtered from the parent's, in order
+  };
+  std::vector<int> all(spheres.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = int(i);
+  tree.nodes.push_back({root});
+  std::vector<Job> todo;
+  todo.push_back({0, 0, std::move(all)});
+  while (!todo.empty()) {
+    Job job = std::move(todo.back());
+    todo.pop_back();
+    // Few balls (or as deep as allowed): a leaf, however big its cell. This is the rule
+    // that makes the tree adapt.
+    // mutant: octree_cuts_at_capacity
+    if (int(job.balls.size()) <= capacity || job.depth == max_depth) {
+      OctNode& leaf = tree.nodes[std::size_t(job.node)];
+      leaf.first = int(tree.items.size());
+      leaf.count = int(job.balls.size());
+      tree.items.insert(tree.items.end(), job.balls.begin(), job.balls.end());
+      continue;
+    }
+    const Aabb cell = tree.nodes[std::size_t(job.node)].cell;
+    const Vec3 mid = 0.5 * (cell.min + cell.max);
+    const int first_child = int(tree.nodes.size());
+    tree.nodes[std::size_t(job.node)].child = first_child;
+    for (int k = 0; k < 8; ++k) {
+      Aabb c = cell;
+      for (int i = 0; i < 3; ++i) {
+        if (k >> i & 1)
+          c.min[i] = mid[i];  // the upper half along axis i
+        else
+          c.max[i] = mid[i];  // the lower half
+      }
+      tree.nodes.push_back({c});
+    }
+    for (int k = 0; k < 8; ++k) {
+      std::vector<int> inside;
+      for (int b : job.balls)
+        if (closed_boxes_meet(boxes[std::size_t(b)], tree.nodes[std::size_t(first_child + k)].cell))
+          inside.push_back(b);  // touching the cut counts: a ball on it goes both ways
+      todo.push_back({first_child + k, job.depth + 1, std::move(inside)});
+    }
+  }
+  return tree;
+}
+
+// Down from the root, skipping every subtree whose cell misses the box: its balls lie
+// within its cell, so none of them can meet the box. A ball listed in several leaves is
+// tested the first time only.
+BallsInBox balls_in_box(const Octree& tree, const Aabb& box) {
+  require_finite("balls_in_box", "box.min", box.min);
+  require_finite("balls_in_box", "box.max", box.max);
+  if (!(box.min.array() <= box.max.array()).all())
+    throw std::invalid_argument("balls_in_box: box.min must be <= box.max, got " + text(box.min) + " and " +
+                                text(box.max));
+  BallsInBox out;
+  if (tree.nodes.empty()) return out;
+  ++out.cell_tests;
+  if (!given_cell_meets_box(tree.nodes[0].cell, box)) return out;
+  std::vector<char> tested(tree.spheres.size(), 0);
+  std::vector<int> todo{0};
+  while (!todo.empty()) {
+    const OctNode& node = tree.nodes[std::size_t(todo.back())];
+    todo.pop_back();
+    if (node.child < 0) {
+      for (int k = node.first; k < node.first + node.count; ++k) {
+        const int ball = tree.items[std::size_t(k)];
+        // mutant: octree_ball_tested_per_leaf
+        if (tested[std::size_t(ball)]) continue;  // listed in an earlier leaf too: tested there
+        tested[std::size_t(ball)] = 1;
+        ++out.ball_tests;
+        if (given_ball_meets_box(tree.spheres[std::size_t(ball)], box)) out.balls.push_back(ball);
+      }
+      continue;
+    }
+    for (int k = 0; k < 8; ++k) {
+      // mutant: octree_descends_every_child
+      ++out.cell_tests;
+      if (given_cell_meets_box(tree.nodes[std::size_t(node.child + k)].cell, box)) todo.push_back(node.child + k);
+    }
+  }
+  std::sort(out.balls.begin(), out.balls.end());
+  return out;
+}
+
 }  // namespace labkit::lab06
