@@ -87,5 +87,28 @@ ObbWalk header_walk(const ObbTree& a, const ObbTree& b, bool a_at_tie = true);
 Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got,
                             Rules rules = Rules::random);
 
+// Step 11 (tests/06_spatial_trees.judge.hash.cpp). The pairs of balls whose cells
+// (floor(c / cell), exact: cell is a power of two) differ by at most 1 along each axis:
+// the most tests the header allows. The pairs against the exact brute force; `calls`,
+// given_balls_meet's calls the judge counted, against that bound. An exact case (in.exact)
+// allows no ambiguity, whatever `rules` says.
+long long neighbour_pairs(const HashCase& in);
+Outcome hashed_pairs(const HashCase& in, const SpherePairs& got, long long calls, Rules rules = Rules::random);
+
+// Step 12 (tests/06_spatial_trees.judge.octree.cpp). The header's octree: the checker's
+// tree, which the box queries run on, and the yardstick of a student's build.
+Octree octree_of(const std::vector<Sphere>& spheres, int capacity, int max_depth);
+// The build: node for node the header's tree (in any order of nodes).
+Outcome octree(const OctreeCase& in, const Octree& got);
+// The header's traversal of a box query: its tests of either kind, and the leaves reached.
+struct OctreeWalk {
+  long long cell_tests = 0, ball_tests = 0;
+  std::vector<int> leaves;
+};
+OctreeWalk octree_walk(const Octree& tree, const Aabb& box);
+// The query on `tree` (the header's): the balls against the exact brute force, the counts
+// against the header's traversal.
+Outcome balls_in_box(const OctreeCase& in, const Octree& tree, const OctreeRun& got, Rules rules = Rules::random);
+
 }  // namespace judge
 }  // namespace labkit::lab06

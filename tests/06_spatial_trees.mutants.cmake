@@ -147,4 +147,46 @@ labkit_mutant(06 spatial_trees NAME ends_compared_privately STEP 6 SAYS "only wi
   FIND "  const int c = compare_ends(a, b);"
   REPLACE "  const int c = (a.value > b.value) - (a.value < b.value);")
 
+# Step 11: a bucket's entries taken whatever their cell: the bucket also holds cells that
+# collide with the one looked for, so balls far apart are tested (and, reached from two
+# of the 27 cells, tested twice).
+labkit_mutant(06 spatial_trees NAME hash_bucket_not_filtered STEP 11 SAYS "neighbouring cells" "key"
+  FIND "if (!same_cell(entry.key, want)) continue;  // another cell that shares this bucket"
+  REPLACE "(void)want;  // every entry of the bucket")
+
+# Step 11: only the cells at dx, dy, dz = 0 or +1 looked at: a pair whose other ball lies
+# below or behind, with the larger index, is lost.
+labkit_mutant(06 spatial_trees NAME hash_half_neighbourhood STEP 11 SAYS "missing" "27 cells"
+  FIND "for (int dx = -1; dx <= 1; ++dx)"
+  REPLACE "for (int dx = 0; dx <= 1; ++dx)")
+
+# Step 11: each pair tested from both of its balls: right pairs only after a unique, and
+# twice the tests the hash needs.
+labkit_mutant(06 spatial_trees NAME hash_pairs_from_both_balls STEP 11 SAYS "once"
+  FIND "if (entry.sphere <= i) continue;            // each pair once: from its smaller index"
+  REPLACE "if (entry.sphere == i) continue;")
+
+# Step 12: a node cut as soon as it holds `capacity` balls, not more: the tree has cuts
+# where the rule keeps a leaf.
+labkit_mutant(06 spatial_trees NAME octree_cuts_at_capacity STEP 12 SAYS "at most capacity" "adapts"
+  FIND "if (int(job.balls.size()) <= capacity || job.depth == max_depth) {"
+  REPLACE "if (int(job.balls.size()) < capacity || job.depth == max_depth) {")
+
+# Step 12: a ball sent only to the children its box overlaps with some width: one that
+# touches a cut goes one way, and the leaf on the other side misses it.
+labkit_mutant(06 spatial_trees NAME octree_touching_one_side STEP 12 SAYS "every child" "touching"
+  FIND "return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();"
+  REPLACE "return (a.min.array() < b.max.array()).all() && (b.min.array() < a.max.array()).all();")
+
+# Step 12: the query descends every child without testing its cell: right balls, but the
+# balls of leaves far from the box are tested too.
+labkit_mutant(06 spatial_trees NAME octree_descends_every_child STEP 12 SAYS "leaves whose cells meet the box"
+  FIND "      ++out.cell_tests;\n      if (given_cell_meets_box(tree.nodes[std::size_t(node.child + k)].cell, box)) todo.push_back(node.child + k);"
+  REPLACE "      todo.push_back(node.child + k);  // every child, untested")
+
+# Step 12: a ball listed in several leaves the query reaches is tested in each of them.
+labkit_mutant(06 spatial_trees NAME octree_ball_tested_per_leaf STEP 12 SAYS "once per query"
+  FIND "if (tested[std::size_t(ball)]) continue;  // listed in an earlier leaf too: tested there"
+  REPLACE "if (tested[std::size_t(ball)] && false) continue;")
+
 set(LABKIT_UNANCHORED_MUTANTS OFF)

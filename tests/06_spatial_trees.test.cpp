@@ -888,6 +888,181 @@ TEST_CASE(LABKIT_STEP(L06S10) ": random exact degenerate cases", "[lab06][step10
   });
 }
 
+// ---- Step 11 (extension): spatial hashing ---------------------------------------------------------
+
+namespace {
+
+// The pairs and the calls of given_balls_meet the judge counted, judged; then the pairs
+// and the tests the handout's example works out.
+Outcome judge_hash(const HashCase& in, Rules rules = Rules::random) {
+  const SpherePairs got = answerer::hashed_pairs(in.spheres, in.cell, in.buckets);
+  return judge::hashed_pairs(in, got, served("given_balls_meet"), rules);
+}
+
+auto expect_hash(std::vector<std::array<int, 2>> pairs, long long tests) {
+  return [pairs, tests](const HashCase& in) {
+    const SpherePairs got = answerer::hashed_pairs(in.spheres, in.cell, in.buckets);
+    const Outcome right = judge::hashed_pairs(in, got, served("given_balls_meet"), Rules::exact);
+    if (right.verdict == Outcome::Verdict::fail) return right;
+    Expect e("a spatial hash tests the pairs of balls in neighbouring cells, each once, whatever the buckets");
+    e.equal("pairs", got.pairs, pairs);
+    e.equal("tests", int(got.tests), int(tests));
+    return e.outcome();
+  };
+}
+
+// The handout's example: unit balls, cells of side 2, two pairs 2^31 apart along x. With
+// 4 buckets the cells (0, 0, 0) and (2^30, 0, 0) share bucket 0, (1, 0, 0) and
+// (2^30 + 1, 0, 0) bucket 1.
+constexpr double kFar = 2147483648.0;  // 2^31
+HashCase two_far_pairs(int buckets) {
+  return HashCase{{{{1, 1, 0}, 1}, {{2.5, 1, 0}, 1}, {{kFar + 1, 1, 0}, 1}, {{kFar + 3, 1, 0}, 1}}, 2, buckets, true};
+}
+
+// A sparse world: `clusters` clusters of `per` balls on integers (centres in [0, 64]^3,
+// radii 1 to 3), each moved by a multiple of 2^32 along the axes.
+HashCase sparse_world(int clusters, int per, int buckets, std::uint64_t seed) {
+  SplitMix64 random{seed};
+  HashCase c{{}, 8, buckets, true};
+  for (int k = 0; k < clusters; ++k) {
+    const Vec3 offset = 4294967296.0 * Vec3(random.below(17) - 8, random.below(17) - 8, random.below(17) - 8);
+    for (int i = 0; i < per; ++i)
+      c.spheres.push_back({offset + Vec3(random.below(65), random.below(65), random.below(65)), 1.0 + random.below(3)});
+  }
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE(LABKIT_STEP(L06S11) ": worked examples", "[lab06][step11]") {
+  check::example(query::hashed_pairs, "two pairs 2^31 apart, 4 buckets: cells share buckets", two_far_pairs(4),
+                 expect_hash({{0, 1}, {2, 3}}, 2));
+  check::example(query::hashed_pairs, "the same with 1 bucket: every cell collides", two_far_pairs(1),
+                 expect_hash({{0, 1}, {2, 3}}, 2));
+  check::example(query::hashed_pairs, "touching across a wall at x = 0, below zero on one side",
+                 HashCase{{{{-0.5, 0, 0}, 0.5}, {{0.5, 0, 0}, 0.5}, {{-2.5, 0, 0}, 0.5}}, 1, 7, true},
+                 expect_hash({{0, 1}}, 1));
+  check::example(query::hashed_pairs, "diagonal neighbours, the larger index below and behind",
+                 HashCase{{{{0.25, 0.25, 0.25}, 1}, {{-0.25, -0.25, -0.25}, 1}}, 2, 64, true},
+                 expect_hash({{0, 1}}, 1));
+  check::example(query::hashed_pairs, "no spheres", HashCase{{}, 1, 3, true}, expect_hash({}, 0));
+  check::example(query::hashed_pairs, "600 balls in 6 clusters 2^32 apart, 64 buckets", sparse_world(6, 100, 64, 11),
+                 [](const HashCase& in) {
+    const Outcome o = judge_hash(in, Rules::exact);
+    if (o.verdict == Outcome::Verdict::pass)
+      check::note(query::hashed_pairs.name, "600 balls in 6 clusters: at most " +
+                                                std::to_string(judge::neighbour_pairs(in)) +
+                                                " tests (the brute force makes 179,700)");
+    return o;
+  });
+}
+
+TEST_CASE(LABKIT_STEP(L06S11) ": random cases", "[lab06][step11][oracle]") {
+  check::random_cases(query::hashed_pairs, gen::hash_case(), [](const HashCase& in) { return judge_hash(in); });
+}
+
+// ---- Step 12 (extension): an octree ---------------------------------------------------------------
+
+namespace {
+
+Outcome judge_build(const OctreeCase& in) {
+  return judge::octree(in, answerer::build_octree(in.spheres, in.capacity, in.max_depth));
+}
+
+// The box query on the checker's tree, with the given tests' calls the judge counted.
+OctreeRun octree_counted(const Octree& tree, const Aabb& box) {
+  OctreeRun run;
+  run.answer = answerer::balls_in_box(tree, box);
+  run.cell_calls = served("given_cell_meets_box");
+  run.ball_calls = served("given_ball_meets_box");
+  return run;
+}
+
+Outcome judge_box(const OctreeCase& in, Rules rules = Rules::random) {
+  const Octree tree = judge::octree_of(in.spheres, in.capacity, in.max_depth);
+  return judge::balls_in_box(in, tree, octree_counted(tree, in.box), rules);
+}
+
+// The handout's example: capacity 2. The root [0, 8]^3 holds 5 balls: cut at 4. Its octant
+// 0 holds balls 0 and 4 (4 lies across x = 4), octant 1 ball 4, octant 7 balls 1, 2, 3:
+// cut again at 6. 17 nodes, 15 leaves.
+OctreeCase handout_octree(const Aabb& box) {
+  return OctreeCase{
+      {{{1, 1, 1}, 1}, {{7.5, 7.5, 7.5}, 0.5}, {{5, 5, 5}, 0.5}, {{7, 5, 5}, 0.5}, {{4, 1, 1}, 0.5}}, 2, 4, box, true};
+}
+
+auto expect_octree(std::size_t nodes, int leaves) {
+  return [nodes, leaves](const OctreeCase& in) {
+    const Octree got = answerer::build_octree(in.spheres, in.capacity, in.max_depth);
+    const Outcome right = judge::octree(in, got);
+    if (right.verdict == Outcome::Verdict::fail) return right;
+    Expect e("an octree cuts a node in 8 only while it holds more than capacity balls");
+    int got_leaves = 0;
+    for (const OctNode& n : got.nodes) got_leaves += n.child < 0;
+    e.equal("nodes", int(got.nodes.size()), int(nodes));
+    e.equal("leaves", got_leaves, leaves);
+    return e.outcome();
+  };
+}
+
+auto expect_box(std::vector<int> balls, long long cell_tests, long long ball_tests) {
+  return [=](const OctreeCase& in) {
+    const Octree tree = judge::octree_of(in.spheres, in.capacity, in.max_depth);
+    const OctreeRun got = octree_counted(tree, in.box);
+    const Outcome right = judge::balls_in_box(in, tree, got, Rules::exact);
+    if (right.verdict == Outcome::Verdict::fail) return right;
+    Expect e("the query descends only the children whose cells meet the box, and tests each ball once");
+    e.equal("balls", got.answer.balls, balls);
+    e.equal("cell_tests", int(got.answer.cell_tests), int(cell_tests));
+    e.equal("ball_tests", int(got.answer.ball_tests), int(ball_tests));
+    return e.outcome();
+  };
+}
+
+// Two clusters of 200 balls, each in a cube of 8 units, 1024 units apart along the
+// diagonal: the tree cuts deep at the clusters only.
+OctreeCase two_clusters() {
+  SplitMix64 random{5};
+  OctreeCase c{{}, 8, 10, {{0, 0, 0}, {4, 4, 4}}, true};
+  for (double corner : {0.0, 1024.0})
+    for (int i = 0; i < 200; ++i)
+      c.spheres.push_back(
+          {Vec3(corner + random.below(8), corner + random.below(8), corner + random.below(8)), 0.25 * random.below(3)});
+  return c;
+}
+
+}  // namespace
+
+TEST_CASE(LABKIT_STEP(L06S12) ": worked examples", "[lab06][step12]") {
+  check::example(query::build_octree, "the handout's five balls, capacity 2: 17 nodes, 15 leaves",
+                 handout_octree({{3, 0, 0}, {5, 1, 1}}), expect_octree(17, 15));
+  check::example(query::build_octree, "two balls touching the cut x = 2, capacity 1: every child lists both",
+                 OctreeCase{{{{1, 1, 1}, 1}, {{3, 1, 1}, 1}}, 1, 1, {}, true}, expect_octree(9, 8));
+  check::example(query::build_octree, "no balls: no node", OctreeCase{{}, 4, 6, {}, true}, expect_octree(0, 0));
+  check::example(query::build_octree, "two clusters of 200 balls, 1024 apart: deep at the clusters only",
+                 two_clusters(),
+                 [](const OctreeCase& in) {
+    const Outcome o = judge_build(in);
+    if (o.verdict == Outcome::Verdict::pass)
+      check::note(
+          query::build_octree.name,
+          "two clusters: " + std::to_string(judge::octree_of(in.spheres, in.capacity, in.max_depth).nodes.size()) +
+              " nodes (a uniform grid as fine as depth 10: 2^30 cells)");
+    return o;
+  });
+  check::example(query::balls_in_box, "a box across x = 4: 9 cell tests, ball 4 tested once though listed twice",
+                 handout_octree({{3, 0, 0}, {5, 1, 1}}), expect_box({4}, 9, 2));
+  check::example(query::balls_in_box, "a box at the crowded octant's centre: all 8 of its children",
+                 handout_octree({{5.5, 5.5, 5.5}, {6.5, 6.5, 6.5}}), expect_box({}, 17, 3));
+  check::example(query::balls_in_box, "a box touching ball 0 at (2, 1, 1)",
+                 handout_octree({{2, 0.5, 0.5}, {3, 1.5, 1.5}}), expect_box({0}, 9, 2));
+}
+
+TEST_CASE(LABKIT_STEP(L06S12) ": random cases", "[lab06][step12][oracle]") {
+  check::random_cases(query::build_octree, gen::octree_case(), judge_build);
+  check::random_cases(query::balls_in_box, gen::octree_case(), [](const OctreeCase& in) { return judge_box(in); });
+}
+
 // ---- The header's preconditions (not a graded step) ---------------------------------------------
 // Tagged [contract]: ctest runs it with the reference only. Students are not graded on
 // invalid input; the reference refuses each kind with std::invalid_argument naming the
@@ -924,6 +1099,16 @@ TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[
   refused("spheres[0].radius", [&] { answerer::run_sweep({{{{0, 0, 0}, -1}}}); });
   refused("spheres", [&] { answerer::run_sweep({{{{0, 0, 0}, 1}}, {{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}}); });
   refused("spheres[1].radius", [&] { answerer::overlapping_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, -1}}); });
+  refused("cell", [&] { answerer::hashed_pairs({{{0, 0, 0}, 1}}, 3, 4); });
+  refused("cell", [&] { answerer::hashed_pairs({{{0, 0, 0}, 1}}, 1, 4); });  // below the diameter 2
+  refused("buckets", [&] { answerer::hashed_pairs({{{0, 0, 0}, 1}}, 2, 0); });
+  refused("spheres[0].center", [&] { answerer::hashed_pairs({{{0x1p62, 0, 0}, 1}}, 2, 4); });
+  refused("capacity", [&] { answerer::build_octree({{{0, 0, 0}, 1}}, 0, 4); });
+  refused("max_depth", [&] { answerer::build_octree({{{0, 0, 0}, 1}}, 4, 11); });
+  refused("spheres[0].radius", [&] { answerer::build_octree({{{0, 0, 0}, -1}}, 4, 4); });
+  refused("box.min", [&] { answerer::balls_in_box(Octree{}, {{nan, 0, 0}, {1, 1, 1}}); });
+  refused("box.min", [&] { answerer::balls_in_box(Octree{}, {{2, 0, 0}, {1, 1, 1}}); });
+  refused("spheres[1].radius", [&] { answerer::hashed_pairs({{{0, 0, 0}, 1}, {{1, 0, 0}, nan}}, 2, 4); });
   Mesh out_of_range = lean_and_stand();
   out_of_range.triangles[1][2] = 6;
   refused("mesh.triangles[1]", [&] { answerer::build_kd_tree(out_of_range); });

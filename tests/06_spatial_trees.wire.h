@@ -27,6 +27,9 @@ LABKIT_FIELDS(ObbNode, box, left, right, first, count)
 LABKIT_FIELDS(ObbTree, nodes, items, triangles)
 LABKIT_FIELDS(TrianglePairs, pairs, box_tests, triangle_tests)
 LABKIT_FIELDS(SweepFrame, pairs, tests, swaps)
+LABKIT_FIELDS(OctNode, cell, child, first, count)
+LABKIT_FIELDS(Octree, nodes, items, spheres)
+LABKIT_FIELDS(BallsInBox, balls, cell_tests, ball_tests)
 
 using Indices = std::vector<int>;
 using Spheres = std::vector<Sphere>;
@@ -67,6 +70,13 @@ struct BvhRun {
   TrianglePairs answer;
   long long box_calls = 0;
   long long triangle_calls = 0;
+};
+
+// Step 12: the box query's answer and the given tests' calls the judge counted.
+struct OctreeRun {
+  BallsInBox answer;
+  long long cell_calls = 0;
+  long long ball_calls = 0;
 };
 
 // The judge serves and counts the lab's given tests (common/given/spatial_trees.cpp).
@@ -118,7 +128,10 @@ inline SweepFrames run_sweep(const Frames& frames) {
   CALL(SpherePairs, overlapping_pairs, (const Spheres&))                   \
   CALL(SegmentRuns, run_segments, (const KdTree&, const Segments&, bool)) \
   CALL(SweepFrames, run_sweep, (const Frames&))                            \
-  CALL(TrianglePairs, colliding_triangles, (const ObbTree&, const ObbTree&, bool))
+  CALL(TrianglePairs, colliding_triangles, (const ObbTree&, const ObbTree&, bool)) \
+  CALL(SpherePairs, hashed_pairs, (const Spheres&, double, int))                  \
+  CALL(Octree, build_octree, (const Spheres&, int, int))                           \
+  CALL(BallsInBox, balls_in_box, (const Octree&, const Aabb&))
 // clang-format on
 
 // The judge's process calls the code under test only as answerer::name(...) (calls.h).

@@ -129,3 +129,97 @@ rc::Gen<lab06::BvhQuery> bvh_query() {
 }
 
 }  // namespace labkit::gen
+
+namespace labkit::gen {
+
+namespace {
+
+// The smallest power of two >= x (x > 0).
+double power_of_two_at_least(double x) {
+  int e = 0;
+  const double m = std::frexp(x, &e);  // x = m 2^e, m in [0.5, 1)
+  return m == 0.5 ? x : std::ldexp(1.0, e);
+}
+
+}  // namespace
+
+// Step 11. Half the cases are sparse worlds: up to five clusters of step 10's exact
+// spheres (touching chains on integers), each moved by whole multiples of 2^30 to 2^40
+// of its unit, so that a dense grid could never be allocated and a cell's coordinates
+// pass 2^31. Within a cluster every number is an integer times the unit, far below 2^53:
+// given_balls_meet is exact there and the case is judged exactly. The other half are
+// step 5's sets (judged with the ambiguity rule). The cell is the smallest power of two
+// holding the largest diameter, or 2 or 4 times that; the buckets from 1 (every cell in
+// one bucket) to thousands.
+rc::Gen<lab06::HashCase> hash_case() {
+  return rc::gen::exec([] {
+    lab06::HashCase c;
+    c.exact = *rc::gen::inRange(0, 2) == 0;
+    if (c.exact) {
+      const int clusters = *rc::gen::inRange(1, 6);
+      const double far = std::ldexp(1.0, *rc::gen::inRange(30, 41));
+      for (int k = 0; k < clusters; ++k) {
+        std::vector<Sphere> cluster = *exact_sphere_set();
+        double unit = 0;
+        for (const Sphere& s : cluster) unit = std::max({unit, s.radius, s.center.cwiseAbs().maxCoeff()});
+        if (unit == 0) unit = 1;
+        unit = power_of_two_at_least(unit);
+        const Vec3 offset =
+            far * unit * Vec3(*rc::gen::inRange(-8, 9), *rc::gen::inRange(-8, 9), *rc::gen::inRange(-8, 9));
+        for (Sphere& s : cluster) c.spheres.push_back({s.center + offset, s.radius});
+      }
+    } else {
+      c.spheres = *sphere_set();
+    }
+    double r_max = 0, reach = 0;
+    for (const Sphere& s : c.spheres)
+      r_max = std::max(r_max, s.radius), reach = std::max(reach, s.center.cwiseAbs().maxCoeff());
+    c.cell = r_max > 0 ? power_of_two_at_least(2 * r_max) : power_of_two_at_least(std::max(reach, 1.0) / 64);
+    c.cell *= *rc::gen::element(1.0, 1.0, 2.0, 4.0);
+    c.buckets = *rc::gen::element(1, 2, 3, 7, 64, 1021, 4096);
+    return c;
+  });
+}
+
+}  // namespace labkit::gen
+
+namespace labkit::gen {
+
+// Step 12. Two cases in three: 1 to 3 clusters of balls, each within a unit of its
+// centre, the centres spread over 128 units, so the tree cuts deep around the clusters
+// and leaves the space between them whole; the query box near some ball. One in three:
+// balls and a box on integers, where balls touch each other, the cuts and the box
+// exactly (judged exactly).
+rc::Gen<lab06::OctreeCase> octree_case() {
+  return rc::gen::exec([] {
+    lab06::OctreeCase c;
+    const double s = *scale();
+    c.exact = *rc::gen::inRange(0, 3) == 0;
+    c.capacity = *rc::gen::element(1, 2, 4, 8);
+    c.max_depth = *rc::gen::inRange(0, 7);
+    if (c.exact) {
+      // Radii 0 or 1 on a lattice of 17^3 points: a ball's box spans few of the deepest
+      // cells, so the tree stays small (an answer crosses the process boundary).
+      const int n = *rc::gen::inRange(0, 40);
+      for (int i = 0; i < n; ++i) c.spheres.push_back({*lattice_point(s, 8), s * *rc::gen::inRange(0, 2)});
+      c.max_depth = std::min(c.max_depth, 4);
+      const Vec3 a = *lattice_point(s, 10), b = *lattice_point(s, 10);
+      c.box = {a.cwiseMin(b), a.cwiseMax(b)};
+      return c;
+    }
+    const int clusters = *rc::gen::inRange(1, 4);
+    for (int k = 0; k < clusters; ++k) {
+      const Vec3 centre = *point(s * 4);
+      const int n = *rc::gen::inRange(1, 25);
+      for (int i = 0; i < n; ++i)
+        c.spheres.push_back({centre + *point(s / 16), s * *rc::gen::inRange(0, 1 << 20) / double(1 << 23)});
+    }
+    const Vec3 near = c.spheres[std::size_t(*rc::gen::inRange(0, int(c.spheres.size())))].center + *point(s / 16);
+    Vec3 half;
+    for (int i = 0; i < 3; ++i) half[i] = s * *rc::gen::inRange(0, 1 << 20) / double(1 << 19);
+    c.box = {near - half, near + half};
+    return c;
+  });
+}
+
+}  // namespace labkit::gen

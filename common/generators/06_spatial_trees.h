@@ -28,5 +28,11 @@ rc::Gen<lab06::SweepCase> exact_sweep_case();
 lab06::SweepCase moving_spheres(const lab06::MovingSpheres& m);
 // Step 7: two small meshes overlapping in part, seeds for the checker's OBB trees.
 rc::Gen<lab06::BvhQuery> bvh_query();
+// Step 11: sparse worlds (clusters 2^30 apart, on integers: exact touching), step 5's
+// sets, bucket counts from 1 (every cell collides) to thousands.
+rc::Gen<lab06::HashCase> hash_case();
+// Step 12: clusters of balls in a wide space (the octree adapts to them), a box near
+// them; or balls and a box on integers, touching exactly, judged exactly.
+rc::Gen<lab06::OctreeCase> octree_case();
 
 }  // namespace labkit::gen

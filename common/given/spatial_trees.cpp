@@ -49,8 +49,25 @@ bool given_triangles_meet(const Triangle& s, const Triangle& t) {
   return false;
 }
 
+bool given_cell_meets_box(const Aabb& cell, const Aabb& box) {
+  given::note_call("given_cell_meets_box");
+  return (cell.min.array() <= box.max.array()).all() && (box.min.array() <= cell.max.array()).all();
+}
+
+bool given_ball_meets_box(const Sphere& ball, const Aabb& box) {
+  given::note_call("given_ball_meets_box");
+  double d2 = 0;  // the squared distance from the centre to the closed box
+  for (int i = 0; i < 3; ++i) {
+    const double c = ball.center[i];
+    const double gap = c < box.min[i] ? box.min[i] - c : (c > box.max[i] ? c - box.max[i] : 0.0);
+    d2 += gap * gap;
+  }
+  return d2 <= ball.radius * ball.radius;  // closed: touching counts
+}
+
 void serve_given() {
-  for (const char* name : {"compare_ends", "given_balls_meet", "given_boxes_overlap", "given_triangles_meet"})
+  for (const char* name : {"compare_ends", "given_balls_meet", "given_boxes_overlap", "given_triangles_meet",
+                           "given_cell_meets_box", "given_ball_meets_box"})
     given::countable(name);
 }
 

@@ -74,6 +74,28 @@ struct SpreadSpheres {
 };
 LABKIT_FIELDS(SpreadSpheres, count, seed)
 
+// Step 11: spheres, the cell side (a power of two, at least every diameter) and the bucket
+// count of the hash. `exact`: centres and radii are integers (times a power of two) within
+// each cluster, where given_balls_meet is exact, so the verdict allows no ambiguity.
+struct HashCase {
+  std::vector<Sphere> spheres;
+  double cell = 1;
+  int buckets = 1;
+  bool exact = false;
+};
+LABKIT_FIELDS(HashCase, spheres, cell, buckets, exact)
+
+// Step 12: balls, the octree's leaf capacity and depth limit, and a query box. `exact`:
+// integers (times a power of two), where given_ball_meets_box is exact: no ambiguity.
+struct OctreeCase {
+  std::vector<Sphere> spheres;
+  int capacity = 4;
+  int max_depth = 6;
+  Aabb box;
+  bool exact = false;
+};
+LABKIT_FIELDS(OctreeCase, spheres, capacity, max_depth, box, exact)
+
 }  // namespace labkit::lab06
 
 // ---- The queries -------------------------------------------------------------------------
@@ -94,7 +116,9 @@ LABKIT_FIELDS(SpreadSpheres, count, seed)
   /* step 9 */ X_IN(robust, build_kd_tree, Mesh) X_IN(robust, segment_queries, TreeQuery)          \
   /* step 10 */ X_IN(robust, classify, PointQuery) X_IN(robust, back_to_front, PointQuery)         \
                X_IN(robust, overlapping_pairs, SphereSet) X_IN(robust, sweep_frames, SweepCase)    \
-               X_IN(robust, colliding_triangles, BvhQuery)
+               X_IN(robust, colliding_triangles, BvhQuery)                                         \
+  /* step 11 */ X(hashed_pairs, HashCase)                                                        \
+  /* step 12 */ X(build_octree, OctreeCase) X(balls_in_box, OctreeCase)
 // clang-format on
 
 namespace labkit::lab06::query {

@@ -172,4 +172,21 @@ std::vector<std::array<int, 2>> meeting_pairs(const std::vector<Sphere>& spheres
   return out;
 }
 
+bool ball_meets_box(const Sphere& ball, const Aabb& box) {
+  FT d2 = 0;
+  for (int i = 0; i < 3; ++i) {
+    const double c = ball.center[i];
+    if (c < box.min[i]) d2 += CGAL::square(ft(box.min[i]) - ft(c));
+    if (c > box.max[i]) d2 += CGAL::square(ft(c) - ft(box.max[i]));
+  }
+  return d2 <= CGAL::square(ft(ball.radius));
+}
+
+std::vector<int> balls_meeting_box(const std::vector<Sphere>& spheres, const Aabb& box) {
+  std::vector<int> out;
+  for (int i = 0; i < int(spheres.size()); ++i)
+    if (ball_meets_box(spheres[std::size_t(i)], box)) out.push_back(i);
+  return out;
+}
+
 }  // namespace oracle

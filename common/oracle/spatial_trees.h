@@ -52,4 +52,10 @@ bool balls_meet(const Sphere& a, const Sphere& b);
 // Every pair (i, j), i < j, of balls that meet, in order: the O(n^2) brute force.
 std::vector<std::array<int, 2>> meeting_pairs(const std::vector<Sphere>& spheres);
 
+// Does the closed ball meet the closed box: is the distance from its centre to the box
+// <= r? Exact (the squared distance, clamped axis by axis, in exact numbers).
+bool ball_meets_box(const Sphere& ball, const Aabb& box);
+// Every ball that meets the box, in increasing order: the brute force.
+std::vector<int> balls_meeting_box(const std::vector<Sphere>& spheres, const Aabb& box);
+
 }  // namespace oracle

@@ -43,4 +43,20 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
   not_implemented("L06S7", a, b, every);
 }
 
+// L06S11: the spatial hash: buckets of (cell key, ball), the 27 cells around each ball,
+// only entries whose key is the cell looked for (a pair: given_balls_meet).
+SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int buckets) {
+  not_implemented("L06S11", spheres, cell, buckets);
+}
+
+// L06S12: the octree: cut a node in 8 at its centre while it holds more than `capacity`
+// balls (and is above max_depth); a ball goes to every child its box meets.
+Octree build_octree(const std::vector<Sphere>& spheres, int capacity, int max_depth) {
+  not_implemented("L06S12", spheres, capacity, max_depth);
+}
+
+// L06S12: the balls that meet a box, descending only the children whose cells meet it
+// (a cell: given_cell_meets_box; a ball, once: given_ball_meets_box).
+BallsInBox balls_in_box(const Octree& tree, const Aabb& box) { not_implemented("L06S12", tree, box); }
+
 }  // namespace labkit::lab06

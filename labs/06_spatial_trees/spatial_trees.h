@@ -15,7 +15,8 @@
 //  - two trees of oriented boxes, traversed together, find the triangle pairs of two
 //    meshes that meet (step 7).
 // Step 8 counts the tests of steps 1, 2 and 5; step 9 feeds steps 1 and 2, and step 10
-// steps 3 to 7, exact degenerate input.
+// steps 3 to 7, exact degenerate input. Extensions beyond them: a spatial hash for sparse
+// worlds (step 11) and an octree that adapts to where the balls are (step 12).
 //
 // The primitive is given. Whether a segment hits a triangle is decided by the watertight
 // test labkit::given::segment_triangle (common/given/segment_triangle.h), here and in the
@@ -61,6 +62,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <vector>
 
 namespace labkit::lab06 {
@@ -401,5 +403,125 @@ constexpr long long kSphereTests = 100000;
 // input. Points and eyes exactly on planes, faces, edges and vertices; balls touching
 // exactly, even along x; triangles of two meshes touching exactly, an edge through an
 // edge or a vertex on one.
+
+// ---- Step 11 (L06S11): spatial hashing for sparse worlds ---------------------------------
+//
+// An extension beside step 5. A world can be sparse: a few clusters of balls, 2^30 apart.
+// A dense grid of cells one diameter wide would need more cells than memory holds; a
+// spatial hash keeps only the cells that hold a ball, in a table of a fixed number of
+// buckets, keyed by the cell's integer coordinates:
+//
+//    cell of a point p:   (floor(p.x / cell), floor(p.y / cell), floor(p.z / cell))
+//    bucket of a cell:    cell_hash(c) % buckets        (given below, not counted)
+//
+// Put every ball in the bucket of the cell holding its centre, with that cell's key.
+// Then, for each ball, look in the 27 cells around its own (dx, dy, dz in -1, 0, 1): go
+// to each one's bucket and take only the entries whose key is that cell. Distinct cells
+// may share a bucket (a collision: `buckets` may be 1); an entry of another cell is not a
+// neighbour, and a bucket reached from two of the 27 cells must not yield a pair twice.
+// Test each candidate pair with given_balls_meet (step 5's counted test) once.
+//
+// Why it is exact: `cell` is a power of two, so p / cell and its floor are computed
+// without rounding, and cell >= 2 r_max (the largest diameter): two balls that meet have
+// centres at most r_i + r_j <= cell apart along every axis, so their cells differ by at
+// most one along each axis. Nothing is lost, and every pair tested sits in neighbouring
+// cells.
+//
+// Counts, by the checker (it counts given_balls_meet's calls, as in step 5): at most one
+// test per pair of balls whose cells are neighbours (differ by at most 1 along each axis),
+// whatever the buckets; `tests` must equal the calls.
+//
+// Preconditions: every centre finite, every radius finite and >= 0; `cell` a power of two
+// with cell >= 2 r (every radius r); |coordinate| / cell <= 2^60 for every centre (so that
+// a cell's coordinates fit in 64-bit integers, with room for the neighbour at +-1);
+// 1 <= buckets <= 2^20. Random cases span 2^31 and more (clusters far apart): a cell's
+// coordinates do not fit in an int. On centres and radii that are integers (times a
+// power of two) below 2^24 within a cluster, given_balls_meet is exact, and nothing there
+// is ambiguous: exact touching counts as meeting.
+
+struct Cell {
+  std::int64_t x = 0, y = 0, z = 0;  // the cell [x cell, (x + 1) cell) x ... holds the point
+};
+
+// Given (not counted): the classic hash of a cell, three large odd numbers and XOR. The
+// bucket is cell_hash(c) % buckets.
+inline std::uint64_t cell_hash(const Cell& c) {
+  return (std::uint64_t(c.x) * 73856093u) ^ (std::uint64_t(c.y) * 19349663u) ^ (std::uint64_t(c.z) * 83492791u);
+}
+
+// Every pair of balls that meet, as step 5's overlapping_pairs, through a hash table of
+// `buckets` buckets over cells of side `cell`.
+SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int buckets);
+
+// ---- Step 12 (L06S12): an octree that adapts -----------------------------------------------
+//
+// An extension beside steps 5 and 11, whose cells are all one size. An octree cuts space
+// only where the balls crowd: a cell holding few balls stays whole, however big it is,
+// and a crowded one is cut in eight, again and again. Drawn flat (a quadtree):
+//
+//    +---------------+---------------+     the root held 7 balls > capacity 2: cut in 4 (8 in 3D);
+//    |               |       |  o    |     the top right quarter held 4: cut again; the other
+//    |      o        |-------+-------|     quarters hold 2 or fewer and stay whole
+//    |               |  o o  |   o   |
+//    +---------------+---------------+     the ball x lies across the cut between the bottom
+//    |               |               |     quarters: both list it
+//    |               x      o        |
+//    +---------------+---------------+
+//
+// Build. Every node owns a closed box, its cell; the root's is the tightest box around
+// every ball's box [c - r, c + r] (computed in doubles so). A node at depth d (the root:
+// 0) holding more than `capacity` balls, with d < max_depth, is interior: its centre
+// m = 0.5 * (cell.min + cell.max) (in doubles so) cuts it into 8 children. Child k
+// (k = x + 2 y + 4 z, each bit 0 or 1) takes along each axis i the lower half
+// [min_i, m_i] when bit i of k is 0, the upper half [m_i, max_i] when it is 1. A ball goes
+// to every child whose closed cell meets its box (box.min_i <= cell.max_i and
+// cell.min_i <= box.max_i on every axis): a ball touching a cut goes both ways. Any other
+// node is a leaf and lists its balls in increasing index order. No choice is left: the
+// checker's tree and yours must be the same, node for node (in any order of the nodes,
+// as long as a node's 8 children sit side by side).
+//
+// Query: every ball that meets a closed box. Test a cell against the box with
+// given_cell_meets_box and a ball with given_ball_meets_box (both counted). Test the
+// root's cell; at an interior node whose cell meets the box, test its 8 children's cells
+// and descend only those that meet it; at a leaf, test its balls, each ball at most once
+// per query (a ball may be listed in several leaves the query reaches). The checker runs
+// this traversal itself and allows no more tests of either kind: cell tests <= 1 + 8 x
+// (interior nodes whose cells meet the box), ball tests <= the distinct balls listed in
+// the leaves reached. The checker hands your query its own tree (the one the rule above
+// gives), so this query does not rest on your build.
+//
+// Preconditions: every centre finite, every radius finite and >= 0; 1 <= capacity <= 64;
+// 0 <= max_depth <= 10 (a node at max_depth is a leaf however many balls it holds: balls
+// at one point can never be separated); the query box finite, box.min <= box.max. A
+// ball meets a box when the distance from its centre to the closed box is <= r (touching
+// counts). On integer input (times a power of two) given_ball_meets_box is exact and
+// nothing is ambiguous.
+
+struct OctNode {
+  Aabb cell;       // closed
+  int child = -1;  // interior: its children are nodes[child], ..., nodes[child + 7]; -1: a leaf
+  int first = 0;   // a leaf's balls are items[first], ..., items[first + count - 1], increasing
+  int count = 0;
+};
+
+struct Octree {
+  std::vector<OctNode> nodes;   // nodes[0] is the root; none when there is no ball
+  std::vector<int> items;       // the leaves' ball indices
+  std::vector<Sphere> spheres;  // spheres[i]: ball i, as given
+};
+
+// Given: the closed boxes share a point. Counted.
+bool given_cell_meets_box(const Aabb& cell, const Aabb& box);
+// Given: the squared distance from the centre to the closed box is <= r^2, in doubles. Counted.
+bool given_ball_meets_box(const Sphere& ball, const Aabb& box);
+
+struct BallsInBox {
+  std::vector<int> balls;    // every ball that meets the box, once, sorted
+  long long cell_tests = 0;  // your calls of given_cell_meets_box
+  long long ball_tests = 0;  // your calls of given_ball_meets_box
+};
+
+Octree build_octree(const std::vector<Sphere>& spheres, int capacity, int max_depth);
+BallsInBox balls_in_box(const Octree& tree, const Aabb& box);
 
 }  // namespace labkit::lab06

@@ -936,4 +936,215 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
   return out;
 }
 
+// ---- Step 11 ------------------------------------------------------------------------------------
+
+// Step 5's grid, with its cells kept in a hash table instead of an array. A cell is named
+// by its integer coordinates, floor(p / cell) along each axis; only the cells that hold a
+// centre are ever stored, so a world of clusters 2^30 apart costs what its balls cost.
+//
+//    cells (x, y)           bucket = cell_hash(c) % buckets           buckets = 4
+//    (0, 0) (1, 0)   ->     bucket 0: [(0, 0) ball 2] [(7, -3) ball 5]   <- two cells, one bucket
+//    (7, -3)                bucket 1: [(1, 0) ball 0]
+//
+// Why nothing is lost: `cell` is a power of two, so p / cell is exact and so is its
+// floor; cell >= 2 r_max, so two balls that meet (|c_i - c_j| <= r_i + r_j <= cell) have
+// centres at most one cell apart along each axis, and their cells differ by at most one
+// there. Looking in the 27 cells around a ball's own finds every ball it can meet.
+//
+// Why nothing is added: a bucket holds every cell that hashes to it. Each entry carries
+// its cell's key, and only entries whose key is the cell looked for are taken. Then an
+// entry matches one of the 27 cells at most, and no pair is seen twice from one ball;
+// keeping each pair from its smaller index sees it once in all.
+namespace {
+
+Cell cell_of(const Vec3& p, double cell) {
+  return {std::int64_t(std::floor(p.x() / cell)), std::int64_t(std::floor(p.y() / cell)),
+          std::int64_t(std::floor(p.z() / cell))};
+}
+
+bool same_cell(const Cell& a, const Cell& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
+
+void require_hash_input(const std::vector<Sphere>& spheres, double cell, int buckets) {
+  require_spheres("hashed_pairs", spheres);
+  int exponent = 0;
+  if (!(cell > 0) || !std::isfinite(cell) || std::frexp(cell, &exponent) != 0.5)
+    throw std::invalid_argument("hashed_pairs: cell must be a power of two, got " + text(cell));
+  if (buckets < 1 || buckets > (1 << 20))
+    throw std::invalid_argument("hashed_pairs: buckets must be from 1 to 2^20, got " + std::to_string(buckets));
+  for (std::size_t i = 0; i < spheres.size(); ++i) {
+    const Sphere& s = spheres[i];
+    if (!(2 * s.radius <= cell))
+      throw std::invalid_argument("hashed_pairs: cell must be at least every ball's diameter, got " + text(cell) +
+                                  " beside spheres[" + std::to_string(i) + "].radius = " + text(s.radius));
+    if (!(s.center.cwiseAbs().maxCoeff() / cell <= 0x1p60))
+      throw std::invalid_argument("hashed_pairs: spheres[" + std::to_string(i) +
+                                  "].center / cell must be at most 2^60 in every coordinate, got " + text(s.center));
+  }
+}
+
+}  // namespace
+
+SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int buckets) {
+  require_hash_input(spheres, cell, buckets);
+  const auto bucket_of = [buckets](const Cell& c) { return std::size_t(cell_hash(c) % std::uint64_t(buckets)); };
+  struct Entry {
+    Cell key;  // the cell whose ball this is: the bucket holds other cells too
+    int sphere;
+  };
+  std::vector<std::vector<Entry>> table(static_cast<std::size_t>(buckets));
+  std::vector<Cell> cells(spheres.size());
+  for (int i = 0; i < int(spheres.size()); ++i) {
+    cells[std::size_t(i)] = cell_of(spheres[std::size_t(i)].center, cell);
+    table[bucket_of(cells[std::size_t(i)])].push_back({cells[std::size_t(i)], i});
+  }
+  SpherePairs out;
+  for (int i = 0; i < int(spheres.size()); ++i) {
+    const Cell& own = cells[std::size_t(i)];
+    // mutant: hash_half_neighbourhood
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const Cell want{own.x + dx, own.y + dy, own.z + dz};
+          for (const Entry& entry : table[bucket_of(want)]) {
+            // mutants: hash_bucket_not_filtered, hash_pairs_from_both_balls
+            if (!same_cell(entry.key, want)) continue;  // another cell that shares this bucket
+            if (entry.sphere <= i) continue;            // each pair once: from its smaller index
+            ++out.tests;
+            if (given_balls_meet(spheres[std::size_t(i)], spheres[std::size_t(entry.sphere)]))
+              out.pairs.push_back({i, entry.sphere});
+          }
+        }
+  }
+  std::sort(out.pairs.begin(), out.pairs.end());
+  return out;
+}
+
+// ---- Step 12 ------------------------------------------------------------------------------------
+
+// An octree (lecture 001's adaptive partitioning): a cell is cut in eight at its centre
+// only while it holds more than `capacity` balls, so cells stay big where space is empty
+// and get small where balls crowd. Two clusters far apart cost two short chains of cuts,
+// where a uniform grid as fine as the finest leaf would fill the whole space between.
+//
+//   child k = x + 2 y + 4 z:       z = 0:  +---+---+      z = 1:  +---+---+
+//   bit i of k picks the upper             | 2 | 3 |              | 6 | 7 |
+//   half along axis i                      +---+---+              +---+---+
+//                                          | 0 | 1 |              | 4 | 5 |
+//                                          +---+---+ -> x         +---+---+
+//
+// A ball goes to every child whose closed cell meets its box, so a query that reaches
+// any leaf a ball touches finds it there; the price is that one ball may be listed in
+// several leaves, and a query must test it once.
+namespace {
+
+Aabb ball_box(const Sphere& s) { return {s.center - Vec3::Constant(s.radius), s.center + Vec3::Constant(s.radius)}; }
+
+bool closed_boxes_meet(const Aabb& a, const Aabb& b) {
+  // mutant: octree_touching_one_side
+  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+}
+
+}  // namespace
+
+Octree build_octree(const std::vector<Sphere>& spheres, int capacity, int max_depth) {
+  require_spheres("build_octree", spheres);
+  if (capacity < 1 || capacity > 64)
+    throw std::invalid_argument("build_octree: capacity must be from 1 to 64, got " + std::to_string(capacity));
+  if (max_depth < 0 || max_depth > 10)
+    throw std::invalid_argument("build_octree: max_depth must be from 0 to 10, got " + std::to_string(max_depth));
+  Octree tree;
+  tree.spheres = spheres;
+  if (spheres.empty()) return tree;
+  std::vector<Aabb> boxes;
+  Aabb root = ball_box(spheres[0]);
+  for (const Sphere& s : spheres) {
+    boxes.push_back(ball_box(s));
+    root = {root.min.cwiseMin(boxes.back().min), root.max.cwiseMax(boxes.back().max)};
+  }
+  struct Job {
+    int node, depth;
+    std::vector<int> balls;  // increasing: filtered from the parent's, in order
+  };
+  std::vector<int> all(spheres.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = int(i);
+  tree.nodes.push_back({root});
+  std::vector<Job> todo;
+  todo.push_back({0, 0, std::move(all)});
+  while (!todo.empty()) {
+    Job job = std::move(todo.back());
+    todo.pop_back();
+    // Few balls (or as deep as allowed): a leaf, however big its cell. This is the rule
+    // that makes the tree adapt.
+    // mutant: octree_cuts_at_capacity
+    if (int(job.balls.size()) <= capacity || job.depth == max_depth) {
+      OctNode& leaf = tree.nodes[std::size_t(job.node)];
+      leaf.first = int(tree.items.size());
+      leaf.count = int(job.balls.size());
+      tree.items.insert(tree.items.end(), job.balls.begin(), job.balls.end());
+      continue;
+    }
+    const Aabb cell = tree.nodes[std::size_t(job.node)].cell;
+    const Vec3 mid = 0.5 * (cell.min + cell.max);
+    const int first_child = int(tree.nodes.size());
+    tree.nodes[std::size_t(job.node)].child = first_child;
+    for (int k = 0; k < 8; ++k) {
+      Aabb c = cell;
+      for (int i = 0; i < 3; ++i) {
+        if (k >> i & 1)
+          c.min[i] = mid[i];  // the upper half along axis i
+        else
+          c.max[i] = mid[i];  // the lower half
+      }
+      tree.nodes.push_back({c});
+    }
+    for (int k = 0; k < 8; ++k) {
+      std::vector<int> inside;
+      for (int b : job.balls)
+        if (closed_boxes_meet(boxes[std::size_t(b)], tree.nodes[std::size_t(first_child + k)].cell))
+          inside.push_back(b);  // touching the cut counts: a ball on it goes both ways
+      todo.push_back({first_child + k, job.depth + 1, std::move(inside)});
+    }
+  }
+  return tree;
+}
+
+// Down from the root, skipping every subtree whose cell misses the box: its balls lie
+// within its cell, so none of them can meet the box. A ball listed in several leaves is
+// tested the first time only.
+BallsInBox balls_in_box(const Octree& tree, const Aabb& box) {
+  require_finite("balls_in_box", "box.min", box.min);
+  require_finite("balls_in_box", "box.max", box.max);
+  if (!(box.min.array() <= box.max.array()).all())
+    throw std::invalid_argument("balls_in_box: box.min must be <= box.max, got " + text(box.min) + " and " +
+                                text(box.max));
+  BallsInBox out;
+  if (tree.nodes.empty()) return out;
+  ++out.cell_tests;
+  if (!given_cell_meets_box(tree.nodes[0].cell, box)) return out;
+  std::vector<char> tested(tree.spheres.size(), 0);
+  std::vector<int> todo{0};
+  while (!todo.empty()) {
+    const OctNode& node = tree.nodes[std::size_t(todo.back())];
+    todo.pop_back();
+    if (node.child < 0) {
+      for (int k = node.first; k < node.first + node.count; ++k) {
+        const int ball = tree.items[std::size_t(k)];
+        // mutant: octree_ball_tested_per_leaf
+        if (tested[std::size_t(ball)]) continue;  // listed in an earlier leaf too: tested there
+        tested[std::size_t(ball)] = 1;
+        ++out.ball_tests;
+        if (given_ball_meets_box(tree.spheres[std::size_t(ball)], box)) out.balls.push_back(ball);
+      }
+      continue;
+    }
+    for (int k = 0; k < 8; ++k) {
+      // mutant: octree_descends_every_child
+      ++out.cell_tests;
+      if (given_cell_meets_box(tree.nodes[std::size_t(node.child + k)].cell, box)) todo.push_back(node.child + k);
+    }
+  }
+  std::sort(out.balls.begin(), out.balls.end());
+  return out;
+}
+
 }  // namespace labkit::lab06

@@ -7,6 +7,8 @@
 //   frames     sweep_frames (and robust.*): the last two frames' ends on x     step 6
 //              (handles move the last frame's spheres; the swapped ends are orange)
 //   OBB trees  colliding_triangles: two meshes, the leaf boxes reached, the pairs step 7
+//   hash       hashed_pairs: each ball's cell, coloured by its bucket, the pairs  step 11
+//   octree     build_octree, balls_in_box: the leaves, the box, the leaves reached step 12
 // In the k-d tree mode the segment's ends are handles: the leaves whose cells it meets
 // are drawn as boxes, the student's first hit in its verdict's colour, the exact hits
 // (the toggle) as violet rings. When step 1 is still a stub, the queries run on the
@@ -44,6 +46,14 @@ const std::vector<Preset> kPresets = {
     {"coherence",
      "step 6: C moves 2 to the left; its end C0 = 6 passes R1 = 7: one swap, and {R, C} joins the pairs on x", nullptr,
      true, -90, 89, 6},
+    {"hash",
+     "step 11: cells of side 2 in a table of 4 buckets, each ball's cell in its bucket's colour: one colour, "
+     "several cells",
+     nullptr, true, -90, 89, 11},
+    {"octree",
+     "step 12: an octree of capacity 2 over two groups of 8 balls and a lone one, from above; the query box, the "
+     "leaves it reaches (yellow)",
+     nullptr, true, -90, 89, 12},
 };
 
 // ---- setup ---------------------------------------------------------------------------
@@ -99,6 +109,8 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
       mode_ = Mode::bsp;
       mesh_ = gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Vec3::Zero(), 2.0);
       point_ = {3, 3, 1};
+    } else if (name == "hash" || name == "octree") {
+      set_up_extension(name);
     } else if (name == "spheres") {
       mode_ = Mode::spheres;
       spheres_ = gen::spread_spheres(60, 10, 0.3, 1.2, 5);
@@ -114,9 +126,10 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
     if (frames_.empty()) frames_.push_back({});
     spheres_ = frames_.back();
   };
-  load_token("06", query::table, token,
-             Loaders{[&](auto, const TreeQuery& in) { mesh_ = in.mesh, segment_ = in.segment, tree_seed_ = in.tree; },
-                     [&](auto q, const Mesh& in) {
+  load_token(
+      "06", query::table, token,
+      Loaders{[&](auto, const TreeQuery& in) { mesh_ = in.mesh, segment_ = in.segment, tree_seed_ = in.tree; },
+              [&](auto q, const Mesh& in) {
     mesh_ = in;
     if (q == query::build_bsp) {
       mode_ = Mode::bsp;
@@ -124,26 +137,35 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
     } else if (mesh_.size() > 0) {
       segment_ = {mesh_.vertices[0] - Vec3(1, 1, 1), mesh_.vertices.back() + Vec3(1, 1, 1)};
     }
-                     },
-                     [&](auto, const PointQuery& in) { mode_ = Mode::bsp, mesh_ = in.mesh, point_ = in.point; },
-                     [&](auto, const SphereSet& in) { mode_ = Mode::spheres, spheres_ = in.spheres; },
-                     [&](auto, const BvhQuery& in) {
+              },
+              [&](auto, const PointQuery& in) { mode_ = Mode::bsp, mesh_ = in.mesh, point_ = in.point; },
+              [&](auto, const SphereSet& in) { mode_ = Mode::spheres, spheres_ = in.spheres; },
+              [&](auto, const BvhQuery& in) {
     mode_ = Mode::bvh, mesh_ = in.a, mesh_b_ = in.b, tree_seed_ = in.tree_a, tree_seed_b_ = in.tree_b;
-             },
-             [&](auto, const SweepCase& in) { frames(in.frames); },
-             [&](auto, const MovingSpheres& in) { frames(gen::moving_spheres(in).frames); }});
+      },
+      [&](auto, const SweepCase& in) { frames(in.frames); },
+      [&](auto, const HashCase& in) {
+    mode_ = Mode::hash, spheres_ = in.spheres, hash_cell_ = in.cell, hash_buckets_ = in.buckets;
+      },
+      [&](auto, const OctreeCase& in) {
+    mode_ = Mode::octree, spheres_ = in.spheres, capacity_ = in.capacity, max_depth_ = in.max_depth;
+    query_box_ = in.box;
+  },
+      [&](auto, const MovingSpheres& in) { frames(gen::moving_spheres(in).frames); }});
   frame_inputs();
 }
 
 void SpatialTreesScene::frame_inputs() {
-  const char* names[] = {"k-d tree and segment", "BSP tree and point", "spheres", "spheres over frames",
-                         "two OBB trees"};
+  const char* names[] = {"k-d tree and segment", "BSP tree and point", "spheres",
+                         "spheres over frames",  "two OBB trees",      "spheres in a hash table",
+                         "an octree and a box"};
   mode = names[int(mode_)];
   Eigen::AlignedBox3d box;
   for (const Vec3& v : mesh_.vertices) box.extend(v);
   for (const Vec3& v : mesh_b_.vertices) box.extend(v);
   if (mode_ == Mode::kd) box.extend(segment_.a), box.extend(segment_.b);
   if (mode_ == Mode::bsp) box.extend(point_);
+  if (mode_ == Mode::octree) box.extend(query_box_.min), box.extend(query_box_.max);
   for (const Sphere& s : spheres_)
     box.extend(s.center + Vec3::Constant(s.radius)), box.extend(s.center - Vec3::Constant(s.radius));
   if (figure_ == "sweep") box.extend(Vec3(0, -7.5, 0));
@@ -160,6 +182,9 @@ std::string SpatialTreesScene::token() const {
     case Mode::bvh:
       return replay_token(query::colliding_triangles, BvhQuery{mesh_, mesh_b_, tree_seed_, tree_seed_b_, true});
     case Mode::frames: return replay_token(query::sweep_frames, SweepCase{frames_});
+    case Mode::hash: return replay_token(query::hashed_pairs, HashCase{spheres_, hash_cell_, hash_buckets_, false});
+    case Mode::octree:
+      return replay_token(query::balls_in_box, OctreeCase{spheres_, capacity_, max_depth_, query_box_, false});
     case Mode::spheres: break;
   }
   return replay_token(query::overlapping_pairs, SphereSet{spheres_});
@@ -174,6 +199,8 @@ void SpatialTreesScene::update() {
   if (mode_ == Mode::spheres) update_spheres();
   if (mode_ == Mode::frames) update_frames();
   if (mode_ == Mode::bvh) update_bvh();
+  if (mode_ == Mode::hash) update_hash();
+  if (mode_ == Mode::octree) update_octree();
 }
 
 void SpatialTreesScene::update_kd() {

@@ -303,6 +303,8 @@ void SpatialTreesScene::draw(Frame& f) {
   if (mode_ == Mode::spheres) draw_spheres(f);
   if (mode_ == Mode::frames) draw_frames(f);
   if (mode_ == Mode::bvh) draw_bvh(f);
+  if (mode_ == Mode::hash) draw_hash(f);
+  if (mode_ == Mode::octree) draw_octree(f);
 }
 
 bool SpatialTreesScene::inputs() {
@@ -313,6 +315,16 @@ bool SpatialTreesScene::inputs() {
   }
   if (mode_ == Mode::bsp) changed |= edit("point (and eye)", point_);
   if (mode_ == Mode::spheres) ImGui::TextDisabled("%zu spheres", spheres_.size());
+  if (mode_ == Mode::hash) {
+    changed |= ImGui::InputInt("buckets", &hash_buckets_);
+    hash_buckets_ = std::clamp(hash_buckets_, 1, 1 << 20);
+    ImGui::TextDisabled("%zu spheres, cells of side %g", spheres_.size(), hash_cell_);
+  }
+  if (mode_ == Mode::octree) {
+    changed |= ImGui::SliderInt("capacity", &capacity_, 1, 16) | ImGui::SliderInt("max_depth", &max_depth_, 0, 10);
+    changed |= edit("box min", query_box_.min, 0.01f) | edit("box max", query_box_.max, 0.01f);
+    query_box_.max = query_box_.max.cwiseMax(query_box_.min);
+  }
   if (mode_ == Mode::frames)
     ImGui::TextDisabled("%zu spheres, %zu frames: the handles move the last", spheres_.size(), frames_.size());
   return changed;

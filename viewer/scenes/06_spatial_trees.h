@@ -1,7 +1,8 @@
 // Lab 06 scene: BSP and k-d trees, pair reduction. What its files share:
 // 06_spatial_trees.cpp sets the scene up and runs the steps,
 // 06_spatial_trees.draw.cpp draws it and edits its inputs, 06_spatial_trees.trees.cpp
-// walks the trees for the picture.
+// walks the trees for the picture, 06_spatial_trees.extensions.cpp runs and draws the
+// extensions of steps 11 (a spatial hash) and 12 (an octree).
 #pragma once
 
 #include "viewer/scenes/scenes.h"
@@ -16,7 +17,7 @@ namespace viewer::spatial_trees {
 using namespace labkit;
 using namespace labkit::lab06;
 
-enum class Mode { kd, bsp, spheres, frames, bvh };
+enum class Mode { kd, bsp, spheres, frames, bvh, hash, octree };
 
 // The leaves of a k-d tree with their cells, or why the tree cannot be walked.
 struct LeafBox {
@@ -31,6 +32,8 @@ KdTree median_tree(const Mesh& mesh, int depth);
 // The part [t0, t1] of the segment inside the closed box (t0 > t1: it misses the box).
 std::array<double, 2> segment_span(const Aabb& box, const Segment& s);
 bool segment_meets(const Aabb& box, const Segment& s);
+// A box's 12 edges (06_spatial_trees.draw.cpp).
+void draw_box(Renderer& r, const Aabb& b, Color c, float width);
 
 class SpatialTreesScene : public Scene {
  public:
@@ -48,6 +51,11 @@ class SpatialTreesScene : public Scene {
   void update_spheres();
   void update_frames();
   void update_bvh();
+  void set_up_extension(const std::string& preset);  // the "hash" and "octree" figures
+  void update_hash();
+  void update_octree();
+  void draw_hash(Frame& f);
+  void draw_octree(Frame& f);
   void draw_bvh(Frame& f);
   void draw_frames(Frame& f);
   void draw_kd(Frame& f);
@@ -88,7 +96,20 @@ class SpatialTreesScene : public Scene {
   ObbTree tree_a_, tree_b_;
   Attempt<BvhRun> bvh_;
   std::vector<std::array<int, 2>> leaf_pairs_;
-  Verdict verdict_[10] = {};
+  // Step 11: the hash's cell side and buckets (the spheres are spheres_), the answer.
+  double hash_cell_ = 2;
+  int hash_buckets_ = 4;
+  Attempt<SpherePairs> hashed_;
+  // Step 12: the octree's rule, the query box, the student's tree, the checker's (the
+  // query runs on it), the query's answer and the leaves the header's walk reaches.
+  int capacity_ = 2, max_depth_ = 5;
+  Aabb query_box_{Vec3::Zero(), Vec3::Ones()};
+  Attempt<Octree> octree_;
+  Octree checker_octree_;
+  Attempt<OctreeRun> box_run_;
+  std::vector<int> exact_balls_;
+  judge::OctreeWalk walk_;
+  Verdict verdict_[13] = {};
 };
 
 }  // namespace viewer::spatial_trees
