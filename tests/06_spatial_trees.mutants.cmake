@@ -1,4 +1,3 @@
-set(LABKIT_UNANCHORED_MUTANTS ON)  # TRANSITION
 # Lab 06's classic mistakes (handouts/06_spatial_trees.md); each must fail its step first,
 # and that failure's why must say the words after SAYS (the concept, not a field).
 
@@ -40,7 +39,7 @@ labkit_mutant(06 spatial_trees NAME far_child_behind_a STEP 2 SAYS "t_split" "fa
 # Step 2: any_hit walks on after its first hit, testing every triangle the walk meets
 # (and keeping the last hit), where it should stop at the first one.
 labkit_mutant(06 spatial_trees NAME any_hit_walks_on STEP 2 SAYS "stops at its first hit"
-  FIND "return -kInfinity;  // stop the walk"
+  FIND "return -kInfinity;"
   REPLACE "continue;  // walks on after its first hit")
 
 # Step 3: a point on a node's plane is sent in front, as if it were off the plane.
@@ -68,8 +67,8 @@ labkit_mutant(06 spatial_trees NAME grid_cells_one_radius STEP 5 SAYS "missing" 
 # Step 6: the ends re-sorted from scratch every frame (the list rebuilt in sphere order):
 # right pairs, but n log n or worse comparisons and swaps however little the spheres moved.
 labkit_mutant(06 spatial_trees NAME sweep_resorted_each_frame STEP 6 SAYS "frame coherence"
-  FIND "if (!started) {  // the first frame"
-  REPLACE "if (true) {  // the first frame")
+  FIND "if (!started) {"
+  REPLACE "if (true) {")
 
 # Step 6: ends compared strictly: a low end arriving exactly at a high end's value does not
 # pass it, so two balls that come to touch are never paired.
@@ -125,8 +124,8 @@ labkit_mutant(06 spatial_trees NAME grid_of_one_cell STEP 8 SAYS "adjacent cells
 # Step 9: the clip to the root's box with strict comparisons: a segment lying in the
 # plane of a wall of the root's cell is taken as outside it, and its hits are lost.
 labkit_mutant(06 spatial_trees NAME clip_wall_strict STEP 9 SAYS "every leaf the segment meets"
-  FIND "if (a[i] < box.min[i] || a[i] > box.max[i]) return {1.0, 0.0};  // beside the slab"
-  REPLACE "if (a[i] <= box.min[i] || a[i] >= box.max[i]) return {1.0, 0.0};  // beside the slab")
+  FIND "if (a[i] < box.min[i] || a[i] > box.max[i]) return {1.0, 0.0};"
+  REPLACE "if (a[i] <= box.min[i] || a[i] >= box.max[i]) return {1.0, 0.0};")
 
 # Counts the check keeps itself (README, "Given functions are counted by the checker"):
 # each of these would once have scored by writing a count the verdict read.
@@ -189,4 +188,3 @@ labkit_mutant(06 spatial_trees NAME octree_ball_tested_per_leaf STEP 12 SAYS "on
   FIND "if (tested[std::size_t(ball)]) continue;  // listed in an earlier leaf too: tested there"
   REPLACE "if (tested[std::size_t(ball)] && false) continue;")
 
-set(LABKIT_UNANCHORED_MUTANTS OFF)

@@ -1,4 +1,3 @@
-set(LABKIT_UNANCHORED_MUTANTS ON)  # TRANSITION
 # Lab 07's classic mistakes (handouts/07_particles.md); each must fail its step first, and
 # its first failure's why must say the SAYS words (the concept, not a field's name).
 
@@ -34,12 +33,11 @@ labkit_mutant(07 particles NAME low_root_cancels STEP 3 SAYS "low root" "cancels
   REPLACE "const double tan_low = (v2 - root) / (g * x);")
 
 labkit_mutant(07 particles NAME plane_two_sided STEP 4 SAYS "one-sided"
-  FIND "if (va < 0) return {};   // starts behind: not this step's doing"
-  REPLACE "if (va < 0 && vb >= 0) { SurfaceHit h; h.hit = true; h.t = va / (va - vb); h.point = segment.point(h.t); h.normal = -plane.normal / length; return h; }
-  if (va < 0) return {};")
+  FIND "if (va < 0) return {};"
+  REPLACE "if (va < 0 && vb >= 0) { SurfaceHit h; h.hit = true; h.t = va / (va - vb); h.point = segment.point(h.t); h.normal = -plane.normal / length; return h; }\n  if (va < 0) return {};")
 
 labkit_mutant(07 particles NAME touching_is_behind STEP 4 SAYS "not behind"
-  FIND "if (vb >= 0) return {};  // does not end behind (touching the plane is allowed)"
+  FIND "if (vb >= 0) return {};"
   REPLACE "if (vb > 0) return {};")
 
 # Step 4's rule for a: on the plane to within value(a)'s rounding bound counts as on it.
@@ -48,7 +46,7 @@ labkit_mutant(07 particles NAME start_decided_by_rounded_sign STEP 4 SAYS "round
   REPLACE "const double va = a.value, vb")
 
 labkit_mutant(07 particles NAME friction_reverses_sliding STEP 5 SAYS "never reverses"
-  FIND "const double f = std::min(material.friction * j, mass * slide);  // never reverses v_t"
+  FIND "const double f = std::min(material.friction * j, mass * slide);"
   REPLACE "const double f = material.friction * j;")
 
 labkit_mutant(07 particles NAME impulse_ignores_object_velocity STEP 5 SAYS "relative velocity"
@@ -73,7 +71,7 @@ labkit_mutant(07 particles NAME piece_moves_with_world_velocity STEP 6 SAYS "rel
   REPLACE "piece = {bounce.from, bounce.from + v * remaining};")
 
 labkit_mutant(07 particles NAME cap_off_by_one STEP 6 SAYS "bounce cap"
-  FIND "if (c.bounces == cap) {  // one hit too many: stop here, at rest"
+  FIND "if (c.bounces == cap) {"
   REPLACE "if (c.bounces == cap + 1 || c.bounces == kMaxBounceCap) {")
 
 labkit_mutant(07 particles NAME hit_point_not_settled STEP 7 SAYS "strictly in front" "settle"
@@ -102,7 +100,6 @@ labkit_mutant(07 particles NAME settles_off_last_only STEP 8 SAYS "crease" "behi
   FIND "keep[i] =\n        scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));"
   REPLACE "keep[i] = last.hit && last.plane == int(i);")
 
-set(LABKIT_UNANCHORED_MUTANTS OFF)
 
 # Step 9 (extension): the damper on the whole relative velocity brakes particles that
 # circle each other at a fixed length; a spring damps only the change of its length.

@@ -111,6 +111,7 @@ class KdBuilder {
 
   // Appends the subtree of `cell`, which holds refs_[first, last), to the tree.
   void build(const Aabb& cell, std::size_t first, std::size_t last, int depth) {
+    // mutant: leaves_too_big
     const Split split = depth < max_depth_ ? best_split(cell, first, last) : Split{};
     if (split.axis < 0) {
       add_leaf(first, last);
@@ -125,6 +126,7 @@ class KdBuilder {
       const int i = refs_[k];
       const Aabb& box = boxes_[std::size_t(i)];
       if (box.max[axis] >= split.position) refs_.push_back(i);
+      // mutant: touching_goes_one_side
       if (box.min[axis] <= split.position) refs_[below_last++] = i;
     }
     const std::size_t above_last = refs_.size();
@@ -224,6 +226,7 @@ Span clip(const Aabb& box, const Vec3& a, const Vec3& d) {
   Span s;
   for (int i = 0; i < 3 && !s.empty(); ++i) {
     if (d[i] == 0) {
+      // mutant: clip_wall_strict
       if (a[i] < box.min[i] || a[i] > box.max[i]) return {1.0, 0.0};  // beside the slab
       continue;
     }
@@ -258,6 +261,7 @@ template <class Leaf> void front_to_back(const KdTree& tree, const Segment& s, L
       __builtin_prefetch(&tree.nodes[std::size_t(n.index)]);
       const int axis = n.axis;
       // The near child is on a's side; from the plane itself, on the side d leaves to.
+      // mutants: start_on_plane_wrong_side, in_split_plane_goes_above
       const bool below_first = s.a[axis] < n.split || (s.a[axis] == n.split && d[axis] <= 0);
       const int near = below_first ? node + 1 : n.index, far = below_first ? n.index : node + 1;
       if (d[axis] == 0) {  // parallel to the plane: never crosses it
@@ -265,6 +269,7 @@ template <class Leaf> void front_to_back(const KdTree& tree, const Segment& s, L
         continue;
       }
       const double t_split = (n.split - s.a[axis]) / d[axis];
+      // mutant: far_child_behind_a
       if (t_split > span.t1 || t_split <= 0) {  // crosses after this cell, or behind a
         node = near;
       } else if (t_split < span.t0) {  // crossed before entering this cell
@@ -469,8 +474,10 @@ KdHit first_hit(const KdTree& tree, const Segment& segment) {
       best = hit_from(h, i);
     });
     // A hit within this leaf's stretch beats every later leaf; one beyond it may not.
+    // mutant: first_hit_stops_too_soon
     return best.hit ? best.t : kInfinity;
   });
+  // mutant: uncounted_brute_force
   best.tests = tests;
   return best;
 }
@@ -487,6 +494,7 @@ KdHit any_hit(const KdTree& tree, const Segment& segment) {
       const given::SegmentHit h = given::segment_triangle(segment, tree.triangles[std::size_t(list[k])]);
       if (h.hit) {
         found = hit_from(h, list[k]);
+        // mutant: any_hit_walks_on
         return -kInfinity;  // stop the walk
       }
     }
@@ -512,6 +520,7 @@ KdHits all_hits(const KdTree& tree, const Segment& segment) {
   std::sort(out.hits.begin(), out.hits.end(),
             [](const KdHit& x, const KdHit& y) { return x.t != y.t ? x.t < y.t : x.triangle < y.triangle; });
   out.hits.erase(std::unique(out.hits.begin(), out.hits.end(),
+                             // mutant: all_hits_twice
                              [](const KdHit& x, const KdHit& y) { return x.triangle == y.triangle; }),
                  out.hits.end());
   return out;
@@ -596,6 +605,7 @@ Where classify(const BspTree& tree, const Vec3& point) {
     for (;;) {
       const BspNode& n = tree.nodes[std::size_t(node)];
       const double side = side_value(tree.triangles[std::size_t(n.plane)], point);
+      // mutant: on_plane_goes_front
       if (side > 0) {
         if (n.front < 0) {
           outside = true;
@@ -655,6 +665,7 @@ std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) {
     // The eye in front: the back subtree is far. Behind: the front one. On the plane:
     // either order works.
     const bool eye_in_front = side_value(tree.triangles[std::size_t(n.plane)], eye) >= 0;
+    // mutant: near_subtree_first
     const int near = eye_in_front ? n.front : n.back, far = eye_in_front ? n.back : n.front;
     if (near >= 0) stack.push_back({near, false});
     stack.push_back({step.node, true});
@@ -726,7 +737,9 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
   // The side: the largest diameter, a millionth wider so that rounding in the indices
   // below can never put two centres one diameter apart two cells apart.
   const Vec3 extent = hi - lo;
+  // mutant: grid_cells_one_radius
   double side = std::max(2 * r_max * (1 + 1e-6), extent.maxCoeff() / kMaxCells);
+  // mutant: grid_of_one_cell
   if (!(side > 0) || !std::isfinite(side)) side = std::max(1.0, extent.maxCoeff());  // all balls are one point
   const auto index = [&](double value, double low) { return std::int64_t(std::floor((value - low) / side)) + 1; };
 
@@ -771,6 +784,7 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
           const int i = entries[m].sphere, j = entries[other].sphere;
           if (i >= j) continue;  // each pair once: from its smaller index
           ++out.tests;
+          // mutants: tests_count_pairs_found, balls_tested_privately
           if (given_balls_meet(sorted[m], sorted[other])) out.pairs.push_back({i, j});
         }
     }
@@ -788,7 +802,9 @@ namespace {
 // intervals that touch come out overlapping (closed balls: touching counts). Two lows or
 // two highs at one value keep their order (the sort is stable): no swap, nothing to do.
 bool before(const Endpoint& a, const Endpoint& b) {
+  // mutant: ends_compared_privately
   const int c = compare_ends(a, b);
+  // mutant: sweep_ties_strict
   return c < 0 || (c == 0 && !a.high && b.high);
 }
 
@@ -818,6 +834,7 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
     const Sphere& s = spheres[std::size_t(e.sphere)];
     e.value = e.high ? s.center.x() + s.radius : s.center.x() - s.radius;
   }
+  // mutant: sweep_resorted_each_frame
   if (!started) {  // the first frame: a sort from scratch, then the overlaps by one sweep
     started = true;
     ends.clear();
@@ -877,6 +894,7 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
     const std::array<int, 2> p = overlapping[k];
     while (g < gone_pairs.size() && gone_pairs[g] < p) ++g;
     const bool gone = g < gone_pairs.size() && gone_pairs[g] == p;
+    // mutant: sweep_pairs_never_removed
     if (gone) continue;  // its intervals no longer overlap on x: out of the set
     overlapping[kept++] = p;
     test(p);
@@ -908,9 +926,11 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
     todo.pop_back();
     const ObbNode& na = a.nodes[std::size_t(i)];
     const ObbNode& nb = b.nodes[std::size_t(j)];
+    // mutant: bvh_leaf_boxes_untested
     ++out.box_tests;
     if (!given_boxes_overlap(na.box, nb.box)) continue;
     const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
+    // mutant: bvh_one_tree_only
     if (leaf_a && leaf_b) {
       for (int p = na.first; p < na.first + na.count; ++p)
         for (int q = nb.first; q < nb.first + nb.count; ++q) {
@@ -918,11 +938,13 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
           ++out.triangle_tests;
           if (given_triangles_meet(a.triangles[std::size_t(s)], b.triangles[std::size_t(t)])) {
             out.pairs.push_back({s, t});
+            // mutant: bvh_stops_at_first_pair
             if (!every) return out;
           }
         }
       continue;
     }
+    // mutants: bvh_descends_smaller, bvh_descends_b_at_tie
     const bool descend_a = leaf_b || (!leaf_a && volume(na) >= volume(nb));
     if (descend_a) {
       todo.push_back({na.right, j}), todo.push_back({na.left, j});

@@ -136,6 +136,7 @@ Particle emit(const Emitter& emitter, Random& random) {
   for (int i = 0; i < 3; ++i) p.position[i] = emitter.position[i] + emitter.half_extents[i] * random.uniform(-1.0, 1.0);
   const Vec3 axis = emitter.direction.normalized();
   const Vec3 u = axis.unitOrthogonal(), w = axis.cross(u);
+  // mutant: cone_uniform_in_angle
   const double cos_theta = random.uniform(std::cos(emitter.cone), 1.0);
   const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
   const double turn = random.uniform(0.0, 2 * kPi);
@@ -154,6 +155,7 @@ Births births(const Emitter& emitter, double dt) {
   require_not_negative("births", "dt", dt);
   const double due = emitter.owed + emitter.rate * dt;
   const double whole = std::floor(due);
+  // mutant: births_drop_fraction
   return {int(whole), due - whole};
 }
 
@@ -178,6 +180,7 @@ std::vector<Particle> age(std::vector<Particle> particles, double dt) {
 Vec3 force(const Particle& p, const Forces& forces) {
   require_valid("force", "p", p);
   require_valid("force", forces);
+  // mutant: drag_per_component
   return p.mass * forces.gravity - forces.drag * p.velocity - forces.air_drag * p.velocity.norm() * p.velocity;
 }
 
@@ -187,6 +190,7 @@ Particle euler_step(const Particle& p, const Forces& forces, double dt) {
   require_positive("euler_step", "dt", dt);
   const Vec3 a = force(p, forces) / p.mass;  // force() checks p and forces
   Particle next = p;
+  // mutant: semi_implicit_euler
   next.position = p.position + p.velocity * dt;
   next.velocity = p.velocity + a * dt;
   return next;
@@ -198,6 +202,7 @@ Particle start_verlet(const Particle& p, const Forces& forces, double dt) {
   require_positive("start_verlet", "dt", dt);
   const Vec3 a = force(p, forces) / p.mass;  // force() checks p and forces
   Particle next = p;
+  // mutant: verlet_start_without_acceleration
   next.previous = p.position - p.velocity * dt + 0.5 * a * dt * dt;
   return next;
 }
@@ -244,6 +249,7 @@ Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity)
   const double gx_squared = d.cross(gravity).squaredNorm();
   if (gx_squared == 0 || speed == 0) return {};  // straight up or down, no gravity, or no speed
   const double v2 = speed * speed;
+  // mutant: launch_height_sign
   const double D = v2 * v2 + 2 * v2 * d.dot(gravity) - gx_squared;
 
   const double g = gravity.norm();
@@ -261,6 +267,7 @@ Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity)
   // the target is close and the shot fast).
   const double root = std::sqrt(D);
   const double tan_high = (v2 + root) / (g * x);
+  // mutant: low_root_cancels
   const double tan_low = (g * x * x + 2 * y * v2) / (x * (v2 + root));
   const Vec3 toward = (d - y * up).normalized();  // horizontal, toward the target
   const auto shot = [&](double tangent) {
@@ -303,8 +310,11 @@ SurfaceHit hit_plane(const Segment& segment, const Plane& plane) {
   // a within rounding error of the plane counts as on it: a particle resting on a plane
   // that moves behind it hits at t = 0, even when n . a + c rounds a hair below zero.
   const Signed a = plane_value(plane, segment.a);
+  // mutant: start_decided_by_rounded_sign
   const double va = std::abs(a.value) <= a.error ? 0.0 : a.value, vb = plane.value(segment.b);
-  if (va < 0) return {};   // starts behind: not this step's doing
+  // mutant: plane_two_sided
+  if (va < 0) return {};  // starts behind: not this step's doing
+  // mutant: touching_is_behind
   if (vb >= 0) return {};  // does not end behind (touching the plane is allowed)
   SurfaceHit h;
   h.hit = true;
@@ -398,6 +408,7 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
   require_positive("impulse", "mass", mass);
   require_valid("impulse", material);
   Impulse r;
+  // mutant: impulse_ignores_object_velocity
   const Vec3 relative = velocity - object_velocity;
   r.v_close = relative.dot(normal);
   r.velocity = velocity;
@@ -408,6 +419,7 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
   const Vec3 tangential = relative - r.v_close * normal;
   const double slide = tangential.norm();
   if (slide > 0) {
+    // mutant: friction_reverses_sliding
     const double f = std::min(material.friction * j, mass * slide);  // never reverses v_t
     r.friction = -(f / slide) * tangential;
   }
@@ -450,6 +462,7 @@ Collision collide_in(const Segment& step, const Vec3& velocity, double mass, dou
   const int cap = scene.bounce_cap;
   const Vec3 u = scene.velocity;
   Collision c;
+  // mutant: moving_surface_frozen
   Segment piece = {step.a + u * dt, step.b};  // the relative step: a carried by the scene, to b
   Vec3 v = velocity;
   double remaining = dt;
@@ -459,20 +472,26 @@ Collision collide_in(const Segment& step, const Vec3& velocity, double mass, dou
     if (!hit.hit) break;  // this piece is clear: the particle gets to its end
     Bounce& bounce = c.trace[std::size_t(c.bounces)];
     bounce.hit = hit;
+    // mutant: hit_point_not_settled
     bounce.from = settle_in(hit.point, scene, hit);
+    // mutant: cap_off_by_one
     if (c.bounces == cap) {  // one hit too many: stop here, at rest
       c.stopped = true;
       c.position = bounce.from;
       c.velocity = u;  // at rest on the surface, which carries it
       return c;
     }
+    // mutant: collide_impulse_absolute_velocity
     v = impulse(v, u, hit.normal, mass, scene.material).velocity;  // against the moving surface: v - u
     bounce.velocity = v;
+    // mutant: whole_step_after_bounce
     remaining *= 1 - hit.t;
+    // mutant: piece_moves_with_world_velocity
     piece = {bounce.from, bounce.from + (v - u) * remaining};  // relative to the scene
     last = hit;
     ++c.bounces;
   }
+  // mutant: end_position_not_settled
   c.position = settle_in(piece.b, scene, last);
   c.velocity = v;
   return c;
@@ -550,6 +569,7 @@ Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
   const auto plane_standing = [&](std::size_t i, const Vec3& p) {
     const Plane& plane = scene.planes[i];
     const Signed s = plane_value(plane, p);
+    // mutant: hit_plane_not_strict
     const bool strict = last.hit && last.plane == int(i);                    // the plane just hit: strictly in front
     if (strict ? s.value > s.error : s.value >= s.error) return Standing{};  // certainly fine
     const double length = plane.normal.norm();
@@ -571,6 +591,7 @@ Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
   std::vector<bool> keep(scene.planes.size(), false);
   for (std::size_t i = 0; i < scene.planes.size(); ++i) {
     const Signed s = plane_value(scene.planes[i], x);
+    // mutant: settles_off_last_only
     keep[i] =
         scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));
   }
@@ -659,6 +680,7 @@ void System::step(double dt) {
     p.velocity = c.velocity;
     p.bounces = c.bounces;
     // Verlet keeps its velocity in (position - previous): rewrite it after a bounce.
+    // mutant: verlet_previous_kept
     if (integrator == Integrator::verlet && (c.bounces > 0 || c.stopped)) p.previous = p.position - p.velocity * dt;
   }
   // 3. Death: those whose time is up.
