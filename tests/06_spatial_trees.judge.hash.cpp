@@ -25,14 +25,6 @@ bool neighbours(const Cell& a, const Cell& b) {
 
 std::string cell_text(const Cell& c) { return "(" + str(c.x) + ", " + str(c.y) + ", " + str(c.z) + ")"; }
 
-std::string pairs_text(const std::vector<std::array<int, 2>>& pairs) {
-  std::string s;
-  for (std::size_t k = 0; k < pairs.size() && k < 16; ++k)
-    s += (s.empty() ? "" : ", ") + ("{" + str(pairs[k][0]) + ", " + str(pairs[k][1]) + "}");
-  if (pairs.size() > 16) s += ", ... (" + str(pairs.size()) + " in all)";
-  return s.empty() ? "no pair" : s;
-}
-
 }  // namespace
 
 long long neighbour_pairs(const HashCase& in) {
@@ -49,7 +41,7 @@ Outcome hashed_pairs(const HashCase& in, const SpherePairs& got, long long calls
   const std::vector<Sphere>& spheres = in.spheres;
   const int n = int(spheres.size());
   const std::vector<std::array<int, 2>> exact = oracle::meeting_pairs(spheres);
-  const std::string expected = pairs_text(exact), answer = pairs_text(got.pairs);
+  const std::string expected = describe_pairs(exact), answer = describe_pairs(got.pairs);
   if (got.tests != calls)
     return fail("tests = " + str(calls) + " (your calls of given_balls_meet, as the kit counted them)",
                 "tests = " + str(got.tests),

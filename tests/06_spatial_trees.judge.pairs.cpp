@@ -13,18 +13,6 @@ namespace labkit::lab06::judge {
 
 // ---- Step 5 ------------------------------------------------------------------------------------
 
-namespace {
-
-std::string describe_pairs(const std::vector<std::array<int, 2>>& pairs) {
-  std::string s;
-  for (std::size_t k = 0; k < pairs.size() && k < 16; ++k)
-    s += (s.empty() ? "" : ", ") + ("{" + str(pairs[k][0]) + ", " + str(pairs[k][1]) + "}");
-  if (pairs.size() > 16) s += ", ... (" + str(pairs.size()) + " in all)";
-  return s.empty() ? "no pair" : s;
-}
-
-}  // namespace
-
 Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, long long calls, Rules rules) {
   const std::vector<Sphere>& spheres = in.spheres;
   const int n = int(spheres.size());

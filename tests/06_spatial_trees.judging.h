@@ -28,6 +28,15 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 template <class Integer> std::string str(Integer n) { return std::to_string(n); }
 
 // The triangle's bounding box, corner by corner.
+// Pairs as a failure shows them: the first 16, "{i, j}" each, and how many in all.
+inline std::string describe_pairs(const std::vector<std::array<int, 2>>& pairs) {
+  std::string s;
+  for (std::size_t k = 0; k < pairs.size() && k < 16; ++k)
+    s += (s.empty() ? "" : ", ") + ("{" + str(pairs[k][0]) + ", " + str(pairs[k][1]) + "}");
+  if (pairs.size() > 16) s += ", ... (" + str(pairs.size()) + " in all)";
+  return s.empty() ? "no pair" : s;
+}
+
 inline Aabb box_of(const Triangle& t) {
   const Vec3 low = t.v1.cwiseMin(t.v2).cwiseMin(t.v0), high = t.v1.cwiseMax(t.v2).cwiseMax(t.v0);
   return {low, high};

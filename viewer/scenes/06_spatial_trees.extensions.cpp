@@ -48,7 +48,7 @@ void SpatialTreesScene::set_up_extension(const std::string& preset) {
   // Two clusters and a lone ball in the plane z = 0: the tree cuts deep at the clusters.
   mode_ = Mode::octree;
   capacity_ = 2, max_depth_ = 5;
-  for (const Vec3 centre : {Vec3(1.5, 1.5, 0), Vec3(12.5, 8.5, 0)})
+  for (const Vec3& centre : {Vec3(1.5, 1.5, 0), Vec3(12.5, 8.5, 0)})
     for (int i = 0; i < 8; ++i) {
       const double x = centre.x() + 3.6 * (next() - 0.5), y = centre.y() + 3.6 * (next() - 0.5);
       spheres_.push_back({{x, y, 0}, 0.2 + 0.15 * next()});
