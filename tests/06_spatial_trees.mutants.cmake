@@ -174,8 +174,8 @@ labkit_mutant(06 spatial_trees NAME octree_cuts_at_capacity STEP 12 SAYS "at mos
 # Step 12: a ball sent only to the children its box overlaps with some width: one that
 # touches a cut goes one way, and the leaf on the other side misses it.
 labkit_mutant(06 spatial_trees NAME octree_touching_one_side STEP 12 SAYS "every child" "touching"
-  FIND "return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();"
-  REPLACE "return (a.min.array() < b.max.array()).all() && (b.min.array() < a.max.array()).all();")
+  FIND "if (a.min[i] > b.max[i] || b.min[i] > a.max[i]) return false;"
+  REPLACE "if (a.min[i] >= b.max[i] || b.min[i] >= a.max[i]) return false;")
 
 # Step 12: the query descends every child without testing its cell: right balls, but the
 # balls of leaves far from the box are tested too.

@@ -979,9 +979,10 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
 // keeping each pair from its smaller index sees it once in all.
 namespace {
 
+// p / cell is exact (cell a power of two), and so is its floor; 64 bits hold it.
 Cell cell_of(const Vec3& p, double cell) {
-  return {std::int64_t(std::floor(p.x() / cell)), std::int64_t(std::floor(p.y() / cell)),
-          std::int64_t(std::floor(p.z() / cell))};
+  const auto index = [cell](double x) { return static_cast<std::int64_t>(std::floor(x / cell)); };
+  return {index(p.x()), index(p.y()), index(p.z())};
 }
 
 bool same_cell(const Cell& a, const Cell& b) { return a.x == b.x && a.y == b.y && a.z == b.z; }
@@ -1059,11 +1060,18 @@ SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int bu
 // several leaves, and a query must test it once.
 namespace {
 
-Aabb ball_box(const Sphere& s) { return {s.center - Vec3::Constant(s.radius), s.center + Vec3::Constant(s.radius)}; }
+Aabb ball_box(const Sphere& s) {
+  const Vec3 reach(s.radius, s.radius, s.radius);
+  return {s.center - reach, s.center + reach};
+}
 
+// Closed boxes: touching faces meet.
 bool closed_boxes_meet(const Aabb& a, const Aabb& b) {
-  // mutant: octree_touching_one_side
-  return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
+  for (int i = 0; i < 3; ++i) {
+    // mutant: octree_touching_one_side
+    if (a.min[i] > b.max[i] || b.min[i] > a.max[i]) return false;
+  }
+  return true;
 }
 
 }  // namespace
