@@ -20,13 +20,6 @@ std::string axis_name(int index) {
 
 namespace {
 
-using check::ambiguous;
-using check::Expect;
-using check::fail;
-using check::pass;
-
-using check::verdict;
-
 bool boxes_in_doubt(const BoxPair& in, Rules rules) {
   return rules == Rules::random && std::abs(oracle::box_pair_margin(in.a, in.b)) <= kBoxDoubt * position_tolerance(in);
 }

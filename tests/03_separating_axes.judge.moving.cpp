@@ -11,12 +11,6 @@ namespace labkit::lab03::judge {
 
 namespace {
 
-using check::ambiguous;
-using check::Expect;
-using check::fail;
-using check::pass;
-using check::verdict;
-
 // The contact times, for reports.
 std::string describe_times(const oracle::ContactTimes& t) {
   return t.contact ? "contact from t = " + fmt(t.first) + " to t = " + fmt(t.last) : "no contact";

@@ -12,10 +12,6 @@ namespace labkit::lab03::judge {
 
 namespace {
 
-using check::fail;
-using check::pass;
-using check::verdict;
-
 // Longest edge over smallest height: how much of a needle the triangle is.
 double aspect(const Triangle& t) {
   const double longest =

@@ -11,6 +11,13 @@
 
 namespace labkit::lab03::judge {
 
+// The verdicts every judge file of this lab gives.
+using check::ambiguous;
+using check::Expect;
+using check::fail;
+using check::pass;
+using check::verdict;
+
 // tol = 1e-9 S, S the input's largest position coordinate (the header's tolerances):
 // scale_of, which counts the moving boxes' end positions and never an axis or a velocity,
 // so not judging::tolerance_of, whose S is every length the input holds.
