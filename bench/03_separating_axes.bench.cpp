@@ -17,7 +17,7 @@
 // No targets: issue 5 states none for this lab.
 #include "inputs.h"
 
-#include "common/generators/03_separating_axes.h"
+#include "03_separating_axes/generators.h"
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
 #include "separating_axes.h"
@@ -86,7 +86,7 @@ std::vector<TrianglePair> triangle_pairs(Mix mix) {
 }
 
 // The exact answers, and the cases in doubt, by the same rules as the lab's judges
-// (tests/03_separating_axes.judge.cpp): boxes whose exact margin is within 24 tol,
+// (tests/03_separating_axes/judge.cpp): boxes whose exact margin is within 24 tol,
 // triangles that oracle::triangle_pair_in_doubt or a sampled perturbation flips.
 Exact exact_boxes(const std::vector<BoxPair>& pairs) {
   Exact e;

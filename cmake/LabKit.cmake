@@ -8,15 +8,21 @@
 #                                    reference or a mutant) behind common/protocol/lab_answerer.cpp;
 #                                    nothing of the kit's but the geometry types. A student's
 #                                    edit recompiles one file and relinks this small program.
-#   tests/NN_name.judge.cpp       -> labNN_judge       (verdicts against the oracle; the viewer shares it)
-#   tests/NN_name.test.cpp        -> test_NN_name      (examples and random cases: the judge's
+#   tests/NN_name/               the lab's checker, in one folder:
+#     inputs.h                    -> each query's input, and the lab's table of queries
+#     generators*.cpp, .h         -> random inputs (compiled into the judge)
+#     judge.h, judge*.cpp         -> labNN_judge       (verdicts against the oracle; the viewer shares
+#                                    it; judge_internal.h: what the judge's own files share)
+#     test.cpp                    -> test_NN_name      (examples and random cases: the judge's
 #                                    process, linked once; it runs the answerer named by
 #                                    LABKIT_ANSWERER and calls the lab's functions there)
-#   tests/NN_name.wire.h          -> the lab's functions and answer types on the wire
+#     wire.h                      -> the lab's functions and answer types on the wire
+#     mutants.cmake               -> the reference with one classic mistake each; ctest
+#                                    expects the step each one breaks to fail
+#     given*.cpp (if any)         -> given_NN_name     (ready tools the lab's header declares,
+#                                    linked with every implementation)
 #   grading record                -> build/grading/NN_name.{json,link}: how ./labkit grade
 #                                    links a submission's answerer (see runner/lab_build.h)
-#   tests/NN_name.mutants.cmake   -> the reference with one classic mistake each; ctest
-#                                    expects the step each one breaks to fail
 #   viewer/scenes/NN_name.cpp     -> the lab's viewer scene, compiled into both viewers
 #                                    (viewer/CMakeLists.txt; its line in viewer/scenes/scenes.h)
 #
@@ -55,12 +61,23 @@ function(labkit_implementation target stem)
   add_library(${target} STATIC ${ARGN})
   target_include_directories(${target} PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}")
   target_link_libraries(${target} PUBLIC labkit_geometry labkit_given)
+  if(TARGET given_${stem})
+    target_link_libraries(${target} PUBLIC given_${stem})
+  endif()
   target_precompile_headers(${target} REUSE_FROM labkit_geometry)
 endfunction()
 
 function(labkit_add_lab number name)
   set(stem ${number}_${name})
   set(lab lab${number})
+
+  # The lab's given code, if it has any (tests/NN_name/given*.cpp): plain functions its
+  # header declares as ready tools, linked with every implementation of the lab.
+  file(GLOB given_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}/given*.cpp")
+  if(given_sources)
+    add_library(given_${stem} STATIC ${given_sources})
+    target_link_libraries(given_${stem} PUBLIC labkit_geometry labkit_given)
+  endif()
 
   file(GLOB student_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/labs/${stem}/*.cpp")
   labkit_implementation(${lab}_student ${stem} ${student_sources})
@@ -80,29 +97,35 @@ function(labkit_add_lab number name)
     list(APPEND implementations reference)
   endif()
 
-  # The judge: its verdicts (tests/NN_name.judge*.cpp, split by step when long) and the
-  # lab's own generators (common/generators/NN_name*.cpp), which know the lab's types.
-  file(GLOB judge_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}.judge*.cpp"
-       "${PROJECT_SOURCE_DIR}/common/generators/${stem}*.cpp")
+  # The judge: its verdicts (tests/NN_name/judge*.cpp, split by step when long) and the
+  # lab's own generators (tests/NN_name/generators*.cpp), which know the lab's types.
+  file(GLOB judge_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}/judge*.cpp"
+       "${PROJECT_SOURCE_DIR}/tests/${stem}/generators*.cpp")
   add_library(${lab}_judge STATIC ${judge_sources})
   target_include_directories(${lab}_judge PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_judge PUBLIC labkit_harness labkit_oracle)
+  if(TARGET given_${stem})
+    target_link_libraries(${lab}_judge PUBLIC given_${stem})
+  endif()
   labkit_kit_code(${lab}_judge)
 
-  # The lab's list of calls (tests/NN_name.wire.h), expanded on both sides of the pipe.
-  set(wire_definitions LABKIT_LAB_WIRE="${stem}.wire.h" LABKIT_LAB_NAMESPACE=${lab}
+  # The lab's list of calls (tests/NN_name/wire.h), expanded on both sides of the pipe.
+  set(wire_definitions LABKIT_LAB_WIRE="${stem}/wire.h" LABKIT_LAB_NAMESPACE=${lab}
                        LABKIT_LAB_CALLS=LABKIT_LAB${number}_CALLS)
   add_library(${lab}_calls STATIC "${PROJECT_SOURCE_DIR}/common/protocol/lab_calls.cpp")
   target_compile_definitions(${lab}_calls PRIVATE ${wire_definitions})
   target_include_directories(${lab}_calls PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_calls PUBLIC labkit_protocol)
+  if(TARGET given_${stem})
+    target_link_libraries(${lab}_calls PUBLIC given_${stem})
+  endif()
   add_library(${lab}_answerer_main OBJECT "${PROJECT_SOURCE_DIR}/common/protocol/lab_answerer.cpp")
   target_compile_definitions(${lab}_answerer_main PRIVATE ${wire_definitions})
   target_include_directories(${lab}_answerer_main PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_answerer_main PUBLIC labkit_protocol)
   labkit_kit_code(${lab}_answerer_main)
 
-  add_executable(test_${stem} "${PROJECT_SOURCE_DIR}/tests/${stem}.test.cpp")
+  add_executable(test_${stem} "${PROJECT_SOURCE_DIR}/tests/${stem}/test.cpp")
   target_link_libraries(test_${stem} PRIVATE ${lab}_judge ${lab}_calls labkit_catch_main)
   labkit_kit_code(test_${stem} -O0)
   labkit_kit_code(${lab}_calls)
@@ -155,8 +178,8 @@ function(labkit_add_lab number name)
   endif()
 
   # The classic mistakes, each of which the tests must catch.
-  if(TARGET ${lab}_reference AND EXISTS "${PROJECT_SOURCE_DIR}/tests/${stem}.mutants.cmake")
-    include("${PROJECT_SOURCE_DIR}/tests/${stem}.mutants.cmake")
+  if(TARGET ${lab}_reference AND EXISTS "${PROJECT_SOURCE_DIR}/tests/${stem}/mutants.cmake")
+    include("${PROJECT_SOURCE_DIR}/tests/${stem}/mutants.cmake")
   endif()
 
   set_property(GLOBAL APPEND PROPERTY LABKIT_LABS ${stem})
@@ -203,7 +226,7 @@ endfunction()
 # the why of that first failure to hold each SAYS word (the concept the mistake breaks):
 # this is how the kit shows that its tests fail, in the right step, for the mistakes
 # students actually make, and say so in the lab's words. Mutants live beside the
-# lab's tests, in tests/NN_name.mutants.cmake.
+# lab's tests, in tests/NN_name/mutants.cmake.
 #
 include("${CMAKE_CURRENT_LIST_DIR}/MutantAnchor.cmake")  # labkit_mutant_apply
 
@@ -216,7 +239,7 @@ function(labkit_mutant number name)
   endif()
   set(source "${PROJECT_SOURCE_DIR}/solutions/${stem}/${M_FILE}")
   file(READ "${source}" mutated)
-  set(where "solutions/${stem}/${M_FILE} (tests/${stem}.mutants.cmake)")
+  set(where "solutions/${stem}/${M_FILE} (tests/${stem}/mutants.cmake)")
   labkit_mutant_apply(mutated ${M_NAME} "${M_FIND}" "${M_REPLACE}" "${M_EVERYWHERE}" "${where}")
   set(output "${PROJECT_BINARY_DIR}/mutants/${stem}/${M_NAME}.cpp")
   # Rewritten only when it changes, so that a reconfigure does not rebuild every mutant.

@@ -15,7 +15,7 @@
 #
 # The release is a list of what to take, not of what to leave out, so that a file added
 # to the kit later never reaches students by default. It never holds solutions/, the
-# mutants (tests/*.mutants.cmake are reference code with one edit), the hostile
+# mutants (tests/*/mutants.cmake are reference code with one edit), the hostile
 # submissions of tests/grading/, .ci/ or anything of grading/ but the manifest.
 # tests/kit/release.test.sh checks that no reference function body appears in it.
 set -euo pipefail
@@ -39,13 +39,19 @@ make_release() {
     [ -d "$folder" ] && cp -pR "$folder" "$out/"
   done
   mkdir -p "$out/tests" "$out/grading"
-  # A judge's pieces: its tests, its verdicts (one file or several, and what they share),
-  # what every judge shares, and its wire. With common/ (inputs, generators) that is every
-  # file cmake/LabKit.cmake compiles into a judge.
-  local piece
-  for piece in tests/CMakeLists.txt tests/*.test.cpp tests/*.judge.h tests/*.judge*.cpp tests/*.judging.h \
-               tests/judging.h tests/*.wire.h; do
-    if [ -e "$piece" ]; then cp -p "$piece" "$out/tests/"; fi
+  # Each lab's checker (tests/NN_name/: its inputs, generators, judge, wire and tests,
+  # every file cmake/LabKit.cmake compiles into a judge) but its mutants, and what every
+  # judge shares.
+  local piece lab_dir
+  for piece in tests/CMakeLists.txt tests/judging.h; do
+    cp -p "$piece" "$out/tests/"
+  done
+  for lab_dir in tests/[0-9][0-9]_*/; do
+    mkdir -p "$out/$lab_dir"
+    for piece in "$lab_dir"*; do
+      case "$piece" in *mutants.cmake) continue ;; esac
+      cp -p "$piece" "$out/$lab_dir"
+    done
   done
   cp -pR tests/kit "$out/tests/"
   cp -p grading/manifest.json "$out/grading/"

@@ -1,5 +1,5 @@
 // `labkit-runner mutant`: the kit's own check that a classic mistake is caught where it
-// belongs. A mutant (tests/NN_name.mutants.cmake) is the reference with one mistake of
+// belongs. A mutant (tests/NN_name/mutants.cmake) is the reference with one mistake of
 // step k written in; its steps run in order, as a student's would, and
 //   - every step before k passes (the mistake is not blamed on an earlier step),
 //   - step k fails,

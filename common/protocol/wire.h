@@ -119,7 +119,7 @@ inline void get(Reader& r, RigidTransform& m) { get(r, m.matrix()); }
 // ---- Containers -----------------------------------------------------------------------
 
 // A type with no field list (a class with private state, a std::function) joins in by
-// specialising Codec<T> with static put and get (see tests/04_bisection.wire.h).
+// specialising Codec<T> with static put and get (see tests/04_bisection/wire.h).
 template <class T> struct Codec {};
 template <class T> auto put(Writer& w, const T& x) -> decltype(Codec<T>::put(w, x)) { Codec<T>::put(w, x); }
 template <class T> auto get(Reader& r, T& x) -> decltype(Codec<T>::get(r, x)) { Codec<T>::get(r, x); }

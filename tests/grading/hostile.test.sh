@@ -114,9 +114,9 @@ reference "$subs/early_constructor" &&
     >>"$subs/early_constructor/$lab02"
 # Extra files that try to replace the tests, a header, the harness, the build and the points.
 mkdir -p "$work/extra" && reference "$work/extra"
-mkdir -p "$work/extra/tests" "$work/extra/common/harness" "$work/extra/grading"
+mkdir -p "$work/extra/tests/02_segment_triangle" "$work/extra/common/harness" "$work/extra/grading"
 echo '#error "the submission replaced the header"' >"$work/extra/labs/02_segment_triangle/segment_triangle.h"
-echo '#error "the submission replaced the tests"' >"$work/extra/tests/02_segment_triangle.test.cpp"
+echo '#error "the submission replaced the tests"' >"$work/extra/tests/02_segment_triangle/test.cpp"
 echo '#error "the submission replaced the harness"' >"$work/extra/common/harness/check.h"
 echo 'message(FATAL_ERROR "the submission replaced the build")' >"$work/extra/CMakeLists.txt"
 sed 's/"points": [0-9]*/"points": 1000/' "$kit/grading/manifest.json" >"$work/extra/grading/manifest.json"

@@ -89,7 +89,7 @@ CPP
 [ "$(grep -c "x = 2;" <<<"$out")" -eq 2 ] || fail "EVERYWHERE did not edit both places: $out"
 
 echo "--- 5. every anchor in the references names a mutant"
-names=$(sed -n 's/.*NAME \([a-z0-9_]*\).*/\1/p' "$root"/tests/*.mutants.cmake | sort -u)
+names=$(sed -n 's/.*NAME \([a-z0-9_]*\).*/\1/p' "$root"/tests/*/mutants.cmake | sort -u)
 for reference in "$root"/solutions/*/*.cpp; do
   [ -f "$reference" ] || continue
   while read -r name; do

@@ -1,6 +1,6 @@
 // kit_no_solution KIT_ROOT FOLDER: exits 1 when any file under FOLDER holds reference
 // code: the body of any function of solutions/*/*.cpp, or any FIND or REPLACE text of
-// tests/*.mutants.cmake (the mutants are reference code with one edit). Both sides are
+// tests/*/mutants.cmake (the mutants are reference code with one edit). Both sides are
 // compared with comments and all whitespace taken out, so reformatting hides nothing.
 // Bodies shorter than 40 such characters (`{ return {}; }`) are too common to mean much,
 // and text the exact oracle also holds (common/oracle/, in every release by design: a

@@ -31,7 +31,7 @@ echo "--- 1. the student release"
 for absent in solutions .ci tests/grading grading/release.sh grading/gradescope; do
   [ -e "$work/release/$absent" ] && fail "the release holds $absent"
 done
-ls "$work/release"/tests/*.mutants.cmake >/dev/null 2>&1 && fail "the release holds the mutants"
+ls "$work/release"/tests/*/mutants.cmake >/dev/null 2>&1 && fail "the release holds the mutants"
 for present in README.md labkit CMakeLists.txt grading/manifest.json common/harness/check.h runner/main.cpp; do
   [ -e "$work/release/$present" ] || fail "the release has no $present"
 done

@@ -108,9 +108,9 @@ pin() {  # pin NAME VALUE FILE PATTERN...: each FILE holds PATTERN with VALUE in
   done
 }
 constant() { sed -n "s/.*constexpr double $2 = \([0-9]*\)\.0;.*/\1/p" "$root/$1" | head -1; }
-pin "lab 05's ambiguity band for tests" "$(constant tests/05_sphere_sweeps.judge.cpp kTestDoubt)" \
+pin "lab 05's ambiguity band for tests" "$(constant tests/05_sphere_sweeps/judge.cpp kTestDoubt)" \
   labs/05_sphere_sweeps/sphere_sweeps.h "within @ tol of r0 + r1" handouts/05_sphere_sweeps.md "\`@ tol\` (tests)"
-pin "lab 05's ambiguity band for sweeps" "$(constant tests/05_sphere_sweeps.judge.sweeps.cpp kSweepDoubt)" \
+pin "lab 05's ambiguity band for sweeps" "$(constant tests/05_sphere_sweeps/judge.sweeps.cpp kSweepDoubt)" \
   labs/05_sphere_sweeps/sphere_sweeps.h "within @ tol of zero" handouts/05_sphere_sweeps.md "\`@ tol\` (sweeps)"
 pin "lab 06's traversal cost" "$(constant solutions/06_spatial_trees/spatial_trees.cpp kTraversalCost)" \
   handouts/06_spatial_trees.md "\`C_trav = @\`" handouts/hints/06_spatial_trees.md "\`C_trav = @\`" \

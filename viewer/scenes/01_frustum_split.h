@@ -6,7 +6,7 @@
 #include "viewer/scenes/scenes.h"
 #include "viewer/shapes.h"
 
-#include "01_frustum_split.judge.h"  // the inputs: TrianglePlane, TriangleFrustum, MeshFrustum
+#include "01_frustum_split/judge.h"  // the inputs: TrianglePlane, TriangleFrustum, MeshFrustum
 #include "frustum_split.h"
 
 namespace viewer::frustum_split {

@@ -6,7 +6,7 @@
 #include "viewer/scenes/scenes.h"
 #include "viewer/shapes.h"
 
-#include "03_separating_axes.judge.h"  // the inputs: BoxPair, TrianglePair, MovingBoxes, ...
+#include "03_separating_axes/judge.h"  // the inputs: BoxPair, TrianglePair, MovingBoxes, ...
 #include "common/oracle/oracle.h"
 #include "separating_axes.h"
 

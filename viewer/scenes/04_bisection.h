@@ -7,7 +7,7 @@
 #include "viewer/scenes/scenes.h"
 #include "viewer/shapes.h"
 
-#include "04_bisection.judge.h"  // the inputs: MovingPairCase, SampledPair, PointBox, ...
+#include "04_bisection/judge.h"  // the inputs: MovingPairCase, SampledPair, PointBox, ...
 #include "bisection.h"
 #include "common/oracle/oracle.h"
 

@@ -7,7 +7,7 @@
 #include "viewer/scenes/scenes.h"
 #include "viewer/shapes.h"
 
-#include "05_sphere_sweeps.judge.h"  // the inputs: SegmentPair, SpherePlaneMotion, ...
+#include "05_sphere_sweeps/judge.h"  // the inputs: SegmentPair, SpherePlaneMotion, ...
 #include "common/oracle/oracle.h"
 #include "sphere_sweeps.h"
 

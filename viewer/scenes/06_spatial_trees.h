@@ -8,7 +8,7 @@
 #include "viewer/scenes/scenes.h"
 #include "viewer/shapes.h"
 
-#include "06_spatial_trees.judge.h"  // the inputs: TreeQuery, PointQuery, SphereSet, ...
+#include "06_spatial_trees/judge.h"  // the inputs: TreeQuery, PointQuery, SphereSet, ...
 #include "common/oracle/oracle.h"
 #include "spatial_trees.h"
 

@@ -8,7 +8,7 @@
 #include "viewer/scenes/scenes.h"
 #include "viewer/shapes.h"
 
-#include "07_particles.judge.h"  // the inputs: SystemCase, LaunchCase, CollideCase, ...
+#include "07_particles/judge.h"  // the inputs: SystemCase, LaunchCase, CollideCase, ...
 #include "common/oracle/oracle.h"
 #include "particles.h"
 

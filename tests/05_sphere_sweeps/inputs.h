@@ -1,0 +1,127 @@
+// Lab 05's inputs: what each query of sphere_sweeps.h is given, one struct per query, and
+// their fields() (the names a report prints and a replay token reads). The generators
+// (tests/05_sphere_sweeps/generators.h) draw them, the judge and the viewer read them.
+#pragma once
+
+#include "sphere_sweeps.h"
+
+#include "common/fields.h"
+#include "common/harness/query.h"
+
+namespace labkit {
+
+struct PointSegmentPair {
+  Vec3 p = Vec3::Zero();
+  Segment segment;
+};
+LABKIT_FIELDS(PointSegmentPair, p, segment)
+
+struct SegmentPair {
+  Segment first, second;
+};
+LABKIT_FIELDS(SegmentPair, first, second)
+
+struct PointRectanglePair {
+  Vec3 p = Vec3::Zero();
+  Rectangle rectangle;
+};
+LABKIT_FIELDS(PointRectanglePair, p, rectangle)
+
+struct SegmentRectanglePair {
+  Segment segment;
+  Rectangle rectangle;
+};
+LABKIT_FIELDS(SegmentRectanglePair, segment, rectangle)
+
+struct RectanglePair {
+  Rectangle first, second;
+};
+LABKIT_FIELDS(RectanglePair, first, second)
+
+// Moving shapes: centre + t velocity for t in [0, duration].
+struct SpherePlaneMotion {
+  Sphere sphere;
+  Vec3 velocity = Vec3::Zero();
+  Plane plane;
+  double duration = 1.0;
+};
+LABKIT_FIELDS(SpherePlaneMotion, sphere, velocity, plane, duration)
+
+struct SphereSphereMotion {
+  Sphere s0;
+  Vec3 v0 = Vec3::Zero();
+  Sphere s1;
+  Vec3 v1 = Vec3::Zero();
+  double duration = 1.0;
+};
+LABKIT_FIELDS(SphereSphereMotion, s0, v0, s1, v1, duration)
+
+// A sphere moving against a static capsule (step 6).
+struct SphereCapsuleMotion {
+  Sphere sphere;
+  Vec3 velocity = Vec3::Zero();
+  Capsule capsule;
+  double duration = 1.0;
+};
+LABKIT_FIELDS(SphereCapsuleMotion, sphere, velocity, capsule, duration)
+
+struct BoxPlaneMotion {
+  Box box;
+  Vec3 velocity = Vec3::Zero();
+  Plane plane;
+  double duration = 1.0;
+};
+LABKIT_FIELDS(BoxPlaneMotion, box, velocity, plane, duration)
+
+}  // namespace labkit
+
+namespace labkit::lab05 {
+
+// Step 3's inputs: two sphere-swept volumes, a of one kind and b of another.
+template <class A, class B> struct VolumePair {
+  A a;
+  B b;
+};
+template <class A, class B, class Visit> void fields(VolumePair<A, B>& x, Visit&& visit) {
+  visit("a", x.a);
+  visit("b", x.b);
+}
+using SpherePair = VolumePair<Sphere, Sphere>;
+using SphereCapsule = VolumePair<Sphere, Capsule>;
+using SphereLozenge = VolumePair<Sphere, Lozenge>;
+using CapsulePair = VolumePair<Capsule, Capsule>;
+using CapsuleLozenge = VolumePair<Capsule, Lozenge>;
+using LozengePair = VolumePair<Lozenge, Lozenge>;
+
+}  // namespace labkit::lab05
+
+// ---- The queries -------------------------------------------------------------------------
+// Each question the tests ask and the input it takes, by the step that asks it first:
+// X(name, Input) is the query "name", X_IN(group, name, Input) the query "group.name"
+// (common/harness/query.h). The tests, the viewer's scene and its presets read this table:
+// a query is added or renamed here and nowhere else.
+// clang-format off
+#define LABKIT_LAB05_QUERIES(X, X_IN)                                                                                \
+  /* step 1 */ X(point_segment, PointSegmentPair) X(segment_segment, SegmentPair)                                    \
+  /* step 2 */ X(point_rectangle, PointRectanglePair) X(segment_rectangle, SegmentRectanglePair)                     \
+               X(rectangle_rectangle, RectanglePair)                                                                 \
+  /* step 3 */ X(test_sphere_sphere, SpherePair) X(test_sphere_capsule, SphereCapsule)                               \
+               X(test_sphere_lozenge, SphereLozenge) X(test_capsule_capsule, CapsulePair)                            \
+               X(test_capsule_lozenge, CapsuleLozenge) X(test_lozenge_lozenge, LozengePair)                          \
+  /* step 4 */ X(sweep_sphere_plane, SpherePlaneMotion)                                                              \
+  /* step 5 */ X(sweep_sphere_sphere, SphereSphereMotion) X_IN(sweep_sphere_sphere, soon, SphereSphereMotion)        \
+               X_IN(sweep_sphere_sphere, grazing, SphereSphereMotion)                                                \
+  /* step 6 */ X(sweep_sphere_capsule, SphereCapsuleMotion)                                                          \
+  /* step 7 */ X(sweep_box_plane, BoxPlaneMotion)                                                                    \
+  /* step 8 */ X_IN(robust, segment_segment, SegmentPair) X_IN(robust, sweep_sphere_plane, SpherePlaneMotion)        \
+               X_IN(robust, sweep_sphere_sphere, SphereSphereMotion)                                                 \
+               X_IN(robust, sweep_sphere_capsule, SphereCapsuleMotion)                                               \
+  /* step 9 */ X_IN(robust, segment_rectangle, SegmentRectanglePair)                                                 \
+               X_IN(robust, test_sphere_capsule, SphereCapsule) X_IN(robust, test_capsule_capsule, CapsulePair)      \
+               X_IN(robust, test_capsule_lozenge, CapsuleLozenge) X_IN(robust, test_lozenge_lozenge, LozengePair)    \
+               X_IN(robust, sweep_box_plane, BoxPlaneMotion)
+// clang-format on
+
+namespace labkit::lab05::query {
+LABKIT_QUERIES(LABKIT_LAB05_QUERIES)
+}  // namespace labkit::lab05::query
