@@ -1,12 +1,12 @@
 // labkit-runner: the commands behind ./labkit. Run it through ./labkit, which installs
 // what is missing, configures and builds first.
 #include "assignment.h"
+#include "case_counts.h"
 #include "check.h"
 #include "fake.h"
 #include "grade.h"
 #include "includes.h"
 #include "mutant.h"
-#include "report.h"
 #include "sandbox.h"
 #include "untrusted.h"
 

@@ -42,7 +42,7 @@ bool abnormal(Status s) {
 
 namespace {
 
-// The judge's report, when the step left one: read strictly (report.h), and still as a
+// The judge's report, when the step left one: read strictly (common/protocol/report.h), and still as a
 // file that could be anything (read_untrusted_file: no FIFO, no link, no flood).
 void read_report(const fs::path& path, StepResult& r) try {
   constexpr std::uintmax_t kLargestReport = std::uintmax_t(64) << 20;

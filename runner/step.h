@@ -27,7 +27,7 @@ enum class Status {
   out_of_memory,
   exited_early,  // exit() or _exit() inside a test: the session never finished
   no_tests,      // the binary has no test for this step: a kit bug, never the student's
-  kit_error,     // the kit's own judge failed (report.h's "kit error: ..."): never the student's
+  kit_error,     // the kit's own judge failed (protocol/report.h's "kit error: ..."): never the student's
   not_built,     // the lab did not compile
   out_of_time,   // graded runs: the submission's time budget ran out before or during the step
 };
@@ -49,7 +49,7 @@ struct StepResult {
   Run run;
   bool finished = false;  // the harness's report says the test session returned
   int examples = 0, random_cases = 0, ambiguous = 0;
-  int cases_per_query = 0;  // the run's random cases per query (report.h)
+  int cases_per_query = 0;  // the run's random cases per query (protocol/report.h)
   // For partial credit (step.cpp, fraction_passed): the share of the step's points its
   // cases earn; 1 when the step passes, 0 when it did not run to its end.
   double fraction_passed = 0;

@@ -10,7 +10,7 @@
 #include <catch2/reporters/catch_reporter_registrars.hpp>
 #endif
 
-#include "common/harness/report.h"
+#include "common/harness/report_writer.h"
 #include "common/not_implemented.h"
 #include "common/oracle/not_finite.h"
 #include "common/protocol/answerer.h"
@@ -19,7 +19,7 @@ namespace {
 
 constexpr const char* kYourCode = "your code ";
 
-// Feeds report.h with what Catch knows: test cases, and failed assertions in words.
+// Feeds report_writer.h with what Catch knows: test cases, and failed assertions in words.
 #if LABKIT_CATCH2_MAJOR == 3
 using ListenerBase = Catch::EventListenerBase;
 using AssertionEnded = void;

@@ -1,5 +1,5 @@
 #include "common/harness/check.h"
-#include "common/harness/report.h"
+#include "common/harness/report_writer.h"
 #include "common/protocol/fiber.h"
 #include "common/splitmix.h"
 #include "common/text.h"

@@ -1,4 +1,4 @@
-#include "report.h"
+#include "case_counts.h"
 #include "terminal.h"
 #include "untrusted.h"
 
