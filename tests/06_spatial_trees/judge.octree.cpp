@@ -75,6 +75,35 @@ double box_distance(const Sphere& s, const Aabb& box) {
   return std::sqrt(d2);
 }
 
+// A leaf's list in the answer against the exact one: the balls whose boxes meet its
+// closed cell, each once, in increasing index order.
+Outcome leaf_list(const OctreeCase& in, const Octree& want, const OctNode& wn, const Octree& got, const OctNode& gn,
+                  const std::string& where, const std::string& expected, const std::string& answer) {
+  if (gn.first < 0 || gn.count < 0 || gn.first + gn.count > int(got.items.size()))
+    return fail(expected, answer,
+                where + "'s list runs past items: first " + str(gn.first) + ", count " + str(gn.count) + ", " +
+                    str(got.items.size()) + " items");
+  const std::vector<int> list(got.items.begin() + gn.first, got.items.begin() + gn.first + gn.count);
+  const std::vector<int> right(want.items.begin() + wn.first, want.items.begin() + wn.first + wn.count);
+  if (list == right) return pass();
+  for (int ball : right)
+    if (std::find(list.begin(), list.end(), ball) == list.end())
+      return fail(list_text(right), list_text(list),
+                  "a ball goes to every child whose closed cell meets its box (touching counts: a ball on a cut "
+                  "goes both ways): ball " +
+                      str(ball) + "'s box " + box_text(ball_box(in.spheres[std::size_t(ball)])) + " meets " + where +
+                      "'s cell " + box_text(wn.cell) + ", yet the leaf does not list it");
+  for (int ball : list)
+    if (ball < 0 || ball >= int(in.spheres.size()) || std::find(right.begin(), right.end(), ball) == right.end())
+      return fail(list_text(right), list_text(list),
+                  ball < 0 || ball >= int(in.spheres.size())
+                      ? where + " lists " + str(ball) + ", which is no ball"
+                      : "a leaf lists the balls whose boxes meet its cell: ball " + str(ball) + "'s box " +
+                            box_text(ball_box(in.spheres[std::size_t(ball)])) + " misses " + where + "'s cell " +
+                            box_text(wn.cell));
+  return fail(list_text(right), list_text(list), "a leaf lists its balls once each, in increasing index order");
+}
+
 }  // namespace
 
 Octree octree_of(const std::vector<Sphere>& spheres, int capacity, int max_depth) {
@@ -137,29 +166,8 @@ Outcome octree(const OctreeCase& in, const Octree& got) {
       for (int k = 7; k >= 0; --k) todo.push_back({wn.child + k, gn.child + k, k});
       continue;
     }
-    if (gn.first < 0 || gn.count < 0 || gn.first + gn.count > int(got.items.size()))
-      return fail(expected, answer,
-                  where + "'s list runs past items: first " + str(gn.first) + ", count " + str(gn.count) + ", " +
-                      str(got.items.size()) + " items");
-    const std::vector<int> list(got.items.begin() + gn.first, got.items.begin() + gn.first + gn.count);
-    const std::vector<int> right(w.items.begin() + wn.first, w.items.begin() + wn.first + wn.count);
-    if (list == right) continue;
-    for (int ball : right)
-      if (std::find(list.begin(), list.end(), ball) == list.end())
-        return fail(list_text(right), list_text(list),
-                    "a ball goes to every child whose closed cell meets its box (touching counts: a ball on a cut "
-                    "goes both ways): ball " +
-                        str(ball) + "'s box " + box_text(ball_box(in.spheres[std::size_t(ball)])) + " meets " + where +
-                        "'s cell " + box_text(wn.cell) + ", yet the leaf does not list it");
-    for (int ball : list)
-      if (ball < 0 || ball >= int(in.spheres.size()) || std::find(right.begin(), right.end(), ball) == right.end())
-        return fail(list_text(right), list_text(list),
-                    ball < 0 || ball >= int(in.spheres.size())
-                        ? where + " lists " + str(ball) + ", which is no ball"
-                        : "a leaf lists the balls whose boxes meet its cell: ball " + str(ball) + "'s box " +
-                              box_text(ball_box(in.spheres[std::size_t(ball)])) + " misses " + where + "'s cell " +
-                              box_text(wn.cell));
-    return fail(list_text(right), list_text(list), "a leaf lists its balls once each, in increasing index order");
+    const Outcome leaf = leaf_list(in, w, wn, got, gn, where, expected, answer);
+    if (leaf.verdict == Outcome::Verdict::fail) return leaf;
   }
   return pass();
 }

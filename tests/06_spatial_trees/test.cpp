@@ -647,8 +647,110 @@ struct Tally {
   std::string text() const { return "mean " + fmt(std::round(mean() * 10) / 10) + ", worst " + std::to_string(worst); }
 };
 
-// The answers must also be right: the same as testing every triangle with the same given
-// test (the segments are random, nothing here is near a tie).
+// The segments' answers, in chunks so that no call runs into the time limit of one call,
+// with the given tests the judge counted for each: every query of a chunk is a part of
+// it (first_hit, any_hit and, for long segments, all_hits).
+struct CountedRuns {
+  SegmentRuns runs;
+  std::vector<std::array<long long, 3>> calls;
+};
+Outcome run_counted(const KdTree& tree, const Segments& segments, bool short_ones, CountedRuns& out) {
+  const std::size_t parts = short_ones ? 2 : 3;
+  for (std::size_t at = 0; at < segments.size(); at += kSegmentsPerCall) {
+    const Segments chunk(segments.begin() + long(at),
+                         segments.begin() + long(std::min(segments.size(), at + kSegmentsPerCall)));
+    const SegmentRuns got = answerer::run_segments(tree, chunk, !short_ones);
+    const given::Served& counted = remote::last_served();
+    if (got.size() != chunk.size())
+      return check::fail(std::to_string(chunk.size()) + " answers", std::to_string(got.size()) + " answers",
+                         "run_segments answers each segment once, in order");
+    for (std::size_t k = 0; k < chunk.size(); ++k) {
+      out.runs.push_back(got[k]);
+      out.calls.push_back({});
+      for (std::size_t p = 0; p < parts; ++p) out.calls.back()[p] = counted.count(k * parts + p, "segment_triangle");
+    }
+  }
+  return check::pass();
+}
+
+// One segment's answers: each tests count is the calls the kit counted, and the hits are
+// those of testing every triangle with the same given test.
+Outcome check_segment_run(const Segment& s, const SegmentRun& run, const std::array<long long, 3>& calls,
+                          bool short_ones, const KdHit& expected, const std::string& name) {
+  const KdHit& first = run.first;
+  const KdHit& any = run.any;
+  const bool all_counted = short_ones || run.all_tests == calls[2];
+  if (first.tests != calls[0] || any.tests != calls[1] || !all_counted)
+    return check::fail("tests = " + std::to_string(calls[0]) + ", " + std::to_string(calls[1]) +
+                           (short_ones ? "" : ", " + std::to_string(calls[2])) + " (first_hit, any_hit" +
+                           (short_ones ? "" : ", all_hits") +
+                           ": your calls of given::segment_triangle, as the kit counted them)",
+                       "tests = " + std::to_string(first.tests) + ", " + std::to_string(any.tests) +
+                           (short_ones ? "" : ", " + std::to_string(run.all_tests)),
+                       "tests counts the triangles a query tested, each with one call of given::segment_triangle: "
+                       "count every call, and only those, for a=" +
+                           fmt(s.a) + " b=" + fmt(s.b));
+  if (first.hit != expected.hit || (expected.hit && first.t != expected.t))
+    return check::fail(
+        expected.hit ? "a hit at t = " + fmt(expected.t) : "no hit",
+        first.hit ? "a hit at t = " + fmt(first.t) : "no hit",
+        "first_hit on the " + name + " disagrees with testing every triangle, for a=" + fmt(s.a) + " b=" + fmt(s.b));
+  if (any.hit != expected.hit)
+    return check::fail(expected.hit ? "a hit" : "no hit", any.hit ? "a hit" : "no hit", "any_hit on the " + name);
+  return check::pass();
+}
+
+// Tests per query, by kind of segment and query.
+struct Tallies {
+  Tally short_first, short_any, long_first, long_all;
+};
+
+// The tallies against the step's bounds: a bound missed is a tree that does not prune.
+Outcome efficiency_verdict(const Tallies& t, const std::string& name) {
+  const std::string got = "short first_hit " + t.short_first.text() + "; short any_hit " + t.short_any.text() +
+                          "; long first_hit mean " + fmt(std::round(t.long_first.mean())) + "; long all_hits mean " +
+                          fmt(std::round(t.long_all.mean()));
+  const std::string expected = "short: mean <= " + fmt(kShortMean) + ", worst <= " + std::to_string(kShortWorst) +
+                               "; long first_hit mean <= " + fmt(kLongFirstMean) +
+                               "; long all_hits mean <= " + fmt(kLongAllMean);
+  const std::string leaves =
+      ": are the leaves too big? Split while a split is cheaper than a leaf (the SAH), down to a "
+      "few triangles per leaf";
+  for (const Tally* s : {&t.short_first, &t.short_any})
+    if (s->mean() > kShortMean || s->worst > kShortWorst)
+      return check::fail(expected, got,
+                         "a short segment meets few leaves, so its tests per query are bounded: short "
+                         "segments test too many triangles of the " +
+                             name + leaves);
+  if (t.long_first.mean() > kLongFirstMean)
+    return check::fail(expected, got,
+                       "first_hit on long segments must stop early (at the first leaf whose far end t1 is "
+                       "past the best hit): too many tests on the " +
+                           name + leaves);
+  if (t.long_all.mean() > kLongAllMean)
+    return check::fail(expected, got,
+                       "all_hits tests only the leaves the segment meets: too many tests on the " + name + leaves);
+  check::note(query::efficiency_segments.name, name + ": " + got + " (bounds: " + expected + ")");
+  return check::pass();
+}
+
+// "sphere of 10,082 triangles (10,000 asked for: its grid rounds the count)": the mesh's
+// own count, which a torus's or a sphere's grid rounds.
+std::string efficiency_mesh_name(gen::MeshKind kind, const Mesh& mesh, int asked) {
+  const auto grouped = [](std::size_t n) {
+    std::string digits = std::to_string(n);
+    for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(std::size_t(at), ",");
+    return digits;
+  };
+  return std::string(gen::name_of(kind)) + " of " + grouped(mesh.size()) + " triangles" +
+         (mesh.size() == std::size_t(asked)
+              ? ""
+              : " (" + grouped(std::size_t(asked)) + " asked for: its grid rounds the count)");
+}
+
+// The tree must be valid, its answers counted honestly and right (the same as testing
+// every triangle with the same given test: the segments are random, nothing here is near
+// a tie), and its tests per query within the step's bounds.
 Outcome run_efficiency(const EfficiencyCase& in) {
   const auto kind = gen::MeshKind(in.kind);
   const Mesh mesh = gen::mesh_of_kind(kind, in.triangles, std::uint64_t(in.seed));
@@ -656,96 +758,28 @@ Outcome run_efficiency(const EfficiencyCase& in) {
   const Outcome valid = judge::kd_tree(mesh, tree);
   if (valid.verdict == Outcome::Verdict::fail) return valid;
   const std::vector<Aabb> boxes = judge::triangle_boxes(tree.triangles);
-  const auto brute_first = [&](const Segment& s) { return judge::brute_first_hit(tree.triangles, boxes, s); };
-  // The mesh's own count (a torus's or a sphere's grid rounds the count asked for).
-  const auto grouped = [](std::size_t n) {
-    std::string digits = std::to_string(n);
-    for (int at = int(digits.size()) - 3; at > 0; at -= 3) digits.insert(std::size_t(at), ",");
-    return digits;
-  };
-  const std::string name = std::string(gen::name_of(kind)) + " of " + grouped(mesh.size()) + " triangles" +
-                           (mesh.size() == std::size_t(in.triangles)
-                                ? ""
-                                : " (" + grouped(std::size_t(in.triangles)) + " asked for: its grid rounds the count)");
-  Tally short_first, short_any, long_first, long_all;
+  const std::string name = efficiency_mesh_name(kind, mesh, in.triangles);
+  Tallies tallies;
   for (bool short_ones : {true, false}) {
     const auto segments = efficiency_segments(mesh, in.segments, short_ones, std::uint64_t(in.seed) * 7 + short_ones);
-    // In chunks, so that no call runs into the time limit of one call; each query of a
-    // chunk is a part of it, with the calls the judge counted while it ran.
-    const std::size_t parts = short_ones ? 2 : 3;
-    SegmentRuns runs;
-    std::vector<std::array<long long, 3>> calls;
-    for (std::size_t at = 0; at < segments.size(); at += kSegmentsPerCall) {
-      const Segments chunk(segments.begin() + long(at),
-                           segments.begin() + long(std::min(segments.size(), at + kSegmentsPerCall)));
-      const SegmentRuns got = answerer::run_segments(tree, chunk, !short_ones);
-      const given::Served& counted = remote::last_served();
-      if (got.size() != chunk.size())
-        return check::fail(std::to_string(chunk.size()) + " answers", std::to_string(got.size()) + " answers",
-                           "run_segments answers each segment once, in order");
-      for (std::size_t k = 0; k < chunk.size(); ++k) {
-        runs.push_back(got[k]);
-        calls.push_back({});
-        for (std::size_t p = 0; p < parts; ++p) calls.back()[p] = counted.count(k * parts + p, "segment_triangle");
-      }
-    }
+    CountedRuns counted;
+    if (const Outcome ran = run_counted(tree, segments, short_ones, counted); ran.verdict == Outcome::Verdict::fail)
+      return ran;
     for (std::size_t k = 0; k < segments.size(); ++k) {
-      const Segment& s = segments[k];
-      const KdHit expected = brute_first(s);
-      const KdHit& first = runs[k].first;
-      const KdHit& any = runs[k].any;
-      const bool all_counted = short_ones || runs[k].all_tests == calls[k][2];
-      if (first.tests != calls[k][0] || any.tests != calls[k][1] || !all_counted)
-        return check::fail("tests = " + std::to_string(calls[k][0]) + ", " + std::to_string(calls[k][1]) +
-                               (short_ones ? "" : ", " + std::to_string(calls[k][2])) + " (first_hit, any_hit" +
-                               (short_ones ? "" : ", all_hits") +
-                               ": your calls of given::segment_triangle, as the kit counted them)",
-                           "tests = " + std::to_string(first.tests) + ", " + std::to_string(any.tests) +
-                               (short_ones ? "" : ", " + std::to_string(runs[k].all_tests)),
-                           "tests counts the triangles a query tested, each with one call of given::segment_triangle: "
-                           "count every call, and only those, for a=" +
-                               fmt(s.a) + " b=" + fmt(s.b));
-      if (first.hit != expected.hit || (expected.hit && first.t != expected.t))
-        return check::fail(expected.hit ? "a hit at t = " + fmt(expected.t) : "no hit",
-                           first.hit ? "a hit at t = " + fmt(first.t) : "no hit",
-                           "first_hit on the " + name + " disagrees with testing every triangle, for a=" + fmt(s.a) +
-                               " b=" + fmt(s.b));
-      if (any.hit != expected.hit)
-        return check::fail(expected.hit ? "a hit" : "no hit", any.hit ? "a hit" : "no hit", "any_hit on the " + name);
+      const KdHit expected = judge::brute_first_hit(tree.triangles, boxes, segments[k]);
+      const SegmentRun& run = counted.runs[k];
+      const Outcome one = check_segment_run(segments[k], run, counted.calls[k], short_ones, expected, name);
+      if (one.verdict == Outcome::Verdict::fail) return one;
       if (short_ones) {
-        short_first.add(first.tests);
-        short_any.add(any.tests);
+        tallies.short_first.add(run.first.tests);
+        tallies.short_any.add(run.any.tests);
       } else {
-        long_first.add(first.tests);
-        long_all.add(runs[k].all_tests);
+        tallies.long_first.add(run.first.tests);
+        tallies.long_all.add(run.all_tests);
       }
     }
   }
-  const std::string got = "short first_hit " + short_first.text() + "; short any_hit " + short_any.text() +
-                          "; long first_hit mean " + fmt(std::round(long_first.mean())) + "; long all_hits mean " +
-                          fmt(std::round(long_all.mean()));
-  const std::string expected = "short: mean <= " + fmt(kShortMean) + ", worst <= " + std::to_string(kShortWorst) +
-                               "; long first_hit mean <= " + fmt(kLongFirstMean) +
-                               "; long all_hits mean <= " + fmt(kLongAllMean);
-  const std::string leaves =
-      ": are the leaves too big? Split while a split is cheaper than a leaf (the SAH), down to a "
-      "few triangles per leaf";
-  for (const Tally* t : {&short_first, &short_any})
-    if (t->mean() > kShortMean || t->worst > kShortWorst)
-      return check::fail(expected, got,
-                         "a short segment meets few leaves, so its tests per query are bounded: short "
-                         "segments test too many triangles of the " +
-                             name + leaves);
-  if (long_first.mean() > kLongFirstMean)
-    return check::fail(expected, got,
-                       "first_hit on long segments must stop early (at the first leaf whose far end t1 is "
-                       "past the best hit): too many tests on the " +
-                           name + leaves);
-  if (long_all.mean() > kLongAllMean)
-    return check::fail(expected, got,
-                       "all_hits tests only the leaves the segment meets: too many tests on the " + name + leaves);
-  check::note(query::efficiency_segments.name, name + ": " + got + " (bounds: " + expected + ")");
-  return check::pass();
+  return efficiency_verdict(tallies, name);
 }
 
 }  // namespace

@@ -37,10 +37,11 @@ Outcome impulse(const ImpulseCase& in, const Impulse& got) {
 
 // ---- Step 6 ----------------------------------------------------------------------------
 
-Outcome collide(const CollideCase& in, const Collision& got) {
-  const Scene& scene = in.scene;
+namespace {
+
+// What any answer of collide must be: within the bounce cap, stopped only at it, finite.
+Outcome collision_bounds(const Scene& scene, const Collision& got, const std::string& answer) {
   const int cap = std::clamp(scene.bounce_cap, 0, kMaxBounceCap);
-  const std::string answer = describe(got);
   if (got.bounces < 0 || got.bounces > cap)
     return fail("between 0 and " + std::to_string(cap) + " bounces", answer,
                 "the bounce cap is " + std::to_string(cap) +
@@ -50,6 +51,54 @@ Outcome collide(const CollideCase& in, const Collision& got) {
                 "the bounce cap: a particle stops only when it hits again after " + std::to_string(cap) + " bounces");
   if (!finite(got.position) || !finite(got.velocity))
     return fail("a finite position and velocity", answer, "not finite");
+  return pass();
+}
+
+// How a verdict names piece k of the step (from the hit point of bounce k - 1 on).
+std::string piece_name(int k, bool moving, const Segment& piece) {
+  if (k == 0)
+    return moving ? "the relative step a' -> b, a' = a + u dt = " + fmt(piece.a) +
+                        " (the surfaces move at u and are given where they end the step: seen from them, the "
+                        "particle starts at a + u dt)"
+                  : std::string("the step a -> b");
+  return "the piece after bounce " + std::to_string(k - 1) +
+         (moving ? " (from -> from + (v' - u) r: the particle moves relative to the moving surfaces)" : "");
+}
+
+// The last piece of a particle that did not stop: clear to its end, where the particle
+// ends with the velocity it had there.
+Outcome clear_last_piece(const Scene& scene, const Segment& piece, const std::string& where, const SurfaceHit* left,
+                         const Collision& got, const Vec3& v, double tol, double tol_v, const std::string& answer) {
+  const Outcome o = within(where, first_hit_on(piece, scene, SurfaceHit{}, Rules::random, left));
+  if (o.verdict == Outcome::Verdict::fail)
+    return fail(o.expected, answer, o.why + " (a hit there is another bounce, or the stop when the cap is used up)");
+  Expect e("after each hit the particle moves on from the hit point, with the new velocity, for the remaining time");
+  e.that("position", (got.position - piece.b).norm() <= tol, fmt(got.position), fmt(piece.b),
+         "the particle must end where " + where + " ends, " + fmt(piece.b) +
+             ": after each hit it moves on from the hit point for the remaining time (1 - t) r only (tolerance " +
+             fmt(tol) + ")");
+  e.near("velocity", got.velocity, v, tol_v);
+  const Outcome end = e.outcome();
+  if (end.verdict == Outcome::Verdict::fail) return end;
+  return o;
+}
+
+// Bounce k, the stop: the particle rests where the hit left it.
+Outcome stopped_at(const Bounce& b, const Collision& got, const Vec3& u, double tol, double tol_v) {
+  Expect e("the bounce cap: after bounce_cap impulses the next hit stops the particle, at rest on the surface");
+  e.that("position", (got.position - b.from).norm() <= tol, fmt(got.position), fmt(b.from),
+         "a stopped particle stays at its stopping hit's `from`");
+  e.that("velocity", (got.velocity - u).norm() <= tol_v, fmt(got.velocity), fmt(u),
+         "a stopped particle is at rest on the surface: velocity zero, or the moving scene's u");
+  return e.outcome();
+}
+
+}  // namespace
+
+Outcome collide(const CollideCase& in, const Collision& got) {
+  const Scene& scene = in.scene;
+  const std::string answer = describe(got);
+  if (const Outcome o = collision_bounds(scene, got, answer); o.verdict == Outcome::Verdict::fail) return o;
 
   const double e_ = scene.material.restitution, mu = scene.material.friction;
   // A moving scene (u != 0): the loop runs in its frame, from the relative step a' -> b.
@@ -61,30 +110,13 @@ Outcome collide(const CollideCase& in, const Collision& got) {
   double remaining = in.dt;
   bool doubt = false;
   for (int k = 0;; ++k) {
-    const std::string where =
-        k == 0 ? (moving ? "the relative step a' -> b, a' = a + u dt = " + fmt(piece.a) +
-                               " (the surfaces move at u and are given where they end the step: seen from them, the "
-                               "particle starts at a + u dt)"
-                         : std::string("the step a -> b"))
-               : "the piece after bounce " + std::to_string(k - 1) +
-                     (moving ? " (from -> from + (v' - u) r: the particle moves relative to the moving surfaces)" : "");
+    const std::string where = piece_name(k, moving, piece);
     const SurfaceHit* left = k == 0 ? nullptr : &got.trace[std::size_t(k - 1)].hit;
     const double tol = kRelative * scale_with(scene, {piece.a, piece.b, in.step.a, in.step.b});
     if (k == got.bounces && !got.stopped) {  // the last piece: clear to its end
-      const Outcome o = within(where, first_hit_on(piece, scene, SurfaceHit{}, Rules::random, left));
-      if (o.verdict == Outcome::Verdict::fail)
-        return fail(o.expected, answer,
-                    o.why + " (a hit there is another bounce, or the stop when the cap is used up)");
+      const Outcome o = clear_last_piece(scene, piece, where, left, got, v, tol, tol_v, answer);
+      if (o.verdict == Outcome::Verdict::fail) return o;
       doubt = doubt || o.verdict == Outcome::Verdict::ambiguous;
-      Expect e(
-          "after each hit the particle moves on from the hit point, with the new velocity, for the remaining time");
-      e.that("position", (got.position - piece.b).norm() <= tol, fmt(got.position), fmt(piece.b),
-             "the particle must end where " + where + " ends, " + fmt(piece.b) +
-                 ": after each hit it moves on from the hit point for the remaining time (1 - t) r only (tolerance " +
-                 fmt(tol) + ")");
-      e.near("velocity", got.velocity, v, tol_v);
-      const Outcome end = e.outcome();
-      if (end.verdict == Outcome::Verdict::fail) return end;
       break;
     }
     const Bounce& b = got.trace[std::size_t(k)];
@@ -98,12 +130,8 @@ Outcome collide(const CollideCase& in, const Collision& got) {
       return fail(fmt(b.hit.point), fmt(b.from),
                   "bounce " + std::to_string(k) + ": `from` must be the hit point (settled by at most tol)");
     if (k == got.bounces) {  // the stop
-      Expect e("the bounce cap: after bounce_cap impulses the next hit stops the particle, at rest on the surface");
-      e.that("position", (got.position - b.from).norm() <= tol, fmt(got.position), fmt(b.from),
-             "a stopped particle stays at its stopping hit's `from`");
-      e.that("velocity", (got.velocity - u).norm() <= tol_v, fmt(got.velocity), fmt(u),
-             "a stopped particle is at rest on the surface: velocity zero, or the moving scene's u");
-      return e.outcome().verdict == Outcome::Verdict::fail ? e.outcome() : (doubt ? ambiguous() : pass());
+      const Outcome stop = stopped_at(b, got, u, tol, tol_v);
+      return stop.verdict == Outcome::Verdict::fail ? stop : (doubt ? ambiguous() : pass());
     }
     const oracle::Impulse exact =
         oracle::impulse(v, u, exact_normal(scene, b.hit), in.mass, scene.material.restitution, scene.material.friction);

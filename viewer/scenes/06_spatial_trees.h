@@ -46,6 +46,8 @@ class SpatialTreesScene : public Scene {
 
  private:
   void frame_inputs();
+  void set_up_figure(const std::string& preset);  // a preset without a token
+  void load(const ParsedToken& token);            // a replay token, or a preset's
   void update_kd();
   void update_bsp();
   void update_spheres();
