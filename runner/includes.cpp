@@ -181,7 +181,7 @@ Rule rule_for(const std::string& kit, const std::string& lab_folder, const std::
   std::error_code e;
   for (const auto& entry : fs::directory_iterator(lab, e))
     if (entry.path().extension() == ".h") pending.push_back(normal(entry.path().string()));
-  for (const char* header : {"common/geometry.h", "common/not_implemented.h"})
+  for (const char* header : {"common/geometry.h", "common/not_implemented.h", "common/preconditions.h"})
     if (exists(rule.kit + "/" + header)) pending.push_back(rule.kit + "/" + header);
   while (!pending.empty()) {
     const std::string file = pending.back();

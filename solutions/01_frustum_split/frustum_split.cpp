@@ -8,6 +8,8 @@
 // small-integer input every sign is exact. Positions and colours are built at the end.
 #include "frustum_split.h"
 
+#include "common/preconditions.h"
+
 #include <array>
 #include <cmath>
 #include <sstream>
@@ -21,27 +23,13 @@ namespace {
 // ---- Preconditions (the header's) ------------------------------------------------------
 // Invalid input is named, never answered: a NaN has no side, and a zero normal no plane.
 
-std::string text(double x) {
-  std::ostringstream out;
-  out.precision(17);
-  out << x;
-  return out.str();
-}
-std::string text(const Vec3& v) { return "(" + text(v.x()) + ", " + text(v.y()) + ", " + text(v.z()) + ")"; }
+using namespace preconditions;
 
-void require(bool ok, const char* query, const std::string& rule) {
-  if (!ok) throw std::invalid_argument(std::string(query) + ": " + rule);
-}
-void require_point(const Vec3& p, const char* query, const std::string& name) {
-  require(p.allFinite(), query, name + " must be finite, got " + text(p));
-}
+// A plane needs a direction: a zero normal has no side.
 void require_plane(const Plane& p, const char* query, const std::string& name) {
-  require_point(p.normal, query, name + ".normal");
-  require(std::isfinite(p.offset), query, name + ".offset must be finite, got " + text(p.offset));
-  require(p.normal != Vec3::Zero(), query, name + ".normal must be non-zero, got (0, 0, 0)");
-}
-void require_triangle(const Triangle& t, const char* query) {
-  for (int i = 0; i < 3; ++i) require_point(t[i], query, "triangle.v" + std::to_string(i));
+  require_finite(query, name + ".normal", p.normal);
+  require_finite(query, name + ".offset", p.offset);
+  require(p.normal != Vec3::Zero(), query, name + ".normal", "be non-zero", p.normal);
 }
 void require_frustum(const Frustum& f, const char* query) {
   static const char* names[6] = {"left", "right", "bottom", "top", "near", "far"};
@@ -181,19 +169,19 @@ std::vector<Triangle> fan(const Polygon& polygon, const Triangle& t) {
 
 double signed_distance(const Plane& plane, const Vec3& x) {
   require_plane(plane, "signed_distance", "plane");
-  require_point(x, "signed_distance", "x");
+  require_finite("signed_distance", "x", x);
   // mutant: distance_not_normalized
   return plane.value(x) / plane.normal.norm();
 }
 
 std::array<Side, 3> classify(const Plane& plane, const Triangle& triangle) {
   require_plane(plane, "classify", "plane");
-  require_triangle(triangle, "classify");
+  require_valid("classify", "triangle", triangle);
   return {side_of(plane.value(triangle.v0)), side_of(plane.value(triangle.v1)), side_of(plane.value(triangle.v2))};
 }
 
 std::vector<Triangle> split_triangle(const Triangle& triangle, const Plane& plane) {
-  require_triangle(triangle, "split_triangle");
+  require_valid("split_triangle", "triangle", triangle);
   require_plane(plane, "split_triangle", "plane");
   return fan(clip_polygon(triangle, &plane, 1), triangle);
 }
@@ -206,20 +194,18 @@ std::vector<Triangle> split_triangle(const Triangle& triangle, const Plane& plan
 //   are f and -f through eye + near f and eye + far f.
 Frustum frustum_from_camera(const Camera& camera) {
   const char* q = "frustum_from_camera";
-  require_point(camera.eye, q, "camera.eye");
-  require_point(camera.forward, q, "camera.forward");
-  require_point(camera.up, q, "camera.up");
-  require(camera.forward != Vec3::Zero(), q, "camera.forward must be non-zero, got (0, 0, 0)");
-  require(camera.up != Vec3::Zero(), q, "camera.up must be non-zero, got (0, 0, 0)");
-  require(camera.forward.normalized().cross(camera.up.normalized()) != Vec3::Zero(), q,
-          "camera.up must not be parallel to camera.forward, got up " + text(camera.up) + " and forward " +
-              text(camera.forward));
-  require(camera.fov_y > 0 && camera.fov_y < M_PI, q, "camera.fov_y must be in (0, pi), got " + text(camera.fov_y));
-  require(camera.aspect > 0 && std::isfinite(camera.aspect), q,
-          "camera.aspect must be finite and > 0, got " + text(camera.aspect));
-  require(camera.near > 0, q, "camera.near must be > 0, got " + text(camera.near));
-  require(camera.far > camera.near && std::isfinite(camera.far), q,
-          "camera.far must be finite and > near = " + text(camera.near) + ", got " + text(camera.far));
+  require_finite(q, "camera.eye", camera.eye);
+  require_finite(q, "camera.forward", camera.forward);
+  require_finite(q, "camera.up", camera.up);
+  require(camera.forward != Vec3::Zero(), q, "camera.forward", "be non-zero", camera.forward);
+  require(camera.up != Vec3::Zero(), q, "camera.up", "be non-zero", camera.up);
+  require(camera.forward.normalized().cross(camera.up.normalized()) != Vec3::Zero(), q, "camera.up",
+          "not be parallel to camera.forward", "up " + text(camera.up) + " and forward " + text(camera.forward));
+  require(camera.fov_y > 0 && camera.fov_y < M_PI, q, "camera.fov_y", "be in (0, pi)", camera.fov_y);
+  require_positive(q, "camera.aspect", camera.aspect);
+  require(camera.near > 0, q, "camera.near", "be > 0", camera.near);
+  if (!(camera.far > camera.near && std::isfinite(camera.far)))
+    reject(q, "camera.far", "be finite and > near = " + text(camera.near), text(camera.far));
   const Vec3 f = camera.forward.normalized();
   const Vec3 r = f.cross(camera.up).normalized();
   const Vec3 u = r.cross(f);
@@ -245,7 +231,7 @@ Frustum frustum_from_camera(const Camera& camera) {
 //   when -w <= x, that is (r3 + r0) . (p, 1) >= 0: a plane whose coefficients are the
 //   sum of rows 3 and 0. Each of the six inequalities gives one plane this way.
 Frustum frustum_from_matrix(const Mat4& view_projection) {
-  require(view_projection.allFinite(), "frustum_from_matrix", "view_projection must be finite");
+  require(view_projection.allFinite(), "frustum_from_matrix", "view_projection", "be finite", "a NaN or an infinity");
   static const char* names[6] = {"left r3 + r0", "right r3 - r0", "bottom r3 + r1",
                                  "top r3 - r1",  "near r3 + r2",  "far r3 - r2"};
   const auto plane = [&](int row, double sign) {
@@ -253,8 +239,8 @@ Frustum frustum_from_matrix(const Mat4& view_projection) {
     const Vec4 c = (view_projection.row(3) + sign * view_projection.row(row)).transpose();
     const double length = c.head<3>().norm();
     require(length > 0, "frustum_from_matrix",
-            std::string("view_projection: the ") + names[2 * row + (sign < 0)] +
-                " plane's normal (a, b, c) must be non-zero, got (0, 0, 0)");
+            std::string("view_projection: the ") + names[2 * row + (sign < 0)] + " plane's normal (a, b, c)",
+            "be non-zero", Vec3(c.head<3>()));
     // mutant: matrix_planes_not_normalized
     return Plane{c.head<3>() / length, c[3] / length};
   };
@@ -269,7 +255,7 @@ Frustum frustum_from_matrix(const Mat4& view_projection) {
 }
 
 std::vector<Triangle> clip_triangle(const Triangle& triangle, const Frustum& frustum) {
-  require_triangle(triangle, "clip_triangle");
+  require_valid("clip_triangle", "triangle", triangle);
   require_frustum(frustum, "clip_triangle");
   // mutant: side_planes_only
   return fan(clip_polygon(triangle, frustum.planes.data(), 6), triangle);
@@ -280,18 +266,18 @@ std::vector<Triangle> clip_triangle(const Triangle& triangle, const Frustum& fru
 ClippedMesh clip_mesh(const ColoredMesh& in, const Frustum& frustum) {
   const char* q = "clip_mesh";
   const std::size_t n = in.mesh.vertices.size();
-  require(in.colors.size() == n, q,
-          "mesh.colors must have one colour per vertex: " + std::to_string(in.colors.size()) + " colours for " +
-              std::to_string(n) + " vertices");
+  require(in.colors.size() == n, q, "mesh.colors", "have one colour per vertex",
+          std::to_string(in.colors.size()) + " colours for " + std::to_string(n) + " vertices");
   for (std::size_t i = 0; i < n; ++i) {
-    require_point(in.mesh.vertices[i], q, "mesh.mesh.vertices[" + std::to_string(i) + "]");
-    require_point(in.colors[i], q, "mesh.colors[" + std::to_string(i) + "]");
+    if (in.mesh.vertices[i].allFinite() && in.colors[i].allFinite()) continue;  // names built only to reject
+    require_finite(q, "mesh.mesh.vertices[" + std::to_string(i) + "]", in.mesh.vertices[i]);
+    require_finite(q, "mesh.colors[" + std::to_string(i) + "]", in.colors[i]);
   }
   for (std::size_t k = 0; k < in.mesh.size(); ++k)
     for (int i : in.mesh.triangles[k])
-      require(i >= 0 && std::size_t(i) < n, q,
-              "mesh.mesh.triangles[" + std::to_string(k) + "] must index the vertices (0 to " + std::to_string(n) +
-                  " - 1), got " + std::to_string(i));
+      if (!(i >= 0 && std::size_t(i) < n))
+        reject(q, "mesh.mesh.triangles[" + std::to_string(k) + "]", "index the vertices (0 to vertices.size() - 1)",
+               text(i));
   require_frustum(frustum, q);
   ClippedMesh out;
   out.mesh.vertices = in.mesh.vertices;

@@ -7,6 +7,8 @@
 // decision, and only they carry rounding error.
 #include "segment_triangle.h"
 
+#include "common/preconditions.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -22,45 +24,13 @@ namespace {
 
 // ---- Preconditions (the header's): finite coordinates, mesh indices in range, poses rigid.
 
-[[noreturn]] void reject(const char* query, const std::string& what) {
-  throw std::invalid_argument(std::string(query) + ": " + what);
-}
+using namespace preconditions;
 
-std::string text(const Vec3& p) {
-  std::ostringstream o;
-  o << "(" << p.x() << ", " << p.y() << ", " << p.z() << ")";
-  return o.str();
-}
-
-void require_finite(const char* query, const char* name, const Vec3& p) {
-  if (!p.allFinite()) reject(query, std::string(name) + " must have finite coordinates, got " + text(p));
-}
-void require(const char* query, const Segment& s) {
-  require_finite(query, "segment.a", s.a);
-  require_finite(query, "segment.b", s.b);
-}
-void require(const char* query, const Triangle& t) {
-  require_finite(query, "triangle.v0", t.v0);
-  require_finite(query, "triangle.v1", t.v1);
-  require_finite(query, "triangle.v2", t.v2);
-}
-void require(const char* query, const Mesh& mesh) {
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    if (!mesh.vertices[i].allFinite())
-      reject(query,
-             "mesh.vertices[" + std::to_string(i) + "] must have finite coordinates, got " + text(mesh.vertices[i]));
-  for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
-    for (int v : mesh.triangles[i])
-      if (v < 0 || std::size_t(v) >= mesh.vertices.size())
-        reject(query, "mesh.triangles[" + std::to_string(i) + "] must index mesh.vertices (0 to " +
-                          std::to_string(int(mesh.vertices.size()) - 1) + "), got " + std::to_string(v));
-}
 void require_rigid(const char* query, const char* name, const RigidTransform& m) {
-  if (!m.matrix().allFinite()) reject(query, std::string(name) + " must have finite entries");
+  require(m.matrix().allFinite(), query, name, "have finite entries", "a NaN or an infinity");
   const double off = (m.linear().transpose() * m.linear() - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
   if (!(off <= 1e-6) || m.linear().determinant() < 0)
-    reject(query, std::string(name) + " must be rigid (a rotation and a translation), got a linear part " +
-                      std::to_string(off) + " from orthonormal");
+    reject(query, name, "be rigid (a rotation and a translation)", "a linear part " + text(off) + " from orthonormal");
 }
 
 // ---- Scale: one power of two for a whole query --------------------------------------
@@ -398,8 +368,8 @@ Quick quick_answer(const Segment& s, const Triangle& tri) {
 }  // namespace
 
 PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
-  require("segment_plane", segment);
-  require("segment_plane", triangle);
+  require_valid("segment_plane", "segment", segment);
+  require_valid("segment_plane", "triangle", triangle);
   const Scale scale = scale_of(segment, triangle);
   const Segment s = scale.in(segment);
   const Triangle tri = scale.in(triangle);
@@ -425,7 +395,7 @@ PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
 
 bool point_in_triangle_edges(const Vec3& point, const Triangle& input) {
   require_finite("point_in_triangle_edges", "x", point);
-  require("point_in_triangle_edges", input);
+  require_valid("point_in_triangle_edges", "triangle", input);
   const Scale scale = scale_of({point, input.v0, input.v1, input.v2});
   const Vec3 x = scale.in(point);
   const Triangle triangle = scale.in(input);
@@ -443,7 +413,7 @@ bool point_in_triangle_edges(const Vec3& point, const Triangle& input) {
 
 Barycentric barycentric(const Vec3& point, const Triangle& input) {
   require_finite("barycentric", "x", point);
-  require("barycentric", input);
+  require_valid("barycentric", "triangle", input);
   const Scale scale = scale_of({point, input.v0, input.v1, input.v2});
   const Vec3 x = scale.in(point);
   const Triangle triangle = scale.in(input);
@@ -469,7 +439,7 @@ Barycentric barycentric(const Vec3& point, const Triangle& input) {
 
 bool point_in_triangle_barycentric(const Vec3& point, const Triangle& input) {
   require_finite("point_in_triangle_barycentric", "x", point);
-  require("point_in_triangle_barycentric", input);
+  require_valid("point_in_triangle_barycentric", "triangle", input);
   const Scale scale = scale_of({point, input.v0, input.v1, input.v2});
   const Vec3 x = scale.in(point);
   const Triangle triangle = scale.in(input);
@@ -487,22 +457,22 @@ bool point_in_triangle_barycentric(const Vec3& point, const Triangle& input) {
 }
 
 bool test_segment_triangle(const Segment& segment, const Triangle& triangle) {
-  require("test_segment_triangle", segment);
-  require("test_segment_triangle", triangle);
+  require_valid("test_segment_triangle", "segment", segment);
+  require_valid("test_segment_triangle", "triangle", triangle);
   const Quick quick = quick_answer(segment, triangle);
   if (quick != Quick::unsure) return quick == Quick::hit;
   return decide(segment, triangle).hit;
 }
 
 SegmentTriangleHit find_segment_triangle(const Segment& segment, const Triangle& triangle) {
-  require("find_segment_triangle", segment);
-  require("find_segment_triangle", triangle);
+  require_valid("find_segment_triangle", "segment", segment);
+  require_valid("find_segment_triangle", "triangle", triangle);
   return hit_from(decide(segment, triangle), segment, triangle);
 }
 
 MeshHit first_hit(const Segment& segment, const Mesh& mesh) {
-  require("first_hit", segment);
-  require("first_hit", mesh);
+  require_valid("first_hit", "segment", segment);
+  require_valid("first_hit", "mesh", mesh);
   MeshHit best;
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const Triangle tri = mesh.triangle(i);
@@ -515,16 +485,16 @@ MeshHit first_hit(const Segment& segment, const Mesh& mesh) {
 }
 
 bool any_hit(const Segment& segment, const Mesh& mesh) {
-  require("any_hit", segment);
-  require("any_hit", mesh);
+  require_valid("any_hit", "segment", segment);
+  require_valid("any_hit", "mesh", mesh);
   for (std::size_t i = 0; i < mesh.size(); ++i)
     if (decide(segment, mesh.triangle(i)).hit) return true;
   return false;
 }
 
 std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
-  require("all_hits", segment);
-  require("all_hits", mesh);
+  require_valid("all_hits", "segment", segment);
+  require_valid("all_hits", "mesh", mesh);
   std::vector<MeshHit> hits;
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const Triangle tri = mesh.triangle(i);
@@ -543,8 +513,8 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
 // segment in the mesh's own frame, a' = M0^-1 a and b' = M1^-1 b: one transform per
 // end instead of one per mesh vertex. The hit found there goes back to the world by M1.
 MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTransform& m0, const RigidTransform& m1) {
-  require("first_hit_moving", segment);
-  require("first_hit_moving", mesh);
+  require_valid("first_hit_moving", "segment", segment);
+  require_valid("first_hit_moving", "mesh", mesh);
   require_rigid("first_hit_moving", "m0", m0);
   require_rigid("first_hit_moving", "m1", m1);
   // mutant: moving_one_frame
@@ -597,8 +567,8 @@ struct Earliest {
 // for translations). Every family below is a segment against a still triangle, so the
 // decisions are step 4's exact signs (decide); only t and the point are constructed.
 MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, const Mesh& b, const Vec3& velocity_b) {
-  require("first_contact_moving_meshes", a);
-  require("first_contact_moving_meshes", b);
+  require_valid("first_contact_moving_meshes", "a", a);
+  require_valid("first_contact_moving_meshes", "b", b);
   require_finite("first_contact_moving_meshes", "velocity_a", velocity_a);
   require_finite("first_contact_moving_meshes", "velocity_b", velocity_b);
   // mutant: absolute_motion

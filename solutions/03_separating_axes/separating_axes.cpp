@@ -14,6 +14,8 @@
 // epsilon meant to repair it.
 #include "separating_axes.h"
 
+#include "common/preconditions.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -30,50 +32,15 @@ namespace {
 // argument and the rule. A NaN would otherwise fail every comparison and pass for
 // "no axis separates them", and a negative half extent would shrink the radii.
 
-std::string text(const Vec3& v) {
-  std::ostringstream out;
-  out.precision(17);
-  out << "(" << v.x() << ", " << v.y() << ", " << v.z() << ")";
-  return out.str();
-}
-
-[[noreturn]] void reject(const char* function, const std::string& argument, const std::string& rule,
-                         const std::string& got) {
-  throw std::invalid_argument(std::string(function) + ": " + argument + " " + rule + ", got " + got);
-}
-
-void require_finite(const char* function, const std::string& argument, const Vec3& v) {
-  if (!v.allFinite()) reject(function, argument, "must be finite", text(v));
-}
-
-void require_box(const char* function, const std::string& name, const Box& box) {
-  require_finite(function, name + ".center", box.center);
-  if (!box.half_extents.allFinite() || (box.half_extents.array() < 0).any())
-    reject(function, name + ".half_extents", "must be finite and >= 0", text(box.half_extents));
-  if (!box.axes.allFinite() || (box.axes.transpose() * box.axes - Mat3::Identity()).cwiseAbs().maxCoeff() > 1e-6) {
-    std::ostringstream out;
-    out.precision(17);
-    out << "[" << box.axes.format(Eigen::IOFormat(Eigen::FullPrecision, Eigen::DontAlignCols, ", ", "; ")) << "]";
-    reject(function, name + ".axes", "must be orthonormal (to 1e-6) and finite", out.str());
-  }
-}
-
-void require_triangle(const char* function, const std::string& name, const Triangle& t) {
-  for (int k = 0; k < 3; ++k) require_finite(function, name + ".v" + std::to_string(k), t[k]);
-}
+using namespace preconditions;
 
 void require_motion(const char* function, const Box& a, const Vec3& velocity_a, const Box& b, const Vec3& velocity_b,
                     double duration) {
-  require_box(function, "a", a);
-  require_box(function, "b", b);
+  require_valid(function, "a", a);
+  require_valid(function, "b", b);
   require_finite(function, "velocity_a", velocity_a);
   require_finite(function, "velocity_b", velocity_b);
-  if (!(std::isfinite(duration) && duration >= 0)) {
-    std::ostringstream out;
-    out.precision(17);
-    out << duration;
-    reject(function, "duration", "must be finite and >= 0", out.str());
-  }
+  require_size(function, "duration", duration);
 }
 
 // Edge axes shorter than this (|A_i x B_j| < 1e-6) are left out of the search for the
@@ -194,7 +161,7 @@ void describe_axis(BoxContact& c, const AxisTest& x, int index, const Box& a) {
 }  // namespace
 
 Projection project_box(const Box& box, const Vec3& axis) {
-  require_box("project_box", "box", box);
+  require_valid("project_box", "box", box);
   require_finite("project_box", "axis", axis);
   Projection p;
   p.center = box.center.dot(axis);
@@ -205,8 +172,8 @@ Projection project_box(const Box& box, const Vec3& axis) {
 }
 
 bool separated_on_axis(const Box& a, const Box& b, const Vec3& axis) {
-  require_box("separated_on_axis", "a", a);
-  require_box("separated_on_axis", "b", b);
+  require_valid("separated_on_axis", "a", a);
+  require_valid("separated_on_axis", "b", b);
   require_finite("separated_on_axis", "axis", axis);
   const double s = (b.center - a.center).dot(axis);
   const double r = project_box(a, axis).radius + project_box(b, axis).radius;
@@ -215,9 +182,9 @@ bool separated_on_axis(const Box& a, const Box& b, const Vec3& axis) {
 }
 
 Vec3 box_axis(const Box& a, const Box& b, int index) {
-  require_box("box_axis", "a", a);
-  require_box("box_axis", "b", b);
-  if (index < 0 || index > 14) reject("box_axis", "index", "must be 0 to 14", std::to_string(index));
+  require_valid("box_axis", "a", a);
+  require_valid("box_axis", "b", b);
+  require(index >= 0 && index <= 14, "box_axis", "index", "be 0 to 14", index);
   if (index < 3) return a.axes.col(index);
   // mutant: b_axis_from_a_row
   if (index < 6) return b.axes.col(index - 3);
@@ -227,8 +194,8 @@ Vec3 box_axis(const Box& a, const Box& b, int index) {
 }
 
 bool test_boxes(const Box& a, const Box& b) {
-  require_box("test_boxes", "a", a);
-  require_box("test_boxes", "b", b);
+  require_valid("test_boxes", "a", a);
+  require_valid("test_boxes", "b", b);
   Pair p(a, b, Vec3::Zero());
   // Face axes first: for boxes far apart one of them nearly always separates.
   for (int i = 0; i < 3; ++i)
@@ -244,8 +211,8 @@ bool test_boxes(const Box& a, const Box& b) {
 }
 
 BoxContact find_boxes(const Box& a, const Box& b) {
-  require_box("find_boxes", "a", a);
-  require_box("find_boxes", "b", b);
+  require_valid("find_boxes", "a", a);
+  require_valid("find_boxes", "b", b);
   Pair p(a, b, Vec3::Zero());
   p.cofactors();
   BoxContact contact;
@@ -309,8 +276,8 @@ bool straddles(const Triangle& t, const Triangle& of, double d[3]) {
 }  // namespace
 
 LineIntervals triangles_by_intervals(const Triangle& t0, const Triangle& t1) {
-  require_triangle("triangles_by_intervals", "t0", t0);
-  require_triangle("triangles_by_intervals", "t1", t1);
+  require_valid("triangles_by_intervals", "t0", t0);
+  require_valid("triangles_by_intervals", "t1", t1);
   LineIntervals out;
   double d0[3], d1[3];  // t0's vertices against t1's plane, t1's against t0's
   if (!straddles(t1, t0, d0) || !straddles(t0, t1, d1)) return out;  // no crossing segments
@@ -451,8 +418,8 @@ bool coplanar_triangles_intersect(const Triangle& t0, const Triangle& t1) {
 }  // namespace
 
 bool test_triangles(const Triangle& t0, const Triangle& t1) {
-  require_triangle("test_triangles", "t0", t0);
-  require_triangle("test_triangles", "t1", t1);
+  require_valid("test_triangles", "t0", t0);
+  require_valid("test_triangles", "t1", t1);
   if (t0.normal() == Vec3::Zero() || t1.normal() == Vec3::Zero()) return false;  // zero area: no plane
   const Sides s1 = sides(t0, t1);                                                // T1's vertices against T0's plane
   if (one_side(s1)) return false;  // T1 lies strictly on one side of T0's plane

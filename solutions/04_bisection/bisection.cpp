@@ -9,6 +9,8 @@
 // choosing and test overlap there, so any callable will do.
 #include "bisection.h"
 
+#include "common/preconditions.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -23,36 +25,18 @@ namespace {
 // ---- The header's preconditions ---------------------------------------------------------
 // Each check names the function, the argument and the rule, then what it got.
 
-std::string str(double x) {
-  std::ostringstream o;
-  o.precision(17);
-  o << x;
-  return o.str();
-}
-std::string str(const Vec3& v) { return "(" + str(v.x()) + ", " + str(v.y()) + ", " + str(v.z()) + ")"; }
+using namespace preconditions;
 
-[[noreturn]] void reject(const std::string& where, const std::string& what, const std::string& got) {
-  throw std::invalid_argument(where + ": " + what + ", got " + got);
-}
-
-// `name` and `field` name the argument ("a", ".radius"); the strings are only built to
-// reject, never on the way through.
-void require_finite(const char* where, const char* name, const char* field, const Vec3& v) {
-  if (!v.allFinite()) reject(where, std::string(name) + field + " must be finite", str(v));
-}
-void require_size(const char* where, const char* name, const char* field, double x) {
-  if (!(std::isfinite(x) && x >= 0)) reject(where, std::string(name) + field + " must be finite and >= 0", str(x));
-}
-void require_body(const char* where, const char* name, const Sphere& s) {
-  require_finite(where, name, ".center", s.center);
-  require_size(where, name, ".radius", s.radius);
-}
+// A body of lab 04: a sphere, or a box whose axes are finite (orthonormal is the
+// header's domain, not a precondition).
+void require_body(const char* where, const char* name, const Sphere& s) { require_valid(where, name, s); }
 void require_body(const char* where, const char* name, const Box& b) {
-  require_finite(where, name, ".center", b.center);
-  if (!b.axes.allFinite()) reject(where, std::string(name) + ".axes must be finite", "a NaN or an infinity");
-  require_finite(where, name, ".half_extents", b.half_extents);
-  if (!(b.half_extents.minCoeff() >= 0))
-    reject(where, std::string(name) + ".half_extents must be >= 0", str(b.half_extents));
+  if (b.center.allFinite() && b.axes.allFinite() && b.half_extents.allFinite() && b.half_extents.minCoeff() >= 0)
+    return;
+  require_finite(where, std::string(name) + ".center", b.center);
+  require(b.axes.allFinite(), where, std::string(name) + ".axes", "be finite", "a NaN or an infinity");
+  require_finite(where, std::string(name) + ".half_extents", b.half_extents);
+  require(b.half_extents.minCoeff() >= 0, where, std::string(name) + ".half_extents", "be >= 0", b.half_extents);
 }
 void require_body(const char* where, const char* name, const Shape& b) {
   if (b.kind == Shape::Kind::sphere)
@@ -68,30 +52,29 @@ void require_body(const char* where, const char* name, const Shape& b) {
 // every bracket longer than the tolerance holds a few doubles, its computed midpoint
 // lies strictly inside, and each round shrinks it to at most a little over half.
 void require_times(const char* where, double t0, double t1, double tolerance) {
-  if (!std::isfinite(t0)) reject(where, "t0 must be finite", str(t0));
-  if (!std::isfinite(t1)) reject(where, "t1 must be finite", str(t1));
-  if (!(t0 <= t1)) reject(where, "t0 <= t1 must hold", "t0 = " + str(t0) + ", t1 = " + str(t1));
-  if (!std::isfinite(t1 - t0)) reject(where, "t1 - t0 must be finite", "t0 = " + str(t0) + ", t1 = " + str(t1));
-  if (!(std::isfinite(tolerance) && tolerance > 0)) reject(where, "tolerance must be finite and > 0", str(tolerance));
+  require_finite(where, "t0", t0);
+  require_finite(where, "t1", t1);
+  if (!(t0 <= t1)) reject(where, "t0 <= t1", "hold", "t0 = " + text(t0) + ", t1 = " + text(t1));
+  if (!std::isfinite(t1 - t0)) reject(where, "t1 - t0", "be finite", "t0 = " + text(t0) + ", t1 = " + text(t1));
+  require_positive(where, "tolerance", tolerance);
   const double floor = std::ldexp(std::max(std::abs(t0), std::abs(t1)), -50);
   if (!(tolerance >= floor))
-    reject(
-        where,
-        "tolerance must be at least 2^-50 max(|t0|, |t1|) = " + str(floor) + " (finer times are not distinct doubles)",
-        str(tolerance));
+    reject(where, "tolerance",
+           "be at least 2^-50 max(|t0|, |t1|) = " + text(floor) + " (finer times are not distinct doubles)",
+           text(tolerance));
 }
 
 void require_pair(const char* where, const MovingPair& pair) {
   require_body(where, "pair.a", pair.a);
   require_body(where, "pair.b", pair.b);
-  if (!pair.motion_a) reject(where, "pair.motion_a must be a motion", "an empty std::function");
-  if (!pair.motion_b) reject(where, "pair.motion_b must be a motion", "an empty std::function");
+  if (!pair.motion_a) reject(where, "pair.motion_a", "be a motion", "an empty std::function");
+  if (!pair.motion_b) reject(where, "pair.motion_b", "be a motion", "an empty std::function");
 }
 
 RigidTransform pose_of(const Motion& motion, const char* name, double t) {
   const RigidTransform pose = motion(t);
   if (!pose.matrix().allFinite())
-    throw std::invalid_argument(std::string(name) + " returned a pose that is not finite at t = " + str(t));
+    throw std::invalid_argument(std::string(name) + " returned a pose that is not finite at t = " + text(t));
   return pose;
 }
 
@@ -197,7 +180,7 @@ bool overlap(const Sphere& a, const Sphere& b) {
 
 Vec3 closest_point(const Box& box, const Vec3& p) {
   require_body("closest_point", "box", box);
-  require_finite("closest_point", "p", "", p);
+  require_finite("closest_point", "p", p);
   const Vec3 d = p - box.center;
   Vec3 q = box.center;
   for (int k = 0; k < 3; ++k) {
@@ -217,7 +200,7 @@ bool overlap(const Sphere& a, const Box& b) {
 
 bool overlap_at(const MovingPair& pair, double t) {
   require_pair("overlap_at", pair);
-  if (!std::isfinite(t)) reject("overlap_at", "t must be finite", str(t));
+  require_finite("overlap_at", "t", t);
   const Posed p = posed_at(pair, t);
   return p.b.kind == Shape::Kind::sphere ? overlap(p.a, p.b.sphere) : overlap(p.a, p.b.box);
 }
@@ -251,9 +234,9 @@ double smallest_size(const Shape& shape) {
 // so n = floor(ratio) + 1 (when the ratio is a whole number m, n = m gives equality,
 // which is not "smaller").
 int substeps_for(double closing_speed, double step, double smallest_size) {
-  require_size("substeps_for", "closing_speed", "", closing_speed);
-  require_size("substeps_for", "step", "", step);
-  require_size("substeps_for", "smallest_size", "", smallest_size);
+  require_size("substeps_for", "closing_speed", closing_speed);
+  require_size("substeps_for", "step", step);
+  require_size("substeps_for", "smallest_size", smallest_size);
   if (smallest_size == 0) return 0;  // a zero size can slip between any two samples
   const double ratio = closing_speed * step / smallest_size;
   if (!(ratio < kMaxSubsteps)) return 0;  // too many sub-steps (or not a number)
@@ -266,7 +249,7 @@ int substeps_for(double closing_speed, double step, double smallest_size) {
 TimeOfImpact sample_then_bisect(const MovingPair& pair, double t0, double t1, int substeps, double tolerance) {
   require_pair("sample_then_bisect", pair);
   require_times("sample_then_bisect", t0, t1, tolerance);
-  if (substeps < 1) reject("sample_then_bisect", "substeps must be >= 1", std::to_string(substeps));
+  require(substeps >= 1, "sample_then_bisect", "substeps", "be >= 1", substeps);
   if (overlap_at(pair, t0)) return overlapping_at_start(t0);
   double previous = t0;
   // mutant: samples_the_end_only
@@ -291,15 +274,15 @@ double closing_speed(const Sphere& a, const StandardMotion& motion_a, const Shap
                      double t0, double t1) {
   require_body("closing_speed", "a", a);
   require_body("closing_speed", "b", b);
-  if (!std::isfinite(t0)) reject("closing_speed", "t0 must be finite", str(t0));
-  if (!std::isfinite(t1)) reject("closing_speed", "t1 must be finite", str(t1));
-  if (!(t0 <= t1)) reject("closing_speed", "t0 <= t1 must hold", "t0 = " + str(t0) + ", t1 = " + str(t1));
+  require_finite("closing_speed", "t0", t0);
+  require_finite("closing_speed", "t1", t1);
+  if (!(t0 <= t1)) reject("closing_speed", "t0 <= t1", "hold", "t0 = " + text(t0) + ", t1 = " + text(t1));
   // mutant: box_reach_from_its_centre
   const double reach_b = b.kind == Shape::Kind::sphere ? reach(b.sphere) : reach(b.box);
   const double speed_a = max_speed(motion_a, reach(a), t0, t1), speed_b = max_speed(motion_b, reach_b, t0, t1);
-  const char* rule = "'s velocity, acceleration and spin must be finite";
-  if (!std::isfinite(speed_a)) reject("closing_speed", std::string("motion_a") + rule, "a speed of " + str(speed_a));
-  if (!std::isfinite(speed_b)) reject("closing_speed", std::string("motion_b") + rule, "a speed of " + str(speed_b));
+  const char* rule = "have a finite velocity, acceleration and spin";
+  if (!std::isfinite(speed_a)) reject("closing_speed", "motion_a", rule, "a speed of " + text(speed_a));
+  if (!std::isfinite(speed_b)) reject("closing_speed", "motion_b", rule, "a speed of " + text(speed_b));
   // mutant: closing_speed_of_the_fastest
   return speed_a + speed_b;
 }
@@ -326,7 +309,7 @@ double distance(const Sphere& a, const Box& b) {
 
 double distance_at(const MovingPair& pair, double t) {
   require_pair("distance_at", pair);
-  if (!std::isfinite(t)) reject("distance_at", "t must be finite", str(t));
+  require_finite("distance_at", "t", t);
   const Posed p = posed_at(pair, t);
   return p.b.kind == Shape::Kind::sphere ? distance(p.a, p.b.sphere) : distance(p.a, p.b.box);
 }
@@ -341,7 +324,7 @@ double distance_at(const MovingPair& pair, double t) {
 TimeOfImpact advance(const MovingPair& pair, double t0, double t1, double max_closing_speed, double tolerance) {
   require_pair("advance", pair);
   require_times("advance", t0, t1, tolerance);
-  require_size("advance", "max_closing_speed", "", max_closing_speed);
+  require_size("advance", "max_closing_speed", max_closing_speed);
   if (overlap_at(pair, t0)) return overlapping_at_start(t0);
   double t = t0;
   int steps = 0;

@@ -14,6 +14,8 @@
 // big squares (the cross product), so nearly-grazing cases keep their accuracy.
 #include "sphere_sweeps.h"
 
+#include "common/preconditions.h"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -32,40 +34,10 @@ double square(double x) { return x * x; }
 
 // ---- The header's preconditions: std::invalid_argument naming the argument and the rule --
 
-std::string number(double x) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", x);
-  return text;
-}
-std::string vector(const Vec3& x) { return "(" + number(x.x()) + ", " + number(x.y()) + ", " + number(x.z()) + ")"; }
+using namespace preconditions;
+using preconditions::require_valid;  // beside the overloads for this lab's shapes below
 
-[[noreturn]] void reject(const char* query, const std::string& argument, const char* rule, const std::string& got) {
-  throw std::invalid_argument(std::string(query) + ": " + argument + " must " + rule + ", got " + got);
-}
-void require_finite(const char* query, const std::string& argument, const Vec3& x) {
-  if (!x.allFinite()) reject(query, argument, "be finite", vector(x));
-}
-void require_finite(const char* query, const std::string& argument, double x) {
-  if (!std::isfinite(x)) reject(query, argument, "be finite", number(x));
-}
-void require_size(const char* query, const std::string& argument, double x) {
-  if (!(std::isfinite(x) && x >= 0)) reject(query, argument, "be finite and >= 0", number(x));
-}
-// "Unit length and perpendicular (to rounding)": checked loosely, 1e-6, to catch a
-// forgotten normalisation, never a rounded rotation.
-void require_unit(const char* query, const std::string& argument, const Vec3& x) {
-  require_finite(query, argument, x);
-  if (!(std::abs(x.squaredNorm() - 1) <= 1e-6)) reject(query, argument, "have unit length", vector(x));
-}
-void require_perpendicular(const char* query, const std::string& argument, const Vec3& x, const Vec3& y) {
-  if (!(std::abs(x.dot(y)) <= 1e-6))
-    reject(query, argument, "be perpendicular", number(x.dot(y)) + " for their dot product");
-}
-void require(const char* query, const std::string& name, const Segment& s) {
-  require_finite(query, name + ".a", s.a);
-  require_finite(query, name + ".b", s.b);
-}
-void require(const char* query, const std::string& name, const Rectangle& r) {
+void require_valid(const char* query, const std::string& name, const Rectangle& r) {
   require_finite(query, name + ".center", r.center);
   require_unit(query, name + ".u", r.u);
   require_unit(query, name + ".v", r.v);
@@ -73,33 +45,18 @@ void require(const char* query, const std::string& name, const Rectangle& r) {
   require_size(query, name + ".half_u", r.half_u);
   require_size(query, name + ".half_v", r.half_v);
 }
-void require(const char* query, const std::string& name, const Sphere& s) {
-  require_finite(query, name + ".center", s.center);
-  require_size(query, name + ".radius", s.radius);
-}
-void require(const char* query, const std::string& name, const Capsule& c) {
-  require(query, name + ".axis", c.axis);
+void require_valid(const char* query, const std::string& name, const Capsule& c) {
+  require_valid(query, name + ".axis", c.axis);
   require_size(query, name + ".radius", c.radius);
 }
-void require(const char* query, const std::string& name, const Lozenge& l) {
-  require(query, name + ".rectangle", l.rectangle);
+void require_valid(const char* query, const std::string& name, const Lozenge& l) {
+  require_valid(query, name + ".rectangle", l.rectangle);
   require_size(query, name + ".radius", l.radius);
 }
-void require(const char* query, const std::string& name, const Plane& p) {
+void require_valid(const char* query, const std::string& name, const Plane& p) {
   require_finite(query, name + ".normal", p.normal);
   require_finite(query, name + ".offset", p.offset);
-  if (p.normal == Vec3::Zero()) reject(query, name + ".normal", "be non-zero", vector(p.normal));
-}
-void require(const char* query, const std::string& name, const Box& b) {
-  require_finite(query, name + ".center", b.center);
-  for (int i = 0; i < 3; ++i) {
-    const std::string axis = name + ".axes.col(" + std::to_string(i) + ")";
-    require_unit(query, axis, b.axes.col(i));
-    require_size(query, name + ".half_extents[" + std::to_string(i) + "]", b.half_extents[i]);
-    for (int j = 0; j < i; ++j)
-      require_perpendicular(query, name + ".axes.col(" + std::to_string(j) + ") and " + axis, b.axes.col(j),
-                            b.axes.col(i));
-  }
+  require(p.normal != Vec3::Zero(), query, name + ".normal", "be non-zero", p.normal);
 }
 void require_motion(const char* query, const Vec3& velocity, const char* velocity_name, double duration) {
   require_finite(query, velocity_name, velocity);
@@ -244,7 +201,7 @@ PlaneApproach approach_plane(double f0, double g, double reach, double reach2, d
 
 PointSegmentDistance point_segment(const Vec3& p, const Segment& segment) {
   require_finite("point_segment", "p", p);
-  require("point_segment", "segment", segment);
+  require_valid("point_segment", "segment", segment);
   // Minimise |a + t d - p|^2 over t: the derivative vanishes at t = (p - a) . d / (d . d);
   // the function is a parabola, so outside [0, 1] the nearer end wins.
   const Vec3 d = segment.b - segment.a;
@@ -277,8 +234,8 @@ PointSegmentDistance point_segment(const Vec3& p, const Segment& segment) {
 //   Parallel segments (n = 0) have no single lines' pair: the border candidates hold a
 //   closest pair, and we return the first minimal one.
 SegmentSegmentDistance segment_segment(const Segment& first, const Segment& second) {
-  require("segment_segment", "first", first);
-  require("segment_segment", "second", second);
+  require_valid("segment_segment", "first", first);
+  require_valid("segment_segment", "second", second);
   SegmentSegmentDistance best;
   best.squared_distance = kInfinity;
   const auto consider = [&](double s, double t, const Vec3& p, const Vec3& q) {
@@ -326,7 +283,7 @@ SegmentSegmentDistance segment_segment(const Segment& first, const Segment& seco
 
 PointRectangleDistance point_rectangle(const Vec3& p, const Rectangle& rectangle) {
   require_finite("point_rectangle", "p", p);
-  require("point_rectangle", "rectangle", rectangle);
+  require_valid("point_rectangle", "rectangle", rectangle);
   // In the rectangle's frame the squared distance is (s - s_p)^2 + (t - t_p)^2 + h^2,
   // with s_p = (p - c) . u, t_p = (p - c) . v: each coordinate is minimised on its own,
   // by clamping to the half-size. h, the height above the plane, is whatever it is.
@@ -346,8 +303,8 @@ PointRectangleDistance point_rectangle(const Vec3& p, const Rectangle& rectangle
 //   to the rectangle there and could slide to an end or the border without getting
 //   farther). So: two ends against the rectangle, the segment against four sides.
 SegmentRectangleDistance segment_rectangle(const Segment& segment, const Rectangle& rectangle) {
-  require("segment_rectangle", "segment", segment);
-  require("segment_rectangle", "rectangle", rectangle);
+  require_valid("segment_rectangle", "segment", segment);
+  require_valid("segment_rectangle", "rectangle", rectangle);
   SegmentRectangleDistance best;
   const Crossing x = crossing(segment, rectangle);
   if (x.inside) {
@@ -380,8 +337,8 @@ SegmentRectangleDistance segment_rectangle(const Segment& segment, const Rectang
 //   side of one of them, and a side that meets the other rectangle is at distance 0. So
 //   the nearest of the eight sides, each against the other rectangle.
 RectangleRectangleDistance rectangle_rectangle(const Rectangle& first, const Rectangle& second) {
-  require("rectangle_rectangle", "first", first);
-  require("rectangle_rectangle", "second", second);
+  require_valid("rectangle_rectangle", "first", first);
+  require_valid("rectangle_rectangle", "second", second);
   RectangleRectangleDistance best;
   best.squared_distance = kInfinity;
   for (int i = 0; i < 4; ++i) {
@@ -402,39 +359,39 @@ RectangleRectangleDistance rectangle_rectangle(const Rectangle& first, const Rec
 // touching capsules could come out a hair apart.)
 
 bool test_sphere_sphere(const Sphere& a, const Sphere& b) {
-  require("test_sphere_sphere", "a", a);
-  require("test_sphere_sphere", "b", b);
+  require_valid("test_sphere_sphere", "a", a);
+  require_valid("test_sphere_sphere", "b", b);
   return (a.center - b.center).squaredNorm() <= square(a.radius + b.radius);
 }
 
 bool test_sphere_capsule(const Sphere& a, const Capsule& b) {
-  require("test_sphere_capsule", "a", a);
-  require("test_sphere_capsule", "b", b);
+  require_valid("test_sphere_capsule", "a", a);
+  require_valid("test_sphere_capsule", "b", b);
   return point_segment_within(a.center, b.axis, square(a.radius + b.radius));
 }
 
 bool test_sphere_lozenge(const Sphere& a, const Lozenge& b) {
-  require("test_sphere_lozenge", "a", a);
-  require("test_sphere_lozenge", "b", b);
+  require_valid("test_sphere_lozenge", "a", a);
+  require_valid("test_sphere_lozenge", "b", b);
   return point_rectangle_within(a.center, b.rectangle, square(a.radius + b.radius));
 }
 
 bool test_capsule_capsule(const Capsule& a, const Capsule& b) {
-  require("test_capsule_capsule", "a", a);
-  require("test_capsule_capsule", "b", b);
+  require_valid("test_capsule_capsule", "a", a);
+  require_valid("test_capsule_capsule", "b", b);
   // mutants: sum_of_squares, decide_on_rounded_distance
   return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));
 }
 
 bool test_capsule_lozenge(const Capsule& a, const Lozenge& b) {
-  require("test_capsule_lozenge", "a", a);
-  require("test_capsule_lozenge", "b", b);
+  require_valid("test_capsule_lozenge", "a", a);
+  require_valid("test_capsule_lozenge", "b", b);
   return segment_rectangle_within(a.axis, b.rectangle, square(a.radius + b.radius));
 }
 
 bool test_lozenge_lozenge(const Lozenge& a, const Lozenge& b) {
-  require("test_lozenge_lozenge", "a", a);
-  require("test_lozenge_lozenge", "b", b);
+  require_valid("test_lozenge_lozenge", "a", a);
+  require_valid("test_lozenge_lozenge", "b", b);
   const double r2 = square(a.radius + b.radius);
   for (int i = 0; i < 4; ++i)
     if (segment_rectangle_within(side(a.rectangle, i), b.rectangle, r2)) return true;
@@ -447,9 +404,9 @@ bool test_lozenge_lozenge(const Lozenge& a, const Lozenge& b) {
 // ---- Step 4 --------------------------------------------------------------------------------
 
 Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane& given, double duration) {
-  require("sweep_sphere_plane", "sphere", sphere);
+  require_valid("sweep_sphere_plane", "sphere", sphere);
   require_motion("sweep_sphere_plane", velocity, "velocity", duration);
-  require("sweep_sphere_plane", "plane", given);
+  require_valid("sweep_sphere_plane", "plane", given);
   // With f(t) = normal . c(t) + offset = f0 + g t, the signed distance is f / |normal|:
   // compare f with r |normal| rather than normalising (the normal need not be unit).
   // First the plane is rescaled by a power of two, so that n . n is a normal double. A
@@ -485,8 +442,8 @@ Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane
 //   The textbook (-b - sqrt(b^2 - ac)) / a subtracts two nearly equal numbers when a c is
 //   small against b^2 (the spheres start a hair apart): its time is then mostly noise.
 Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, const Vec3& v1, double duration) {
-  require("sweep_sphere_sphere", "s0", s0);
-  require("sweep_sphere_sphere", "s1", s1);
+  require_valid("sweep_sphere_sphere", "s0", s0);
+  require_valid("sweep_sphere_sphere", "s1", s1);
   require_motion("sweep_sphere_sphere", v0, "v0", duration);
   require_finite("sweep_sphere_sphere", "v1", v1);
   const Vec3 A = s0.center - s1.center, B = v0 - v1;
@@ -574,9 +531,9 @@ double first_time_cylinder(const Vec3& m, const Vec3& v, const Vec3& d, double R
 //   roots built; if rounding loses all three at an exact graze, the path's closest
 //   approach is the contact.
 Sweep sweep_sphere_capsule(const Sphere& sphere, const Vec3& velocity, const Capsule& capsule, double duration) {
-  require("sweep_sphere_capsule", "sphere", sphere);
+  require_valid("sweep_sphere_capsule", "sphere", sphere);
   require_motion("sweep_sphere_capsule", velocity, "velocity", duration);
-  require("sweep_sphere_capsule", "capsule", capsule);
+  require_valid("sweep_sphere_capsule", "capsule", capsule);
   const Segment& axis = capsule.axis;
   // mutant: grown_by_one_radius
   const double R = sphere.radius + capsule.radius, R2 = square(R);
@@ -599,9 +556,9 @@ Sweep sweep_sphere_capsule(const Sphere& sphere, const Vec3& velocity, const Cap
 // ---- Step 7 --------------------------------------------------------------------------------
 
 Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& given, double duration) {
-  require("sweep_box_plane", "box", box);
+  require_valid("sweep_box_plane", "box", box);
   require_motion("sweep_box_plane", velocity, "velocity", duration);
-  require("sweep_box_plane", "plane", given);
+  require_valid("sweep_box_plane", "plane", given);
   const Plane plane = scaled(given);  // as in step 4: any normal length, no overflow
   // The box reaches sum_i h_i |n . axis_i| / |n| from its centre along the unit normal
   // (project each half-size on the normal line; the corner that reaches farthest takes

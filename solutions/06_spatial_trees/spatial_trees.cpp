@@ -8,6 +8,8 @@
 // deep as the mesh has triangles.
 #include "spatial_trees.h"
 
+#include "common/preconditions.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -28,33 +30,7 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // report a hit, and a NaN centre breaks the sort of the sweep, which then loses pairs
 // between finite spheres. So invalid input is refused, naming the argument and the rule.
 
-std::string text(double x) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", x);
-  return buffer;
-}
-std::string text(const Vec3& v) { return "(" + text(v.x()) + ", " + text(v.y()) + ", " + text(v.z()) + ")"; }
-
-void require_finite(const char* query, const std::string& argument, const Vec3& v) {
-  if (!v.allFinite())
-    throw std::invalid_argument(std::string(query) + ": " + argument + " must be finite, got " + text(v));
-}
-
-void require_mesh(const char* query, const Mesh& mesh) {
-  for (std::size_t i = 0; i < mesh.vertices.size(); ++i)
-    require_finite(query, "mesh.vertices[" + std::to_string(i) + "]", mesh.vertices[i]);
-  for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
-    for (int k : mesh.triangles[i])
-      if (k < 0 || std::size_t(k) >= mesh.vertices.size())
-        throw std::invalid_argument(std::string(query) + ": mesh.triangles[" + std::to_string(i) +
-                                    "] must index mesh.vertices (0 to " +
-                                    std::to_string(int(mesh.vertices.size()) - 1) + "), got " + std::to_string(k));
-}
-
-void require_segment(const char* query, const Segment& s) {
-  require_finite(query, "segment.a", s.a);
-  require_finite(query, "segment.b", s.b);
-}
+using namespace preconditions;
 
 // ---- k-d tree: build ------------------------------------------------------------------------
 
@@ -430,7 +406,7 @@ bool in_closed_triangle(const Triangle& t, const Vec3& x) {
 // when no split is expected to be cheaper, when it holds one triangle, or at depth
 // 8 + 1.3 log2 n (n triangles).
 KdTree build_kd_tree(const Mesh& mesh) {
-  require_mesh("build_kd_tree", mesh);
+  require_valid("build_kd_tree", "mesh", mesh);
   KdTree tree;
   tree.triangles.reserve(mesh.size());
   std::vector<Aabb> boxes;
@@ -462,7 +438,7 @@ KdTree build_kd_tree(const Mesh& mesh) {
 // ---- Step 2 ------------------------------------------------------------------------------------
 
 KdHit first_hit(const KdTree& tree, const Segment& segment) {
-  require_segment("first_hit", segment);
+  require_valid("first_hit", "segment", segment);
   KdHit best;
   int tests = 0;
   front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
@@ -483,7 +459,7 @@ KdHit first_hit(const KdTree& tree, const Segment& segment) {
 }
 
 KdHit any_hit(const KdTree& tree, const Segment& segment) {
-  require_segment("any_hit", segment);
+  require_valid("any_hit", "segment", segment);
   KdHit found;
   int tests = 0;
   front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
@@ -505,7 +481,7 @@ KdHit any_hit(const KdTree& tree, const Segment& segment) {
 }
 
 KdHits all_hits(const KdTree& tree, const Segment& segment) {
-  require_segment("all_hits", segment);
+  require_valid("all_hits", "segment", segment);
   KdHits out;
   front_to_back(tree, segment, [&](const KdNode& leaf, double, double) {
     for_each_listed(tree, leaf, [&](int i) {
@@ -532,7 +508,7 @@ KdHits all_hits(const KdTree& tree, const Segment& segment) {
 // every plane has all the other triangles behind it, and the tree is a chain as long as
 // the mesh.
 BspTree build_bsp(const Mesh& mesh) {
-  require_mesh("build_bsp", mesh);
+  require_valid("build_bsp", "mesh", mesh);
   BspTree tree;
   std::vector<Work> all;
   for (std::size_t i = 0; i < mesh.size(); ++i) {
@@ -714,10 +690,8 @@ std::uint64_t cell_key(std::int64_t x, std::int64_t y, std::int64_t z) {
 void require_spheres(const char* query, const std::vector<Sphere>& spheres) {
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const Sphere& s = spheres[i];
-    if (s.center.allFinite() && s.radius >= 0 && std::isfinite(s.radius)) continue;
-    require_finite(query, "spheres[" + std::to_string(i) + "].center", s.center);
-    throw std::invalid_argument(std::string(query) + ": spheres[" + std::to_string(i) +
-                                "].radius must be finite and >= 0, got " + text(s.radius));
+    if (!(s.center.allFinite() && s.radius >= 0 && std::isfinite(s.radius)))
+      require_valid(query, "spheres[" + std::to_string(i) + "]", s);
   }
 }
 
@@ -810,6 +784,66 @@ bool before(const Endpoint& a, const Endpoint& b) {
 
 std::array<int, 2> ordered(int i, int j) { return {std::min(i, j), std::max(i, j)}; }
 
+// The first frame: the ends sorted from scratch, then the pairs overlapping on x by one
+// sweep.
+void sweep_from_scratch(const std::vector<Sphere>& spheres, std::vector<Endpoint>& ends,
+                        std::vector<std::array<int, 2>>& overlapping) {
+  ends.clear();
+  for (int i = 0; i < int(spheres.size()); ++i) {
+    const Sphere& s = spheres[std::size_t(i)];
+    ends.push_back({s.center.x() - s.radius, i, false}), ends.push_back({s.center.x() + s.radius, i, true});
+  }
+  std::sort(ends.begin(), ends.end(), before);
+  // Walking the sorted ends, the spheres whose low end is passed and high end is not
+  // are open; each low end overlaps every open interval.
+  overlapping.clear();
+  std::vector<int> open;
+  for (const Endpoint& e : ends) {
+    if (e.high) {
+      open.erase(std::find(open.begin(), open.end(), e.sphere));
+    } else {
+      for (int other : open) overlapping.push_back(ordered(other, e.sphere));
+      open.push_back(e.sphere);
+    }
+  }
+  std::sort(overlapping.begin(), overlapping.end());  // kept sorted from now on (below)
+}
+
+// The pairs whose intervals on x began or stopped overlapping, each list sorted.
+struct PairChanges {
+  std::vector<std::array<int, 2>> added, gone_pairs;
+};
+
+PairChanges insertion_sort(std::vector<Endpoint>& ends, SweepFrame& frame) {
+  // Insertion sort. Each swap of a low end left past a high end makes their intervals
+  // overlap (+1); a high end left past a low end parts them (-1). The changes are noted
+  // here and applied to the set by update, in one pass: finding a pair in the set at each
+  // swap would cost the whole set per swap.
+  std::vector<std::pair<std::array<int, 2>, int>> changes;
+  for (std::size_t k = 1; k < ends.size(); ++k)
+    for (std::size_t m = k; m > 0 && before(ends[m], ends[m - 1]); --m) {
+      const Endpoint& moving = ends[m];
+      const Endpoint& passed = ends[m - 1];
+      if (moving.sphere != passed.sphere && moving.high != passed.high)
+        changes.push_back({ordered(moving.sphere, passed.sphere), moving.high ? -1 : +1});
+      std::swap(ends[m], ends[m - 1]);
+      ++frame.swaps;
+    }
+  // A sphere that jumped clear over another in one frame makes both changes to the pair:
+  // what counts is their sum.
+  std::sort(changes.begin(), changes.end());
+  std::vector<std::array<int, 2>> added, gone_pairs;  // both sorted
+  for (std::size_t k = 0; k < changes.size();) {
+    std::size_t next = k;
+    int sum = 0;
+    for (; next < changes.size() && changes[next].first == changes[k].first; ++next) sum += changes[next].second;
+    if (sum > 0) added.push_back(changes[k].first);
+    if (sum < 0) gone_pairs.push_back(changes[k].first);
+    k = next;
+  }
+  return {added, gone_pairs};
+}
+
 }  // namespace
 
 // Incremental sort and sweep (lecture 002: O(n) per frame when objects move little).
@@ -827,8 +861,8 @@ std::array<int, 2> ordered(int i, int j) { return {std::min(i, j), std::max(i, j
 SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
   require_spheres("SweepAndPrune::update", spheres);
   if (started && spheres.size() * 2 != ends.size())
-    throw std::invalid_argument("SweepAndPrune::update: spheres must keep the first frame's count, " +
-                                std::to_string(ends.size() / 2) + ", got " + std::to_string(spheres.size()));
+    reject("SweepAndPrune::update", "spheres", "keep the first frame's count, " + std::to_string(ends.size() / 2),
+           std::to_string(spheres.size()));
   SweepFrame out;
   for (Endpoint& e : ends) {
     const Sphere& s = spheres[std::size_t(e.sphere)];
@@ -837,52 +871,9 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
   // mutant: sweep_resorted_each_frame
   if (!started) {  // the first frame: a sort from scratch, then the overlaps by one sweep
     started = true;
-    ends.clear();
-    for (int i = 0; i < int(spheres.size()); ++i) {
-      const Sphere& s = spheres[std::size_t(i)];
-      ends.push_back({s.center.x() - s.radius, i, false}), ends.push_back({s.center.x() + s.radius, i, true});
-    }
-    std::sort(ends.begin(), ends.end(), before);
-    // Walking the sorted ends, the spheres whose low end is passed and high end is not
-    // are open; each low end overlaps every open interval.
-    overlapping.clear();
-    std::vector<int> open;
-    for (const Endpoint& e : ends) {
-      if (e.high) {
-        open.erase(std::find(open.begin(), open.end(), e.sphere));
-      } else {
-        for (int other : open) overlapping.push_back(ordered(other, e.sphere));
-        open.push_back(e.sphere);
-      }
-    }
-    std::sort(overlapping.begin(), overlapping.end());  // kept sorted from now on (below)
+    sweep_from_scratch(spheres, ends, overlapping);
   }
-  // Insertion sort. Each swap of a low end left past a high end makes their intervals
-  // overlap (+1); a high end left past a low end parts them (-1). The changes are noted
-  // here and applied to the set below, in one pass: finding a pair in the set at each
-  // swap would cost the whole set per swap.
-  std::vector<std::pair<std::array<int, 2>, int>> changes;
-  for (std::size_t k = 1; k < ends.size(); ++k)
-    for (std::size_t m = k; m > 0 && before(ends[m], ends[m - 1]); --m) {
-      const Endpoint& moving = ends[m];
-      const Endpoint& passed = ends[m - 1];
-      if (moving.sphere != passed.sphere && moving.high != passed.high)
-        changes.push_back({ordered(moving.sphere, passed.sphere), moving.high ? -1 : +1});
-      std::swap(ends[m], ends[m - 1]);
-      ++out.swaps;
-    }
-  // A sphere that jumped clear over another in one frame makes both changes to the pair:
-  // what counts is their sum.
-  std::sort(changes.begin(), changes.end());
-  std::vector<std::array<int, 2>> added, gone_pairs;  // both sorted
-  for (std::size_t k = 0; k < changes.size();) {
-    std::size_t next = k;
-    int sum = 0;
-    for (; next < changes.size() && changes[next].first == changes[k].first; ++next) sum += changes[next].second;
-    if (sum > 0) added.push_back(changes[k].first);
-    if (sum < 0) gone_pairs.push_back(changes[k].first);
-    k = next;
-  }
+  const auto [added, gone_pairs] = insertion_sort(ends, out);
   const auto test = [&](const std::array<int, 2>& p) {
     ++out.tests;
     if (given_balls_meet(spheres[std::size_t(p[0])], spheres[std::size_t(p[1])])) out.pairs.push_back(p);
@@ -991,17 +982,16 @@ void require_hash_input(const std::vector<Sphere>& spheres, double cell, int buc
   require_spheres("hashed_pairs", spheres);
   int exponent = 0;
   if (!(cell > 0) || !std::isfinite(cell) || std::frexp(cell, &exponent) != 0.5)
-    throw std::invalid_argument("hashed_pairs: cell must be a power of two, got " + text(cell));
-  if (buckets < 1 || buckets > (1 << 20))
-    throw std::invalid_argument("hashed_pairs: buckets must be from 1 to 2^20, got " + std::to_string(buckets));
+    reject("hashed_pairs", "cell", "be a power of two", text(cell));
+  if (buckets < 1 || buckets > (1 << 20)) reject("hashed_pairs", "buckets", "be from 1 to 2^20", text(buckets));
   for (std::size_t i = 0; i < spheres.size(); ++i) {
     const Sphere& s = spheres[i];
     if (!(2 * s.radius <= cell))
-      throw std::invalid_argument("hashed_pairs: cell must be at least every ball's diameter, got " + text(cell) +
-                                  " beside spheres[" + std::to_string(i) + "].radius = " + text(s.radius));
+      reject("hashed_pairs", "cell", "be at least every ball's diameter",
+             text(cell) + " beside spheres[" + std::to_string(i) + "].radius = " + text(s.radius));
     if (!(s.center.cwiseAbs().maxCoeff() / cell <= 0x1p60))
-      throw std::invalid_argument("hashed_pairs: spheres[" + std::to_string(i) +
-                                  "].center / cell must be at most 2^60 in every coordinate, got " + text(s.center));
+      reject("hashed_pairs", "spheres[" + std::to_string(i) + "].center / cell", "be at most 2^60 in every coordinate",
+             text(s.center));
   }
 }
 
@@ -1078,10 +1068,8 @@ bool closed_boxes_meet(const Aabb& a, const Aabb& b) {
 
 Octree build_octree(const std::vector<Sphere>& spheres, int capacity, int max_depth) {
   require_spheres("build_octree", spheres);
-  if (capacity < 1 || capacity > 64)
-    throw std::invalid_argument("build_octree: capacity must be from 1 to 64, got " + std::to_string(capacity));
-  if (max_depth < 0 || max_depth > 10)
-    throw std::invalid_argument("build_octree: max_depth must be from 0 to 10, got " + std::to_string(max_depth));
+  if (capacity < 1 || capacity > 64) reject("build_octree", "capacity", "be from 1 to 64", text(capacity));
+  if (max_depth < 0 || max_depth > 10) reject("build_octree", "max_depth", "be from 0 to 10", text(max_depth));
   Octree tree;
   tree.spheres = spheres;
   if (spheres.empty()) return tree;
@@ -1145,8 +1133,7 @@ BallsInBox balls_in_box(const Octree& tree, const Aabb& box) {
   require_finite("balls_in_box", "box.min", box.min);
   require_finite("balls_in_box", "box.max", box.max);
   if (!(box.min.array() <= box.max.array()).all())
-    throw std::invalid_argument("balls_in_box: box.min must be <= box.max, got " + text(box.min) + " and " +
-                                text(box.max));
+    reject("balls_in_box", "box.min", "be <= box.max", text(box.min) + " and " + text(box.max));
   BallsInBox out;
   if (tree.nodes.empty()) return out;
   ++out.cell_tests;

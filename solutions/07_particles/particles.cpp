@@ -8,6 +8,8 @@
 // not just nearly.
 #include "particles.h"
 
+#include "common/preconditions.h"
+
 #include "common/given/segment_triangle.h"
 
 #include <algorithm>
@@ -30,47 +32,25 @@ constexpr double kPi = 3.14159265358979323846;
 // before anything is computed: a NaN would otherwise flow through every formula and come
 // out as a NaN position, and a zero mass as an infinite acceleration.
 
-std::string text(double x) {
-  std::ostringstream out;
-  out << std::setprecision(17) << x;
-  return out.str();
-}
-std::string text(const Vec3& v) { return "(" + text(v.x()) + ", " + text(v.y()) + ", " + text(v.z()) + ")"; }
-
-template <class Value>
-void require(bool ok, const char* query, const std::string& argument, const char* rule, const Value& got) {
-  if (!ok) throw std::invalid_argument(std::string(query) + ": " + argument + " " + rule + ", got " + text(got));
-}
-
-void require_finite(const char* query, const std::string& argument, const Vec3& v) {
-  require(v.allFinite(), query, argument, "must be finite", v);
-}
-void require_finite(const char* query, const std::string& argument, double x) {
-  require(std::isfinite(x), query, argument, "must be finite", x);
-}
-void require_positive(const char* query, const std::string& argument, double x) {
-  require(std::isfinite(x) && x > 0, query, argument, "must be finite and > 0", x);
-}
-void require_not_negative(const char* query, const std::string& argument, double x) {
-  require(std::isfinite(x) && x >= 0, query, argument, "must be finite and >= 0", x);
-}
+using namespace preconditions;
+using preconditions::require_valid;  // beside the overloads for this lab's types below
 
 void require_valid(const char* query, const std::string& name, const Emitter& e) {
   for (const auto& [field, v] :
        {std::pair{"position", e.position}, {"half_extents", e.half_extents}, {"direction", e.direction}})
     require_finite(query, name + "." + field, v);
-  require((e.half_extents.array() >= 0).all(), query, name + ".half_extents", "must be >= 0", e.half_extents);
-  require(e.direction != Vec3::Zero(), query, name + ".direction", "must be non-zero", e.direction);
-  require(e.cone >= 0 && e.cone <= kPi, query, name + ".cone", "must be in [0, pi]", e.cone);
-  require_not_negative(query, name + ".speed_spread", e.speed_spread);
-  require(std::isfinite(e.speed) && e.speed >= e.speed_spread, query, name + ".speed",
-          "must be finite and >= speed_spread", e.speed);
-  require_not_negative(query, name + ".lifetime_spread", e.lifetime_spread);
+  require((e.half_extents.array() >= 0).all(), query, name + ".half_extents", "be >= 0", e.half_extents);
+  require(e.direction != Vec3::Zero(), query, name + ".direction", "be non-zero", e.direction);
+  require(e.cone >= 0 && e.cone <= kPi, query, name + ".cone", "be in [0, pi]", e.cone);
+  require_size(query, name + ".speed_spread", e.speed_spread);
+  require(std::isfinite(e.speed) && e.speed >= e.speed_spread, query, name + ".speed", "be finite and >= speed_spread",
+          e.speed);
+  require_size(query, name + ".lifetime_spread", e.lifetime_spread);
   require(std::isfinite(e.lifetime) && e.lifetime >= e.lifetime_spread, query, name + ".lifetime",
-          "must be finite and >= lifetime_spread", e.lifetime);
+          "be finite and >= lifetime_spread", e.lifetime);
   require_positive(query, name + ".mass", e.mass);
-  require_not_negative(query, name + ".rate", e.rate);
-  require(e.owed >= 0 && e.owed < 1, query, name + ".owed", "must be in [0, 1)", e.owed);
+  require_size(query, name + ".rate", e.rate);
+  require(e.owed >= 0 && e.owed < 1, query, name + ".owed", "be in [0, 1)", e.owed);
 }
 
 void require_valid(const char* query, const std::string& name, const Particle& p) {
@@ -84,13 +64,8 @@ void require_valid(const char* query, const std::string& name, const Particle& p
 
 void require_valid(const char* query, const Forces& f) {
   require_finite(query, "forces.gravity", f.gravity);
-  require_not_negative(query, "forces.drag", f.drag);
-  require_not_negative(query, "forces.air_drag", f.air_drag);
-}
-
-void require_valid(const char* query, const Segment& s, const std::string& name = "segment") {
-  require_finite(query, name + ".a", s.a);
-  require_finite(query, name + ".b", s.b);
+  require_size(query, "forces.drag", f.drag);
+  require_size(query, "forces.air_drag", f.air_drag);
 }
 
 void require_valid(const char* query, const Plane& p, const std::string& name = "plane") {
@@ -99,28 +74,18 @@ void require_valid(const char* query, const Plane& p, const std::string& name = 
 }
 
 void require_valid(const char* query, const Material& m) {
-  require_not_negative(query, "material.restitution", m.restitution);
-  require_not_negative(query, "material.friction", m.friction);
+  require_size(query, "material.restitution", m.restitution);
+  require_size(query, "material.friction", m.friction);
 }
 
 void require_valid(const char* query, const Scene& scene) {
   for (std::size_t i = 0; i < scene.planes.size(); ++i)
     require_valid(query, scene.planes[i], "scene.planes[" + std::to_string(i) + "]");
-  // A mesh has thousands of vertices: each is checked, and a name is built only for
-  // the one that breaks the rule.
-  for (std::size_t i = 0; i < scene.mesh.vertices.size(); ++i)
-    if (!scene.mesh.vertices[i].allFinite())
-      require_finite(query, "scene.mesh.vertices[" + std::to_string(i) + "]", scene.mesh.vertices[i]);
-  const double count = double(scene.mesh.vertices.size());
-  for (std::size_t i = 0; i < scene.mesh.size(); ++i)
-    for (const int v : scene.mesh.triangles[i])
-      if (!(v >= 0 && v < count))
-        require(false, query, "scene.mesh.triangles[" + std::to_string(i) + "]",
-                "must index vertices (0 to vertices.size() - 1)", double(v));
+  require_valid(query, "scene.mesh", scene.mesh);
   require_valid(query, scene.material);
   require_finite(query, "scene.velocity", scene.velocity);
   require(scene.bounce_cap >= 0 && scene.bounce_cap <= kMaxBounceCap, query, "scene.bounce_cap",
-          "must be in [0, kMaxBounceCap]", double(scene.bounce_cap));
+          "be in [0, kMaxBounceCap]", double(scene.bounce_cap));
 }
 
 }  // namespace
@@ -152,7 +117,7 @@ Particle emit(const Emitter& emitter, Random& random) {
 // second, rate * dt = 1/6 rounds down to 0 every single step.
 Births births(const Emitter& emitter, double dt) {
   require_valid("births", "emitter", emitter);
-  require_not_negative("births", "dt", dt);
+  require_size("births", "dt", dt);
   const double due = emitter.owed + emitter.rate * dt;
   const double whole = std::floor(due);
   // mutant: births_drop_fraction
@@ -160,7 +125,7 @@ Births births(const Emitter& emitter, double dt) {
 }
 
 std::vector<Particle> age(std::vector<Particle> particles, double dt) {
-  require_not_negative("age", "dt", dt);
+  require_size("age", "dt", dt);
   for (std::size_t i = 0; i < particles.size(); ++i) {
     require_finite("age", "particles[" + std::to_string(i) + "].age", particles[i].age);
     require_finite("age", "particles[" + std::to_string(i) + "].lifetime", particles[i].lifetime);
@@ -243,7 +208,7 @@ Particle verlet_step(const Particle& p, const Forces& forces, double dt) {
 Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity) {
   require_finite("aim", "from", from);
   require_finite("aim", "target", target);
-  require_not_negative("aim", "speed", speed);
+  require_size("aim", "speed", speed);
   require_finite("aim", "gravity", gravity);
   const Vec3 d = target - from;
   const double gx_squared = d.cross(gravity).squaredNorm();
@@ -303,7 +268,7 @@ Signed plane_value(const Plane& plane, const Vec3& x) {
 // zero at t = value(a) / (value(a) - value(b)), a division without cancellation because
 // the two values have opposite signs (or value(a) = 0: t = 0).
 SurfaceHit hit_plane(const Segment& segment, const Plane& plane) {
-  require_valid("hit_plane", segment);
+  require_valid("hit_plane", "segment", segment);
   require_valid("hit_plane", plane);
   const double length = plane.normal.norm();
   if (length == 0) return {};  // a zero normal: no plane
@@ -327,7 +292,7 @@ SurfaceHit hit_plane(const Segment& segment, const Plane& plane) {
 // Two-sided: the side the particle comes from is the side a is on, decided from input
 // numbers before the given watertight test builds anything.
 SurfaceHit hit_triangle(const Segment& segment, const Triangle& triangle) {
-  require_valid("hit_triangle", segment);
+  require_valid("hit_triangle", "segment", segment);
   for (int i = 0; i < 3; ++i) require_finite("hit_triangle", "triangle.v" + std::to_string(i), triangle[i]);
   const Vec3 n = triangle.normal();
   const double side = n.dot(segment.a - triangle.v0);
@@ -380,7 +345,7 @@ SurfaceHit first_hit_in(const Segment& segment, const Scene& scene) {
 }  // namespace
 
 SurfaceHit first_hit(const Segment& segment, const Scene& scene) {
-  require_valid("first_hit", segment);
+  require_valid("first_hit", "segment", segment);
   require_valid("first_hit", scene);
   return first_hit_in(segment, scene);
 }
@@ -403,8 +368,8 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
   require_finite("impulse", "velocity", velocity);
   require_finite("impulse", "object_velocity", object_velocity);
   // The formulas take n . n = 1; a normal of another length scales v_close and j_n.
-  require(normal.allFinite() && std::abs(normal.squaredNorm() - 1) <= 1e-9, "impulse", "normal",
-          "must be a unit vector", normal);
+  require(normal.allFinite() && std::abs(normal.squaredNorm() - 1) <= 1e-9, "impulse", "normal", "be a unit vector",
+          normal);
   require_positive("impulse", "mass", mass);
   require_valid("impulse", material);
   Impulse r;
@@ -446,7 +411,7 @@ Collision collide_in(const Segment& step, const Vec3& velocity, double mass, dou
 }  // namespace
 
 Collision collide(const Segment& step, const Vec3& velocity, double mass, double dt, const Scene& scene) {
-  require_valid("collide", step, "step");
+  require_valid("collide", "step", step);
   require_finite("collide", "velocity", velocity);
   require_positive("collide", "mass", mass);
   require_positive("collide", "dt", dt);
@@ -553,20 +518,33 @@ Vec3 away_from(const std::vector<Vec3>& normals) {
 //   plus some offset along the normal") by a skin of a few rounding errors, doubled until
 //   nothing is in doubt. Pushing away from all of them together works even in an acute
 //   crease, where pushing off one would push behind the other.
-Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
-  const bool last_triangle = last.hit && last.triangle >= 0 && std::size_t(last.triangle) < scene.mesh.size();
-  const Triangle tri = last_triangle ? scene.mesh.triangle(std::size_t(last.triangle)) : Triangle{};
-  const double facing = last_triangle && last.normal.dot(tri.normal()) < 0 ? -1.0 : 1.0;
-  const double tri_length = tri.normal().norm();
+// How p stands to one surface: certainly fine, or in doubt, with how far behind it is
+// (deficit) and its rounding bound (error), both as distances.
+struct Standing {
+  bool doubt = false;
+  double deficit = 0.0;
+  double error = 0.0;
+};
 
-  // How p stands to plane i, or to the last triangle: certainly fine, or in doubt, with
-  // how far behind it is (deficit) and its rounding bound (error), both as distances.
-  struct Standing {
-    bool doubt = false;
-    double deficit = 0.0;
-    double error = 0.0;
-  };
-  const auto plane_standing = [&](std::size_t i, const Vec3& p) {
+// The surfaces settle_in keeps a point in front of: the scene's planes, and the triangle
+// just hit (seen from the side the particle came from).
+struct Surfaces {
+  const Scene& scene;
+  const SurfaceHit& last;
+  bool last_triangle;
+  Triangle tri;
+  double facing;
+  double tri_length;
+
+  Surfaces(const Scene& scene, const SurfaceHit& last)
+      : scene(scene),
+        last(last),
+        last_triangle(last.hit && last.triangle >= 0 && std::size_t(last.triangle) < scene.mesh.size()),
+        tri(last_triangle ? scene.mesh.triangle(std::size_t(last.triangle)) : Triangle{}),
+        facing(last_triangle && last.normal.dot(tri.normal()) < 0 ? -1.0 : 1.0),
+        tri_length(tri.normal().norm()) {}
+
+  Standing plane(std::size_t i, const Vec3& p) const {
     const Plane& plane = scene.planes[i];
     const Signed s = plane_value(plane, p);
     // mutant: hit_plane_not_strict
@@ -574,27 +552,36 @@ Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
     if (strict ? s.value > s.error : s.value >= s.error) return Standing{};  // certainly fine
     const double length = plane.normal.norm();
     return Standing{true, std::max(0.0, -s.value / length), s.error / length};
-  };
-  const auto triangle_standing = [&](const Vec3& p) {
+  }
+  Standing triangle(const Vec3& p) const {
     const Signed s = triangle_value(tri, p);
     if (facing * s.value > s.error) return Standing{};  // certainly in front, on the facing side
     return Standing{true, std::max(0.0, -facing * s.value / tri_length), s.error / tri_length};
-  };
-
+  }
   // Most of the time nothing is in doubt: a particle in the open, or well off what it hit.
-  bool all_fine = !last_triangle || !triangle_standing(x).doubt;
-  for (std::size_t i = 0; i < scene.planes.size() && all_fine; ++i) all_fine = !plane_standing(i, x).doubt;
-  if (all_fine) return x;
-
+  bool all_fine(const Vec3& x) const {
+    bool fine = !last_triangle || !triangle(x).doubt;
+    for (std::size_t i = 0; i < scene.planes.size() && fine; ++i) fine = !plane(i, x).doubt;
+    return fine;
+  }
   // The planes to keep x in front of: all but those it is clearly behind (by more than a
   // thousand rounding errors), which it was behind before; they are not ours to fix.
-  std::vector<bool> keep(scene.planes.size(), false);
-  for (std::size_t i = 0; i < scene.planes.size(); ++i) {
-    const Signed s = plane_value(scene.planes[i], x);
-    // mutant: settles_off_last_only
-    keep[i] =
-        scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));
+  std::vector<bool> kept(const Vec3& x) const {
+    std::vector<bool> keep(scene.planes.size(), false);
+    for (std::size_t i = 0; i < scene.planes.size(); ++i) {
+      const Signed s = plane_value(scene.planes[i], x);
+      // mutant: settles_off_last_only
+      keep[i] =
+          scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));
+    }
+    return keep;
   }
+};
+
+Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
+  const Surfaces surfaces(scene, last);
+  if (surfaces.all_fine(x)) return x;
+  const std::vector<bool> keep = surfaces.kept(x);
 
   // Push away from every surface found in doubt so far: once a surface has needed a push
   // it keeps getting one, so that in a crease two surfaces are pushed off together instead
@@ -604,36 +591,33 @@ Vec3 settle_in(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
   std::vector<bool> pushed(scene.planes.size(), false);
   bool pushed_triangle = false;
   for (int round = 0; round < 40; ++round) {
-    bool doubt = false;
-    double deficit = 0, error = 0;
+    Standing worst;  // doubt if any surface is in doubt; the largest deficit and error
     const auto note = [&](const Standing& st) {
-      doubt = true;
-      deficit = std::max(deficit, st.deficit);
-      error = std::max(error, st.error);
+      worst = {true, std::max(worst.deficit, st.deficit), std::max(worst.error, st.error)};
     };
     for (std::size_t i = 0; i < scene.planes.size(); ++i) {
       if (!keep[i]) continue;
-      const Standing st = plane_standing(i, p);
+      const Standing st = surfaces.plane(i, p);
       if (!st.doubt) continue;
       note(st);
       pushed[i] = true;
     }
-    if (last_triangle) {
-      const Standing st = triangle_standing(p);
+    if (surfaces.last_triangle) {
+      const Standing st = surfaces.triangle(p);
       if (st.doubt) {
         note(st);
         pushed_triangle = true;
       }
     }
-    if (!doubt) return p;
+    if (!worst.doubt) return p;
     std::vector<Vec3> normals;
-    if (pushed_triangle) normals.push_back(facing * tri.normal() / tri_length);
+    if (pushed_triangle) normals.push_back(surfaces.facing * surfaces.tri.normal() / surfaces.tri_length);
     for (std::size_t i = 0; i < scene.planes.size(); ++i)
       if (pushed[i]) normals.push_back(scene.planes[i].normal.normalized());
     const Vec3 away = away_from(normals);
     if (away == Vec3::Zero()) return p;  // surfaces facing each other with no room between
     // At least a few ulps of p: a smaller push would not move it at all.
-    p += (deficit + std::ldexp(4 * error + 0x1p-50 * std::max(largest(p), 1e-290), round)) * away;
+    p += (worst.deficit + std::ldexp(4 * worst.error + 0x1p-50 * std::max(largest(p), 1e-290), round)) * away;
   }
   return p;  // a corner too sharp to get out of by small pushes: give up near x
 }
@@ -647,10 +631,10 @@ Vec3 settle(const Vec3& x, const Scene& scene, const SurfaceHit& last) {
     const bool plane = last.plane >= 0 && std::size_t(last.plane) < scene.planes.size();
     const bool triangle = last.triangle >= 0 && std::size_t(last.triangle) < scene.mesh.size();
     require(plane != triangle, "settle", "last",
-            "must name one plane or one triangle of the scene when last.hit (plane, triangle)",
+            "name one plane or one triangle of the scene when last.hit (plane, triangle)",
             Vec3(last.plane, last.triangle, 0));
-    require(last.normal.allFinite() && last.normal != Vec3::Zero(), "settle", "last.normal",
-            "must be finite and non-zero", last.normal);
+    require(last.normal.allFinite() && last.normal != Vec3::Zero(), "settle", "last.normal", "be finite and non-zero",
+            last.normal);
   }
   return settle_in(x, scene, last);
 }
@@ -701,9 +685,9 @@ void System::step(double dt) {
 Vec3 spring_force(const Particle& a, const Particle& b, const Spring& spring) {
   require_valid("spring_force", "a", a);
   require_valid("spring_force", "b", b);
-  require_not_negative("spring_force", "spring.stiffness", spring.stiffness);
-  require_not_negative("spring_force", "spring.damping", spring.damping);
-  require_not_negative("spring_force", "spring.rest_length", spring.rest_length);
+  require_size("spring_force", "spring.stiffness", spring.stiffness);
+  require_size("spring_force", "spring.damping", spring.damping);
+  require_size("spring_force", "spring.rest_length", spring.rest_length);
   // mutant: spring_force_on_b
   const Vec3 d = a.position - b.position;
   const double l = d.norm();
@@ -729,9 +713,8 @@ void require_valid(const char* query, const std::string& name, const RigidBody& 
   const bool symmetric = m.allFinite() && m(0, 1) == m(1, 0) && m(0, 2) == m(2, 0) && m(1, 2) == m(2, 1);
   const bool diagonal = m(0, 0) >= 0 && m(1, 1) >= 0 && m(2, 2) >= 0;
   if (!symmetric || !diagonal)
-    throw std::invalid_argument(std::string(query) + ": " + name +
-                                ".inverse_inertia must be finite, symmetric, with a diagonal >= 0, got rows " +
-                                text(Vec3(m.row(0))) + " " + text(Vec3(m.row(1))) + " " + text(Vec3(m.row(2))));
+    reject(query, name + ".inverse_inertia", "be finite, symmetric, with a diagonal >= 0",
+           "rows " + text(Vec3(m.row(0))) + " " + text(Vec3(m.row(1))) + " " + text(Vec3(m.row(2))));
 }
 
 }  // namespace
@@ -752,9 +735,9 @@ RigidImpulse rigid_impulse(const RigidBody& a, const RigidBody& b, const Contact
   require_valid("rigid_impulse", "b", b);
   require_finite("rigid_impulse", "contact.point", contact.point);
   const Vec3& n = contact.normal;
-  require(n.allFinite() && std::abs(n.squaredNorm() - 1) <= 1e-9, "rigid_impulse", "contact.normal",
-          "must be a unit vector", n);
-  require_not_negative("rigid_impulse", "contact.restitution", contact.restitution);
+  require(n.allFinite() && std::abs(n.squaredNorm() - 1) <= 1e-9, "rigid_impulse", "contact.normal", "be a unit vector",
+          n);
+  require_size("rigid_impulse", "contact.restitution", contact.restitution);
   RigidImpulse out;
   out.velocity_a = a.velocity, out.angular_velocity_a = a.angular_velocity;
   out.velocity_b = b.velocity, out.angular_velocity_b = b.angular_velocity;

@@ -724,15 +724,15 @@ TEST_CASE("L02 preconditions: invalid input throws std::invalid_argument naming 
     bad_vertex.vertices[1] = p;
     rejects("velocity_a", [&] { answerer::first_contact_moving_meshes(floor, p, floor, Vec3::Zero()); });
     rejects("velocity_b", [&] { answerer::first_contact_moving_meshes(floor, Vec3::Zero(), floor, p); });
-    rejects("mesh.vertices[1]",
+    rejects("a.vertices[1]",
             [&] { answerer::first_contact_moving_meshes(bad_vertex, Vec3::Zero(), floor, Vec3::Zero()); });
-    rejects("mesh.vertices[1]",
+    rejects("b.vertices[1]",
             [&] { answerer::first_contact_moving_meshes(floor, Vec3::Zero(), bad_vertex, Vec3::Zero()); });
   }
   {
     Mesh bad_index = floor;
     bad_index.triangles[0][1] = 7;
-    rejects("mesh.triangles[0]",
+    rejects("a.triangles[0]",
             [&] { answerer::first_contact_moving_meshes(bad_index, Vec3::Zero(), floor, Vec3::Zero()); });
   }
   RigidTransform stretched = RigidTransform::Identity();
