@@ -58,30 +58,6 @@ const std::vector<Preset> kPresets = {
 
 // ---- setup ---------------------------------------------------------------------------
 
-namespace {
-
-// The "walk" figure: 48 small tilted triangles in a thin slab, seen from above, so that
-// the cells are rectangles (a fixed stream of numbers, drawn in this order).
-Mesh walk_mesh() {
-  Mesh mesh;
-  std::uint64_t state = 7;
-  const auto next = [&state] {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return double(state >> 11) / double(1ULL << 53);
-  };
-  for (int i = 0; i < 24; ++i) {
-    const double x = 0.5 + 7 * next(), y = 0.3 + 3.4 * next(), a = 2 * M_PI * next();  // in this order
-    const Vec3 c(x, y, 0);
-    const int base = int(mesh.vertices.size());
-    for (int k = 0; k < 3; ++k)
-      mesh.vertices.push_back(c + Vec3(0.35 * std::cos(a + 2.1 * k), 0.35 * std::sin(a + 2.1 * k), 0.12 * (k - 1)));
-    mesh.triangles.push_back({base, base + 1, base + 2});
-  }
-  return mesh;
-}
-
-}  // namespace
-
 SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
   const Preset* preset = view_preset(kPresets, setup);
   if (setup.token.empty() && (!preset || !preset->token)) {
@@ -91,51 +67,6 @@ SpatialTreesScene::SpatialTreesScene(const Setup& setup) {
     load(parse_token(starting_token(setup, kPresets, "")));
   }
   frame_inputs();
-}
-
-// A preset without a token: the handout's figures and the scene's own examples.
-void SpatialTreesScene::set_up_figure(const std::string& name) {
-  if (name == "walk") {  // a segment across walk_mesh()
-    mesh_ = walk_mesh();
-    segment_ = {{-0.3, 3.9, 0.02}, {8.3, 0.6, -0.02}};
-  } else if (name == "split") {  // the handout's floor and wall
-    mode_ = Mode::bsp;
-    mesh_.vertices = {{0, 0, 0}, {8, 0, 0}, {0, 8, 0}, {2, 0, -2}, {2, 0, 2}, {2, 4, 0}};
-    mesh_.triangles = {{0, 1, 2}, {3, 4, 5}};
-    point_ = {6, 6, 3};
-  } else if (name == "sweep") {  // the handout's A, R, B, C
-    mode_ = Mode::spheres;
-    spheres_ = {{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}};
-  } else if (name == "bvh") {  // two spheres, overlapping in part
-    mode_ = Mode::bvh;
-    mesh_ = gen::sphere_mesh(40, {0, 0, 0}, 1);
-    mesh_b_ = gen::sphere_mesh(40, {1.3, 0.3, 0.1}, 0.8);
-    tree_seed_ = 3, tree_seed_b_ = 5;
-  } else if (name == "coherence") {  // step 6's example: the lecture's A R B C, then C moves 2 to the left
-    mode_ = Mode::frames;
-    frames_ = {{{{1, 0, 0}, 1}, {{5, 0, 0}, 2}, {{9, 3, 0}, 4}, {{9, 9, 0}, 1}}};
-    frames_.push_back(frames_[0]);
-    frames_[1][3].center = {7, 9, 0};
-    spheres_ = frames_.back();
-  } else if (name == "handout") {  // A leans across x = 4, B stands in x = 5
-    mesh_.vertices = {{8, -1, 0}, {8, 3, 0}, {2, 1, 3}, {5, 0, 0}, {5, 3, 0}, {5, 0, 3}};
-    mesh_.triangles = {{0, 1, 2}, {3, 4, 5}};
-    segment_ = {{0, 1, 1}, {8, 1, 1}};
-  } else if (name == "terrain") {
-    mesh_ = gen::terrain_mesh(20000, 3);
-    segment_ = {{0.05, 0.1, 0.3}, {0.95, 0.85, -0.2}};
-  } else if (name == "bsp") {
-    mode_ = Mode::bsp;
-    mesh_ = gen::voxel_mesh({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, Vec3::Zero(), 2.0);
-    point_ = {3, 3, 1};
-  } else if (name == "hash" || name == "octree") {
-    set_up_extension(name);
-  } else if (name == "spheres") {
-    mode_ = Mode::spheres;
-    spheres_ = gen::spread_spheres(60, 10, 0.3, 1.2, 5);
-  } else {
-    mesh_ = gen::torus_mesh(2048, Vec3(0.5, 0.5, 0.5), 0.35, 0.12);
-  }
 }
 
 // A replay token, or a preset's: the input of the query it names.

@@ -12,15 +12,6 @@ namespace viewer::spatial_trees {
 
 namespace {
 
-// A repeatable draw in [0, 1): the figures look the same on every machine.
-struct Draw {
-  std::uint64_t state;
-  double operator()() {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return double(state >> 11) / double(1ULL << 53);
-  }
-};
-
 const Color kBucketColours[] = {{0.95f, 0.55f, 0.25f}, {0.35f, 0.75f, 0.95f}, {0.85f, 0.45f, 0.85f},
                                 {0.95f, 0.85f, 0.30f}, {0.45f, 0.85f, 0.65f}, {0.95f, 0.45f, 0.55f},
                                 {0.60f, 0.60f, 0.95f}, {0.75f, 0.75f, 0.55f}};
@@ -31,31 +22,6 @@ Cell cell_at(const Vec3& p, double side) {
 }
 
 }  // namespace
-
-// ---- setup ---------------------------------------------------------------------------
-
-void SpatialTreesScene::set_up_extension(const std::string& preset) {
-  Draw next{preset == "hash" ? 11u : 23u};
-  if (preset == "hash") {  // 14 balls in the plane z = 1, cells of side 2, 4 buckets
-    mode_ = Mode::hash;
-    hash_cell_ = 2, hash_buckets_ = 4;
-    for (int i = 0; i < 14; ++i) {
-      const double x = 0.3 + 9.4 * next(), y = 0.3 + 5.4 * next(), r = 0.35 + 0.55 * next();  // in this order
-      spheres_.push_back({{x, y, 1}, r});
-    }
-    return;
-  }
-  // Two clusters and a lone ball in the plane z = 0: the tree cuts deep at the clusters.
-  mode_ = Mode::octree;
-  capacity_ = 2, max_depth_ = 5;
-  for (const Vec3& centre : {Vec3(1.5, 1.5, 0), Vec3(12.5, 8.5, 0)})
-    for (int i = 0; i < 8; ++i) {
-      const double x = centre.x() + 3.6 * (next() - 0.5), y = centre.y() + 3.6 * (next() - 0.5);
-      spheres_.push_back({{x, y, 0}, 0.2 + 0.15 * next()});
-    }
-  spheres_.push_back({{12, 2, 0}, 0.4});
-  query_box_ = {{12.4, 8.4, -1}, {14.2, 10.2, 1}};
-}
 
 // ---- update --------------------------------------------------------------------------
 
