@@ -10,7 +10,8 @@
 //
 //  - counted: a public, pure test (its code is in the kit for anyone to read). The
 //    answerer writes a "counted" frame on fd 4 and computes the result itself; the judge
-//    counts the frame. No round trip, so a query's thousands of tests stay cheap.
+//    counts the frame. No round trip, and the frames go out together with the next frame
+//    the judge waits for (or 64 KB at a time), so a query's thousands of tests stay cheap.
 //  - served: the answerer cannot compute the result (lab 04's recording motion reaches
 //    it as a bare number). It writes a "given" frame on 4 and waits; the judge computes
 //    the result, writes down what the verdict needs (the time asked for), and sends the
