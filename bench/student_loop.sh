@@ -116,6 +116,11 @@ say "the release rehearsal alone (load $(load))"
 release_time=$(seconds "$WORK/release.log" ctest --test-dir build -L release --output-on-failure)
 release_cpu=$(cpu "$WORK/release.log")
 release_summary=$(grep -E "tests passed|tests failed" "$WORK/release.log" | tail -n 1)
+if [ "$(cat "$WORK/release.log.status")" != 0 ]; then
+  say "the release rehearsal failed:"
+  grep -E "FAIL|exits|error" "$WORK/release.log" | head -n 40 >&2 || tail -n 40 "$WORK/release.log" >&2
+  cp "$WORK/release.log" "${OUT%.md}.release.log" && say "its whole log: ${OUT%.md}.release.log"
+fi
 
 # The help is read whole first: `grep -q` would close the pipe early, and under pipefail
 # the help's SIGPIPE read as "no grade command here".
