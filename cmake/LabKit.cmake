@@ -108,6 +108,7 @@ function(labkit_add_lab number name)
     target_link_libraries(${lab}_judge PUBLIC given_${stem})
   endif()
   labkit_kit_code(${lab}_judge)
+  target_precompile_headers(${lab}_judge REUSE_FROM labkit_judge_pch)
 
   # The lab's list of calls (tests/NN_name/wire.h), expanded on both sides of the pipe.
   set(wire_definitions LABKIT_LAB_WIRE="${stem}/wire.h" LABKIT_LAB_NAMESPACE=${lab}
@@ -128,6 +129,7 @@ function(labkit_add_lab number name)
   add_executable(test_${stem} "${PROJECT_SOURCE_DIR}/tests/${stem}/test.cpp")
   target_link_libraries(test_${stem} PRIVATE ${lab}_judge ${lab}_calls labkit_catch_main)
   labkit_kit_code(test_${stem} -O0)
+  target_precompile_headers(test_${stem} REUSE_FROM labkit_test_pch)
   labkit_kit_code(${lab}_calls)
 
   foreach(impl IN LISTS implementations)
