@@ -149,8 +149,9 @@ double power_of_two_at_least(double x) {
 // pass 2^31. Within a cluster every number is an integer times the unit, far below 2^53:
 // given_balls_meet is exact there and the case is judged exactly. The other half are
 // step 5's sets (judged with the ambiguity rule). The cell is the smallest power of two
-// holding the largest diameter, or 2 or 4 times that; the buckets from 1 (every cell in
-// one bucket) to thousands.
+// holding the largest diameter, or 2 or 4 times that, and never so small that a centre's
+// cell coordinate passes the header's 2^60; the buckets from 1 (every cell in one bucket)
+// to thousands.
 rc::Gen<lab06::HashCase> hash_case() {
   return rc::gen::exec([] {
     lab06::HashCase c;
@@ -176,6 +177,9 @@ rc::Gen<lab06::HashCase> hash_case() {
       r_max = std::max(r_max, s.radius), reach = std::max(reach, s.center.cwiseAbs().maxCoeff());
     c.cell = r_max > 0 ? power_of_two_at_least(2 * r_max) : power_of_two_at_least(std::max(reach, 1.0) / 64);
     c.cell *= *rc::gen::element(1.0, 1.0, 2.0, 4.0);
+    // The header's bound, |coordinate| / cell <= 2^60: a cluster far out and a tiny ball
+    // elsewhere would break it. A larger cell (still a power of two >= 2 r_max) keeps it.
+    while (reach / c.cell > std::ldexp(1.0, 60)) c.cell *= 2;
     c.buckets = *rc::gen::element(1, 2, 3, 7, 64, 1021, 4096);
     return c;
   });
