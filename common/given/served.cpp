@@ -70,10 +70,12 @@ bool write_all(int fd, const std::string& bytes) {
 std::string unsent;
 constexpr std::size_t kUnsentLimit = std::size_t(1) << 16;
 
-void append_frame(const std::string& payload) {
+// A payload as it goes on the pipe: its 8-byte length, then its bytes.
+std::string framed(const std::string& payload) {
   const std::uint64_t n = payload.size();
-  unsent.append(reinterpret_cast<const char*>(&n), sizeof n).append(payload);
+  return std::string(reinterpret_cast<const char*>(&n), sizeof n) + payload;
 }
+void append_frame(const std::string& payload) { unsent += framed(payload); }
 
 bool flush_unsent() {
   std::string bytes;
@@ -81,11 +83,12 @@ bool flush_unsent() {
   return write_all(kAnswers, bytes);
 }
 
-// A counted frame (a given call's name, or a part's start), sent with the next write.
-void send_counted(const std::string& bytes) {
-  append_frame(std::string(1, char(kCountedFrame)) + bytes);
+// A counted frame, already framed, sent with the next write (or now, past 64 KB).
+void send_counted(const std::string& frame) {
+  unsent += frame;
   if (unsent.size() >= kUnsentLimit && !flush_unsent()) std::_Exit(0);
 }
+std::string counted(const std::string& bytes) { return framed(std::string(1, char(kCountedFrame)) + bytes); }
 
 // A given call's counted frame, framed once per name: a brute force makes millions.
 const std::string& counted_frame(const char* name) {
@@ -94,9 +97,7 @@ const std::string& counted_frame(const char* name) {
   if (frame.empty()) {
     wire::Writer w;
     wire::put(w, std::string(name));
-    const std::string payload = std::string(1, char(kCountedFrame)) + w.bytes();
-    const std::uint64_t n = payload.size();
-    frame.assign(reinterpret_cast<const char*>(&n), sizeof n).append(payload);
+    frame = counted(w.bytes());
   }
   return frame;
 }
@@ -148,17 +149,14 @@ void start_part(wire::Reader& in, Served& served) {
 bool served() { return serving; }
 void serve_from_judge() { serving = true; }
 
-void count(const char* name) {
-  unsent.append(counted_frame(name));
-  if (unsent.size() >= kUnsentLimit && !flush_unsent()) std::_Exit(0);
-}
+void count(const char* name) { send_counted(counted_frame(name)); }
 
 void part(int index) {
   if (!served()) return;
   wire::Writer w;
   wire::put(w, std::string("part"));
   wire::put(w, index);
-  send_counted(w.bytes());
+  send_counted(counted(w.bytes()));
 }
 
 bool write_frame(const std::string& payload) {
