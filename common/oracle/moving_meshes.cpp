@@ -162,30 +162,51 @@ ContactNormal normal_of(const V& e, const V& f) {
   return {Vec3(rounded(n.x()), rounded(n.y()), rounded(n.z())) / nn, false, std::max(1.0, ee * ff / nn)};
 }
 
-// Exact: the segment s meets the closed set the segment (p0, p1) sweeps along w, for s
-// and p0 p1 in any position (the swept set may be a parallelogram, a segment or a point).
-bool meets_swept(const Epeck::Segment_3& s, const P& p0, const P& p1, const V& w) {
+// Exact: whether the segment s (perhaps a point) comes within sqrt(r2) of the closed
+// triangle (not degenerate); r2 = 0 asks whether they meet. Apart, the closest pair has
+// an end of s or a point of a side of the triangle.
+bool near_triangle(const Epeck::Segment_3& s, const Epeck::Triangle_3& tri, const FT& r2) {
+  if (s.is_degenerate() ? tri.has_on(s.source()) : CGAL::do_intersect(s, tri)) return true;
+  if (CGAL::is_zero(r2)) return false;
+  if (s.is_degenerate()) return CGAL::squared_distance(s.source(), tri) <= r2;
+  if (CGAL::squared_distance(s.source(), tri) <= r2 || CGAL::squared_distance(s.target(), tri) <= r2) return true;
+  for (int i = 0; i < 3; ++i)
+    if (CGAL::squared_distance(s, Epeck::Segment_3(tri[i], tri[(i + 1) % 3])) <= r2) return true;
+  return false;
+}
+
+// Exact: whether the segment s (not degenerate) comes within sqrt(r2) of the segment side
+// (perhaps a point).
+bool near_segment(const Epeck::Segment_3& s, const Epeck::Segment_3& side, const FT& r2) {
+  if (side.is_degenerate()) return CGAL::squared_distance(side.source(), s) <= r2;
+  return CGAL::is_zero(r2) ? CGAL::do_intersect(s, side) : CGAL::squared_distance(s, side) <= r2;
+}
+
+// Exact: the segment s comes within sqrt(r2) of (r2 = 0: meets) the closed set the
+// segment (p0, p1) sweeps along w, for s and p0 p1 in any position (the swept set may be
+// a parallelogram, a segment or a point).
+bool near_swept(const Epeck::Segment_3& s, const P& p0, const P& p1, const V& w, const FT& r2) {
   const P corners[4] = {p0, p1, p1 + w, p0 + w};
   if (!CGAL::collinear(corners[0], corners[1], corners[2]) || !CGAL::collinear(corners[0], corners[2], corners[3])) {
-    const auto meets = [&](const P& x, const P& y, const P& z) {
+    const auto near = [&](const P& x, const P& y, const P& z) {
       const Epeck::Triangle_3 tri(x, y, z);
-      return !tri.is_degenerate() && CGAL::do_intersect(s, tri);
+      return !tri.is_degenerate() && near_triangle(s, tri, r2);
     };
-    if (meets(corners[0], corners[1], corners[2]) || meets(corners[0], corners[2], corners[3])) return true;
+    if (near(corners[0], corners[1], corners[2]) || near(corners[0], corners[2], corners[3])) return true;
   }
   // Degenerate pieces: the swept set's boundary segments cover what is left.
-  for (int i = 0; i < 4; ++i) {
-    const Epeck::Segment_3 side(corners[i], corners[(i + 1) % 4]);
-    if (side.is_degenerate() ? s.has_on(side.source()) : CGAL::do_intersect(s, side)) return true;
-  }
+  for (int i = 0; i < 4; ++i)
+    if (near_segment(s, Epeck::Segment_3(corners[i], corners[(i + 1) % 4]), r2)) return true;
   return false;
 }
 
 }  // namespace
 
-std::vector<ContactNormal> contact_normals_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, double t) {
+std::vector<ContactNormal> contact_normals_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, double t,
+                                              double reach) {
   std::vector<ContactNormal> out;
   if (!(t >= 0)) return out;
+  const FT r2 = ft(reach) * ft(reach);
   const FT limit = CGAL::min(ft(t), FT(1));
   const V d = exact(va) - exact(vb);
   const V swept = limit * d;
@@ -196,8 +217,7 @@ std::vector<ContactNormal> contact_normals_by(const Mesh& a, const Vec3& va, con
       const Epeck::Segment_3 path(p, p + w);
       for (std::size_t k = 0; k < to.size(); ++k) {
         const Epeck::Triangle_3 tri = exact(to.triangle(k));
-        if (tri.is_degenerate()) continue;
-        if (path.is_degenerate() ? tri.has_on(p) : CGAL::do_intersect(path, tri))
+        if (!tri.is_degenerate() && near_triangle(path, tri, r2))
           out.push_back(normal_of(tri[1] - tri[0], tri[2] - tri[0]));
       }
     }
@@ -211,7 +231,7 @@ std::vector<ContactNormal> contact_normals_by(const Mesh& a, const Vec3& va, con
     for (const auto& f : eb) {
       const Epeck::Segment_3 edge(exact(b.vertices[std::size_t(f[0])]), exact(b.vertices[std::size_t(f[1])]));
       if (edge.is_degenerate()) continue;
-      if (meets_swept(edge, p0, p1, swept)) out.push_back(normal_of(p1 - p0, edge.to_vector()));
+      if (near_swept(edge, p0, p1, swept, r2)) out.push_back(normal_of(p1 - p0, edge.to_vector()));
     }
   }
   return out;

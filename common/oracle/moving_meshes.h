@@ -32,13 +32,16 @@ MeshContact first_contact_translating(const Mesh& a, const Vec3& va, const Mesh&
 
 // The normals a contact by time t may have (lab 02, step 7): one for each face a vertex
 // meets by then, and each edge pair that meets by then (exact tests of the swept paths).
+// With reach > 0, also each feature pair that comes within reach of meeting by then (a
+// perturbation of reach makes them meet: the header's tolerance).
 struct ContactNormal {
   Vec3 direction = Vec3::Zero();  // unit, rounded: the face's normal, or e x f
   // Parallel edges: direction is their unit axis, and any normal perpendicular to it will do.
   bool perpendicular_to_direction = false;
   double spread = 1.0;  // k = |e| |f| / |e x f| (>= 1): how loosely the edges fix the normal
 };
-std::vector<ContactNormal> contact_normals_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, double t);
+std::vector<ContactNormal> contact_normals_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, double t,
+                                              double reach = 0);
 
 // Exact: do the meshes touch at some time in [0, t]? (False for t < 0.)
 bool contact_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, double t);

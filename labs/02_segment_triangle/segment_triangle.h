@@ -180,9 +180,10 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
 //    (small c) fixes t only loosely.
 //  - point: within 2 tol + |d| tol / c of both meshes at your t.
 //  - normal: unit length within 1e-9, and within 1e-8 k of the normal of a face or an
-//    edge pair that touches by your t + tol / c, k = |e| |f| / |e x f| (for a face, its
-//    two edges from one vertex): a needle face or nearly parallel edges fix their normal
-//    only loosely. Where several features touch at once, any of their normals will do.
+//    edge pair that touches, or comes within tol of touching, by your t + tol / c,
+//    k = |e| |f| / |e x f| (for a face, its two edges from one vertex): a needle face or
+//    nearly parallel edges fix their normal only loosely. Where several features touch
+//    at once (or within tol of it), any of their normals will do.
 struct MeshContact {
   bool hit = false;            // the meshes touch at some t in [0, 1]
   double t = 0.0;              // the first such time

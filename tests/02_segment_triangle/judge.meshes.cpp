@@ -259,9 +259,15 @@ Outcome first_contact_moving_meshes(const MovingMeshes& in, const MeshContact& g
             fmt(reach) + "), and yours is off " + (on_a ? "B" : "A") +
             " (a point found in B's frame moves on by t vb; in A's frame by t va)");
   const double slack = rules == Rules::exact ? 1e-9 : dt;
-  const auto normals = oracle::contact_normals_by(in.a, in.velocity_a, in.b, in.velocity_b, got.t + slack);
-  if (const std::string wrong = contact_normal_error(got.normal, d, normals); !wrong.empty())
-    return fail(fmt(exact.normal), fmt(got.normal), wrong + "; " + contact_rule(in, exact));
+  const double by = got.t + slack;
+  std::string wrong =
+      contact_normal_error(got.normal, d, oracle::contact_normals_by(in.a, in.velocity_a, in.b, in.velocity_b, by));
+  // Features within tol of touching by then count too (a perturbation of tol makes them
+  // touch): a vertex that passes a hair outside an edge the first contact is on.
+  if (!wrong.empty() && rules == Rules::random)
+    wrong = contact_normal_error(got.normal, d,
+                                 oracle::contact_normals_by(in.a, in.velocity_a, in.b, in.velocity_b, by, tol));
+  if (!wrong.empty()) return fail(fmt(exact.normal), fmt(got.normal), wrong + "; " + contact_rule(in, exact));
   return decision;
 }
 

@@ -742,3 +742,28 @@ TEST_CASE("L02 preconditions: invalid input throws std::invalid_argument naming 
   CHECK_FALSE(answerer::test_segment_triangle({{1, 1, 1}, {1, 1, 1}}, kFloor));
   CHECK_FALSE(answerer::test_segment_triangle(good, kFlat));
 }
+
+// ---- The header's tolerance for step 7's normal (the judge, on hand-made answers) -----
+// "Where several features touch at once (or within tol of it), any of their normals will
+// do." A's floor triangle rises by 2 into B, whose lowest vertex q passes 1e-12 outside
+// A's edge along x while A's edge meets B's two edges from q, at t = 1/2 + 2.5e-13: the
+// edges' normal and A's face normal are both right; a wrong axis or a turned normal is not.
+
+TEST_CASE("L02 step 7's judge takes the normal of any feature within tol of touching", "[lab02][contract]") {
+  Mesh a, b;
+  a.vertices = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}};
+  a.triangles = {{0, 1, 2}};
+  b.vertices = {{1, -1e-12, 1}, {0.5, 1, 1.5}, {0.8, 1, 1.5}};
+  b.triangles = {{0, 1, 2}};
+  const MovingMeshes in{a, {0, 0, 2}, b, Vec3::Zero()};
+  const auto verdict = [&](const Vec3& normal) {
+    const Outcome o = judge::first_contact_moving_meshes(in, MeshContact{true, 0.5, {1, 0, 1}, normal});
+    INFO("normal " << normal.transpose() << ": " << o.why);
+    return o.verdict;
+  };
+  using V = Outcome::Verdict;
+  CHECK(verdict(Vec3(0, 1, -2).normalized()) == V::pass);  // A's edge x B's edges from q
+  CHECK(verdict({0, 0, -1}) == V::pass);                   // A's face, which q misses by 1e-12
+  CHECK(verdict({0, 0, 1}) == V::fail);                    // the face's, turned from A toward B
+  CHECK(verdict({1, 0, 0}) == V::fail);                    // no feature's
+}
