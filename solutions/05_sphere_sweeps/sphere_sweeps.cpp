@@ -500,10 +500,13 @@ double first_time_cylinder(const Vec3& m, const Vec3& v, const Vec3& d, double R
   // the line (b >= 0), or starting inside the infinite cylinder (c <= 0; outside the
   // capsule, so beyond an end: the end sphere is met first), the side is never entered.
   if (a == 0 || b >= 0 || c <= 0) return kInfinity;
-  const double disc = dd * (a * R2 - square(md.dot(v)));
+  // b^2 - ac = dd * disc, and its root is |d| sqrt(disc): disc is of degree 6 in the
+  // lengths, the header's bound; the product dd * disc, of degree 8, underflows to
+  // subnormals when S is near 1e-40.
+  const double disc = a * R2 - square(md.dot(v));
   if (disc < 0) return kInfinity;  // the line of motion passes the cylinder by
   // mutant: capsule_later_root
-  const double t = c / (-b + std::sqrt(disc));
+  const double t = c / (-b + std::sqrt(dd) * std::sqrt(disc));
   // Clip to the slab: a root beyond an end plane hits the infinite cylinder where the
   // capsule has no side; there the end sphere decides.
   const double along = (m + t * v).dot(d);

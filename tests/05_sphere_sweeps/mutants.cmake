@@ -97,8 +97,8 @@ labkit_mutant(05 sphere_sweeps NAME forgotten_caps STEP 6 SAYS "caps"
 
 # Step 6: the later root of the side (when the centre leaves the grown capsule).
 labkit_mutant(05 sphere_sweeps NAME capsule_later_root STEP 6 SAYS "later root"
-  FIND "  const double t = c / (-b + std::sqrt(disc));"
-  REPLACE "  const double t = (-b + std::sqrt(disc)) / a;")
+  FIND "  const double t = c / (-b + std::sqrt(dd) * std::sqrt(disc));"
+  REPLACE "  const double t = (-b + std::sqrt(dd) * std::sqrt(disc)) / a;")
 
 # Step 6: the infinite cylinder's root taken without clipping it to the slab.
 labkit_mutant(05 sphere_sweeps NAME unclipped_cylinder STEP 6 SAYS "slab"

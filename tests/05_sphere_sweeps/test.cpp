@@ -414,6 +414,15 @@ TEST_CASE(LABKIT_STEP(L05S6) ": worked examples", "[lab05][step6]") {
   check::example(q, "a zero-length axis is a sphere: 5 - t = 2 at t = 3",
                  SC{{{5, 0, 0}, 1}, {-1, 0, 0}, {{{0, 0, 0}, {0, 0, 0}}, 1}, 4},
                  expect_sweep<SC>(SweepStatus::contact, 3, {1, 0, 0}));
+  // At the domain's small end, b'^2 - a'c' (degree 8 in the lengths) underflows to a
+  // subnormal of a few bits; |d| sqrt(a' R^2 - ((m x d) . v)^2) (degree 6) does not.
+  const double s = std::ldexp(1.0, -135);  // S = 8 s = 2^-132, about 1.8e-40
+  check::example(
+      q,
+      "the side at S = 2^-132, near the domain's 1e-40: t = 10 (6 - sqrt(3.75)) = 40.635...; b'^2 - a'c' "
+      "(degree 8) underflows there, |d| sqrt(a' R^2 - ((m x d) . v)^2) does not",
+      SC{{Vec3(4, 6, 0.5) * s, s}, Vec3(0, -0.1, 0) * s, {{Vec3::Zero(), Vec3(8, 0, 0) * s}, s}, 64},
+      expect_sweep<SC>(SweepStatus::contact, 10 * (6 - std::sqrt(3.75)), Vec3(Vec3(4, std::sqrt(3.75) / 2, 0.25) * s)));
 }
 
 TEST_CASE(LABKIT_STEP(L05S6) ": random cases", "[lab05][step6][oracle]") {
