@@ -128,6 +128,16 @@ bool point_in_triangle_projected(const Vec3& x, const Triangle& t) {
   return true;
 }
 
+bool point_in_triangle_in_doubt(const Vec3& x, const Triangle& t, double delta) {
+  const Epeck::Triangle_3 tri = exact(t);
+  if (tri.is_degenerate()) return false;
+  const Epeck::Point_3 projected = tri.supporting_plane().projection(exact(x));
+  const FT reach = ft(delta) * ft(delta);
+  for (int i = 0; i < 3; ++i)
+    if (CGAL::squared_distance(projected, Epeck::Segment_3(tri[i], tri[(i + 1) % 3])) <= reach) return true;
+  return false;
+}
+
 Vec3 unit_normal(const Triangle& t) {
   const Epeck::Triangle_3 tri = exact(t);
   if (tri.is_degenerate()) return Vec3::Zero();

@@ -41,6 +41,11 @@ bool segment_crosses_plane(const Segment& s, const Triangle& t);
 // Is x, projected onto the triangle's plane along its normal, in the closed triangle?
 // False for a zero-area triangle.
 bool point_in_triangle_projected(const Vec3& x, const Triangle& t);
+// Could moving x by `delta` change that? Exact, and conservative in the other sense from
+// segment_triangle_in_doubt: true only when the projection lies within delta of an edge
+// (then x moved by delta across it, or onto it, flips the answer); a flip that needs the
+// vertices to move is left to check::flips_under_perturbation. False for zero area.
+bool point_in_triangle_in_doubt(const Vec3& x, const Triangle& t, double delta);
 
 // The exact unit normal (v1 - v0) x (v2 - v0) / |...|, rounded; zero for zero area.
 Vec3 unit_normal(const Triangle& t);

@@ -767,3 +767,17 @@ TEST_CASE("L02 step 7's judge takes the normal of any feature within tol of touc
   CHECK(verdict({0, 0, 1}) == V::fail);                    // the face's, turned from A toward B
   CHECK(verdict({1, 0, 0}) == V::fail);                    // no feature's
 }
+
+// Step 2's yes/no at a needle's sharp vertex: x lies 4.4e-16 outside v2, beyond the edge
+// v1 v2. The inside near v2 is a wedge of about 5 degrees, which sampled moves of all
+// the numbers missed (CI's sweep, seed 310); a move of x alone by tol reaches it, so
+// either answer passes. Well outside the wedge, "inside" still fails.
+TEST_CASE("L02 step 2's judge: a point within tol of an edge is ambiguous", "[lab02][contract]") {
+  const Triangle needle{
+      {-13, 0, 0}, {-0.6339359283447266, -9, 8}, {0.2922353074968522, -9.630142138885883, 8.732456870770896}};
+  const PointTriangle hair{{0.29223530749685267, -9.630142138885883, 8.732456870770896}, needle};
+  CHECK(judge::point_in_triangle(hair, true).verdict == Outcome::Verdict::ambiguous);
+  CHECK(judge::point_in_triangle(hair, false).verdict != Outcome::Verdict::fail);
+  const PointTriangle far{needle.v2 + Vec3(1e-3, 0, 0), needle};
+  CHECK(judge::point_in_triangle(far, true).verdict == Outcome::Verdict::fail);
+}
