@@ -25,13 +25,17 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// An answer may hold this many bytes for each byte of its request, and this many at least.
-// The reference's answers, over every step of every lab, hold at most 11 bytes per byte
-// of their request (lab 06's BSP trees) and 1.1 MB (a k-d tree of 10,000 triangles); the
-// limits leave room for another correct shape, and keep a batch of 1,024 small calls
-// under 64 MB of answers, so that no answer can run the judge's process out of memory.
+// An answer may hold this many bytes for each byte of its request, and this many at least;
+// beyond that, whatever is left of a batch's allowance. Most answers are small next to
+// their request (lab 06's BSP trees hold at most 11 bytes per byte of it), but a correct
+// answer need not be: an octree over a few balls that overlap splits to its max_depth
+// (8 children a level), and three balls, capacity 1, depth 5 make 67 KB from 0.3 KB.
+// The allowance takes such an answer whole while a batch's answers stay under 64 MB, and
+// with the floor keeps a batch of 1,024 calls under 128 MB: no answer, and no batch, can
+// run the judge's process out of memory.
 constexpr std::size_t kAnswerPerRequestByte = 32;
 constexpr std::size_t kSmallestLimit = std::size_t(64) << 10;
+constexpr std::size_t kBatchAllowance = std::size_t(64) << 20;
 constexpr std::size_t kGreetingLimit = 64;
 // Replies to served calls that the answerer has not read yet: a legitimate caller reads
 // each before it makes the next call, so this much means it does not read them at all.
@@ -318,14 +322,20 @@ std::pair<Response::Kind, std::string> Answerer::serve(const std::vector<std::st
                                                        std::vector<Response>& out, int& failed_starts) {
   Outbox outbox(requests, received);
   Frames frames;
+  std::size_t answered_bytes = 0;  // the answers this batch holds so far (a restart keeps them)
+  for (std::size_t i = 0; i < received; ++i) answered_bytes += out[i].bytes.size();
+  const auto largest = [&] {
+    if (!greeted_) return kGreetingLimit;
+    const std::size_t left = answered_bytes < kBatchAllowance ? kBatchAllowance - answered_bytes : 0;
+    return std::max(largest_answer(requests[received].size()), left);
+  };
   auto deadline = Clock::now() + call_limit_ + (greeted_ ? std::chrono::milliseconds(0) : std::chrono::seconds(10));
   // Each whole frame that arrived: the greeting, a given function's call (counted in this
   // call's ledger, and answered if served; the call's time limit goes on running), or an
   // answer. Throws std::runtime_error for anything else.
   const auto take_frames = [&] {
     std::string payload;
-    while (received < requests.size() &&
-           frames.next(payload, greeted_ ? largest_answer(requests[received].size()) : kGreetingLimit)) {
+    while (received < requests.size() && frames.next(payload, largest())) {
       if (!greeted_) {
         if (payload != kHello) throw std::runtime_error("it did not greet as an answerer does");
         greeted_ = true;
@@ -339,6 +349,7 @@ std::pair<Response::Kind, std::string> Answerer::serve(const std::vector<std::st
         }
         continue;
       } else {
+        answered_bytes += payload.size();
         out[received].kind = Response::Kind::answered;
         out[received++].bytes = std::move(payload);
       }

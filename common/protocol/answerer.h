@@ -88,9 +88,9 @@ struct Rejected : std::invalid_argument {
   using std::invalid_argument::invalid_argument;
 };
 
-// The largest answer the judge reads for a request of `request_bytes`: every legitimate
-// answer of every lab is far smaller (a tree over a mesh, a list of hits), so a larger
-// frame is that call's failure, refused before anything is allocated for it.
+// The largest answer the judge reads for a request of `request_bytes` once its batch has
+// used up its allowance of answers (answerer.cpp): a larger frame is that call's failure,
+// refused before anything is allocated for it.
 std::size_t largest_answer(std::size_t request_bytes);
 
 class Answerer {

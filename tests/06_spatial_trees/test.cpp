@@ -1073,6 +1073,10 @@ TEST_CASE(LABKIT_STEP(L06S12) ": worked examples", "[lab06][step12]") {
   check::example(query::build_octree, "two balls touching the cut x = 2, capacity 1: every child lists both",
                  OctreeCase{{{{1, 1, 1}, 1}, {{3, 1, 1}, 1}}, 1, 1, {}, true}, expect_octree(9, 8));
   check::example(query::build_octree, "no balls: no node", OctreeCase{{}, 4, 6, {}, true}, expect_octree(0, 0));
+  check::example(query::build_octree,
+                 "two balls at one point, capacity 1: no cut parts them, so only max_depth 4 stops the splitting: "
+                 "1 + 8 + 64 + 512 + 4096 = 4681 nodes, 4096 leaves",
+                 OctreeCase{{{{1, 1, 1}, 1}, {{1, 1, 1}, 1}}, 1, 4, {}, true}, expect_octree(4681, 4096));
   check::example(query::build_octree, "two clusters of 200 balls, 1024 apart: deep at the clusters only",
                  two_clusters(),
                  [](const OctreeCase& in) {
