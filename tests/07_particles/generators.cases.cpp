@@ -191,7 +191,8 @@ rc::Gen<LaunchCase> launch_case() {
     c.target = c.from + d;
     // The least speed that reaches: v^2 = g (y + |d|). Near it (decisive: 1 +- 2^-8 .. 2^-24),
     // or any multiple of it.
-    const double least = std::sqrt(g * (y + d.norm()));
+    // (Straight down, y + |d| rounds to a hair below 0: the least speed is 0 there.)
+    const double least = std::sqrt(std::max(0.0, g * (y + d.norm())));
     const double factor = family == 0 ? 1 + *rc::gen::element(1.0, -1.0) * *tiny(8, 24) : *dyadic(1, 24, 3);
     c.speed = family == 4 ? *dyadic(0, 64, 2) * std::sqrt(g * s) : least * factor;
     return c;
