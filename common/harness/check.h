@@ -278,6 +278,12 @@ inline std::string with_rule(const std::string& query, const std::string& what) 
   return r.empty() ? what : "the rule: " + r + ". " + what;
 }
 
+// Whether every number of the input is finite: every lab's header asks it of valid input.
+template <class Input> bool all_finite(const Input& input) {
+  const codec::Values v = values_of(input);
+  return std::all_of(v.numbers.begin(), v.numbers.end(), [](double x) { return std::isfinite(x); });
+}
+
 // Runs the judge, turning stubs, what the code under test threw and calls that got no
 // answer (a crash or a time-out in the answerer's process) into outcomes. Anything else
 // thrown is the kit's own failure, never the student's: the query's report says so
@@ -292,6 +298,9 @@ template <class Input, class Judge> Outcome run_judge(Judge& judge, const Input&
     report.not_implemented = e.what();
     return fail("an answer", "a stub", e.what());
   } catch (const remote::Rejected& e) {
+    if (!all_finite(input))  // then the generator broke every header's first precondition
+      return kit_error(report, "a case was drawn with a number that is not finite, which every header forbids (" +
+                                   std::string(e.what()) + ")");
     return fail(
         "an answer", std::string("std::invalid_argument: ") + e.what(),
         with_rule(report.query, "your code rejected a valid input: this input meets every precondition of the header"));
@@ -575,7 +584,8 @@ std::optional<std::vector<Input>> draw_cases(const std::string& query, const rc:
     return std::nullopt;
   }
   if (s.domain_audit) {
-    const auto outside = std::find_if(inputs.begin(), inputs.end(), [](const Input& in) { return !in_domain(in); });
+    const auto outside =
+        std::find_if(inputs.begin(), inputs.end(), [](const Input& in) { return !in_domain(in) || !all_finite(in); });
     if (outside != inputs.end())
       throw std::runtime_error("case " + std::to_string(outside - inputs.begin() + 1) + " of " +
                                std::to_string(inputs.size()) +

@@ -283,3 +283,20 @@ TEST_CASE("fibers that wait inside catch blocks each keep their own exception", 
   CHECK(seen == std::vector<std::string>{"one", "clean", "two", "clean"});
   CHECK_FALSE(std::current_exception());
 }
+
+TEST_CASE("code that refuses a case with a NaN is not blamed: the kit drew it", "[kit]") {
+  const Triangle floor{{0, 0, 0}, {4, 0, 0}, {0, 4, 0}};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  auto refuses = [](const SegmentTrianglePair&) -> check::Outcome {
+    throw remote::Rejected("test_segment_triangle: segment.a must be finite");
+  };
+  check::detail::QueryReport valid, broken;
+  const check::Outcome blamed =
+      check::detail::run_judge(refuses, SegmentTrianglePair{{{1, 1, 1}, {1, 1, -1}}, floor}, valid);
+  CHECK_THAT(blamed.why, check::contains_text("rejected a valid input"));
+  CHECK(valid.error.empty());
+  const check::Outcome kit =
+      check::detail::run_judge(refuses, SegmentTrianglePair{{{nan, 1, 1}, {1, 1, -1}}, floor}, broken);
+  CHECK_THAT(kit.why, check::contains_text("not finite"));
+  CHECK_THAT(broken.error, check::contains_text("kit error"));
+}
