@@ -164,7 +164,8 @@ ContactNormal normal_of(const V& e, const V& f) {
 
 // Exact: whether the segment s (perhaps a point) comes within sqrt(r2) of the closed
 // triangle (not degenerate); r2 = 0 asks whether they meet. Apart, the closest pair has
-// an end of s or a point of a side of the triangle.
+// an end of s or a point of a side of the triangle (CGAL 5.5 has no segment-triangle
+// distance of its own, only the point-triangle and segment-segment ones used here).
 bool near_triangle(const Epeck::Segment_3& s, const Epeck::Triangle_3& tri, const FT& r2) {
   if (s.is_degenerate() ? tri.has_on(s.source()) : CGAL::do_intersect(s, tri)) return true;
   if (CGAL::is_zero(r2)) return false;

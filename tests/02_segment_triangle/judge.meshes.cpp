@@ -196,8 +196,9 @@ std::string contact_normal_error(const Vec3& n, const Vec3& d, const std::vector
   if (turned)
     return "the normal points from B toward A, so that d . normal <= 0 (A closes on B against it); yours points "
            "the other way";
-  return "the normal is that of the features in contact: the unit normal of the face a vertex meets, or (e x f) / "
-         "|e x f| for two edges; yours is none of those (tolerance 1e-8 |e| |f| / |e x f|)";
+  return "the normal is that of the features in contact by your t (or within tol of it): the unit normal of the face "
+         "a vertex meets, or (e x f) / |e x f| for two edges; yours is none of those (tolerance 1e-8 |e| |f| / |e x "
+         "f|)";
 }
 
 }  // namespace
