@@ -85,6 +85,16 @@ double t_tolerance(const Segment& s, const Triangle& tri, double tol) {
   return change > 0 ? tol / change : kInfinity;
 }
 
+// How far along the segment a search that returns `got` may have looked: to the hit's t,
+// as loosely as the crossing fixes it. A segment nearly in the triangle's plane fixes t
+// hardly at all (given::segment_triangle's t may then lie outside every leaf the segment
+// enters), and a search that stops there may have searched every leaf.
+double search_until(const TreeQuery& in, const KdHit& got, double tol) {
+  if (!got.hit) return kInfinity;
+  if (got.triangle < 0 || std::size_t(got.triangle) >= in.mesh.size()) return got.t;
+  return got.t + t_tolerance(in.segment, in.mesh.triangle(std::size_t(got.triangle)), tol);
+}
+
 // "triangle 3 at t = 0.5, ...": the exact crossings or the answer's hits.
 template <class Hit> std::string describe_hits(const std::vector<Hit>& hits) {
   std::string s;
@@ -172,9 +182,10 @@ std::string check_tests(const TreeQuery& in, const KdTree& tree, int reported, s
   const long long allowed = allowed_tests(tree, leaves, in.segment, tolerance_of(in), until);
   if (reported <= allowed) return "";
   if (until < kInfinity)
-    return "first_hit and any_hit may search only the leaves the segment enters no later than the hit they return (t "
-           "= " +
-           fmt(until) + "): those list " + str(allowed) + " triangle(s), you made " + str(reported) +
+    return "first_hit and any_hit may search only the leaves the segment enters no later than the hit they return "
+           "(by t = " +
+           fmt(until) + ", the hit's t and what the crossing leaves in doubt): those list " + str(allowed) +
+           " triangle(s), you made " + str(reported) +
            " tests (stop once the best hit is at or before the leaf's far end t1)";
   return "a query may search only the leaves whose closed cell the segment meets: those list " + str(allowed) +
          " triangle(s), you made " + str(reported) +
@@ -216,7 +227,7 @@ Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std
       break;
     }
   }
-  const std::string counts = check_tests(in, tree, got.tests, calls, got.hit ? got.t : kInfinity, rules);
+  const std::string counts = check_tests(in, tree, got.tests, calls, search_until(in, got, tol), rules);
   if (!counts.empty()) return fail(expected, describe_hit(got) + ", tests = " + str(got.tests), counts);
   return decision;
 }
@@ -236,7 +247,7 @@ Outcome any_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::
     if (!st.hit && !st.unstable)
       return fail(expected(), describe_hit(got), "the segment does not hit triangle " + str(got.triangle));
   }
-  const std::string counts = check_tests(in, tree, got.tests, calls, got.hit ? got.t : kInfinity, rules);
+  const std::string counts = check_tests(in, tree, got.tests, calls, search_until(in, got, tol), rules);
   if (!counts.empty()) return fail(expected(), describe_hit(got) + ", tests = " + str(got.tests), counts);
   return decision;
 }

@@ -1163,6 +1163,22 @@ TEST_CASE("L06 preconditions: invalid input is refused, naming the argument", "[
   CHECK(none.box_calls == 0);
 }
 
+// Step 2's count rule, for a segment lying in a triangle's plane: any answer about such a
+// triangle passes, and the given test's t for it may lie anywhere (CI's sweep, seed 808:
+// a t just before the segment enters the leaf's cell). A search that stops at that hit
+// may still have searched the leaf that lists the triangle.
+TEST_CASE("L06 step 2's judge: a hit in doubt bounds the search only as well as its t", "[lab06][contract]") {
+  const Triangle flat{{0, 2, 0}, {1, 3, -2}, {0, 3, -1}};  // in the plane x + y + z = 2
+  const TreeQuery in{mesh_of({flat}), {{-1, 1.5, 1.5}, {1, 2.5, -1.5}}, 0};
+  const KdTree one_leaf = judge::tree_of(in.mesh, {{0, 2, -2}, {1, 3, 0}}, {{0, kLeaf, 0}}, {1, 0});
+  KdHit got;
+  got.hit = true, got.triangle = 0, got.t = 0.25, got.tests = 1;  // the cell starts at t = 0.5
+  CHECK(judge::first_hit(in, one_leaf, got, 1, Rules::random).verdict != Outcome::Verdict::fail);
+  CHECK(judge::any_hit(in, one_leaf, got, 1, Rules::random).verdict != Outcome::Verdict::fail);
+  got.tests = 2;  // the leaf lists one triangle
+  CHECK(judge::first_hit(in, one_leaf, got, 2, Rules::random).verdict == Outcome::Verdict::fail);
+}
+
 // ---- Figures (not a graded step) ----------------------------------------------------------------
 // Primitive tests per query on 10k, 100k and 1M triangles, against brute force (every
 // triangle once). Hidden: run it with
