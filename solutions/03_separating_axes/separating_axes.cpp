@@ -483,7 +483,11 @@ ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Bo
     // wider gap between them than their errors: they never touch.
     // mutant: an_instant_is_no_contact
     if (first - last > first_error + last_error) return {};
-    first = last = std::clamp(0.5 * (first + last), 0.0, duration);
+    // The instant is the better known of the two times: the one from the axis along which
+    // B moves faster. At it the slower axis is off by only its rounding (|ds| times its
+    // error), while a time from the slower axis (or halfway) can leave the faster one
+    // apart by far more than tol.
+    first = last = std::clamp(first_error <= last_error ? first : last, 0.0, duration);
   }
   return {true, first, last};
 }

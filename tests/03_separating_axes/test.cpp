@@ -501,6 +501,29 @@ TEST_CASE(LABKIT_STEP(L03S7) ": random exact degenerate cases", "[lab03][step7][
   check::random_cases(query::robust_moving_boxes, gen::exact_moving_boxes(), exact_moving);
 }
 
+// Step 5's single instant, from a fast axis and a slow one (CI's sweep, seed 803): a
+// point passes a flat rectangle that lies almost along its path. The point crosses the
+// rectangle's plane (B moves along B_1 by only 2e-12) just as it reaches the edge on
+// A_1 (moving at 8), and rounding puts the two times 1e-3 apart in the wrong order. The
+// slow axis's time is known to 3e-2, the fast one's to 1e-14: the reference reports the
+// fast one. Halfway between them, the point is 6e-3 outside the edge, far beyond tol.
+TEST_CASE("L03 step 5: one instant is timed by the faster axis", "[lab03][contract]") {
+  Box point, flat;
+  point.axes << -0.3333333333333337, -0.6666666666666669, -0.6666666666666669, -0.6666666666666669, -0.3333333333333337,
+      0.6666666666666669, -0.6666666666666669, 0.6666666666666669, -0.3333333333333337;
+  flat.center = {-1.5265246814716102, 3.59848510293977, 10.250019568824271};
+  flat.axes << -0.666666666666633, -0.666666666666599, -0.33333333333353704, -0.3333333333332659, 0.6666666666668024,
+      -0.6666666666665652, 0.6666666666667347, -0.33333333333319815, -0.6666666666666669;
+  flat.half_extents = {1.6515369415283203, 0, 3.2979931831359863};
+  const MovingBoxes in{point, {0, 0, 0}, flat, {2, -4, -12}, 1};
+  const ContactInterval got = answerer::find_moving_boxes(in.a, in.velocity_a, in.b, in.velocity_b, in.duration);
+  CHECK(got.contact);
+  CHECK(got.first == got.last);
+  CHECK(judge::find_moving_boxes(in, got, Rules::random).verdict != Outcome::Verdict::fail);  // touching: in doubt
+  const ContactInterval halfway{true, 0.6242193444060393, 0.6242193444060393};  // the old reference's answer
+  CHECK(judge::find_moving_boxes(in, halfway, Rules::random).verdict == Outcome::Verdict::fail);
+}
+
 // ---- The header's preconditions (not graded: tagged [contract], in no step) ----------
 // The reference rejects every kind of invalid input with std::invalid_argument naming
 // the argument; a NaN must never pass for "no axis separates them".
