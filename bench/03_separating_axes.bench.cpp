@@ -17,7 +17,7 @@
 // No targets: issue 5 states none for this lab.
 #include "inputs.h"
 
-#include "03_separating_axes/generators.h"
+#include "03_separating_axes/judge.h"
 #include "common/harness/check.h"
 #include "common/oracle/oracle.h"
 #include "separating_axes.h"

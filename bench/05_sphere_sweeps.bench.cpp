@@ -11,7 +11,7 @@
 #ifdef LABKIT_HAS_LAB05
 #include "inputs.h"
 
-#include "05_sphere_sweeps/generators.h"
+#include "05_sphere_sweeps/judge.h"
 #include "common/oracle/oracle.h"
 #include "sphere_sweeps.h"
 

@@ -9,14 +9,15 @@
 #                                    nothing of the kit's but the geometry types. A student's
 #                                    edit recompiles one file and relinks this small program.
 #   tests/NN_name/               the lab's checker, in one folder:
-#     inputs.h                    -> each query's input, and the lab's table of queries
-#     generators*.cpp, .h         -> random inputs (compiled into the judge)
-#     judge.h, judge*.cpp         -> labNN_judge       (verdicts against the oracle; the viewer shares
+#     queries.h                   -> the lab's functions and types on the wire, each query's
+#                                    input, and the lab's table of queries (both processes)
+#     judge.h                     -> the generators' and the verdicts' declarations
+#     generators*.cpp             -> random inputs (compiled into the judge)
+#     judge*.cpp                  -> labNN_judge       (verdicts against the oracle; the viewer shares
 #                                    it; judge_internal.h: what the judge's own files share)
 #     test.cpp                    -> test_NN_name      (examples and random cases: the judge's
 #                                    process, linked once; it runs the answerer named by
 #                                    LABKIT_ANSWERER and calls the lab's functions there)
-#     wire.h                      -> the lab's functions and answer types on the wire
 #     mutants.cmake               -> the reference with one classic mistake each; ctest
 #                                    expects the step each one breaks to fail
 #     given*.cpp (if any)         -> given_NN_name     (ready tools the lab's header declares,
@@ -110,18 +111,18 @@ function(labkit_add_lab number name)
   labkit_kit_code(${lab}_judge)
   target_precompile_headers(${lab}_judge REUSE_FROM labkit_judge_pch)
 
-  # The lab's list of calls (tests/NN_name/wire.h), expanded on both sides of the pipe.
-  set(wire_definitions LABKIT_LAB_WIRE="${stem}/wire.h" LABKIT_LAB_NAMESPACE=${lab}
+  # The lab's list of calls (tests/NN_name/queries.h), expanded on both sides of the pipe.
+  set(query_definitions LABKIT_LAB_QUERIES="${stem}/queries.h" LABKIT_LAB_NAMESPACE=${lab}
                        LABKIT_LAB_CALLS=LABKIT_LAB${number}_CALLS)
   add_library(${lab}_calls STATIC "${PROJECT_SOURCE_DIR}/common/protocol/lab_calls.cpp")
-  target_compile_definitions(${lab}_calls PRIVATE ${wire_definitions})
+  target_compile_definitions(${lab}_calls PRIVATE ${query_definitions})
   target_include_directories(${lab}_calls PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_calls PUBLIC labkit_protocol)
   if(TARGET given_${stem})
     target_link_libraries(${lab}_calls PUBLIC given_${stem})
   endif()
   add_library(${lab}_answerer_main OBJECT "${PROJECT_SOURCE_DIR}/common/protocol/lab_answerer.cpp")
-  target_compile_definitions(${lab}_answerer_main PRIVATE ${wire_definitions})
+  target_compile_definitions(${lab}_answerer_main PRIVATE ${query_definitions})
   target_include_directories(${lab}_answerer_main PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
   target_link_libraries(${lab}_answerer_main PUBLIC labkit_protocol)
   labkit_kit_code(${lab}_answerer_main)
@@ -169,7 +170,7 @@ function(labkit_add_lab number name)
   # no geometry must earn nothing, and no judge may fail on their answers.
   if(TARGET ${lab}_reference)
     add_executable(answer_${stem}_fake "${PROJECT_SOURCE_DIR}/tests/kit/fake_answerer.cpp")
-    target_compile_definitions(answer_${stem}_fake PRIVATE ${wire_definitions})
+    target_compile_definitions(answer_${stem}_fake PRIVATE ${query_definitions})
     target_include_directories(answer_${stem}_fake PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
     target_link_libraries(answer_${stem}_fake PRIVATE labkit_protocol ${lab}_reference)
     labkit_kit_code(answer_${stem}_fake)

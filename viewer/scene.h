@@ -201,7 +201,7 @@ template <class... F> struct Loaders : F... { using F::operator()...; };
 template <class... F> Loaders(F...) -> Loaders<F...>;
 
 // A replay token's input, read as the type its query takes in the lab's table
-// (tests/NN_name/inputs.h) and handed to the loader that takes that type. The scene
+// (tests/NN_name/queries.h) and handed to the loader that takes that type. The scene
 // shows exactly the queries whose input one of its loaders takes: any other, of this lab
 // or another, is an UnknownQuery that lists those.
 template <class Load, class... Inputs>

@@ -3,7 +3,7 @@
 //   check::example(query::find_segment_triangle, "through the middle", input, judge);
 //   check::random_cases(query::find_segment_triangle, gen::segment_triangle(), judge);
 //
-// The queries come from the lab's table (tests/NN_name/inputs.h, common/harness/query.h),
+// The queries come from the lab's table (tests/NN_name/queries.h, common/harness/query.h),
 // which also fixes the input each one takes: the compiler refuses another.
 //
 // A judge takes an input, runs the code under test on it, and returns an Outcome: pass,

@@ -1,6 +1,6 @@
 // A lab's queries: the names its tests give the questions they ask (a replay token's
 // prefix, "first_hit:0.5,...") and the input each takes. Each lab lists them once, at the
-// end of tests/NN_name/inputs.h, as a table the tests, the viewer's scene and its
+// end of tests/NN_name/queries.h, as a table the tests, the viewer's scene and its
 // presets read:
 //
 //   #define LABKIT_LAB06_QUERIES(X, X_IN) X(first_hit, TreeQuery) X_IN(robust, classify, PointQuery) ...

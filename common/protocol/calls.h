@@ -1,6 +1,6 @@
 // A lab's functions as calls between two processes (see answerer.h for the picture).
 //
-// Each lab lists its functions once, in tests/NN_name/wire.h:
+// Each lab lists its functions once, in tests/NN_name/queries.h:
 //
 //   #define LABKIT_LAB02_CALLS(CALL, METHOD) ...
 //     CALL(PlaneCrossing, segment_plane, (const Segment&, const Triangle&)) ...

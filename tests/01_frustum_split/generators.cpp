@@ -1,5 +1,5 @@
-#include "01_frustum_split/generators.h"
 #include "common/generators/generators.h"
+#include "01_frustum_split/judge.h"
 
 #include <algorithm>
 #include <cmath>

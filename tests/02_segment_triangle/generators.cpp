@@ -1,4 +1,4 @@
-#include "02_segment_triangle/generators.h"
+#include "02_segment_triangle/judge.h"
 
 #include "common/harness/check.h"
 

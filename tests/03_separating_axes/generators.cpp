@@ -1,5 +1,5 @@
-#include "03_separating_axes/generators.h"
 #include "common/generators/generators.h"
+#include "03_separating_axes/judge.h"
 #include "common/generators/grid.h"
 #include "common/harness/codec.h"
 

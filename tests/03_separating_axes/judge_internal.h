@@ -4,7 +4,7 @@
 
 #include "judging.h"
 
-#include "03_separating_axes/generators.h"
+#include "03_separating_axes/judge.h"
 
 #include <algorithm>
 #include <string>

@@ -1,5 +1,5 @@
-#include "04_bisection/generators.h"
 #include "common/generators/generators.h"
+#include "04_bisection/judge.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "05_sphere_sweeps/generators.h"
+#include "05_sphere_sweeps/judge.h"
 
 #include "common/generators/generators.h"
 #include "common/generators/grid.h"

@@ -1,6 +1,6 @@
 // Step 3's inputs (lab 05): two sphere-swept volumes, the distance steps' cores with
 // radii around their exact distance, or canonical cores exactly touching by construction.
-#include "05_sphere_sweeps/generators.h"
+#include "05_sphere_sweeps/judge.h"
 
 #include "common/generators/generators.h"
 

@@ -1,4 +1,4 @@
-#include "06_spatial_trees/generators.h"
+#include "06_spatial_trees/judge.h"
 
 #include "common/generators/generators.h"
 

@@ -1,8 +1,6 @@
 // Lab 07's extensions' random inputs: two particles on a damped spring (step 9) and two
 // rigid bodies at a contact (step 10), kept out of the judge's ambiguity band
 // (tests/07_particles/judge.h) where a family is meant to be decisive.
-#include "07_particles/generators.h"
-
 #include "07_particles/judge.h"
 
 #include <algorithm>

@@ -1,8 +1,6 @@
 // Lab 07's random inputs: the families of each query, drawn over the header's whole input
 // domain, and kept out of the ambiguity band where a family is meant to be decisive: the
 // judge's own doubt tests (tests/07_particles/judge.h) say where that band is.
-#include "07_particles/generators.h"
-
 #include "07_particles/judge.h"
 
 #include "common/oracle/oracle.h"

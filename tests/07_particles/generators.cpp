@@ -1,5 +1,5 @@
-#include "07_particles/generators.h"
 #include "common/generators/generators.h"
+#include "07_particles/judge.h"
 #include "common/generators/grid.h"
 
 #include <algorithm>

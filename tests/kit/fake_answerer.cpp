@@ -11,7 +11,7 @@
 //             handout's worked examples, recorded by the judge), the default elsewhere:
 //             hard-coding the public examples earns almost nothing
 #define LABKIT_IN_ANSWERER
-#include LABKIT_LAB_WIRE
+#include LABKIT_LAB_QUERIES
 
 #include "common/protocol/calls.h"
 #include "common/text.h"

@@ -1,15 +1,53 @@
-// Lab 02's inputs beyond the shared pairs (common/inputs/inputs.h): each query's
-// arguments as one struct, whose fields() let reports print it and replay tokens carry it
-// (the answers' fields are in tests/02_segment_triangle/wire.h).
+// Lab 02's queries, declared in one place: the functions the judge's process calls in
+// the answerer and the lab's types as they cross (first), the input each query is
+// given (then), and the table of the queries (last). Both processes include it.
+//
+// The protocol (common/protocol/answerer.h) copies the lab's types by their fields, which
+// reports print too.
 #pragma once
 
 #include "segment_triangle.h"
 
 #include "common/fields.h"
 #include "common/harness/query.h"
-
 #include "common/inputs/inputs.h"
+#include "common/protocol/calls.h"
 
+namespace labkit::lab02 {
+
+LABKIT_FIELDS(PlaneCrossing, d_a, d_b, crosses, t, point)
+LABKIT_FIELDS(Barycentric, dropped_axis, alpha, beta)
+LABKIT_FIELDS(SegmentTriangleHit, hit, t, point, barycentric, normal)
+LABKIT_FIELDS(MeshHit, hit, triangle, t, point, barycentric, normal)
+
+LABKIT_FIELDS(MeshContact, hit, t, point, normal)
+
+using MeshHits = std::vector<MeshHit>;
+
+}  // namespace labkit::lab02
+
+// clang-format off
+#define LABKIT_LAB02_CALLS(CALL, METHOD)                                                          \
+  CALL(PlaneCrossing, segment_plane, (const Segment&, const Triangle&))                           \
+  CALL(bool, point_in_triangle_edges, (const Vec3&, const Triangle&))                             \
+  CALL(Barycentric, barycentric, (const Vec3&, const Triangle&))                                  \
+  CALL(bool, point_in_triangle_barycentric, (const Vec3&, const Triangle&))                       \
+  CALL(bool, test_segment_triangle, (const Segment&, const Triangle&))                            \
+  CALL(SegmentTriangleHit, find_segment_triangle, (const Segment&, const Triangle&))              \
+  CALL(MeshHit, first_hit, (const Segment&, const Mesh&))                                         \
+  CALL(bool, any_hit, (const Segment&, const Mesh&))                                              \
+  CALL(MeshHits, all_hits, (const Segment&, const Mesh&))                                         \
+  CALL(MeshHit, first_hit_moving, (const Segment&, const Mesh&, const RigidTransform&, const RigidTransform&)) \
+  CALL(MeshContact, first_contact_moving_meshes, (const Mesh&, const Vec3&, const Mesh&, const Vec3&))
+// clang-format on
+
+// The judge's process calls the code under test only as answerer::name(...) (calls.h).
+LABKIT_ANSWERER_CALLS(lab02, LABKIT_LAB02_CALLS)
+
+// ---- The inputs ------------------------------------------------------------------------
+// Lab 02's inputs beyond the shared pairs (common/inputs/inputs.h): each query's
+// arguments as one struct, whose fields() let reports print it and replay tokens carry it
+// (the answers' fields are in above).
 namespace labkit::lab02 {
 
 struct PointTriangle {

@@ -1,15 +1,49 @@
-// Lab 01's inputs: what each query of frustum_split.h is given, one struct per query, and
-// their fields() (the names a report prints and a replay token reads). The generators
-// (tests/01_frustum_split/generators.h) draw them, the judge and the viewer read them.
+// Lab 01's queries, declared in one place: the functions the judge's process calls in
+// the answerer and the lab's types as they cross (first), the input each query is
+// given (then), and the table of the queries (last). Both processes include it.
+//
+// The protocol (common/protocol/answerer.h) copies the lab's types by their fields, which
+// reports print too.
 #pragma once
 
 #include "frustum_split.h"
 
 #include "common/fields.h"
 #include "common/harness/query.h"
+#include "common/protocol/calls.h"
 
+#include <array>
 #include <vector>
 
+namespace labkit::lab01 {
+
+LABKIT_FIELDS(Camera, eye, forward, up, fov_y, aspect, near, far)
+LABKIT_FIELDS(ColoredMesh, mesh, colors)
+LABKIT_FIELDS(ClippedMesh, mesh, colors, source)
+
+using Sides = std::array<Side, 3>;
+using Triangles = std::vector<Triangle>;
+
+}  // namespace labkit::lab01
+
+// clang-format off
+#define LABKIT_LAB01_CALLS(CALL, METHOD)                                           \
+  CALL(double, signed_distance, (const Plane&, const Vec3&))                       \
+  CALL(Sides, classify, (const Plane&, const Triangle&))                           \
+  CALL(Triangles, split_triangle, (const Triangle&, const Plane&))                 \
+  CALL(Frustum, frustum_from_camera, (const Camera&))                              \
+  CALL(Frustum, frustum_from_matrix, (const Mat4&))                                \
+  CALL(Triangles, clip_triangle, (const Triangle&, const Frustum&))                \
+  CALL(ClippedMesh, clip_mesh, (const ColoredMesh&, const Frustum&))
+// clang-format on
+
+// The judge's process calls the code under test only as answerer::name(...) (calls.h).
+LABKIT_ANSWERER_CALLS(lab01, LABKIT_LAB01_CALLS)
+
+// ---- The inputs ------------------------------------------------------------------------
+// Lab 01's inputs: what each query of frustum_split.h is given, one struct per query, and
+// their fields() (the names a report prints and a replay token reads). The generators
+// (gen:: in tests/01_frustum_split/judge.h) draw them, the judge and the viewer read them.
 namespace labkit {
 
 struct TrianglePlane {
