@@ -23,6 +23,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <utility>
 
 namespace viewer::spatial_trees {
 
@@ -218,18 +220,36 @@ void SpatialTreesScene::update_kd() {
   steps.push_back(s2);
 }
 
+namespace {
+
+// Does every edge belong to an even number of triangles, as around a solid? Only then
+// has the mesh an inside, and classify an answer (the header's "closed mesh").
+bool closed(const Mesh& mesh) {
+  std::map<std::pair<int, int>, int> uses;
+  for (const auto& t : mesh.triangles)
+    for (int k = 0; k < 3; ++k) ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+  return std::all_of(uses.begin(), uses.end(), [](const auto& edge) { return edge.second % 2 == 0; });
+}
+
+}  // namespace
+
 void SpatialTreesScene::update_bsp() {
   bsp_ = attempt([&] { return build_bsp(mesh_); });
   const PointQuery in{mesh_, point_};
-  exact_where_ = oracle::point_in_solid(point_, mesh_);
+  closed_ = closed(mesh_);
+  exact_where_ = closed_ ? oracle::point_in_solid(point_, mesh_) : 0;
   const Where exact = exact_where_ > 0 ? Where::inside : (exact_where_ < 0 ? Where::outside : Where::on);
   Step s3 =
       judged("L06S3", "build_bsp, classify", bsp_, [&](const BspTree& got) { return judge::bsp_tree(mesh_, got); });
   if (bsp_) {
     where_ = attempt([&] { return classify(*bsp_, point_); });
-    join(s3, where_, [&](Where got) { return judge::classify(in, got); });
+    if (closed_) join(s3, where_, [&](Where got) { return judge::classify(in, got); });
     s3.rows = {{"nodes, pieces", std::to_string(bsp_->nodes.size()) + ", " + std::to_string(bsp_->pieces.size()), ""},
-               {"the point is", where_ ? describe(*where_) : "", describe(exact)}};
+               {"the point is", where_ ? describe(*where_) : "", closed_ ? describe(exact) : "(open mesh)"}};
+    if (!closed_ && s3.note.empty())
+      s3.note =
+          "classify is judged on a closed mesh only (every edge shared by an even number of triangles): this "
+          "one is open, so it has no inside";
   }
   verdict_[3] = s3.verdict;
   steps.push_back(s3);

@@ -240,7 +240,7 @@ void SpatialTreesScene::draw_bsp(Frame& f) {
   const Color c = colour(verdict_[3]);
   r.point(point_, palette::input, 6);
   if (where_) r.label(point_, "p: " + describe(*where_), c, 12, -12);
-  if (f.show_exact) {
+  if (f.show_exact && closed_) {
     r.ring(point_, palette::exact, 10);
     r.label(point_,
             "exact: " + std::string(exact_where_ > 0   ? "inside"

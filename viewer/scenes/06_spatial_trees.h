@@ -86,6 +86,7 @@ class SpatialTreesScene : public Scene {
   Attempt<Where> where_;
   Attempt<std::vector<int>> order_;
   int exact_where_ = 0;
+  bool closed_ = true;  // the mesh has an inside (every edge shared by an even number of triangles)
   // Step 5.
   Attempt<SpherePairs> pairs_;
   std::vector<std::array<int, 2>> exact_pairs_;

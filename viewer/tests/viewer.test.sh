@@ -66,11 +66,15 @@ case $case_name in
       headless "$student" 02 --preset $preset --screenshot "$out/stub-$preset.png" >/dev/null || fail "preset $preset crashed on the stubs"
     done
     ;;
-  presets)  # every preset of every scene opens, as the handouts' figures need
+  presets)  # every preset of every scene opens, as the handouts' figures need, and the
+    # reference agrees with the exact answer in each (a red mark there would teach a lie)
     "$reference" --list-presets | while read -r lab name rest; do
-      headless "$reference" "$lab" --figure "$name" --size 480x300 --frames 2 --screenshot "$out/$lab-$name.png" >/dev/null ||
-        fail "lab $lab preset $name failed"
+      headless "$reference" "$lab" --figure "$name" --size 480x300 --frames 2 --screenshot "$out/$lab-$name.png" \
+        >"$out/$lab-$name.txt" || fail "lab $lab preset $name failed"
       "$probe" "$out/$lab-$name.png" >/dev/null || fail "lab $lab preset $name is blank"
+      if grep -q ': disagrees' "$out/$lab-$name.txt"; then
+        fail "lab $lab preset $name: the reference disagrees: $(grep ': disagrees' "$out/$lab-$name.txt")"
+      fi
     done || exit 1
     ;;
   bad_input)
