@@ -333,8 +333,9 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
 // A point computed in floating point can land a hair behind the surface it was meant to
 // touch. Step 7 checks settle on one surface (the one just hit: a push along its normal
 // does it) and collide's `from` and end points settled; step 8 on points in a crease of
-// two or three surfaces, where a push off one can go behind another. settle(x, scene, last) returns x moved by less than tol (usually by a few
-// rounding errors) so that, in exact arithmetic,
+// two or three surfaces, where a push off one can go behind another.
+// settle(x, scene, last) returns x moved by less than tol (usually by a few rounding
+// errors) so that, in exact arithmetic,
 //  - it is not behind any plane of the scene that x is within 1000 rounding errors of
 //    (value >= -1000 error, below), or in front of: a point computed to lie on a plane
 //    lands within a few errors of it, and one farther behind was behind before;
@@ -350,8 +351,7 @@ Collision collide(const Segment& step, const Vec3& velocity, double mass, double
 // else is in doubt. Then push: by the worst deficit (how far behind, if behind) plus a
 // skin that doubles each round, starting at 4 times the largest error (as a distance:
 // divided by |n|) plus 2^-50 |x|_inf (a few units in the last place of x's largest
-// coordinate: less would not move x at all), along
-// a direction d that moves away from
+// coordinate: less would not move x at all), along a direction d that moves away from
 // every surface found in doubt so far in this call (unit normals n_i, the facing normal
 // for the last surface), scaled so that n_i . d >= 1 for all, until nothing is in doubt.
 // Take d as the best of: each n_i; each bisector n_i + n_j; for each three, the d with
