@@ -486,47 +486,56 @@ rc::Gen<CollideCase> collide_case(bool decided) {
 // A point on (or a hair from) a surface the step hits or could hit, as collide meets
 // them; the surface is met from the side the step starts on, as a particle would.
 rc::Gen<SettleCase> settle_case(bool one_surface) {
-  return rc::gen::exec([one_surface] {
-    const StepSurfaces c =
-        *rc::gen::suchThat(valid_steps(), [](const StepSurfaces& x) { return !x.planes.empty() || x.mesh.size() > 0; });
-    SettleCase out;
-    out.scene = scene_of(c);
-    SurfaceHit& last = out.last;
-    const int i = *rc::gen::inRange(0, int(c.planes.size() + c.mesh.size()));
-    const bool on_plane = std::size_t(i) < c.planes.size();
-    const int j = on_plane ? i : i - int(c.planes.size());
-    const Triangle tri = on_plane ? Triangle{} : c.mesh.triangle(std::size_t(j));
-    if (one_surface) {  // the surface chosen, alone in its scene
-      out.scene.planes = on_plane ? std::vector<Plane>{c.planes[std::size_t(j)]} : std::vector<Plane>{};
-      out.scene.mesh = on_plane ? Mesh{} : Mesh{{tri.v0, tri.v1, tri.v2}, {{0, 1, 2}}};
-    }
-    const int index = one_surface ? 0 : j;
-    const int side = on_plane ? 1 : oracle::orientation(tri.v0, tri.v1, tri.v2, c.step.a);
-    if (!on_plane && side == 0) {  // the step starts on the sheet: it cannot hit it
-      out.x = c.step.a;
-      return out;
-    }
-    if (on_plane) {
-      const Plane& p = c.planes[std::size_t(j)];
-      last = {true, index, -1, 0.0, Vec3::Zero(), p.normal.normalized()};
-      // Where a + t (b - a) lands, computed as a student would: a hair either side.
-      const double va = p.value(c.step.a), vb = p.value(c.step.b);
-      Vec3 x = (va != vb) ? c.step.point(va / (va - vb)) : c.step.a;
-      x -= p.normal * (p.value(x) / p.normal.squaredNorm());
-      const double local = std::max(largest(x), std::abs(p.offset) / p.normal.norm());
-      x -= *rc::gen::element(0.0, 1.0, -1.0) * std::ldexp(local, -40) * p.normal.normalized();
-      out.x = x;
-    } else {
-      const Vec3 n = tri.normal();
-      last = {true, -1, index, 0.0, Vec3::Zero(), side * n.normalized()};
-      const Vec3 weights = Vec3(*dyadic(0, 8, 3), *dyadic(0, 8, 3), 0);
-      Vec3 x = tri.v0 + weights.x() * (tri.v1 - tri.v0) + weights.y() * (tri.v2 - tri.v0);
-      x -= n * ((x - tri.v0).dot(n) / n.squaredNorm());  // onto the plane, up to rounding
-      out.x = x;
-    }
-    last.point = out.x;
-    return out;
-  });
+  // x lands where the step crosses a plane, which for a step nearly along it is far
+  // beyond the step's ends: the crack's domain is checked again at x's scale.
+  const auto in_domain = [](const SettleCase& c) {
+    double s = largest(c.x);
+    for (const Vec3& v : c.scene.mesh.vertices) s = std::max(s, largest(v));
+    return cracks_in_domain(c.scene.planes, s);
+  };
+  return rc::gen::suchThat(
+      rc::gen::exec([one_surface] {
+        const StepSurfaces c = *rc::gen::suchThat(
+            valid_steps(), [](const StepSurfaces& x) { return !x.planes.empty() || x.mesh.size() > 0; });
+        SettleCase out;
+        out.scene = scene_of(c);
+        SurfaceHit& last = out.last;
+        const int i = *rc::gen::inRange(0, int(c.planes.size() + c.mesh.size()));
+        const bool on_plane = std::size_t(i) < c.planes.size();
+        const int j = on_plane ? i : i - int(c.planes.size());
+        const Triangle tri = on_plane ? Triangle{} : c.mesh.triangle(std::size_t(j));
+        if (one_surface) {  // the surface chosen, alone in its scene
+          out.scene.planes = on_plane ? std::vector<Plane>{c.planes[std::size_t(j)]} : std::vector<Plane>{};
+          out.scene.mesh = on_plane ? Mesh{} : Mesh{{tri.v0, tri.v1, tri.v2}, {{0, 1, 2}}};
+        }
+        const int index = one_surface ? 0 : j;
+        const int side = on_plane ? 1 : oracle::orientation(tri.v0, tri.v1, tri.v2, c.step.a);
+        if (!on_plane && side == 0) {  // the step starts on the sheet: it cannot hit it
+          out.x = c.step.a;
+          return out;
+        }
+        if (on_plane) {
+          const Plane& p = c.planes[std::size_t(j)];
+          last = {true, index, -1, 0.0, Vec3::Zero(), p.normal.normalized()};
+          // Where a + t (b - a) lands, computed as a student would: a hair either side.
+          const double va = p.value(c.step.a), vb = p.value(c.step.b);
+          Vec3 x = (va != vb) ? c.step.point(va / (va - vb)) : c.step.a;
+          x -= p.normal * (p.value(x) / p.normal.squaredNorm());
+          const double local = std::max(largest(x), std::abs(p.offset) / p.normal.norm());
+          x -= *rc::gen::element(0.0, 1.0, -1.0) * std::ldexp(local, -40) * p.normal.normalized();
+          out.x = x;
+        } else {
+          const Vec3 n = tri.normal();
+          last = {true, -1, index, 0.0, Vec3::Zero(), side * n.normalized()};
+          const Vec3 weights = Vec3(*dyadic(0, 8, 3), *dyadic(0, 8, 3), 0);
+          Vec3 x = tri.v0 + weights.x() * (tri.v1 - tri.v0) + weights.y() * (tri.v2 - tri.v0);
+          x -= n * ((x - tri.v0).dot(n) / n.squaredNorm());  // onto the plane, up to rounding
+          out.x = x;
+        }
+        last.point = out.x;
+        return out;
+      }),
+      in_domain);
 }
 
 rc::Gen<SystemCase> system_case() {

@@ -215,27 +215,28 @@ rc::Gen<Plane> plane_through(const Vec3& point, int magnitude) {
   return rc::gen::map(integer_normal(magnitude), [point](const Vec3& n) { return through(point, n); });
 }
 
-namespace {
-
-// The header's domain: two planes facing each other (a crack) are at least 2^-40 S apart,
-// S the largest coordinate of the case's points (the step's ends, the mesh's vertices,
-// each plane's point nearest the origin). Moved far away along the crack, a narrow one
-// leaves no room that rounding can certify: such a case is not one the header promises.
-bool cracks_in_domain(const StepSurfaces& c) {
-  double s = scale_of({c.step.a, c.step.b});
-  for (const Vec3& v : c.mesh.vertices) s = std::max(s, v.cwiseAbs().maxCoeff());
-  for (const Plane& p : c.planes)
-    if (p.normal != Vec3::Zero()) s = std::max(s, std::abs(p.offset) / p.normal.norm());
-  for (std::size_t i = 0; i < c.planes.size(); ++i)
-    for (std::size_t j = i + 1; j < c.planes.size(); ++j) {
-      const Plane &p = c.planes[i], &q = c.planes[j];
+bool cracks_in_domain(const std::vector<Plane>& planes, double scale) {
+  for (const Plane& p : planes)
+    if (p.normal != Vec3::Zero()) scale = std::max(scale, std::abs(p.offset) / p.normal.norm());
+  for (std::size_t i = 0; i < planes.size(); ++i)
+    for (std::size_t j = i + 1; j < planes.size(); ++j) {
+      const Plane &p = planes[i], &q = planes[j];
       if (p.normal == Vec3::Zero() || q.normal == Vec3::Zero() || p.normal.cross(q.normal) != Vec3::Zero() ||
           p.normal.dot(q.normal) >= 0)
         continue;
       const double gap = std::abs(p.offset / p.normal.norm() + q.offset / q.normal.norm());
-      if (gap < std::ldexp(s, -40)) return false;
+      if (gap < std::ldexp(scale, -40)) return false;
     }
   return true;
+}
+
+namespace {
+
+// The step's ends and the mesh's vertices are the case's points.
+bool step_in_domain(const StepSurfaces& c) {
+  double s = scale_of({c.step.a, c.step.b});
+  for (const Vec3& v : c.mesh.vertices) s = std::max(s, v.cwiseAbs().maxCoeff());
+  return cracks_in_domain(c.planes, s);
 }
 
 }  // namespace
@@ -244,7 +245,7 @@ rc::Gen<StepSurfaces> step_surfaces() {
   const rc::Gen<StepSurfaces> near = rc::gen::exec([] { return surfaces(false); });
   return rc::gen::suchThat(
       rc::gen::weightedOneOf<StepSurfaces>({{7, near}, {1, rc::gen::exec([near] { return far_away(*near); })}}),
-      cracks_in_domain);
+      step_in_domain);
 }
 
 rc::Gen<StepSurfaces> exact_step_surfaces() {

@@ -47,6 +47,12 @@ rc::Gen<double> particle_scale();
 // A plane through `point` with a non-zero integer normal, components in [-magnitude, magnitude].
 rc::Gen<Plane> plane_through(const Vec3& point, int magnitude = 3);
 
+// The header's domain: two planes facing each other (a crack) are at least 2^-40 S apart,
+// S the largest coordinate of the case's points (`scale`) and of each plane's point
+// nearest the origin. Moved far away along the crack, a narrow one leaves no room that
+// rounding can certify: such a case is not one the header promises.
+bool cracks_in_domain(const std::vector<Plane>& planes, double scale);
+
 // Steps and surfaces on the fine lattice (the random cases).
 rc::Gen<StepSurfaces> step_surfaces();
 // Exact degenerate cases on integer coordinates (multiples of 8, |x| <= 1024, times a

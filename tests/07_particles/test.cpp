@@ -916,6 +916,16 @@ TEST_CASE(LABKIT_STEP(L07S10) ": random cases", "[lab07][step10][oracle]") {
   check::random_cases(query::rigid_impulse, gen::rigid_case(), run_rigid);
 }
 
+// Step 8's creases stay in the header's domain at the settled point's scale (CI's sweep,
+// seed 914): a step nearly along a plane crosses it far beyond its ends, and there two
+// planes facing each other 3e-31 apart are a crack of 2^-98 S, which no push can
+// certify, not the 2^-40 S the header promises. The generator draws no such case.
+TEST_CASE("L07 step 8: a crack is measured at the scale of the point settled", "[lab07][contract]") {
+  const std::vector<Plane> crack{{{1, 2, 2}, -3.160836977044716e-30}, {{-1, -2, -2}, 4.048305495418354e-30}};
+  CHECK(gen::cracks_in_domain(crack, 1e-30));                        // at the step's own scale
+  CHECK_FALSE(gen::cracks_in_domain(crack, 8.831770080097674e-17));  // at the point x
+}
+
 // ---- Preconditions (the header's "Preconditions"): the reference only ------------------
 // Tagged [contract], in no step: students are not graded on invalid input. Each call must
 // throw std::invalid_argument whose message names the argument.
