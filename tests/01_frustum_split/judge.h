@@ -5,10 +5,10 @@
 // The tests and the viewer both use them, so a red mark in the viewer and a failing
 // case in `./labkit check` always agree.
 //
-// The generators, first in this file (gen::):
-// Seeded inputs for view-frustum clipping (lab 01), on the same dyadic lattice as
-// the generators above, so that the degenerate families are exact: a vertex "on the plane" is
-// on it, an edge "through the line where two planes meet" passes through it.
+// The generators come first in this file (gen::). Seeded inputs for view-frustum clipping
+// (lab 01), on the same dyadic lattice as common/generators/generators.h, so that the
+// degenerate families are exact: a vertex "on the plane" is on it, an edge "through the
+// line where two planes meet" passes through it.
 //
 // Planes carry integer normals (not unit: the labs must not assume it) through lattice
 // points, or rounded unit normals; frustums come from random cameras (rounded unit

@@ -1,14 +1,15 @@
 // Lab 02's checker: the generators that draw each query's input, then the verdicts.
 //
-// Lab 02's verdicts: each judge compares one answer with the exact oracle, following
-// the tolerances and degenerate rules of labs/02_segment_triangle/segment_triangle.h.
-// The tests and the viewer both use them, so a red mark in the viewer and a failing
-// case in `./labkit check` always agree. The inputs are in tests/02_segment_triangle/queries.h, their random draws below.
+// Lab 02's verdicts: each judge compares one answer with the exact oracle, following the
+// tolerances and degenerate rules of labs/02_segment_triangle/segment_triangle.h. The
+// tests and the viewer both use them, so a red mark in the viewer and a failing case in
+// `./labkit check` always agree. The inputs are in tests/02_segment_triangle/queries.h,
+// their random draws below.
 //
-// The generators, first in this file (gen::):
-// Lab 02's own random inputs, beside the shared segment-triangle and mesh families
-// (the generators, needles.h): points in a triangle's plane, meshes moving rigidly, and two
-// meshes translating toward a contact.
+// The generators come first in this file (gen::). Lab 02's own random inputs, beside the
+// shared segment-triangle and mesh families (common/generators/generators.h, needles.h):
+// points in a triangle's plane, meshes moving rigidly, and two meshes translating toward
+// a contact.
 #pragma once
 
 #include "02_segment_triangle/queries.h"

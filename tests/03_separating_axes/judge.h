@@ -7,7 +7,7 @@
 //
 // The generators, first in this file (gen::):
 // Seeded inputs for separating axes (lab 03): boxes on an axis, box pairs, triangle
-// pairs and moving boxes, on the dyadic lattice of the generators.
+// pairs and moving boxes, on the dyadic lattice of common/generators/generators.h.
 //
 // Boxes turn by rotations from small integer quaternions (orthonormal to rounding), by
 // signed permutations (exact), and by tiny rotations of each other, so that edges are
@@ -90,7 +90,8 @@ Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules = Rules
 Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got);
 Outcome test_boxes(const BoxPair& in, bool got, Rules rules = Rules::random);
 Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules = Rules::random);
-// The interval method, on its domain (gen::in_interval_domain); outside it any answer passes.
+// The interval method, on its domain (gen::in_interval_domain); outside it any answer
+// passes.
 Outcome triangles_by_intervals(const TrianglePair& in, const LineIntervals& got, Rules rules = Rules::random);
 Outcome test_triangles(const TrianglePair& in, bool got, Rules rules = Rules::random);
 Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules = Rules::random);

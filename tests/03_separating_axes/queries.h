@@ -40,7 +40,8 @@ LABKIT_ANSWERER_CALLS(lab03, LABKIT_LAB03_CALLS)
 // ---- The inputs ------------------------------------------------------------------------
 // Lab 03's inputs: what each query of separating_axes.h is given, one struct per query,
 // and their fields() (the names a report prints and a replay token reads). The generators
-// (gen:: in tests/03_separating_axes/judge.h) draw them, the judge and the viewer read them.
+// (gen:: in tests/03_separating_axes/judge.h) draw them, the judge and the viewer read
+// them.
 namespace labkit {
 
 struct BoxOnAxis {

@@ -4,10 +4,10 @@
 // tolerances and degenerate rules of labs/05_sphere_sweeps/sphere_sweeps.h. The tests
 // and the viewer both use them.
 //
-// The generators, first in this file (gen::):
-// Seeded inputs for sphere-swept volumes (lab 05), on the dyadic lattice of the generators,
-// so that the degenerate families are exact: "parallel" segments are parallel, a point
-// "on the side" is on it, spheres "exactly grazing" graze.
+// The generators come first in this file (gen::). Seeded inputs for sphere-swept volumes
+// (lab 05), on the dyadic lattice of common/generators/generators.h, so that the
+// degenerate families are exact: "parallel" segments are parallel, a point "on the side"
+// is on it, spheres "exactly grazing" graze.
 //
 // Families on purpose: crossing, parallel, collinear and nearly parallel segments, ends
 // on the other shape, zero-length segments and zero-size rectangles, segments piercing

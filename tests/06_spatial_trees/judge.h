@@ -2,7 +2,8 @@
 //
 // Lab 06's verdicts: each judge compares one answer with the exact oracle, following the
 // rules and tolerances of labs/06_spatial_trees/spatial_trees.h. The tests and the viewer
-// both use them. The inputs are in tests/06_spatial_trees/queries.h, their random draws below.
+// both use them. The inputs are in tests/06_spatial_trees/queries.h, their random draws
+// below.
 //
 // The generators, first in this file (gen::):
 // Lab 06's own random inputs, drawn from the shared meshes and spheres (meshes.h): segments
@@ -37,7 +38,8 @@ rc::Gen<lab06::SphereSet> exact_sphere_set_case();
 // Step 6: step 5's spheres, then frames in which they move a little.
 rc::Gen<lab06::SweepCase> sweep_case();
 rc::Gen<lab06::SweepCase> exact_sweep_case();
-// Step 6's big case, frame by frame (no random draw: the same numbers give the same frames).
+// Step 6's big case, frame by frame (no random draw: the same numbers give the same
+// frames).
 lab06::SweepCase moving_spheres(const lab06::MovingSpheres& m);
 // Step 7: two small meshes overlapping in part, seeds for the checker's OBB trees.
 rc::Gen<lab06::BvhQuery> bvh_query();

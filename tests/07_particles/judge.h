@@ -5,11 +5,11 @@
 // use them, so a red mark in the viewer and a failing case in `./labkit check` agree. The
 // inputs are in tests/07_particles/queries.h, their random draws below.
 //
-// The generators, first in this file (gen::):
-// Seeded inputs for particles that bounce (lab 07): a particle's step as a segment
-// against one-sided planes and a two-sided mesh. Same dyadic lattice as the generators above:
-// planes have small integer normals through lattice points, so a point "on the plane" or
-// "on the line where two planes meet" is exactly there.
+// The generators come first in this file (gen::). Seeded inputs for particles that bounce
+// (lab 07): a particle's step as a segment against one-sided planes and a two-sided mesh.
+// Same dyadic lattice as common/generators/generators.h: planes have small integer
+// normals through lattice points, so a point "on the plane" or "on the line where two
+// planes meet" is exactly there.
 //
 // Families on purpose: steps crossing a plane, starting exactly on it (resting, pushed in),
 // ending exactly on it (touching), sliding along it, near-parallel; into the crease of two
@@ -44,7 +44,8 @@ namespace labkit::gen {
 // domain, 2^-100 and 2^100 (with 2^-60 and 2^60 between).
 rc::Gen<double> particle_scale();
 
-// A plane through `point` with a non-zero integer normal, components in [-magnitude, magnitude].
+// A plane through `point` with a non-zero integer normal, components in [-magnitude,
+// magnitude].
 rc::Gen<Plane> plane_through(const Vec3& point, int magnitude = 3);
 
 // The header's domain: two planes facing each other (a crack) are at least 2^-40 S apart,
@@ -122,7 +123,8 @@ using check::Outcome;
 
 using check::Rules;  // random cases, or a robustness step's exact input
 
-// Step 1. `first` and `second`: the same count of particles emitted twice from Random(seed).
+// Step 1. `first` and `second`: the same count of particles emitted twice from
+// Random(seed).
 Outcome emit(const EmitCase& in, const std::vector<Particle>& first, const std::vector<Particle>& second);
 // got[k]: the births of step k, each step starting from the owed of the one before.
 Outcome births(const BirthsCase& in, const std::vector<Births>& got);
