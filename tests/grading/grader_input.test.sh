@@ -605,7 +605,7 @@ grep -q "<h1>Class report: Lab 02, core steps</h1>" "$assigned/class/class.html"
 # A wrong assignment or roster: exit 2, the reason, nothing written.
 printf 'Student,ID\nAda,101\n' >"$work/no_key.csv"
 printf 'ID,submission\n1,ada\n2,ada\n' >"$work/twice.csv"
-for wrong in "--assignment 02:99|step 99 of lab 02" "--assignment 08|lab '08'" "--assignment 02:core,1|'core' is none" \
+for wrong in "--assignment 02:99|step 99 of lab 02" "--assignment 99|lab '99'" "--assignment 02:core,1|'core' is none" \
              "--assignment 02:extra|'extra' is none" "--roster $work/no_key.csv|no \"submission\" column" \
              "--roster $work/twice.csv|two students" "--roster $work/missing.csv|cannot read the roster"; do
   read -r -a args <<<"${wrong%%|*}"
