@@ -1,3 +1,4 @@
+# labkit_add_labs(): every lab grading/manifest.json lists, through
 # labkit_add_lab(NN name): everything one lab needs, from its files alone.
 #
 # The code under test never shares a process with the judge (common/protocol/answerer.h):
@@ -66,6 +67,29 @@ function(labkit_implementation target stem)
     target_link_libraries(${target} PUBLIC given_${stem})
   endif()
   target_precompile_headers(${target} REUSE_FROM labkit_geometry)
+endfunction()
+
+# Every lab grading/manifest.json lists, in its order: the manifest is the one list of
+# the labs, so that adding lab 08 is its entry there and its files, and no line here.
+function(labkit_add_labs)
+  set(json "${LABKIT_MANIFEST}")
+  string(JSON lab_count LENGTH "${json}" labs)
+  math(EXPR last "${lab_count} - 1")
+  foreach(i RANGE ${last})
+    string(JSON id GET "${json}" labs ${i} id)
+    string(JSON name GET "${json}" labs ${i} name)
+    if(NOT id MATCHES "^[0-9][0-9]$" OR NOT name MATCHES "^[a-z][a-z0-9_]*$")
+      message(FATAL_ERROR "grading/manifest.json: lab ${i} has id '${id}' and name '${name}'; an id is two digits "
+                          "(\"08\") and a name lower case letters, digits and _ (\"boxes\")")
+    endif()
+    foreach(file IN ITEMS "labs/${id}_${name}/${name}.h" "tests/${id}_${name}/test.cpp")
+      if(NOT EXISTS "${PROJECT_SOURCE_DIR}/${file}")
+        message(FATAL_ERROR "grading/manifest.json lists lab ${id} (${name}), but ${file} is missing "
+                            "(README, \"Adding a lab\")")
+      endif()
+    endforeach()
+    labkit_add_lab(${id} ${name})
+  endforeach()
 endfunction()
 
 function(labkit_add_lab number name)

@@ -129,7 +129,7 @@ Manifest restrict_to(const Manifest& manifest, Assignment& assignment) {
     if (!lab) {
       std::string known;
       for (const Lab& l : manifest.labs) known += (known.empty() ? "" : ", ") + l.id;
-      throw std::runtime_error("the assignment names lab '" + part.lab + "'; the labs are " + known);
+      throw std::runtime_error("there is no lab '" + part.lab + "' in grading/manifest.json; the labs are " + known);
     }
     if (std::any_of(out.labs.begin(), out.labs.end(), [&](const Lab& l) { return l.id == lab->id; }))
       throw std::runtime_error("the assignment names lab " + lab->id + " twice; list its steps once");

@@ -7,6 +7,7 @@
 #include "grade.h"
 #include "includes.h"
 #include "mutant.h"
+#include "plan.h"
 #include "sandbox.h"
 #include "untrusted.h"
 
@@ -107,6 +108,14 @@ CLI::App* add_report(CLI::App& app, ReportOptions& report) {
   return command;
 }
 
+// `plan`: the core paths and extensions, from the manifest; the instructor's planning view.
+CLI::App* add_plan(CLI::App& app, runner::PlanOptions& plan) {
+  CLI::App* command = app.add_subcommand("plan", "The labs' core paths and extensions, with minutes and points");
+  command->add_option("labs", plan.labs, "Labs to show step by step, e.g. 03");
+  command->add_option("--assignment", plan.assignment, "An assignment (03:core, or a JSON file) to show");
+  return command;
+}
+
 struct AssignmentOptions {
   std::vector<std::string> items;
   std::string out, workflow;
@@ -174,12 +183,14 @@ int main(int argc, char** argv) {
   runner::GradeOptions grade;
   ReportOptions report;
   AssignmentOptions assignment;
+  runner::PlanOptions plan;
   runner::MutantOptions mutant;
   runner::FakeOptions fake;
   CLI::App* check_command = add_check(app, check, !std::filesystem::exists(paths.source + "/solutions"));
   CLI::App* grade_command = add_grade(app, grade);
   CLI::App* report_command = add_report(app, report);
   CLI::App* assignment_command = add_assignment(app, assignment);
+  CLI::App* plan_command = add_plan(app, plan);
   CLI::App* mutant_command = add_mutant(app, mutant);
   CLI::App* fake_command = add_fake(app, fake);
   CLI11_PARSE(app, argc, argv);
@@ -199,6 +210,7 @@ int main(int argc, char** argv) {
     }
     if (assignment_command->parsed())
       return runner::freeze_assignment(paths, assignment.items, assignment.out, assignment.workflow);
+    if (plan_command->parsed()) return runner::plan(paths, plan);
     if (mutant_command->parsed()) return runner::mutant(paths, mutant);
     if (fake_command->parsed()) return runner::fake(paths, fake);
     if (report_command->parsed()) {

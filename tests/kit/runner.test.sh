@@ -116,5 +116,24 @@ pin "lab 06's traversal cost" "$(constant solutions/06_spatial_trees/spatial_tre
   handouts/06_spatial_trees.md "\`C_trav = @\`" handouts/hints/06_spatial_trees.md "\`C_trav = @\`" \
   solutions/06_spatial_trees/spatial_trees.cpp "hence @,"
 
+echo "--- 8. the plan: every lab of the manifest, its core path summed, an assignment's steps only"
+out=$("$runner" plan 2>&1); code=$?
+echo "$out"
+labs=$(grep -c '^ *"id": *"[0-9]*"' "$manifest")
+[ $code -eq 0 ] || fail "plan exits $code"
+[ "$(grep -c "^    core path: " <<<"$out")" -eq "$labs" ] || fail "plan does not give each of the manifest's $labs labs a core path"
+while read -r _ _ list; do  # "1 (20), 2 (45): 65 min": the minutes add up
+  sum=0
+  for m in $(grep -o '([0-9]*)' <<<"${list%%:*}" | tr -d '()'); do sum=$((sum + m)); done
+  [ "${list##*: }" = "$sum min" ] || fail "plan's core path '$list' does not add up to $sum min"
+done < <(grep "^    core path: " <<<"$out")
+out=$("$runner" plan --assignment 03:core 2>&1); code=$?
+echo "$out"
+[ $code -eq 0 ] && grep -q '^Assignment "Lab 03, core steps": ' <<<"$out" || fail "plan --assignment 03:core does not name the assignment"
+grep -q "  extension  " <<<"$out" && fail "plan --assignment 03:core lists an extension step"
+for args in "plan 99" "plan --assignment 03:nonsense"; do
+  rejects "$runner" "$args"
+done
+
 [ $failures -eq 0 ] && echo "all runner checks passed"
 exit $((failures > 0))

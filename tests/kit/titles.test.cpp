@@ -207,24 +207,3 @@ TEST_CASE("each hints file marks its extension steps' sections, and only those",
     }
   }
 }
-
-// README, "Fitting a course": its table of core paths and extensions is the manifest's.
-TEST_CASE("the README's table of core paths is the manifest's", "[kit]") {
-  const nlohmann::json all = manifest();
-  const std::string readme = labkit::read_file(fs::path(source_dir()) / "README.md");
-  for (const auto& lab : all["labs"]) {
-    std::string core, extensions, name = lab["name"];
-    int minutes = 0;
-    for (const auto& step : lab["steps"]) {
-      std::string& list = step["tier"] == "core" ? core : extensions;
-      list += (list.empty() ? "" : ", ") + std::to_string(step["step"].get<int>()) + " (" +
-              std::to_string(step["minutes"].get<int>()) + ")";
-      if (step["tier"] == "core") minutes += step["minutes"].get<int>();
-    }
-    std::replace(name.begin(), name.end(), '_', ' ');
-    const std::string row = "| " + lab["id"].get<std::string>() + " " + name + " | " + core + " | " +
-                            std::to_string(minutes) + " min | " + (extensions.empty() ? "none" : extensions) + " |";
-    INFO("README.md needs the row: " << row);
-    CHECK(readme.find(row) != std::string::npos);
-  }
-}
