@@ -11,8 +11,9 @@
 #                                    edit recompiles one file and relinks this small program.
 #   tests/NN_name/               the lab's checker, in one folder:
 #     queries.h                   -> the lab's functions and types on the wire, each query's
-#                                    input, and the lab's table of queries (both processes)
-#     judge.h                     -> the generators' and the verdicts' declarations
+#                                    input, the lab's table of queries, and the generators'
+#                                    and the verdicts' declarations (both processes)
+#     judge.h (if any)            -> helpers the generators, judges, tests and scene share
 #     generators*.cpp             -> random inputs (compiled into the judge)
 #     judge*.cpp                  -> labNN_judge       (verdicts against the oracle; the viewer shares
 #                                    it; judge_internal.h: what the judge's own files share)

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "common/harness/codec.h"
+#include "common/harness/outcome.h"
 #include "common/harness/query.h"
 #include "common/harness/rapidcheck_adaptor.h"
 #include "common/harness/titles.h"
@@ -68,24 +69,6 @@ struct Settings {
   bool domain_audit = false;  // LABKIT_DOMAIN_AUDIT=1: a case drawn outside the header's domain is a kit error
 };
 const Settings& settings();
-
-struct Outcome {
-  enum class Verdict { pass, fail, ambiguous };
-  Verdict verdict = Verdict::pass;
-  std::string expected;  // the exact answer, as a person reads it
-  std::string got;       // the answer under test
-  std::string why;       // the rule it broke, with the numbers
-};
-
-inline Outcome pass() { return {}; }
-inline Outcome ambiguous() { return {Outcome::Verdict::ambiguous, {}, {}, {}}; }
-inline Outcome fail(std::string expected, std::string got, std::string why) {
-  return {Outcome::Verdict::fail, std::move(expected), std::move(got), std::move(why)};
-}
-
-// Which rules a query is judged by: random cases accept either answer on ambiguous input;
-// a robustness step's exact degenerate input must follow the header's rules exactly.
-enum class Rules { random, exact };
 
 // A yes/no answer against the exact one. `doubt` (ignored under the exact rules): the
 // input is ambiguous, so either answer passes. `yes` and `no` say the two answers.

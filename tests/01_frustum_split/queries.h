@@ -1,6 +1,8 @@
 // Lab 01's queries, declared in one place: the functions the judge's process calls in
 // the answerer and the lab's types as they cross (first), the input each query is
-// given (then), and the table of the queries (last). Both processes include it.
+// given (then), the table of the queries, and how each input is drawn and each answer
+// judged (last): a new query is written here, then defined in generators*.cpp and
+// judge*.cpp. Both processes include it; the answerer uses only its first part.
 //
 // The protocol (common/protocol/answerer.h) copies the lab's types by their fields, which
 // reports print too.
@@ -9,6 +11,7 @@
 #include "frustum_split.h"
 
 #include "common/fields.h"
+#include "common/harness/outcome.h"
 #include "common/harness/query.h"
 #include "common/protocol/calls.h"
 
@@ -43,7 +46,7 @@ LABKIT_ANSWERER_CALLS(lab01, LABKIT_LAB01_CALLS)
 // ---- The inputs ------------------------------------------------------------------------
 // Lab 01's inputs: what each query of frustum_split.h is given, one struct per query, and
 // their fields() (the names a report prints and a replay token reads). The generators
-// (gen:: in tests/01_frustum_split/judge.h) draw them, the judge and the viewer read them.
+// (gen::, declared below) draw them, the judge and the viewer read them.
 namespace labkit {
 
 struct TrianglePlane {
@@ -100,3 +103,78 @@ LABKIT_FIELDS(CameraParameters, eye, forward, up, fov_y, aspect, near, far)
 namespace labkit::lab01::query {
 LABKIT_QUERIES(LABKIT_LAB01_QUERIES)
 }  // namespace labkit::lab01::query
+
+// ---- How each input is drawn, and the verdicts -----------------------------------------
+// Declared here, beside the queries they serve; defined in generators*.cpp (gen::) and
+// judge*.cpp (judge::). RapidCheck is included where the generators are called.
+namespace rc {
+template <typename T> class Gen;
+}  // namespace rc
+
+// Seeded inputs for view-frustum clipping (lab 01), on the same dyadic lattice as
+// common/generators/generators.h, so that the degenerate families are exact: a vertex "on
+// the plane" is on it, an edge "through the line where two planes meet" passes through
+// it.
+//
+// Planes carry integer normals (not unit: the labs must not assume it) through lattice
+// points, or rounded unit normals; frustums come from random cameras (rounded unit
+// planes) or are exact: boxes and pyramids with integer normals. Families on purpose:
+// vertices on planes, edges along them, triangles lying in them or touching them at a
+// point, edges through frustum edges and corners, tiny offsets off all of these, needle
+// triangles (aspects up to 2^27, about 1.3e8), every scale from 2^-20 to 2^20 and some at
+// the ends of lab 01's domain (2^-100 to 2^100), and far from the origin.
+namespace labkit::gen {
+
+// A plane and a triangle: generic, a vertex on the plane, an edge along it, the triangle
+// in it, touching it at a vertex from either side, tiny offsets off those, every scale,
+// far from the origin; integer normals (the plane through a lattice point) or rounded
+// unit normals.
+rc::Gen<TrianglePlane> triangle_plane();
+// Only exactly degenerate ones, on integer coordinates (|x| <= 1024, times a power of
+// two) and integer normals: the robustness step's input.
+rc::Gen<TrianglePlane> exact_triangle_plane();
+
+// Cameras at every scale and distance from the origin: fields of view from 20 to 120
+// degrees, aspects from 1/2 to 2, far / near from 2 to 64, up at least 15 degrees away
+// from forward.
+rc::Gen<CameraParameters> camera();
+// The same cameras as the lab's Camera, for frustum_from_camera.
+rc::Gen<lab01::Camera> lab_camera();
+// View-projection matrices: perspective cameras, orthographic views, and either times a
+// positive power of two (the same clip volume).
+rc::Gen<Mat4> view_projection_matrix();
+
+// A triangle near a frustum: across its corners, edges and faces, inside, outside, and
+// near-degenerate against frustums from cameras; exactly degenerate against exact ones.
+rc::Gen<TriangleFrustum> triangle_frustum();
+// Exact frustums (boxes and pyramids with integer normals) and triangles with vertices on
+// their planes, edges along them, in them, touching them, and through their edges and
+// corners: the robustness step's input.
+rc::Gen<TriangleFrustum> exact_triangle_frustum();
+
+// A small mesh (soup, terrain, octahedron) with colours, across a frustum.
+rc::Gen<MeshFrustum> mesh_frustum();
+// The same on integer coordinates, across exact frustums: the robustness step's input.
+rc::Gen<MeshFrustum> exact_mesh_frustum();
+
+}  // namespace labkit::gen
+
+// Lab 01's verdicts: each judge compares one answer with the exact oracle, following the
+// tolerances and degenerate rules of labs/01_frustum_split/frustum_split.h. The tests and
+// the viewer both use them, so a red mark in the viewer and a failing case in `./labkit
+// check` always agree.
+namespace labkit::lab01::judge {
+
+using check::Outcome;
+using check::Rules;  // random cases, or a robustness step's exact input
+
+// got[i] is the signed distance of vertex i to the plane.
+Outcome signed_distance(const TrianglePlane& in, const std::array<double, 3>& got);
+Outcome classify(const TrianglePlane& in, const std::array<Side, 3>& got, Rules rules = Rules::random);
+Outcome split_triangle(const TrianglePlane& in, const std::vector<Triangle>& got, Rules rules = Rules::random);
+Outcome frustum_from_camera(const Camera& in, const Frustum& got);
+Outcome frustum_from_matrix(const Mat4& in, const Frustum& got);
+Outcome clip_triangle(const TriangleFrustum& in, const std::vector<Triangle>& got, Rules rules = Rules::random);
+Outcome clip_mesh(const MeshFrustum& in, const ClippedMesh& got, Rules rules = Rules::random);
+
+}  // namespace labkit::lab01::judge

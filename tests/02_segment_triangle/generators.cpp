@@ -1,5 +1,6 @@
-#include "02_segment_triangle/judge.h"
+#include "02_segment_triangle/queries.h"
 
+#include "common/generators/needles.h"
 #include "common/harness/check.h"
 
 #include <cmath>

@@ -2,7 +2,8 @@
 // defined in tests/02_segment_triangle/judge.cpp. Not for the tests or the viewer.
 #pragma once
 
-#include "02_segment_triangle/judge.h"
+#include "02_segment_triangle/queries.h"
+#include "common/harness/check.h"
 
 #include "judging.h"
 

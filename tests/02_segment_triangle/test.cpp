@@ -1,6 +1,8 @@
 // Lab 02 tests. Each step: the hand-worked examples of handouts/02_segment_triangle.md,
 // then random cases against the exact oracle (tests/02_segment_triangle/judge.cpp).
-#include "02_segment_triangle/judge.h"
+#include "02_segment_triangle/queries.h"
+#include "common/generators/needles.h"
+#include "common/harness/check.h"
 #include "segment_triangle.h"
 
 #include "common/generators/meshes.h"

@@ -1,6 +1,8 @@
 // Lab 03's queries, declared in one place: the functions the judge's process calls in
 // the answerer and the lab's types as they cross (first), the input each query is
-// given (then), and the table of the queries (last). Both processes include it.
+// given (then), the table of the queries, and how each input is drawn and each answer
+// judged (last): a new query is written here, then defined in generators*.cpp and
+// judge*.cpp. Both processes include it; the answerer uses only its first part.
 //
 // The protocol (common/protocol/answerer.h) copies the lab's types by their fields, which
 // reports print too.
@@ -9,6 +11,7 @@
 #include "separating_axes.h"
 
 #include "common/fields.h"
+#include "common/harness/outcome.h"
 #include "common/harness/query.h"
 #include "common/protocol/calls.h"
 
@@ -40,7 +43,7 @@ LABKIT_ANSWERER_CALLS(lab03, LABKIT_LAB03_CALLS)
 // ---- The inputs ------------------------------------------------------------------------
 // Lab 03's inputs: what each query of separating_axes.h is given, one struct per query,
 // and their fields() (the names a report prints and a replay token reads). The generators
-// (gen:: in tests/03_separating_axes/judge.h) draw them, the judge and the viewer read
+// (gen::, declared below) draw them, the judge and the viewer read
 // them.
 namespace labkit {
 
@@ -100,3 +103,81 @@ LABKIT_FIELDS(MovingBoxes, a, velocity_a, b, velocity_b, duration)
 namespace labkit::lab03::query {
 LABKIT_QUERIES(LABKIT_LAB03_QUERIES)
 }  // namespace labkit::lab03::query
+
+// ---- How each input is drawn, and the verdicts -----------------------------------------
+// Declared here, beside the queries they serve; defined in generators*.cpp (gen::) and
+// judge*.cpp (judge::). RapidCheck is included where the generators are called.
+namespace rc {
+template <typename T> class Gen;
+}  // namespace rc
+
+// Seeded inputs for separating axes (lab 03): boxes on an axis, box pairs, triangle pairs
+// and moving boxes, on the dyadic lattice of common/generators/generators.h.
+//
+// Boxes turn by rotations from small integer quaternions (orthonormal to rounding), by
+// signed permutations (exact), and by tiny rotations of each other, so that edges are
+// exactly parallel, parallel to rounding, or 2^-k apart. The families place boxes face to
+// face, edge across edge and corner on face, touching or a power-of-two gap apart or into
+// each other (2^-4 to 2^-60 of the scale), flatten them (zero half extents), nest them,
+// and move them far from the origin, at every scale from 2^-20 to 2^20. Triangle pairs
+// cross through each other, touch at vertices and edges, lie in one plane (overlapping,
+// touching or apart), sit in nearly parallel or parallel planes, and include zero-area
+// triangles. Moving boxes meet at a dyadic time, head on, at an angle or grazing, slide
+// along each other, miss, start in contact, move together, or pass through a thin box
+// within one step.
+namespace labkit::gen {
+
+// A rotation from a small integer quaternion (rounded), or a signed permutation (exact).
+rc::Gen<Mat3> rotation();
+// An oriented box at every scale: lattice center, rotation, half extents of 1/2 to 8
+// units of the scale with 20-bit fractions, sometimes zero.
+rc::Gen<Box> box(double scale);
+
+rc::Gen<BoxOnAxis> box_on_axis();
+rc::Gen<BoxPairOnAxis> box_pair_on_axis();
+rc::Gen<BoxPair> box_pair();
+// Exactly degenerate pairs on integer coordinates (|x| <= 1024, times a power of two)
+// with signed-permutation axes: touching faces, edges and corners, parallel edges,
+// zero half extents, nested and coincident boxes. The robustness step's input.
+rc::Gen<BoxPair> exact_box_pair();
+
+rc::Gen<TrianglePair> triangle_pair();
+// The interval method's domain (lab 03 step 4, triangles_by_intervals): fat triangles
+// (smallest height >= 1/100 of the longest edge) crossing each other's planes, every
+// vertex at least S/100 off the other's plane; often with two interval ends just apart
+// or just overlapping (10 to 80 tol), and at every scale.
+rc::Gen<TrianglePair> crossing_triangle_pair();
+bool in_interval_domain(const TrianglePair& p);
+// Exactly degenerate triangle pairs on integer coordinates: through vertices and edges,
+// touching, coplanar, zero area.
+rc::Gen<TrianglePair> exact_triangle_pair();
+
+rc::Gen<MovingBoxes> moving_boxes();
+// Exact boxes meeting at dyadic times with lattice velocities.
+rc::Gen<MovingBoxes> exact_moving_boxes();
+
+}  // namespace labkit::gen
+
+// Lab 03's verdicts: each judge compares one answer with the exact oracle, following the
+// tolerances and degenerate rules of labs/03_separating_axes/separating_axes.h. The tests
+// and the viewer both use them, so a red mark in the viewer and a failing case in
+// `./labkit check` always agree.
+namespace labkit::lab03::judge {
+
+using check::Outcome;
+using check::Rules;  // random cases, or a robustness step's exact input
+
+Outcome project_box(const BoxOnAxis& in, const Projection& got);
+Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules = Rules::random);
+// got[k] = box_axis(a, b, k) for k = 0..14.
+Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got);
+Outcome test_boxes(const BoxPair& in, bool got, Rules rules = Rules::random);
+Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules = Rules::random);
+// The interval method, on its domain (gen::in_interval_domain); outside it any answer
+// passes.
+Outcome triangles_by_intervals(const TrianglePair& in, const LineIntervals& got, Rules rules = Rules::random);
+Outcome test_triangles(const TrianglePair& in, bool got, Rules rules = Rules::random);
+Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules = Rules::random);
+Outcome find_moving_boxes(const MovingBoxes& in, const ContactInterval& got, Rules rules = Rules::random);
+
+}  // namespace labkit::lab03::judge

@@ -1,6 +1,8 @@
 // Lab 04's queries, declared in one place: the functions the judge's process calls in
 // the answerer and the lab's types as they cross (first), the input each query is
-// given (then), and the table of the queries (last). Both processes include it.
+// given (then), the table of the queries, and how each input is drawn and each answer
+// judged (last): a new query is written here, then defined in generators*.cpp and
+// judge*.cpp. Both processes include it; the answerer uses only its first part.
 //
 // The protocol (common/protocol/answerer.h) copies the lab's types by their fields, which
 // reports print too. A Motion crosses as the numbers of its StandardMotion (the tests
@@ -12,6 +14,7 @@
 #include "common/fields.h"
 #include "common/given/served.h"
 #include "common/harness/codec.h"
+#include "common/harness/outcome.h"
 #include "common/harness/query.h"
 #include "common/protocol/calls.h"
 
@@ -126,7 +129,7 @@ LABKIT_ANSWERER_CALLS(lab04, LABKIT_LAB04_CALLS)
 // ---- The inputs ------------------------------------------------------------------------
 // Lab 04's inputs: what each query of bisection.h is given, one struct per query, and
 // their fields() (the names a report prints and a replay token reads). The generators
-// (gen:: in tests/04_bisection/judge.h) draw them, the judge and the viewer read them.
+// (gen::, declared below) draw them, the judge and the viewer read them.
 namespace labkit {
 
 // A standard motion, as the kit describes it (lab 04's StandardMotion holds the same):
@@ -233,3 +236,88 @@ std::string describe(const MovingBody& b);  // the shape it is, and its motion
 namespace labkit::lab04::query {
 LABKIT_QUERIES(LABKIT_LAB04_QUERIES)
 }  // namespace labkit::lab04::query
+
+// ---- How each input is drawn, and the verdicts -----------------------------------------
+// Declared here, beside the queries they serve; defined in generators*.cpp (gen::) and
+// judge*.cpp (judge::). RapidCheck is included where the generators are called.
+namespace rc {
+template <typename T> class Gen;
+}  // namespace rc
+
+// Seeded inputs for time of impact (lab 04): a sphere and a sphere or an oriented box,
+// each moving by a standard motion, and the times of a search.
+//
+// Families on purpose: bodies that run into each other (so that a search has something to
+// bracket), bodies that start overlapping, bodies that touch exactly at an end, at a
+// midpoint or at a sample time, bodies that graze (touch for one instant) or miss by a
+// hair, fast thin bodies that pass right through each other between two samples
+// (tunnelling), spinning, screwing, orbiting and accelerating bodies, zero radii and zero
+// half extents, every scale from 2^-20 to 2^20 and both ends of the header's domain
+// (2^-300 and 2^300), and far from the origin. The exact families use integer coordinates
+// and short binary times, so that every pose is exact.
+namespace labkit::gen {
+
+// Pairs for the overlap, bisection and advancement queries: mostly bodies that run into
+// each other during [t0, t1], with starts that overlap, exact and near touching and
+// grazing, and unrelated motions; every kind of standard motion; tolerances from 2^-30
+// to 1/2 of the interval.
+rc::Gen<MovingPairCase> moving_pair();
+// Tolerances no finer than 2^-12 of the interval: conservative advancement may crawl
+// forward one tolerance at a time past a near miss.
+rc::Gen<MovingPairCase> advancing_pair();
+// Exact input for the robustness step: integer coordinates (multiples of 8, times a power
+// of two), radii that are multiples of 35 (so that Pythagorean directions give exact
+// touching points), boxes with signed permutations for axes, motions without spin, and
+// times that are short binary fractions; touching at t0, t1, midpoints and samples,
+// grazing, zero radii and zero half extents.
+rc::Gen<MovingPairCase> exact_moving_pair();
+// A fast small sphere and a thin wall (or a small sphere): clear at t0 and at t1, and
+// right through each other in between, faster than one sub-step of the lecture's rule
+// can miss.
+rc::Gen<MovingPairCase> tunnelling_pair();
+
+rc::Gen<PointBox> point_box();
+rc::Gen<PointBox> exact_point_box();
+rc::Gen<SubstepRule> substep_rule();
+// Mostly whole ratios (on the rule's boundary), exact in doubles: the robustness step's.
+rc::Gen<SubstepRule> exact_substep_rule();
+rc::Gen<SampledPair> sampled_pair();
+rc::Gen<SampledPair> exact_sampled_pair();
+rc::Gen<AdvancedPair> advanced_pair();
+rc::Gen<AdvancedPair> exact_advanced_pair();
+
+}  // namespace labkit::gen
+
+// Lab 04's verdicts: each judge checks one answer against the exact oracle, following the
+// tolerances and degenerate rules of labs/04_bisection/bisection.h. The tests and the
+// viewer both use them, so a red mark in the viewer and a failing case in `./labkit
+// check` always agree.
+//
+// Times are certified, never compared with another floating-point root: the oracle poses
+// the bodies with the motion's own numbers at the reported times and decides overlap
+// exactly there. A configuration is in doubt when the bodies' signed gap is within what a
+// perturbation of the input by a relative 1e-9 can move it (they touch, or nearly:
+// grazing contact); a verdict that hangs on such a configuration is ambiguous.
+namespace labkit::lab04::judge {
+
+using check::Outcome;
+using check::Rules;  // random cases, or a robustness step's exact input
+
+Outcome closest_point(const PointBox& in, const Vec3& got, Rules rules = Rules::random);
+// Overlap at t0 and at t1 of the case's search.
+Outcome overlap_at(const MovingPairCase& in, bool got_t0, bool got_t1, Rules rules = Rules::random);
+Outcome bisect(const MovingPairCase& in, const TimeOfImpact& got, Rules rules = Rules::random);
+Outcome substeps_for(const SubstepRule& in, int got, Rules rules = Rules::random);
+Outcome sample_then_bisect(const SampledPair& in, const TimeOfImpact& got, Rules rules = Rules::random);
+// closing_speed of the pair on [t0, t1]: max_speed of a plus max_speed of b.
+Outcome closing_speed(const MovingPairCase& in, double got);
+// The tunnelling demonstration: the pair's closing speed, the sub-step count for it and
+// the pair's size, point sampling at the frame's ends only (which must miss) and with
+// that many sub-steps (which must find the contact).
+Outcome tunnelling(const MovingPairCase& in, double got_speed, int got_substeps, const TimeOfImpact& frame_only,
+                   const TimeOfImpact& substepped);
+// The distance at t0 and at t1 of the case's search.
+Outcome distance_at(const MovingPairCase& in, double got_t0, double got_t1);
+Outcome advance(const AdvancedPair& in, const TimeOfImpact& got, Rules rules = Rules::random);
+
+}  // namespace labkit::lab04::judge

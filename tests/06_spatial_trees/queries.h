@@ -1,6 +1,8 @@
 // Lab 06's queries, declared in one place: the functions the judge's process calls in
 // the answerer and the lab's types as they cross (first), the input each query is
-// given (then), and the table of the queries (last). Both processes include it.
+// given (then), the table of the queries, and how each input is drawn and each answer
+// judged (last): a new query is written here, then defined in generators*.cpp and
+// judge*.cpp. Both processes include it; the answerer uses only its first part.
 //
 // The protocol (common/protocol/answerer.h) copies the lab's types by their fields, which
 // reports print too. A tree the student's code built crosses back with each query on it,
@@ -12,6 +14,7 @@
 #include "common/fields.h"
 #include "common/given/segment_triangle.h"
 #include "common/given/served.h"
+#include "common/harness/outcome.h"
 #include "common/harness/query.h"
 #include "common/protocol/calls.h"
 
@@ -259,3 +262,94 @@ LABKIT_FIELDS(OctreeCase, spheres, capacity, max_depth, box, exact)
 namespace labkit::lab06::query {
 LABKIT_QUERIES(LABKIT_LAB06_QUERIES)
 }  // namespace labkit::lab06::query
+
+// ---- How each input is drawn, and the verdicts -----------------------------------------
+// Declared here, beside the queries they serve; defined in generators*.cpp (gen::) and
+// judge*.cpp (judge::). RapidCheck is included where the generators are called.
+namespace rc {
+template <typename T> class Gen;
+}  // namespace rc
+
+// Lab 06's own random inputs, drawn from the shared meshes and spheres (meshes.h):
+// segments and points near a mesh with a seed for the checker's tree, sets of spheres
+// moving frame by frame, and pairs of meshes that overlap in part.
+namespace labkit::gen {
+
+// Step 2: a mesh (lab 02's soups, terrains and octahedra among others), a segment near it
+// and a seed for the checker's tree; the exact one on integers.
+rc::Gen<lab06::TreeQuery> tree_query();
+rc::Gen<lab06::TreeQuery> exact_tree_query();
+// Steps 3 and 4: a mesh for a BSP tree, a point near a closed mesh, an eye near any mesh.
+rc::Gen<Mesh> bsp_mesh();
+rc::Gen<lab06::PointQuery> point_query();
+rc::Gen<lab06::PointQuery> exact_point_query();
+rc::Gen<lab06::PointQuery> eye_query();
+rc::Gen<lab06::PointQuery> exact_eye_query();
+// Step 5: sphere_set() and exact_sphere_set() as one input.
+rc::Gen<lab06::SphereSet> sphere_set_case();
+rc::Gen<lab06::SphereSet> exact_sphere_set_case();
+// Step 6: step 5's spheres, then frames in which they move a little.
+rc::Gen<lab06::SweepCase> sweep_case();
+rc::Gen<lab06::SweepCase> exact_sweep_case();
+// Step 6's big case, frame by frame (no random draw: the same numbers give the same
+// frames).
+lab06::SweepCase moving_spheres(const lab06::MovingSpheres& m);
+// Step 7: two small meshes overlapping in part, seeds for the checker's OBB trees.
+rc::Gen<lab06::BvhQuery> bvh_query();
+// Step 11: sparse worlds (clusters 2^30 apart, on integers: exact touching), step 5's
+// sets, bucket counts from 1 (every cell collides) to thousands.
+rc::Gen<lab06::HashCase> hash_case();
+// Step 12: clusters of balls in a wide space (the octree adapts to them), a box near
+// them; or balls and a box on integers, touching exactly, judged exactly.
+rc::Gen<lab06::OctreeCase> octree_case();
+
+}  // namespace labkit::gen
+
+// Lab 06's verdicts: each judge compares one answer with the exact oracle, following the
+// rules and tolerances of labs/06_spatial_trees/spatial_trees.h. The tests and the viewer
+// both use them. The inputs are in tests/06_spatial_trees/queries.h, their random draws
+// below.
+namespace labkit::lab06::judge {
+
+using check::Outcome;
+using check::Rules;  // random cases, or a robustness step's exact input
+
+// Step 1: the tree is well formed and every leaf lists every triangle meeting its cell.
+Outcome kd_tree(const Mesh& mesh, const KdTree& got);
+
+// Step 2. `calls`: how many times given::segment_triangle ran during the query.
+Outcome first_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls,
+                  Rules rules = Rules::random);
+Outcome any_hit(const TreeQuery& in, const KdTree& tree, const KdHit& got, std::uint64_t calls,
+                Rules rules = Rules::random);
+Outcome all_hits(const TreeQuery& in, const KdTree& tree, const KdHits& got, std::uint64_t calls,
+                 Rules rules = Rules::random);
+
+// Step 3: the tree is a BSP tree of the mesh (pieces in their planes, in their cells,
+// tiling their triangles); a point is classified like the exact oracle does.
+Outcome bsp_tree(const Mesh& mesh, const BspTree& got);
+Outcome classify(const PointQuery& in, Where got, Rules rules = Rules::random);
+// Step 4: `tree` must pass bsp_tree; the order obeys the painter's rule at every node.
+Outcome back_to_front(const PointQuery& in, const BspTree& tree, const std::vector<int>& got,
+                      Rules rules = Rules::random);
+
+// Step 5. `calls`: how many times given_balls_meet ran during the query (the judge
+// served them, remote::last_served()).
+Outcome overlapping_pairs(const SphereSet& in, const SpherePairs& got, long long calls, Rules rules = Rules::random);
+
+// Step 6: every frame's pairs (as overlapping_pairs), its tests (only pairs overlapping on
+// x), and, from the second frame on, its swaps and compare_ends calls within the header's
+// bounds for the ends whose order changed since the previous frame.
+Outcome sweep_frames(const SweepCase& in, const SweepRuns& got, Rules rules = Rules::random);
+// Step 7: the pairs against the exact brute force over all triangle pairs, and the counts
+// against the header's traversal (box tests, triangle tests) run on the same trees.
+Outcome colliding_triangles(const BvhQuery& in, const ObbTree& a, const ObbTree& b, const BvhRun& got,
+                            Rules rules = Rules::random);
+Outcome hashed_pairs(const HashCase& in, const SpherePairs& got, long long calls, Rules rules = Rules::random);
+// The build: node for node the header's tree (in any order of nodes).
+Outcome octree(const OctreeCase& in, const Octree& got);
+// The query on `tree` (the header's): the balls against the exact brute force, the counts
+// against the header's traversal.
+Outcome balls_in_box(const OctreeCase& in, const Octree& tree, const OctreeRun& got, Rules rules = Rules::random);
+
+}  // namespace labkit::lab06::judge

@@ -6,7 +6,7 @@
 #include "viewer/scenes/scenes.h"
 #include "viewer/shapes.h"
 
-#include "02_segment_triangle/judge.h"  // the inputs: SegmentTrianglePair, PointTriangle, ...
+#include "02_segment_triangle/queries.h"  // the inputs, their generators and the verdicts
 #include "common/oracle/moving_meshes.h"
 #include "common/oracle/oracle.h"
 #include "segment_triangle.h"
