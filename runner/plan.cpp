@@ -11,14 +11,11 @@ namespace runner {
 namespace {
 
 // "1 (20), 2 (45)": the steps of one tier and their minutes; "none" when there are none.
-std::string steps_of_tier(const Lab& lab, bool core, int& minutes) {
+std::string steps_of_tier(const Lab& lab, bool core) {
   std::string list;
-  minutes = 0;
-  for (const Step& s : lab.steps) {
-    if (s.core != core) continue;
-    list += (list.empty() ? "" : ", ") + std::to_string(s.number) + " (" + std::to_string(s.minutes) + ")";
-    minutes += s.minutes;
-  }
+  for (const Step& s : lab.steps)
+    if (s.core == core)
+      list += (list.empty() ? "" : ", ") + std::to_string(s.number) + " (" + std::to_string(s.minutes) + ")";
   return list.empty() ? "none" : list;
 }
 
@@ -33,12 +30,11 @@ std::string points_text(double points) {
 void print_lab(const Lab& lab, bool summary, bool each_step) {
   std::cout << lab.id << "  " << lab.title << "\n";
   if (summary) {
-    int core_minutes = 0, extension_minutes = 0;
-    const std::string core = steps_of_tier(lab, true, core_minutes);
-    const std::string extensions = steps_of_tier(lab, false, extension_minutes);
-    std::cout << "    core path:  " << core << ": " << core_minutes << " min\n";
-    std::cout << "    extensions: " << extensions;
-    if (extension_minutes > 0) std::cout << ": " << extension_minutes << " min";
+    int all_minutes = 0;
+    for (const Step& s : lab.steps) all_minutes += s.minutes;
+    std::cout << "    core path:  " << steps_of_tier(lab, true) << ": " << lab.core_minutes() << " min\n";
+    std::cout << "    extensions: " << steps_of_tier(lab, false);
+    if (all_minutes > lab.core_minutes()) std::cout << ": " << all_minutes - lab.core_minutes() << " min";
     std::cout << "\n";
   }
   if (!each_step) return;
