@@ -8,6 +8,7 @@
 #include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -365,6 +366,7 @@ struct Tally {
   int total = 0, passing = 0;
   std::string next_step;
   std::vector<std::pair<const Lab*, StepResult>> to_explain;
+  std::string not_begun;  // the labs shown without their checker ("01, 02")
 };
 
 // A lab's rows: each step with its tier, status and counts (a passing step's notes under
@@ -398,6 +400,62 @@ void print_rows(const Lab& lab, const std::vector<StepResult>& results, std::siz
     tally.next_step += "; stuck? ./labkit hint " + lab.id + " " + std::to_string(s.number);
 }
 
+// A lab is begun once its file answers anything: before that, ./labkit check shows its
+// steps "not implemented yet" without building its checker (the judge, the generators,
+// the tests: most of a first build), and builds it the first time the lab is checked
+// after one of its functions answers. So a new student's first table comes after the
+// runner and the seven files are built. True when the answerer's probe (calls.h) says
+// that every function the lab lists threw NotImplemented.
+bool not_begun(const std::string& answerer) {
+  Limits limits;
+  limits.seconds = 10;
+  limits.memory_bytes = std::size_t(1) << 31;
+  limits.kept_bytes = 16 * 1024;
+  const Run run = runner::run({answerer, "--probe"}, {}, limits);
+  const std::string marker = "labkit-probe: ";
+  const std::size_t at = run.output.rfind(marker);
+  return run.ok() && at != std::string::npos &&
+         run.output.compare(at + marker.size(), std::string::npos, "not implemented\n") == 0;
+}
+
+// The labs whose checker is not built yet and whose file is not begun. LABKIT_PROBE_ONLY=1
+// (kit.runner's test of this) treats every checker as not built yet.
+std::vector<const Lab*> labs_not_begun(const Paths& paths, const std::vector<const Lab*>& labs,
+                                       const CheckOptions& options) {
+  if (!options.replay.empty()) return {};
+  const char* probe_only = std::getenv("LABKIT_PROBE_ONLY");
+  std::vector<const Lab*> unbuilt;
+  std::vector<std::string> answerers;
+  for (const Lab* lab : labs)
+    if ((probe_only && std::string(probe_only) == "1") ||
+        !std::filesystem::exists(paths.build + "/" + lab->judge_binary())) {
+      unbuilt.push_back(lab);
+      answerers.push_back(lab->answerer(options.implementation));
+    }
+  if (unbuilt.empty()) return {};
+  bool built = false;
+  build_targets(paths, answerers, &built, true);
+  std::vector<const Lab*> result;
+  for (const Lab* lab : unbuilt) {
+    const std::string answerer = paths.build + "/" + lab->answerer(options.implementation);
+    if (std::filesystem::exists(answerer) && not_begun(answerer)) result.push_back(lab);
+  }
+  return result;
+}
+
+// Says which labs' checkers are about to be built for the first time, and what it costs.
+template <class Begun>
+void announce_checkers(const Paths& paths, const std::vector<const Lab*>& labs, const Begun& begun) {
+  std::string ids;
+  int count = 0;
+  for (const Lab* lab : labs)
+    if (begun(lab) && !std::filesystem::exists(paths.build + "/" + lab->judge_binary()))
+      ids += std::string(count++ ? ", " : "") + lab->id;
+  if (count > 0)
+    std::cerr << "labkit: building " << (count == 1 ? "the checker of lab " : "the checkers of labs ") << ids
+              << ", once (about a minute a lab on a quiet 2-core machine, two for the first)\n";
+}
+
 }  // namespace
 
 int check(const Paths& paths, const CheckOptions& options) {
@@ -421,14 +479,20 @@ int check(const Paths& paths, const CheckOptions& options) {
                      " random cases per query, seed " + (options.seed.empty() ? "public" : options.seed))
               << "\n";
 
+  const std::vector<const Lab*> unbegun = labs_not_begun(paths, labs, options);
+  const auto begun = [&](const Lab* lab) { return std::find(unbegun.begin(), unbegun.end(), lab) == unbegun.end(); };
   // Every lab's programs in one build first, so that all cores stay busy from the first
   // file to the last; a lab that does not compile is built again below, alone, for its
   // errors (and the other labs' programs are ready by then).
   if (labs.size() > 1) {
     std::vector<std::string> all;
-    for (const Lab* lab : labs) all.insert(all.end(), {lab->judge_binary(), lab->answerer(options.implementation)});
+    for (const Lab* lab : labs)
+      if (begun(lab)) all.insert(all.end(), {lab->judge_binary(), lab->answerer(options.implementation)});
     bool built = false;
-    build_targets(paths, all, &built, true);
+    if (!all.empty()) {
+      announce_checkers(paths, labs, begun);
+      build_targets(paths, all, &built, true);
+    }
   }
 
   Tally tally;
@@ -436,6 +500,18 @@ int check(const Paths& paths, const CheckOptions& options) {
     std::vector<const Step*> steps;
     for (const Step& s : lab->steps)
       if (options.step == 0 || s.number == options.step) steps.push_back(&s);
+    if (!begun(lab)) {
+      std::cout << "\n" << bold("Lab " + lab->id + "  " + lab->title) << dim("   " + lab->handout()) << "\n";
+      std::vector<StepResult> results(steps.size());
+      for (std::size_t i = 0; i < steps.size(); ++i) {
+        results[i].status = Status::not_implemented;
+        results[i].step = steps[i];
+      }
+      print_rows(*lab, results, title_width, paths, tally);
+      tally.not_begun += (tally.not_begun.empty() ? "" : ", ") + lab->id;
+      continue;
+    }
+    announce_checkers(paths, {lab}, begun);
     bool built = false;
     const std::string errors =
         build_targets(paths, {lab->judge_binary(), lab->answerer(options.implementation)}, &built);
@@ -456,6 +532,12 @@ int check(const Paths& paths, const CheckOptions& options) {
   }
 
   for (const auto& [lab, r] : tally.to_explain) print_details(r, *lab, paths);
+  if (!tally.not_begun.empty())
+    std::cout << "\n"
+              << dim("Not begun: lab " + tally.not_begun +
+                     " (every function says \"not implemented yet\"). A lab's checker is built, once, the first "
+                     "time one of its functions answers: about a minute.")
+              << "\n";
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::ostringstream took;
   took.precision(2);

@@ -3,6 +3,7 @@
 #include "common/given/served.h"
 
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <typeinfo>
 #include <utility>
@@ -110,6 +111,22 @@ std::string answer(const Table& table, const std::string& request) {
 }
 
 }  // namespace
+
+int probe(const Probes& probes) {
+  for (const auto& [id, run] : probes) {
+    try {
+      run();
+    } catch (const NotImplemented&) {
+      continue;
+    } catch (...) {}
+    std::printf("\nlabkit-probe: answers: %s\n", id.c_str());
+    std::fflush(stdout);
+    return 0;
+  }
+  std::printf("\nlabkit-probe: not implemented\n");
+  std::fflush(stdout);
+  return 0;
+}
 
 int serve(const Table& table, bool given_served) {
   if (given_served) given::serve_from_judge();

@@ -145,6 +145,37 @@ template <class R, class... P> Handler handler(R (*function)(P...)) {
 // given_served, the lab's given functions are asked of the judge (served.h).
 int serve(const Table& table, bool given_served);
 
+// ---- The probe: has the lab been begun? --------------------------------------------------
+// `./labkit check` builds a lab's checker (its judge, generators and tests) only once the
+// lab's file answers something: before that, the answerer run as `answer_NN --probe`
+// calls each of the lab's functions once, on a probe input, with no judge. A stub throws
+// NotImplemented with its step's tag before it looks at the input; anything else (an
+// answer, another exception, a crash, a hang) means the lab has begun.
+
+// A probe input: the default value, with one default element in each list, so that a kit
+// wrapper that loops over a list (lab 06's run_segments) reaches the student's function.
+template <class T> struct ProbeValue {
+  static T make() { return T{}; }
+};
+template <class T, class A> struct ProbeValue<std::vector<T, A>> {
+  static std::vector<T, A> make() { return std::vector<T, A>(1, ProbeValue<T>::make()); }
+};
+
+using Probe = std::function<void()>;
+using Probes = std::vector<std::pair<std::string, Probe>>;
+
+template <class R, class... P> Probe prober(R (*function)(P...)) {
+  return [function] {
+    std::tuple<std::decay_t<P>...> args{ProbeValue<std::decay_t<P>>::make()...};
+    std::apply([function](auto&... a) { function(a...); }, args);
+  };
+}
+
+// Runs the probes and prints, as its last line, "labkit-probe: not implemented" when
+// every one threw NotImplemented, or "labkit-probe: answers: CALL" for the first that
+// did anything else.
+int probe(const Probes& probes);
+
 }  // namespace labkit::remote
 
 // ---- The expansions of a lab's list ----------------------------------------------------
@@ -173,6 +204,14 @@ int serve(const Table& table, bool given_served);
   void name(Class& self, LABKIT_NAMED params) {                                                                       \
     ::labkit::remote::call<void, Class&, LABKIT_UNPAREN params>(#Class "::" #name #params, self, LABKIT_ARGS params); \
   }
+
+// In the answerer run with --probe: the probe of the student's function.
+#define LABKIT_PROBE_CALL(R, name, params) \
+  probes.emplace_back(LABKIT_CALL_ID(R, name, params), ::labkit::remote::prober<R, LABKIT_UNPAREN params>(&name));
+#define LABKIT_PROBE_METHOD(Class, name, params)                                     \
+  probes.emplace_back(#Class "::" #name #params,                                     \
+                      ::labkit::remote::prober<void, Class&, LABKIT_UNPAREN params>( \
+                          +[](Class& self, LABKIT_NAMED params) { self.name(LABKIT_ARGS params); }));
 
 // In the answerer: the table entry that runs the student's function.
 #define LABKIT_TABLE_CALL(R, name, params) \

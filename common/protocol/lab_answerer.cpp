@@ -8,9 +8,16 @@
 
 #include "common/protocol/calls.h"
 
-int main() {
+#include <cstring>
+
+int main(int argc, char** argv) {
   using namespace labkit;
   using namespace labkit::LABKIT_LAB_NAMESPACE;
+  if (argc == 2 && std::strcmp(argv[1], "--probe") == 0) {  // has the lab been begun? (calls.h)
+    remote::Probes probes;
+    LABKIT_LAB_CALLS(LABKIT_PROBE_CALL, LABKIT_PROBE_METHOD)
+    return remote::probe(probes);
+  }
   remote::Table table;
   LABKIT_LAB_CALLS(LABKIT_TABLE_CALL, LABKIT_TABLE_METHOD)
 #ifdef LABKIT_LAB_SERVED  // queries.h's: this lab's given functions are counted

@@ -30,6 +30,21 @@ grep -qE "crashed|timed out|does not compile|too much output|kit error" <<<"$out
 n=$(grep -c "not implemented yet" <<<"$out")
 [ "$n" -eq "$steps" ] || fail "$n steps say 'not implemented yet'; the manifest has $steps"
 
+echo "--- 1b. labs not begun: shown without building their checkers; a lab that answers is judged"
+# LABKIT_PROBE_ONLY=1: as on day one, when no checker is built yet (check.cpp, not_begun).
+out=$(LABKIT_PROBE_ONLY=1 "$runner" check 2>&1); code=$?
+echo "$out"
+[ $code -eq 1 ] || fail "check on the stubs, no checker built, exits $code, not 1"
+[ "$(total_steps "$out")" = "$steps" ] || fail "check on the stubs, no checker built, does not count every step"
+n=$(grep -c "not implemented yet   *$" <<<"$out")
+[ "$n" -eq "$steps" ] || fail "$n steps say 'not implemented yet' with no checker built; the manifest has $steps"
+ids=$(grep -o '^Lab [0-9]*' <<<"$out" | cut -d' ' -f2 | paste -sd, | sed 's/,/, /g')
+grep -q "^Not begun: lab $ids (" <<<"$out" || fail "the stubs' labs ($ids) are not all said to be not begun"
+out=$(LABKIT_PROBE_ONLY=1 "$runner" check 02 --step 3 --cases $cases --implementation mutant_beta_sign 2>&1); code=$?
+echo "$out"
+[ $code -eq 1 ] && grep -q " failing " <<<"$out" || fail "a begun lab with no checker built is not judged (the mutant is not failing)"
+grep -q "Not begun" <<<"$out" && fail "a lab whose functions answer is said to be not begun"
+
 echo "--- 2. the reference: every step passes, exit 0"
 out=$("$runner" check --cases $cases --implementation reference 2>&1); code=$?
 echo "$out"
