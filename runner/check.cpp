@@ -14,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <map>
 #include <optional>
 #include <sstream>
 #include <thread>
@@ -418,11 +419,21 @@ bool not_begun(const std::string& answerer) {
          run.output.compare(at + marker.size(), std::string::npos, "not implemented\n") == 0;
 }
 
-// The labs whose checker is not built yet and whose file is not begun. LABKIT_PROBE_ONLY=1
-// (kit.runner's test of this) treats every checker as not built yet.
-std::vector<const Lab*> labs_not_begun(const Paths& paths, const std::vector<const Lab*>& labs,
-                                       const CheckOptions& options) {
-  if (!options.replay.empty()) return {};
+// What the probe found of the labs whose checker is not built yet (LABKIT_PROBE_ONLY=1,
+// kit.runner's test of this, treats every checker as not built yet): the labs not begun,
+// and those whose file does not compile, with the compiler's errors (the checker of
+// either is not built).
+struct Probed {
+  std::vector<const Lab*> not_begun;
+  std::map<const Lab*, std::string> not_compiling;
+  bool skips(const Lab* lab) const {
+    return std::find(not_begun.begin(), not_begun.end(), lab) != not_begun.end() || not_compiling.count(lab);
+  }
+};
+
+Probed probe_labs(const Paths& paths, const std::vector<const Lab*>& labs, const CheckOptions& options) {
+  Probed probed;
+  if (!options.replay.empty()) return probed;
   const char* probe_only = std::getenv("LABKIT_PROBE_ONLY");
   std::vector<const Lab*> unbuilt;
   std::vector<std::string> answerers;
@@ -432,28 +443,82 @@ std::vector<const Lab*> labs_not_begun(const Paths& paths, const std::vector<con
       unbuilt.push_back(lab);
       answerers.push_back(lab->answerer(options.implementation));
     }
-  if (unbuilt.empty()) return {};
+  if (unbuilt.empty()) return probed;
   bool built = false;
   build_targets(paths, answerers, &built, true);
-  std::vector<const Lab*> result;
   for (const Lab* lab : unbuilt) {
-    const std::string answerer = paths.build + "/" + lab->answerer(options.implementation);
-    if (std::filesystem::exists(answerer) && not_begun(answerer)) result.push_back(lab);
+    // Built above, or not: this says which, with the errors (a file that failed keeps its
+    // last good program, which must not be probed).
+    const std::string errors = build_targets(paths, {lab->answerer(options.implementation)}, &built);
+    if (!built)
+      probed.not_compiling[lab] = errors;
+    else if (not_begun(paths.build + "/" + lab->answerer(options.implementation)))
+      probed.not_begun.push_back(lab);
   }
-  return result;
+  return probed;
 }
 
 // Says which labs' checkers are about to be built for the first time, and what it costs.
-template <class Begun>
-void announce_checkers(const Paths& paths, const std::vector<const Lab*>& labs, const Begun& begun) {
+void announce_checkers(const Paths& paths, const std::vector<const Lab*>& labs) {
   std::string ids;
   int count = 0;
   for (const Lab* lab : labs)
-    if (begun(lab) && !std::filesystem::exists(paths.build + "/" + lab->judge_binary()))
+    if (!std::filesystem::exists(paths.build + "/" + lab->judge_binary()))
       ids += std::string(count++ ? ", " : "") + lab->id;
   if (count > 0)
     std::cerr << "labkit: building " << (count == 1 ? "the checker of lab " : "the checkers of labs ") << ids
-              << ", once (about a minute a lab on a quiet 2-core machine, two for the first)\n";
+              << ", once (under a minute a lab on a quiet 2-core machine; the first also builds what all checkers "
+                 "share: about a minute and a half)\n";
+}
+
+// Every begun lab's programs in one build first, so that all cores stay busy from the
+// first file to the last; a lab that does not compile is built again later, alone, for
+// its errors (and the other labs' programs are ready by then).
+void build_begun(const Paths& paths, const std::vector<const Lab*>& labs, const Probed& probed,
+                 const std::string& implementation) {
+  std::vector<const Lab*> begun;
+  std::vector<std::string> targets;
+  for (const Lab* lab : labs)
+    if (!probed.skips(lab)) {
+      begun.push_back(lab);
+      targets.insert(targets.end(), {lab->judge_binary(), lab->answerer(implementation)});
+    }
+  if (begun.size() < 2) return;
+  announce_checkers(paths, begun);
+  bool built = false;
+  build_targets(paths, targets, &built, true);
+}
+
+// A lab not begun: its steps, each "not implemented yet", with no checker run.
+void print_not_begun(const Lab& lab, const std::vector<const Step*>& steps, std::size_t title_width, const Paths& paths,
+                     Tally& tally) {
+  std::cout << "\n" << bold("Lab " + lab.id + "  " + lab.title) << dim("   " + lab.handout()) << "\n";
+  std::vector<StepResult> results(steps.size());
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    results[i].status = Status::not_implemented;
+    results[i].step = steps[i];
+  }
+  print_rows(lab, results, title_width, paths, tally);
+  tally.not_begun += (tally.not_begun.empty() ? "" : ", ") + lab.id;
+}
+
+// Below the table: the labs not begun, the count of passing steps, and the next step.
+void print_summary(const Tally& tally, std::chrono::steady_clock::time_point start) {
+  if (!tally.not_begun.empty())
+    std::cout << "\n"
+              << dim("Not begun: lab " + tally.not_begun +
+                     " (each function still throws the stub's NotImplemented). A lab's checker is built, once, "
+                     "the first time one of its functions answers.")
+              << "\n";
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::ostringstream took;
+  took.precision(2);
+  took << std::fixed << seconds;
+  std::cout << "\n"
+            << bold(std::to_string(tally.passing) + " of " + std::to_string(tally.total) + " steps pass")
+            << dim(" (" + took.str() + " s)");
+  if (!tally.next_step.empty()) std::cout << ". Next: " << tally.next_step;
+  std::cout << "\n";
 }
 
 }  // namespace
@@ -479,42 +544,26 @@ int check(const Paths& paths, const CheckOptions& options) {
                      " random cases per query, seed " + (options.seed.empty() ? "public" : options.seed))
               << "\n";
 
-  const std::vector<const Lab*> unbegun = labs_not_begun(paths, labs, options);
-  const auto begun = [&](const Lab* lab) { return std::find(unbegun.begin(), unbegun.end(), lab) == unbegun.end(); };
-  // Every lab's programs in one build first, so that all cores stay busy from the first
-  // file to the last; a lab that does not compile is built again below, alone, for its
-  // errors (and the other labs' programs are ready by then).
-  if (labs.size() > 1) {
-    std::vector<std::string> all;
-    for (const Lab* lab : labs)
-      if (begun(lab)) all.insert(all.end(), {lab->judge_binary(), lab->answerer(options.implementation)});
-    bool built = false;
-    if (!all.empty()) {
-      announce_checkers(paths, labs, begun);
-      build_targets(paths, all, &built, true);
-    }
-  }
+  const Probed probed = probe_labs(paths, labs, options);
+  build_begun(paths, labs, probed, options.implementation);
 
   Tally tally;
   for (const Lab* lab : labs) {
     std::vector<const Step*> steps;
     for (const Step& s : lab->steps)
       if (options.step == 0 || s.number == options.step) steps.push_back(&s);
-    if (!begun(lab)) {
-      std::cout << "\n" << bold("Lab " + lab->id + "  " + lab->title) << dim("   " + lab->handout()) << "\n";
-      std::vector<StepResult> results(steps.size());
-      for (std::size_t i = 0; i < steps.size(); ++i) {
-        results[i].status = Status::not_implemented;
-        results[i].step = steps[i];
-      }
-      print_rows(*lab, results, title_width, paths, tally);
-      tally.not_begun += (tally.not_begun.empty() ? "" : ", ") + lab->id;
+    if (std::find(probed.not_begun.begin(), probed.not_begun.end(), lab) != probed.not_begun.end()) {
+      print_not_begun(*lab, steps, title_width, paths, tally);
       continue;
     }
-    announce_checkers(paths, {lab}, begun);
     bool built = false;
-    const std::string errors =
-        build_targets(paths, {lab->judge_binary(), lab->answerer(options.implementation)}, &built);
+    std::string errors;
+    if (const auto broken = probed.not_compiling.find(lab); broken != probed.not_compiling.end()) {
+      errors = broken->second;
+    } else {
+      announce_checkers(paths, {lab});
+      errors = build_targets(paths, {lab->judge_binary(), lab->answerer(options.implementation)}, &built);
+    }
     if (!replaying || !built)
       std::cout << "\n" << bold("Lab " + lab->id + "  " + lab->title) << dim("   " + lab->handout()) << "\n";
     if (!built) {
@@ -532,21 +581,7 @@ int check(const Paths& paths, const CheckOptions& options) {
   }
 
   for (const auto& [lab, r] : tally.to_explain) print_details(r, *lab, paths);
-  if (!tally.not_begun.empty())
-    std::cout << "\n"
-              << dim("Not begun: lab " + tally.not_begun +
-                     " (every function says \"not implemented yet\"). A lab's checker is built, once, the first "
-                     "time one of its functions answers: about a minute.")
-              << "\n";
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  std::ostringstream took;
-  took.precision(2);
-  took << std::fixed << seconds;
-  std::cout << "\n"
-            << bold(std::to_string(tally.passing) + " of " + std::to_string(tally.total) + " steps pass")
-            << dim(" (" + took.str() + " s)");
-  if (!tally.next_step.empty()) std::cout << ". Next: " << tally.next_step;
-  std::cout << "\n";
+  print_summary(tally, start);
   return tally.passing == tally.total ? 0 : 1;
 }
 
