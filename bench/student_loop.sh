@@ -158,7 +158,7 @@ CPU-seconds are the user and system time of every process a step waited for.
 | step | wall time | CPU-seconds | target |
 |---|---|---|---|
 | day one: a fresh copy's first \`./labkit check\` (packages installed): configure, build, table | $day_one s | $day_one_cpu | 150 s and 300 CPU-s |
-| the viewer's first build (\`./labkit view\` after day one) | $viewer_time s | $viewer_cpu | 120 s |
+| the viewer's first build (\`./labkit view\` after each lab's first check below; right after day one it also builds the seven checkers) | $viewer_time s | $viewer_cpu | 120 s |
 | the rest of the build (mutants, the reference viewer), before the suite | $rest_build s | $rest_build_cpu | |
 | \`./labkit test\` (the suite, reference solutions) | $test_time s ($test_summary) | $test_cpu | 300 s |
 | the grader's end to end: hostile submissions and release rehearsal (\`ctest -L whole\`; \`./labkit test --all\` and CI add them) | $release_time s ($release_summary) | $release_cpu | |
