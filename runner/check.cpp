@@ -489,10 +489,15 @@ void build_begun(const Paths& paths, const std::vector<const Lab*>& labs, const 
   build_targets(paths, targets, &built, true);
 }
 
+// "Lab 02  Segment against triangle   handouts/02_segment_triangle.md", above its rows.
+void print_lab_heading(const Lab& lab) {
+  std::cout << "\n" << bold("Lab " + lab.id + "  " + lab.title) << dim("   " + lab.handout()) << "\n";
+}
+
 // A lab not begun: its steps, each "not implemented yet", with no checker run.
 void print_not_begun(const Lab& lab, const std::vector<const Step*>& steps, std::size_t title_width, const Paths& paths,
                      Tally& tally) {
-  std::cout << "\n" << bold("Lab " + lab.id + "  " + lab.title) << dim("   " + lab.handout()) << "\n";
+  print_lab_heading(lab);
   std::vector<StepResult> results(steps.size());
   for (std::size_t i = 0; i < steps.size(); ++i) {
     results[i].status = Status::not_implemented;
@@ -564,8 +569,7 @@ int check(const Paths& paths, const CheckOptions& options) {
       announce_checkers(paths, {lab});
       errors = build_targets(paths, {lab->judge_binary(), lab->answerer(options.implementation)}, &built);
     }
-    if (!replaying || !built)
-      std::cout << "\n" << bold("Lab " + lab->id + "  " + lab->title) << dim("   " + lab->handout()) << "\n";
+    if (!replaying || !built) print_lab_heading(*lab);
     if (!built) {
       std::cout << "  " << red("does not compile") << ": every step of this lab fails until it does.\n\n    "
                 << term::indent(safe_text(errors), "    ") << "\n";
