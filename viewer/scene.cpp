@@ -62,8 +62,8 @@ void Scene::draw_ground(Renderer& r) const {
 
 UnknownQuery unknown_query(const std::string& lab, const std::string& query, const std::string& shown, bool listed) {
   if (listed)
-    return UnknownQuery("lab " + lab + "'s scene does not draw '" + query +
-                        "' (run it with ./labkit replay; the scene draws " + shown + ")");
+    return UnknownQuery("lab " + lab + "'s scene does not draw '" + query + "'; ./labkit check " + lab +
+                        " --case with the same case replays it in your terminal (the scene draws " + shown + ")");
   return UnknownQuery("lab " + lab + " has no query '" + query + "' (its scene draws " + shown + ")");
 }
 

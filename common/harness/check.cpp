@@ -135,6 +135,12 @@ QueryReport& entry(const std::string& test, const std::string& query, const std:
   return q;
 }
 
+bool replayed_as_example(const std::string& query) {
+  for (const QueryReport& q : queries())
+    if (q.query == query && q.kind == "examples" && (q.cases > 0 || q.failure)) return true;
+  return false;
+}
+
 int judging = 0;
 Judging::Judging() { ++judging; }
 Judging::~Judging() { --judging; }

@@ -512,6 +512,29 @@ void example_later(const std::string& query, const std::string& title, const Inp
   SUCCEED();
 }
 
+// An example replayed by the token its failure printed: its own judge runs, which may
+// know more than the input (a pose it captured, the handout's figure).
+template <class Input, class Judge>
+void replay_example(const std::string& query, const std::string& title, const Input& input, Judge& judge) {
+  if (settings().describe_only) {
+    QueryReport& report = entry(query, "examples");
+    report.failure = failure_of("described", query, input, Outcome{});
+    return save_report();
+  }
+  example_now(query, title, input, judge);
+}
+// Whether the replay token names this example: its query and its input's numbers.
+template <class Input> bool replays(const std::string& query, const Input& input) {
+  try {
+    const ParsedToken token = parse_token(settings().replay);
+    return token.query == query && token.numbers == values_of(input).numbers;
+  } catch (const BadToken&) {
+    return false;  // random_cases reports what is wrong with it
+  }
+}
+// Whether an example already ran as the replayed case (random_cases then stays quiet).
+bool replayed_as_example(const std::string& query);
+
 template <class Input, class Judge>
 void random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>& gen, Judge& judge, QueryReport& report);
 
@@ -520,8 +543,11 @@ void random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>& gen, Ju
 template <class Input, class Judge>
 void example(const Query<Input>& q, const std::string& title, const typename Query<Input>::InputType& input,
              Judge&& judge) {
-  // A replay runs the one case it names; the examples stay quiet.
-  if (!settings().replay.empty()) return;
+  // A replay runs the one case it names: this example, when the token is its own.
+  if (!settings().replay.empty()) {
+    if (detail::replays(q.name, input)) detail::replay_example(q.name, title, input, judge);
+    return;
+  }
   if (settings().count_all) return detail::example_later(q.name, title, input, std::forward<Judge>(judge));
   detail::example_now(q.name, title, input, judge);
 }
@@ -670,7 +696,7 @@ void detail::random_cases_unguarded(const Query<Input>& q, const rc::Gen<Input>&
     report_to_catch(report, true);
   };
   if (!settings().replay.empty()) {
-    if (parse_token(settings().replay).query != query) return;
+    if (parse_token(settings().replay).query != query || replayed_as_example(query)) return;
     try {
       replay_one<Input>(query, judge, report);
     } catch (const BadToken& e) {

@@ -71,6 +71,24 @@ else
   [ $code -eq 0 ] && grep -q "passes" <<<"$out" || fail "replaying the case on the reference does not pass"
 fi
 
+echo "--- 3b. a worked example's replay runs that example (its query has no random cases)"
+out=$("$runner" check 04 --step 1 --implementation mutant_axes_not_turned 2>&1); code=$?
+echo "$out"
+[ $code -eq 1 ] || fail "the axes-not-turned mutant passes lab 04's step 1"
+token=$(grep -o -- "--case '[^']*'" <<<"$out" | head -n 1 | sed "s/^--case '//; s/'\$//")
+grep -q "example" <<<"$out" || fail "the axes-not-turned mutant's first failure is no longer an example: pick another"
+if [ -z "$token" ]; then
+  fail "no replay command in the example's failure report"
+else
+  out=$("$runner" check 04 --case "$token" --implementation mutant_axes_not_turned 2>&1); code=$?
+  echo "$out"
+  [ $code -eq 1 ] && grep -q "replayed .*fails" <<<"$out" && grep -q "example" <<<"$out" ||
+    fail "replaying an example's case on the mutant does not fail again (exit $code)"
+  out=$("$runner" check 04 --case "$token" --implementation reference 2>&1); code=$?
+  echo "$out"
+  [ $code -eq 0 ] && grep -q "passes" <<<"$out" || fail "replaying an example's case on the reference does not pass (exit $code)"
+fi
+
 echo "--- 4. bad input: one clear line, exit 2, never a crash"
 for args in "check 99" "check 02 --case nonsense" "check 02 --case no_such_query:1,2,3" "check 02 --case segment_plane:1,2,3" "check 02 --step 42"; do
   rejects "$runner" "$args"
