@@ -426,9 +426,8 @@ bool not_begun(const std::string& answerer) {
 struct Probed {
   std::vector<const Lab*> not_begun;
   std::map<const Lab*, std::string> not_compiling;
-  bool skips(const Lab* lab) const {
-    return std::find(not_begun.begin(), not_begun.end(), lab) != not_begun.end() || not_compiling.count(lab);
-  }
+  bool unbegun(const Lab* lab) const { return std::find(not_begun.begin(), not_begun.end(), lab) != not_begun.end(); }
+  bool skips(const Lab* lab) const { return unbegun(lab) || not_compiling.count(lab); }
 };
 
 Probed probe_labs(const Paths& paths, const std::vector<const Lab*>& labs, const CheckOptions& options) {
@@ -557,7 +556,7 @@ int check(const Paths& paths, const CheckOptions& options) {
     std::vector<const Step*> steps;
     for (const Step& s : lab->steps)
       if (options.step == 0 || s.number == options.step) steps.push_back(&s);
-    if (std::find(probed.not_begun.begin(), probed.not_begun.end(), lab) != probed.not_begun.end()) {
+    if (probed.unbegun(lab)) {
       print_not_begun(*lab, steps, title_width, paths, tally);
       continue;
     }
