@@ -14,7 +14,8 @@
 #                                    input, the lab's table of queries, and the generators'
 #                                    and the verdicts' declarations (both processes)
 #     judge.h (if any)            -> helpers the generators, judges, tests and scene share
-#     generators*.cpp             -> random inputs (compiled into the judge)
+#     generators*.cpp             -> labNN_generators  (random inputs: the tests' and the
+#                                    benchmarks', not the viewer's)
 #     judge*.cpp                  -> labNN_judge       (verdicts against the oracle; the viewer shares
 #                                    it; judge_internal.h: what the judge's own files share)
 #     test.cpp                    -> test_NN_name      (examples and random cases: the judge's
@@ -139,18 +140,23 @@ function(labkit_add_lab number name)
     list(APPEND implementations reference)
   endif()
 
-  # The judge: its verdicts (tests/NN_name/judge*.cpp, split by step when long) and the
-  # lab's own generators (tests/NN_name/generators*.cpp), which know the lab's types.
-  file(GLOB judge_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}/judge*.cpp"
-       "${PROJECT_SOURCE_DIR}/tests/${stem}/generators*.cpp")
-  add_library(${lab}_judge STATIC ${judge_sources})
-  target_include_directories(${lab}_judge PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
-  target_link_libraries(${lab}_judge PUBLIC labkit_harness labkit_oracle)
-  if(TARGET given_${stem})
-    target_link_libraries(${lab}_judge PUBLIC given_${stem})
-  endif()
-  labkit_kit_code(${lab}_judge)
-  target_precompile_headers(${lab}_judge REUSE_FROM labkit_judge_pch)
+  # The judge: its verdicts (tests/NN_name/judge*.cpp, split by step when long). Then the
+  # lab's own generators (tests/NN_name/generators*.cpp), which know the lab's types: a
+  # library of their own, since the viewer judges without drawing random cases, and they
+  # are half of what a checker costs to build (the viewer's first build waits for them).
+  file(GLOB judge_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}/judge*.cpp")
+  file(GLOB generators_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}/generators*.cpp")
+  foreach(part judge generators)
+    add_library(${lab}_${part} STATIC ${${part}_sources})
+    target_include_directories(${lab}_${part} PUBLIC "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
+    target_link_libraries(${lab}_${part} PUBLIC labkit_harness labkit_oracle)
+    if(TARGET given_${stem})
+      target_link_libraries(${lab}_${part} PUBLIC given_${stem})
+    endif()
+    labkit_kit_code(${lab}_${part})
+    target_precompile_headers(${lab}_${part} REUSE_FROM labkit_judge_pch)
+  endforeach()
+  target_link_libraries(${lab}_generators PUBLIC ${lab}_judge)  # judge.h's helpers (scale_of, ...)
 
   # The lab's list of calls (tests/NN_name/queries.h), expanded on both sides of the pipe.
   set(query_definitions LABKIT_LAB_QUERIES="${stem}/queries.h" LABKIT_LAB_NAMESPACE=${lab}
@@ -169,7 +175,7 @@ function(labkit_add_lab number name)
   labkit_kit_code(${lab}_answerer_main)
 
   add_executable(test_${stem} "${PROJECT_SOURCE_DIR}/tests/${stem}/test.cpp")
-  target_link_libraries(test_${stem} PRIVATE ${lab}_judge ${lab}_calls labkit_catch_main)
+  target_link_libraries(test_${stem} PRIVATE ${lab}_judge ${lab}_generators ${lab}_calls labkit_catch_main)
   labkit_kit_code(test_${stem} -Og)
   target_precompile_headers(test_${stem} REUSE_FROM labkit_test_pch)
   labkit_kit_code(${lab}_calls)

@@ -23,6 +23,9 @@ std::array<Vec3, 8> frustum_corners(const CameraParameters& camera);
 // rounded once.
 Frustum frustum_of(const CameraParameters& camera);
 
+// gluLookAt(eye, eye + forward, up), in double: OpenGL's view matrix for the camera.
+Mat4 view_matrix(const CameraParameters& camera);
+
 // gluPerspective(fov_y, aspect, near, far) * gluLookAt(eye, eye + forward, up), in
 // double: OpenGL's view-projection matrix for the camera.
 Mat4 view_projection(const CameraParameters& camera);

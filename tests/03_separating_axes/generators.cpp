@@ -7,27 +7,6 @@
 #include <array>
 #include <cmath>
 
-namespace labkit {
-
-namespace {
-double box_scale(const Box& b) {
-  return std::max(b.center.cwiseAbs().maxCoeff(), b.half_extents.cwiseAbs().maxCoeff());
-}
-}  // namespace
-
-double scale_of(const BoxOnAxis& in) { return box_scale(in.box); }
-double scale_of(const BoxPair& in) { return std::max(box_scale(in.a), box_scale(in.b)); }
-double scale_of(const BoxPairOnAxis& in) { return std::max(box_scale(in.a), box_scale(in.b)); }
-double scale_of(const TrianglePair& in) {
-  return scale_of({in.t0.v0, in.t0.v1, in.t0.v2, in.t1.v0, in.t1.v1, in.t1.v2});
-}
-double scale_of(const MovingBoxes& in) {
-  const Vec3 end_a = in.a.center + in.duration * in.velocity_a, end_b = in.b.center + in.duration * in.velocity_b;
-  return std::max({box_scale(in.a), box_scale(in.b), end_a.cwiseAbs().maxCoeff(), end_b.cwiseAbs().maxCoeff()});
-}
-
-}  // namespace labkit
-
 namespace labkit::gen {
 
 namespace {
@@ -609,35 +588,6 @@ rc::Gen<TrianglePair> triangle_pair() {
       {{7, families}, {1, rc::gen::exec([families] { return far_triangles(*families); })}}));
 }
 
-// ---- The interval method's domain ------------------------------------------------------
-
-namespace {
-
-bool fat(const Triangle& t) {
-  const double longest =
-      std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
-  return 100 * t.normal().norm() >= longest;  // smallest height >= longest edge / 100
-}
-
-// Every vertex of `of` at least `reach` off t's plane, on both sides of it.
-bool straddles_by(const Triangle& t, const Triangle& of, double reach) {
-  const Vec3 n = t.normal().normalized();
-  bool above = false, below = false;
-  for (int k = 0; k < 3; ++k) {
-    const double d = n.dot(of[k] - t.v0);
-    if (std::abs(d) < reach) return false;
-    (d > 0 ? above : below) = true;
-  }
-  return above && below;
-}
-
-}  // namespace
-
-bool in_interval_domain(const TrianglePair& p) {
-  const double reach = scale_of(p) / 100;
-  return fat(p.t0) && fat(p.t1) && straddles_by(p.t0, p.t1, reach) && straddles_by(p.t1, p.t0, reach);
-}
-
 rc::Gen<TrianglePair> crossing_triangle_pair() {
   const rc::Gen<TrianglePair> families = rc::gen::suchThat(
       rc::gen::exec([] {
@@ -663,7 +613,7 @@ rc::Gen<TrianglePair> crossing_triangle_pair() {
         for (int k = 0; k < 3; ++k) t1[k] += slide * line.normalized();
         return *rc::gen::element(TrianglePair{t0, t1}, TrianglePair{t1, t0});
       }),
-      in_interval_domain);
+      lab03::judge::in_interval_domain);
   return with_scale_ends(families);  // not far from the origin: S/100 off the planes, S counting the offset
 }
 

@@ -8,6 +8,27 @@
 #include <algorithm>
 #include <cmath>
 
+namespace labkit {
+
+namespace {
+double box_scale(const Box& b) {
+  return std::max(b.center.cwiseAbs().maxCoeff(), b.half_extents.cwiseAbs().maxCoeff());
+}
+}  // namespace
+
+double scale_of(const BoxOnAxis& in) { return box_scale(in.box); }
+double scale_of(const BoxPair& in) { return std::max(box_scale(in.a), box_scale(in.b)); }
+double scale_of(const BoxPairOnAxis& in) { return std::max(box_scale(in.a), box_scale(in.b)); }
+double scale_of(const TrianglePair& in) {
+  return scale_of({in.t0.v0, in.t0.v1, in.t0.v2, in.t1.v0, in.t1.v1, in.t1.v2});
+}
+double scale_of(const MovingBoxes& in) {
+  const Vec3 end_a = in.a.center + in.duration * in.velocity_a, end_b = in.b.center + in.duration * in.velocity_b;
+  return std::max({box_scale(in.a), box_scale(in.b), end_a.cwiseAbs().maxCoeff(), end_b.cwiseAbs().maxCoeff()});
+}
+
+}  // namespace labkit
+
 namespace labkit::lab03::judge {
 
 std::string axis_name(int index) {

@@ -65,10 +65,34 @@ std::string why_triangles(const TrianglePair& in, bool expected) {
   return why;
 }
 
+// The interval method's domain (in_interval_domain): no needle, and crossing each other.
+bool fat(const Triangle& t) {
+  const double longest =
+      std::max({(t.v1 - t.v0).squaredNorm(), (t.v2 - t.v1).squaredNorm(), (t.v0 - t.v2).squaredNorm()});
+  return 100 * t.normal().norm() >= longest;  // smallest height >= longest edge / 100
+}
+
+// Every vertex of `of` at least `reach` off t's plane, on both sides of it.
+bool straddles_by(const Triangle& t, const Triangle& of, double reach) {
+  const Vec3 n = t.normal().normalized();
+  bool above = false, below = false;
+  for (int k = 0; k < 3; ++k) {
+    const double d = n.dot(of[k] - t.v0);
+    if (std::abs(d) < reach) return false;
+    (d > 0 ? above : below) = true;
+  }
+  return above && below;
+}
+
 }  // namespace
 
+bool in_interval_domain(const TrianglePair& p) {
+  const double reach = scale_of(p) / 100;
+  return fat(p.t0) && fat(p.t1) && straddles_by(p.t0, p.t1, reach) && straddles_by(p.t1, p.t0, reach);
+}
+
 Outcome triangles_by_intervals(const TrianglePair& in, const LineIntervals& got, Rules rules) {
-  if (!gen::in_interval_domain(in)) return pass();  // outside the method's domain: not graded
+  if (!in_interval_domain(in)) return pass();  // outside the method's domain: not graded
   const double tol = position_tolerance(in);
   const std::string answer = got.crossing ? "axis " + std::to_string(got.axis) + ", t0 in [" + fmt(got.low0) + ", " +
                                                 fmt(got.high0) + "], t1 in [" + fmt(got.low1) + ", " + fmt(got.high1) +

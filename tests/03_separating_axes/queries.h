@@ -147,7 +147,6 @@ rc::Gen<TrianglePair> triangle_pair();
 // vertex at least S/100 off the other's plane; often with two interval ends just apart
 // or just overlapping (10 to 80 tol), and at every scale.
 rc::Gen<TrianglePair> crossing_triangle_pair();
-bool in_interval_domain(const TrianglePair& p);
 // Exactly degenerate triangle pairs on integer coordinates: through vertices and edges,
 // touching, coplanar, zero area.
 rc::Gen<TrianglePair> exact_triangle_pair();
@@ -173,8 +172,10 @@ Outcome separated_on_axis(const BoxPairOnAxis& in, bool got, Rules rules = Rules
 Outcome box_axes(const BoxPair& in, const std::array<Vec3, 15>& got);
 Outcome test_boxes(const BoxPair& in, bool got, Rules rules = Rules::random);
 Outcome find_boxes(const BoxPair& in, const BoxContact& got, Rules rules = Rules::random);
-// The interval method, on its domain (gen::in_interval_domain); outside it any answer
-// passes.
+// The interval method's domain: fat triangles (smallest height >= 1/100 of the longest
+// edge), every vertex at least S/100 off the other's plane, on both sides.
+bool in_interval_domain(const TrianglePair& p);
+// The interval method, on its domain; outside it any answer passes.
 Outcome triangles_by_intervals(const TrianglePair& in, const LineIntervals& got, Rules rules = Rules::random);
 Outcome test_triangles(const TrianglePair& in, bool got, Rules rules = Rules::random);
 Outcome test_moving_boxes(const MovingBoxes& in, bool got, Rules rules = Rules::random);

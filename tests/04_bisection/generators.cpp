@@ -4,58 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-namespace labkit {
-
-namespace codec {
-void encode(Writer& w, const MotionParameters& m) {
-  encode(w, m.start);
-  encode(w, m.velocity);
-  encode(w, m.acceleration);
-  for (int i = 0; i < 3; ++i) w.unit(m.axis[i]);
-  w.unit(m.spin);
-}
-void decode(Reader& r, MotionParameters& m) {
-  decode(r, m.start);
-  decode(r, m.velocity);
-  decode(r, m.acceleration);
-  decode(r, m.axis);
-  m.spin = r.real();
-}
-void encode(Writer& w, const SearchTimes& t) {
-  w.unit(t.t0);
-  w.unit(t.t1);
-  w.unit(t.tolerance);
-}
-void decode(Reader& r, SearchTimes& t) {
-  t.t0 = r.real();
-  t.t1 = r.real();
-  t.tolerance = r.real();
-}
-}  // namespace codec
-
-std::string describe(const MotionParameters& m) {
-  std::string s = "start=" + fmt(m.start);
-  if (m.velocity != Vec3::Zero()) s += " velocity=" + fmt(m.velocity);
-  if (m.acceleration != Vec3::Zero()) s += " acceleration=" + fmt(m.acceleration);
-  if (m.spin != 0) s += " spin=" + fmt(m.spin) + " about axis=" + fmt(m.axis);
-  return s;
-}
-std::string describe(const MovingBody& b) {
-  return (b.is_box ? "box " + describe(b.box) : "sphere " + describe(b.sphere)) + "; motion " + describe(b.motion);
-}
-std::string describe(const SearchTimes& t) {
-  return "t0=" + fmt(t.t0) + " t1=" + fmt(t.t1) + " tolerance=" + fmt(t.tolerance);
-}
-
-RigidTransform pose_at(const MotionParameters& m, double t) {
-  RigidTransform pose = RigidTransform::Identity();
-  if (m.spin != 0.0) pose.linear() = Eigen::AngleAxisd(m.spin * t, m.axis.normalized()).toRotationMatrix();
-  pose.translation() = m.start + m.velocity * t + m.acceleration * (0.5 * t * t);
-  return pose;
-}
-
-}  // namespace labkit
-
 namespace labkit::gen {
 
 namespace {

@@ -12,6 +12,19 @@
 
 namespace labkit::lab05 {
 
+oracle::SquaredDistance core_distance(const SpherePair& p) { return oracle::squared_distance(p.a.center, p.b.center); }
+oracle::SquaredDistance core_distance(const SphereCapsule& p) { return oracle::squared_distance(p.a.center, p.b.axis); }
+oracle::SquaredDistance core_distance(const SphereLozenge& p) {
+  return oracle::squared_distance(p.a.center, p.b.rectangle);
+}
+oracle::SquaredDistance core_distance(const CapsulePair& p) { return oracle::squared_distance(p.a.axis, p.b.axis); }
+oracle::SquaredDistance core_distance(const CapsuleLozenge& p) {
+  return oracle::squared_distance(p.a.axis, p.b.rectangle);
+}
+oracle::SquaredDistance core_distance(const LozengePair& p) {
+  return oracle::squared_distance(p.a.rectangle, p.b.rectangle);
+}
+
 std::string describe(SweepStatus s) {
   switch (s) {
     case SweepStatus::none: return "none";

@@ -7,16 +7,6 @@
 
 namespace labkit::gen {
 
-lab06::SweepCase moving_spheres(const lab06::MovingSpheres& m) {
-  lab06::SweepCase c{{spread_spheres(m.count, 100, 0.25, 1, std::uint64_t(m.seed))}};
-  for (int k = 1; k < m.frames; ++k) {
-    std::vector<Sphere> next = c.frames.back();
-    for (std::size_t i = 0; i < next.size(); ++i) next[i].center.x() += 0.05 * std::sin(double(i * 7 + std::size_t(k)));
-    c.frames.push_back(next);
-  }
-  return c;
-}
-
 rc::Gen<lab06::TreeQuery> tree_query() {
   return rc::gen::exec([] {
     lab06::TreeQuery q;

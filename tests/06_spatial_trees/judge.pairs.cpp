@@ -3,11 +3,27 @@
 // and the header's traversal as the bound).
 #include "06_spatial_trees/judge_internal.h"
 
+#include "common/generators/meshes.h"
+
 #include <Eigen/Geometry>
 
 #include <algorithm>
 #include <cmath>
 #include <random>
+
+namespace labkit::lab06 {
+
+SweepCase sweep_of(const MovingSpheres& m) {
+  SweepCase c{{gen::spread_spheres(m.count, 100, 0.25, 1, std::uint64_t(m.seed))}};
+  for (int k = 1; k < m.frames; ++k) {
+    std::vector<Sphere> next = c.frames.back();
+    for (std::size_t i = 0; i < next.size(); ++i) next[i].center.x() += 0.05 * std::sin(double(i * 7 + std::size_t(k)));
+    c.frames.push_back(next);
+  }
+  return c;
+}
+
+}  // namespace labkit::lab06
 
 namespace labkit::lab06::judge {
 

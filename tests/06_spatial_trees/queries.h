@@ -185,6 +185,8 @@ struct MovingSpheres {
   int seed = 1;
 };
 LABKIT_FIELDS(MovingSpheres, count, frames, seed)
+// Its frames, one by one (no random draw: the same numbers give the same frames).
+SweepCase sweep_of(const MovingSpheres& m);
 
 // Step 7: two meshes, the checker's OBB trees over them (seeds), and whether every pair
 // is asked for.
@@ -291,9 +293,6 @@ rc::Gen<lab06::SphereSet> exact_sphere_set_case();
 // Step 6: step 5's spheres, then frames in which they move a little.
 rc::Gen<lab06::SweepCase> sweep_case();
 rc::Gen<lab06::SweepCase> exact_sweep_case();
-// Step 6's big case, frame by frame (no random draw: the same numbers give the same
-// frames).
-lab06::SweepCase moving_spheres(const lab06::MovingSpheres& m);
 // Step 7: two small meshes overlapping in part, seeds for the checker's OBB trees.
 rc::Gen<lab06::BvhQuery> bvh_query();
 // Step 11: sparse worlds (clusters 2^30 apart, on integers: exact touching), step 5's

@@ -502,7 +502,7 @@ TEST_CASE(LABKIT_STEP(L06S6) ": worked examples", "[lab06][step6]") {
                  expect_frames({{{}, 0, 0}, {{}, 0, 0}}));
   check::example(query::sweep_frames_moving, "1,000 spheres, 10 frames of small moves along x",
                  MovingSpheres{1000, 10, 6},
-                 [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(gen::moving_spheres(m)); });
+                 [](const MovingSpheres& m) { return expect_frames({}, Rules::random)(sweep_of(m)); });
 }
 
 TEST_CASE(LABKIT_STEP(L06S6) ": random cases", "[lab06][step6][oracle]") {

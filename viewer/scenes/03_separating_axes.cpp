@@ -210,7 +210,7 @@ void SeparatingAxesScene::update_triangles() {
                   [&](bool got) { return judge::test_triangles(in, got); });
   join(s, line_, [&](const LineIntervals& got) { return judge::triangles_by_intervals(in, got); });
   const auto interval = [](double low, double high) { return "[" + num(low) + ", " + num(high) + "]"; };
-  const bool domain = gen::in_interval_domain(in);
+  const bool domain = judge::in_interval_domain(in);
   const int k = line_ && line_->crossing ? line_->axis : 0;
   const oracle::TriangleIntervals exact = oracle::triangle_intervals(t0_, t1_, k);
   const auto& l = line_;

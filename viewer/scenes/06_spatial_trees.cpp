@@ -103,7 +103,7 @@ void SpatialTreesScene::load(const ParsedToken& token) {
     mode_ = Mode::octree, spheres_ = in.spheres, capacity_ = in.capacity, max_depth_ = in.max_depth;
     query_box_ = in.box;
   },
-      [&](auto, const MovingSpheres& in) { frames(gen::moving_spheres(in).frames); }});
+      [&](auto, const MovingSpheres& in) { frames(sweep_of(in).frames); }});
 }
 
 void SpatialTreesScene::frame_inputs() {
