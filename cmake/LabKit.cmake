@@ -156,7 +156,7 @@ function(labkit_add_lab number name)
     labkit_kit_code(${lab}_${part})
     target_precompile_headers(${lab}_${part} REUSE_FROM labkit_judge_pch)
   endforeach()
-  target_link_libraries(${lab}_generators PUBLIC ${lab}_judge)  # judge.h's helpers (scale_of, ...)
+  target_link_libraries(${lab}_generators PUBLIC ${lab}_judge labkit_generators)  # judge.h's helpers (scale_of, ...)
 
   # The lab's list of calls (tests/NN_name/queries.h), expanded on both sides of the pipe.
   set(query_definitions LABKIT_LAB_QUERIES="${stem}/queries.h" LABKIT_LAB_NAMESPACE=${lab}

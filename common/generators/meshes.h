@@ -8,7 +8,8 @@
 //  - Closed lattice solids (boxes, octahedra, unions of unit cubes): every coordinate an
 //    integer times a power of two, so that planes through their faces pass exactly
 //    through other vertices, and a careful double computation decides every sign.
-//  - RapidCheck generators of small ones, at every scale and far from the origin.
+//  - RapidCheck generators of small ones, at every scale and far from the origin
+//    (random_meshes.cpp: built for the tests only; the viewer uses the two above).
 //
 // Closed meshes are wound outward: each triangle's normal (v1 - v0) x (v2 - v0) points
 // out of the solid.
