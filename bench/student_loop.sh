@@ -92,7 +92,8 @@ for lab_dir in labs/[0-9][0-9]_*/; do
   passed=$(grep -o "[0-9]* of [0-9]* steps pass" "$WORK/check-$lab.log" | tail -n 1)
   # One step: the slowest of the lab's steps, each from a save.
   slowest=0 slowest_step=0 slowest_cpu=0
-  for step in $(sed -n 's/^ *\([0-9][0-9]*\)  L[0-9]*S[0-9]* .*/\1/p' "$WORK/check-$lab.log"); do
+  # A row starts with the step's number, then its tag ("  9  L06S9", "  10 L06S10").
+  for step in $(sed -n 's/^ *\([0-9][0-9]*\)  *L[0-9]*S[0-9]* .*/\1/p' "$WORK/check-$lab.log"); do
     touch "$student"
     t=$(seconds "$WORK/step-$lab-$step.log" ./labkit check "$lab" --step "$step")
     if python3 -c "import sys; sys.exit(not $t > $slowest)"; then
