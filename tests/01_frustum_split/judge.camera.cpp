@@ -1,6 +1,6 @@
-// Lab 01's cameras: the frustum a camera's parameters stand for, its corners and its
-// view-projection matrix (judge.h), in long double. The generators, the judge and the
-// viewer's scene share them.
+// Lab 01's cameras: the frustum a camera's parameters stand for and its corners, in long
+// double, and its view and view-projection matrices (judge.h). The generators, the judge
+// and the viewer's scene share them.
 #include "01_frustum_split/judge.h"
 
 #include <array>
