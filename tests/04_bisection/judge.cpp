@@ -52,12 +52,8 @@ std::string describe(const SearchTimes& t) {
   return "t0=" + fmt(t.t0) + " t1=" + fmt(t.t1) + " tolerance=" + fmt(t.tolerance);
 }
 
-RigidTransform pose_at(const MotionParameters& m, double t) {
-  RigidTransform pose = RigidTransform::Identity();
-  if (m.spin != 0.0) pose.linear() = Eigen::AngleAxisd(m.spin * t, m.axis.normalized()).toRotationMatrix();
-  pose.translation() = m.start + m.velocity * t + m.acceleration * (0.5 * t * t);
-  return pose;
-}
+// The header's formula, written once there (StandardMotion).
+RigidTransform pose_at(const MotionParameters& m, double t) { return lab04::motion_of(m)(t); }
 
 }  // namespace labkit
 
