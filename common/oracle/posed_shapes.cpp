@@ -1,8 +1,10 @@
 #include "common/oracle/posed_shapes.h"
 #include "common/oracle/not_finite.h"
 
+#include <CGAL/FPU.h>
 #include <CGAL/Gmpq.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Mpzf.h>
 
 #include <array>
 #include <cmath>
@@ -14,10 +16,12 @@ namespace {
 
 // Each predicate is written once, for a number type NT, and run twice: first with
 // interval arithmetic (fast; a comparison it cannot decide throws), then, only when an
-// interval comparison was uncertain, with exact rationals. The inputs are doubles and
-// the predicates use +, -, * and / only, so the rational run is exact.
+// interval comparison was uncertain, with Mpzf, CGAL's exact floating-point type. The
+// inputs are doubles and the predicates use +, - and * only (a quotient is kept as a
+// numerator over a positive denominator), so the exact run is exact, and it needs no
+// rationals: no gcd after every product.
 using Interval = CGAL::Interval_nt<false>;  // needs the rounding mode set by the caller
-using Rational = CGAL::Gmpq;
+using Exact = CGAL::Mpzf;
 
 template <class NT> using V = std::array<NT, 3>;
 
@@ -60,6 +64,12 @@ Relative<NT> relative(const Sphere& a, const RigidTransform& pose_a, const Box& 
   return r;
 }
 
+// A squared distance num / den, with den > 0, kept as the two numbers so that comparing
+// two of them needs no division.
+template <class NT> struct Squared { NT num, den; };
+template <class NT> bool operator<=(const Squared<NT>& a, const NT& b) { return a.num <= b * a.den; }
+template <class NT> bool operator<(const Squared<NT>& a, const Squared<NT>& b) { return a.num * b.den < b.num * a.den; }
+
 // The squared distance from w to the parallelepiped is the least, over its faces of
 // every dimension, of the squared distance to the face's affine hull, counted only when
 // the foot of the perpendicular lies in the face: the nearest point of a convex
@@ -67,7 +77,7 @@ Relative<NT> relative(const Sphere& a, const RigidTransform& pose_a, const Box& 
 // such candidate (0 when w is inside) and returns true to stop. `skip(value)` says that
 // a value is not worth the face test (so an interval run decides fewer comparisons).
 template <class NT, class Skip, class Visit> void candidates(const Relative<NT>& r, Skip&& skip, Visit&& visit) {
-  const NT zero(0);
+  const NT zero(0), one(1);
   const auto& u = r.u;
   const V<NT>& w = r.w;
   // Inside (a solid box only): Cramer's rule for w = sum s_k u_k, |s_k| <= 1, i.e.
@@ -77,10 +87,11 @@ template <class NT, class Skip, class Visit> void candidates(const Relative<NT>&
     const NT bound = CGAL::abs(whole);
     if (CGAL::abs(det(w, u[1], u[2])) <= bound && CGAL::abs(det(u[0], w, u[2])) <= bound &&
         CGAL::abs(det(u[0], u[1], w)) <= bound)
-      if (visit(zero)) return;
+      if (visit(Squared<NT>{zero, one})) return;
   }
   const int signs[2] = {-1, 1};
-  // Faces: normal direction k, side sk; the face spans u_i and u_j.
+  // Faces: normal direction k, side sk; the face spans u_i and u_j. The squared distance
+  // to its plane is height^2 / gram.
   for (int k = 0; k < 3; ++k) {
     const V<NT>& ui = u[(k + 1) % 3];
     const V<NT>& uj = u[(k + 2) % 3];
@@ -91,7 +102,7 @@ template <class NT, class Skip, class Visit> void candidates(const Relative<NT>&
     for (int sk : signs) {
       const V<NT> v = w - number<NT>(sk) * u[k];
       const NT height = dot(v, n);
-      const NT value = height * height / gram;
+      const Squared<NT> value{height * height, gram};
       if (skip(value)) continue;
       // The foot v = a ui + b uj: the Gram system, solved by Cramer's rule.
       const NT bi = dot(v, ui), bj = dot(v, uj);
@@ -99,7 +110,8 @@ template <class NT, class Skip, class Visit> void candidates(const Relative<NT>&
         if (visit(value)) return;
     }
   }
-  // Edges: direction k, at the corner signs of the other two axes.
+  // Edges: direction k, at the corner signs of the other two axes. The squared distance
+  // to the edge's line is |v|^2 - along^2 / length2.
   for (int k = 0; k < 3; ++k) {
     const NT length2 = dot(u[k], u[k]);
     if (CGAL::is_zero(length2)) continue;  // a zero-length edge: its ends stand in for it
@@ -107,7 +119,7 @@ template <class NT, class Skip, class Visit> void candidates(const Relative<NT>&
       for (int sj : signs) {
         const V<NT> v = w - number<NT>(si) * u[(k + 1) % 3] - number<NT>(sj) * u[(k + 2) % 3];
         const NT along = dot(v, u[k]);
-        const NT value = dot(v, v) - along * along / length2;
+        const Squared<NT> value{dot(v, v) * length2 - along * along, length2};
         if (skip(value)) continue;
         if (CGAL::abs(along) <= length2)
           if (visit(value)) return;
@@ -117,25 +129,25 @@ template <class NT, class Skip, class Visit> void candidates(const Relative<NT>&
   for (int i = 0; i < 8; ++i) {
     V<NT> v = w;
     for (int k = 0; k < 3; ++k) v = v - number<NT>((i >> k) & 1 ? 1 : -1) * u[k];
-    if (visit(dot(v, v))) return;
+    if (visit(Squared<NT>{dot(v, v), one})) return;
   }
 }
 
 template <class NT> bool within(const Relative<NT>& r, const NT& radius2) {
   bool found = false;
   candidates(
-      r, [&](const NT& value) { return !(value <= radius2); },
-      [&](const NT& value) { return found = value <= radius2; });
+      r, [&](const Squared<NT>& value) { return !(value <= radius2); },
+      [&](const Squared<NT>& value) { return found = value <= radius2; });
   return found;
 }
 
-template <class NT> NT least(const Relative<NT>& r) {
-  std::optional<NT> best;
+template <class NT> Squared<NT> least(const Relative<NT>& r) {
+  std::optional<Squared<NT>> best;
   candidates(
-      r, [&](const NT& value) { return best && !(value < *best); },
-      [&](const NT& value) {
+      r, [&](const Squared<NT>& value) { return best && !(value < *best); },
+      [&](const Squared<NT>& value) {
     if (!best || value < *best) best = value;
-    return CGAL::is_zero(value);
+    return CGAL::is_zero(value.num);
       });
   return *best;  // the vertices always visit
 }
@@ -154,10 +166,13 @@ template <class Decide> bool filtered(Decide&& decide) {
       return decide(Interval());
     } catch (const CGAL::Uncertain_conversion_exception&) {}
   }
-  return decide(Rational());
+  return decide(Exact());
 }
 
-double rounded(const Rational& x) { return CGAL::to_double(x); }
+// An exact value, rounded once (through a rational: a numerator can be far beyond a
+// double's range when its quotient is not).
+double rounded(const Exact& x) { return CGAL::to_double(CGAL::Gmpq(x)); }
+double rounded(const Squared<Exact>& x) { return CGAL::to_double(CGAL::Gmpq(x.num) / CGAL::Gmpq(x.den)); }
 
 }  // namespace
 
@@ -179,12 +194,12 @@ bool sphere_box_overlap(const Sphere& a, const RigidTransform& pose_a, const Box
 
 double spheres_distance(const Sphere& a, const RigidTransform& pose_a, const Sphere& b, const RigidTransform& pose_b) {
   if (spheres_overlap(a, pose_a, b, pose_b)) return 0.0;
-  return std::sqrt(rounded(centres_squared<Rational>(a, pose_a, b, pose_b))) - (a.radius + b.radius);
+  return std::sqrt(rounded(centres_squared<Exact>(a, pose_a, b, pose_b))) - (a.radius + b.radius);
 }
 
 double sphere_box_distance(const Sphere& a, const RigidTransform& pose_a, const Box& b, const RigidTransform& pose_b) {
   if (sphere_box_overlap(a, pose_a, b, pose_b)) return 0.0;
-  return std::sqrt(rounded(least(relative<Rational>(a, pose_a, b, pose_b)))) - a.radius;
+  return std::sqrt(rounded(least(relative<Exact>(a, pose_a, b, pose_b)))) - a.radius;
 }
 
 }  // namespace oracle
