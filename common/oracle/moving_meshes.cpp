@@ -1,6 +1,9 @@
 #include "common/oracle/moving_meshes.h"
 #include "common/oracle/kernel.h"
 
+#include <CGAL/FPU.h>
+#include <CGAL/Interval_nt.h>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -79,42 +82,151 @@ std::optional<std::pair<FT, FT>> edge_edge(const P& p0, const V& e, const V& d, 
   return std::make_pair(t, s);
 }
 
-// Every candidate, passed to `keep`; `keep` returns true to stop early.
-template <class Keep> void candidates(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, Keep&& keep) {
-  const V wa = exact(va) - CGAL::ORIGIN, wb = exact(vb) - CGAL::ORIGIN;
-  const V d = wa - wb;  // A's motion as seen from B
-  std::vector<P> pa, pb;
-  for (const Vec3& v : a.vertices) pa.push_back(exact(v));
-  for (const Vec3& v : b.vertices) pb.push_back(exact(v));
-  double approach = 0;
+// ---- The screen ------------------------------------------------------------------------
+// Each of the three families' tests runs first in interval arithmetic on the input's
+// doubles. Most pairs of features are decided there (no contact in [0, 1], or contact at
+// a time within a known interval); only the pairs it cannot decide, and those that may
+// be the first contact, are tested again exactly. The intervals contain the exact values,
+// so every decision the screen takes is the exact test's.
+using Interval = CGAL::Interval_nt<false>;  // needs the rounding mode set by the caller
+using IV = std::array<Interval, 3>;
+
+IV iv(const Vec3& v) { return {Interval(finite(v.x())), Interval(finite(v.y())), Interval(finite(v.z()))}; }
+IV operator-(const IV& a, const IV& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+IV operator-(const IV& a) { return {-a[0], -a[1], -a[2]}; }
+IV operator+(const IV& a, const IV& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+IV operator*(const Interval& s, const IV& a) { return {s * a[0], s * a[1], s * a[2]}; }
+Interval dot(const IV& a, const IV& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+IV cross(const IV& a, const IV& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Interval triple(const IV& a, const IV& b, const IV& c) { return dot(a, cross(b, c)); }
+
+// The interval tests: no value for no contact, or an interval holding the contact time.
+// Any comparison the intervals cannot decide throws CGAL::Uncertain_conversion_exception,
+// and so does a path parallel to the face's plane or edges in one plane (the exact tests
+// handle those).
+std::optional<Interval> vertex_face_screen(const IV& p, const IV& d, const IV& v0, const IV& v1, const IV& v2) {
+  const IV n = cross(v1 - v0, v2 - v0);
+  const Interval den = dot(d, n);
+  if (CGAL::is_zero(den)) throw CGAL::Uncertain_conversion_exception("a path parallel to the face");
+  const Interval t = dot(v0 - p, n) / den;
+  if (t < 0 || t > 1) return std::nullopt;
+  const IV x = p + t * d;
+  const IV v[3] = {v0, v1, v2};
+  for (int i = 0; i < 3; ++i)
+    if (CGAL::is_negative(triple(v[(i + 1) % 3] - v[i], x - v[i], n))) return std::nullopt;
+  return t;
+}
+
+std::optional<Interval> edge_edge_screen(const IV& p0, const IV& e, const IV& d, const IV& q0, const IV& f) {
+  const IV r = q0 - p0;
+  const IV minus_f = -f;
+  const Interval det = triple(e, d, minus_f);
+  if (CGAL::is_zero(det)) throw CGAL::Uncertain_conversion_exception("edges in one plane");
+  const Interval u = triple(r, d, minus_f) / det;
+  if (u < 0 || u > 1) return std::nullopt;
+  const Interval t = triple(e, r, minus_f) / det;
+  if (t < 0 || t > 1) return std::nullopt;
+  const Interval s = triple(e, d, r) / det;
+  if (s < 0 || s > 1) return std::nullopt;
+  return t;
+}
+
+// A pair of features the screen did not rule out: family `kind` (as in MeshContact), the
+// vertex or edge i and the face or edge k; `decided` when it surely touches, at a time in
+// [lo, hi].
+struct Screened {
+  int kind;
+  std::size_t i, k;
+  bool decided;
+  double lo, hi;
+};
+
+struct Motion {
+  const Mesh& a;
+  const Vec3& va;
+  const Mesh& b;
+  const Vec3& vb;
+  std::vector<std::array<int, 2>> ea, eb;  // the meshes' edges
+};
+
+template <class Test> void screen_one(std::vector<Screened>& out, int kind, std::size_t i, std::size_t k, Test&& test) {
+  try {
+    if (const std::optional<Interval> t = test()) out.push_back({kind, i, k, true, t->inf(), t->sup()});
+  } catch (const CGAL::Uncertain_conversion_exception&) {
+    out.push_back({kind, i, k, false, 0.0, 1.0});
+  }
+}
+
+std::vector<Screened> screen(const Motion& m) {
+  CGAL::Protect_FPU_rounding<true> upward;
+  const IV d = iv(m.va) - iv(m.vb);
+  std::vector<IV> pa, pb;
+  for (const Vec3& v : m.a.vertices) pa.push_back(iv(v));
+  for (const Vec3& v : m.b.vertices) pb.push_back(iv(v));
+  std::vector<Screened> out;
   for (std::size_t i = 0; i < pa.size(); ++i)
-    for (std::size_t k = 0; k < b.triangles.size(); ++k) {
-      const auto& tri = b.triangles[k];
-      if (auto t = vertex_face(pa[i], d, pb[tri[0]], pb[tri[1]], pb[tri[2]], &approach))
-        if (keep(Exact{*t, pa[i] + *t * wa, 0, int(i), int(k), approach})) return;
+    for (std::size_t k = 0; k < m.b.triangles.size(); ++k) {
+      const auto& tri = m.b.triangles[k];
+      screen_one(out, 0, i, k, [&] { return vertex_face_screen(pa[i], d, pb[tri[0]], pb[tri[1]], pb[tri[2]]); });
     }
+  const IV minus_d = -d;
   for (std::size_t j = 0; j < pb.size(); ++j)
-    for (std::size_t k = 0; k < a.triangles.size(); ++k) {
-      const auto& tri = a.triangles[k];
-      if (auto t = vertex_face(pb[j], -d, pa[tri[0]], pa[tri[1]], pa[tri[2]], &approach))
-        if (keep(Exact{*t, pb[j] + *t * wb, 1, int(k), int(j), approach})) return;
+    for (std::size_t k = 0; k < m.a.triangles.size(); ++k) {
+      const auto& tri = m.a.triangles[k];
+      screen_one(out, 1, j, k, [&] { return vertex_face_screen(pb[j], minus_d, pa[tri[0]], pa[tri[1]], pa[tri[2]]); });
     }
-  const auto ea = a.edges(), eb = b.edges();
-  for (std::size_t i = 0; i < ea.size(); ++i)
-    for (std::size_t j = 0; j < eb.size(); ++j) {
-      const P& p0 = pa[ea[i][0]];
-      const P& q0 = pb[eb[j][0]];
-      const V f = pb[eb[j][1]] - q0;
-      if (auto ts = edge_edge(p0, pa[ea[i][1]] - p0, d, q0, f, &approach))
-        if (keep(Exact{ts->first, q0 + ts->second * f + ts->first * wb, 2, int(i), int(j), approach})) return;
+  for (std::size_t i = 0; i < m.ea.size(); ++i)
+    for (std::size_t j = 0; j < m.eb.size(); ++j) {
+      const IV& p0 = pa[m.ea[i][0]];
+      const IV& q0 = pb[m.eb[j][0]];
+      screen_one(out, 2, i, j, [&] { return edge_edge_screen(p0, pa[m.ea[i][1]] - p0, d, q0, pb[m.eb[j][1]] - q0); });
     }
+  return out;
+}
+
+// Every candidate the screen kept that may touch by `limit`, tested exactly and passed to
+// `keep` in the screen's order; `keep` returns true to stop early.
+template <class Keep> void candidates(const Motion& m, const std::vector<Screened>& kept, double limit, Keep&& keep) {
+  const V wa = exact(m.va) - CGAL::ORIGIN, wb = exact(m.vb) - CGAL::ORIGIN;
+  const V d = wa - wb;  // A's motion as seen from B
+  const auto point = [](const Mesh& mesh, std::size_t i) { return exact(mesh.vertices[i]); };
+  const auto corner = [&](const Mesh& mesh, std::size_t k, int c) {
+    return point(mesh, std::size_t(mesh.triangles[k][c]));
+  };
+  double approach = 0;
+  for (const Screened& c : kept) {
+    if (c.lo > limit) continue;
+    if (c.kind == 0) {
+      const P p = point(m.a, c.i);
+      if (auto t = vertex_face(p, d, corner(m.b, c.k, 0), corner(m.b, c.k, 1), corner(m.b, c.k, 2), &approach))
+        if (keep(Exact{*t, p + *t * wa, 0, int(c.i), int(c.k), approach})) return;
+    } else if (c.kind == 1) {
+      const P q = point(m.b, c.i);
+      if (auto t = vertex_face(q, -d, corner(m.a, c.k, 0), corner(m.a, c.k, 1), corner(m.a, c.k, 2), &approach))
+        if (keep(Exact{*t, q + *t * wb, 1, int(c.k), int(c.i), approach})) return;
+    } else {
+      const P p0 = point(m.a, std::size_t(m.ea[c.i][0]));
+      const P q0 = point(m.b, std::size_t(m.eb[c.k][0]));
+      const V f = point(m.b, std::size_t(m.eb[c.k][1])) - q0;
+      if (auto ts = edge_edge(p0, point(m.a, std::size_t(m.ea[c.i][1])) - p0, d, q0, f, &approach))
+        if (keep(Exact{ts->first, q0 + ts->second * f + ts->first * wb, 2, int(c.i), int(c.k), approach})) return;
+    }
+  }
 }
 
 }  // namespace
 
 MeshContact first_contact_translating(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb) {
+  const Motion m{a, va, b, vb, a.edges(), b.edges()};
+  const std::vector<Screened> kept = screen(m);
+  // No contact is later than the latest time of any contact the screen is sure of.
+  double limit = 1.0;
+  for (const Screened& c : kept)
+    if (c.decided) limit = std::min(limit, c.hi);
   std::optional<Exact> best;
-  candidates(a, va, b, vb, [&](const Exact& c) {
+  candidates(m, kept, limit, [&](const Exact& c) {
     if (!best || c.t < best->t) best = c;
     return false;
   });
@@ -140,9 +252,13 @@ MeshContact first_contact_translating(const Mesh& a, const Vec3& va, const Mesh&
 
 bool contact_by(const Mesh& a, const Vec3& va, const Mesh& b, const Vec3& vb, double t) {
   if (t < 0) return false;
+  const Motion m{a, va, b, vb, a.edges(), b.edges()};
+  const std::vector<Screened> kept = screen(m);
+  for (const Screened& c : kept)
+    if (c.decided && c.hi <= t) return true;
   bool found = false;
   const FT limit(t);
-  candidates(a, va, b, vb, [&](const Exact& c) { return found = c.t <= limit; });
+  candidates(m, kept, t, [&](const Exact& c) { return found = c.t <= limit; });
   return found;
 }
 
