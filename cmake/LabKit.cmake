@@ -56,8 +56,10 @@ endfunction()
 # against 21.1), and a debugger follows the code line by line. Line tables (-g1) are
 # enough for a crash's backtrace with file and line (`./labkit check --debug`) and save
 # about a second per save; for a debugger that shows local variables, configure with
-# -DLABKIT_FULL_DEBUG_INFO=ON (only the students' files are rebuilt). ./labkit grade
-# compiles a submission with this same command (runner/lab_build.h).
+# -DLABKIT_FULL_DEBUG_INFO=ON (only the students' files are rebuilt). g++ starts
+# collecting its own garbage at a 128 MB heap: letting it grow to 256 MB first (20 MB more
+# at the peak) saves 0.3 s of each save's compile in labs 02 and 07. ./labkit grade compiles
+# a submission with this same command (runner/lab_build.h).
 option(LABKIT_FULL_DEBUG_INFO "Full debug information (-g) for the students' files" OFF)
 function(labkit_student_code target)
   if(CMAKE_BUILD_TYPE STREQUAL "RelWithDebInfo")
@@ -65,6 +67,9 @@ function(labkit_student_code target)
     if(NOT LABKIT_FULL_DEBUG_INFO)
       target_compile_options(${target} PRIVATE -g1)
     endif()
+  endif()
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    target_compile_options(${target} PRIVATE "SHELL:--param ggc-min-heapsize=262144")
   endif()
 endfunction()
 
