@@ -10,7 +10,9 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <memory>
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 namespace oracle {
@@ -37,6 +39,9 @@ using Point = Epeck::Point_3;
 using Vector = Epeck::Vector_3;
 using Interval = CGAL::Interval_nt<false>;
 using IK = CGAL::Simple_cartesian<Interval>;  // interval arithmetic: certified bounds, or an exception
+// Exact rationals without the lazy kernel's bookkeeping, for a distance the intervals
+// could not bound: it is wanted exactly, so there is nothing to put off.
+using EK = CGAL::Simple_cartesian<FT::ET>;
 
 Vector exact_vector(const Vec3& v) {
   finite(v);
@@ -211,22 +216,47 @@ class Minimum {
   bool zero_ = false;
 };
 
+// A rectangle of the input, with its exact corners built on first use and then shared by
+// every exact item of one distance query (two rectangles' query may need them dozens of
+// times). Copied by value, like the items that hold it.
+class SharedRectangle {
+ public:
+  SharedRectangle() = default;
+  explicit SharedRectangle(const Rectangle& r) : shared_(std::make_shared<Shared>(Shared{r, std::nullopt})) {}
+  const Rectangle& numbers() const { return shared_->numbers; }
+  template <class K> decltype(auto) get() const {
+    if constexpr (std::is_same_v<K, EK>) {
+      if (!shared_->exact) shared_->exact.emplace(shared_->numbers);
+      return static_cast<const RectangleOf<EK>&>(*shared_->exact);
+    } else {
+      return RectangleOf<K>(shared_->numbers);
+    }
+  }
+
+ private:
+  struct Shared {
+    Rectangle numbers;
+    std::optional<RectangleOf<EK>> exact;
+  };
+  std::shared_ptr<Shared> shared_;
+};
+
 // A point or a segment of the input: given by doubles, or a corner or side of a
 // rectangle (exact rationals). Copied by value: exact items may be computed later.
 struct PointSource {
   Vec3 p = Vec3::Zero();
-  Rectangle rect;
+  SharedRectangle rect;
   int corner = -1;  // -1: p itself
   template <class K> typename K::Point_3 get() const {
-    return corner < 0 ? point_of<K>(p) : RectangleOf<K>(rect).corner[corner];
+    return corner < 0 ? point_of<K>(p) : rect.get<K>().corner[corner];
   }
 };
 struct SegmentSource {
   Segment s;
-  Rectangle rect;
+  SharedRectangle rect;
   int side = -1;  // -1: s itself
   template <class K> typename K::Segment_3 get() const {
-    return side < 0 ? segment_of<K>(s) : RectangleOf<K>(rect).side(side);
+    return side < 0 ? segment_of<K>(s) : rect.get<K>().side(side);
   }
   PointSource end(int k) const {
     static const int from[4] = {0, 1, 3, 2}, to[4] = {1, 3, 2, 0};
@@ -234,28 +264,31 @@ struct SegmentSource {
     return {Vec3::Zero(), rect, k == 0 ? from[side] : to[side]};
   }
   // Exactly zero length: a == b, or a side along a zero half-size.
-  bool degenerate() const { return side < 0 ? s.a == s.b : (side % 2 == 0 ? rect.half_u == 0 : rect.half_v == 0); }
+  bool degenerate() const {
+    if (side < 0) return s.a == s.b;
+    return side % 2 == 0 ? rect.numbers().half_u == 0 : rect.numbers().half_v == 0;
+  }
 };
 
 bool flat(const Rectangle& r) { return r.half_u == 0 || r.half_v == 0; }
 
 // The point against the closed rectangle: its two triangles (a flat one is a segment).
-void add_point_rectangle(Minimum& m, const PointSource& p, const Rectangle& r) {
+void add_point_rectangle(Minimum& m, const PointSource& p, const SharedRectangle& r) {
   CGAL::Protect_FPU_rounding<true> rounding;  // interval arithmetic below
   const IK::Point_3 pi = p.get<IK>();
-  const RectangleOf<IK> ri(r);
-  if (flat(r)) {
+  const RectangleOf<IK> ri = r.get<IK>();
+  if (flat(r.numbers())) {
     const IK::Segment_3 d = ri.diagonal();
     m.add(
         pi, d, [pi, d] { return distance2<IK>(pi, d); },
-        [p, r] { return distance2<Epeck>(p.get<Epeck>(), RectangleOf<Epeck>(r).diagonal()); });
+        [p, r] { return FT(distance2<EK>(p.get<EK>(), r.get<EK>().diagonal())); });
     return;
   }
   for (int i = 0; i < 2; ++i) {
     const IK::Triangle_3 t = ri.triangle(i);
     m.add(
         pi, t, [pi, t] { return CGAL::squared_distance(pi, t); },
-        [p, r, i] { return CGAL::squared_distance(p.get<Epeck>(), RectangleOf<Epeck>(r).triangle(i)); });
+        [p, r, i] { return FT(CGAL::squared_distance(p.get<EK>(), r.get<EK>().triangle(i))); });
   }
 }
 
@@ -263,26 +296,26 @@ void add_point_rectangle(Minimum& m, const PointSource& p, const Rectangle& r) {
 // end of the segment or a point of the rectangle's border in it (both are convex): the
 // ends against the rectangle, the segment against the four sides. With `ends` = false
 // the caller covers the ends itself.
-void add_segment_rectangle(Minimum& m, const SegmentSource& s, const Rectangle& r, bool ends = true) {
+void add_segment_rectangle(Minimum& m, const SegmentSource& s, const SharedRectangle& r, bool ends = true) {
   if (s.degenerate()) {
     if (ends) add_point_rectangle(m, s.end(0), r);
     return;
   }
   CGAL::Protect_FPU_rounding<true> rounding;  // interval arithmetic below
   const IK::Segment_3 si = s.get<IK>();
-  const RectangleOf<IK> ri(r);
-  if (flat(r)) {
+  const RectangleOf<IK> ri = r.get<IK>();
+  if (flat(r.numbers())) {
     const IK::Segment_3 d = ri.diagonal();
     m.add(
         si, d, [si, d] { return distance2<IK>(si, d); },
-        [s, r] { return distance2<Epeck>(s.get<Epeck>(), RectangleOf<Epeck>(r).diagonal()); });
+        [s, r] { return FT(distance2<EK>(s.get<EK>(), r.get<EK>().diagonal())); });
     return;
   }
   for (int i = 0; i < 2; ++i) {
     const IK::Triangle_3 t = ri.triangle(i);
     m.meets(
         si, t, [&] { return bool(CGAL::do_intersect(si, t)); },
-        [&] { return bool(CGAL::do_intersect(s.get<Epeck>(), RectangleOf<Epeck>(r).triangle(i))); });
+        [&] { return bool(CGAL::do_intersect(s.get<EK>(), r.get<EK>().triangle(i))); });
   }
   if (m.zero()) return;
   if (ends) {
@@ -293,7 +326,7 @@ void add_segment_rectangle(Minimum& m, const SegmentSource& s, const Rectangle& 
     const IK::Segment_3 side = ri.side(i);
     m.add(
         si, side, [si, side] { return distance2<IK>(si, side); },
-        [s, r, i] { return distance2<Epeck>(s.get<Epeck>(), RectangleOf<Epeck>(r).side(i)); });
+        [s, r, i] { return FT(distance2<EK>(s.get<EK>(), r.get<EK>().side(i))); });
   }
 }
 
@@ -415,27 +448,29 @@ SquaredDistance squared_distance(const Vec3& p, const Vec3& q) {
   const IK::Point_3 a = point_of<IK>(p), b = point_of<IK>(q);
   return make(
       a, b, [a, b] { return CGAL::squared_distance(a, b); },
-      [p, q] { return CGAL::squared_distance(exact(p), exact(q)); });
+      [p, q] { return FT(CGAL::squared_distance(point_of<EK>(p), point_of<EK>(q))); });
 }
 SquaredDistance squared_distance(const Vec3& p, const Segment& s) {
   const IK::Point_3 a = point_of<IK>(p);
   const IK::Segment_3 b = segment_of<IK>(s);
   return make(
-      a, b, [a, b] { return distance2<IK>(a, b); }, [p, s] { return distance2<Epeck>(exact(p), exact(s)); });
+      a, b, [a, b] { return distance2<IK>(a, b); },
+      [p, s] { return FT(distance2<EK>(point_of<EK>(p), segment_of<EK>(s))); });
 }
 SquaredDistance squared_distance(const Segment& s0, const Segment& s1) {
   const IK::Segment_3 a = segment_of<IK>(s0), b = segment_of<IK>(s1);
   return make(
-      a, b, [a, b] { return distance2<IK>(a, b); }, [s0, s1] { return distance2<Epeck>(exact(s0), exact(s1)); });
+      a, b, [a, b] { return distance2<IK>(a, b); },
+      [s0, s1] { return FT(distance2<EK>(segment_of<EK>(s0), segment_of<EK>(s1))); });
 }
 SquaredDistance squared_distance(const Vec3& p, const Rectangle& r) {
   Minimum m;
-  add_point_rectangle(m, {p, {}, -1}, r);
+  add_point_rectangle(m, {p, {}, -1}, SharedRectangle(r));
   return m.result();
 }
 SquaredDistance squared_distance(const Segment& s, const Rectangle& r) {
   Minimum m;
-  add_segment_rectangle(m, {s, {}, -1}, r);
+  add_segment_rectangle(m, {s, {}, -1}, SharedRectangle(r));
   return m.result();
 }
 // Two rectangles: a closest pair has a point of some side of one of them (if both points
@@ -444,10 +479,11 @@ SquaredDistance squared_distance(const Segment& s, const Rectangle& r) {
 // the other rectangle (the corners once each rather than twice, as sides' ends).
 SquaredDistance squared_distance(const Rectangle& r0, const Rectangle& r1) {
   Minimum m;
-  for (int k = 0; k < 4; ++k) add_point_rectangle(m, {Vec3::Zero(), r0, k}, r1);
-  for (int k = 0; k < 4; ++k) add_point_rectangle(m, {Vec3::Zero(), r1, k}, r0);
-  for (int i = 0; i < 4 && !m.zero(); ++i) add_segment_rectangle(m, {{}, r0, i}, r1, false);
-  for (int i = 0; i < 4 && !m.zero(); ++i) add_segment_rectangle(m, {{}, r1, i}, r0, false);
+  const SharedRectangle a(r0), b(r1);
+  for (int k = 0; k < 4; ++k) add_point_rectangle(m, {Vec3::Zero(), a, k}, b);
+  for (int k = 0; k < 4; ++k) add_point_rectangle(m, {Vec3::Zero(), b, k}, a);
+  for (int i = 0; i < 4 && !m.zero(); ++i) add_segment_rectangle(m, {{}, a, i}, b, false);
+  for (int i = 0; i < 4 && !m.zero(); ++i) add_segment_rectangle(m, {{}, b, i}, a, false);
   return m.result();
 }
 
