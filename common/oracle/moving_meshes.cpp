@@ -18,7 +18,56 @@ namespace {
 using P = Epeck::Point_3;
 using V = Epeck::Vector_3;
 
-FT triple(const V& a, const V& b, const V& c) { return a * CGAL::cross_product(b, c); }
+FT dot(const V& a, const V& b) { return a * b; }
+V cross(const V& a, const V& b) { return CGAL::cross_product(a, b); }
+FT triple(const V& a, const V& b, const V& c) { return dot(a, cross(b, c)); }
+
+// The same for intervals, on arrays of them.
+using Interval = CGAL::Interval_nt<false>;  // needs the rounding mode set by the caller
+using IV = std::array<Interval, 3>;
+
+IV iv(const Vec3& v) { return {Interval(finite(v.x())), Interval(finite(v.y())), Interval(finite(v.z()))}; }
+IV operator-(const IV& a, const IV& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
+IV operator-(const IV& a) { return {-a[0], -a[1], -a[2]}; }
+IV operator+(const IV& a, const IV& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
+IV operator*(const Interval& s, const IV& a) { return {s * a[0], s * a[1], s * a[2]}; }
+Interval dot(const IV& a, const IV& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+IV cross(const IV& a, const IV& b) {
+  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+Interval triple(const IV& a, const IV& b, const IV& c) { return dot(a, cross(b, c)); }
+
+// The two tests below are written once, for exact numbers (Epeck's points and vectors)
+// and for intervals (the screen further down).
+//
+// The vertex path p -> p + d against the still triangle (v0, v1, v2) with normal n, when
+// den = d . n is not zero: the t in [0, 1] with p + t d in the closed triangle, if any.
+template <class Point, class Vector, class NT>
+std::optional<NT> crossing_time(const Point& p, const Vector& d, const Point& v0, const Point& v1, const Point& v2,
+                                const Vector& n, const NT& den) {
+  const NT t = dot(v0 - p, n) / den;
+  if (t < 0 || t > 1) return std::nullopt;
+  const Point x = p + t * d;
+  const Point v[3] = {v0, v1, v2};
+  for (int i = 0; i < 3; ++i)
+    if (CGAL::is_negative(triple(v[(i + 1) % 3] - v[i], x - v[i], n))) return std::nullopt;
+  return t;
+}
+
+// The edge p0 + u e swept by d against the still edge q0 + s f, with r = q0 - p0 and det
+// = [e, d, -f] not zero: p0 + u e + t d = q0 + s f with u, s, t in [0, 1], by Cramer's
+// rule. Returns (t, s).
+template <class Vector, class NT>
+std::optional<std::pair<NT, NT>> meeting_times(const Vector& r, const Vector& e, const Vector& d, const Vector& minus_f,
+                                               const NT& det) {
+  const NT u = triple(r, d, minus_f) / det;
+  if (u < 0 || u > 1) return std::nullopt;
+  const NT t = triple(e, r, minus_f) / det;
+  if (t < 0 || t > 1) return std::nullopt;
+  const NT s = triple(e, d, r) / det;
+  if (s < 0 || s > 1) return std::nullopt;
+  return std::make_pair(t, s);
+}
 
 // A candidate contact, exact.
 struct Exact {
@@ -52,13 +101,8 @@ std::optional<FT> vertex_face(const P& p, const V& d, const P& v0, const P& v1, 
     *approach = 0;
     return first_on_segment(p, d, {v0, v1, v2});
   }
-  const FT t = ((v0 - p) * n) / den;
-  if (t < 0 || t > 1) return std::nullopt;
-  const P x = p + t * d;
-  const P v[3] = {v0, v1, v2};
-  for (int i = 0; i < 3; ++i)
-    if (CGAL::is_negative(triple(v[(i + 1) % 3] - v[i], x - v[i], n))) return std::nullopt;
-  *approach = std::abs(rounded(den)) / std::sqrt(rounded(n * n));
+  const std::optional<FT> t = crossing_time(p, d, v0, v1, v2, n, den);
+  if (t) *approach = std::abs(rounded(den)) / std::sqrt(rounded(n * n));
   return t;
 }
 
@@ -71,15 +115,12 @@ std::optional<std::pair<FT, FT>> edge_edge(const P& p0, const V& e, const V& d, 
   const V minus_f = -f;
   const FT det = triple(e, d, minus_f);
   if (CGAL::is_zero(det)) return std::nullopt;
-  const FT u = triple(r, d, minus_f) / det;
-  if (u < 0 || u > 1) return std::nullopt;
-  const FT t = triple(e, r, minus_f) / det;
-  if (t < 0 || t > 1) return std::nullopt;
-  const FT s = triple(e, d, r) / det;
-  if (s < 0 || s > 1) return std::nullopt;
-  const V n = CGAL::cross_product(e, f);
-  *approach = std::abs(rounded(d * n)) / std::sqrt(rounded(n * n));
-  return std::make_pair(t, s);
+  const auto ts = meeting_times(r, e, d, minus_f, det);
+  if (ts) {
+    const V n = CGAL::cross_product(e, f);
+    *approach = std::abs(rounded(d * n)) / std::sqrt(rounded(n * n));
+  }
+  return ts;
 }
 
 // ---- The screen ------------------------------------------------------------------------
@@ -88,19 +129,6 @@ std::optional<std::pair<FT, FT>> edge_edge(const P& p0, const V& e, const V& d, 
 // a time within a known interval); only the pairs it cannot decide, and those that may
 // be the first contact, are tested again exactly. The intervals contain the exact values,
 // so every decision the screen takes is the exact test's.
-using Interval = CGAL::Interval_nt<false>;  // needs the rounding mode set by the caller
-using IV = std::array<Interval, 3>;
-
-IV iv(const Vec3& v) { return {Interval(finite(v.x())), Interval(finite(v.y())), Interval(finite(v.z()))}; }
-IV operator-(const IV& a, const IV& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-IV operator-(const IV& a) { return {-a[0], -a[1], -a[2]}; }
-IV operator+(const IV& a, const IV& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-IV operator*(const Interval& s, const IV& a) { return {s * a[0], s * a[1], s * a[2]}; }
-Interval dot(const IV& a, const IV& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-IV cross(const IV& a, const IV& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-}
-Interval triple(const IV& a, const IV& b, const IV& c) { return dot(a, cross(b, c)); }
 
 // The interval tests: no value for no contact, or an interval holding the contact time.
 // Any comparison the intervals cannot decide throws CGAL::Uncertain_conversion_exception,
@@ -110,13 +138,7 @@ std::optional<Interval> vertex_face_screen(const IV& p, const IV& d, const IV& v
   const IV n = cross(v1 - v0, v2 - v0);
   const Interval den = dot(d, n);
   if (CGAL::is_zero(den)) throw CGAL::Uncertain_conversion_exception("a path parallel to the face");
-  const Interval t = dot(v0 - p, n) / den;
-  if (t < 0 || t > 1) return std::nullopt;
-  const IV x = p + t * d;
-  const IV v[3] = {v0, v1, v2};
-  for (int i = 0; i < 3; ++i)
-    if (CGAL::is_negative(triple(v[(i + 1) % 3] - v[i], x - v[i], n))) return std::nullopt;
-  return t;
+  return crossing_time(p, d, v0, v1, v2, n, den);
 }
 
 std::optional<Interval> edge_edge_screen(const IV& p0, const IV& e, const IV& d, const IV& q0, const IV& f) {
@@ -124,13 +146,8 @@ std::optional<Interval> edge_edge_screen(const IV& p0, const IV& e, const IV& d,
   const IV minus_f = -f;
   const Interval det = triple(e, d, minus_f);
   if (CGAL::is_zero(det)) throw CGAL::Uncertain_conversion_exception("edges in one plane");
-  const Interval u = triple(r, d, minus_f) / det;
-  if (u < 0 || u > 1) return std::nullopt;
-  const Interval t = triple(e, r, minus_f) / det;
-  if (t < 0 || t > 1) return std::nullopt;
-  const Interval s = triple(e, d, r) / det;
-  if (s < 0 || s > 1) return std::nullopt;
-  return t;
+  const auto ts = meeting_times(r, e, d, minus_f, det);
+  return ts ? std::optional<Interval>(ts->first) : std::nullopt;
 }
 
 // A pair of features the screen did not rule out: family `kind` (as in MeshContact), the
