@@ -1,5 +1,5 @@
 // Lab 01's judge, the planes: signed distances, classification, and the frustum's six
-// planes from a camera or a matrix (the pieces of a clipped triangle: .judge.pieces.cpp).
+// planes from a camera or a matrix (the pieces of a clipped triangle: judge.pieces.cpp).
 #include "01_frustum_split/judge.h"
 #include "01_frustum_split/judge_internal.h"
 

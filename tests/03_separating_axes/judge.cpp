@@ -1,5 +1,5 @@
 // Lab 03's judge, the boxes: projections, the 15 axes and static boxes (moving boxes:
-// .judge.moving.cpp; the triangles: .judge.triangles.cpp). First, S of each input
+// judge.moving.cpp; the triangles: judge.triangles.cpp). First, S of each input
 // (scale_of, judge.h), which the generators and the viewer share.
 #include "03_separating_axes/judge.h"
 #include "03_separating_axes/judge_internal.h"

@@ -1,6 +1,6 @@
 // Lab 04's judge, steps 1 and 2: the closest point, overlap at a time and bisection, and
 // the checks of a reported search that every step shares (steps 3 and 4, the searches by
-// sub-steps: .judge.substeps.cpp). First, what the generators and the viewer share with
+// sub-steps: judge.substeps.cpp). First, what the generators and the viewer share with
 // it (judge.h): the inputs' codec and descriptions, and a motion's pose at a time.
 #include "04_bisection/judge.h"
 #include "04_bisection/judge_internal.h"

@@ -11,8 +11,8 @@
 
 namespace labkit {
 
-// The pose of a standard motion at time t (the formula of MotionParameters,
-// tests/04_bisection/queries.h, as lab 04 evaluates it).
+// The pose at time t of the standard motion these parameters describe: the header's
+// StandardMotion, evaluated as the lab evaluates it.
 RigidTransform pose_at(const MotionParameters& m, double t);
 
 }  // namespace labkit

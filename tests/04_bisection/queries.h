@@ -206,8 +206,8 @@ void decode(Reader& r, MotionParameters& m);
 void encode(Writer& w, const SearchTimes& t);
 void decode(Reader& r, SearchTimes& t);
 }  // namespace codec
-// How reports print them (defined, like the codec above, in
-// tests/04_bisection/generators.cpp).
+// How reports print them (defined, like the codec above, in tests/04_bisection/judge.cpp:
+// the viewer and the generators share them).
 std::string describe(const MotionParameters& m);  // only the parts that are not zero
 std::string describe(const SearchTimes& t);
 std::string describe(const MovingBody& b);  // the shape it is, and its motion

@@ -1,5 +1,5 @@
 // Lab 05's judge, steps 1 to 3: the distances between cores and the tests of two
-// sphere-swept volumes, and the header's S of every input (the sweeps: .judge.sweeps.cpp).
+// sphere-swept volumes, and the header's S of every input (the sweeps: judge.sweeps.cpp).
 #include "05_sphere_sweeps/judge.h"
 #include "05_sphere_sweeps/judge_internal.h"
 
