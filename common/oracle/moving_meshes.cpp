@@ -3,6 +3,7 @@
 
 #include <CGAL/FPU.h>
 #include <CGAL/Interval_nt.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,27 +19,25 @@ namespace {
 using P = Epeck::Point_3;
 using V = Epeck::Vector_3;
 
-FT dot(const V& a, const V& b) { return a * b; }
-V cross(const V& a, const V& b) { return CGAL::cross_product(a, b); }
-FT triple(const V& a, const V& b, const V& c) { return dot(a, cross(b, c)); }
-
-// The same for intervals, on arrays of them.
+// Interval arithmetic on CGAL's own kernel, for the screen below.
 using Interval = CGAL::Interval_nt<false>;  // needs the rounding mode set by the caller
-using IV = std::array<Interval, 3>;
+using IK = CGAL::Simple_cartesian<Interval>;
 
-IV iv(const Vec3& v) { return {Interval(finite(v.x())), Interval(finite(v.y())), Interval(finite(v.z()))}; }
-IV operator-(const IV& a, const IV& b) { return {a[0] - b[0], a[1] - b[1], a[2] - b[2]}; }
-IV operator-(const IV& a) { return {-a[0], -a[1], -a[2]}; }
-IV operator+(const IV& a, const IV& b) { return {a[0] + b[0], a[1] + b[1], a[2] + b[2]}; }
-IV operator*(const Interval& s, const IV& a) { return {s * a[0], s * a[1], s * a[2]}; }
-Interval dot(const IV& a, const IV& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
-IV cross(const IV& a, const IV& b) {
-  return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+IK::Point_3 interval_point(const Vec3& v) { return {finite(v.x()), finite(v.y()), finite(v.z())}; }
+IK::Vector_3 interval_vector(const Vec3& v) { return {finite(v.x()), finite(v.y()), finite(v.z())}; }
+
+// In either kernel (K = Epeck or IK).
+template <class K> typename K::FT dot(const CGAL::Vector_3<K>& a, const CGAL::Vector_3<K>& b) { return a * b; }
+template <class K> CGAL::Vector_3<K> cross(const CGAL::Vector_3<K>& a, const CGAL::Vector_3<K>& b) {
+  return CGAL::cross_product(a, b);
 }
-Interval triple(const IV& a, const IV& b, const IV& c) { return dot(a, cross(b, c)); }
+template <class K>
+typename K::FT triple(const CGAL::Vector_3<K>& a, const CGAL::Vector_3<K>& b, const CGAL::Vector_3<K>& c) {
+  return dot(a, cross(b, c));
+}
 
-// The two tests below are written once, for exact numbers (Epeck's points and vectors)
-// and for intervals (the screen further down).
+// The two tests below are written once, for exact numbers and for intervals (the screen
+// further down).
 //
 // The vertex path p -> p + d against the still triangle (v0, v1, v2) with normal n, when
 // den = d . n is not zero: the t in [0, 1] with p + t d in the closed triangle, if any.
@@ -134,16 +133,18 @@ std::optional<std::pair<FT, FT>> edge_edge(const P& p0, const V& e, const V& d, 
 // Any comparison the intervals cannot decide throws CGAL::Uncertain_conversion_exception,
 // and so does a path parallel to the face's plane or edges in one plane (the exact tests
 // handle those).
-std::optional<Interval> vertex_face_screen(const IV& p, const IV& d, const IV& v0, const IV& v1, const IV& v2) {
-  const IV n = cross(v1 - v0, v2 - v0);
+std::optional<Interval> vertex_face_screen(const IK::Point_3& p, const IK::Vector_3& d, const IK::Point_3& v0,
+                                           const IK::Point_3& v1, const IK::Point_3& v2) {
+  const IK::Vector_3 n = cross(v1 - v0, v2 - v0);
   const Interval den = dot(d, n);
   if (CGAL::is_zero(den)) throw CGAL::Uncertain_conversion_exception("a path parallel to the face");
   return crossing_time(p, d, v0, v1, v2, n, den);
 }
 
-std::optional<Interval> edge_edge_screen(const IV& p0, const IV& e, const IV& d, const IV& q0, const IV& f) {
-  const IV r = q0 - p0;
-  const IV minus_f = -f;
+std::optional<Interval> edge_edge_screen(const IK::Point_3& p0, const IK::Vector_3& e, const IK::Vector_3& d,
+                                         const IK::Point_3& q0, const IK::Vector_3& f) {
+  const IK::Vector_3 r = q0 - p0;
+  const IK::Vector_3 minus_f = -f;
   const Interval det = triple(e, d, minus_f);
   if (CGAL::is_zero(det)) throw CGAL::Uncertain_conversion_exception("edges in one plane");
   const auto ts = meeting_times(r, e, d, minus_f, det);
@@ -178,17 +179,17 @@ template <class Test> void screen_one(std::vector<Screened>& out, int kind, std:
 
 std::vector<Screened> screen(const Motion& m) {
   CGAL::Protect_FPU_rounding<true> upward;
-  const IV d = iv(m.va) - iv(m.vb);
-  std::vector<IV> pa, pb;
-  for (const Vec3& v : m.a.vertices) pa.push_back(iv(v));
-  for (const Vec3& v : m.b.vertices) pb.push_back(iv(v));
+  const IK::Vector_3 d = interval_vector(m.va) - interval_vector(m.vb);
+  std::vector<IK::Point_3> pa, pb;
+  for (const Vec3& v : m.a.vertices) pa.push_back(interval_point(v));
+  for (const Vec3& v : m.b.vertices) pb.push_back(interval_point(v));
   std::vector<Screened> out;
   for (std::size_t i = 0; i < pa.size(); ++i)
     for (std::size_t k = 0; k < m.b.triangles.size(); ++k) {
       const auto& tri = m.b.triangles[k];
       screen_one(out, 0, i, k, [&] { return vertex_face_screen(pa[i], d, pb[tri[0]], pb[tri[1]], pb[tri[2]]); });
     }
-  const IV minus_d = -d;
+  const IK::Vector_3 minus_d = -d;
   for (std::size_t j = 0; j < pb.size(); ++j)
     for (std::size_t k = 0; k < m.a.triangles.size(); ++k) {
       const auto& tri = m.a.triangles[k];
@@ -196,8 +197,8 @@ std::vector<Screened> screen(const Motion& m) {
     }
   for (std::size_t i = 0; i < m.ea.size(); ++i)
     for (std::size_t j = 0; j < m.eb.size(); ++j) {
-      const IV& p0 = pa[m.ea[i][0]];
-      const IV& q0 = pb[m.eb[j][0]];
+      const IK::Point_3& p0 = pa[m.ea[i][0]];
+      const IK::Point_3& q0 = pb[m.eb[j][0]];
       screen_one(out, 2, i, j, [&] { return edge_edge_screen(p0, pa[m.ea[i][1]] - p0, d, q0, pb[m.eb[j][1]] - q0); });
     }
   return out;
