@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A class graded as an instructor grades one (issue 16): N students (default 20), each
 # lab of each student drawn from what a class hands in: the reference (half the time), one
-# of the lab's classic mistakes (tests/*/mutants.cmake, as the build wrote them), the
+# of the lab's classic mistakes (build/mutants/, as the build wrote them), the
 # untouched stub, a file that does not compile, one that crashes after a few calls, or no
 # file at all; each file but the stubs is made the student's own, as in a real class, so
 # that only untouched stubs share a compile. The draw is fixed (--seed), so runs compare.

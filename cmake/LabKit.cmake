@@ -4,7 +4,9 @@
 # The code under test never shares a process with the judge (common/protocol/answerer.h):
 #
 #   labs/NN_name/*.cpp            -> labNN_student     (the student's file: one small object)
-#   solutions/NN_name/*.cpp       -> labNN_reference   (absent in a student release)
+#   solutions/NN_name/*.cpp       -> labNN_reference   (absent in a student release); its
+#                                    `// mutant` lines -> labNN_mutant_X, the reference with
+#                                    one classic mistake each (cmake/Mutants.cmake)
 #   answer_NN_name_X              -> the answerer: the lab's functions from labNN_X (student,
 #                                    reference or a mutant) behind common/protocol/lab_answerer.cpp;
 #                                    nothing of the kit's but the geometry types. A student's
@@ -21,8 +23,6 @@
 #     test.cpp                    -> test_NN_name      (examples and random cases: the judge's
 #                                    process, linked once; it runs the answerer named by
 #                                    LABKIT_ANSWERER and calls the lab's functions there)
-#     mutants.cmake               -> the reference with one classic mistake each; ctest
-#                                    expects the step each one breaks to fail
 #     given*.cpp (if any)         -> given_NN_name     (ready tools the lab's header declares,
 #                                    linked with every implementation)
 #   grading record                -> build/grading/NN_name.{json,link}: how ./labkit grade
@@ -233,8 +233,8 @@ function(labkit_add_lab number name)
   endif()
 
   # The classic mistakes, each of which the tests must catch.
-  if(TARGET ${lab}_reference AND EXISTS "${PROJECT_SOURCE_DIR}/tests/${stem}/mutants.cmake")
-    include("${PROJECT_SOURCE_DIR}/tests/${stem}/mutants.cmake")
+  if(TARGET ${lab}_reference)
+    labkit_add_mutants(${number} ${name})
   endif()
 
   set_property(GLOBAL APPEND PROPERTY LABKIT_LABS ${stem})
@@ -273,54 +273,45 @@ function(labkit_manifest_steps number out)
   set(${out} ${result} PARENT_SCOPE)
 endfunction()
 
-# labkit_mutant(NN name NAME id STEP k SAYS "word" ... FIND "text" REPLACE "text" [EVERYWHERE] [FILE solution.cpp])
-#
-# A mutant is the reference solution with one classic mistake written in (the handout's
-# "classic mistake" of that step): the text FIND replaced by REPLACE. ctest then runs the
-# lab's steps against it in order and expects steps before k to pass, step k to FAIL, and
-# the why of that first failure to hold each SAYS word (the concept the mistake breaks):
-# this is how the kit shows that its tests fail, in the right step, for the mistakes
-# students actually make, and say so in the lab's words. Mutants live beside the
-# lab's tests, in tests/NN_name/mutants.cmake.
-#
-include("${CMAKE_CURRENT_LIST_DIR}/MutantAnchor.cmake")  # labkit_mutant_apply
+# The classic mistakes of lab NN, each written in the reference where it goes
+# (cmake/Mutants.cmake): each mutant is the reference with that one mistake in it, its own
+# answerer, and a test that runs the lab's steps against it in order (runner/mutant.h).
+# This is how the kit shows that its tests fail, in the right step, for the mistakes
+# students actually make, and say so in the lab's words.
+include("${CMAKE_CURRENT_LIST_DIR}/Mutants.cmake")
 
-function(labkit_mutant number name)
-  # PARSE_ARGV keeps the semicolons of C++ code inside FIND and REPLACE.
-  cmake_parse_arguments(PARSE_ARGV 2 M "EVERYWHERE" "NAME;STEP;FILE;FIND;REPLACE" "SAYS")
+function(labkit_add_mutants number name)
   set(stem ${number}_${name})
-  if(NOT M_FILE)
-    set(M_FILE ${name}.cpp)
-  endif()
-  set(source "${PROJECT_SOURCE_DIR}/solutions/${stem}/${M_FILE}")
-  file(READ "${source}" mutated)
-  set(where "solutions/${stem}/${M_FILE} (tests/${stem}/mutants.cmake)")
-  labkit_mutant_apply(mutated ${M_NAME} "${M_FIND}" "${M_REPLACE}" "${M_EVERYWHERE}" "${where}")
-  set(output "${PROJECT_BINARY_DIR}/mutants/${stem}/${M_NAME}.cpp")
-  # Rewritten only when it changes, so that a reconfigure does not rebuild every mutant.
-  set(old "")
-  if(EXISTS "${output}")
-    file(READ "${output}" old)
-  endif()
-  if(NOT old STREQUAL mutated)
-    file(WRITE "${output}" "${mutated}")
-  endif()
+  set(source "${PROJECT_SOURCE_DIR}/solutions/${stem}/${name}.cpp")
+  set(where "solutions/${stem}/${name}.cpp")
+  file(READ "${source}" reference)
   set_property(DIRECTORY "${PROJECT_SOURCE_DIR}" APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${source}")
+  labkit_mutant_specs(m "${reference}" "${where}")
+  foreach(mutant IN LISTS m_names)
+    labkit_mutant_source(mutated m ${mutant} "${reference}" "${where}")
+    set(output "${PROJECT_BINARY_DIR}/mutants/${stem}/${mutant}.cpp")
+    # Rewritten only when it changes, so that a reconfigure does not rebuild every mutant.
+    set(old "")
+    if(EXISTS "${output}")
+      file(READ "${output}" old)
+    endif()
+    if(NOT old STREQUAL mutated)
+      file(WRITE "${output}" "${mutated}")
+    endif()
 
-  set(library lab${number}_mutant_${M_NAME})
-  labkit_implementation(${library} ${stem} "${output}")
-  target_compile_options(${library} PRIVATE -w)  # a mistake may well leave a variable unused
-  labkit_kit_code(${library})
-  set_target_properties(${library} PROPERTIES EXCLUDE_FROM_ALL FALSE)
-  labkit_add_answerer(${number} ${name} mutant_${M_NAME} ${library})
-  # Its steps run in order as a student's would (runner/mutant.h): the ones before STEP
-  # pass, STEP fails, and the why of its first failure holds every word it SAYS.
-  set(says "")
-  foreach(word IN LISTS M_SAYS)
-    list(APPEND says --says "${word}")
+    set(library lab${number}_mutant_${mutant})
+    labkit_implementation(${library} ${stem} "${output}")
+    target_compile_options(${library} PRIVATE -w)  # a mistake may well leave a variable unused
+    labkit_kit_code(${library})
+    set_target_properties(${library} PROPERTIES EXCLUDE_FROM_ALL FALSE)
+    labkit_add_answerer(${number} ${name} mutant_${mutant} ${library})
+    set(says "")
+    foreach(word IN LISTS m_${mutant}_says)
+      list(APPEND says --says "${word}")
+    endforeach()
+    add_test(NAME lab${number}.mutant.${mutant}
+             COMMAND labkit-runner mutant ${number} --name ${mutant} --step ${m_${mutant}_step} ${says})
+    set_tests_properties(lab${number}.mutant.${mutant} PROPERTIES LABELS "mutant;lab${number}"
+      ENVIRONMENT "LABKIT_BUILD_DIR=${PROJECT_BINARY_DIR}")
   endforeach()
-  add_test(NAME lab${number}.mutant.${M_NAME}
-           COMMAND labkit-runner mutant ${number} --name ${M_NAME} --step ${M_STEP} ${says})
-  set_tests_properties(lab${number}.mutant.${M_NAME} PROPERTIES LABELS "mutant;lab${number}"
-    ENVIRONMENT "LABKIT_BUILD_DIR=${PROJECT_BINARY_DIR}")
 endfunction()

@@ -14,8 +14,8 @@
 # the manifest and frozen by the kit's runner ($LABKIT_RUNNER, which ./labkit builds).
 #
 # The release is a list of what to take, not of what to leave out, so that a file added
-# to the kit later never reaches students by default. It never holds solutions/, the
-# mutants (tests/*/mutants.cmake are reference code with one edit), the hostile
+# to the kit later never reaches students by default. It never holds solutions/ (nor,
+# so, the classic mistakes written in the references' `// mutant` lines), the hostile
 # submissions of tests/grading/, .ci/ or anything of grading/ but the manifest.
 # tests/kit/release.test.sh checks that no reference function body appears in it.
 set -euo pipefail
@@ -48,10 +48,7 @@ make_release() {
   done
   for lab_dir in tests/[0-9][0-9]_*/; do
     mkdir -p "$out/$lab_dir"
-    for piece in "$lab_dir"*; do
-      case "$piece" in *mutants.cmake) continue ;; esac
-      cp -p "$piece" "$out/$lab_dir"
-    done
+    cp -p "$lab_dir"* "$out/$lab_dir"
   done
   cp -pR tests/kit "$out/tests/"
   cp -p grading/manifest.json "$out/grading/"

@@ -24,7 +24,7 @@
 namespace runner {
 
 // Random cases per query when grading. Students' checks run 1,000 per query on the
-// public seed (enough to catch every classic mistake of tests/*/mutants.cmake, and
+// public seed (enough to catch every classic mistake written in the references, and
 // quick after each save); grading draws three times as many from the secret seed, so
 // that every generator family comes up hundreds of times, and a submission still grades
 // in about half a minute. A student rehearses it with ./labkit check --cases 3000 --seed anything.

@@ -115,7 +115,7 @@ int mutant(const Paths& paths, const MutantOptions& options) {
     std::cout << who << ": step " << step.number << " " << status_word(r.status) << ". First failure:\n"
               << f.block << "\n";
     if (options.says.empty()) {
-      std::cout << who << " names no concept words (SAYS in its tests/*/mutants.cmake entry)\n";
+      std::cout << who << " names no concept words (the quoted words of its `// mutant` line in the reference)\n";
       return 1;
     }
     if (field_and_number_alone(f.why, f.expected)) {

@@ -1,6 +1,6 @@
 // `labkit-runner mutant`: the kit's own check that a classic mistake is caught where it
-// belongs. A mutant (tests/NN_name/mutants.cmake) is the reference with one mistake of
-// step k written in; its steps run in order, as a student's would, and
+// belongs. A mutant (a `// mutant` line of solutions/NN_name/, cmake/Mutants.cmake) is the
+// reference with one mistake of step k written in; its steps run in order, as a student's would, and
 //   - every step before k passes (the mistake is not blamed on an earlier step),
 //   - step k fails,
 //   - the why of step k's first failure block, the one a student reads first, names the

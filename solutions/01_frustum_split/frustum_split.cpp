@@ -37,7 +37,9 @@ void require_frustum(const Frustum& f, const char* query) {
     require_plane(f.planes[std::size_t(k)], query, "frustum.planes[" + std::to_string(k) + "] (" + names[k] + ")");
 }
 
-// mutant: magic_epsilon
+// mutant magic_epsilon (step 1, "exact sign", "magic epsilon"):
+//   `0 ? Side::in : (value < 0`
+//   -> `1e-9 ? Side::in : (value < -1e-9`
 Side side_of(double value) { return value > 0 ? Side::in : (value < 0 ? Side::out : Side::on); }
 
 //   Derivation. A point x of the triangle's plane has homogeneous barycentric weights
@@ -88,7 +90,9 @@ Corner cut(const Corner& p, const Corner& q, int m, const std::array<Vec3, 6>& d
   c.planes = 1u << m;
   if (const unsigned common = p.edges & q.edges) {
     const int a = common & 1u ? 0 : (common & 2u ? 1 : 2), b = (a + 1) % 3;
-    // mutant: cut_t_from_wrong_end
+    // mutant cut_t_from_wrong_end (step 2, "cut point", "measured from p"):
+    //   `b] = d[std::size_t(m)][a]; c.w[a`
+    //   -> `a] = d[std::size_t(m)][a]; c.w[b`
     c.w[b] = d[std::size_t(m)][a];
     c.w[a] = -d[std::size_t(m)][b];
     c.edges = 1u << a;
@@ -126,15 +130,21 @@ Polygon clip_polygon(const Triangle& t, const Plane* planes, int count) {
     if (d[std::size_t(k)] == Vec3::Zero()) continue;
 
     Side sides[Polygon::capacity];
-    // mutant: classify_rounded_points
+    // mutant classify_rounded_points (step 6, "rounded cut point"):
+    //   `sides[i] = side_of(polygon.corner[std::size_t(i)].w.dot(d[std::size_t(k)]));`
+    //   -> `sides[i] = side_of(plane.value(blend(polygon.corner[std::size_t(i)], t.v0, t.v1, t.v2)));`
     for (int i = 0; i < polygon.size; ++i) sides[i] = side_of(polygon.corner[std::size_t(i)].w.dot(d[std::size_t(k)]));
     Polygon next;
     for (int i = 0; i < polygon.size; ++i) {
-      // mutant: closing_side_not_cut
+      // A step 2 written from the four configurations, and a polygon loop for step 4 that
+      // walks the sides i -> i + 1 only: the closing side is cut by the first plane alone.
+      // mutant closing_side_not_cut (step 4, "closing side"):
+      //   `(i + 1) % polygon.size`
+      //   -> `k == 0 || i + 1 < polygon.size ? (i + 1) % polygon.size : i`
       const int j = (i + 1) % polygon.size;
       Corner p = polygon.corner[std::size_t(i)];
       if (sides[i] == Side::on) p.planes |= 1u << k;  // the polygon may now have a side along plane k
-      // mutant: strict_keep
+      // mutant strict_keep (step 2, "closed", "value 0 is in"): `!= Side::out` -> `== Side::in`
       if (sides[i] != Side::out) next.add(p);
       if ((sides[i] == Side::in && sides[j] == Side::out) || (sides[i] == Side::out && sides[j] == Side::in)) {
         const Corner c = cut(p, polygon.corner[std::size_t(j)], k, d);
@@ -158,7 +168,7 @@ std::vector<Triangle> fan(const Polygon& polygon, const Triangle& t) {
   Vec3 previous = point(1);
   for (int i = 2; i < polygon.size; ++i) {
     const Vec3 current = point(i);
-    // mutant: winding_lost
+    // mutant winding_lost (step 2, "wind like the input"): `previous, current` -> `current, previous`
     out.push_back({first, previous, current});
     previous = current;
   }
@@ -170,7 +180,9 @@ std::vector<Triangle> fan(const Polygon& polygon, const Triangle& t) {
 double signed_distance(const Plane& plane, const Vec3& x) {
   require_plane(plane, "signed_distance", "plane");
   require_finite("signed_distance", "x", x);
-  // mutant: distance_not_normalized
+  // mutant distance_not_normalized (step 1, "divide by |n|"):
+  //   `return plane.value(x) / plane.normal.norm();`
+  //   -> `return plane.value(x);`
   return plane.value(x) / plane.normal.norm();
 }
 
@@ -209,11 +221,15 @@ Frustum frustum_from_camera(const Camera& camera) {
   const Vec3 f = camera.forward.normalized();
   const Vec3 r = f.cross(camera.up).normalized();
   const Vec3 u = r.cross(f);
-  // mutant: full_angle_tangent
+  // mutant full_angle_tangent (step 3, "full angle", "fov_y / 2"):
+  //   `const double ty = std::tan(camera.fov_y / 2);`
+  //   -> `const double ty = std::tan(camera.fov_y);`
   const double ty = std::tan(camera.fov_y / 2);
   const double tx = camera.aspect * ty;
   const auto through = [](const Vec3& normal, const Vec3& point) {
-    // mutant: outward_normals
+    // mutant outward_normals (step 3, "point into the frustum"):
+    //   `n = normal.normalized()`
+    //   -> `n = -normal.normalized()`
     const Vec3 n = normal.normalized();
     return Plane{n, -n.dot(point)};
   };
@@ -235,13 +251,15 @@ Frustum frustum_from_matrix(const Mat4& view_projection) {
   static const char* names[6] = {"left r3 + r0", "right r3 - r0", "bottom r3 + r1",
                                  "top r3 - r1",  "near r3 + r2",  "far r3 - r2"};
   const auto plane = [&](int row, double sign) {
-    // mutant: columns_not_rows
+    // mutant columns_not_rows (step 3, "rows"):
+    //   `(view_projection.row(3) + sign * view_projection.row(row)).transpose()`
+    //   -> `view_projection.col(3) + sign * view_projection.col(row)`
     const Vec4 c = (view_projection.row(3) + sign * view_projection.row(row)).transpose();
     const double length = c.head<3>().norm();
     require(length > 0, "frustum_from_matrix",
             std::string("view_projection: the ") + names[2 * row + (sign < 0)] + " plane's normal (a, b, c)",
             "be non-zero", Vec3(c.head<3>()));
-    // mutant: matrix_planes_not_normalized
+    // mutant matrix_planes_not_normalized (step 3, "unit length"): `/ length, c[3] / length` -> `, c[3]`
     return Plane{c.head<3>() / length, c[3] / length};
   };
   Frustum frustum;
@@ -257,7 +275,7 @@ Frustum frustum_from_matrix(const Mat4& view_projection) {
 std::vector<Triangle> clip_triangle(const Triangle& triangle, const Frustum& frustum) {
   require_valid("clip_triangle", "triangle", triangle);
   require_frustum(frustum, "clip_triangle");
-  // mutant: side_planes_only
+  // mutant side_planes_only (step 4, "all six planes"): `data(), 6` -> `data(), 4`
   return fan(clip_polygon(triangle, frustum.planes.data(), 6), triangle);
 }
 
@@ -295,7 +313,22 @@ ClippedMesh clip_mesh(const ColoredMesh& in, const Frustum& frustum) {
       }
       index[i] = int(out.mesh.vertices.size());
       out.mesh.vertices.push_back(blend(c, t.v0, t.v1, t.v2));
-      // mutants: colour_from_wrong_vertices, colour_t_from_wrong_end, new_vertex_without_colour
+      // mutant colour_from_wrong_vertices (step 5, "same t", "same vertices"):
+      //   `out.colors.push_back( blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])],
+      //     in.colors[std::size_t(face[2])]));`
+      //   -> `out.colors.push_back(blend(c, in.colors[std::size_t(face[1])], in.colors[std::size_t(face[2])],
+      //     in.colors[std::size_t(face[0])]));`
+      // c_b + t (c_a - c_b): the colour's t measured from the other end of the edge.
+      // mutant colour_t_from_wrong_end (step 5, "same t", "other end"):
+      //   `out.colors.push_back( blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])],
+      //     in.colors[std::size_t(face[2])]));`
+      //   -> `Corner mirrored = c; if (c.edges) { const int a = c.edges & 1u ? 0 : (c.edges & 2u ? 1 : 2);
+      //     std::swap(mirrored.w[a], mirrored.w[(a + 1) % 3]); } out.colors.push_back(blend(mirrored,
+      //     in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])], in.colors[std::size_t(face[2])]));`
+      // mutant new_vertex_without_colour (step 5, "every vertex needs a colour"):
+      //   `out.colors.push_back( blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])],
+      //     in.colors[std::size_t(face[2])]));`
+      //   -> ``
       out.colors.push_back(
           blend(c, in.colors[std::size_t(face[0])], in.colors[std::size_t(face[1])], in.colors[std::size_t(face[2])]));
     }

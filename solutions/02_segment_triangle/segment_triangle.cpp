@@ -243,11 +243,13 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
   const Vec3 a_to_v = s.a - tri.v0, b_to_v = s.b - tri.v0;
   const double d_a = a_to_v.dot(n);  // (a - v0) . n
   const double d_b = b_to_v.dot(n);  // (b - v0) . n
-  // mutant: magic_epsilon
+  // mutant magic_epsilon (step 4, "same side"):
+  //   `0 && d_b > 0) || (d_a < 0 && d_b < 0`
+  //   -> `1e-9 && d_b > 1e-9) || (d_a < -1e-9 && d_b < -1e-9`
   if ((d_a > 0 && d_b > 0) || (d_a < 0 && d_b < 0)) return {};  // both ends strictly on one side
-  // mutant: fuzzy_zero_area
+  // mutant fuzzy_zero_area (step 4, "zero area"): `n == Vec3::Zero` -> `input_tri.normal().isZero`
   if (n == Vec3::Zero()) return {};  // zero area: no plane, never hit
-  // mutant: coplanar_is_a_miss
+  // mutant coplanar_is_a_miss (step 8, "in the plane"): `decide_coplanar(s, tri, n)` -> `{}`
   if (d_a == 0 && d_b == 0) return decide_coplanar(s, tri, n);
 
   // A segment in the plane up to rounding: its volumes below are noise, in 2D.
@@ -272,7 +274,9 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
     return {true, t, n, Vec3::Zero()};
   }
 
-  // mutant: crossing_point_edge_tests
+  // mutant crossing_point_edge_tests (step 8, "boundary"):
+  //   `const double side = d_a > d_b ? 1.0 : -1.0;`
+  //   -> `if (!point_in_triangle_edges(s.point(d_a / (d_a - d_b)), tri)) return {}; const double side = 0;`
   const double side = d_a > d_b ? 1.0 : -1.0;
   const Vec3 m = direction.cross(p0);
   const double v0 = m.dot(p1);
@@ -287,7 +291,9 @@ Decision decide(const Segment& input, const Triangle& input_tri) {
   // good to 1e-11 while the sum is at least 1e-5 |b - a| |p|^2; a segment closer to
   // parallel than that leaves the weights to be measured on the point.
   const bool steep = sum * sum >= 1e-10 * direction.squaredNorm() * reach * reach;
-  // mutant: weights_on_wrong_vertices
+  // Each volume V_i taken as the weight of v_i, the start of its edge; it weighs the
+  // vertex facing that edge (V_1 weighs v0, V_2 v1, V_0 v2): the weights turn one place.
+  // mutant weights_on_wrong_vertices (step 4, "weights of v0, v1, v2", "another order"): `v1, v2, v0` -> `v0, v1, v2`
   return {true, d_a / (d_a - d_b), n, steep ? Vec3(Vec3(v1, v2, v0) / sum) : Vec3(Vec3::Zero())};
 }
 
@@ -305,7 +311,9 @@ SegmentTriangleHit hit_from(const Decision& d, const Segment& s, const Triangle&
     const Barycentric b = barycentric(h.point, tri);
     h.barycentric = Vec3(1 - b.alpha - b.beta, b.alpha, b.beta);
   }
-  // mutant: normal_toward_a
+  // mutant normal_toward_a (step 4, "as wound"):
+  //   `h.normal = d.n.normalized();`
+  //   -> `h.normal = d.n.normalized(); if ((s.a - tri.v0).dot(h.normal) < 0) h.normal = -h.normal;`
   h.normal = d.n.normalized();
   return h;
 }
@@ -379,7 +387,10 @@ PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
   const Vec3 unit = n / length;
   PlaneCrossing c;
   const double d_a = (s.a - tri.v0).dot(unit), d_b = (s.b - tri.v0).dot(unit);
-  // mutant: distance_not_normalized
+  // mutant distance_not_normalized (step 1, "distance", "unit"):
+  //   `c.d_a = scale.out(d_a); c.d_b = scale.out(d_b);`
+  //   -> `c.d_a = (segment.a - triangle.v0).dot(triangle.normal()); c.d_b = (segment.b -
+  //     triangle.v0).dot(triangle.normal());`
   c.d_a = scale.out(d_a);
   c.d_b = scale.out(d_b);
   // Both ends strictly on one side: no crossing. Both on the plane: no single point.
@@ -387,7 +398,7 @@ PlaneCrossing segment_plane(const Segment& segment, const Triangle& triangle) {
   if (d_a == 0 && d_b == 0) return c;
   c.crosses = true;
   // d_a and d_b have opposite signs (or one is 0): d_a - d_b never cancels.
-  // mutant: crossing_t_sign
+  // mutant crossing_t_sign (step 1, "d_a / (d_a - d_b)", "denominator"): `d_a / (d_a - d_b` -> `d_a / (d_b - d_a`
   c.t = d_a / (d_a - d_b);
   c.point = (d_a * segment.b - d_b * segment.a) / (d_a - d_b);
   return c;
@@ -405,7 +416,7 @@ bool point_in_triangle_edges(const Vec3& point, const Triangle& input) {
     const Vec3& from = triangle[i];
     const Vec3& to = triangle[(i + 1) % 3];
     // n x (to - from) lies in the plane and points into the triangle.
-    // mutant: strict_edge_test
+    // mutant strict_edge_test (step 2, "closed"): `<` -> `<=`
     if ((x - from).dot(n.cross(to - from)) < 0) return false;  // strictly outside edge i
   }
   return true;
@@ -432,7 +443,9 @@ Barycentric barycentric(const Vec3& point, const Triangle& input) {
   // misses p by the rounding times the aspect ratio. Projecting what alpha leaves onto
   // e2 instead keeps that residual at the rounding of p itself, however thin the
   // triangle (the weights still describe x, which is what they are for).
-  // mutant: beta_sign
+  // mutant beta_sign (step 3, "beta", "sign"):
+  //   `b.beta = (p - b.alpha * e1).dot(e2) / e2.squaredNorm();`
+  //   -> `b.beta = cross(p, e1) / cross(e1, e2);`
   b.beta = (p - b.alpha * e1).dot(e2) / e2.squaredNorm();
   return b;
 }
@@ -477,7 +490,7 @@ MeshHit first_hit(const Segment& segment, const Mesh& mesh) {
   for (std::size_t i = 0; i < mesh.size(); ++i) {
     const Triangle tri = mesh.triangle(i);
     const Decision d = decide(segment, tri);
-    // mutant: first_found_not_nearest
+    // mutant first_found_not_nearest (step 5, "smallest t"): `(best.hit && d.t >= best.t)` -> `best.hit`
     if (!d.hit || (best.hit && d.t >= best.t)) continue;  // a miss, or not nearer
     best = mesh_hit_from(hit_from(d, segment, tri), int(i));
   }
@@ -502,9 +515,14 @@ std::vector<MeshHit> all_hits(const Segment& segment, const Mesh& mesh) {
     if (d.hit) hits.push_back(mesh_hit_from(hit_from(d, segment, tri), int(i)));
   }
   std::sort(hits.begin(), hits.end(),
-            // mutant: hits_unsorted
+            // mutant hits_unsorted (step 5, "sorted by t"):
+            //   `return x.t != y.t ? x.t < y.t : x.triangle < y.triangle;`
+            //   -> `return x.triangle < y.triangle;`
             [](const MeshHit& x, const MeshHit& y) { return x.t != y.t ? x.t < y.t : x.triangle < y.triangle; });
-  // mutant: all_hits_drops_equal_t
+  // mutant all_hits_drops_equal_t (step 5, "missing", "same t"):
+  //   `return hits; }`
+  //   -> `hits.erase(std::unique(hits.begin(), hits.end(), [](const MeshHit& x, const MeshHit& y) { return x.t == y.t;
+  //     }), hits.end()); return hits; }`
   return hits;
 }
 
@@ -517,12 +535,16 @@ MeshHit first_hit_moving(const Segment& segment, const Mesh& mesh, const RigidTr
   require_valid("first_hit_moving", "mesh", mesh);
   require_rigid("first_hit_moving", "m0", m0);
   require_rigid("first_hit_moving", "m1", m1);
-  // mutant: moving_one_frame
+  // mutant moving_one_frame (step 6, "m1^-1 b"): `m1.inverse()` -> `m0.inverse()`
   const Segment local{m0.inverse() * segment.a, m1.inverse() * segment.b};
   MeshHit hit = first_hit(local, mesh);
   if (!hit.hit) return hit;
   hit.point = m1 * hit.point;
-  // mutant: normal_moved_like_a_point
+  // The normal carried to the world like a point, by m1's rotation and translation:
+  // a normal is a direction, turned by the rotation only.
+  // mutant normal_moved_like_a_point (step 6, "rotation only", "no translation"):
+  //   `hit.normal = m1.linear() * hit.normal;`
+  //   -> `hit.normal = m1 * hit.normal;`
   hit.normal = m1.linear() * hit.normal;
   return hit;
 }
@@ -535,7 +557,11 @@ namespace {
 // turned to point from B toward A, against A's motion d as seen from B (d . n <= 0).
 Vec3 facing(const Vec3& n, const Vec3& d) {
   const Vec3 unit = n.normalized();
-  // mutant: contact_normal_unturned
+  // The normal left as the cross product happens to point: half the time from A toward B,
+  // so a response would push the meshes into each other.
+  // mutant contact_normal_unturned (step 7, "from B toward A", "d . normal <= 0"):
+  //   `return unit.dot(d) > 0 ? Vec3(-unit) : unit;`
+  //   -> `return unit;`
   return unit.dot(d) > 0 ? Vec3(-unit) : unit;
 }
 
@@ -555,7 +581,13 @@ Vec3 edge_pair_normal(const Vec3& e, const Vec3& f, const Vec3& d) {
 struct Earliest {
   MeshContact best;
   void offer(double t, const Vec3& point_in_frame, const Vec3& frame_velocity, const Vec3& normal) {
-    // mutants: last_contact, frame_end_excluded
+    // mutant last_contact (step 7, "first contact"): `>=` -> `<=`
+    // The frame taken as half-open, [0, 1): a contact exactly at its end is dropped,
+    // as if the next frame would see it (it starts with the meshes touching, which no
+    // frame then reports).
+    // mutant frame_end_excluded (step 9, "first touch", "t = 1"):
+    //   `best.hit && t >= best.t`
+    //   -> `t >= 1 || (best.hit && t >= best.t)`
     if (best.hit && t >= best.t) return;  // not earlier
     best = {true, t, point_in_frame + t * frame_velocity, normal};
   }
@@ -571,7 +603,9 @@ MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, c
   require_valid("first_contact_moving_meshes", "b", b);
   require_finite("first_contact_moving_meshes", "velocity_a", velocity_a);
   require_finite("first_contact_moving_meshes", "velocity_b", velocity_b);
-  // mutant: absolute_motion
+  // mutant absolute_motion (step 7, "relative motion"):
+  //   `const Vec3 d = velocity_a - velocity_b;`
+  //   -> `const Vec3 d = velocity_a;`
   const Vec3 d = velocity_a - velocity_b;  // relative, never absolute: B moves too
   Earliest earliest;
   // 1. A vertex p of A travels p -> p + d past B's faces; the point is in B's frame.
@@ -581,7 +615,7 @@ MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, c
       if (h.hit) earliest.offer(h.t, p + h.t * d, velocity_b, facing(b.triangle(k).normal(), d));
     }
   // 2. Seen from A, B moves by -d: B's vertices against A's faces (the other delta matrix).
-  // mutant: one_delta_matrix
+  // mutant one_delta_matrix (step 7, "vertex", "of B", "other delta matrix"): `b.vertices` -> `std::vector<Vec3>{}`
   for (const Vec3& q : b.vertices)
     for (std::size_t k = 0; k < a.size(); ++k) {
       const Decision h = decide({q, q - d}, a.triangle(k));
@@ -592,14 +626,18 @@ MeshContact first_contact_moving_meshes(const Mesh& a, const Vec3& velocity_a, c
   //    point w0 p0 + w1 p1 + w2 (p1 + d) is reached at t = w2 (the weight of the moved
   //    corner); on the second triangle (p0, p1 + d, p0 + d) at t = w1 + w2.
   const auto edges_b = b.edges();
-  // mutant: vertex_face_only
+  // mutant vertex_face_only (step 7, "edge-edge"): `a.edges()` -> `std::vector<std::array<int, 2>>{}`
   for (const auto& [i, j] : a.edges()) {
     const Vec3& p0 = a.vertices[std::size_t(i)];
     const Vec3& p1 = a.vertices[std::size_t(j)];
     const Triangle first{p0, p1, p1 + d}, second{p0, p1 + d, p0 + d};
     for (const auto& [k, l] : edges_b) {
       const Segment edge{b.vertices[std::size_t(k)], b.vertices[std::size_t(l)]};
-      // mutant: edge_contact_normal_along_motion
+      // The classic shortcut: two edges' contact normal taken as the motion's direction. Only
+      // e x f is normal to both edges; the motion crosses them at any angle.
+      // mutant edge_contact_normal_along_motion (step 7, "(e x f) / |e x f|"):
+      //   `const Vec3 normal = edge_pair_normal(p1 - p0, edge.b - edge.a, d);`
+      //   -> `const Vec3 normal = -d.normalized();`
       const Vec3 normal = edge_pair_normal(p1 - p0, edge.b - edge.a, d);
       const SegmentTriangleHit h1 = hit_from(decide(edge, first), edge, first);
       if (h1.hit) earliest.offer(std::clamp(h1.barycentric[2], 0.0, 1.0), h1.point, velocity_b, normal);

@@ -75,7 +75,11 @@ struct Pair {
 
   Pair(const Box& box_a, const Box& box_b, const Vec3& velocity)
       : R(box_a.axes.transpose() * box_b.axes),
-        // mutant: offset_not_in_a_frame
+        // The centres' offset c_B - c_A left in world coordinates while R and the radii are
+        // in A's frame: it must be expressed in A's frame too, t = A^T (c_B - c_A).
+        // mutant offset_not_in_a_frame (step 2, "projections", "A's frame"):
+        //   `t(box_a.axes.transpose() * (box_b.center - box_a.center)),`
+        //   -> `t(box_b.center - box_a.center),`
         t(box_a.axes.transpose() * (box_b.center - box_a.center)),
         w(box_a.axes.transpose() * velocity),
         a(box_a.half_extents),
@@ -93,7 +97,10 @@ struct Pair {
     AxisTest x;
     x.s = t[i];
     x.ds = w[i];
-    // mutant: epsilon_guard
+    // mutant epsilon_guard (step 2, "separating axis", "epsilon"):
+    //   `x.r = a[i] + b[0] * std::abs(R(i, 0)) + b[1] * std::abs(R(i, 1)) + b[2] * std::abs(R(i, 2));`
+    //   -> `x.r = a[i] + b[0] * (std::abs(R(i, 0)) + 1e-6) + b[1] * (std::abs(R(i, 1)) + 1e-6) + b[2] * (std::abs(R(i,
+    //     2)) + 1e-6);`
     x.r = a[i] + b[0] * std::abs(R(i, 0)) + b[1] * std::abs(R(i, 1)) + b[2] * std::abs(R(i, 2));
     x.local = Vec3::Unit(i);
     return x;
@@ -127,7 +134,9 @@ struct Pair {
     AxisTest x;
     x.s = t[l] * R(k, j) - t[k] * R(l, j);
     x.ds = w[l] * R(k, j) - w[k] * R(l, j);
-    // mutant: textbook_radius
+    // mutant textbook_radius (step 2, "nearly parallel"):
+    //   `C(i, n)) + b[n] * std::abs(C`
+    //   -> `R(i, n)) + b[n] * std::abs(R`
     x.r = a[k] * std::abs(R(l, j)) + a[l] * std::abs(R(k, j)) + b[m] * std::abs(C(i, n)) + b[n] * std::abs(C(i, m));
     x.length2 = R(k, j) * R(k, j) + R(l, j) * R(l, j);
     x.local[i] = 0.0;
@@ -144,7 +153,12 @@ struct Pair {
 };
 
 // The strict test: touching projections (|s| == r) do not separate.
-// mutants: touching_boxes_separate, touching_faces_apart
+// mutant touching_boxes_separate (step 2, "nearly parallel", "zero axis"): `>` -> `>=`
+// >= for >, with the usual guard that skips short axes (so that parallel edges, a zero
+// axis, no longer give it away): only exactly touching boxes show it.
+// mutant touching_faces_apart (step 6, "only touch", "strict"):
+//   `std::abs(x.s) >`
+//   -> `x.length2 > 1e-20 && std::abs(x.s) >=`
 bool separates(const AxisTest& x) { return std::abs(x.s) > x.r; }
 
 // The unit axis in the world, pointing from A toward B, and the depth along it.
@@ -152,9 +166,11 @@ void describe_axis(BoxContact& c, const AxisTest& x, int index, const Box& a) {
   const double length = std::sqrt(x.length2);
   c.axis_index = index;
   c.axis = a.axes * x.local / length;
-  // mutant: axis_not_toward_b
+  // mutant axis_not_toward_b (step 3, "from A toward B"): `if (x.s < 0) c.axis = -c.axis;` -> ``
   if (x.s < 0) c.axis = -c.axis;
-  // mutant: depth_not_normalized
+  // mutant depth_not_normalized (step 3, "unit axis", "divide by |L|"):
+  //   `(x.r - std::abs(x.s)) / length`
+  //   -> `x.r - std::abs(x.s)`
   c.depth = (x.r - std::abs(x.s)) / length;
 }
 
@@ -166,7 +182,9 @@ Projection project_box(const Box& box, const Vec3& axis) {
   Projection p;
   p.center = box.center.dot(axis);
   // The corner farthest along L takes, on each box axis, the side where A_k . L >= 0.
-  // mutant: radius_without_abs
+  // mutant radius_without_abs (step 1, "absolute value"):
+  //   `std::abs(box.axes.col(k).dot(axis)`
+  //   -> `box.axes.col(k).dot(axis`
   for (int k = 0; k < 3; ++k) p.radius += box.half_extents[k] * std::abs(box.axes.col(k).dot(axis));
   return p;
 }
@@ -177,7 +195,7 @@ bool separated_on_axis(const Box& a, const Box& b, const Vec3& axis) {
   require_finite("separated_on_axis", "axis", axis);
   const double s = (b.center - a.center).dot(axis);
   const double r = project_box(a, axis).radius + project_box(b, axis).radius;
-  // mutant: touching_intervals_separate
+  // mutant touching_intervals_separate (step 1, "touching", "strict"): `> r` -> `>= r`
   return std::abs(s) > r;  // a zero axis gives 0 > 0: never separated
 }
 
@@ -186,10 +204,13 @@ Vec3 box_axis(const Box& a, const Box& b, int index) {
   require_valid("box_axis", "b", b);
   require(index >= 0 && index <= 14, "box_axis", "index", "be 0 to 14", index);
   if (index < 3) return a.axes.col(index);
-  // mutant: b_axis_from_a_row
+  // B's face axis read as a row of its rotation matrix: its axes are the columns.
+  // mutant b_axis_from_a_row (step 2, "B's column"): `b.axes.col(index - 3)` -> `b.axes.row(index - 3).transpose()`
   if (index < 6) return b.axes.col(index - 3);
   const int i = (index - 6) / 3, j = (index - 6) % 3;
-  // mutant: edge_axis_normalized
+  // mutant edge_axis_normalized (step 2, "not normalised"):
+  //   `cross(b.axes.col(j))`
+  //   -> `cross(b.axes.col(j)).normalized()`
   return a.axes.col(i).cross(b.axes.col(j));
 }
 
@@ -202,7 +223,10 @@ bool test_boxes(const Box& a, const Box& b) {
     if (separates(p.face_a(i))) return false;
   for (int j = 0; j < 3; ++j)
     if (separates(p.face_b(j))) return false;
-  // mutant: face_axes_only
+  // mutant face_axes_only (step 2, "separating axis", "edge axes"):
+  //   `p.cofactors(); for (int i = 0; i < 3; ++i) for (int j = 0; j < 3; ++j) if (separates(p.edge_axis(i, j))) return
+  //     false;`
+  //   -> ``
   p.cofactors();
   for (int i = 0; i < 3; ++i)
     for (int j = 0; j < 3; ++j)
@@ -227,7 +251,7 @@ BoxContact find_boxes(const Box& a, const Box& b) {
     }
     if (x.length2 < kShortAxis2) continue;  // nearly parallel edges: direction too uncertain
     const double depth = (x.r - std::abs(x.s)) / std::sqrt(x.length2);
-    // mutant: deepest_axis
+    // mutant deepest_axis (step 3, "least penetration"): `depth <` -> `depth >`
     if (contact.axis_index < 0 || depth < least) {
       least = depth;
       describe_axis(contact, x, index, a);
@@ -253,13 +277,16 @@ namespace {
 // volumes of t's vertices against that plane, all non-zero and not all of one sign.
 std::pair<double, double> interval_on_line(const Triangle& t, const double d[3], int k) {
   // p: the vertex whose side the other two do not share.
-  // mutant: ratio_from_wrong_vertex
+  // mutant ratio_from_wrong_vertex (step 4, "alone on its side"): `1 : 0` -> `0 : 1`
   const int p = (d[0] > 0) == (d[1] > 0) ? 2 : ((d[0] > 0) == (d[2] > 0) ? 1 : 0);
   const int q = next(p), r = after_next(p);
   // Similar triangles: the crossing splits edge p q in the ratio d_p : -d_q.
   const double end_q = t[p][k] + (t[q][k] - t[p][k]) * (d[p] / (d[p] - d[q]));
   const double end_r = t[p][k] + (t[r][k] - t[p][k]) * (d[p] / (d[p] - d[r]));
-  // mutant: intervals_not_sorted
+  // The lecture's interval method (triangles_by_intervals).
+  // mutant intervals_not_sorted (step 4, "sort", "low <= high"):
+  //   `return {std::min(end_q, end_r), std::max(end_q, end_r)};`
+  //   -> `return {end_q, end_r};`
   return {std::min(end_q, end_r), std::max(end_q, end_r)};  // the ends come in either order
 }
 
@@ -284,7 +311,9 @@ LineIntervals triangles_by_intervals(const Triangle& t0, const Triangle& t1) {
   const Vec3 m = t0.normal().cross(t1.normal()).cwiseAbs();          // |D_k|, D = n0 x n1
   // The coordinate that varies most along the line (never one where D_k = 0, which
   // would read every point of the line as the same number).
-  // mutant: line_on_smallest_coordinate
+  // mutant line_on_smallest_coordinate (step 4, "largest"):
+  //   `out.axis = m.x() >= m.y() && m.x() >= m.z() ? 0 : (m.y() >= m.z() ? 1 : 2);`
+  //   -> `out.axis = m.x() <= m.y() && m.x() <= m.z() ? 0 : (m.y() <= m.z() ? 1 : 2);`
   out.axis = m.x() >= m.y() && m.x() >= m.z() ? 0 : (m.y() >= m.z() ? 1 : 2);
   out.crossing = true;
   std::tie(out.low0, out.high0) = interval_on_line(t0, d0, out.axis);
@@ -357,12 +386,16 @@ struct Sides {
 };
 
 Sides sides(const Triangle& t, const Triangle& of) {
-  // mutant: needle_normal_at_any_vertex
+  // mutant needle_normal_at_any_vertex (step 4, "needle", "shortest edges"):
+  //   `const Plane3 plane = plane_of(t);`
+  //   -> `const Plane3 plane{t.v0, t.normal(), (t.v1 - t.v0).norm() * (t.v2 - t.v0).norm()};`
   const Plane3 plane = plane_of(t);
   Sides s;
   for (int i = 0; i < 3; ++i) {
     const double d = (of[i] - plane.at).dot(plane.n);
-    // mutant: coplanar_only_when_exactly_zero
+    // mutant coplanar_only_when_exactly_zero (step 4, "coplanar up to rounding"):
+    //   `const bool in_plane = std::abs(d) <= 4e-15 * (of[i] - plane.at).norm() * plane.edges;`
+    //   -> `const bool in_plane = d == 0;`
     const bool in_plane = std::abs(d) <= 4e-15 * (of[i] - plane.at).norm() * plane.edges;
     s.sign[i] = in_plane ? 0 : sign(d);
   }
@@ -425,7 +458,9 @@ bool test_triangles(const Triangle& t0, const Triangle& t1) {
   if (one_side(s1)) return false;  // T1 lies strictly on one side of T0's plane
   const Sides s0 = sides(t1, t0);  // T0's vertices against T1's plane
   if (one_side(s0)) return false;
-  // mutant: coplanar_is_a_miss
+  // mutant coplanar_is_a_miss (step 4, "coplanar", "overlap in their plane"):
+  //   `coplanar_triangles_intersect(t0, t1)`
+  //   -> `false`
   if (s1.coplanar || s0.coplanar) return coplanar_triangles_intersect(t0, t1);
   Triangle a = t0, b = t1;
   const bool flip_b = canonical(a, s0);  // a's vertex 0 above b's plane
@@ -433,7 +468,9 @@ bool test_triangles(const Triangle& t0, const Triangle& t1) {
   if (flip_b) std::swap(b.v1, b.v2);  // swapping b's q and r flips b's plane
   if (flip_a) std::swap(a.v1, a.v2);
   // The two segments on L overlap: T1's starts before T0's ends, and ends after it starts.
-  // mutant: interval_ends_strict
+  // mutant interval_ends_strict (step 4, "touch"):
+  //   `return orient(a.v0, a.v1, b.v0, b.v1) <= 0 && orient(a.v0, a.v2, b.v2, b.v0) <= 0;`
+  //   -> `return orient(a.v0, a.v1, b.v0, b.v1) < 0 && orient(a.v0, a.v2, b.v2, b.v0) < 0;`
   return orient(a.v0, a.v1, b.v0, b.v1) <= 0 && orient(a.v0, a.v2, b.v2, b.v0) <= 0;
 }
 
@@ -458,14 +495,18 @@ ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Bo
     // No motion along this axis, or less over the whole duration than the rounding of s
     // and r (then the times below would be rounding noise): a static test.
     const double noise = 4e-15 * size * std::sqrt(x.length2);
-    // mutant: times_from_rounding_noise
+    // mutant times_from_rounding_noise (step 5, "rounding noise"): `std::abs(x.ds) * duration <= noise` -> `x.ds == 0`
     if (std::abs(x.ds) * duration <= noise) {
-      // mutant: sliding_contact_apart
+      // An axis along which B does not move tested with >= for >: boxes sliding along
+      // each other while touching come out apart for the whole frame.
+      // mutant sliding_contact_apart (step 7, "does not move", "strictly"):
+      //   `separates(x)`
+      //   -> `x.length2 > 0 && std::abs(x.s) >= x.r`
       if (separates(x)) return {};  // apart on this axis at every time: never
       continue;                     // overlapping on it at every time: no constraint
     }
     double enter = (-x.r - x.s) / x.ds, leave = (x.r - x.s) / x.ds;
-    // mutant: enter_leave_not_swapped
+    // mutant enter_leave_not_swapped (step 5, "entering time"): `if (x.ds < 0) std::swap(enter, leave);` -> ``
     if (x.ds < 0) std::swap(enter, leave);
     const double error = noise / std::abs(x.ds) + 4e-15 * std::max(std::abs(enter), std::abs(leave));
     if (enter > first) first = enter, first_error = error;
@@ -481,7 +522,9 @@ ContactInterval find_moving_boxes(const Box& a, const Vec3& velocity_a, const Bo
     // through each other touch for a single instant, the enter time of one axis equal
     // to the leave time of another, and rounding may put the two in either order. A
     // wider gap between them than their errors: they never touch.
-    // mutant: an_instant_is_no_contact
+    // mutant an_instant_is_no_contact (step 5, "single instant"):
+    //   `if (first - last > first_error + last_error) return {};`
+    //   -> `return {};`
     if (first - last > first_error + last_error) return {};
     // The instant is the better known of the two times: the one from the axis along which
     // B moves faster. At it the slower axis is off by only its rounding (|ds| times its
@@ -512,7 +555,8 @@ bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const
     const double s = p.t[k] * p.w[l] - p.t[l] * p.w[k];
     double r = p.a[k] * std::abs(p.w[l]) + p.a[l] * std::abs(p.w[k]);
     for (int m = 0; m < 3; ++m) r += p.b[m] * std::abs(p.R(k, m) * p.w[l] - p.R(l, m) * p.w[k]);
-    // mutant: no_motion_axes
+    // The motion axes left out, W x A_i and W x B_j alike (both loops).
+    // mutant no_motion_axes (step 5, "W x A_i"): `if (std::abs(s) > r) return false;` -> ``
     if (std::abs(s) > r) return false;
   }
   // W x B_j, in B's frame w_B x e_j, with w_B = R^T w and t_B = R^T t. Now B's radius
@@ -523,7 +567,7 @@ bool test_moving_boxes(const Box& a, const Vec3& velocity_a, const Box& b, const
     const double s = tb[k] * wb[l] - tb[l] * wb[k];
     double r = p.b[k] * std::abs(wb[l]) + p.b[l] * std::abs(wb[k]);
     for (int m = 0; m < 3; ++m) r += p.a[m] * std::abs(p.R(m, k) * wb[l] - p.R(m, l) * wb[k]);
-    // mutant: no_motion_axes
+    // mutant no_motion_axes (step 5, "W x A_i"): `if (std::abs(s) > r) return false;` -> ``
     if (std::abs(s) > r) return false;
   }
   return true;

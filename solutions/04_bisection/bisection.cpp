@@ -94,7 +94,7 @@ double squared_distance(const Box& box, const Vec3& p) {
   const Vec3 d = p - box.center;
   double sum = 0.0;
   for (int k = 0; k < 3; ++k) {
-    // mutant: clamp_in_world_axes
+    // mutant clamp_in_world_axes (step 1, "own axes"): `.dot(box.axes.col(k))` -> `[k]`
     const double excess = std::abs(d.dot(box.axes.col(k))) - box.half_extents[k];
     if (excess > 0) sum += excess * excess;  // outside the slab of axis k
   }
@@ -141,17 +141,20 @@ TimeOfImpact no_hit(double t1, int steps) {
 TimeOfImpact halve(const MovingPair& pair, double lo, double hi, double tolerance) {
   TimeOfImpact r;
   r.hit = true;
-  // mutants: one_halving_too_many, halves_to_zero
+  // mutant one_halving_too_many (step 2, "one halving too many", "hi - lo > tolerance"): `>` -> `>=`
+  // Halving until the bracket has no length left: two neighbouring doubles have no
+  // midpoint between them, and the loop never ends (the time-out names the bound).
+  // mutant halves_to_zero (step 2, "log2", "tolerance"): `tolerance` -> `0`
   while (hi - lo > tolerance) {
     const double mid = lo + 0.5 * (hi - lo);
     ++r.iterations;
-    // mutant: keeps_the_wrong_half
+    // mutant keeps_the_wrong_half (step 2, "half whose ends differ"): `overlap_at` -> `!overlap_at`
     if (overlap_at(pair, mid))
       hi = mid;  // the contact began at or before mid: look back
     else
       lo = mid;  // still clear at mid: look forward
   }
-  // mutant: returns_the_overlapping_end
+  // mutant returns_the_overlapping_end (step 2, "last clear time", "overlapping end"): `lo` -> `hi`
   r.t = lo;
   r.t_contact = hi;
   return r;
@@ -164,7 +167,9 @@ TimeOfImpact halve(const MovingPair& pair, double lo, double hi, double toleranc
 Sphere placed(const Sphere& sphere, const RigidTransform& pose) { return {pose * sphere.center, sphere.radius}; }
 
 Box placed(const Box& box, const RigidTransform& pose) {
-  // mutant: axes_not_turned
+  // mutant axes_not_turned (step 1, "axes", "rotation"):
+  //   `return {pose * box.center, pose.linear() * box.axes, box.half_extents};`
+  //   -> `return {pose * box.center, box.axes, box.half_extents};`
   return {pose * box.center, pose.linear() * box.axes, box.half_extents};
 }
 
@@ -174,7 +179,7 @@ bool overlap(const Sphere& a, const Sphere& b) {
   // |c_a - c_b| <= r_a + r_b, squared: both sides are non-negative, so squaring keeps
   // the order and the equality (touching) exactly.
   const double reach = a.radius + b.radius;
-  // mutant: touching_is_clear
+  // mutant touching_is_clear (step 1, "touching counts"): `<=` -> `<`
   return (a.center - b.center).squaredNorm() <= reach * reach;
 }
 
@@ -185,7 +190,11 @@ Vec3 closest_point(const Box& box, const Vec3& p) {
   Vec3 q = box.center;
   for (int k = 0; k < 3; ++k) {
     const double h = box.half_extents[k];
-    // mutant: closest_point_left_local
+    // The closest point clamped in the box's own axes and left there: its local
+    // coordinates returned, never taken back to the world (centre + sum of s_k axis_k).
+    // mutant closest_point_left_local (step 1, "taken back to the world"):
+    //   `q += std::clamp(d.dot(box.axes.col(k)), -h, h) * box.axes.col(k);`
+    //   -> `q[k] = std::clamp(d.dot(box.axes.col(k)), -h, h);`
     q += std::clamp(d.dot(box.axes.col(k)), -h, h) * box.axes.col(k);
   }
   return q;
@@ -194,7 +203,11 @@ Vec3 closest_point(const Box& box, const Vec3& p) {
 bool overlap(const Sphere& a, const Box& b) {
   require_body("overlap", "a", a);
   require_body("overlap", "b", b);
-  // mutants: touching_a_box_is_clear, magic_epsilon
+  // The header's closed sets: a strict < misses a touch (handout step 5; step 1's examples
+  // already touch a face).
+  // mutant touching_a_box_is_clear (step 1, "touching counts"): `<=` -> `<`
+  // A fuzzy 1e-9 (handout step 5): a near miss at the scale 1e-6 counts as a contact.
+  // mutant magic_epsilon (step 1, "epsilon", "clear"): `a.radius * a.radius` -> `a.radius * a.radius + 1e-9`
   return squared_distance(b, a.center) <= a.radius * a.radius;
 }
 
@@ -213,7 +226,9 @@ bool overlap_at(const MovingPair& pair, double t) {
 TimeOfImpact bisect(const MovingPair& pair, double t0, double t1, double tolerance) {
   require_pair("bisect", pair);
   require_times("bisect", t0, t1, tolerance);
-  // mutant: start_assumed_clear
+  // mutant start_assumed_clear (step 2, "already overlap at t0"):
+  //   `if (overlap_at(pair, t0)) return overlapping_at_start(t0); if (!overlap_at(pair, t1))`
+  //   -> `if (!overlap_at(pair, t1))`
   if (overlap_at(pair, t0)) return overlapping_at_start(t0);
   if (!overlap_at(pair, t1)) return no_hit(t1, 0);  // clear at both ends: nothing seen
   return halve(pair, t0, t1, tolerance);
@@ -223,7 +238,10 @@ TimeOfImpact bisect(const MovingPair& pair, double t0, double t1, double toleran
 
 double smallest_size(const Shape& shape) {
   require_body("smallest_size", "shape", shape);
-  // mutant: sphere_size_is_radius
+  // A sphere's smallest size taken as its radius: a sphere is as thin as its diameter.
+  // mutant sphere_size_is_radius (step 3, "diameter", "1/2 of the answer"):
+  //   `return 2 * shape.sphere.radius`
+  //   -> `return shape.sphere.radius`
   if (shape.kind == Shape::Kind::sphere) return 2 * shape.sphere.radius;
   return 2 * shape.box.half_extents.minCoeff();
 }
@@ -240,7 +258,7 @@ int substeps_for(double closing_speed, double step, double smallest_size) {
   if (smallest_size == 0) return 0;  // a zero size can slip between any two samples
   const double ratio = closing_speed * step / smallest_size;
   if (!(ratio < kMaxSubsteps)) return 0;  // too many sub-steps (or not a number)
-  // mutant: substeps_not_strict
+  // mutant substeps_not_strict (step 3, "strict"): `int(std::floor(ratio)) + 1` -> `std::max(1, int(std::ceil(ratio)))`
   return int(std::floor(ratio)) + 1;
 }
 
@@ -252,14 +270,14 @@ TimeOfImpact sample_then_bisect(const MovingPair& pair, double t0, double t1, in
   require(substeps >= 1, "sample_then_bisect", "substeps", "be >= 1", substeps);
   if (overlap_at(pair, t0)) return overlapping_at_start(t0);
   double previous = t0;
-  // mutant: samples_the_end_only
+  // mutant samples_the_end_only (step 3, "every sample"): `= 1` -> `= substeps`
   for (int k = 1; k <= substeps; ++k) {
     const double tk = k == substeps ? t1 : t0 + (t1 - t0) * k / substeps;
     if (!overlap_at(pair, tk)) {  // still clear: the next sub-step
       previous = tk;
       continue;
     }
-    // mutant: bisects_from_the_start
+    // mutant bisects_from_the_start (step 3, "first overlapping sub-step"): `previous` -> `t0`
     TimeOfImpact r = halve(pair, previous, tk, tolerance);
     r.steps = k;
     return r;
@@ -277,13 +295,18 @@ double closing_speed(const Sphere& a, const StandardMotion& motion_a, const Shap
   require_finite("closing_speed", "t0", t0);
   require_finite("closing_speed", "t1", t1);
   if (!(t0 <= t1)) reject("closing_speed", "t0 <= t1", "hold", "t0 = " + text(t0) + ", t1 = " + text(t1));
-  // mutant: box_reach_from_its_centre
+  // A box's reach taken as its bounding sphere's radius |h| about its own centre: the
+  // header's reach is from the body's origin, |c| + |h|, and a box set off its origin orbits.
+  // mutant box_reach_from_its_centre (step 3, "each over its reach"): `reach(b.box)` -> `b.box.half_extents.norm()`
   const double reach_b = b.kind == Shape::Kind::sphere ? reach(b.sphere) : reach(b.box);
   const double speed_a = max_speed(motion_a, reach(a), t0, t1), speed_b = max_speed(motion_b, reach_b, t0, t1);
   const char* rule = "have a finite velocity, acceleration and spin";
   if (!std::isfinite(speed_a)) reject("closing_speed", "motion_a", rule, "a speed of " + text(speed_a));
   if (!std::isfinite(speed_b)) reject("closing_speed", "motion_b", rule, "a speed of " + text(speed_b));
-  // mutant: closing_speed_of_the_fastest
+  // The lecture's "speed of the fastest object" taken literally for two moving bodies.
+  // mutant closing_speed_of_the_fastest (step 3, "relative speed", "sum"):
+  //   `speed_a + speed_b`
+  //   -> `std::max(speed_a, speed_b)`
   return speed_a + speed_b;
 }
 
@@ -295,7 +318,9 @@ double distance(const Sphere& a, const Sphere& b) {
   const double reach = a.radius + b.radius;
   const double d2 = (a.center - b.center).squaredNorm();
   if (d2 <= reach * reach) return 0.0;  // overlapping: decided as in step 1
-  // mutant: distance_between_centres
+  // mutant distance_between_centres (step 4, "centres", "radii"):
+  //   `return std::sqrt(d2) - reach;`
+  //   -> `return std::sqrt(d2);`
   return std::sqrt(d2) - reach;
 }
 
@@ -331,13 +356,16 @@ TimeOfImpact advance(const MovingPair& pair, double t0, double t1, double max_cl
   for (;;) {
     const double d = distance_at(pair, t);
     // A bound of zero: nothing moves toward anything, the whole interval is safe.
-    // mutant: advance_by_the_distance
+    // mutant advance_by_the_distance (step 4, "d / v", "time"): `? d / max_closing_speed :` -> `? d :`
     const double safe = max_closing_speed > 0 ? d / max_closing_speed : std::numeric_limits<double>::infinity();
-    // mutant: advance_without_the_floor
+    // Without the floor of one tolerance a near miss creeps forward forever (handout step 4).
+    // mutant advance_without_the_floor (step 4, "at least one tolerance"): `std::max(safe, tolerance)` -> `safe`
     const double next = std::min(t + std::max(safe, tolerance), t1);
     ++steps;
     if (overlap_at(pair, next)) {  // the contact began in (t, next]: bisection finishes
-      // mutant: advance_without_bisecting
+      // mutant advance_without_bisecting (step 4, "bisection", "tolerance"):
+      //   `TimeOfImpact r = halve(pair, t, next, tolerance);`
+      //   -> `TimeOfImpact r; r.hit = true; r.t = t; r.t_contact = next;`
       TimeOfImpact r = halve(pair, t, next, tolerance);
       r.steps = steps;
       return r;

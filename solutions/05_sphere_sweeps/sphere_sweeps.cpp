@@ -107,7 +107,12 @@ bool segment_segment_within(const Segment& s0, const Segment& s1, double r2) {
   // picks up w's long component along the lines, so it no longer measures their distance.
   // Measure the pair itself: any pair of points is at least the true distance apart, and
   // when the segments really cross at such an angle the pair found is accurate.
-  // mutant: parallel_in_floating_point
+  // Step 3 (the step 8 recipe read alone): (w . n)^2 <= R^2 |n|^2 for lines that are parallel
+  // only up to rounding, where the rounded n says nothing about their distance.
+  // mutant parallel_in_floating_point (step 3, "nearly parallel", "measure the pair"):
+  //   `if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm()) return point_segment_within(point_at(s0, s / nn), s1,
+  //     r2);`
+  //   -> ``
   if (nn < 1e-10 * d0.squaredNorm() * d1.squaredNorm()) return point_segment_within(point_at(s0, s / nn), s1, r2);
   return square(w.dot(n)) <= r2 * nn;
 }
@@ -181,7 +186,8 @@ struct PlaneApproach {
 };
 PlaneApproach approach_plane(double f0, double g, double reach, double reach2, double duration) {
   PlaneApproach a;
-  // mutant: one_sided_plane
+  // A one-sided plane: only the front side is ever approached.
+  // mutant one_sided_plane (step 4, "two-sided"): `a.side = f0 > 0 ? 1.0 : -1.0;` -> `a.side = 1.0;`
   a.side = f0 > 0 ? 1.0 : -1.0;
   // Moving away from the plane, or along it (the lecture's "T < 0"): never.
   if (a.side * g >= 0) return a;
@@ -190,7 +196,8 @@ PlaneApproach approach_plane(double f0, double g, double reach, double reach2, d
   if (end > 0 && square(end) > reach2) return a;
   a.contact = true;
   // side * f(t) falls from side * f0 to reach at t = (side f0 - reach) / (-side g).
-  // mutant: plane_later_root
+  // The later root: the time the sphere leaves the plane on the far side.
+  // mutant plane_later_root (step 4, "later root"): `f0 - reach` -> `f0 + reach`
   a.time = std::clamp((a.side * f0 - reach) / (-a.side * g), 0.0, duration);
   return a;
 }
@@ -245,11 +252,20 @@ SegmentSegmentDistance segment_segment(const Segment& first, const Segment& seco
 
   const Vec3 d0 = first.b - first.a, d1 = second.b - second.a;
   const Vec3 n = d0.cross(d1);
-  // mutant: textbook_denominator
+  // The textbook denominator a c - b^2, which cancels for nearly parallel segments
+  // (caught by the family of segments crossing at an angle of 2^-20 to 2^-27).
+  // mutant textbook_denominator (step 1, "nearly parallel", "|d0 x d1|^2"):
+  //   `n.squaredNorm(`
+  //   -> `d0.squaredNorm() * d1.squaredNorm() - square(d0.dot(d1)`
   const double nn = n.squaredNorm();
   if (nn > 0) {
     const Vec3 w = second.a - first.a;
-    // mutant: clamp_not_reproject
+    // Clamping the lines' closest pair into [0, 1]^2 instead of re-projecting an end.
+    // mutant clamp_not_reproject (step 1, "re-projected", "nearer pair"):
+    //   `const double s = w.cross(d1).dot(n) / nn, t = w.cross(d0).dot(n) / nn; if (s >= 0 && s <= 1 && t >= 0 && t <=
+    //     1) {`
+    //   -> `const double s = std::clamp(w.cross(d1).dot(n) / nn, 0.0, 1.0), t = std::clamp(w.cross(d0).dot(n) / nn,
+    //     0.0, 1.0); { consider(s, t, point_at(first, s), point_at(second, t)); if (nn > 0) return best;`
     const double s = w.cross(d1).dot(n) / nn, t = w.cross(d0).dot(n) / nn;
     if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
       // The point at s, then its projection onto the second segment. For nearly parallel
@@ -289,7 +305,10 @@ PointRectangleDistance point_rectangle(const Vec3& p, const Rectangle& rectangle
   // by clamping to the half-size. h, the height above the plane, is whatever it is.
   const Vec3 w = p - rectangle.center;
   PointRectangleDistance r;
-  // mutant: no_clamp_to_rectangle
+  // Projecting onto the plane and forgetting to clamp to the rectangle.
+  // mutant no_clamp_to_rectangle (step 2, "clamp", "half-sizes"):
+  //   `r.s = std::clamp(w.dot(rectangle.u), -rectangle.half_u, rectangle.half_u);`
+  //   -> `r.s = w.dot(rectangle.u);`
   r.s = std::clamp(w.dot(rectangle.u), -rectangle.half_u, rectangle.half_u);
   r.t = std::clamp(w.dot(rectangle.v), -rectangle.half_v, rectangle.half_v);
   r.closest = rectangle.center + r.s * rectangle.u + r.t * rectangle.v;
@@ -323,7 +342,8 @@ SegmentRectangleDistance segment_rectangle(const Segment& segment, const Rectang
     const PointRectangleDistance e = point_rectangle(p, rectangle);
     if (e.squared_distance < best.squared_distance) best = {e.squared_distance, r, e.s, e.t, p, e.closest};
   }
-  // mutant: ends_only
+  // Segment-rectangle from the ends alone, forgetting the four sides.
+  // mutant ends_only (step 2, "nearer pair", "four sides"): `i < 4` -> `i < 0`
   for (int i = 0; i < 4; ++i) {
     const SegmentSegmentDistance e = segment_segment(segment, side(rectangle, i));
     if (e.squared_distance >= best.squared_distance) continue;  // not nearer
@@ -347,7 +367,11 @@ RectangleRectangleDistance rectangle_rectangle(const Rectangle& first, const Rec
   }
   for (int i = 0; i < 4; ++i) {
     const SegmentRectangleDistance e = segment_rectangle(side(second, i), first);
-    // mutant: swapped_call_not_swapped_back
+    // rectangle_rectangle asks segment_rectangle with B's side first (B against A) and
+    // keeps its points as they come: closest0 lands on the second rectangle, closest1 on the first.
+    // mutant swapped_call_not_swapped_back (step 2, "closest0", "swapped"):
+    //   `closest1, e.closest0`
+    //   -> `closest0, e.closest1`
     if (e.squared_distance < best.squared_distance) best = {e.squared_distance, e.closest1, e.closest0};
   }
   return best;
@@ -379,7 +403,14 @@ bool test_sphere_lozenge(const Sphere& a, const Lozenge& b) {
 bool test_capsule_capsule(const Capsule& a, const Capsule& b) {
   require_valid("test_capsule_capsule", "a", a);
   require_valid("test_capsule_capsule", "b", b);
-  // mutants: sum_of_squares, decide_on_rounded_distance
+  // r0^2 + r1^2 instead of (r0 + r1)^2.
+  // mutant sum_of_squares (step 3, "(r0 + r1)^2"):
+  //   `square(a.radius + b.radius)`
+  //   -> `square(a.radius) + square(b.radius)`
+  // Deciding on the constructed (rounded) distance instead of division-free products.
+  // mutant decide_on_rounded_distance (step 9, "exact products"):
+  //   `return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));`
+  //   -> `return segment_segment(a.axis, b.axis).squared_distance <= square(a.radius + b.radius);`
   return segment_segment_within(a.axis, b.axis, square(a.radius + b.radius));
 }
 
@@ -395,7 +426,10 @@ bool test_lozenge_lozenge(const Lozenge& a, const Lozenge& b) {
   const double r2 = square(a.radius + b.radius);
   for (int i = 0; i < 4; ++i)
     if (segment_rectangle_within(side(a.rectangle, i), b.rectangle, r2)) return true;
-  // mutant: one_lozenges_sides
+  // Two lozenges by the sides of the first one only.
+  // mutant one_lozenges_sides (step 3, "the sides of both"):
+  //   `for (int i = 0; i < 4; ++i) if (segment_rectangle_within(side(b.rectangle, i), a.rectangle, r2)) return true;`
+  //   -> ``
   for (int i = 0; i < 4; ++i)
     if (segment_rectangle_within(side(b.rectangle, i), a.rectangle, r2)) return true;
   return false;
@@ -411,7 +445,19 @@ Sweep sweep_sphere_plane(const Sphere& sphere, const Vec3& velocity, const Plane
   // compare f with r |normal| rather than normalising (the normal need not be unit).
   // First the plane is rescaled by a power of two, so that n . n is a normal double. A
   // sphere touching or cutting the plane now is overlapping.
-  // mutants: unnormalised_normal, centre_reaches_plane
+  // A plane whose normal is not unit length, used as if it were.
+  // mutant unnormalised_normal (step 4, "is n unit"):
+  //   `const Plane plane = scaled(given); const double f0 = plane.value(sphere.center), g = plane.normal.dot(velocity);
+  //     const double nn = plane.normal.squaredNorm(), r = sphere.radius; if (square(f0) <= square(r) * nn) return
+  //     overlapping(); const PlaneApproach a = approach_plane(f0, g, r * std::sqrt(nn), square(r) * nn, duration);`
+  //   -> `const Plane plane = given; const double f0 = plane.value(sphere.center), g = plane.normal.dot(velocity);
+  //     const double nn = plane.normal.squaredNorm(), r = sphere.radius; if (std::abs(f0) <= r) return overlapping();
+  //     const PlaneApproach a = approach_plane(f0, g, r, square(r), duration);`
+  // The plane not offset by the radius: the time the centre reaches the plane itself,
+  // after the sphere has already cut into it.
+  // mutant centre_reaches_plane (step 4, "gap reaches 0", "centre itself reaches the plane"):
+  //   `r * std::sqrt(nn), square(r) * nn`
+  //   -> `0.0, 0.0`
   const Plane plane = scaled(given);
   const double f0 = plane.value(sphere.center), g = plane.normal.dot(velocity);
   const double nn = plane.normal.squaredNorm(), r = sphere.radius;
@@ -449,20 +495,26 @@ Sweep sweep_sphere_sphere(const Sphere& s0, const Vec3& v0, const Sphere& s1, co
   const Vec3 A = s0.center - s1.center, B = v0 - v1;
   const double R = s0.radius + s1.radius;
   const double c = A.squaredNorm() - R * R;
-  // mutant: touching_not_overlapping
+  // Touching at t = 0 not counted as overlapping (a strict comparison).
+  // mutant touching_not_overlapping (step 5, "touching", "overlapping"): `<=` -> `<`
   if (c <= 0) return overlapping();  // touching or overlapping at t = 0
   const double a = B.squaredNorm();
   if (a == 0) return {};  // no relative motion: the gap stays what it is
   const double b = A.dot(B);
-  // mutant: moving_apart_forgotten
+  // Forgetting that spheres moving apart never meet (a negative root is reported).
+  // mutant moving_apart_forgotten (step 5, "move apart"): `if (b >= 0) return {};` -> ``
   if (b >= 0) return {};  // moving apart or sideways: the gap only grows
   const double disc = a * R * R - A.cross(B).squaredNorm();
-  // mutant: graze_is_a_miss
+  // An exact graze (b^2 = ac) dismissed as a miss.
+  // mutant graze_is_a_miss (step 5, "graze"): `disc <` -> `disc <=`
   if (disc < 0) return {};  // the closest approach misses
   // The distance falls until t = -b / a. If that is after T, contact needs |A + T B| <= R.
   if (-b > a * duration && (A + duration * B).squaredNorm() > R * R) return {};  // not there yet at T
   const double q = -b + std::sqrt(disc);
-  // mutants: cancelling_root, sphere_later_root
+  // The textbook root (-b - sqrt(b^2 - ac)) / a, which cancels when contact is soon.
+  // mutant cancelling_root (step 5, "cancel"): `c / q, duration)` -> `(-b - std::sqrt(disc)) / a, duration); (void)q`
+  // The later root q / a (when the spheres part again) for the first contact.
+  // mutant sphere_later_root (step 5, "later root"): `c / q` -> `q / a`
   const double t = std::min(c / q, duration);
   // The point of contact: on the segment between the centres, r0 / R of the way.
   const Vec3 p = s0.center + t * v0, relative = A + t * B;
@@ -505,12 +557,18 @@ double first_time_cylinder(const Vec3& m, const Vec3& v, const Vec3& d, double R
   // subnormals when S is near 1e-40.
   const double disc = a * R2 - square(md.dot(v));
   if (disc < 0) return kInfinity;  // the line of motion passes the cylinder by
-  // mutant: capsule_later_root
+  // The later root of the side (when the centre leaves the grown capsule).
+  // mutant capsule_later_root (step 6, "later root"):
+  //   `const double t = c / (-b + std::sqrt(dd) * std::sqrt(disc));`
+  //   -> `const double t = (-b + std::sqrt(dd) * std::sqrt(disc)) / a;`
   const double t = c / (-b + std::sqrt(dd) * std::sqrt(disc));
   // Clip to the slab: a root beyond an end plane hits the infinite cylinder where the
   // capsule has no side; there the end sphere decides.
   const double along = (m + t * v).dot(d);
-  // mutant: unclipped_cylinder
+  // The infinite cylinder's root taken without clipping it to the slab.
+  // mutant unclipped_cylinder (step 6, "slab"):
+  //   `return along >= 0 && along <= dd ? t : kInfinity;`
+  //   -> `(void)along; return t;`
   return along >= 0 && along <= dd ? t : kInfinity;
 }
 
@@ -538,14 +596,21 @@ Sweep sweep_sphere_capsule(const Sphere& sphere, const Vec3& velocity, const Cap
   require_motion("sweep_sphere_capsule", velocity, "velocity", duration);
   require_valid("sweep_sphere_capsule", "capsule", capsule);
   const Segment& axis = capsule.axis;
-  // mutant: grown_by_one_radius
+  // The capsule grown by its own radius only (the sphere's radius forgotten).
+  // mutant grown_by_one_radius (step 6, "Minkowski"):
+  //   `const double R = sphere.radius + capsule.radius, R2 = square(R);`
+  //   -> `const double R = capsule.radius, R2 = square(R);`
   const double R = sphere.radius + capsule.radius, R2 = square(R);
   if (point_segment_within(sphere.center, axis, R2)) return overlapping();  // touching or inside now
   const Segment path{sphere.center, sphere.center + duration * velocity};
   if (!segment_segment_within(path, axis, R2)) return {};  // the swept sphere misses it
   const Vec3 d = axis.b - axis.a;
   double t = std::min({first_time_cylinder(sphere.center - axis.a, velocity, d, R2),
-                       // mutant: forgotten_caps
+                       // The grown capsule without its caps: only the side's root (and the fallback).
+                       // mutant forgotten_caps (step 6, "caps"):
+                       //   `first_time_sphere(sphere.center - axis.a, velocity, R2), first_time_sphere(sphere.center -
+                       //     axis.b, velocity, R2)});`
+                       //   -> `kInfinity});`
                        first_time_sphere(sphere.center - axis.a, velocity, R2),
                        first_time_sphere(sphere.center - axis.b, velocity, R2)});
   if (!(t <= duration)) t = segment_segment(path, axis).s * duration;  // a graze lost to rounding
@@ -568,7 +633,15 @@ Sweep sweep_box_plane(const Box& box, const Vec3& velocity, const Plane& given, 
   // every term with its own sign). Multiply through by |n|: then f and the reach are
   // compared without a square root.
   double reach = 0.0;
-  // mutants: signed_projection, box_bounding_sphere
+  // The projected radius without absolute values.
+  // mutant signed_projection (step 7, "absolute value"):
+  //   `reach += box.half_extents[i] * std::abs(plane.normal.dot(box.axes.col(i)));`
+  //   -> `reach += box.half_extents[i] * plane.normal.dot(box.axes.col(i));`
+  // A box's reach toward the plane taken as its bounding sphere's radius |h|: it
+  // meets the plane too early.
+  // mutant box_bounding_sphere (step 7, "bounding sphere"):
+  //   `for (int i = 0; i < 3; ++i) reach += box.half_extents[i] * std::abs(plane.normal.dot(box.axes.col(i)));`
+  //   -> `reach = box.half_extents.norm() * plane.normal.norm();`
   for (int i = 0; i < 3; ++i) reach += box.half_extents[i] * std::abs(plane.normal.dot(box.axes.col(i)));
   const double f0 = plane.value(box.center), g = plane.normal.dot(velocity);
   if (std::abs(f0) <= reach) return overlapping();  // resting on it or cutting it now

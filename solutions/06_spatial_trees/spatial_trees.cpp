@@ -87,7 +87,9 @@ class KdBuilder {
 
   // Appends the subtree of `cell`, which holds refs_[first, last), to the tree.
   void build(const Aabb& cell, std::size_t first, std::size_t last, int depth) {
-    // mutant: leaves_too_big
+    // The tree stops splitting at depth 2: leaves of thousands of triangles. Every
+    // answer is still right; only the count of tests gives it away.
+    // mutant leaves_too_big (step 8, "leaves too big"): `max_depth_` -> `2`
     const Split split = depth < max_depth_ ? best_split(cell, first, last) : Split{};
     if (split.axis < 0) {
       add_leaf(first, last);
@@ -102,7 +104,9 @@ class KdBuilder {
       const int i = refs_[k];
       const Aabb& box = boxes_[std::size_t(i)];
       if (box.max[axis] >= split.position) refs_.push_back(i);
-      // mutant: touching_goes_one_side
+      // A triangle that only touches the split plane from above is sent above only,
+      // though it meets the closed cell below at the plane.
+      // mutant touching_goes_one_side (step 1, "closed cell", "both sides"): `<=` -> `<`
       if (box.min[axis] <= split.position) refs_[below_last++] = i;
     }
     const std::size_t above_last = refs_.size();
@@ -202,7 +206,11 @@ Span clip(const Aabb& box, const Vec3& a, const Vec3& d) {
   Span s;
   for (int i = 0; i < 3 && !s.empty(); ++i) {
     if (d[i] == 0) {
-      // mutant: clip_wall_strict
+      // The clip to the root's box with strict comparisons: a segment lying in the
+      // plane of a wall of the root's cell is taken as outside it, and its hits are lost.
+      // mutant clip_wall_strict (step 9, "every leaf the segment meets"):
+      //   `< box.min[i] || a[i] >`
+      //   -> `<= box.min[i] || a[i] >=`
       if (a[i] < box.min[i] || a[i] > box.max[i]) return {1.0, 0.0};  // beside the slab
       continue;
     }
@@ -237,7 +245,14 @@ template <class Leaf> void front_to_back(const KdTree& tree, const Segment& s, L
       __builtin_prefetch(&tree.nodes[std::size_t(n.index)]);
       const int axis = n.axis;
       // The near child is on a's side; from the plane itself, on the side d leaves to.
-      // mutants: start_on_plane_wrong_side, in_split_plane_goes_above
+      // The near child chosen by a strict comparison alone: a segment starting exactly
+      // on a split plane is sent to the side above, whatever way it goes.
+      // mutant start_on_plane_wrong_side (step 2, "near child", "side d goes to"):
+      //   `(s.a[axis] == n.split && d[axis] <= 0)`
+      //   -> `false`
+      // A segment lying in a split plane (d[axis] = 0, a on the plane) sent to the
+      // child above: the header sends it below. Step 9's exact walk catches it too.
+      // mutant in_split_plane_goes_above (step 2, "below"): `<=` -> `<`
       const bool below_first = s.a[axis] < n.split || (s.a[axis] == n.split && d[axis] <= 0);
       const int near = below_first ? node + 1 : n.index, far = below_first ? n.index : node + 1;
       if (d[axis] == 0) {  // parallel to the plane: never crosses it
@@ -245,7 +260,11 @@ template <class Leaf> void front_to_back(const KdTree& tree, const Segment& s, L
         continue;
       }
       const double t_split = (n.split - s.a[axis]) / d[axis];
-      // mutant: far_child_behind_a
+      // The walk read without its t_split <= 0 rule: a segment moving away from the
+      // plane is sent into the far cell behind a, which it never meets.
+      // mutant far_child_behind_a (step 2, "t_split", "far child"):
+      //   `if (t_split > span.t1 || t_split <= 0) {`
+      //   -> `if (t_split > span.t1) {`
       if (t_split > span.t1 || t_split <= 0) {  // crosses after this cell, or behind a
         node = near;
       } else if (t_split < span.t0) {  // crossed before entering this cell
@@ -450,10 +469,17 @@ KdHit first_hit(const KdTree& tree, const Segment& segment) {
       best = hit_from(h, i);
     });
     // A hit within this leaf's stretch beats every later leaf; one beyond it may not.
-    // mutant: first_hit_stops_too_soon
+    // first_hit stops in the first leaf that has any hit, even one beyond the leaf's
+    // far end (a later leaf may hold a nearer one).
+    // mutant first_hit_stops_too_soon (step 2, "smallest t", "not final"): `best.t` -> `-kInfinity`
     return best.hit ? best.t : kInfinity;
   });
-  // mutant: uncounted_brute_force
+  // Counts the check keeps itself (README, "Given functions are counted by the checker"):
+  // each of these would once have scored by writing a count the verdict read.
+  // A brute force over every triangle after the walk, left out of `tests`.
+  // mutant uncounted_brute_force (step 2, "must count every call of given::segment_triangle"):
+  //   `best.tests = tests;`
+  //   -> `for (const Triangle& t : tree.triangles) given::segment_triangle(segment, t); best.tests = tests;`
   best.tests = tests;
   return best;
 }
@@ -470,7 +496,11 @@ KdHit any_hit(const KdTree& tree, const Segment& segment) {
       const given::SegmentHit h = given::segment_triangle(segment, tree.triangles[std::size_t(list[k])]);
       if (h.hit) {
         found = hit_from(h, list[k]);
-        // mutant: any_hit_walks_on
+        // any_hit walks on after its first hit, testing every triangle the walk meets
+        // (and keeping the last hit), where it should stop at the first one.
+        // mutant any_hit_walks_on (step 2, "stops at its first hit"):
+        //   `return -kInfinity;`
+        //   -> `continue;`
         return -kInfinity;  // stop the walk
       }
     }
@@ -496,7 +526,10 @@ KdHits all_hits(const KdTree& tree, const Segment& segment) {
   std::sort(out.hits.begin(), out.hits.end(),
             [](const KdHit& x, const KdHit& y) { return x.t != y.t ? x.t < y.t : x.triangle < y.triangle; });
   out.hits.erase(std::unique(out.hits.begin(), out.hits.end(),
-                             // mutant: all_hits_twice
+                             // all_hits reports a triangle listed in two leaves twice.
+                             // mutant all_hits_twice (step 2, "each triangle once"):
+                             //   `x.triangle == y.triangle`
+                             //   -> `false`
                              [](const KdHit& x, const KdHit& y) { return x.triangle == y.triangle; }),
                  out.hits.end());
   return out;
@@ -581,7 +614,8 @@ Where classify(const BspTree& tree, const Vec3& point) {
     for (;;) {
       const BspNode& n = tree.nodes[std::size_t(node)];
       const double side = side_value(tree.triangles[std::size_t(n.plane)], point);
-      // mutant: on_plane_goes_front
+      // A point on a node's plane is sent in front, as if it were off the plane.
+      // mutant on_plane_goes_front (step 3, "side = 0", "both subtrees"): `>` -> `>=`
       if (side > 0) {
         if (n.front < 0) {
           outside = true;
@@ -641,7 +675,10 @@ std::vector<int> back_to_front(const BspTree& tree, const Vec3& eye) {
     // The eye in front: the back subtree is far. Behind: the front one. On the plane:
     // either order works.
     const bool eye_in_front = side_value(tree.triangles[std::size_t(n.plane)], eye) >= 0;
-    // mutant: near_subtree_first
+    // The subtree on the eye's side drawn first: front to back, not back to front.
+    // mutant near_subtree_first (step 4, "far subtree"):
+    //   `const int near = eye_in_front ? n.front : n.back, far = eye_in_front ? n.back : n.front;`
+    //   -> `const int near = eye_in_front ? n.back : n.front, far = eye_in_front ? n.front : n.back;`
     const int near = eye_in_front ? n.front : n.back, far = eye_in_front ? n.back : n.front;
     if (near >= 0) stack.push_back({near, false});
     stack.push_back({step.node, true});
@@ -711,9 +748,13 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
   // The side: the largest diameter, a millionth wider so that rounding in the indices
   // below can never put two centres one diameter apart two cells apart.
   const Vec3 extent = hi - lo;
-  // mutant: grid_cells_one_radius
+  // The grid's cells one radius wide instead of one diameter: two balls that meet
+  // can sit two cells apart, outside each other's block, and their pair is lost.
+  // mutant grid_cells_one_radius (step 5, "missing", "largest diameter"): `2 * r_max * (1 + 1e-6)` -> `r_max`
   double side = std::max(2 * r_max * (1 + 1e-6), extent.maxCoeff() / kMaxCells);
-  // mutant: grid_of_one_cell
+  // One grid cell holds every ball, so every pair is tested: the brute force.
+  // Every answer is still right; only the count of tests gives it away.
+  // mutant grid_of_one_cell (step 8, "adjacent cells"): `if (!(side > 0)` -> `side = 1e300; if (!(side > 0)`
   if (!(side > 0) || !std::isfinite(side)) side = std::max(1.0, extent.maxCoeff());  // all balls are one point
   const auto index = [&](double value, double low) { return std::int64_t(std::floor((value - low) / side)) + 1; };
 
@@ -758,7 +799,16 @@ SpherePairs overlapping_pairs(const std::vector<Sphere>& spheres) {
           const int i = entries[m].sphere, j = entries[other].sphere;
           if (i >= j) continue;  // each pair once: from its smaller index
           ++out.tests;
-          // mutants: tests_count_pairs_found, balls_tested_privately
+          // `tests` counts the pairs found, not the pairs tested: the kit counts the calls
+          // of given_balls_meet itself, and the two disagree.
+          // mutant tests_count_pairs_found (step 5, "given_balls_meet"):
+          //   `out.pairs.push_back({i, j});`
+          //   -> `out.pairs.push_back({i, j}); else --out.tests;`
+          // The balls tested with a formula of its own, not the counted given_balls_meet.
+          // mutant balls_tested_privately (step 5, "given_balls_meet"):
+          //   `if (given_balls_meet(sorted[m], sorted[other])) out.pairs.push_back({i, j});`
+          //   -> `const double reach = sorted[m].radius + sorted[other].radius; if ((sorted[m].center -
+          //     sorted[other].center).squaredNorm() <= reach * reach) out.pairs.push_back({i, j});`
           if (given_balls_meet(sorted[m], sorted[other])) out.pairs.push_back({i, j});
         }
     }
@@ -776,9 +826,16 @@ namespace {
 // intervals that touch come out overlapping (closed balls: touching counts). Two lows or
 // two highs at one value keep their order (the sort is stable): no swap, nothing to do.
 bool before(const Endpoint& a, const Endpoint& b) {
-  // mutant: ends_compared_privately
+  // The ends compared without compare_ends, so that no comparison is counted.
+  // mutant ends_compared_privately (step 6, "only with compare_ends"):
+  //   `compare_ends(a, b`
+  //   -> `(a.value > b.value) - (a.value < b.value`
   const int c = compare_ends(a, b);
-  // mutant: sweep_ties_strict
+  // Ends compared strictly: a low end arriving exactly at a high end's value does not
+  // pass it, so two balls that come to touch are never paired.
+  // mutant sweep_ties_strict (step 6, "touching counts"):
+  //   `return c < 0 || (c == 0 && !a.high && b.high);`
+  //   -> `return c < 0;`
   return c < 0 || (c == 0 && !a.high && b.high);
 }
 
@@ -868,7 +925,9 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
     const Sphere& s = spheres[std::size_t(e.sphere)];
     e.value = e.high ? s.center.x() + s.radius : s.center.x() - s.radius;
   }
-  // mutant: sweep_resorted_each_frame
+  // The ends re-sorted from scratch every frame (the list rebuilt in sphere order):
+  // right pairs, but n log n or worse comparisons and swaps however little the spheres moved.
+  // mutant sweep_resorted_each_frame (step 6, "frame coherence"): `!started` -> `true`
   if (!started) {  // the first frame: a sort from scratch, then the overlaps by one sweep
     started = true;
     sweep_from_scratch(spheres, ends, overlapping);
@@ -885,7 +944,9 @@ SweepFrame SweepAndPrune::update(const std::vector<Sphere>& spheres) {
     const std::array<int, 2> p = overlapping[k];
     while (g < gone_pairs.size() && gone_pairs[g] < p) ++g;
     const bool gone = g < gone_pairs.size() && gone_pairs[g] == p;
-    // mutant: sweep_pairs_never_removed
+    // A pair is added when a low end passes a high end but never removed when the
+    // high end passes back: pairs apart on x stay in the set and are tested every frame.
+    // mutant sweep_pairs_never_removed (step 6, "overlap on x", "swap"): `if (gone) continue` -> `(void)gone`
     if (gone) continue;  // its intervals no longer overlap on x: out of the set
     overlapping[kept++] = p;
     test(p);
@@ -917,11 +978,18 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
     todo.pop_back();
     const ObbNode& na = a.nodes[std::size_t(i)];
     const ObbNode& nb = b.nodes[std::size_t(j)];
-    // mutant: bvh_leaf_boxes_untested
+    // Two leaves' triangles tested without testing the leaves' boxes first: the box
+    // test only before descending, so leaves whose boxes are apart still test their pairs.
+    // mutant bvh_leaf_boxes_untested (step 7, "leaves' boxes overlap"):
+    //   `++out.box_tests; if (!given_boxes_overlap(na.box, nb.box)) continue;`
+    //   -> `const bool both_leaves = na.left < 0 && nb.left < 0; if (!both_leaves) ++out.box_tests; if (!both_leaves &&
+    //     !given_boxes_overlap(na.box, nb.box)) continue;`
     ++out.box_tests;
     if (!given_boxes_overlap(na.box, nb.box)) continue;
     const bool leaf_a = na.left < 0, leaf_b = nb.left < 0;
-    // mutant: bvh_one_tree_only
+    // One tree descended only: a leaf of a is tested against b's node as it is, whose
+    // triangles lie in leaves below it, so pairs are lost.
+    // mutant bvh_one_tree_only (step 7, "both trees", "leaves"): `if (leaf_a && leaf_b) {` -> `if (leaf_a) {`
     if (leaf_a && leaf_b) {
       for (int p = na.first; p < na.first + na.count; ++p)
         for (int q = nb.first; q < nb.first + nb.count; ++q) {
@@ -929,13 +997,17 @@ TrianglePairs colliding_triangles(const ObbTree& a, const ObbTree& b, bool every
           ++out.triangle_tests;
           if (given_triangles_meet(a.triangles[std::size_t(s)], b.triangles[std::size_t(t)])) {
             out.pairs.push_back({s, t});
-            // mutant: bvh_stops_at_first_pair
+            // mutant bvh_stops_at_first_pair (step 7, "every pair"): `if (!every) return out;` -> `return out;`
             if (!every) return out;
           }
         }
       continue;
     }
-    // mutants: bvh_descends_smaller, bvh_descends_b_at_tie
+    // The smaller box descended first: right pairs, more box tests than the header's
+    // traversal.
+    // mutant bvh_descends_smaller (step 7, "larger box"): `>=` -> `<=`
+    // The traversal stops at the first pair found even when every pair is asked for.
+    // mutant bvh_descends_b_at_tie (step 7, "equal volumes"): `>=` -> `>`
     const bool descend_a = leaf_b || (!leaf_a && volume(na) >= volume(nb));
     if (descend_a) {
       todo.push_back({na.right, j}), todo.push_back({na.left, j});
@@ -1013,13 +1085,25 @@ SpherePairs hashed_pairs(const std::vector<Sphere>& spheres, double cell, int bu
   SpherePairs out;
   for (int i = 0; i < int(spheres.size()); ++i) {
     const Cell& own = cells[std::size_t(i)];
-    // mutant: hash_half_neighbourhood
+    // Only the cells at dx, dy, dz = 0 or +1 looked at: a pair whose other ball lies
+    // below or behind, with the larger index, is lost.
+    // mutant hash_half_neighbourhood (step 11, "missing", "27 cells"): `dx = -1` -> `dx = 0`
     for (int dx = -1; dx <= 1; ++dx)
       for (int dy = -1; dy <= 1; ++dy)
         for (int dz = -1; dz <= 1; ++dz) {
           const Cell want{own.x + dx, own.y + dy, own.z + dz};
           for (const Entry& entry : table[bucket_of(want)]) {
-            // mutants: hash_bucket_not_filtered, hash_pairs_from_both_balls
+            // A bucket's entries taken whatever their cell: the bucket also holds cells that
+            // collide with the one looked for, so balls far apart are tested (and, reached from two
+            // of the 27 cells, tested twice).
+            // mutant hash_bucket_not_filtered (step 11, "neighbouring cells", "key"):
+            //   `if (!same_cell(entry.key, want)) continue;`
+            //   -> `(void)want;`
+            // Each pair tested from both of its balls: right pairs only after a unique, and
+            // twice the tests the hash needs.
+            // mutant hash_pairs_from_both_balls (step 11, "once"):
+            //   `if (entry.sphere <= i) continue;`
+            //   -> `if (entry.sphere == i) continue;`
             if (!same_cell(entry.key, want)) continue;  // another cell that shares this bucket
             if (entry.sphere <= i) continue;            // each pair once: from its smaller index
             ++out.tests;
@@ -1058,7 +1142,11 @@ Aabb ball_box(const Sphere& s) {
 // Closed boxes: touching faces meet.
 bool closed_boxes_meet(const Aabb& a, const Aabb& b) {
   for (int i = 0; i < 3; ++i) {
-    // mutant: octree_touching_one_side
+    // A ball sent only to the children its box overlaps with some width: one that
+    // touches a cut goes one way, and the leaf on the other side misses it.
+    // mutant octree_touching_one_side (step 12, "every child", "touching"):
+    //   `> b.max[i] || b.min[i] >`
+    //   -> `>= b.max[i] || b.min[i] >=`
     if (a.min[i] > b.max[i] || b.min[i] > a.max[i]) return false;
   }
   return true;
@@ -1093,7 +1181,9 @@ Octree build_octree(const std::vector<Sphere>& spheres, int capacity, int max_de
     todo.pop_back();
     // Few balls (or as deep as allowed): a leaf, however big its cell. This is the rule
     // that makes the tree adapt.
-    // mutant: octree_cuts_at_capacity
+    // A node cut as soon as it holds `capacity` balls, not more: the tree has cuts
+    // where the rule keeps a leaf.
+    // mutant octree_cuts_at_capacity (step 12, "at most capacity", "adapts"): `<=` -> `<`
     if (int(job.balls.size()) <= capacity || job.depth == max_depth) {
       OctNode& leaf = tree.nodes[std::size_t(job.node)];
       leaf.first = int(tree.items.size());
@@ -1146,7 +1236,10 @@ BallsInBox balls_in_box(const Octree& tree, const Aabb& box) {
     if (node.child < 0) {
       for (int k = node.first; k < node.first + node.count; ++k) {
         const int ball = tree.items[std::size_t(k)];
-        // mutant: octree_ball_tested_per_leaf
+        // A ball listed in several leaves the query reaches is tested in each of them.
+        // mutant octree_ball_tested_per_leaf (step 12, "once per query"):
+        //   `if (tested[std::size_t(ball)]) continue;`
+        //   -> `if (tested[std::size_t(ball)] && false) continue;`
         if (tested[std::size_t(ball)]) continue;  // listed in an earlier leaf too: tested there
         tested[std::size_t(ball)] = 1;
         ++out.ball_tests;
@@ -1155,7 +1248,12 @@ BallsInBox balls_in_box(const Octree& tree, const Aabb& box) {
       continue;
     }
     for (int k = 0; k < 8; ++k) {
-      // mutant: octree_descends_every_child
+      // The query descends every child without testing its cell: right balls, but the
+      // balls of leaves far from the box are tested too.
+      // mutant octree_descends_every_child (step 12, "leaves whose cells meet the box"):
+      //   `++out.cell_tests; if (given_cell_meets_box(tree.nodes[std::size_t(node.child + k)].cell, box))
+      //     todo.push_back(node.child + k);`
+      //   -> `todo.push_back(node.child + k);`
       ++out.cell_tests;
       if (given_cell_meets_box(tree.nodes[std::size_t(node.child + k)].cell, box)) todo.push_back(node.child + k);
     }

@@ -101,7 +101,9 @@ Particle emit(const Emitter& emitter, Random& random) {
   for (int i = 0; i < 3; ++i) p.position[i] = emitter.position[i] + emitter.half_extents[i] * random.uniform(-1.0, 1.0);
   const Vec3 axis = emitter.direction.normalized();
   const Vec3 u = axis.unitOrthogonal(), w = axis.cross(u);
-  // mutant: cone_uniform_in_angle
+  // mutant cone_uniform_in_angle (step 1, "solid angle"):
+  //   `const double cos_theta = random.uniform(std::cos(emitter.cone), 1.0);`
+  //   -> `const double cos_theta = std::cos(random.uniform(0.0, emitter.cone));`
   const double cos_theta = random.uniform(std::cos(emitter.cone), 1.0);
   const double sin_theta = std::sqrt(std::max(0.0, 1.0 - cos_theta * cos_theta));
   const double turn = random.uniform(0.0, 2 * kPi);
@@ -120,7 +122,7 @@ Births births(const Emitter& emitter, double dt) {
   require_size("births", "dt", dt);
   const double due = emitter.owed + emitter.rate * dt;
   const double whole = std::floor(due);
-  // mutant: births_drop_fraction
+  // mutant births_drop_fraction (step 1, "fraction", "carried"): `due - whole` -> `0.0`
   return {int(whole), due - whole};
 }
 
@@ -145,7 +147,11 @@ std::vector<Particle> age(std::vector<Particle> particles, double dt) {
 Vec3 force(const Particle& p, const Forces& forces) {
   require_valid("force", "p", p);
   require_valid("force", forces);
-  // mutant: drag_per_component
+  // The air drag taken per component, -k2 |v_i| v_i, instead of -k2 |v| v along the
+  // whole velocity: right for motion along one axis only.
+  // mutant drag_per_component (step 2, "whole velocity vector"):
+  //   `norm() * p.velocity`
+  //   -> `cwiseAbs().cwiseProduct(p.velocity)`
   return p.mass * forces.gravity - forces.drag * p.velocity - forces.air_drag * p.velocity.norm() * p.velocity;
 }
 
@@ -155,7 +161,9 @@ Particle euler_step(const Particle& p, const Forces& forces, double dt) {
   require_positive("euler_step", "dt", dt);
   const Vec3 a = force(p, forces) / p.mass;  // force() checks p and forces
   Particle next = p;
-  // mutant: semi_implicit_euler
+  // mutant semi_implicit_euler (step 2, "explicit Euler", "start of the step"):
+  //   `+ p.velocity`
+  //   -> `+ (p.velocity + a * dt)`
   next.position = p.position + p.velocity * dt;
   next.velocity = p.velocity + a * dt;
   return next;
@@ -167,7 +175,9 @@ Particle start_verlet(const Particle& p, const Forces& forces, double dt) {
   require_positive("start_verlet", "dt", dt);
   const Vec3 a = force(p, forces) / p.mass;  // force() checks p and forces
   Particle next = p;
-  // mutant: verlet_start_without_acceleration
+  // mutant verlet_start_without_acceleration (step 2, "Taylor step"):
+  //   `next.previous = p.position - p.velocity * dt + 0.5 * a * dt * dt;`
+  //   -> `next.previous = p.position - p.velocity * dt;`
   next.previous = p.position - p.velocity * dt + 0.5 * a * dt * dt;
   return next;
 }
@@ -214,7 +224,7 @@ Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity)
   const double gx_squared = d.cross(gravity).squaredNorm();
   if (gx_squared == 0 || speed == 0) return {};  // straight up or down, no gravity, or no speed
   const double v2 = speed * speed;
-  // mutant: launch_height_sign
+  // mutant launch_height_sign (step 3, "height", "gravity points down"): `+ 2 * v2` -> `- 2 * v2`
   const double D = v2 * v2 + 2 * v2 * d.dot(gravity) - gx_squared;
 
   const double g = gravity.norm();
@@ -232,7 +242,10 @@ Aim aim(const Vec3& from, const Vec3& target, double speed, const Vec3& gravity)
   // the target is close and the shot fast).
   const double root = std::sqrt(D);
   const double tan_high = (v2 + root) / (g * x);
-  // mutant: low_root_cancels
+  // The issue's: v^2 - sqrt(D) for the low root loses every digit on a near, fast shot.
+  // mutant low_root_cancels (step 3, "low root", "cancels"):
+  //   `const double tan_low = (g * x * x + 2 * y * v2) / (x * (v2 + root));`
+  //   -> `const double tan_low = (v2 - root) / (g * x);`
   const double tan_low = (g * x * x + 2 * y * v2) / (x * (v2 + root));
   const Vec3 toward = (d - y * up).normalized();  // horizontal, toward the target
   const auto shot = [&](double tangent) {
@@ -275,11 +288,17 @@ SurfaceHit hit_plane(const Segment& segment, const Plane& plane) {
   // a within rounding error of the plane counts as on it: a particle resting on a plane
   // that moves behind it hits at t = 0, even when n . a + c rounds a hair below zero.
   const Signed a = plane_value(plane, segment.a);
-  // mutant: start_decided_by_rounded_sign
+  // Step 4's rule for a: on the plane to within value(a)'s rounding bound counts as on it.
+  // mutant start_decided_by_rounded_sign (step 4, "rounding bound"):
+  //   `const double va = std::abs(a.value) <= a.error ? 0.0 : a.value, vb`
+  //   -> `const double va = a.value, vb`
   const double va = std::abs(a.value) <= a.error ? 0.0 : a.value, vb = plane.value(segment.b);
-  // mutant: plane_two_sided
+  // mutant plane_two_sided (step 4, "one-sided"):
+  //   `if (va < 0) return {};`
+  //   -> `if (va < 0 && vb >= 0) { SurfaceHit h; h.hit = true; h.t = va / (va - vb); h.point = segment.point(h.t);
+  //     h.normal = -plane.normal / length; return h; } if (va < 0) return {};`
   if (va < 0) return {};  // starts behind: not this step's doing
-  // mutant: touching_is_behind
+  // mutant touching_is_behind (step 4, "not behind"): `>=` -> `>`
   if (vb >= 0) return {};  // does not end behind (touching the plane is allowed)
   SurfaceHit h;
   h.hit = true;
@@ -373,7 +392,9 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
   require_positive("impulse", "mass", mass);
   require_valid("impulse", material);
   Impulse r;
-  // mutant: impulse_ignores_object_velocity
+  // mutant impulse_ignores_object_velocity (step 5, "relative velocity"):
+  //   `const Vec3 relative = velocity - object_velocity;`
+  //   -> `const Vec3 relative = velocity;`
   const Vec3 relative = velocity - object_velocity;
   r.v_close = relative.dot(normal);
   r.velocity = velocity;
@@ -384,7 +405,9 @@ Impulse impulse(const Vec3& velocity, const Vec3& object_velocity, const Vec3& n
   const Vec3 tangential = relative - r.v_close * normal;
   const double slide = tangential.norm();
   if (slide > 0) {
-    // mutant: friction_reverses_sliding
+    // mutant friction_reverses_sliding (step 5, "never reverses"):
+    //   `const double f = std::min(material.friction * j, mass * slide);`
+    //   -> `const double f = material.friction * j;`
     const double f = std::min(material.friction * j, mass * slide);  // never reverses v_t
     r.friction = -(f / slide) * tangential;
   }
@@ -427,7 +450,7 @@ Collision collide_in(const Segment& step, const Vec3& velocity, double mass, dou
   const int cap = scene.bounce_cap;
   const Vec3 u = scene.velocity;
   Collision c;
-  // mutant: moving_surface_frozen
+  // mutant moving_surface_frozen (step 6, "relative step", "a + u dt"): `{step.a + u * dt, step.b}` -> `step`
   Segment piece = {step.a + u * dt, step.b};  // the relative step: a carried by the scene, to b
   Vec3 v = velocity;
   double remaining = dt;
@@ -437,26 +460,37 @@ Collision collide_in(const Segment& step, const Vec3& velocity, double mass, dou
     if (!hit.hit) break;  // this piece is clear: the particle gets to its end
     Bounce& bounce = c.trace[std::size_t(c.bounces)];
     bounce.hit = hit;
-    // mutant: hit_point_not_settled
+    // mutant hit_point_not_settled (step 7, "strictly in front", "settle"):
+    //   `settle_in(hit.point, scene, hit)`
+    //   -> `hit.point`
     bounce.from = settle_in(hit.point, scene, hit);
-    // mutant: cap_off_by_one
+    // mutant cap_off_by_one (step 6, "bounce cap"):
+    //   `c.bounces == cap`
+    //   -> `c.bounces == cap + 1 || c.bounces == kMaxBounceCap`
     if (c.bounces == cap) {  // one hit too many: stop here, at rest
       c.stopped = true;
       c.position = bounce.from;
       c.velocity = u;  // at rest on the surface, which carries it
       return c;
     }
-    // mutant: collide_impulse_absolute_velocity
+    // A moving scene (step 6): the three ways to leave its motion out.
+    // mutant collide_impulse_absolute_velocity (step 6, "relative velocity", "v - u"):
+    //   `impulse(v, u,`
+    //   -> `impulse(v, Vec3::Zero(),`
     v = impulse(v, u, hit.normal, mass, scene.material).velocity;  // against the moving surface: v - u
     bounce.velocity = v;
-    // mutant: whole_step_after_bounce
+    // mutant whole_step_after_bounce (step 6, "remaining time"): `remaining *= 1 - hit.t;` -> ``
     remaining *= 1 - hit.t;
-    // mutant: piece_moves_with_world_velocity
+    // mutant piece_moves_with_world_velocity (step 6, "relative to the moving surfaces"):
+    //   `(v - u) * remaining`
+    //   -> `v * remaining`
     piece = {bounce.from, bounce.from + (v - u) * remaining};  // relative to the scene
     last = hit;
     ++c.bounces;
   }
-  // mutant: end_position_not_settled
+  // collide's end position left as computed, not settled: after a bounce that
+  // slides along a surface it can end a hair behind the plane, by rounding.
+  // mutant end_position_not_settled (step 7, "behind"): `settle_in(piece.b, scene, last)` -> `piece.b`
   c.position = settle_in(piece.b, scene, last);
   c.velocity = v;
   return c;
@@ -547,7 +581,9 @@ struct Surfaces {
   Standing plane(std::size_t i, const Vec3& p) const {
     const Plane& plane = scene.planes[i];
     const Signed s = plane_value(plane, p);
-    // mutant: hit_plane_not_strict
+    // The plane just hit taken as "not behind" is enough: a point exactly on it
+    // (value 0) is left there, and the next piece starts on the surface instead of off it.
+    // mutant hit_plane_not_strict (step 7, "strictly in front"): `last.hit && last.plane == int(i)` -> `false`
     const bool strict = last.hit && last.plane == int(i);                    // the plane just hit: strictly in front
     if (strict ? s.value > s.error : s.value >= s.error) return Standing{};  // certainly fine
     const double length = plane.normal.norm();
@@ -570,7 +606,12 @@ struct Surfaces {
     std::vector<bool> keep(scene.planes.size(), false);
     for (std::size_t i = 0; i < scene.planes.size(); ++i) {
       const Signed s = plane_value(scene.planes[i], x);
-      // mutant: settles_off_last_only
+      // Settle keeps x off the surface just hit and nothing else: in a crease the push
+      // off that surface leaves x behind the other one.
+      // mutant settles_off_last_only (step 8, "crease", "behind"):
+      //   `keep[i] = scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane
+      //     == int(i)));`
+      //   -> `keep[i] = last.hit && last.plane == int(i);`
       keep[i] =
           scene.planes[i].normal != Vec3::Zero() && (s.value >= -1000 * s.error || (last.hit && last.plane == int(i)));
     }
@@ -664,7 +705,10 @@ void System::step(double dt) {
     p.velocity = c.velocity;
     p.bounces = c.bounces;
     // Verlet keeps its velocity in (position - previous): rewrite it after a bounce.
-    // mutant: verlet_previous_kept
+    // mutant verlet_previous_kept (step 8, "previous", "Verlet"):
+    //   `if (integrator == Integrator::verlet && (c.bounces > 0 || c.stopped)) p.previous = p.position - p.velocity *
+    //     dt;`
+    //   -> ``
     if (integrator == Integrator::verlet && (c.bounces > 0 || c.stopped)) p.previous = p.position - p.velocity * dt;
   }
   // 3. Death: those whose time is up.
@@ -688,15 +732,24 @@ Vec3 spring_force(const Particle& a, const Particle& b, const Spring& spring) {
   require_size("spring_force", "spring.stiffness", spring.stiffness);
   require_size("spring_force", "spring.damping", spring.damping);
   require_size("spring_force", "spring.rest_length", spring.rest_length);
-  // mutant: spring_force_on_b
+  // d = b - a gives the force on b (or the sign flipped): the spring pushes when
+  // stretched.
+  // mutant spring_force_on_b (step 9, "force is on a"): `a.position - b` -> `b.position - a`
   const Vec3 d = a.position - b.position;
   const double l = d.norm();
   if (l == 0) return Vec3::Zero();  // no direction to pull along: the header's rule
   const Vec3 u = d / l;
-  // mutant: spring_ignores_rest_length
+  // Hooke's law on the whole length: a spring that is never at rest.
+  // mutant spring_ignores_rest_length (step 9, "rest length"):
+  //   `const double stretch = l - spring.rest_length;`
+  //   -> `const double stretch = l;`
   const double stretch = l - spring.rest_length;                // > 0: stretched
   const double lengthening = (a.velocity - b.velocity).dot(u);  // dl/dt
-  // mutant: spring_damps_whole_relative_velocity
+  // Step 9 (extension): the damper on the whole relative velocity brakes particles that
+  // circle each other at a fixed length; a spring damps only the change of its length.
+  // mutant spring_damps_whole_relative_velocity (step 9, "along the spring"):
+  //   `return -(spring.stiffness * stretch + spring.damping * lengthening) * u;`
+  //   -> `return -spring.stiffness * stretch * u - spring.damping * (a.velocity - b.velocity);`
   return -(spring.stiffness * stretch + spring.damping * lengthening) * u;
 }
 
@@ -747,15 +800,24 @@ RigidImpulse rigid_impulse(const RigidBody& a, const RigidBody& b, const Contact
   if (!(out.v_rel < 0)) return out;  // moving apart, or resting/sliding (v_rel = 0): no impulse
   out.closing = true;
   const Vec3 turn_a = a.inverse_inertia * r_a.cross(n), turn_b = b.inverse_inertia * r_b.cross(n);
-  // mutant: rigid_angular_part_forgotten
+  // Step 10 (extension): the particle formula j = -(1 + e) v_rel / (1/m_a + 1/m_b): the
+  // bodies' turning left out of j, so the contact points do not separate at -e v_rel.
+  // mutant rigid_angular_part_forgotten (step 10, "angular terms", "denominator"):
+  //   `const double denominator = 1 / a.mass + 1 / b.mass + n.dot(turn_a.cross(r_a)) + n.dot(turn_b.cross(r_b));`
+  //   -> `const double denominator = 1 / a.mass + 1 / b.mass;`
   const double denominator = 1 / a.mass + 1 / b.mass + n.dot(turn_a.cross(r_a)) + n.dot(turn_b.cross(r_b));
   out.j = -(1 + contact.restitution) * out.v_rel / denominator;
   const Vec3 J = out.j * n;
   out.velocity_a = a.velocity + J / a.mass;  // p_a += J
   out.velocity_b = b.velocity - J / b.mass;  // p_b -= J
-  // mutant: rigid_torque_order_swapped
+  // J x r instead of r x J: the torque impulse turns the body the wrong way.
+  // mutant rigid_torque_order_swapped (step 10, "r_a x J"): `r_a.cross(J` -> `J.cross(r_a`
   out.angular_velocity_a = a.angular_velocity + a.inverse_inertia * r_a.cross(J);  // L_a += r_a x J
-  // mutant: rigid_inverse_inertia_not_applied
+  // The angular momentum change r x J taken as the angular velocity change: the
+  // inverse inertia not applied.
+  // mutant rigid_inverse_inertia_not_applied (step 10, "inverse inertia"):
+  //   `out.angular_velocity_b = b.angular_velocity - b.inverse_inertia * r_b.cross(J);`
+  //   -> `out.angular_velocity_b = b.angular_velocity - r_b.cross(J);`
   out.angular_velocity_b = b.angular_velocity - b.inverse_inertia * r_b.cross(J);  // L_b -= r_b x J
   return out;
 }

@@ -1,6 +1,6 @@
 // kit_no_solution KIT_ROOT FOLDER: exits 1 when any file under FOLDER holds reference
-// code: the body of any function of solutions/*/*.cpp, or any FIND or REPLACE text of
-// tests/*/mutants.cmake (the mutants are reference code with one edit). Both sides are
+// code: the body of any function of solutions/*/*.cpp (the mutants are in those files
+// too, as `// mutant` lines, so a release without solutions/ holds none). Both sides are
 // compared with comments and all whitespace taken out, so reformatting hides nothing.
 // Bodies shorter than 40 such characters (`{ return {}; }`) are too common to mean much,
 // and text the exact oracle also holds (common/oracle/, in every release by design: a
@@ -86,19 +86,6 @@ std::vector<std::string> function_bodies(const std::string& code) {
   return bodies;
 }
 
-// The quoted FIND and REPLACE texts of labkit_mutant() calls.
-std::vector<std::string> mutant_texts(const std::string& cmake) {
-  std::vector<std::string> texts;
-  static const std::regex quoted(R"re((FIND|REPLACE)\s+"((?:[^"\\]|\\.)*)")re");
-  for (auto it = std::sregex_iterator(cmake.begin(), cmake.end(), quoted); it != std::sregex_iterator(); ++it) {
-    std::string text;
-    const std::string raw = (*it)[2];
-    for (std::size_t i = 0; i < raw.size(); ++i) text += raw[i] == '\\' && i + 1 < raw.size() ? raw[++i] : raw[i];
-    texts.push_back(text);
-  }
-  return texts;
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -115,26 +102,11 @@ int main(int argc, char** argv) {
     if (e.path().extension() == ".cpp")
       for (const std::string& body : function_bodies(normalise(labkit::read_file(e.path()))))
         if (body.size() >= 40) needles.push_back({body, fs::relative(e.path(), kit).string()});
-  int mutant_strings = 0;
-  for (const auto& e : fs::directory_iterator(kit / "tests"))
-    if (e.path().string().size() > 14 && e.path().string().rfind(".mutants.cmake") == e.path().string().size() - 14)
-      for (const std::string& text : mutant_texts(labkit::read_file(e.path()))) {
-        const std::string n = normalise(text);
-        if (n.size() >= 20) {
-          needles.push_back({n, fs::relative(e.path(), kit).string()});
-          ++mutant_strings;
-        }
-      }
   std::string oracle;
   for (const auto& e : fs::recursive_directory_iterator(kit / "common" / "oracle"))
     oracle += normalise(labkit::read_file(e.path()));
-  needles.erase(std::remove_if(
-                    needles.begin(), needles.end(),
-                    [&](const Needle& n) {
-    const bool shared = oracle.find(n.text) != std::string::npos;
-    if (shared && n.origin.find("mutants") != std::string::npos) --mutant_strings;
-    return shared;
-                    }),
+  needles.erase(std::remove_if(needles.begin(), needles.end(),
+                               [&](const Needle& n) { return oracle.find(n.text) != std::string::npos; }),
                 needles.end());
   if (needles.size() < 5) {
     std::cerr << "kit_no_solution: found only " << needles.size() << " pieces of reference code to look for\n";
@@ -154,7 +126,7 @@ int main(int argc, char** argv) {
         break;
       }
   }
-  std::cout << "looked for " << needles.size() - mutant_strings << " reference function bodies and " << mutant_strings
-            << " mutant texts in " << files << " files: " << found << " files hold some\n";
+  std::cout << "looked for " << needles.size() << " reference function bodies in " << files << " files: " << found
+            << " files hold some\n";
   return found == 0 ? 0 : 1;
 }
