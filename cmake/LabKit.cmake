@@ -287,7 +287,13 @@ function(labkit_add_mutants number name)
   file(READ "${source}" reference)
   set_property(DIRECTORY "${PROJECT_SOURCE_DIR}" APPEND PROPERTY CMAKE_CONFIGURE_DEPENDS "${source}")
   labkit_mutant_specs(m "${reference}" "${where}")
+  labkit_manifest_steps(${number} steps)
+  list(JOIN steps ", " listed)
   foreach(mutant IN LISTS m_names)
+    if(NOT m_${mutant}_step IN_LIST steps)
+      message(FATAL_ERROR "${m_${mutant}_line_0}: mutant '${mutant}' is a mistake of step ${m_${mutant}_step}, "
+                          "which lab ${number} does not have (grading/manifest.json: steps ${listed})")
+    endif()
     labkit_mutant_source(mutated m ${mutant} "${reference}" "${where}")
     set(output "${PROJECT_BINARY_DIR}/mutants/${stem}/${mutant}.cpp")
     # Rewritten only when it changes, so that a reconfigure does not rebuild every mutant.

@@ -11,9 +11,10 @@
 # spaces and line breaks aside. So reformatting the code, or rewording any comment, never
 # breaks a mutant, and the configure refuses a mutant it cannot place, naming the line.
 # The same name on several lines edits each place (the mistake made at each of them); its
-# step and words are then the same on every line. ctest runs the lab's steps against each
-# mutant in order and expects the steps before its step to pass, its step to FAIL, and the
-# why of that first failure to hold each quoted word (the concept the mistake breaks).
+# edit, step and words are then the same on every line, and its step one the manifest
+# lists. ctest runs the lab's steps against each mutant in order and expects the steps
+# before its step to pass, its step to FAIL, and the why of that first failure to hold
+# each quoted word (the concept the mistake breaks).
 #
 # labkit_mutant_specs(prefix text where): reads every mutant of `text` into variables of
 #   the caller: ${prefix}_names, and for each name N: ${prefix}_N_step, ${prefix}_N_says
@@ -129,15 +130,20 @@ function(labkit_mutant_specs prefix text where)
     labkit_mutant_window(begin end "${text}" ${position})
 
     if(name IN_LIST names)
-      if(NOT step STREQUAL "${${prefix}_${name}_step}" OR NOT says STREQUAL "${${prefix}_${name}_says}")
-        message(FATAL_ERROR "${line}: mutant '${name}' appears again with another step or other words; "
-                            "one mistake has one step and one set of words at each of its places")
+      # The same mistake at another place: the same edit, step and words, or it is a
+      # second mistake that needs a name of its own.
+      if(NOT step STREQUAL "${${prefix}_${name}_step}" OR NOT says STREQUAL "${${prefix}_${name}_says}" OR
+         NOT find STREQUAL "${${prefix}_${name}_find}" OR NOT replace STREQUAL "${${prefix}_${name}_replace}")
+        message(FATAL_ERROR "${line}: mutant '${name}' appears again with another edit, step or words; one "
+                            "mistake makes the same edit at each of its places: give a different one its own name")
       endif()
       set(k ${${prefix}_${name}_count})
     else()
       list(APPEND names ${name})
       set(${prefix}_${name}_step "${step}")
       set(${prefix}_${name}_says "${says}")
+      set(${prefix}_${name}_find "${find}")
+      set(${prefix}_${name}_replace "${replace}")
       set(${prefix}_${name}_step "${step}" PARENT_SCOPE)
       set(${prefix}_${name}_says "${says}" PARENT_SCOPE)
       set(k 0)

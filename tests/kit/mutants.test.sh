@@ -120,11 +120,18 @@ refused "nothing to replace" "names no text to replace" bad <<'CPP'
 // mutant bad (step 2, "w"): `` -> `y`
 x = 1;
 CPP
-refused "one name, two steps" "appears again with another step" both <<'CPP'
+refused "one name, two steps" "appears again with another edit, step or words" both <<'CPP'
 // mutant both (step 1, "w"): `x = 1;` -> `y`
 x = 1;
 
 // mutant both (step 2, "w"): `x = 1;` -> `y`
+x = 1;
+CPP
+refused "one name, two edits" "appears again with another edit" both <<'CPP'
+// mutant both (step 1, "w"): `x = 1;` -> `y`
+x = 1;
+
+// mutant both (step 1, "w"): `x = 1;` -> `z`
 x = 1;
 CPP
 refused "the old form" "the old form of a mutant" old <<'CPP'
