@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <iostream>
 #include <map>
 #include <mutex>
@@ -340,7 +341,9 @@ int compile_main(int argc, char** argv) {
     if (command[i] == "-c") source = command[i + 1];
     if (command[i] == "-o") object = command[i + 1];
   }
-  const Rule rule = rule_for(kit, lab, command);
+  // The rule (the compiler's folders, the C library's headers) is needed only for the
+  // audit after the compile: it is worked out on the side while the compiler runs.
+  std::future<Rule> rule = std::async(std::launch::async, rule_for, kit, lab, command);
   command.push_back("-H");
   Limits limits;
   limits.seconds = 3600;
@@ -349,7 +352,7 @@ int compile_main(int argc, char** argv) {
   std::string rest;
   const std::vector<Header> headers = split_output(r.output, &rest);
   std::fputs(rest.c_str(), stderr);
-  const std::string problem = source.empty() ? "" : audit(rule, headers, rest, source);
+  const std::string problem = source.empty() ? "" : audit(rule.get(), headers, rest, source);
   if (!problem.empty()) {
     // FILE:LINE: error: as a compiler says it, so that an editor jumps to the include.
     std::smatch line;
