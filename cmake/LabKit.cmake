@@ -116,10 +116,40 @@ function(labkit_add_labs)
   endforeach()
 endfunction()
 
+# Lab NN's targets, from its files: the implementations (the student's file, the
+# reference), its checker (judge, generators, calls, the test program), an answerer for
+# each implementation, what `./labkit grade` reads, and its tests (the reference's steps,
+# the fakes, the mutants). Each part is a function below.
 function(labkit_add_lab number name)
   set(stem ${number}_${name})
-  set(lab lab${number})
+  labkit_lab_implementations(${number} ${name})
+  labkit_lab_checker(${number} ${name})
+  foreach(impl IN LISTS implementations)
+    labkit_add_answerer(${number} ${name} ${impl} lab${number}_${impl})
+  endforeach()
+  labkit_lab_grading(${number} ${name})
+  if(TARGET lab${number}_reference)
+    labkit_lab_tests(${number} ${name})
+  endif()
 
+  set_property(GLOBAL APPEND PROPERTY LABKIT_LABS ${stem})
+  if(EXISTS "${PROJECT_SOURCE_DIR}/viewer/scenes/${stem}.cpp")
+    set_property(GLOBAL APPEND PROPERTY LABKIT_SCENES ${stem})
+  endif()
+endfunction()
+
+# The lab's list of calls (tests/NN_name/queries.h), expanded on both sides of the pipe:
+# the definitions that select it, in `out`.
+function(labkit_lab_query_definitions number name out)
+  set(${out} LABKIT_LAB_QUERIES="${number}_${name}/queries.h" LABKIT_LAB_NAMESPACE=lab${number}
+      LABKIT_LAB_CALLS=LABKIT_LAB${number}_CALLS PARENT_SCOPE)
+endfunction()
+
+# The lab's given code, the student's library and the reference's; `implementations`
+# (in the caller) lists those that exist: student, and reference when solutions/ has it.
+function(labkit_lab_implementations number name)
+  set(stem ${number}_${name})
+  set(lab lab${number})
   # The lab's given code, if it has any (tests/NN_name/given*.cpp): plain functions its
   # header declares as ready tools, linked with every implementation of the lab.
   file(GLOB given_sources CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/tests/${stem}/given*.cpp")
@@ -144,7 +174,14 @@ function(labkit_add_lab number name)
     labkit_kit_code(${lab}_reference)
     list(APPEND implementations reference)
   endif()
+  set(implementations ${implementations} PARENT_SCOPE)
+endfunction()
 
+# The lab's checker: the judge's and the generators' libraries, the calls on the judge's
+# side, the answerer's main(), and the test program.
+function(labkit_lab_checker number name)
+  set(stem ${number}_${name})
+  set(lab lab${number})
   # The judge: its verdicts (tests/NN_name/judge*.cpp, split by step when long). Then the
   # lab's own generators (tests/NN_name/generators*.cpp), which know the lab's types: a
   # library of their own, since the viewer judges without drawing random cases, and they
@@ -164,8 +201,7 @@ function(labkit_add_lab number name)
   target_link_libraries(${lab}_generators PUBLIC ${lab}_judge labkit_generators)  # judge.h's helpers (scale_of, ...)
 
   # The lab's list of calls (tests/NN_name/queries.h), expanded on both sides of the pipe.
-  set(query_definitions LABKIT_LAB_QUERIES="${stem}/queries.h" LABKIT_LAB_NAMESPACE=${lab}
-                       LABKIT_LAB_CALLS=LABKIT_LAB${number}_CALLS)
+  labkit_lab_query_definitions(${number} ${name} query_definitions)
   add_library(${lab}_calls STATIC "${PROJECT_SOURCE_DIR}/common/protocol/lab_calls.cpp")
   target_compile_definitions(${lab}_calls PRIVATE ${query_definitions})
   target_include_directories(${lab}_calls PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
@@ -184,63 +220,58 @@ function(labkit_add_lab number name)
   labkit_kit_code(test_${stem} -Og)
   target_precompile_headers(test_${stem} REUSE_FROM labkit_test_pch)
   labkit_kit_code(${lab}_calls)
+endfunction()
 
-  foreach(impl IN LISTS implementations)
-    labkit_add_answerer(${number} ${name} ${impl} ${lab}_${impl})
-  endforeach()
-
-  # `./labkit grade` builds a submission's answerer by compiling its file(s) as the stub
-  # is compiled (compile_commands.json) and linking them as the stub's answerer is
-  # linked: that link command is recorded each time the kit runs it.
+# `./labkit grade` builds a submission's answerer by compiling its file(s) as the stub
+# is compiled (compile_commands.json) and linking them as the stub's answerer is linked:
+# that link command is recorded each time the kit runs it.
+function(labkit_lab_grading number name)
+  set(stem ${number}_${name})
+  set(lab lab${number})
   set(link_record "${PROJECT_BINARY_DIR}/grading/${stem}.link")
   set_target_properties(answer_${stem}_student PROPERTIES
     CXX_LINKER_LAUNCHER "${PROJECT_SOURCE_DIR}/cmake/record-command.sh;${link_record}")
   file(GENERATE OUTPUT "${PROJECT_BINARY_DIR}/grading/${stem}.json" CONTENT
     "{\"lab\": \"${number}\", \"student_library\": \"$<TARGET_FILE:${lab}_student>\", \"link_record\": \"${link_record}\"}\n")
   set_property(GLOBAL APPEND PROPERTY LABKIT_GRADING_TARGETS answer_${stem}_student test_${stem})
+endfunction()
 
-  # ctest: one test per step of the reference. Each leaves its harness report in
-  # build/reports/, which `labkit-runner report` sums up after the suite, and checks that
-  # every random case it draws lies in the header's input domain (LABKIT_DOMAIN_AUDIT).
-  if(TARGET ${lab}_reference)
-    labkit_manifest_steps(${number} steps)
-    file(MAKE_DIRECTORY "${PROJECT_BINARY_DIR}/reports")
-    foreach(step IN LISTS steps)
-      add_test(NAME ${lab}.step${step} COMMAND test_${stem} "[${lab}][step${step}]")
-      set_tests_properties(${lab}.step${step} PROPERTIES LABELS "reference;${lab}" FIXTURES_SETUP labkit_reports
-        ENVIRONMENT "LABKIT_REPORT=${PROJECT_BINARY_DIR}/reports/${lab}.step${step}.json;LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>;LABKIT_DOMAIN_AUDIT=1")
-    endforeach()
-    # The header's preconditions: the reference rejects every kind of invalid input with
-    # std::invalid_argument naming the argument. Tagged [contract], in no step: students
-    # are not graded on invalid input unless a step says so.
-    add_test(NAME ${lab}.contract COMMAND test_${stem} "[${lab}][contract]")
-    set_tests_properties(${lab}.contract PROPERTIES LABELS "reference;${lab}"
-      ENVIRONMENT "LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>")
-  endif()
+# The reference's tests: one per step, the contract, the fakes and the mutants.
+function(labkit_lab_tests number name)
+  set(stem ${number}_${name})
+  set(lab lab${number})
+  # One test per step. Each leaves its harness report in build/reports/, which
+  # `labkit-runner report` sums up after the suite, and checks that every random case it
+  # draws lies in the header's input domain (LABKIT_DOMAIN_AUDIT).
+  labkit_manifest_steps(${number} steps)
+  file(MAKE_DIRECTORY "${PROJECT_BINARY_DIR}/reports")
+  foreach(step IN LISTS steps)
+    add_test(NAME ${lab}.step${step} COMMAND test_${stem} "[${lab}][step${step}]")
+    set_tests_properties(${lab}.step${step} PROPERTIES LABELS "reference;${lab}" FIXTURES_SETUP labkit_reports
+      ENVIRONMENT "LABKIT_REPORT=${PROJECT_BINARY_DIR}/reports/${lab}.step${step}.json;LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>;LABKIT_DOMAIN_AUDIT=1")
+  endforeach()
+  # The header's preconditions: the reference rejects every kind of invalid input with
+  # std::invalid_argument naming the argument. Tagged [contract], in no step: students
+  # are not graded on invalid input unless a step says so.
+  add_test(NAME ${lab}.contract COMMAND test_${stem} "[${lab}][contract]")
+  set_tests_properties(${lab}.contract PROPERTIES LABELS "reference;${lab}"
+    ENVIRONMENT "LABKIT_ANSWERER=$<TARGET_FILE:answer_${stem}_reference>")
 
   # The kit's test of its scoring and of its judges (runner/fake.h): answerers that do
   # no geometry must earn nothing, and no judge may fail on their answers.
-  if(TARGET ${lab}_reference)
-    add_executable(answer_${stem}_fake "${PROJECT_SOURCE_DIR}/tests/kit/fake_answerer.cpp")
-    target_compile_definitions(answer_${stem}_fake PRIVATE ${query_definitions})
-    target_include_directories(answer_${stem}_fake PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
-    target_link_libraries(answer_${stem}_fake PRIVATE labkit_protocol ${lab}_reference)
-    labkit_kit_code(answer_${stem}_fake)
-    foreach(answers nothing random examples garbage)
-      add_test(NAME kit.fake.${lab}.${answers} COMMAND labkit-runner fake ${number} --answers ${answers})
-      set_tests_properties(kit.fake.${lab}.${answers} PROPERTIES LABELS "kit;fake;${lab}")
-    endforeach()
-  endif()
+  labkit_lab_query_definitions(${number} ${name} query_definitions)
+  add_executable(answer_${stem}_fake "${PROJECT_SOURCE_DIR}/tests/kit/fake_answerer.cpp")
+  target_compile_definitions(answer_${stem}_fake PRIVATE ${query_definitions})
+  target_include_directories(answer_${stem}_fake PRIVATE "${PROJECT_SOURCE_DIR}/labs/${stem}" "${PROJECT_SOURCE_DIR}/tests")
+  target_link_libraries(answer_${stem}_fake PRIVATE labkit_protocol ${lab}_reference)
+  labkit_kit_code(answer_${stem}_fake)
+  foreach(answers nothing random examples garbage)
+    add_test(NAME kit.fake.${lab}.${answers} COMMAND labkit-runner fake ${number} --answers ${answers})
+    set_tests_properties(kit.fake.${lab}.${answers} PROPERTIES LABELS "kit;fake;${lab}")
+  endforeach()
 
   # The classic mistakes, each of which the tests must catch.
-  if(TARGET ${lab}_reference)
-    labkit_add_mutants(${number} ${name})
-  endif()
-
-  set_property(GLOBAL APPEND PROPERTY LABKIT_LABS ${stem})
-  if(EXISTS "${PROJECT_SOURCE_DIR}/viewer/scenes/${stem}.cpp")
-    set_property(GLOBAL APPEND PROPERTY LABKIT_SCENES ${stem})
-  endif()
+  labkit_add_mutants(${number} ${name})
 endfunction()
 
 # The answerer of lab NN for one implementation (a library target): the lab's functions
