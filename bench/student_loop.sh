@@ -49,6 +49,19 @@ cpu() { cat "$1.cpu"; }
 
 load() { cut -d' ' -f1 /proc/loadavg; }
 
+# The host's speed at compiling, apart from the kit: the CPU-seconds g++ takes to parse
+# <Eigen/Dense> (best of 3). A shared host's speed drifts by a third within an hour;
+# figures from two runs compare only after dividing by this.
+host_gauge() {
+  local best=999 t
+  for _ in 1 2 3; do
+    t=$(seconds "$WORK/gauge.log" sh -c 'printf "#include <Eigen/Dense>\n" | g++ -std=c++17 -isystem /usr/include/eigen3 -fsyntax-only -x c++ -')
+    t=$(cpu "$WORK/gauge.log")
+    best=$(python3 -c "print(min($best, $t))")
+  done
+  echo "$best"
+}
+
 # The kit's files as they are in the caller's tree (tracked and new, not ignored).
 say "copying the kit to $WORK/kit"
 mkdir -p "$WORK/kit"
@@ -57,6 +70,7 @@ if [ -d "$ROOT/../shared" ]; then ln -s "$ROOT/../shared" "$WORK/shared"; fi
 cd "$WORK/kit"
 export LABKIT_BUILD_DIR="$WORK/kit/build"
 say "day one: ./labkit check in a fresh copy (load $(load))"
+gauge_before=$(host_gauge)
 day_one_load=$(load)
 day_one=$(seconds "$WORK/day-one.log" ./labkit check)
 day_one_cpu=$(cpu "$WORK/day-one.log")
@@ -161,10 +175,12 @@ if grep -q "grade SUBMISSION" <<<"$help_text"; then
   fi
 fi
 
+gauge_after=$(host_gauge)
 cat >"$OUT" <<EOF
 ## The student's loop
 
 Measured by \`bench/student_loop.sh\` on $(date -u +%Y-%m-%d), $(nproc) cores, $(g++ --version | head -n 1).
+The host's speed: g++ parsed \`<Eigen/Dense>\` in $gauge_before CPU-s before the run and $gauge_after after it (best of 3; see host_gauge).
 Load average (1 min) when each part started: day one $day_one_load, the viewer right after day one $first_viewer_load, the viewer after the labs' first checks $viewer_load, the suite $test_load.
 CPU-seconds are the user and system time of every process a step waited for.
 
